@@ -1,0 +1,38 @@
+"""The exceptions graphkin raises for malformed input.
+
+Only malformed input raises. A position that cannot be assembled, or a dead
+point, is not an error: results carry ``nan`` there and a ``valid`` mask, and
+reports name the position (see :mod:`graphkin.kinematics`).
+"""
+
+from __future__ import annotations
+
+
+class GraphkinError(ValueError):
+    """Base class: a one-line message a student can act on."""
+
+
+class ModelError(GraphkinError):
+    """The mechanism as described cannot be built (unknown link, zero length, ...)."""
+
+
+class ProblemFileError(GraphkinError):
+    """A problem file is malformed; the message names the file and the field.
+
+    Parameters
+    ----------
+    file : str
+        Path or catalog name of the problem file.
+    field : str
+        Dotted path of the field at fault, e.g. ``"links[2].mass"``; empty
+        when the whole file is at fault (bad TOML).
+    message : str
+        What is wrong, in words.
+    """
+
+    def __init__(self, file: str, field: str, message: str):
+        self.file = file
+        self.field = field
+        self.message = message
+        where = f"{file}: {field}: " if field else f"{file}: "
+        super().__init__(where + message)
