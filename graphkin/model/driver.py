@@ -1,0 +1,35 @@
+"""The input link: a crank driven by an unknown torque, or a slider driven by an unknown force."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Literal
+
+from ..errors import ModelError
+
+
+@dataclass(frozen=True)
+class Driver:
+    """The link whose motion is known.
+
+    Parameters
+    ----------
+    link : int
+        The input link. It is joined to the frame by a revolute joint
+        (``kind="crank"``: input θ, ω, α; unknown torque ``T1j``) or by a
+        prismatic joint (``kind="slider"``: input s, v, a along the guide;
+        unknown force ``F1j`` along the guide).
+    kind : {"crank", "slider"}
+    """
+
+    link: int
+    kind: Literal["crank", "slider"] = "crank"
+
+    def __post_init__(self):
+        if self.kind not in ("crank", "slider"):
+            raise ModelError(f"driver kind must be 'crank' or 'slider', got {self.kind!r}")
+
+    @property
+    def symbol(self) -> str:
+        """Name of the unknown driving effort: ``T12`` or ``F12``."""
+        return f"{'T' if self.kind == 'crank' else 'F'}1{self.link}"

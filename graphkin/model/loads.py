@@ -1,0 +1,89 @@
+"""External loads: point forces and torques on links, and gravity.
+
+A load may act only over a range of the input coordinate, like the cutting
+force of the strip cutter (Söylemez §6.4.1: 2000 N for 124° < θ12 < 156°).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..errors import ModelError
+from .link import _finite, _point
+
+
+@dataclass(frozen=True)
+class Active:
+    """The open interval ``start < q < stop`` of the input where a load acts.
+
+    For a crank the interval is in radians and taken modulo one turn, so
+    ``Active(radians(350), radians(10))`` acts across 0°.
+    """
+
+    start: float
+    stop: float
+    periodic: bool = True
+
+    def mask(self, q):
+        """Boolean array: where the load acts, for input positions ``q``."""
+        q = np.asarray(q, dtype=float)
+        if not self.periodic:
+            return (q > self.start) & (q < self.stop)
+        turn = 2 * math.pi
+        width = (self.stop - self.start) % turn
+        return ((q - self.start) % turn > 0) & ((q - self.start) % turn < width)
+
+
+@dataclass(frozen=True)
+class PointForce:
+    """A force of fixed global direction on a link.
+
+    Parameters
+    ----------
+    link : int
+        Link it acts on.
+    point : str
+        Point of the link where it acts.
+    force : (float, float)
+        Force vector (Fx, Fy) [N] in global axes.
+    active : Active or None
+        Where it acts; None for always.
+    name : str
+        Label for reports, e.g. ``"F13"``.
+    """
+
+    link: int
+    point: str
+    force: tuple[float, float]
+    active: Active | None = None
+    name: str = ""
+
+    def __post_init__(self):
+        object.__setattr__(self, "force", _point(self.force, f"force on link {self.link} at {self.point}"))
+
+
+@dataclass(frozen=True)
+class Torque:
+    """A couple T [N·m] on a link, CCW positive."""
+
+    link: int
+    torque: float
+    active: Active | None = None
+    name: str = ""
+
+    def __post_init__(self):
+        object.__setattr__(self, "torque", _finite(self.torque, f"torque on link {self.link}"))
+
+
+Load = PointForce | Torque
+
+
+def standard_gravity(g: float) -> float:
+    """Validate a gravitational acceleration g [m/s²] (acts along −y)."""
+    g = _finite(g, "gravity")
+    if g < 0:
+        raise ModelError(f"gravity must be ≥ 0 m/s² (it acts along −y), got {g:g}")
+    return g

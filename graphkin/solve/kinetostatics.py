@@ -1,0 +1,254 @@
+"""Analytical kinetostatics, solved group by group in closed form.
+
+The three equilibrium equations of each moving link (d'Alembert: inertia
+force −m a_G and torque −I_G α included as loads) form [A]{x} = {b}; see
+:mod:`graphkin.solve.matrix` for that matrix, which the lessons display and the
+tests use as a cross-check. Solving it position by position is slow, so this
+module uses its structure instead: the groups of the kinematic decomposition
+are solved in reverse order (last dyad first), each in closed form with at
+most one 2×2 system, all positions at once. Reactions found in one group are
+loads on the links of the groups before it.
+
+Coulomb friction at a prismatic pair makes the friction force μ|N| depend on
+the sign of the normal force N. Each group is solved for every sign
+assumption of its friction pairs, and at each position the assumption that
+the solution confirms is kept (a position where none does is self-locking
+and reported invalid).
+"""
+
+from __future__ import annotations
+
+import itertools
+
+import numpy as np
+
+from ..geometry import cross, dot, perp, solve2, unit
+from ..kinematics import Dyad, DriverGroup, GearGroup, Kinematics, decompose, solve_kinematics
+from ..model import FRAME, Mechanism, Prismatic, Revolute
+from .loads import known_loads
+from .result import ForceAnalysis
+
+
+class _Reactions:
+    """A joint's reaction on one link: force F at point X and couple C (prismatic)."""
+
+    __slots__ = ("joint", "on", "F", "X", "C", "N")
+
+    def __init__(self, joint, on, F, X, C=None, N=None):
+        self.joint, self.on, self.F, self.X, self.C, self.N = joint, on, F, X, C, N
+
+
+def _w(kin: Kinematics, joint: Prismatic, on: int, sigma_N):
+    """Direction w of the reaction on ``on`` per unit normal force: F = N w.
+
+    w = n − μ σ_N sgn(ṡ) u, with u the guide direction, n = k × u, ṡ the
+    velocity of ``on`` relative to the other link and σ_N the sign of N.
+    """
+    u = kin.guide_direction(joint)
+    w = perp(u)
+    if joint.mu:
+        w = w - (joint.mu * sigma_N * np.sign(kin.slide_rate(joint, on)))[:, None] * u
+    return w
+
+
+def _point(kin: Kinematics, joint, link: int):
+    if isinstance(joint, Prismatic):
+        return kin.position(joint.slider, joint.point)
+    return kin.position(link, joint.point)
+
+
+def _dyad(kin: Kinematics, d: Dyad, L, M, sig) -> list[_Reactions]:
+    """Reactions at J1 (on j), J2 (of j on k) and J3 (on k) of one dyad."""
+    X1, X2, X3 = _point(kin, d.J1, d.j), _point(kin, d.J2, d.k), _point(kin, d.J3, d.k)
+    Lj, Mj, Lk, Mk = L[d.j], M[d.j], L[d.k], M[d.k]
+    S = -(Lj + Lk)
+    t = d.type
+    C1 = C2 = C3 = N1 = N2 = N3 = None
+    if t == "RRR":
+        # Moments of j and of k about the middle pin, and the dyad's force sum.
+        r1, r3 = X1 - X2, X3 - X2
+        Mj2, Mk2 = Mj - cross(X2, Lj), Mk - cross(X2, Lk)
+        F1 = np.stack(solve2(-r1[:, 1], r1[:, 0], -r3[:, 1], r3[:, 0], -Mj2, cross(r3, S) + Mk2), -1)
+        F3 = S - F1
+        F2 = F1 + Lj
+    elif t == "RRP":
+        w3 = _w(kin, d.J3, d.k, sig[2])
+        r1 = X1 - X2
+        with np.errstate(divide="ignore", invalid="ignore"):
+            N3 = (cross(r1, S) + Mj - cross(X2, Lj)) / cross(r1, w3)
+        F3 = N3[:, None] * w3
+        F1 = S - F3
+        F2 = F1 + Lj
+        C3 = -(Mk + cross(X2, F2) + cross(X3, F3))
+    elif t == "RPR":
+        w2 = _w(kin, d.J2, d.k, sig[1])
+        with np.errstate(divide="ignore", invalid="ignore"):
+            N2 = (cross(X1, Lj) + cross(X3, Lk) - Mj - Mk) / cross(X1 - X3, w2)
+        F2 = N2[:, None] * w2
+        F1 = F2 - Lj
+        F3 = -F2 - Lk
+        C2 = -(cross(X2, F2) + cross(X3, F3) + Mk)
+    elif t == "RPP":
+        w2, w3 = _w(kin, d.J2, d.k, sig[1]), _w(kin, d.J3, d.k, sig[2])
+        N2, N3 = solve2(w2[:, 0], w3[:, 0], w2[:, 1], w3[:, 1], -Lk[:, 0], -Lk[:, 1])
+        F2, F3 = N2[:, None] * w2, N3[:, None] * w3
+        F1 = F2 - Lj
+        C2 = cross(X1, F1) - cross(X2, F2) + Mj
+        C3 = -(cross(X2, F2) + C2 + cross(X3, F3) + Mk)
+    else:  # PRP
+        w1, w3 = _w(kin, d.J1, d.j, sig[0]), _w(kin, d.J3, d.k, sig[2])
+        N1, N3 = solve2(w1[:, 0], w3[:, 0], w1[:, 1], w3[:, 1], S[:, 0], S[:, 1])
+        F1, F3 = N1[:, None] * w1, N3[:, None] * w3
+        F2 = F1 + Lj
+        C1 = cross(X2, F2) - cross(X1, F1) - Mj
+        C3 = -(cross(X2, F2) + cross(X3, F3) + Mk)
+    return [
+        _Reactions(d.J1, d.j, F1, X1, C1, N1),
+        _Reactions(d.J2, d.k, F2, X2, C2, N2),
+        _Reactions(d.J3, d.k, F3, X3, C3, N3),
+    ]
+
+
+def _driver(kin: Kinematics, g: DriverGroup, L, M):
+    link, J = g.link, g.joint
+    if isinstance(J, Revolute):
+        X = kin.position(FRAME, J.point)
+        F = -L[link]
+        T = -(M[link] + cross(X, F))
+        return [_Reactions(J, link, F, X)], T
+    u = kin.guide_direction(J)
+    X = kin.position(link, J.point)
+    N = -dot(L[link], perp(u))
+    # N is known before friction enters, so its sign needs no assumption.
+    w = _w(kin, J, link, np.sign(N))
+    P = -dot(L[link], u) - N * dot(w, u)
+    G = N[:, None] * w
+    C = -(M[link] + cross(X, G + P[:, None] * u))
+    return [_Reactions(J, link, G, X, C, N)], P
+
+
+def _gear(kin: Kinematics, g: GearGroup, L, M):
+    mesh = g.mesh
+    rk = mesh.radii[mesh.links.index(g.k)]
+    Ck = kin.position(g.b, g.pivot.point)
+    Cj = kin.position(g.b, g.j_pivot.point)
+    e = (Cj - Ck) / np.linalg.norm(Cj - Ck, axis=-1)[:, None]
+    P = Ck + rk * e
+    t = perp(e)
+    # The tooth force's tangential part balances k's moment about its centre;
+    # its radial part, |W_t| tan φ, pushes k away from j.
+    W_t = -(M[g.k] - cross(Ck, L[g.k])) / rk
+    W = W_t[:, None] * t - (np.abs(W_t) * np.tan(mesh.pressure_angle))[:, None] * e
+    F = -L[g.k] - W
+    return [_Reactions(mesh, g.k, W, P), _Reactions(g.pivot, g.k, F, Ck)]
+
+
+def _friction_joints(d: Dyad):
+    return [i for i, J in enumerate(d.joints) if isinstance(J, Prismatic) and J.mu > 0]
+
+
+def solve_forces(kin: Kinematics) -> ForceAnalysis:
+    """Joint forces and driving effort for known kinematics (all positions at once).
+
+    Parameters
+    ----------
+    kin : Kinematics
+        From :func:`graphkin.kinematics.solve_kinematics`, possibly with given values.
+
+    Returns
+    -------
+    ForceAnalysis
+    """
+    mech = kin.mechanism
+    n = kin.n
+    L, M = {}, {}
+    for link in mech.moving:
+        L[link], M[link] = known_loads(kin, link)
+    forces, normal, couple = {}, {}, {}
+    failures: dict[str, np.ndarray] = {}
+    effort = None
+
+    def apply(reactions):
+        for r in reactions:
+            i, j = r.joint.links
+            other = i if r.on == j else j
+            key = (min(i, j), max(i, j))
+            sign = 1.0 if r.on == key[1] else -1.0
+            forces[key] = sign * r.F
+            if r.N is not None:
+                normal[key] = sign * r.N
+                couple[key] = sign * r.C
+            if other != FRAME:
+                L[other] = L[other] - r.F
+                M[other] = M[other] - cross(r.X, r.F) - (r.C if r.C is not None else 0.0)
+
+    for g in reversed(decompose(mech)):
+        if isinstance(g, DriverGroup):
+            reactions, effort = _driver(kin, g, L, M)
+        elif isinstance(g, GearGroup):
+            reactions = _gear(kin, g, L, M)
+        else:
+            reactions = _solve_dyad_with_friction(kin, g, L, M, failures)
+        apply(reactions)
+
+    valid = kin.valid & np.isfinite(effort)
+    for F in forces.values():
+        valid &= np.isfinite(F).all(axis=-1)
+    for where in failures.values():
+        valid &= ~where
+    dead = kin.valid & ~valid & ~np.logical_or.reduce([w for w in failures.values()] or [np.zeros(n, bool)])
+    if dead.any():
+        failures["the force equations are singular (dead point)"] = dead
+    return ForceAnalysis(kin, forces, normal, couple, effort, valid, failures)
+
+
+def _solve_dyad_with_friction(kin, d, L, M, failures):
+    fj = _friction_joints(d)
+    if not fj:
+        return _dyad(kin, d, L, M, (1.0, 1.0, 1.0))
+    n = kin.n
+    chosen = None
+    found = np.zeros(n, bool)
+    for signs in itertools.product((1.0, -1.0), repeat=len(fj)):
+        sig = [1.0, 1.0, 1.0]
+        for i, s in zip(fj, signs):
+            sig[i] = s
+        trial = _dyad(kin, d, L, M, sig)
+        ok = np.ones(n, bool)
+        for i in fj:
+            ok &= trial[i].N * sig[i] >= 0
+        take = ok & ~found
+        if chosen is None:
+            chosen = trial
+        else:
+            for c, t in zip(chosen, trial):
+                c.F = np.where(take[:, None], t.F, c.F)
+                if c.C is not None:
+                    c.C = np.where(take, t.C, c.C)
+                    c.N = np.where(take, t.N, c.N)
+        if chosen is trial:
+            chosen = [_Reactions(r.joint, r.on, r.F.copy(), r.X, None if r.C is None else r.C.copy(),
+                                 None if r.N is None else r.N.copy()) for r in trial]
+        found |= ok
+    stuck = ~found & kin.valid
+    if stuck.any():
+        failures[f"{d.label}: friction locks it (no consistent direction of the normal force)"] = stuck
+        for r in chosen:
+            r.F = np.where(stuck[:, None], np.nan, r.F)
+    return chosen
+
+
+def solve(mech: Mechanism, q, q_dot=0.0, q_ddot=0.0) -> ForceAnalysis:
+    """Kinematics and kinetostatics in one call.
+
+    Parameters
+    ----------
+    mech : Mechanism
+    q, q_dot, q_ddot : array_like
+        Input coordinate and rates (see :func:`graphkin.kinematics.solve_kinematics`).
+
+    Returns
+    -------
+    ForceAnalysis
+    """
+    return solve_forces(solve_kinematics(mech, q, q_dot, q_ddot))

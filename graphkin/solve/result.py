@@ -1,0 +1,124 @@
+"""The result of a force analysis: every joint force, both orders answered."""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+from typing import Mapping
+
+import numpy as np
+
+from ..errors import GraphkinError
+from ..kinematics import Kinematics
+from ..model import FRAME, GearMesh, Prismatic
+from .loads import Inertia, inertia
+
+_NAME = re.compile(r"^([FGT])(\d)(\d)$|^([FGT])_?(\d+),(\d+)$")
+
+
+@dataclass(frozen=True)
+class ForceAnalysis:
+    """Joint forces and the driving effort over n positions.
+
+    Joint forces follow the README's sign convention: ``force(i, j)`` is the
+    force of link i on link j [N], shape (n, 2), and ``force(j, i)`` is its
+    negative. By name: ``result["F23"]`` (revolute or gear mesh),
+    ``result["G14"]`` (a prismatic pair's guide reaction, normal force plus
+    friction), and the driver's ``"T12"`` [N·m] or ``"F12"`` [N, along the
+    guide, shape (n, 2)]. Names with links above 9 use ``"F10,11"``.
+
+    Attributes
+    ----------
+    kinematics : Kinematics
+    forces : dict of (int, int) to ndarray, shape (n, 2)
+        Force of the lower-numbered link on the higher, per joint.
+    normal, couple : dict of (int, int) to ndarray, shape (n,)
+        For prismatic pairs: the normal component N [N] of that force along
+        k × u (u the guide direction) and the couple C [N·m] it transmits.
+    effort : ndarray, shape (n,)
+        Driving torque T1j [N·m, CCW] of a crank, or driving force F1j [N,
+        along the guide direction] of a slider.
+    valid : ndarray of bool, shape (n,)
+    failures : dict of str to ndarray of bool
+        Reasons for invalid positions, beyond the kinematic ones.
+    """
+
+    kinematics: Kinematics
+    forces: Mapping[tuple[int, int], np.ndarray]
+    normal: Mapping[tuple[int, int], np.ndarray]
+    couple: Mapping[tuple[int, int], np.ndarray]
+    effort: np.ndarray
+    valid: np.ndarray
+    failures: Mapping[str, np.ndarray] = field(default_factory=dict)
+
+    @property
+    def mechanism(self):
+        return self.kinematics.mechanism
+
+    @property
+    def n(self) -> int:
+        return len(self.effort)
+
+    @property
+    def driver_name(self) -> str:
+        """``"T12"`` for a crank, ``"F12"`` for a slider driver."""
+        return self.mechanism.driver.symbol
+
+    def force(self, i: int, j: int) -> np.ndarray:
+        """Force of link i on link j [N], shape (n, 2)."""
+        key = (min(i, j), max(i, j))
+        if key not in self.forces:
+            known = ", ".join(f"{a}–{b}" for a, b in self.forces)
+            raise GraphkinError(f"links {i} and {j} share no joint (joints: {known})")
+        F = self.forces[key]
+        return F if i < j else -F
+
+    def driver_force(self) -> np.ndarray:
+        """The driving effort as a vector: F1j along the guide (slider) [N], shape (n, 2)."""
+        if self.mechanism.driver.kind != "slider":
+            raise GraphkinError(f"the driver is a crank: its effort is the torque {self.driver_name}")
+        joint = self.mechanism.joint_between(FRAME, self.mechanism.driver.link)
+        return self.effort[:, None] * self.kinematics.guide_direction(joint)
+
+    def offset(self, i: int, j: int) -> np.ndarray:
+        """Where a prismatic reaction's line acts: distance e [m] along the guide from the slider point."""
+        key = (min(i, j), max(i, j))
+        with np.errstate(divide="ignore", invalid="ignore"):
+            return self.couple[key] / self.normal[key]
+
+    def names(self) -> list[str]:
+        """Every joint force's name in stored order (``F12``, ``F23``, ``G14``, ...) and the driver's."""
+        out = [self.name_of(i, j) for i, j in self.forces]
+        return out + [self.driver_name]
+
+    def name_of(self, i: int, j: int) -> str:
+        letter = self.mechanism.joint_between(i, j).force_letter
+        sep = "" if i < 10 and j < 10 else ","
+        return f"{letter}{i}{sep}{j}" if sep == "" else f"{letter}{i},{j}"
+
+    def __getitem__(self, name: str) -> np.ndarray:
+        if name == self.driver_name:
+            return self.effort if name[0] == "T" else self.driver_force()
+        m = _NAME.match(name)
+        if not m:
+            raise GraphkinError(f"{name!r} is not a force name like 'F23', 'G14' or {self.driver_name!r}")
+        letter, i, j = (m.group(1), m.group(2), m.group(3)) if m.group(1) else (m.group(4), m.group(5), m.group(6))
+        i, j = int(i), int(j)
+        F = self.force(i, j)
+        if letter != self.mechanism.joint_between(i, j).force_letter:
+            right = self.name_of(min(i, j), max(i, j))[0]
+            raise GraphkinError(f"{name!r}: the joint between links {i} and {j} is named {right}{i}{j}")
+        return F
+
+    def inertia(self, link: int) -> Inertia:
+        """The link's inertia force, torque and h (see :func:`graphkin.solve.loads.inertia`)."""
+        return inertia(self.kinematics, link)
+
+    def reason(self, i: int) -> str:
+        """Why position ``i`` has no solution ('' if it has one)."""
+        parts = [self.kinematics.reason(i)] + [why for why, where in self.failures.items() if where[i]]
+        return "; ".join(p for p in parts if p)
+
+    def joint_kind(self, i: int, j: int) -> str:
+        joint = self.mechanism.joint_between(i, j)
+        return "prismatic" if isinstance(joint, Prismatic) else "gear" if isinstance(joint, GearMesh) else "revolute"
