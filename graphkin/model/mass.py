@@ -163,12 +163,12 @@ class MassProperties:
         m = self.m - other.m
         # Relative tolerance: removing a part from itself must give exactly
         # "nothing left", not a tiny negative mass from rounding.
-        tol = 1e-12 * self.m
-        if m < -tol:
+        m_tol = 1e-12 * self.m
+        if m < -m_tol:
             raise ModelError(
                 f"other: removing {other.m!r} kg from a part of {self.m!r} kg leaves negative mass"
             )
-        if m <= tol:
+        if m <= m_tol:
             return MassProperties(0.0, self.G, 0.0)
         # Work relative to self.G to keep the numbers small (less cancellation).
         ux, uy = other.G[0] - self.G[0], other.G[1] - self.G[1]
@@ -180,8 +180,9 @@ class MassProperties:
             # Allow for rounding: G is known to about eps*|G|, and removing most
             # of the mass magnifies that error by self.m/m.
             delta = 16 * _EPS * (math.hypot(*self.G) + math.hypot(*other.G)) * self.m / m
-            tol = 1e-9 * (self.I_G + other.about(self.G)) + m * delta * (2 * math.hypot(Gx, Gy) + delta)
-            if I_G < -tol:
+            I_tol = 1e-9 * (self.I_G + other.about(self.G))
+            I_tol += m * delta * (2 * math.hypot(Gx, Gy) + delta)
+            if I_G < -I_tol:
                 raise ModelError(
                     "other: removing it leaves a negative moment of inertia; "
                     "it is not a part of this body"
@@ -401,7 +402,8 @@ def from_shape(shape, thickness, density) -> MassProperties:
         exactly for the polygon.
     """
     if not isinstance(shape, (Polygon, MultiPolygon)):
-        raise ModelError(f"shape must be a shapely Polygon or MultiPolygon, got {type(shape).__name__}")
+        kind = type(shape).__name__
+        raise ModelError(f"shape must be a shapely Polygon or MultiPolygon, got {kind}")
     if shape.is_empty:
         raise ModelError("shape is empty")
     if not shape.is_valid:
@@ -457,7 +459,8 @@ def link_outline(centers, width, hole_diameter=0.0, *, quad_segs=16) -> Polygon:
     try:
         P = np.asarray(centers, dtype=float)
     except (TypeError, ValueError):
-        raise ModelError(f"centers must be a sequence of (x, y) points [m], got {centers!r}") from None
+        raise ModelError(f"centers must be a sequence of (x, y) points [m], got {centers!r}") \
+            from None
     if P.ndim != 2 or P.shape[1] != 2 or P.shape[0] < 2:
         raise ModelError(f"centers must hold at least two (x, y) points [m], got {centers!r}")
     if not np.isfinite(P).all():

@@ -1,0 +1,35 @@
+"""Textbook problems as data: TOML problem files shipped with graphkin, each citing its source."""
+
+from __future__ import annotations
+
+from importlib import resources
+from pathlib import Path
+
+from ..errors import GraphkinError
+
+DEFAULT = "double_slider"
+"""The example ``make demo`` solves."""
+
+
+def names() -> list[str]:
+    """Names of the catalog problems, sorted."""
+    return sorted(p.name[:-5] for p in resources.files(__name__).iterdir() if p.name.endswith(".toml"))
+
+
+def path(name: str) -> Path:
+    """Path of a catalog problem file."""
+    if name not in names():
+        raise GraphkinError(f"no catalog problem {name!r} (the catalog has: {', '.join(names())})")
+    return Path(str(resources.files(__name__).joinpath(name + ".toml")))
+
+
+def load(name_or_path: str):
+    """A :class:`graphkin.problem.Problem` from a catalog name or a file path."""
+    from ..problem import load_problem
+
+    if name_or_path in names():
+        return load_problem(path(name_or_path), name=name_or_path)
+    p = Path(name_or_path)
+    if p.suffix == ".toml" or p.exists():
+        return load_problem(p)
+    raise GraphkinError(f"{name_or_path!r} is neither a catalog problem ({', '.join(names())}) nor a file")

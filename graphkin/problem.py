@@ -1,0 +1,399 @@
+"""Problem files: a mechanism, its input motion and loads, written in TOML with units.
+
+This is the boundary where textbook units (mm, rpm, degrees, N·mm) become SI;
+the field-by-field format is documented in ``docs/problem-files.md``. Every
+error names the file, the field and what is wrong.
+"""
+
+from __future__ import annotations
+
+import difflib
+import math
+import tomllib
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, Mapping
+
+import numpy as np
+
+from .errors import GraphkinError, ProblemFileError
+from .model import Active, Driver, GearMesh, Link, Mechanism, PointForce, Prismatic, Revolute, Torque
+from .model import mass as massprops
+
+_TOP = {"title", "source", "notes", "gravity", "frame", "links", "joints", "driver", "loads", "assembly", "given"}
+_LINK = {"number", "name", "points", "mass", "G", "I_G", "k", "shape"}
+_JOINT = {
+    "revolute": {"type", "links", "point"},
+    "prismatic": {"type", "guide", "slider", "point", "through", "direction", "slider_direction", "mu"},
+    "gear": {"type", "links", "centers", "radii", "pressure_angle"},
+}
+_DRIVER = {
+    "crank": {"type", "link", "theta", "omega", "alpha"},
+    "slider": {"type", "link", "s", "v", "a"},
+}
+_LOAD = {"force": {"type", "link", "point", "force", "active", "name"}, "torque": {"type", "link", "torque", "active", "name"}}
+_GIVEN = {"omega", "alpha", "a_G", "v_G"}
+_SHAPES = {
+    "rod": {"type", "from", "to"},
+    "outline": {"type", "through", "width", "thickness", "density", "hole_diameter"},
+    "disk": {"type", "center", "radius", "thickness", "density"},
+}
+
+
+@dataclass(frozen=True)
+class Problem:
+    """A mechanism with its input motion, as read from a problem file.
+
+    Attributes
+    ----------
+    name : str
+        Catalog name or file path.
+    mechanism : Mechanism
+    q, q_dot, q_ddot : ndarray, shape (n,)
+        Input positions and rates, SI.
+    given : dict
+        Kinematic values the problem gives instead of deriving them, keyed
+        ``(link, "omega" | "alpha" | "a_G" | "v_G")``.
+    title, source, notes : str
+    """
+
+    name: str
+    mechanism: Mechanism
+    q: np.ndarray
+    q_dot: np.ndarray
+    q_ddot: np.ndarray
+    given: Mapping[tuple[int, str], Any] = field(default_factory=dict)
+    title: str = ""
+    source: str = ""
+    notes: str = ""
+
+    @property
+    def input_name(self) -> str:
+        """``"theta"`` for a crank, ``"s"`` for a slider."""
+        return "theta" if self.mechanism.driver.kind == "crank" else "s"
+
+    def kinematics(self, at=None):
+        """Kinematics at the file's positions, or at ``at`` (SI values of the input)."""
+        from dataclasses import replace
+
+        from .kinematics import solve_kinematics
+
+        q, q_dot, q_ddot = self.q, self.q_dot, self.q_ddot
+        if at is not None:
+            at = np.atleast_1d(np.asarray(at, dtype=float))
+            if len(set(self.q_dot)) > 1 or len(set(self.q_ddot)) > 1:
+                raise GraphkinError(f"{self.name}: its input rates vary with position, so it can only be solved at its own positions")
+            q, q_dot, q_ddot = at, np.full(len(at), self.q_dot[0]), np.full(len(at), self.q_ddot[0])
+        kin = solve_kinematics(self.mechanism, q, q_dot, q_ddot)
+        if self.given:
+            n = len(q)
+            given = {key: np.broadcast_to(np.asarray(v, dtype=float), (n, 2) if key[1] in ("a_G", "v_G") else (n,)) for key, v in self.given.items()}
+            kin = replace(kin, given=given)
+        return kin
+
+    def solve(self, at=None):
+        """Force analysis (:class:`graphkin.solve.ForceAnalysis`) at the file's positions or at ``at``."""
+        from .solve import solve_forces
+
+        return solve_forces(self.kinematics(at))
+
+
+class _Reader:
+    """Reads one file, keeping the file name for error messages."""
+
+    def __init__(self, file: str):
+        self.file = file
+
+    def fail(self, where: str, message: str):
+        return ProblemFileError(self.file, where, message)
+
+    def table(self, value, where, allowed) -> dict:
+        if not isinstance(value, dict):
+            raise self.fail(where, f"must be a table, got {type(value).__name__}")
+        for key in value:
+            if key not in allowed:
+                close = difflib.get_close_matches(key, sorted(allowed), n=1)
+                hint = f" (did you mean {close[0]!r}?)" if close else f" (allowed: {', '.join(sorted(allowed))})"
+                raise self.fail(f"{where}.{key}" if where else key, f"unknown field{hint}")
+        return value
+
+    def need(self, t: dict, key: str, where: str):
+        if key not in t:
+            raise self.fail(f"{where}.{key}" if where else key, "is missing")
+        return t[key]
+
+    def si(self, value, dimension, where):
+        from .units import to_si
+
+        return to_si(value, dimension, field=where, file=self.file)
+
+    def vec(self, value, dimension, where):
+        from .units import to_si_vector
+
+        return to_si_vector(value, dimension, field=where, file=self.file)
+
+    def array(self, value, dimension, where):
+        from .units import to_si_array
+
+        return to_si_array(value, dimension, field=where, file=self.file)
+
+    def whole(self, value, where) -> int:
+        if isinstance(value, bool) or not isinstance(value, int):
+            raise self.fail(where, f"must be a whole number, got {value!r}")
+        return value
+
+    def text(self, value, where) -> str:
+        if not isinstance(value, str):
+            raise self.fail(where, f"must be a string, got {value!r}")
+        return value
+
+    def point(self, value, where):
+        """A point: ["x mm", "y mm"] or {r = "467 mm", angle = "7.6 deg"} (polar about the link origin)."""
+        if isinstance(value, dict) and set(value) <= {"r", "angle"} and "r" in value:
+            r = self.si(value["r"], "length", f"{where}.r")
+            a = self.si(self.need(value, "angle", where), "angle", f"{where}.angle")
+            return (r * math.cos(a), r * math.sin(a))
+        if isinstance(value, dict):
+            raise self.fail(where, 'a point is ["x mm", "y mm"] or {r = "…mm", angle = "…deg"}')
+        return self.vec(value, "length", where)
+
+
+def load_problem(source: str | Path, *, name: str | None = None) -> Problem:
+    """Read a problem file (a path, or a catalog name via :func:`graphkin.catalog.load`).
+
+    Raises
+    ------
+    ProblemFileError
+        With the file, the field and what is wrong.
+    """
+    path = Path(source)
+    file = name or str(path)
+    try:
+        text = path.read_text(encoding="utf-8")
+    except OSError as exc:
+        raise ProblemFileError(file, "", f"cannot be read ({exc.strerror})") from None
+    return parse_problem(text, file=file)
+
+
+def parse_problem(text: str, *, file: str = "<problem>") -> Problem:
+    """Build a :class:`Problem` from TOML text."""
+    rd = _Reader(file)
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise ProblemFileError(file, "", f"is not valid TOML ({exc})") from None
+    rd.table(data, "", _TOP)
+    links = [_frame(rd, data)] + [_link(rd, t, f"links[{i}]") for i, t in enumerate(_list(rd, data, "links"))]
+    joints = [_joint(rd, t, f"joints[{i}]") for i, t in enumerate(_list(rd, data, "joints"))]
+    d = rd.table(rd.need(data, "driver", ""), "driver", _DRIVER["crank"] | _DRIVER["slider"])
+    kind = d.get("type", "crank")
+    if kind not in _DRIVER:
+        raise rd.fail("driver.type", f"must be 'crank' or 'slider', got {kind!r}")
+    rd.table(d, "driver", _DRIVER[kind])
+    driver = Driver(rd.whole(rd.need(d, "link", "driver"), "driver.link"), kind)
+    q, q_dot, q_ddot = _motion(rd, d, kind)
+    loads = [_load(rd, t, f"loads[{i}]", kind) for i, t in enumerate(_list(rd, data, "loads"))]
+    gravity = rd.si(data["gravity"], "acceleration", "gravity") if "gravity" in data else 0.0
+    assembly = {}
+    for key, sigma in rd.table(data.get("assembly", {}), "assembly", set(data.get("assembly", {}))).items():
+        if sigma not in (1, -1) or isinstance(sigma, bool):
+            raise rd.fail(f"assembly.{key}", f"must be 1 or -1, got {sigma!r}")
+        assembly[key] = sigma
+    try:
+        mech = Mechanism(links, joints, driver, loads, gravity, assembly,
+                         title=str(data.get("title", "")), source=str(data.get("source", "")))
+    except GraphkinError as exc:
+        raise rd.fail("", str(exc)) from None
+    for key in assembly:
+        points = {j.point for j in joints if not isinstance(j, GearMesh)}
+        if key not in points:
+            raise rd.fail(f"assembly.{key}", f"names no joint point (joints are at {', '.join(sorted(points))})")
+    given = _given(rd, data.get("given", {}), mech, len(q))
+    try:
+        from .kinematics import decompose
+
+        decompose(mech)
+    except GraphkinError as exc:
+        raise rd.fail("joints", str(exc)) from None
+    return Problem(file, mech, q, q_dot, q_ddot, given, str(data.get("title", "")), str(data.get("source", "")),
+                   str(data.get("notes", "")))
+
+
+def _list(rd, data, key):
+    value = data.get(key, [])
+    if not isinstance(value, list):
+        raise rd.fail(key, f"must be an array of tables ([[{key}]]), got {type(value).__name__}")
+    return value
+
+
+def _frame(rd, data):
+    t = rd.table(data.get("frame", {}), "frame", {"points"})
+    return Link(1, _points(rd, t.get("points", {}), "frame.points"), name="frame")
+
+
+def _points(rd, value, where):
+    if not isinstance(value, dict):
+        raise rd.fail(where, "must be a table of named points, e.g. { A = [\"0 mm\", \"0 mm\"] }")
+    return {name: rd.point(p, f"{where}.{name}") for name, p in value.items()}
+
+
+def _link(rd, t, where):
+    rd.table(t, where, _LINK)
+    number = rd.whole(rd.need(t, "number", where), f"{where}.number")
+    if number == 1:
+        raise rd.fail(f"{where}.number", "link 1 is the frame: describe it in [frame]")
+    points = _points(rd, rd.need(t, "points", where), f"{where}.points")
+    name = str(t.get("name", ""))
+    if "shape" in t:
+        for key in ("mass", "G", "I_G", "k"):
+            if key in t and key != "mass":
+                raise rd.fail(f"{where}.{key}", "give either a shape or the mass properties, not both")
+        props = _shape(rd, t, points, f"{where}.shape")
+    else:
+        m = rd.si(rd.need(t, "mass", where), "mass", f"{where}.mass")
+        if m < 0:
+            raise rd.fail(f"{where}.mass", f"must be ≥ 0 kg, got {t['mass']!r}")
+        G = rd.point(t["G"], f"{where}.G") if "G" in t else (0.0, 0.0)
+        if "I_G" in t and "k" in t:
+            raise rd.fail(f"{where}.k", "give I_G or the radius of gyration k, not both")
+        if "k" in t:
+            k = rd.si(t["k"], "length", f"{where}.k")
+            if k < 0:
+                raise rd.fail(f"{where}.k", f"must be ≥ 0, got {t['k']!r}")
+            I_G = m * k * k
+        else:
+            I_G = rd.si(t.get("I_G", "0 kg*m^2"), "moment_of_inertia", f"{where}.I_G")
+            if I_G < 0:
+                raise rd.fail(f"{where}.I_G", f"must be ≥ 0, got {t['I_G']!r}")
+        props = massprops.MassProperties(m, G, I_G)
+    try:
+        return Link(number, points, props.m, props.G, props.I_G, name)
+    except GraphkinError as exc:
+        raise rd.fail(where, str(exc)) from None
+
+
+def _shape(rd, t, points, where):
+    s = t["shape"]
+    kind = rd.table(s, where, set(s) if isinstance(s, dict) else set()).get("type")
+    if kind not in _SHAPES:
+        raise rd.fail(f"{where}.type", f"must be one of {', '.join(sorted(_SHAPES))}, got {kind!r}")
+    rd.table(s, where, _SHAPES[kind])
+
+    def pt(name, key):
+        if name not in points:
+            raise rd.fail(f"{where}.{key}", f"names no point of this link ({', '.join(points)})")
+        return points[name]
+
+    try:
+        if kind == "rod":
+            m = rd.si(rd.need(t, "mass", where[:-6]), "mass", f"{where[:-6]}.mass")
+            (x0, y0), (x1, y1) = pt(rd.need(s, "from", where), "from"), pt(rd.need(s, "to", where), "to")
+            return massprops.thin_rod(math.hypot(x1 - x0, y1 - y0), m, start=(x0, y0), angle=math.atan2(y1 - y0, x1 - x0))
+        if "mass" in t:
+            raise rd.fail(f"{where[:-6]}.mass", f"a {kind} shape gets its mass from density and size: leave mass out")
+        thickness = rd.si(rd.need(s, "thickness", where), "length", f"{where}.thickness")
+        density = rd.si(rd.need(s, "density", where), "density", f"{where}.density")
+        if kind == "disk":
+            radius = rd.si(rd.need(s, "radius", where), "length", f"{where}.radius")
+            return massprops.disk(radius, thickness, density, center=pt(rd.need(s, "center", where), "center"))
+        through = rd.need(s, "through", where)
+        centers = [pt(p, "through") for p in through]
+        width = rd.si(rd.need(s, "width", where), "length", f"{where}.width")
+        hole = rd.si(s.get("hole_diameter", "0 mm"), "length", f"{where}.hole_diameter")
+        return massprops.from_shape(massprops.link_outline(centers, width, hole), thickness, density)
+    except GraphkinError as exc:
+        if isinstance(exc, ProblemFileError):
+            raise
+        raise rd.fail(where, str(exc)) from None
+
+
+def _joint(rd, t, where):
+    kind = rd.table(t, where, set().union(*_JOINT.values())).get("type")
+    if kind not in _JOINT:
+        raise rd.fail(f"{where}.type", f"must be one of revolute, prismatic, gear; got {kind!r}")
+    rd.table(t, where, _JOINT[kind])
+    try:
+        if kind == "revolute":
+            return Revolute(_pair(rd, rd.need(t, "links", where), f"{where}.links"), rd.text(rd.need(t, "point", where), f"{where}.point"))
+        if kind == "prismatic":
+            mu = rd.si(t.get("mu", 0.0), "dimensionless", f"{where}.mu")
+            if mu < 0:
+                raise rd.fail(f"{where}.mu", f"friction coefficient must be ≥ 0, got {t['mu']!r}")
+            return Prismatic(
+                rd.whole(rd.need(t, "guide", where), f"{where}.guide"), rd.whole(rd.need(t, "slider", where), f"{where}.slider"),
+                rd.text(rd.need(t, "point", where), f"{where}.point"), rd.text(rd.need(t, "through", where), f"{where}.through"),
+                rd.si(t.get("direction", "0 deg"), "angle", f"{where}.direction"),
+                rd.si(t.get("slider_direction", "0 deg"), "angle", f"{where}.slider_direction"), mu)
+        radii = rd.need(t, "radii", where)
+        if not isinstance(radii, list) or len(radii) != 2:
+            raise rd.fail(f"{where}.radii", "must be two pitch radii, e.g. [\"100 mm\", \"50 mm\"]")
+        centers = rd.need(t, "centers", where)
+        if not isinstance(centers, list) or len(centers) != 2:
+            raise rd.fail(f"{where}.centers", "must name the two gear centres, e.g. [\"O2\", \"O3\"]")
+        return GearMesh(_pair(rd, rd.need(t, "links", where), f"{where}.links"), tuple(centers),
+                        tuple(rd.si(r, "length", f"{where}.radii[{i}]") for i, r in enumerate(radii)),
+                        rd.si(t.get("pressure_angle", "20 deg"), "angle", f"{where}.pressure_angle"))
+    except ProblemFileError:
+        raise
+    except GraphkinError as exc:
+        raise rd.fail(where, str(exc)) from None
+
+
+def _pair(rd, value, where):
+    if not isinstance(value, list) or len(value) != 2:
+        raise rd.fail(where, f"must be two link numbers, e.g. [2, 3], got {value!r}")
+    return tuple(rd.whole(v, f"{where}[{i}]") for i, v in enumerate(value))
+
+
+def _motion(rd, d, kind):
+    names = ("theta", "omega", "alpha") if kind == "crank" else ("s", "v", "a")
+    dims = ("angle", "angular_velocity", "angular_acceleration") if kind == "crank" else ("length", "velocity", "acceleration")
+    q = rd.array(rd.need(d, names[0], "driver"), dims[0], f"driver.{names[0]}")
+    rates = []
+    for name, dim in zip(names[1:], dims[1:]):
+        r = rd.array(d.get(name, f"0 {'rad/s' if kind == 'crank' else 'm/s'}{'^2' if name in ('alpha', 'a') else ''}"), dim, f"driver.{name}")
+        if len(r) not in (1, len(q)):
+            raise rd.fail(f"driver.{name}", f"has {len(r)} values for {len(q)} positions: give one value or one per position")
+        rates.append(np.broadcast_to(r, q.shape).astype(float))
+    return q, rates[0], rates[1]
+
+
+def _load(rd, t, where, driver_kind):
+    kind = rd.table(t, where, set().union(*_LOAD.values())).get("type")
+    if kind not in _LOAD:
+        raise rd.fail(f"{where}.type", f"must be 'force' or 'torque', got {kind!r}")
+    rd.table(t, where, _LOAD[kind])
+    link = rd.whole(rd.need(t, "link", where), f"{where}.link")
+    active = None
+    if "active" in t:
+        a = rd.table(t["active"], f"{where}.active", {"from", "to"})
+        dim = "angle" if driver_kind == "crank" else "length"
+        active = Active(rd.si(rd.need(a, "from", f"{where}.active"), dim, f"{where}.active.from"),
+                        rd.si(rd.need(a, "to", f"{where}.active"), dim, f"{where}.active.to"), periodic=driver_kind == "crank")
+    name = str(t.get("name", ""))
+    if kind == "force":
+        return PointForce(link, rd.text(rd.need(t, "point", where), f"{where}.point"),
+                          rd.vec(rd.need(t, "force", where), "force", f"{where}.force"), active, name)
+    return Torque(link, rd.si(rd.need(t, "torque", where), "torque", f"{where}.torque"), active, name)
+
+
+def _given(rd, value, mech, n):
+    out = {}
+    if not isinstance(value, dict):
+        raise rd.fail("given", "must be a table of links, e.g. [given.3]")
+    if value and n != 1:
+        raise rd.fail("given", f"given kinematics need a single input position, the file has {n}")
+    dims = {"omega": "angular_velocity", "alpha": "angular_acceleration", "a_G": "acceleration", "v_G": "velocity"}
+    for key, t in value.items():
+        where = f"given.{key}"
+        try:
+            link = int(key)
+        except ValueError:
+            raise rd.fail(where, "must be a link number") from None
+        if link not in mech.moving:
+            raise rd.fail(where, f"names no moving link (moving links are {', '.join(map(str, mech.moving))})")
+        rd.table(t, where, _GIVEN)
+        for name, v in t.items():
+            read = rd.vec if name in ("a_G", "v_G") else rd.si
+            out[(link, name)] = read(v, dims[name], f"{where}.{name}")
+    return out

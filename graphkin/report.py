@@ -1,0 +1,161 @@
+"""Results as plain data (SI numbers a grader or handout can consume) and as textbook text.
+
+:func:`solution` returns dictionaries and lists of floats only, the same
+content the CLI prints with ``--json`` (schema: ``docs/json.md``);
+:func:`format_solution` prints it with textbook units.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .model import FRAME, GearMesh, Prismatic
+from .solve import ForceAnalysis
+
+
+def polar(v) -> tuple[float, float]:
+    """Magnitude and angle [deg] in (−180°, 180°] of a plane vector, as the books print it.
+
+    Examples
+    --------
+    >>> polar([-7.555, -1e-16])
+    (7.555, 180.0)
+    """
+    x, y = (float(c) for c in v)
+    size = math.hypot(x, y)
+    # Rounding noise must not turn 180° into −180°.
+    tiny = 1e-12 * size
+    x, y = (0.0 if abs(x) <= tiny else x), (0.0 if abs(y) <= tiny else y)
+    angle = math.degrees(math.atan2(y, x))
+    return size, (180.0 if angle == -180.0 else angle)
+
+
+def _vec(v):
+    return [float(v[0]), float(v[1])]
+
+
+def solution(problem, result: ForceAnalysis) -> dict:
+    """Everything the analysis found, as plain data in SI units.
+
+    Parameters
+    ----------
+    problem : graphkin.problem.Problem
+    result : ForceAnalysis
+
+    Returns
+    -------
+    dict
+        ``{"problem", "title", "source", "units", "driver", "positions": [...]}``;
+        see ``docs/json.md``.
+    """
+    kin = result.kinematics
+    mech = kin.mechanism
+    crank = mech.driver.kind == "crank"
+    positions = []
+    pairs = list(result.forces)
+    inertia = {link: result.inertia(link) for link in mech.moving}
+    for i in range(result.n):
+        entry = {
+            "index": i,
+            "input": {"name": "theta" if crank else "s", "value": float(kin.q[i]),
+                      "rate": float(kin.q_dot[i]), "rate2": float(kin.q_ddot[i])},
+            "valid": bool(result.valid[i]),
+            "reason": result.reason(i),
+        }
+        if result.valid[i]:
+            links = {}
+            for link in mech.moving:
+                inn = inertia[link]
+                links[str(link)] = {
+                    "theta": float(kin.theta[link][i]), "omega": float(kin.w(link)[i]), "alpha": float(kin.al(link)[i]),
+                    "G": _vec(kin.G(link)[i]), "a_G": _vec(kin.a_G(link)[i]),
+                    "inertia_force": _vec(inn.F[i]), "inertia_torque": float(inn.T[i]),
+                    "h": None if not np.isfinite(inn.h[i]) else float(inn.h[i]),
+                }
+            forces, prismatic = {}, {}
+            for a, b in pairs:
+                F = result.force(a, b)[i]
+                forces[result.name_of(a, b)] = _vec(F)
+                forces[result.name_of(b, a)] = _vec(-F)
+                if (a, b) in result.normal:
+                    joint = mech.joint_between(a, b)
+                    u = kin.guide_direction(joint)[i]
+                    prismatic[result.name_of(a, b)] = {
+                        "normal": float(result.normal[(a, b)][i]), "friction": float(F @ u),
+                        "couple": float(result.couple[(a, b)][i]),
+                        "offset": None if result.normal[(a, b)][i] == 0 else float(result.offset(a, b)[i]),
+                        "slider_point": joint.point, "guide_direction": _vec(u),
+                    }
+            driver = {"name": result.driver_name, "value": float(result.effort[i])}
+            if not crank:
+                driver["vector"] = _vec(result.driver_force()[i])
+            entry.update(links=links, forces=forces, prismatic=prismatic, driver=driver)
+        positions.append(entry)
+    return {
+        "problem": problem.name,
+        "title": problem.title,
+        "source": problem.source,
+        "units": {"length": "m", "angle": "rad", "force": "N", "torque": "N*m", "mass": "kg", "time": "s"},
+        "driver": {"link": mech.driver.link, "kind": mech.driver.kind, "name": result.driver_name},
+        "positions": positions,
+    }
+
+
+def _p(v, unit="N", digits=4):
+    size, angle = polar(v)
+    return f"{size:.{digits}g} {unit} ∠ {angle:.2f}°"
+
+
+def _input_text(entry, crank):
+    q = entry["input"]
+    if crank:
+        return f"θ = {math.degrees(q['value']):.6g}°, ω = {q['rate']:.6g} rad/s, α = {q['rate2']:.6g} rad/s²"
+    return f"s = {q['value'] * 1e3:.6g} mm, v = {q['rate']:.6g} m/s, a = {q['rate2']:.6g} m/s²"
+
+
+def format_solution(problem, result: ForceAnalysis) -> str:
+    """The solution as text with textbook units (mm, degrees, N, N·m)."""
+    data = solution(problem, result)
+    crank = data["driver"]["kind"] == "crank"
+    mech = result.mechanism
+    out = [data["title"] or data["problem"]]
+    if data["source"]:
+        out.append(f"source: {data['source']}")
+    out.append("convention: F_ij is the force of link i on link j; angles and torques CCW positive")
+    for entry in data["positions"]:
+        out.append("")
+        out.append(f"Position {entry['index'] + 1} of {len(data['positions'])}: {_input_text(entry, crank)}")
+        if not entry["valid"]:
+            out.append(f"  no solution: {entry['reason']}")
+            continue
+        out.append("  Kinematics")
+        out.append(f"    {'link':<6}{'θ [deg]':>10}{'ω [rad/s]':>12}{'α [rad/s²]':>13}   a_G [m/s²]")
+        for link, s in entry["links"].items():
+            out.append(f"    {link:<6}{math.degrees(s['theta']):>10.3f}{s['omega']:>12.4f}{s['alpha']:>13.4f}   {_p(s['a_G'], 'm/s²')}")
+        out.append("  Inertia loads (d'Alembert: F_i = −m a_G at G, T_i = −I_G α, h = |T_i|/|F_i|)")
+        for link, s in entry["links"].items():
+            if mech.link(int(link)).mass == 0:
+                out.append(f"    link {link}: massless")
+                continue
+            h = "—" if s["h"] is None else f"{s['h'] * 1e3:.4g} mm"
+            T = s["inertia_torque"]
+            sense = "CCW" if T > 0 else "CW" if T < 0 else ""
+            out.append(f"    link {link}: F_i = {_p(s['inertia_force'])}   T_i = {T:.4g} N·m {sense}   h = {h}")
+        out.append("  Joint forces")
+        for a, b in result.forces:
+            name, back = result.name_of(a, b), result.name_of(b, a)
+            F = entry["forces"][name]
+            out.append(f"    {name:<5} = ({F[0]:>10.4f}, {F[1]:>10.4f}) N = {_p(F):<24} {back} = −{name}")
+            if name in entry["prismatic"]:
+                s = entry["prismatic"][name]
+                where = "—" if s["offset"] is None else f"{s['offset'] * 1e3 + 0.0:.4g} mm from {s['slider_point']} along the guide"
+                out.append(f"          normal {s['normal']:.4g} N, friction {s['friction']:.4g} N, line acts {where}")
+        d = entry["driver"]
+        if crank:
+            sense = "CCW" if d["value"] > 0 else "CW" if d["value"] < 0 else ""
+            out.append(f"  Driver: {d['name']} = {d['value']:.4f} N·m {sense}")
+        else:
+            out.append(f"  Driver: {d['name']} = {_p(d['vector'])} ({d['value']:.4f} N along the guide)")
+    return "\n".join(out)
