@@ -287,6 +287,8 @@ def _shape(rd, t, points, where):
     try:
         if kind == "rod":
             m = rd.si(rd.need(t, "mass", where[:-6]), "mass", f"{where[:-6]}.mass")
+            if m < 0:
+                raise rd.fail(f"{where[:-6]}.mass", f"must be ≥ 0 kg, got {t['mass']!r}")
             (x0, y0), (x1, y1) = pt(rd.need(s, "from", where), "from"), pt(rd.need(s, "to", where), "to")
             return massprops.thin_rod(math.hypot(x1 - x0, y1 - y0), m, start=(x0, y0), angle=math.atan2(y1 - y0, x1 - x0))
         if "mass" in t:
