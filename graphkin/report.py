@@ -82,10 +82,14 @@ def solution(problem, result: ForceAnalysis) -> dict:
                 if (a, b) in result.normal:
                     joint = mech.joint_between(a, b)
                     u = kin.guide_direction(joint)[i]
+                    # Lever arms of 1e-16 m are rounding noise of a reaction through the slider point.
+                    offset = float(result.offset(a, b)[i]) if result.normal[(a, b)][i] else None
+                    if offset is not None and abs(offset) < 1e-12:
+                        offset = 0.0
                     prismatic[result.name_of(a, b)] = {
                         "normal": float(result.normal[(a, b)][i]), "friction": float(F @ u),
                         "couple": float(result.couple[(a, b)][i]),
-                        "offset": None if result.normal[(a, b)][i] == 0 else float(result.offset(a, b)[i]),
+                        "offset": offset,
                         "slider_point": joint.point, "guide_direction": _vec(u),
                     }
             driver = {"name": result.driver_name, "value": float(result.effort[i])}

@@ -1,4 +1,9 @@
-"""The kinematic state of every link over a batch of input positions."""
+"""The kinematic state of every link over a batch of input positions.
+
+Inside, plane vectors are complex numbers x + iy, as in the textbooks' loop
+equations (r e^{iθ}): a rotation is one multiplication by e^{iθ}, and
+ω × r is iωr. Methods return ordinary arrays of shape (n, 2).
+"""
 
 from __future__ import annotations
 
@@ -7,17 +12,38 @@ from typing import Mapping
 
 import numpy as np
 
-from ..geometry import dot, perp, rotate, unit
 from ..model import Mechanism, Prismatic
+
+
+def as_xy(z) -> np.ndarray:
+    """Complex array, shape (n,), as a float array of shape (n, 2) (a copy)."""
+    z = np.asarray(z, dtype=complex)
+    return np.stack([z.real, z.imag], axis=-1)
+
+
+def as_z(v) -> np.ndarray:
+    """Float array of shape (..., 2) as complex x + iy."""
+    v = np.asarray(v, dtype=float)
+    return v[..., 0] + 1j * v[..., 1]
+
+
+def cross(a, b):
+    """z-component of a × b for complex plane vectors."""
+    return a.real * b.imag - a.imag * b.real
+
+
+def dot(a, b):
+    """Scalar product of complex plane vectors."""
+    return a.real * b.real + a.imag * b.imag
 
 
 @dataclass(frozen=True)
 class Kinematics:
     """Position, velocity and acceleration of every link, for n input positions.
 
-    Each link is described by the motion of its frame: angle ``theta``, angular
-    velocity ``omega`` and acceleration ``alpha`` (CCW positive), and the
-    position, velocity and acceleration of the frame's origin ``O``. Points of
+    Each link is described by the motion of its frame: angle ``theta``,
+    angular velocity ``omega`` and acceleration ``alpha`` (CCW positive), and
+    the position, velocity and acceleration of the frame's origin. Points of
     the link follow from rigid-body kinematics (:meth:`position`,
     :meth:`velocity`, :meth:`acceleration`).
 
@@ -28,14 +54,21 @@ class Kinematics:
         Input coordinate and its rates: θ [rad], ω [rad/s], α [rad/s²] of a
         crank, or s [m], v [m/s], a [m/s²] of a slider.
     theta, omega, alpha : dict of int to ndarray, shape (n,)
-    O, v_O, a_O : dict of int to ndarray, shape (n, 2)
+    e : dict of int to complex ndarray, shape (n,)
+        e^{iθ} of each link.
+    O, v_O, a_O : dict of int to complex ndarray, shape (n,)
+        Position [m], velocity [m/s] and acceleration [m/s²] of each link
+        frame's origin, as x + iy.
     valid : ndarray of bool, shape (n,)
         False where the linkage cannot be assembled or is at a dead point.
     failures : dict of str to ndarray of bool
         For each group that failed somewhere, where and why (key is the reason).
+    groups : tuple
+        The driver and Assur groups in solution order
+        (:func:`graphkin.kinematics.decompose`).
     given : dict
-        Values supplied by a problem instead of derived (``{(3, "a_G"): ...}``),
-        used as they are by the force analysis.
+        Values supplied by a problem instead of derived, keyed
+        ``(link, "omega" | "alpha" | "a_G" | "v_G")``; used by the force analysis.
     """
 
     mechanism: Mechanism
@@ -45,48 +78,69 @@ class Kinematics:
     theta: Mapping[int, np.ndarray]
     omega: Mapping[int, np.ndarray]
     alpha: Mapping[int, np.ndarray]
+    e: Mapping[int, np.ndarray]
     O: Mapping[int, np.ndarray]
     v_O: Mapping[int, np.ndarray]
     a_O: Mapping[int, np.ndarray]
     valid: np.ndarray
     failures: Mapping[str, np.ndarray] = field(default_factory=dict)
+    groups: tuple = ()
     given: Mapping[tuple[int, str], np.ndarray] = field(default_factory=dict)
 
     @property
     def n(self) -> int:
         return len(self.q)
 
-    # -- points -----------------------------------------------------------
-    def _local(self, link: int, point) -> np.ndarray:
+    # -- complex forms, used by the solvers -------------------------------
+    def _p(self, link: int, point) -> complex:
         if isinstance(point, str):
             point = self.mechanism.link(link).point(point)
-        return rotate(np.asarray(point, dtype=float), self.theta[link])
+        return complex(point[0], point[1])
 
+    def z(self, link: int, point) -> np.ndarray:
+        """Position of a point of ``link`` as complex x + iy [m], shape (n,)."""
+        return self.O[link] + self.e[link] * self._p(link, point)
+
+    def z_velocity(self, link: int, point) -> np.ndarray:
+        return self.v_O[link] + 1j * self.omega[link] * (self.e[link] * self._p(link, point))
+
+    def z_acceleration(self, link: int, point) -> np.ndarray:
+        r = self.e[link] * self._p(link, point)
+        return self.a_O[link] + (1j * self.alpha[link] - self.omega[link] ** 2) * r
+
+    def z_G(self, link: int) -> np.ndarray:
+        return self.z(link, self.mechanism.link(link).G)
+
+    def z_a_G(self, link: int) -> np.ndarray:
+        if (link, "a_G") in self.given:
+            return as_z(self.given[(link, "a_G")])
+        return self.z_acceleration(link, self.mechanism.link(link).G)
+
+    # -- points -----------------------------------------------------------
     def position(self, link: int, point) -> np.ndarray:
         """Global position [m] of a point of ``link`` (a name or local (x, y)), shape (n, 2)."""
-        return self.O[link] + self._local(link, point)
+        return as_xy(self.z(link, point))
 
     def velocity(self, link: int, point) -> np.ndarray:
         """Velocity [m/s] of a point of ``link``, shape (n, 2)."""
-        return self.v_O[link] + self.omega[link][:, None] * perp(self._local(link, point))
+        return as_xy(self.z_velocity(link, point))
 
     def acceleration(self, link: int, point) -> np.ndarray:
         """Acceleration [m/s²] of a point of ``link``, shape (n, 2)."""
-        r = self._local(link, point)
-        return self.a_O[link] + self.alpha[link][:, None] * perp(r) - (self.omega[link] ** 2)[:, None] * r
+        return as_xy(self.z_acceleration(link, point))
 
     # -- centres of mass --------------------------------------------------
     def G(self, link: int) -> np.ndarray:
         """Position of the centre of mass G [m], shape (n, 2)."""
-        return self.position(link, self.mechanism.link(link).G)
+        return as_xy(self.z_G(link))
 
     def v_G(self, link: int) -> np.ndarray:
-        """Velocity of G [m/s], shape (n, 2)."""
+        """Velocity of G [m/s], shape (n, 2) (a given value if the problem supplied one)."""
         return self.given.get((link, "v_G"), self.velocity(link, self.mechanism.link(link).G))
 
     def a_G(self, link: int) -> np.ndarray:
         """Acceleration of G [m/s²], shape (n, 2) (a given value if the problem supplied one)."""
-        return self.given.get((link, "a_G"), self.acceleration(link, self.mechanism.link(link).G))
+        return as_xy(self.z_a_G(link))
 
     def w(self, link: int) -> np.ndarray:
         """Angular velocity ω [rad/s] (given or derived)."""
@@ -97,9 +151,13 @@ class Kinematics:
         return self.given.get((link, "alpha"), self.alpha[link])
 
     # -- sliders ----------------------------------------------------------
+    def z_guide(self, joint: Prismatic) -> np.ndarray:
+        """Unit vector u along a prismatic joint's guide, complex, shape (n,)."""
+        return self.e[joint.guide] * np.exp(1j * joint.direction)
+
     def guide_direction(self, joint: Prismatic) -> np.ndarray:
         """Global unit vector u along a prismatic joint's guide, shape (n, 2)."""
-        return unit(self.theta[joint.guide] + joint.direction)
+        return as_xy(self.z_guide(joint))
 
     def slide_rate(self, joint: Prismatic, on: int) -> np.ndarray:
         """Velocity [m/s] of link ``on`` relative to the other link of ``joint``, along u.
@@ -107,10 +165,10 @@ class Kinematics:
         Its sign decides the direction of Coulomb friction on ``on``.
         """
         other = joint.guide if on == joint.slider else joint.slider
-        X = self.position(joint.slider, joint.point)
-        v_on = self.v_O[on] + self.w(on)[:, None] * perp(X - self.O[on])
-        v_other = self.v_O[other] + self.w(other)[:, None] * perp(X - self.O[other])
-        return dot(v_on - v_other, self.guide_direction(joint))
+        X = self.z(joint.slider, joint.point)
+        v_on = self.v_O[on] + 1j * self.w(on) * (X - self.O[on])
+        v_other = self.v_O[other] + 1j * self.w(other) * (X - self.O[other])
+        return dot(v_on - v_other, self.z_guide(joint))
 
     def reason(self, i: int) -> str:
         """Why position ``i`` is invalid ('' if it is valid)."""

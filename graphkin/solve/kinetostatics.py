@@ -22,10 +22,11 @@ import itertools
 
 import numpy as np
 
-from ..geometry import cross, dot, perp, solve2, unit
-from ..kinematics import Dyad, DriverGroup, GearGroup, Kinematics, decompose, solve_kinematics
+from ..kinematics import Dyad, DriverGroup, GearGroup, Kinematics, solve_kinematics
+from ..kinematics.dyads import solve_columns
+from ..kinematics.state import as_xy, cross, dot
 from ..model import FRAME, Mechanism, Prismatic, Revolute
-from .loads import known_loads
+from .loads import _known
 from .result import ForceAnalysis
 
 
@@ -44,17 +45,17 @@ def _w(kin: Kinematics, joint: Prismatic, on: int, sigma_N):
     w = n − μ σ_N sgn(ṡ) u, with u the guide direction, n = k × u, ṡ the
     velocity of ``on`` relative to the other link and σ_N the sign of N.
     """
-    u = kin.guide_direction(joint)
-    w = perp(u)
+    u = kin.z_guide(joint)
+    w = 1j * u
     if joint.mu:
-        w = w - (joint.mu * sigma_N * np.sign(kin.slide_rate(joint, on)))[:, None] * u
+        w = w - joint.mu * sigma_N * np.sign(kin.slide_rate(joint, on)) * u
     return w
 
 
 def _point(kin: Kinematics, joint, link: int):
     if isinstance(joint, Prismatic):
-        return kin.position(joint.slider, joint.point)
-    return kin.position(link, joint.point)
+        return kin.z(joint.slider, joint.point)
+    return kin.z(link, joint.point)
 
 
 def _dyad(kin: Kinematics, d: Dyad, L, M, sig) -> list[_Reactions]:
@@ -67,8 +68,11 @@ def _dyad(kin: Kinematics, d: Dyad, L, M, sig) -> list[_Reactions]:
     if t == "RRR":
         # Moments of j and of k about the middle pin, and the dyad's force sum.
         r1, r3 = X1 - X2, X3 - X2
-        Mj2, Mk2 = Mj - cross(X2, Lj), Mk - cross(X2, Lk)
-        F1 = np.stack(solve2(-r1[:, 1], r1[:, 0], -r3[:, 1], r3[:, 0], -Mj2, cross(r3, S) + Mk2), -1)
+        b1 = -(Mj - cross(X2, Lj))
+        b3 = cross(r3, S) + Mk - cross(X2, Lk)
+        # cross(r1, F1) = b1 and cross(r3, F1) = b3, by Cramer's rule.
+        with np.errstate(divide="ignore", invalid="ignore"):
+            F1 = (b1 * r3 - b3 * r1) / cross(r1, r3)
         F3 = S - F1
         F2 = F1 + Lj
     elif t == "RRP":
@@ -76,7 +80,7 @@ def _dyad(kin: Kinematics, d: Dyad, L, M, sig) -> list[_Reactions]:
         r1 = X1 - X2
         with np.errstate(divide="ignore", invalid="ignore"):
             N3 = (cross(r1, S) + Mj - cross(X2, Lj)) / cross(r1, w3)
-        F3 = N3[:, None] * w3
+        F3 = N3 * w3
         F1 = S - F3
         F2 = F1 + Lj
         C3 = -(Mk + cross(X2, F2) + cross(X3, F3))
@@ -84,21 +88,21 @@ def _dyad(kin: Kinematics, d: Dyad, L, M, sig) -> list[_Reactions]:
         w2 = _w(kin, d.J2, d.k, sig[1])
         with np.errstate(divide="ignore", invalid="ignore"):
             N2 = (cross(X1, Lj) + cross(X3, Lk) - Mj - Mk) / cross(X1 - X3, w2)
-        F2 = N2[:, None] * w2
+        F2 = N2 * w2
         F1 = F2 - Lj
         F3 = -F2 - Lk
         C2 = -(cross(X2, F2) + cross(X3, F3) + Mk)
     elif t == "RPP":
         w2, w3 = _w(kin, d.J2, d.k, sig[1]), _w(kin, d.J3, d.k, sig[2])
-        N2, N3 = solve2(w2[:, 0], w3[:, 0], w2[:, 1], w3[:, 1], -Lk[:, 0], -Lk[:, 1])
-        F2, F3 = N2[:, None] * w2, N3[:, None] * w3
+        N2, N3 = solve_columns(w2, w3, -Lk)
+        F2, F3 = N2 * w2, N3 * w3
         F1 = F2 - Lj
         C2 = cross(X1, F1) - cross(X2, F2) + Mj
         C3 = -(cross(X2, F2) + C2 + cross(X3, F3) + Mk)
     else:  # PRP
         w1, w3 = _w(kin, d.J1, d.j, sig[0]), _w(kin, d.J3, d.k, sig[2])
-        N1, N3 = solve2(w1[:, 0], w3[:, 0], w1[:, 1], w3[:, 1], S[:, 0], S[:, 1])
-        F1, F3 = N1[:, None] * w1, N3[:, None] * w3
+        N1, N3 = solve_columns(w1, w3, S)
+        F1, F3 = N1 * w1, N3 * w3
         F2 = F1 + Lj
         C1 = cross(X2, F2) - cross(X1, F1) - Mj
         C3 = -(cross(X2, F2) + cross(X3, F3) + Mk)
@@ -112,33 +116,33 @@ def _dyad(kin: Kinematics, d: Dyad, L, M, sig) -> list[_Reactions]:
 def _driver(kin: Kinematics, g: DriverGroup, L, M):
     link, J = g.link, g.joint
     if isinstance(J, Revolute):
-        X = kin.position(FRAME, J.point)
+        X = kin.z(FRAME, J.point)
         F = -L[link]
         T = -(M[link] + cross(X, F))
         return [_Reactions(J, link, F, X)], T
-    u = kin.guide_direction(J)
-    X = kin.position(link, J.point)
-    N = -dot(L[link], perp(u))
+    u = kin.z_guide(J)
+    X = kin.z(link, J.point)
+    N = -dot(L[link], 1j * u)
     # N is known before friction enters, so its sign needs no assumption.
     w = _w(kin, J, link, np.sign(N))
     P = -dot(L[link], u) - N * dot(w, u)
-    G = N[:, None] * w
-    C = -(M[link] + cross(X, G + P[:, None] * u))
+    G = N * w
+    C = -(M[link] + cross(X, G + P * u))
     return [_Reactions(J, link, G, X, C, N)], P
 
 
 def _gear(kin: Kinematics, g: GearGroup, L, M):
     mesh = g.mesh
     rk = mesh.radii[mesh.links.index(g.k)]
-    Ck = kin.position(g.b, g.pivot.point)
-    Cj = kin.position(g.b, g.j_pivot.point)
-    e = (Cj - Ck) / np.linalg.norm(Cj - Ck, axis=-1)[:, None]
+    Ck = kin.z(g.b, g.pivot.point)
+    Cj = kin.z(g.b, g.j_pivot.point)
+    e = (Cj - Ck) / np.abs(Cj - Ck)
     P = Ck + rk * e
-    t = perp(e)
+    t = 1j * e
     # The tooth force's tangential part balances k's moment about its centre;
     # its radial part, |W_t| tan φ, pushes k away from j.
     W_t = -(M[g.k] - cross(Ck, L[g.k])) / rk
-    W = W_t[:, None] * t - (np.abs(W_t) * np.tan(mesh.pressure_angle))[:, None] * e
+    W = W_t * t - np.abs(W_t) * np.tan(mesh.pressure_angle) * e
     F = -L[g.k] - W
     return [_Reactions(mesh, g.k, W, P), _Reactions(g.pivot, g.k, F, Ck)]
 
@@ -163,7 +167,7 @@ def solve_forces(kin: Kinematics) -> ForceAnalysis:
     n = kin.n
     L, M = {}, {}
     for link in mech.moving:
-        L[link], M[link] = known_loads(kin, link)
+        L[link], M[link] = _known(kin, link)
     forces, normal, couple = {}, {}, {}
     failures: dict[str, np.ndarray] = {}
     effort = None
@@ -174,7 +178,7 @@ def solve_forces(kin: Kinematics) -> ForceAnalysis:
             other = i if r.on == j else j
             key = (min(i, j), max(i, j))
             sign = 1.0 if r.on == key[1] else -1.0
-            forces[key] = sign * r.F
+            forces[key] = as_xy(sign * r.F)
             if r.N is not None:
                 normal[key] = sign * r.N
                 couple[key] = sign * r.C
@@ -182,18 +186,20 @@ def solve_forces(kin: Kinematics) -> ForceAnalysis:
                 L[other] = L[other] - r.F
                 M[other] = M[other] - cross(r.X, r.F) - (r.C if r.C is not None else 0.0)
 
-    for g in reversed(decompose(mech)):
-        if isinstance(g, DriverGroup):
-            reactions, effort = _driver(kin, g, L, M)
-        elif isinstance(g, GearGroup):
-            reactions = _gear(kin, g, L, M)
-        else:
-            reactions = _solve_dyad_with_friction(kin, g, L, M, failures)
-        apply(reactions)
+    # Invalid positions carry nan through the arithmetic, by design.
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        for g in reversed(kin.groups):
+            if isinstance(g, DriverGroup):
+                reactions, effort = _driver(kin, g, L, M)
+            elif isinstance(g, GearGroup):
+                reactions = _gear(kin, g, L, M)
+            else:
+                reactions = _solve_dyad_with_friction(kin, g, L, M, failures)
+            apply(reactions)
 
     valid = kin.valid & np.isfinite(effort)
     for F in forces.values():
-        valid &= np.isfinite(F).all(axis=-1)
+        valid &= np.isfinite(F[:, 0]) & np.isfinite(F[:, 1])
     for where in failures.values():
         valid &= ~where
     dead = kin.valid & ~valid & ~np.logical_or.reduce([w for w in failures.values()] or [np.zeros(n, bool)])
@@ -222,7 +228,7 @@ def _solve_dyad_with_friction(kin, d, L, M, failures):
             chosen = trial
         else:
             for c, t in zip(chosen, trial):
-                c.F = np.where(take[:, None], t.F, c.F)
+                c.F = np.where(take, t.F, c.F)
                 if c.C is not None:
                     c.C = np.where(take, t.C, c.C)
                     c.N = np.where(take, t.N, c.N)
@@ -234,7 +240,7 @@ def _solve_dyad_with_friction(kin, d, L, M, failures):
     if stuck.any():
         failures[f"{d.label}: friction locks it (no consistent direction of the normal force)"] = stuck
         for r in chosen:
-            r.F = np.where(stuck[:, None], np.nan, r.F)
+            r.F = np.where(stuck, np.nan, r.F)
     return chosen
 
 

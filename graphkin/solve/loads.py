@@ -6,8 +6,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..geometry import cross
 from ..kinematics import Kinematics
+from ..kinematics.state import as_xy, cross
 from ..model import PointForce, Torque
 
 
@@ -37,18 +37,55 @@ class Inertia:
 def inertia(kin: Kinematics, link: int) -> Inertia:
     """Inertia force and torque of a link and their single equivalent resultant."""
     body = kin.mechanism.link(link)
-    F = -body.mass * kin.a_G(link)
+    F = -body.mass * kin.z_a_G(link)
     T = -body.I_G * kin.al(link)
-    F2 = np.sum(F * F, axis=-1)
+    size = np.abs(F)
     with np.errstate(divide="ignore", invalid="ignore"):
-        h = np.where(F2 > 0, np.abs(T) / np.sqrt(F2), np.nan)
-        # r × F = T with r ⟂ F gives r = (F × T k)/|F|² = T·(F_y, −F_x)/|F|².
-        shift = np.where(F2[:, None] > 0, T[:, None] * np.stack([F[:, 1], -F[:, 0]], -1) / F2[:, None], np.nan)
-    return Inertia(F, T, h, kin.G(link) + shift)
+        h = np.where(size > 0, np.abs(T) / size, np.nan)
+        # r × F = T with r ⟂ F gives r = −i T F / |F|².
+        shift = np.where(size > 0, -1j * T * F / size**2, np.nan)
+    return Inertia(as_xy(F), T, h, as_xy(kin.z_G(link) + shift))
+
+
+def _external(kin: Kinematics, link: int):
+    """Sum of external forces and weight (complex) and their moment about the origin."""
+    mech = kin.mechanism
+    n = kin.n
+    F = np.zeros(n, complex)
+    M = np.zeros(n)
+    body = mech.link(link)
+    if mech.gravity and body.mass:
+        W = -1j * body.mass * mech.gravity
+        F = F + W
+        M = M + cross(kin.z_G(link), W)
+    for load in mech.loads:
+        if load.link != link:
+            continue
+        on = 1.0 if load.active is None else load.active.mask(kin.q)
+        if isinstance(load, PointForce):
+            f = on * complex(*load.force)
+            F = F + f
+            M = M + cross(kin.z(link, load.point), f)
+        elif isinstance(load, Torque):
+            M = M + on * load.torque
+    return F, M
+
+
+def _known(kin: Kinematics, link: int):
+    """External plus inertia loads: complex force (n,) and moment about the origin (n,)."""
+    F, M = _external(kin, link)
+    body = kin.mechanism.link(link)
+    if body.mass:
+        Fi = -body.mass * kin.z_a_G(link)
+        F = F + Fi
+        M = M + cross(kin.z_G(link), Fi)
+    if body.I_G:
+        M = M - body.I_G * kin.al(link)
+    return F, M
 
 
 def external_loads(kin: Kinematics, link: int):
-    """Resultant of the external loads on a link and its moment about the origin.
+    """Resultant of the external loads on a link (weight included) and its moment about the origin.
 
     Returns
     -------
@@ -57,30 +94,11 @@ def external_loads(kin: Kinematics, link: int):
     M : ndarray, shape (n,)
         Their moment about the global origin plus applied torques [N·m].
     """
-    mech = kin.mechanism
-    n = kin.n
-    F = np.zeros((n, 2))
-    M = np.zeros(n)
-    body = mech.link(link)
-    if mech.gravity and body.mass:
-        W = np.broadcast_to([0.0, -body.mass * mech.gravity], (n, 2))
-        F = F + W
-        M = M + cross(kin.G(link), W)
-    for load in mech.loads:
-        if load.link != link:
-            continue
-        on = np.ones(n) if load.active is None else load.active.mask(kin.q).astype(float)
-        if isinstance(load, PointForce):
-            f = on[:, None] * np.asarray(load.force)
-            F = F + f
-            M = M + cross(kin.position(link, load.point), f)
-        elif isinstance(load, Torque):
-            M = M + on * load.torque
-    return F, M
+    F, M = _external(kin, link)
+    return as_xy(np.broadcast_to(F, (kin.n,))), np.broadcast_to(M, (kin.n,)).astype(float)
 
 
 def known_loads(kin: Kinematics, link: int):
-    """External loads plus inertia loads: force (n, 2) and moment about the origin (n,)."""
-    F, M = external_loads(kin, link)
-    i = inertia(kin, link)
-    return F + i.F, M + cross(kin.G(link), i.F) + i.T
+    """External loads plus inertia loads: force (n, 2) [N] and moment about the origin (n,) [N·m]."""
+    F, M = _known(kin, link)
+    return as_xy(np.broadcast_to(F, (kin.n,))), np.broadcast_to(M, (kin.n,)).astype(float)

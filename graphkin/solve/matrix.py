@@ -21,6 +21,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..geometry import cross, perp
+from ..kinematics.state import as_xy
 from ..model import FRAME, GearMesh, Prismatic, Revolute
 from .kinetostatics import _w
 from .loads import known_loads
@@ -59,12 +60,18 @@ class System:
     def format(self, i: int = 0, digits: int = 4) -> str:
         """Position i as an aligned text table: rows of A, then b."""
         cols = self.unknowns
-        width = max(9, digits + 6, *(len(c) for c in cols))
+        width = max(digits + 7, *(len(c) + 1 for c in cols))
+        # Rounding noise (1e-16 where a lever arm is zero) would hide the
+        # structure of the matrix: show it as 0.
+        A, b = self.A[i].copy(), self.b[i].copy()
+        A[np.abs(A) < 1e-12 * max(np.abs(A).max(), 1e-300)] = 0.0
+        b[np.abs(b) < 1e-12 * max(np.abs(b).max(), 1e-300)] = 0.0
+        A, b = A + 0.0, b + 0.0
         head = " " * 14 + "".join(f"{c:>{width}}" for c in cols) + " │" + f"{'b':>{width}}"
         lines = [head]
         for r, eq in enumerate(self.equations):
-            row = "".join(f"{self.A[i, r, c]:>{width}.{digits}g}" for c in range(len(cols)))
-            lines.append(f"{eq:<14}{row} │{self.b[i, r]:>{width}.{digits}g}")
+            row = "".join(f"{A[r, c]:>{width}.{digits}g}" for c in range(len(cols)))
+            lines.append(f"{eq:<14}{row} │{b[r]:>{width}.{digits}g}")
         return "\n".join(lines)
 
 
@@ -114,7 +121,7 @@ def assemble(result: ForceAnalysis) -> System:
             unknowns += [f"F{name}x", f"F{name}y"]
         elif isinstance(joint, Prismatic):
             X = kin.position(joint.slider, joint.point)
-            w = _w(kin, joint, hi, np.sign(result.normal[(lo, hi)]))
+            w = as_xy(_w(kin, joint, hi, np.sign(result.normal[(lo, hi)])))
             put(hi, c, w, X)
             put(lo, c, -w, X)
             put(hi, c + 1, None, C=ones)
@@ -166,7 +173,7 @@ def solve_matrix(result: ForceAnalysis) -> ForceAnalysis:
             forces[(lo, hi)] = x[:, c:c + 2]
             c += 2
         elif isinstance(joint, Prismatic):
-            w = _w(kin, joint, hi, np.sign(result.normal[(lo, hi)]))
+            w = as_xy(_w(kin, joint, hi, np.sign(result.normal[(lo, hi)])))
             normal[(lo, hi)], couple[(lo, hi)] = x[:, c], x[:, c + 1]
             forces[(lo, hi)] = x[:, c, None] * w
             c += 2
