@@ -16,6 +16,22 @@ from .loads import Inertia, inertia
 _NAME = re.compile(r"^([FGT])(\d)(\d)$|^([FGT])_?(\d+),(\d+)$")
 
 
+def parse_force_name(mechanism, name: str) -> tuple[int, int]:
+    """Links (i, j) of a joint-force name: ``"F23"`` → (2, 3); checks the letter (F or G) fits the joint."""
+    m = _NAME.match(name)
+    if not m:
+        raise GraphkinError(f"{name!r} is not a force name like 'F23', 'G14' or {mechanism.driver.symbol!r}")
+    letter, i, j = (m.group(1), m.group(2), m.group(3)) if m.group(1) else (m.group(4), m.group(5), m.group(6))
+    i, j = int(i), int(j)
+    try:
+        joint = mechanism.joint_between(i, j)
+    except GraphkinError:
+        raise GraphkinError(f"{name!r}: links {i} and {j} share no joint") from None
+    if letter != joint.force_letter:
+        raise GraphkinError(f"{name!r}: the joint between links {i} and {j} is named {joint.force_letter}{i}{j}")
+    return i, j
+
+
 @dataclass(frozen=True)
 class ForceAnalysis:
     """Joint forces and the driving effort over n positions.
@@ -99,16 +115,7 @@ class ForceAnalysis:
     def __getitem__(self, name: str) -> np.ndarray:
         if name == self.driver_name:
             return self.effort if name[0] == "T" else self.driver_force()
-        m = _NAME.match(name)
-        if not m:
-            raise GraphkinError(f"{name!r} is not a force name like 'F23', 'G14' or {self.driver_name!r}")
-        letter, i, j = (m.group(1), m.group(2), m.group(3)) if m.group(1) else (m.group(4), m.group(5), m.group(6))
-        i, j = int(i), int(j)
-        F = self.force(i, j)
-        if letter != self.mechanism.joint_between(i, j).force_letter:
-            right = self.name_of(min(i, j), max(i, j))[0]
-            raise GraphkinError(f"{name!r}: the joint between links {i} and {j} is named {right}{i}{j}")
-        return F
+        return self.force(*parse_force_name(self.mechanism, name))
 
     def inertia(self, link: int) -> Inertia:
         """The link's inertia force, torque and h (see :func:`graphkin.solve.loads.inertia`)."""

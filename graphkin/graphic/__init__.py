@@ -1,0 +1,10 @@
+"""The graphical route as data: resultants, two- and three-force members, force polygons.
+
+Uses shapely for the geometry and never matplotlib; :mod:`graphkin.draw`
+draws what this builds.
+"""
+
+from .construction import Arrow, Construction, Line, Step, nice_scale
+from .engine import construct_forces
+
+__all__ = ["Arrow", "Construction", "Line", "Step", "construct_forces", "nice_scale"]

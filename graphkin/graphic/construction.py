@@ -1,0 +1,189 @@
+"""The graphical solution as data: ordered steps, each with its caption and geometry.
+
+Everything here is plain numbers (SI: m for the mechanism, N for forces) and
+strings, so a handout, a grader or the drawing layer can use it without
+re-solving anything. Vectors are ``(x, y)`` tuples.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..errors import GraphkinError
+
+
+@dataclass(frozen=True)
+class Line:
+    """A line of action drawn in the mechanism.
+
+    Attributes
+    ----------
+    name : str
+        What acts along it, e.g. ``"R3"`` or ``"F23"``.
+    point : (float, float)
+        A point of the line [m].
+    direction : (float, float)
+        Unit direction.
+    role : str
+        ``"resultant"`` (known load), ``"known direction"`` (a reaction whose
+        line is known, its size not), ``"found"`` (a line found by the step).
+    """
+
+    name: str
+    point: tuple[float, float]
+    direction: tuple[float, float]
+    role: str = "known direction"
+
+
+@dataclass(frozen=True)
+class Arrow:
+    """A force in a polygon, drawn tip to tail in order.
+
+    Attributes
+    ----------
+    name : str
+    vector : (float, float)
+        The force [N].
+    known : bool
+        True for loads known before the step, False for the unknowns it finds.
+    at : (float, float) or None
+        Where it acts in the mechanism [m] (its point of application), if it has one.
+    """
+
+    name: str
+    vector: tuple[float, float]
+    known: bool
+    at: tuple[float, float] | None = None
+
+
+@dataclass(frozen=True)
+class Step:
+    """One step of the construction.
+
+    Attributes
+    ----------
+    kind : str
+        ``"resultant"``, ``"two-force"``, ``"three-force"``, ``"polygon"``,
+        ``"superpose"``, ``"driver"`` or ``"note"``.
+    caption : str
+        What a student does in this step, in words.
+    link : int or None
+        The link the step is about.
+    lines : tuple of Line
+    points : dict of str to (float, float)
+        Named points the step adds, e.g. the concurrency point ``"I3"`` [m].
+    polygon : tuple of Arrow
+        A force polygon, tip to tail; it closes when the link is in equilibrium.
+    values : dict of str to float or (float, float)
+        Values read off the step (forces [N], torques [N·m], distances [m]).
+    """
+
+    kind: str
+    caption: str
+    link: int | None = None
+    lines: tuple[Line, ...] = ()
+    points: dict = field(default_factory=dict)
+    polygon: tuple[Arrow, ...] = ()
+    values: dict = field(default_factory=dict)
+
+    def closure(self) -> float:
+        """|Σ polygon| / max |arrow|: 0 for a polygon that closes."""
+        if not self.polygon:
+            return 0.0
+        total = np.sum([a.vector for a in self.polygon], axis=0)
+        size = max(math.hypot(*a.vector) for a in self.polygon)
+        return float(math.hypot(*total) / size) if size else 0.0
+
+
+def nice_scale(largest: float, length: float = 80.0) -> float:
+    """A round force scale [N per mm of drawing] drawing ``largest`` [N] about ``length`` mm long.
+
+    Examples
+    --------
+    >>> nice_scale(27.04)
+    0.5
+    >>> nice_scale(2377.0)
+    50.0
+    """
+    if not largest > 0:
+        return 1.0
+    raw = largest / length
+    decade = 10 ** math.floor(math.log10(raw))
+    for m in (1, 2, 5, 10):
+        if m * decade >= raw:
+            return float(m * decade)
+    return float(10 * decade)  # pragma: no cover
+
+
+@dataclass(frozen=True)
+class Construction:
+    """The graphical solution of one position.
+
+    Attributes
+    ----------
+    mechanism : Mechanism
+    index : int
+        Position index in the kinematics it was built from.
+    q : float
+        The input coordinate at that position (θ [rad] or s [m]).
+    steps : tuple of Step
+    forces : dict of (int, int) to (float, float)
+        Force of the lower-numbered link on the higher, per joint [N].
+    normal, couple : dict of (int, int) to float
+        For prismatic pairs: normal force N [N] and couple C [N·m], as in
+        :class:`graphkin.solve.ForceAnalysis`.
+    effort : float
+        Driving torque T1j [N·m] or force F1j along the guide [N].
+    force_scale : float
+        Round scale for drawing the polygons [N per mm].
+    valid : bool
+    reason : str
+        Why the construction cannot close, when not valid.
+    warnings : tuple of str
+        Polygons that failed to close within tolerance, and similar notes.
+    """
+
+    mechanism: object
+    index: int
+    q: float
+    steps: tuple[Step, ...] = ()
+    forces: dict = field(default_factory=dict)
+    normal: dict = field(default_factory=dict)
+    couple: dict = field(default_factory=dict)
+    effort: float = math.nan
+    force_scale: float = 1.0
+    valid: bool = True
+    reason: str = ""
+    warnings: tuple[str, ...] = ()
+
+    @property
+    def driver_name(self) -> str:
+        return self.mechanism.driver.symbol
+
+    def force(self, i: int, j: int) -> np.ndarray:
+        """Force of link i on link j [N], shape (2,)."""
+        key = (min(i, j), max(i, j))
+        if key not in self.forces:
+            raise GraphkinError(f"links {i} and {j} share no joint")
+        F = np.asarray(self.forces[key], dtype=float)
+        return F if i < j else -F
+
+    def __getitem__(self, name: str):
+        from ..solve.result import parse_force_name
+
+        if name == self.driver_name:
+            return self.effort
+        return self.force(*parse_force_name(self.mechanism, name))
+
+    def values(self) -> dict:
+        """Every force the construction found, by name (both orders) [N], and the driver's effort."""
+        out = {}
+        for (i, j), F in self.forces.items():
+            letter = self.mechanism.joint_between(i, j).force_letter
+            out[f"{letter}{i}{j}"] = tuple(F)
+            out[f"{letter}{j}{i}"] = (-F[0], -F[1])
+        out[self.driver_name] = self.effort
+        return out
