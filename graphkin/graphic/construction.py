@@ -139,6 +139,18 @@ class Construction:
         Driving torque T1j [N·m] or force F1j along the guide [N].
     force_scale : float
         Round scale for drawing the polygons [N per mm].
+    points : dict of int to dict of str to (float, float)
+        Position of every named point of every link at this position [m].
+    G : dict of int to (float, float)
+        Centre of mass of each moving link [m].
+    inertia : dict of int to dict
+        Per moving link with mass: ``{"F": (x, y) [N], "T": N·m, "h": m or None,
+        "line_point": (x, y) or None}`` — the inertia force, torque, offset h
+        and a point of the single resultant's line.
+    external : dict of int to list of Arrow
+        External forces (and weight) on each link, at their points.
+    pitch_points : dict of (int, int) to (float, float)
+        Pitch point of each gear mesh [m].
     valid : bool
     reason : str
         Why the construction cannot close, when not valid.
@@ -158,6 +170,44 @@ class Construction:
     valid: bool = True
     reason: str = ""
     warnings: tuple[str, ...] = ()
+    points: dict = field(default_factory=dict)
+    G: dict = field(default_factory=dict)
+    inertia: dict = field(default_factory=dict)
+    external: dict = field(default_factory=dict)
+
+    def forces_on(self, link: int) -> list[Arrow]:
+        """Every joint force acting on ``link``, named F_ij (of i on link), at its point of application.
+
+        A prismatic pair's force is placed at the slider point; the couple it
+        also transmits is in :attr:`couple` (see :meth:`couple_on`).
+        """
+        from ..model import GearMesh, Prismatic
+
+        out = []
+        for joint in self.mechanism.joints_of(link):
+            other = (set(joint.links) - {link}).pop()
+            F = self.force(other, link)
+            if isinstance(joint, Prismatic):
+                at = self.points[joint.slider][joint.point]
+            elif isinstance(joint, GearMesh):
+                at = self.pitch_points[tuple(sorted(joint.links))]
+            else:
+                at = self.points[link][joint.point]
+            letter = joint.force_letter
+            out.append(Arrow(f"{letter}{other}{link}", (float(F[0]), float(F[1])), False, at))
+        return out
+
+    def couple_on(self, link: int) -> float:
+        """Sum of the couples the sliding pairs of ``link`` apply to it [N·m]."""
+        total = 0.0
+        for (lo, hi), C in self.couple.items():
+            if link == hi:
+                total += C
+            elif link == lo:
+                total -= C
+        return total
+
+    pitch_points: dict = field(default_factory=dict)
 
     @property
     def driver_name(self) -> str:

@@ -503,5 +503,37 @@ def construct_forces(kin: Kinematics, index: int = 0) -> Construction:
         return Construction(mech, index, q, tuple(b.steps), valid=False, reason=str(exc))
     largest = max([abs(complex(*F)) for F in b.forces.values()] + [0.0])
     return Construction(mech, index, q, tuple(b.steps), b.forces, b.normal, b.couple, b.effort,
-                        nice_scale(largest), True, "", tuple(b.warnings))
+                        nice_scale(largest), True, "", tuple(b.warnings), **_geometry(kin, index))
+
+
+def _geometry(kin: Kinematics, i: int) -> dict:
+    """Plain-data geometry of position i, for drawing and handouts."""
+    from ..model import GearMesh, PointForce
+    from ..solve.loads import inertia
+
+    mech = kin.mechanism
+    points = {link.number: {name: _xy(complex(kin.z(link.number, name)[i])) for name in link.points} for link in mech.links}
+    G = {link: _xy(complex(kin.z_G(link)[i])) for link in mech.moving}
+    inert, external = {}, {}
+    for link in mech.moving:
+        body = mech.link(link)
+        if body.mass or body.I_G:
+            inn = inertia(kin, link)
+            h = float(inn.h[i])
+            inert[link] = {"F": tuple(map(float, inn.F[i])), "T": float(inn.T[i]), "h": None if math.isnan(h) else h,
+                           "line_point": None if math.isnan(h) else tuple(map(float, inn.line_point[i]))}
+        arrows = []
+        if mech.gravity and body.mass:
+            arrows.append(Arrow(f"W{link}", (0.0, -body.mass * mech.gravity), True, G[link]))
+        for ld in mech.loads:
+            if isinstance(ld, PointForce) and ld.link == link and (ld.active is None or ld.active.mask(kin.q[i:i + 1])[0]):
+                arrows.append(Arrow(ld.name or f"P{link}", ld.force, True, points[link][ld.point]))
+        external[link] = arrows
+    pitch = {}
+    for joint in mech.joints:
+        if isinstance(joint, GearMesh):
+            (a, b), (ca, cb) = joint.links, joint.centers
+            A, B = complex(kin.z(a, ca)[i]), complex(kin.z(b, cb)[i])
+            pitch[tuple(sorted(joint.links))] = _xy(A + joint.radii[0] * (B - A) / abs(B - A))
+    return {"points": points, "G": G, "inertia": inert, "external": external, "pitch_points": pitch}
 
