@@ -49,10 +49,11 @@ def _solve(args) -> int:
 
     problem = catalog.load(args.problem)
     result = problem.solve(_positions(problem, args.at) if args.at else None)
+    graphical = report.constructions(result)
     if args.json:
-        print(json.dumps(report.solution(problem, result), indent=2, ensure_ascii=False))
+        print(json.dumps(report.solution(problem, result, graphical), indent=2, ensure_ascii=False))
     else:
-        print(report.format_solution(problem, result))
+        print(report.format_solution(problem, result, graphical))
     bad = np.flatnonzero(~result.valid)
     for i in bad:
         q = result.kinematics.q[i]

@@ -36,13 +36,51 @@ def _vec(v):
     return [float(v[0]), float(v[1])]
 
 
-def solution(problem, result: ForceAnalysis) -> dict:
+def constructions(result: ForceAnalysis) -> list:
+    """The graphical construction of every position of a result (None where invalid)."""
+    from .graphic import construct_forces
+
+    return [construct_forces(result.kinematics, i) if result.valid[i] else None for i in range(result.n)]
+
+
+def _graphical(result: ForceAnalysis, c, i) -> dict:
+    """The graphical route at position i as plain data, with its difference from the analytical one."""
+    if c is None:
+        return {"valid": False, "reason": result.reason(i)}
+    if not c.valid:
+        return {"valid": False, "reason": c.reason}
+    forces = {}
+    diff = {}
+    scale = max([float(np.hypot(*result.force(a, b)[i])) for a, b in result.forces] + [1e-300])
+    for a, b in result.forces:
+        G, A = c.force(a, b), result.force(a, b)[i]
+        forces[result.name_of(a, b)] = _vec(G)
+        forces[result.name_of(b, a)] = _vec(-G)
+        # Relative to the force itself, or to the largest force when it is ~0.
+        diff[result.name_of(a, b)] = float(np.hypot(*(G - A)) / max(float(np.hypot(*A)), 1e-12 * scale))
+    eff = result.effort[i]
+    diff[result.driver_name] = float(abs(c.effort - eff) / max(abs(eff), 1e-300)) if eff else float(abs(c.effort))
+    steps = [{"kind": s.kind, "caption": s.caption, "link": s.link,
+              "points": {k: list(v) for k, v in s.points.items()},
+              "lines": [{"name": l.name, "point": list(l.point), "direction": list(l.direction), "role": l.role} for l in s.lines],
+              "polygon": [{"name": a.name, "vector": list(a.vector), "known": a.known} for a in s.polygon],
+              "values": {k: (list(v) if isinstance(v, tuple) else v) for k, v in s.values.items()}}
+             for s in c.steps]
+    return {"valid": True, "forces": forces, "driver": {"name": c.driver_name, "value": float(c.effort)},
+            "relative_difference": diff, "force_scale_N_per_mm": c.force_scale, "steps": steps,
+            "warnings": list(c.warnings)}
+
+
+def solution(problem, result: ForceAnalysis, graphical: list | None = None) -> dict:
     """Everything the analysis found, as plain data in SI units.
 
     Parameters
     ----------
     problem : graphkin.problem.Problem
     result : ForceAnalysis
+    graphical : list of Construction, optional
+        The graphical route per position (:func:`constructions`); included
+        under ``"graphical"`` with the relative difference per force.
 
     Returns
     -------
@@ -96,6 +134,8 @@ def solution(problem, result: ForceAnalysis) -> dict:
             if not crank:
                 driver["vector"] = _vec(result.driver_force()[i])
             entry.update(links=links, forces=forces, prismatic=prismatic, driver=driver)
+        if graphical is not None:
+            entry["graphical"] = _graphical(result, graphical[i], i)
         positions.append(entry)
     return {
         "problem": problem.name,
@@ -119,9 +159,9 @@ def _input_text(entry, crank):
     return f"s = {q['value'] * 1e3:.6g} mm, v = {q['rate']:.6g} m/s, a = {q['rate2']:.6g} m/s²"
 
 
-def format_solution(problem, result: ForceAnalysis) -> str:
-    """The solution as text with textbook units (mm, degrees, N, N·m)."""
-    data = solution(problem, result)
+def format_solution(problem, result: ForceAnalysis, graphical: list | None = None) -> str:
+    """The solution as text with textbook units (mm, degrees, N, N·m); both routes when ``graphical`` is given."""
+    data = solution(problem, result, graphical)
     crank = data["driver"]["kind"] == "crank"
     mech = result.mechanism
     out = [data["title"] or data["problem"]]
@@ -162,4 +202,25 @@ def format_solution(problem, result: ForceAnalysis) -> str:
             out.append(f"  Driver: {d['name']} = {d['value']:.4f} N·m {sense}")
         else:
             out.append(f"  Driver: {d['name']} = {_p(d['vector'])} ({d['value']:.4f} N along the guide)")
+        if "graphical" in entry:
+            out.extend(_format_graphical(entry, crank))
     return "\n".join(out)
+
+
+def _format_graphical(entry, crank) -> list[str]:
+    g = entry["graphical"]
+    out = ["  Graphical route (force polygons)"]
+    if not g["valid"]:
+        return out + [f"    cannot close: {g['reason']}"]
+    out += [f"    {k + 1}. {s['caption']}" for k, s in enumerate(g["steps"])]
+    out.append(f"    polygon scale: {g['force_scale_N_per_mm']:g} N per mm")
+    out.append(f"    {'force':<6}{'analytical':>26}{'graphical':>26}{'rel. diff':>11}")
+    for name, rel in g["relative_difference"].items():
+        if name == g["driver"]["name"]:
+            unit = "N·m" if crank else "N"
+            a, c = entry["driver"]["value"], g["driver"]["value"]
+            out.append(f"    {name:<6}{a:>22.4f} {unit:<3}{c:>22.4f} {unit:<3}{rel:>11.1e}")
+        else:
+            out.append(f"    {name:<6}{_p(entry['forces'][name]):>26}{_p(g['forces'][name]):>26}{rel:>11.1e}")
+    out += [f"    warning: {w}" for w in g["warnings"]]
+    return out

@@ -250,12 +250,12 @@ class _Builder:
                 text = (f"{RL} is a pure couple, so {nM} and {nL} form the opposite couple: {nL} is parallel to {nM}")
             else:
                 I = _meet(Rp, R.F / abs(R.F), M_point, M_dir, self.reach)
-                if I is None:
+                if abs(R.about(XL)) <= 1e-12 * abs(R.F) * self.reach:
+                    text = (f"{RL} already passes through {JL.point}, so the three lines cannot meet elsewhere: "
+                            f"{nM} is zero and {nL} = −{RL}")
+                elif I is None:
                     text = (f"{RL} is parallel to {nM}: they meet at infinity, so {nL} is parallel to both; "
                             f"moments about {JL.point} give its size")
-                elif abs(I - XL) <= 1e-9 * self.reach:
-                    text = f"{RL} already passes through {JL.point}: {nM} is zero and {nL} = −{RL}"
-                    points[f"I{L}"] = _xy(I)
                 else:
                     points[f"I{L}"] = _xy(I)
                     text = (f"Link {L} is a three-force member: {RL}, {nM} and {nL} meet in one point I{L} "
