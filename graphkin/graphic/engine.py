@@ -236,7 +236,7 @@ class _Builder:
                               L, tuple(lines), polygon=(Arrow(RL, _xy(R.F), True), Arrow(nL, _xy(F_out), False, _xy(XL))),
                               values={nL: _xy(F_out)}))
             self.steps.extend(steps)
-            return {id(JL): F_out, id(d.J2): 0j}
+            return {id(d.J1): 0j, id(d.J3): 0j, id(JL): F_out, id(d.J2): 0j}
         if isinstance(JL, Revolute):
             XL = self.z(L, JL.point)
             arm = cross(M_point - XL, M_dir)
