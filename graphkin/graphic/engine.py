@@ -38,7 +38,8 @@ import numpy as np
 import shapely
 
 from ..kinematics import Dyad, DriverGroup, GearGroup, Kinematics
-from ..kinematics.state import cross, dot
+from ..geometry import zcross as cross
+from ..geometry import zdot as dot
 from ..model import FRAME, Prismatic, Revolute
 from .construction import Arrow, Construction, Line, Step, nice_scale
 

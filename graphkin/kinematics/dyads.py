@@ -8,7 +8,8 @@ Positions are solved in closed form for each dyad type; the assembly branch
 branch is continuous. Its meaning, with J1, J2, J3 the dyad's joints in the
 order of :class:`~graphkin.kinematics.structure.Dyad`:
 
-- RRR: σ = +1 puts J2 to the left of the directed line J1 → J3;
+- RRR: σ = +1 puts J2 to the left of the directed line J1 → J3, J1 being the
+  outer pin on the link located later (the crank pin A of a four-bar);
 - RRP: σ = +1 puts J2 on the far side (along the guide direction u) of the
   foot of the perpendicular from J1 to the guide;
 - RPR: σ = +1 points the guide direction u from the pin of the guide link
@@ -32,7 +33,9 @@ from __future__ import annotations
 import numpy as np
 
 from ..model import FRAME, Mechanism, Prismatic, Revolute
-from .state import Kinematics, cross, dot
+from ..geometry import zcross as cross
+from ..geometry import zdot as dot
+from .state import Kinematics
 from .structure import Dyad, DriverGroup, GearGroup, decompose
 
 DEAD_POINT = 1e-9

@@ -12,29 +12,10 @@ from typing import Mapping
 
 import numpy as np
 
+from ..geometry import as_xy, as_z
+from ..geometry import zcross as cross
+from ..geometry import zdot as dot
 from ..model import Mechanism, Prismatic
-
-
-def as_xy(z) -> np.ndarray:
-    """Complex array, shape (n,), as a float array of shape (n, 2) (a copy)."""
-    z = np.asarray(z, dtype=complex)
-    return np.stack([z.real, z.imag], axis=-1)
-
-
-def as_z(v) -> np.ndarray:
-    """Float array of shape (..., 2) as complex x + iy."""
-    v = np.asarray(v, dtype=float)
-    return v[..., 0] + 1j * v[..., 1]
-
-
-def cross(a, b):
-    """z-component of a × b for complex plane vectors."""
-    return a.real * b.imag - a.imag * b.real
-
-
-def dot(a, b):
-    """Scalar product of complex plane vectors."""
-    return a.real * b.real + a.imag * b.imag
 
 
 @dataclass(frozen=True)

@@ -4,7 +4,8 @@ A class-II linkage is the driver plus a sequence of dyads, each dyad being
 two links j, k joined to each other (joint J2) and to links already located
 (J1: a–j, J3: k–b). Each joint is revolute (R) or prismatic (P), which gives
 the dyad types RRR, RRP, RPR, PRP, RPP (and their mirror images PRR, PPR,
-which are stored reversed). A gear that is pivoted on a located carrier and
+which are stored reversed; a symmetric dyad is stored with J1 on the link
+located later, so that its branch does not depend on link numbers). A gear that is pivoted on a located carrier and
 meshes with a located gear forms a group of its own.
 """
 
@@ -122,6 +123,7 @@ def decompose(mech: Mechanism) -> tuple[Group, ...]:
     driver_joint = mech.joint_between(FRAME, mech.driver.link)
     groups: list[Group] = [DriverGroup(mech.driver.link, driver_joint)]
     known = {FRAME, mech.driver.link}
+    located = [FRAME, mech.driver.link]
     used = {id(driver_joint)}
 
     def joints_to_known(n):
@@ -129,7 +131,7 @@ def decompose(mech: Mechanism) -> tuple[Group, ...]:
 
     while len(known) < len(mech.links):
         unknown = [n for n in mech.moving if n not in known]
-        group = _next_gear(mech, unknown, known, used) or _next_dyad(mech, unknown, known, used, joints_to_known)
+        group = _next_gear(mech, unknown, known, used) or _next_dyad(mech, unknown, known, used, joints_to_known, located)
         if group is None:
             raise ModelError(
                 f"links {', '.join(map(str, unknown))} cannot be located dyad by dyad from the driver; "
@@ -137,6 +139,7 @@ def decompose(mech: Mechanism) -> tuple[Group, ...]:
             )
         groups.append(group)
         known.update(group.links)
+        located.extend(group.links)
         used.update(id(jt) for jt in group.joints)
     return tuple(groups)
 
@@ -171,7 +174,7 @@ def _check_centre_distance(mech, mesh, k, j, b, pivot, j_pivot):
         raise ModelError(f"{mesh.label}: pitch radii {mesh.radii[0]:g} m + {mesh.radii[1]:g} m do not add up to the centre distance {d:g} m")
 
 
-def _next_dyad(mech, unknown, known, used, joints_to_known):
+def _next_dyad(mech, unknown, known, used, joints_to_known, located):
     for j in unknown:
         for J2 in mech.joints_of(j):
             if id(J2) in used or isinstance(J2, GearMesh):
@@ -192,5 +195,21 @@ def _next_dyad(mech, unknown, known, used, joints_to_known):
                 raise ModelError(f"links {j} and {k} form a PPP group, which cannot be located (it is free to translate)")
             if dyad.type in ("PRR", "PPR"):
                 dyad = dyad.reversed()
+            elif dyad.type[0] == dyad.type[2] and _later_first(dyad, located) is False:
+                dyad = dyad.reversed()
             return dyad
     return None
+
+
+def _later_first(d: Dyad, located: list[int]) -> bool:
+    """Whether a symmetric dyad (RRR, RPR, PRP) already has J1 on the link located later.
+
+    The assembly branch σ is defined looking from J1 to J3, so J1 must not
+    depend on how the links are numbered: J1 is the joint on the link located
+    later (nearer the driver; for a four-bar, the crank pin A rather than the
+    frame pivot B0); on one link, the alphabetically first point.
+    """
+    ia, ib = located.index(d.a), located.index(d.b)
+    if ia != ib:
+        return ia > ib
+    return d.J1.point <= d.J3.point

@@ -24,7 +24,9 @@ import numpy as np
 
 from ..kinematics import Dyad, DriverGroup, GearGroup, Kinematics, solve_kinematics
 from ..kinematics.dyads import solve_columns
-from ..kinematics.state import as_xy, cross, dot
+from ..geometry import as_xy
+from ..geometry import zcross as cross
+from ..geometry import zdot as dot
 from ..model import FRAME, Mechanism, Prismatic, Revolute
 from .loads import _known
 from .result import ForceAnalysis

@@ -7,7 +7,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..kinematics import Kinematics
-from ..kinematics.state import as_xy, cross
+from ..geometry import as_xy
+from ..geometry import zcross as cross
 from ..model import PointForce, Torque
 
 

@@ -21,7 +21,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..geometry import cross, perp
-from ..kinematics.state import as_xy
+from ..geometry import as_xy
 from ..model import FRAME, GearMesh, Prismatic, Revolute
 from .kinetostatics import _w
 from .loads import known_loads
