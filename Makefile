@@ -3,7 +3,7 @@ PYTHON ?= python3
 VENV   := .venv
 BIN    := $(VENV)/bin
 
-.PHONY: demo test bench clean
+.PHONY: demo test bench figures clean
 
 $(BIN)/python:
 	$(PYTHON) -m venv $(VENV)
@@ -14,10 +14,13 @@ $(VENV)/.installed: pyproject.toml | $(BIN)/python
 	touch $@
 
 demo: $(VENV)/.installed
-	$(BIN)/graphkin solve double_slider
+	$(BIN)/graphkin solve double_slider --figure build/double_slider.png
 
 test: $(VENV)/.installed
 	$(BIN)/python -m pytest -q --nbmake --nbmake-timeout=300 tests lessons
+
+figures: $(VENV)/.installed
+	$(BIN)/python figures/build.py
 
 bench: $(VENV)/.installed
 	$(BIN)/python -m pip install --quiet -e '.[test,bench]'

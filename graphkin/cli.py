@@ -24,6 +24,9 @@ def _parser() -> argparse.ArgumentParser:
     s.add_argument("problem", help="catalog name (see 'graphkin list') or path to a problem file")
     s.add_argument("--at", help="input position(s) with units, comma-separated, e.g. '124 deg,140 deg' or '200 mm'")
     s.add_argument("--json", action="store_true", help="print the result as JSON in SI units (schema: docs/json.md)")
+    s.add_argument("--figure", metavar="FILE", help="write the side-by-side figure (.png, .svg or .pdf); "
+                   "with several positions, one file each, numbered")
+    s.add_argument("--steps", metavar="DIR", help="write the construction step by step, one PNG frame per step")
     return p
 
 
@@ -54,12 +57,41 @@ def _solve(args) -> int:
         print(json.dumps(report.solution(problem, result, graphical), indent=2, ensure_ascii=False))
     else:
         print(report.format_solution(problem, result, graphical))
+    if args.figure or args.steps:
+        _figures(problem, result, graphical, args.figure, args.steps, sys.stderr if args.json else sys.stdout)
     bad = np.flatnonzero(~result.valid)
     for i in bad:
         q = result.kinematics.q[i]
         where = f"θ = {math.degrees(q):.6g}°" if problem.mechanism.driver.kind == "crank" else f"s = {q * 1e3:.6g} mm"
         print(f"graphkin: error: {problem.name}: {where}: {result.reason(i)}", file=sys.stderr)
     return 2 if len(bad) else 0
+
+
+def _figures(problem, result, graphical, figure, steps, say):
+    """Write the side-by-side figure(s) and the step frames; say where they went."""
+    from pathlib import Path
+
+    from . import draw
+
+    many = result.n > 1
+    for i, c in enumerate(graphical):
+        if c is None or not c.valid:
+            continue
+        tag = f"_{i + 1}" if many else ""
+        if figure:
+            path = Path(figure)
+            path = path.with_name(f"{path.stem}{tag}{path.suffix}")
+            if path.suffix.lower() not in (".png", ".svg", ".pdf"):
+                raise GraphkinError(f"--figure {figure}: the file must end in .png, .svg or .pdf")
+            path.parent.mkdir(parents=True, exist_ok=True)
+            draw.save(draw.draw_solution(c, result), path)
+            print(f"figure written to {path}", file=say)
+        if steps:
+            folder = Path(steps)
+            folder.mkdir(parents=True, exist_ok=True)
+            for k, fig in enumerate(draw.draw_steps(c), start=1):
+                draw.save(fig, folder / f"{Path(problem.name).stem}{tag}_step{k:02d}.png")
+            print(f"{len(c.steps)} construction steps written to {folder}/", file=say)
 
 
 def main(argv=None) -> int:

@@ -1,0 +1,53 @@
+"""Rebuild every figure in figures/: each catalog problem's side-by-side figure and construction frames.
+
+Run with ``make figures``. A problem with several positions is drawn at one
+representative position, named below.
+"""
+
+from __future__ import annotations
+
+import math
+import shutil
+import sys
+from pathlib import Path
+
+import numpy as np
+
+from graphkin import catalog, draw
+from graphkin.graphic import construct_forces
+
+HERE = Path(__file__).resolve().parent
+AT = {
+    "strip_cutter": math.radians(140.0),  # mid-cut: the 2000 N cutting force acts
+    "slider_crank_friction": math.radians(60.0),
+}
+
+
+def build(name: str) -> list[Path]:
+    problem = catalog.load(name)
+    at = [AT[name]] if name in AT else None
+    result = problem.solve(at)
+    c = construct_forces(result.kinematics, 0)
+    if not c.valid:
+        raise SystemExit(f"{name}: {c.reason}")
+    written = [draw.save(draw.draw_solution(c, result), HERE / f"{name}.png")]
+    frames = HERE / name
+    shutil.rmtree(frames, ignore_errors=True)
+    frames.mkdir()
+    for k, fig in enumerate(draw.draw_steps(c), start=1):
+        written.append(draw.save(fig, frames / f"step{k:02d}.png", dpi=110))
+    return written
+
+
+def main(names=None) -> int:
+    for name in names or catalog.names():
+        for path in build(name):
+            print(path.relative_to(HERE.parent))
+    path = draw.save(draw.draw_sign_convention().ax.figure, HERE / "sign_convention.png")
+    print(path.relative_to(HERE.parent))
+    return 0
+
+
+if __name__ == "__main__":
+    np.seterr(all="raise")
+    sys.exit(main(sys.argv[1:]))
