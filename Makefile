@@ -25,6 +25,7 @@ figures: $(VENV)/.installed
 bench: $(VENV)/.installed
 	$(BIN)/python -m pip install --quiet -e '.[test,bench]'
 	$(BIN)/python benchmarks/bench_fourbar.py
+	$(BIN)/python benchmarks/bench_graphical.py
 
 clean:
 	rm -rf $(VENV) build *.egg-info

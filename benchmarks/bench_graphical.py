@@ -1,0 +1,74 @@
+"""One position, graphically: construction, and construction plus the side-by-side figure.
+
+Run with ``make bench`` or ``.venv/bin/python benchmarks/bench_graphical.py``.
+Prints a table (best of k runs, milliseconds) for every catalog problem at
+the position ``make figures`` draws. The aim (from the issue): construction
+plus side-by-side figure ≤ 150 ms. "Figure" is timed two ways: building it
+(matplotlib artists laid out: what a notebook shows) and rendering it to a
+PNG in memory as well.
+"""
+
+from __future__ import annotations
+
+import gc
+import io
+import sys
+import time
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "figures"))
+
+import matplotlib  # noqa: E402
+
+matplotlib.use("Agg")
+
+from build import AT  # noqa: E402
+
+from graphkin import catalog, draw  # noqa: E402
+from graphkin.graphic import construct_forces  # noqa: E402
+
+AIM_MS = 150.0
+
+
+def best_of(fn, k=7):
+    fn()
+    times = []
+    gc.disable()
+    try:
+        for _ in range(k):
+            t0 = time.perf_counter()
+            fn()
+            times.append(time.perf_counter() - t0)
+    finally:
+        gc.enable()
+    return min(times) * 1e3
+
+
+def main() -> int:
+    print(f"{'problem':<24}{'construct':>12}{'+ figure':>12}{'+ PNG':>12}   aim ≤ {AIM_MS:.0f} ms (construct + figure)")
+    worst = 0.0
+    for name in catalog.names():
+        problem = catalog.load(name)
+        result = problem.solve([AT[name]] if name in AT else None)
+        kin = result.kinematics
+
+        def construct():
+            return construct_forces(kin, 0)
+
+        def figure():
+            fig = draw.draw_solution(construct_forces(kin, 0), result)
+            fig.canvas.draw()  # lay out text and arrows, as a notebook does before showing
+            return fig
+
+        def png():
+            figure().savefig(io.BytesIO(), format="png", dpi=100)
+
+        t = (best_of(construct), best_of(figure, 3), best_of(png, 3))
+        worst = max(worst, t[1])
+        print(f"{name:<24}{t[0]:>12.2f}{t[1]:>12.1f}{t[2]:>12.1f}   {'MET' if t[1] <= AIM_MS else 'NOT MET'}")
+    print(f"\nslowest construct + figure: {worst:.1f} ms -> {'MET' if worst <= AIM_MS else 'NOT MET'}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
