@@ -1,0 +1,257 @@
+"""Free-body diagrams: one link alone with every force and couple on it, and its inertia resultant offset by h."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..model import FRAME, Prismatic, Torque
+from . import style as _style
+from ._common import (MM, Drawn, Labeler, arrow, points_per_unit, arrow_label_candidates, dimension, had_content, moment_arrow, new_axes,
+                      nice_round, num, point_label_candidates, scale_bar, set_limits, setup_axes, sub, unit)
+from .mechanism import Geometry, _label_points, centre_of_mass, draw_link_body
+
+
+def loads_on(construction, link: int) -> dict:
+    """Every load on a link at the construction's position, ready to draw.
+
+    Returns
+    -------
+    dict
+        ``"forces"``: list of (name, vector [N], point [m], kind) with kind
+        ``"unknown"`` (joint forces), ``"known"`` (external forces, weight),
+        ``"inertia"`` (the inertia resultant, on its offset line) or
+        ``"driver"`` (a slider's driving force);
+        ``"couples"``: list of (name, torque [N·m], centre [m], kind);
+        ``"inertia"``: the construction's inertia entry of the link, or None.
+    """
+    c = construction
+    mech = c.mechanism
+    forces, couples = [], []
+    for a in c.forces_on(link):
+        forces.append((a.name, tuple(a.vector), tuple(a.at), "unknown"))
+    for a in c.external.get(link, []):
+        forces.append((a.name, tuple(a.vector), tuple(a.at), "known"))
+    G = c.G.get(link)
+    for ld in mech.loads:
+        if isinstance(ld, Torque) and ld.link == link:
+            if ld.active is None or ld.active.mask(np.array([c.q]))[0]:
+                couples.append((ld.name or f"T{link}", ld.torque, G, "known"))
+    inert = c.inertia.get(link)
+    if inert is not None:
+        F, T = inert["F"], inert["T"]
+        if math.hypot(*F) > 0 and inert["line_point"] is not None:
+            forces.append((f"R{link}i", tuple(F), tuple(inert["line_point"]), "inertia"))
+        elif T:
+            couples.append((f"T{link}i", T, G, "inertia"))
+    d = mech.driver
+    if d.link == link and math.isfinite(c.effort):
+        joint = mech.joint_between(FRAME, link)
+        if d.kind == "crank":
+            couples.append((d.symbol, c.effort, c.points[FRAME][joint.point], "driver"))
+        else:
+            vec = None
+            for step in c.steps:
+                for a in step.polygon:
+                    if a.name == d.symbol:
+                        vec = a.vector
+            if vec is None:
+                X, u = Geometry(c).guide(joint)
+                vec = tuple(c.effort * u)
+            forces.append((d.symbol, tuple(vec), c.points[link][joint.point], "driver"))
+    largest = max([math.hypot(*f[1]) for f in forces] + [0.0])
+    size = max([math.dist(p, q) for p in c.points[link].values() for q in c.points[link].values()] + [1e-3])
+    for joint in mech.joints_of(link):
+        if isinstance(joint, Prismatic):
+            lo, hi = sorted(joint.links)
+            C = c.couple.get((lo, hi), 0.0)
+            C = C if link == hi else -C
+            if abs(C) > 1e-9 * max(largest * size, 1e-300):
+                other = lo if link == hi else hi
+                couples.append((f"C{other}{link}", C, c.points[joint.slider][joint.point], "unknown"))
+    return {"forces": forces, "couples": couples, "inertia": inert}
+
+
+def _crowding(option, X, placed, L):
+    """How much an arrow (tail, tip) would run along arrows already drawn from the same point."""
+    tail, tip = option
+    away = tip - X if np.hypot(*(tip - X)) > np.hypot(*(tail - X)) else tail - X
+    total = 0.0
+    for Y, t2, h2 in placed:
+        if np.hypot(*(Y - X)) > 1e-6 * L:
+            continue
+        away2 = h2 - Y if np.hypot(*(h2 - Y)) > np.hypot(*(t2 - Y)) else t2 - Y
+        la, lb = np.hypot(*away), np.hypot(*away2)
+        if la and lb and np.dot(away, away2) / (la * lb) > math.cos(math.radians(20)):
+            total += min(la, lb)
+    return total
+
+
+def _color(kind, s):
+    return {"unknown": s.unknown, "known": s.known, "inertia": s.known, "driver": s.driver}[kind]
+
+
+def draw_free_body(construction, link: int, *, ax=None, force_scale=None, title=True, **style) -> Drawn:
+    """The free-body diagram of one link.
+
+    The link alone, every force on it as an arrow at its point of application
+    (joint forces F_ij / G_ij of the other links on it, external loads and
+    weight, a slider's driving force), couples as curved arrows (the crank's
+    driving torque, external torques, a pure inertia torque), and its inertia
+    resultant on its line offset from G by h, with h dimensioned. An arrow
+    that pushes on the link ends at its point, one that pulls starts there.
+
+    Parameters
+    ----------
+    construction : graphkin.graphic.Construction
+    link : int
+        A moving link.
+    ax : matplotlib.axes.Axes, optional
+    force_scale : float, optional
+        Arrow scale [N per mm of the drawing]; by default the construction's
+        ``force_scale`` times the 1–2–5 factor that draws the largest force
+        about 40 % as long as the link. A scale bar shows it.
+    title : bool
+        Put "Free body: link 3 (rod AB)" above.
+    **style
+        Overrides of :class:`graphkin.draw.style.Style` fields.
+
+    Returns
+    -------
+    Drawn
+        ``.arrows`` and ``.ends`` (tail, tip [mm]) by force name, ``.labels``
+        by name (forces, couples, points, and ``"h"``), ``.scale`` [N per mm].
+    """
+    s = _style.resolve(**style)
+    c = construction
+    ax = new_axes(ax, (5.5, 5.0), s)
+    existing = had_content(ax)
+    setup_axes(ax)
+    drawn = Drawn(ax)
+    mech = c.mechanism
+    body = mech.link(link)
+    if link == FRAME or link not in mech.moving:
+        raise ValueError(f"link {link} is not a moving link of the mechanism (moving: {mech.moving})")
+    if title:
+        ax.set_title(f"Free body: {body.label}", fontsize=s.title_size, color=s.ink)
+    if not c.valid or not c.points:
+        drawn.add(ax.text(0.5, 0.5, f"No solution here: {c.reason}", transform=ax.transAxes, ha="center", va="center",
+                          fontsize=s.label_size, color=s.unknown, wrap=True))
+        return drawn
+    geom = Geometry(c)
+    lab = Labeler(ax, s)
+    drawn += draw_link_body(ax, geom, link, s, lab)
+    G = geom.G[link]
+    if body.mass > 0:
+        drawn += centre_of_mass(ax, G, s)
+    loads = loads_on(c, link)
+    pts = list(geom.link_points(link).values())
+    centroid = np.mean(pts, axis=0) if pts else G
+    extent = list(pts) + [G]
+    inert = loads["inertia"]
+    if inert is not None and inert["line_point"] is not None:
+        extent.append(np.asarray(inert["line_point"]) * MM)
+    for mesh in geom.gears:
+        for n, centre, r in geom.gear_circles(mesh):
+            if n == link:
+                extent += [centre - 1.1 * r, centre + 1.1 * r]
+    if len(pts) == 1:
+        extent += [pts[0] - 2.5 * geom.sym, pts[0] + 2.5 * geom.sym]
+    ext = np.ptp(np.asarray(extent, float), axis=0)
+    L = max(float(np.max(ext)), 14 * geom.sym)
+    largest = max([math.hypot(*f[1]) for f in loads["forces"]] + [0.0])
+    if force_scale is None:
+        base = c.force_scale if c.force_scale > 0 else 1.0
+        force_scale = base * nice_round(largest / (0.42 * L) / base) if largest > 0 else base
+    drawn.scale = force_scale
+    ends = []
+    placed = []
+    ppu = points_per_unit(ax, 1.4 * L)
+    # Forces.
+    for name, F, at, kind in loads["forces"]:
+        F = np.asarray(F, float)
+        X = np.asarray(at, float) * MM
+        size = math.hypot(*F)
+        color = _color(kind, s)
+        if size <= 1e-9 * max(largest, 1e-300):
+            t = lab.label(f"{sub(name)} = 0", point_label_candidates(X, X - centroid, 8.0), color=color)
+            drawn.labels[name] = t
+            drawn.add(t)
+            continue
+        v = F / force_scale
+        pull, push = (X, X + v), (X - v, X)  # starts at its point / ends there
+        prefer = push if kind != "inertia" and float(np.dot(F, centroid - X)) > 1e-9 * size * L else pull
+        other = pull if prefer is push else push
+        tail, tip = min((prefer, other), key=lambda o: (_crowding(o, X, placed, L), o is not prefer))
+        placed.append((X, tail, tip))
+        a = arrow(ax, tail, tip, color=color, lw=s.known_lw if kind in ("known", "inertia") else s.unknown_lw, s=s,
+                  hollow=kind == "unknown", zorder=4.2, gid=f"fbd{link}:{name}", pt_per_unit=ppu)
+        drawn.arrows[name] = a
+        drawn.ends[name] = (tuple(tail), tuple(tip))
+        drawn.add(a)
+        lab.segment(tail, tip)
+        ends += [tail, tip]
+    if inert is not None and inert["line_point"] is not None and math.hypot(*inert["F"]) > 0:
+        P = np.asarray(inert["line_point"], float) * MM
+        e = unit(inert["F"])
+        ell = math.hypot(*inert["F"]) / force_scale
+        ln = np.array([P - e * max(0.45 * ell, 0.2 * L), P + e * max(1.4 * ell, ell + 0.2 * L)])
+        (line,) = ax.plot(*ln.T, color=s.known, lw=s.thin_lw, linestyle=(0, (6, 3)), zorder=3.0)
+        drawn.add(line)
+        lab.segment(*ln)
+        h = inert["h"] or 0.0
+        if h * MM > 1e-6 * L:
+            # Points per mm of drawing, roughly (the view spans about 1.3 L): arrows go outside below ~16 pt.
+            drawn += dimension(ax, lab, G, P, f"h = {num(h * MM)} mm", s=s, small=16 / ppu, color=s.ink)
+            drawn.labels["h"] = drawn[-1]
+        else:
+            t = lab.label("h = 0", point_label_candidates(G, G - centroid if np.hypot(*(G - centroid)) else (1, -1), 9.0),
+                          size=s.small_size)
+            drawn.labels["h"] = t
+            drawn.add(t)
+    # Couples, on rings of growing radius around each centre (outside a gear's hub).
+    gear_r = max([r for mesh in geom.gears for n, _, r in geom.gear_circles(mesh) if n == link] + [0.0])
+    rings: dict = {}
+    for name, T, centre, kind in loads["couples"]:
+        X = np.asarray(centre if centre is not None else G / MM, float) * MM
+        key = (round(float(X[0]), 6), round(float(X[1]), 6))
+        k = rings.get(key, 0)
+        rings[key] = k + 1
+        r = max(0.09 * L, 0.32 * gear_r) + 0.05 * k * L
+        color = _color(kind, s)
+        a, arc, mid = moment_arrow(ax, X, r, T > 0, color=color, lw=s.known_lw if kind != "unknown" else s.unknown_lw,
+                                   s=s, start=-0.7 * math.pi + 0.35 * k, zorder=4.1, gid=f"fbd{link}:{name}")
+        drawn.arrows[name] = a
+        drawn.add(a)
+        lab.polyline(arc)
+        extent += [X - 1.15 * r, X + 1.15 * r]
+        unit_text = "N·m"
+        text = f"{sub(name)} = {num(abs(T))} {unit_text} {'CCW' if T > 0 else 'CW'}"
+        cands = [(p, p - X, pad) for pad in (s.label_pad, 3 * s.label_pad, 7 * s.label_pad)
+                 for p in [mid] + list(arc[::6])]
+        t = lab.label(text, cands, color=color)
+        drawn.labels[name] = t
+        drawn.add(t)
+    # Force labels, after every arrow is known as an obstacle.
+    for name, F, at, kind in loads["forces"]:
+        if name not in drawn.ends:
+            continue
+        tail, tip = (np.asarray(p) for p in drawn.ends[name])
+        mid = 0.5 * (tail + tip)
+        t = lab.label(sub(name), arrow_label_candidates(tail, tip, mid - centroid, s.label_pad), color=_color(kind, s))
+        drawn.labels[name] = t
+        drawn.add(t)
+    _label_points(ax, geom, c, s, lab, drawn, False, None, only=link)
+    extent += ends
+    arr = np.asarray(extent, float)
+    lo, hi = arr.min(axis=0), arr.max(axis=0)
+    span = float(np.max(hi - lo))
+    value = nice_round(0.22 * span * force_scale)
+    bar_at = np.array([lo[0], lo[1] - 0.1 * span])
+    drawn += scale_bar(ax, bar_at, value / force_scale, value, s=s, tick=0.012 * span)
+    lab.segment(bar_at - [0.08 * span, 0], bar_at + [value / force_scale + 0.2 * span, 0], 14.0)  # the bar and its numbers
+    extent += [bar_at, bar_at + [value / force_scale, 0]]
+    set_limits(ax, extent, margin=0.1, existing=existing)
+    lab.place()
+    return drawn

@@ -1,0 +1,134 @@
+"""Force polygons: the forces of one step tip to tail, closing when the link is in equilibrium."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from . import style as _style
+from ._common import (Drawn, Labeler, arrow, points_per_unit, arrow_label_candidates, had_content, new_axes, nice_round, num,
+                      point_label_candidates, scale_bar, set_limits, setup_axes, sub)
+
+
+def step_title(step, driver_name: str | None = None) -> str:
+    """A short title for a step's polygon: ``Link 3: R3i + F43 + F23 = 0``."""
+    where = f"Link {step.link}" if step.link is not None else "Polygon"
+    if step.kind == "superpose":
+        total = step.polygon[-1].name if step.polygon else ""
+        return f"{where}: superposition of {sub(total)}"
+    if step.kind == "driver":
+        return f"{where} (input): " + " + ".join(sub(a.name) for a in step.polygon) + " = 0"
+    return f"{where}: " + " + ".join(sub(a.name) for a in step.polygon) + " = 0"
+
+
+def draw_force_polygon(step, *, scale: float, ax=None, origin=(0.0, 0.0), values=True, title=None,
+                       driver_name: str | None = None, **style) -> Drawn:
+    """Draw a step's force polygon, arrows tip to tail.
+
+    Known loads are heavy with solid heads, the unknowns the step finds are
+    lighter with open heads; each arrow is labelled with its name (and size);
+    a ring marks the start, where the last arrow's tip closes the polygon;
+    a scale bar reads ``0 — 10 N``.
+
+    Parameters
+    ----------
+    step : graphkin.graphic.Step
+        A step with a ``polygon``.
+    scale : float
+        Force scale [N per mm of drawing], e.g. ``construction.force_scale``.
+    ax : matplotlib.axes.Axes, optional
+    origin : (float, float)
+        Where the first arrow starts [mm].
+    values : bool
+        Write each force's size next to its name.
+    title : str or False, optional
+        The axes title; by default the polygon's equation.
+    driver_name : str, optional
+        The driving effort's name (``"F12"``), drawn in the driver's colour.
+    **style
+        Overrides of :class:`graphkin.draw.style.Style` fields.
+
+    Returns
+    -------
+    Drawn
+        ``.arrows``, ``.ends`` (tail, tip [mm]) and ``.labels`` by force name;
+        ``.scale`` [N per mm].
+    """
+    s = _style.resolve(**style)
+    ax = new_axes(ax, (4.5, 4.5), s)
+    existing = had_content(ax)
+    setup_axes(ax)
+    drawn = Drawn(ax)
+    drawn.scale = scale
+    if title is None:
+        title = step_title(step)
+    if title:
+        ax.set_title(title, fontsize=s.title_size, color=s.ink)
+    lab = Labeler(ax, s)
+    sizes = [math.hypot(*a.vector) for a in step.polygon]
+    largest = max(sizes + [0.0])
+    cur = np.asarray(origin, float)
+    start = cur.copy()
+    # The polygon's extent sets the view: estimate it for the arrowheads of short sides.
+    pts = np.cumsum([[0.0, 0.0]] + [list(np.asarray(a.vector, float) / scale) for a in step.polygon], axis=0)
+    ppu = points_per_unit(ax, 1.5 * max(float(np.max(np.ptp(pts, axis=0))), 1e-9))
+    verts = [cur.copy()]
+    zero = []
+    for a, size in zip(step.polygon, sizes):
+        if size <= 1e-12 * max(largest, 1e-300):
+            zero.append(a.name)
+            continue
+        v = np.asarray(a.vector, float) / scale
+        tail, tip = cur.copy(), cur + v
+        if driver_name and a.name == driver_name:
+            color = s.driver
+        else:
+            color = s.known if a.known else s.unknown
+        art = arrow(ax, tail, tip, color=color, lw=s.known_lw if a.known else s.unknown_lw,
+                    s=s, hollow=not a.known, zorder=4.5 if a.known else 4.6, gid=f"polygon:{a.name}", pt_per_unit=ppu)
+        drawn.arrows[a.name] = art
+        drawn.ends[a.name] = (tuple(tail), tuple(tip))
+        drawn.add(art)
+        if a.known:
+            # A light band under a known load highlights it (and shows it where an unknown runs back over it).
+            (band,) = ax.plot([tail[0], tip[0]], [tail[1], tip[1]], color=color, lw=7.5, alpha=0.22,
+                              solid_capstyle="butt", zorder=4.0)
+            drawn.add(band)
+            lab.segment(tail, tip, 7.5)
+        lab.segment(tail, tip)
+        verts.append(tip.copy())
+        cur = tip
+    verts = np.asarray(verts)
+    centre = verts.mean(axis=0)
+    span = float(np.max(np.ptp(verts, axis=0))) if len(verts) > 1 else 10.0
+    span = span or 10.0
+    # The start, where the polygon closes.
+    (ring,) = ax.plot(*start, "o", ms=8, mfc="none", mec=s.ink, mew=1.0, zorder=5)
+    (dots,) = ax.plot(*verts[1:-1].T, "o", ms=3, color=s.ink, zorder=5) if len(verts) > 2 else ax.plot([], [])
+    drawn += [ring, dots]
+    for a in step.polygon:
+        if a.name not in drawn.ends:
+            continue
+        tail, tip = (np.asarray(p) for p in drawn.ends[a.name])
+        mid = 0.5 * (tail + tip)
+        away = mid - centre
+        if np.hypot(*away) < 1e-9 * span:
+            away = np.array([-(tip - tail)[1], (tip - tail)[0]]) * (1 if a.known else -1)
+        text = sub(a.name) + (f" = {num(math.hypot(*a.vector))} N" if values else "")
+        color = s.driver if driver_name and a.name == driver_name else s.known if a.known else s.unknown
+        t = lab.label(text, arrow_label_candidates(tail, tip, away, s.label_pad), color=color)
+        drawn.labels[a.name] = t
+        drawn.add(t)
+    for name in zero:
+        t = lab.label(f"{sub(name)} = 0", point_label_candidates(start, np.array([-1.0, 1.0]), 9.0), color=s.known)
+        drawn.labels[name] = t
+        drawn.add(t)
+    lo, hi = verts.min(axis=0), verts.max(axis=0)
+    value = nice_round(0.3 * span * scale)
+    bar_at = np.array([lo[0], lo[1] - 0.16 * span])
+    drawn += scale_bar(ax, bar_at, value / scale, value, s=s, tick=0.015 * span)
+    lab.segment(bar_at - [0.08 * span, 0], bar_at + [value / scale + 0.2 * span, 0], 14.0)  # the bar and its numbers
+    set_limits(ax, list(verts) + [bar_at, bar_at + [value / scale, 0]], margin=0.2, existing=existing)
+    lab.place()
+    return drawn

@@ -1,0 +1,189 @@
+"""The construction step by step: one frame per step, or all of them on one sheet."""
+
+from __future__ import annotations
+
+import math
+import textwrap
+
+import numpy as np
+from matplotlib.figure import Figure
+
+from . import style as _style
+from ._common import MM, Labeler, arrow, input_text, num, point_label_candidates, set_limits, sub, unit, perp
+from .mechanism import Geometry, draw_mechanism
+from .polygon import draw_force_polygon, step_title
+
+KIND_TITLE = {
+    "resultant": "resultant of the known loads",
+    "two-force": "two-force member",
+    "three-force": "three-force member",
+    "polygon": "force polygon",
+    "superpose": "superposition",
+    "driver": "the input link",
+    "note": "note",
+}
+
+FAR = 3.0
+"""Points further than this many mechanism sizes from it are noted at the edge rather than drawn."""
+
+
+def _wrap(text: str, width_in: float, size: float) -> str:
+    chars = max(20, int(width_in * 72 / (0.53 * size)))
+    return textwrap.fill(text, chars)
+
+
+def draw_step_geometry(construction, step, *, ax, **style) -> list:
+    """The step's lines of action and points, bold, on an axes that already shows the mechanism (in mm).
+
+    Lines are drawn by role: a known load's line solid with an arrowhead for
+    its sense, a known direction dashed, a found line dash-dot. Points far
+    from the mechanism (a concurrency point nearly at infinity) are named in
+    a note instead of stretching the view. Returns the artists.
+    """
+    s = _style.resolve(**style)
+    c = construction
+    geom = Geometry(c)
+    lab = Labeler(ax, s)
+    lab.avoid(ax.texts)  # the mechanism's point labels
+    for n in geom.mech.moving:
+        pts = list(geom.link_points(n).values())
+        if len(pts) >= 2:
+            lab.polyline(pts, closed=len(pts) > 2, width=s.link_lw)
+    out = []
+    mech_pts = np.asarray([p for d in geom.P.values() for p in d.values()], float)
+    centre = mech_pts.mean(axis=0)
+    extent = list(mech_pts)
+    far = []
+    for line in step.lines:
+        P = np.asarray(line.point, float) * MM
+        d = unit(line.direction)
+        color = _style.line_color(line.role, s)
+        dash = _style.LINE_DASH.get(line.role, "-")
+        art = ax.axline(tuple(P), tuple(P + d * geom.size * 0.1), color=color, lw=1.7, linestyle=dash, zorder=3.5)
+        out.append(art)
+        near = np.hypot(*(P - centre)) <= FAR * geom.size
+        if not near:
+            # Show the line where it passes closest to the mechanism.
+            P = P + d * float(np.dot(centre - P, d))
+        extent.append(P)
+        if line.role == "resultant":
+            a = arrow(ax, P - d * 0.09 * geom.size, P + d * 0.09 * geom.size, color=color, lw=s.known_lw, s=s,
+                      zorder=4.5)
+            out.append(a)
+            lab.segment(P - d * 0.09 * geom.size, P + d * 0.09 * geom.size)
+        n = perp(d)
+        t = lab.label(sub(line.name), [(P + d * 0.12 * geom.size, n, 4.0), (P + d * 0.12 * geom.size, -n, 4.0),
+                                       (P - d * 0.12 * geom.size, n, 4.0), (P - d * 0.12 * geom.size, -n, 4.0)],
+                      color=color)
+        out.append(t)
+    for name, X in step.points.items():
+        X = np.asarray(X, float) * MM
+        if np.hypot(*(X - centre)) > FAR * geom.size:
+            far.append(f"{name} is off the drawing, at ({num(X[0])}, {num(X[1])}) mm")
+            continue
+        (m,) = ax.plot(*X, "o", ms=6.5, mfc=s.found, mec="white", mew=0.8, zorder=6)
+        out.append(m)
+        extent.append(X)
+        t = lab.label(sub(name), point_label_candidates(X, np.array([1.0, 1.0]), 6.0), color=s.found)
+        out.append(t)
+    if far:
+        t = ax.text(0.01, 0.01, "\n".join(far), transform=ax.transAxes, ha="left", va="bottom", fontsize=s.small_size,
+                    color=s.found)
+        out.append(t)
+    set_limits(ax, extent, margin=0.1, existing=True)  # keeps the mechanism's own view (gears, ground)
+    lab.place()
+    return out
+
+
+def _frame(target, construction, step, number, *, s, style, header=True, caption_size=None):
+    """Draw one step on a Figure or SubFigure."""
+    c = construction
+    fig_w, fig_h = _size(target)
+    caption_size = caption_size or s.caption_size
+    caption = _wrap(step.caption, fig_w * 0.94, caption_size)
+    lines = caption.count("\n") + 1
+    cap_h = (lines * caption_size * 1.35 + 10) / 72 / fig_h  # figure fraction
+    head_h = 0.42 / fig_h if header else 0.05
+    bottom = cap_h + 0.02
+    height = max(0.2, 1 - head_h - bottom - 0.02)
+    axes = []
+    if step.polygon:
+        ax = target.add_axes([0.01, bottom, 0.58, height])
+        ax2 = target.add_axes([0.62, bottom, 0.37, height])
+    else:
+        ax, ax2 = target.add_axes([0.01, bottom, 0.98, height]), None
+    draw_mechanism(c, ax=ax, faint=True, emphasis=step.link, **style)
+    draw_step_geometry(c, step, ax=ax, **style)
+    axes.append(ax)
+    if ax2 is not None:
+        draw_force_polygon(step, scale=c.force_scale, ax=ax2, title=False, driver_name=c.driver_name, **style)
+        axes.append(ax2)
+    if header:
+        kind = KIND_TITLE.get(step.kind, step.kind)
+        where = f"link {step.link}: " if step.link is not None else ""
+        text = f"Step {number}. {where}{kind}"
+        if step.polygon:
+            text += "   —   " + step_title(step)
+        target.text(0.015, 1 - 0.12 / fig_h, text, ha="left", va="top", fontsize=s.title_size, color=s.ink,
+                    fontweight="bold")
+    target.text(0.015, cap_h - 0.01, caption, ha="left", va="top", fontsize=caption_size, color=s.ink,
+                linespacing=1.3)
+    return axes
+
+
+def _size(target):
+    """Width and height [in] of a Figure or SubFigure."""
+    bb = target.bbox
+    dpi = target.get_figure(root=True).dpi if hasattr(target, "get_figure") else target.figure.dpi
+    return bb.width / dpi, bb.height / dpi
+
+
+def draw_steps(construction, *, figsize=(9.0, 5.6), **style) -> list[Figure]:
+    """One figure per step of the construction.
+
+    Each frame shows the mechanism faint (the step's link at full strength),
+    the step's lines of action and points bold, its force polygon beside the
+    mechanism when it has one, and the step's caption wrapped underneath.
+
+    Returns
+    -------
+    list of matplotlib.figure.Figure
+        In the order of ``construction.steps``; a single frame naming the
+        reason when the construction is not valid.
+    """
+    s = _style.resolve(**style)
+    c = construction
+    if not c.valid and not c.steps:
+        fig = Figure(figsize=figsize)
+        fig.text(0.5, 0.5, f"No construction at {input_text(c)}: {c.reason}", ha="center", va="center",
+                 fontsize=s.label_size, color=s.unknown, wrap=True)
+        return [fig]
+    figs = []
+    for k, step in enumerate(c.steps, start=1):
+        fig = Figure(figsize=figsize, dpi=100)
+        _frame(fig, c, step, k, s=s, style=style)
+        figs.append(fig)
+    return figs
+
+
+def draw_step_grid(construction, *, ncols=3, cell=(5.6, 4.3), **style) -> Figure:
+    """Every step of the construction on one sheet, in reading order, captions under each frame."""
+    s = _style.resolve(**style)
+    c = construction
+    steps = c.steps
+    n = max(len(steps), 1)
+    ncols = min(ncols, n)
+    nrows = math.ceil(n / ncols)
+    head = 0.7
+    fig = Figure(figsize=(cell[0] * ncols, cell[1] * nrows + head), dpi=100)
+    fig.suptitle(f"{c.mechanism.title or 'Mechanism'} — {input_text(c)}: the graphical construction step by step",
+                 fontsize=s.suptitle_size, y=1 - 0.2 / (cell[1] * nrows + head), va="top")
+    if not steps:
+        fig.text(0.5, 0.5, f"No construction: {c.reason}", ha="center", va="center", color=s.unknown)
+        return fig
+    outer = fig.subfigures(2, 1, height_ratios=[head, cell[1] * nrows])
+    grid = outer[1].subfigures(nrows, ncols, squeeze=False, wspace=0.02, hspace=0.02)
+    for k, step in enumerate(steps):
+        r, col = divmod(k, ncols)
+        _frame(grid[r][col], c, step, k + 1, s=s, style=style, caption_size=s.small_size)
+    return fig

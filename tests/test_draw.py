@@ -1,0 +1,360 @@
+"""graphkin.draw: the drawings carry what they show — arrows at their points, closed polygons, every label.
+
+Every catalog problem at its first position. Assertions are on the artists
+(paths in data coordinates, texts), so they hold whatever the look.
+"""
+
+import math
+import re
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+pytest.importorskip("matplotlib")
+
+from matplotlib.figure import Figure  # noqa: E402
+from matplotlib.testing.compare import compare_images  # noqa: E402
+
+from graphkin import catalog, draw  # noqa: E402
+from graphkin.graphic import construct_forces  # noqa: E402
+from graphkin.graphic.construction import Construction  # noqa: E402
+from graphkin.model import FRAME  # noqa: E402
+
+NAMES = ["double_slider", "strip_cutter", "slider_crank_friction", "gearset", "single_link"]
+MM = 1e3
+_CACHE = {}
+
+
+class Case:
+    def __init__(self, name):
+        p = catalog.load(name)
+        self.name = name
+        self.problem = p
+        self.result = p.solve()
+        self.c = construct_forces(self.result.kinematics, 0)
+        self.fbd = {link: draw.draw_free_body(self.c, link) for link in self.c.mechanism.moving}
+
+
+@pytest.fixture(params=NAMES)
+def case(request):
+    if request.param not in _CACHE:
+        _CACHE[request.param] = Case(request.param)
+    return _CACHE[request.param]
+
+
+_UNSUB = dict(zip("₀₁₂₃₄₅₆₇₈₉ₐₑₕᵢⱼₖₗₘₙₒₚᵣₛₜᵤᵥₓ", "0123456789aehijklmnoprstuvx"))
+
+
+def plain(text: str) -> str:
+    """Text with subscripts as plain characters and no mathtext markup: ``F₂₃ = 2 N`` → ``F23 = 2 N``."""
+    text = "".join(_UNSUB.get(ch, ch) for ch in text)
+    return re.sub(r"[${}]", "", text).replace("_", "")
+
+
+def texts_of(ax) -> list[str]:
+    return [plain(t.get_text()) for t in ax.texts]
+
+
+def names_in(ax) -> set:
+    """Every word-like token of every text on the axes."""
+    out = set()
+    for t in texts_of(ax):
+        out.update(re.findall(r"[A-Za-z]+\d*[a-z]?", t))
+    return out
+
+
+def shows(ax, name: str) -> bool:
+    return any(re.search(rf"(^|[^\w]){re.escape(name)}($|[^\w])", t) for t in texts_of(ax))
+
+
+def tail_tip(artist):
+    """Tail and tip of a force arrow, from its drawn path (data coordinates)."""
+    from matplotlib.path import Path
+
+    path = artist.get_path()
+    v = path.vertices
+    if path.codes is not None:
+        v = v[path.codes != Path.CLOSEPOLY]  # a CLOSEPOLY vertex is a placeholder, not a point
+    v = v[np.all(np.isfinite(v), axis=1)]
+    tail = v[0]
+    tip = v[np.argmax(np.hypot(*(v - tail).T))]
+    return tail, tip
+
+
+def data_per_point(ax) -> float:
+    """Data units per typographic point along x (the axes are equal-scale)."""
+    ax.apply_aspect()
+    return np.ptp(ax.get_xlim()) / (ax.bbox.width * 72 / ax.figure.dpi)
+
+
+def expected_forces(c, link):
+    """(name, vector [N], point of application [mm]) of every force on a link, from the construction alone."""
+    out = [(a.name, np.array(a.vector), np.array(a.at) * MM) for a in c.forces_on(link)]
+    out += [(a.name, np.array(a.vector), np.array(a.at) * MM) for a in c.external.get(link, [])]
+    inert = c.inertia.get(link)
+    if inert and math.hypot(*inert["F"]) > 0:
+        out.append((f"R{link}i", np.array(inert["F"]), np.array(inert["line_point"]) * MM))
+    d = c.mechanism.driver
+    if d.link == link and d.kind == "slider":
+        joint = c.mechanism.joint_between(FRAME, link)
+        X = np.array(c.points[link][joint.point]) * MM
+        driver_arrow = next(a for s in c.steps for a in s.polygon if a.name == d.symbol)
+        out.append((d.symbol, np.array(driver_arrow.vector), X))
+    return out
+
+
+# -- import hygiene ------------------------------------------------------------------
+
+
+def test_graphkin_and_the_construction_do_not_import_matplotlib():
+    code = (
+        "import sys, graphkin, graphkin.graphic\n"
+        "from graphkin import catalog\n"
+        "from graphkin.graphic import construct_forces\n"
+        "p = catalog.load('double_slider'); construct_forces(p.kinematics(), 0); p.solve()\n"
+        "bad = sorted(m for m in sys.modules if m == 'matplotlib' or m.startswith('matplotlib.'))\n"
+        "assert not bad, bad\n"
+    )
+    subprocess.run([sys.executable, "-c", code], check=True)
+
+
+# -- free-body diagrams -----------------------------------------------------------------
+
+
+def test_every_fbd_arrow_starts_or_ends_at_its_point_of_application(case):
+    c = case.c
+    for link, d in case.fbd.items():
+        ax = d.ax
+        slack = 6 * data_per_point(ax)  # a head's point is pulled back by its stroke, a few points
+        for name, F, X in expected_forces(c, link):
+            size = math.hypot(*F)
+            if size == 0:
+                assert shows(ax, name)
+                continue
+            tail, tip = tail_tip(d.arrows[name])
+            length = math.hypot(*(tip - tail))
+            tol = 0.02 * length + slack
+            assert min(math.hypot(*(tail - X)), math.hypot(*(tip - X))) < tol, (case.name, link, name)
+            if size / d.scale < 2 * slack:
+                continue  # a few points long: its head is all there is to see
+            # Along the force, and as long as the scale says.
+            assert np.dot(tip - tail, F) / (length * size) > 0.999, (case.name, link, name)
+            assert abs(length - size / d.scale) < tol, (case.name, link, name)
+
+
+def test_every_force_and_couple_on_each_link_is_labelled(case):
+    c = case.c
+    for link, d in case.fbd.items():
+        for name, _, _ in expected_forces(c, link):
+            assert shows(d.ax, name), (case.name, link, name, texts_of(d.ax))
+        if c.mechanism.driver.link == link:
+            assert shows(d.ax, c.driver_name)
+        for ld in c.mechanism.loads:
+            if getattr(ld, "torque", None) is not None and ld.link == link:
+                assert shows(d.ax, ld.name)
+        # The link's own points are named too.
+        for point in c.points[link]:
+            assert point in names_in(d.ax) or any(t.startswith(point) for t in texts_of(d.ax))
+
+
+def test_labels_keep_clear_of_their_own_arrows(case):
+    from graphkin.draw._common import _seg_hits_box, renderer_of
+
+    for link, d in case.fbd.items():
+        r = renderer_of(d.ax.figure)
+        to = d.ax.transData.transform
+        for name, arrow in d.arrows.items():
+            if name not in d.labels or not hasattr(arrow, "get_path"):
+                continue
+            if name.startswith("T") or name.startswith("C"):  # couples: curved arrows
+                continue
+            tail, tip = tail_tip(arrow)
+            bb = d.labels[name].get_window_extent(r)
+            assert not _seg_hits_box(to(tail), to(tip), (bb.x0, bb.y0, bb.x1, bb.y1)), (case.name, link, name)
+
+
+def test_h_is_dimensioned_where_the_inertia_force_is_offset(case):
+    c = case.c
+    for link, d in case.fbd.items():
+        inert = c.inertia.get(link)
+        if not inert or inert["h"] is None or math.hypot(*inert["F"]) == 0:
+            continue
+        h_texts = [t for t in texts_of(d.ax) if "h =" in t]
+        assert h_texts, (case.name, link)
+        if inert["h"] > 0:
+            assert f"h = {inert['h'] * MM:.4g} mm".replace("-", "−") in h_texts, h_texts
+
+
+def test_double_slider_fbd_shows_the_books_offset():
+    """Söylemez §6.4: F3i acts 33.3 mm from G3 (the book's rounding gives 33.31)."""
+    c = construct_forces(catalog.load("double_slider").kinematics(), 0)
+    d = draw.draw_free_body(c, 3)
+    assert "h = 33.33 mm" in texts_of(d.ax)
+    tail, _ = tail_tip(d.arrows["R3i"])
+    assert math.hypot(*(tail - np.array(c.G[3]) * MM)) == pytest.approx(33.33, abs=0.01)
+
+
+def test_a_fixed_link_has_no_free_body():
+    c = construct_forces(catalog.load("single_link").kinematics(), 0)
+    with pytest.raises(ValueError, match="not a moving link"):
+        draw.draw_free_body(c, FRAME)
+
+
+# -- force polygons ------------------------------------------------------------------------
+
+
+def test_every_force_polygon_closes_tip_to_tail(case):
+    c = case.c
+    steps = [s for s in c.steps if s.polygon]
+    assert steps
+    for step in steps:
+        d = draw.draw_force_polygon(step, scale=c.force_scale)
+        arrows = [d.arrows[a.name] for a in step.polygon if math.hypot(*a.vector) > 0]
+        ends = [tail_tip(a) for a in arrows]
+        longest = max(math.hypot(*(t - s)) for s, t in ends)
+        tol = 0.01 * longest + 6 * data_per_point(d.ax)
+        for (_, tip), (tail, _) in zip(ends[:-1], ends[1:]):
+            assert math.hypot(*(tail - tip)) < tol, (case.name, step.caption)  # tip to tail
+        first_tail, last_tip = ends[0][0], ends[-1][1]
+        assert math.hypot(*(last_tip - first_tail)) < tol, (case.name, step.caption)  # it closes
+        for a in step.polygon:
+            assert shows(d.ax, a.name), (a.name, texts_of(d.ax))
+        # A scale bar reading 0 — N.
+        assert "0" in texts_of(d.ax) and any(re.fullmatch(r"[\d.]+ N", t) for t in texts_of(d.ax))
+
+
+def test_known_loads_and_unknowns_look_different():
+    c = construct_forces(catalog.load("double_slider").kinematics(), 0)
+    step = next(s for s in c.steps if s.kind == "polygon")
+    d = draw.draw_force_polygon(step, scale=c.force_scale)
+    known = [d.arrows[a.name] for a in step.polygon if a.known]
+    unknown = [d.arrows[a.name] for a in step.polygon if not a.known]
+    assert known and unknown
+    for k in known:
+        for u in unknown:
+            assert k.get_edgecolor() != u.get_edgecolor()
+            assert k.get_facecolor() != u.get_facecolor()  # solid heads vs open heads
+
+
+# -- mechanism, convention, steps ------------------------------------------------------------
+
+
+def test_mechanism_names_its_points_and_is_to_scale(case):
+    c = case.c
+    d = draw.draw_mechanism(c)
+    assert d.ax.get_aspect() == 1.0
+    for link, pts in c.points.items():
+        for name in pts:
+            assert any(t.startswith(name) or f" {name}" in t for t in texts_of(d.ax)), name
+    for link in c.mechanism.moving:
+        if c.mechanism.link(link).mass > 0:
+            assert any(f"G{link}" in t for t in texts_of(d.ax))
+
+
+def test_sign_convention_legend():
+    d = draw.draw_sign_convention()
+    text = " ".join(texts_of(d.ax))
+    assert "force of link i on link j" in text
+    assert {"x", "y", "CCW", "F23", "F32"} <= set(d.arrows)
+    tail23, tip23 = tail_tip(d.arrows["F23"])
+    tail32, tip32 = tail_tip(d.arrows["F32"])
+    np.testing.assert_allclose(tip23 - tail23, -(tip32 - tail32), rtol=0.03)  # action and reaction
+
+
+def test_one_frame_per_step_with_its_caption():
+    c = construct_forces(catalog.load("double_slider").kinematics(), 0)
+    figs = draw.draw_steps(c)
+    assert len(figs) == len(c.steps)
+    for fig, step in zip(figs, c.steps):
+        assert isinstance(fig, Figure)
+        words = " ".join(" ".join(t.get_text().split()) for t in fig.texts)
+        assert " ".join(step.caption.split()) in words
+    grid = draw.draw_step_grid(c)
+    assert isinstance(grid, Figure)
+    assert len(grid.get_axes()) >= len(c.steps)
+
+
+# -- the side-by-side figure -----------------------------------------------------------------
+
+
+def test_solution_table_has_every_joint_force_and_the_driver(case):
+    fig = draw.draw_solution(case.c, case.result)
+    tables = [t for ax in fig.axes for t in ax.tables]
+    assert len(tables) == 1
+    cells = [plain(cell.get_text().get_text()) for cell in tables[0].get_celld().values()]
+    for name in case.result.names():
+        assert name in cells, (name, cells)
+    assert case.result.driver_name in cells
+    # One free body per moving link, and a polygon per polygon step.
+    titles = [ax.get_title() for ax in fig.axes]
+    for link in case.c.mechanism.moving:
+        assert any(t.startswith(f"Free body: link {link}") for t in titles)
+    assert sum(1 for ax in fig.axes for p in ax.patches if (p.get_gid() or "").startswith("polygon:")) >= 2
+    assert case.problem.title in fig.get_suptitle()
+
+
+def test_table_relative_differences_are_tiny(case):
+    rows = draw.comparison_rows(case.c, case.result)
+    assert [r[0] for r in rows] == case.result.names()
+    for name, analytical, graphical, diff in rows:
+        assert analytical == graphical, name
+        assert diff == "0" or float(diff.replace("−", "-")) < 1e-9, (name, diff)
+
+
+def test_solution_without_analytical_and_at_an_invalid_position():
+    c = construct_forces(catalog.load("single_link").kinematics(), 0)
+    fig = draw.draw_solution(c)
+    cells = [plain(cell.get_text().get_text()) for ax in fig.axes for t in ax.tables for cell in t.get_celld().values()]
+    assert "F12" in cells and "T12" in cells
+    bad = Construction(c.mechanism, 0, 0.0, valid=False, reason="the linkage cannot be assembled")
+    fig = draw.draw_solution(bad)
+    assert any("cannot be assembled" in t.get_text() for t in fig.texts)
+
+
+@pytest.fixture(scope="module")
+def figures():
+    p = catalog.load("slider_crank_friction")
+    c = construct_forces(p.kinematics(), 0)
+    small = construct_forces(catalog.load("double_slider").kinematics(), 0)
+    return {"solution": draw.draw_solution(c, p.solve()), "fbd": draw.draw_free_body(c, 3),
+            "grid": draw.draw_step_grid(small), "step": draw.draw_steps(small)[2]}
+
+
+@pytest.mark.parametrize("fmt", ["png", "svg", "pdf"])
+def test_figures_save_to_png_svg_and_pdf(tmp_path, fmt, figures):
+    magic = {"png": b"\x89PNG", "svg": b"<?xml", "pdf": b"%PDF"}[fmt]
+    for what, fig in figures.items():
+        path = draw.save(fig, tmp_path / f"{what}.{fmt}", dpi=50)
+        assert path.read_bytes().startswith(magic), what
+
+
+def test_save_refuses_other_formats(tmp_path):
+    with pytest.raises(ValueError, match=r"\.png, \.svg, \.pdf"):
+        draw.save(Figure(), tmp_path / "x.jpg")
+
+
+def test_style_overrides_are_checked():
+    c = construct_forces(catalog.load("single_link").kinematics(), 0)
+    d = draw.draw_free_body(c, 2, unknown="#000000")
+    assert d.arrows["F12"].get_edgecolor()[:3] == (0.0, 0.0, 0.0)
+    with pytest.raises(TypeError, match="unknown style option"):
+        draw.draw_mechanism(c, colour="red")
+
+
+# -- image baseline ------------------------------------------------------------------------------
+
+
+def test_double_slider_free_body_looks_as_before(tmp_path):
+    """A small PNG baseline (tests/baseline); regenerate it by deleting the file."""
+    from pathlib import Path
+
+    c = construct_forces(catalog.load("double_slider").kinematics(), 0)
+    d = draw.draw_free_body(c, 3)
+    baseline = Path(__file__).parent / "baseline" / "double_slider_fbd3.png"
+    actual = tmp_path / "double_slider_fbd3.png"
+    draw.save(d, actual, dpi=60)
+    if not baseline.exists():
+        pytest.skip(f"no baseline yet; copy {actual} to {baseline}")
+    assert compare_images(str(baseline), str(actual), tol=12) is None
