@@ -151,6 +151,14 @@ class Construction:
         External forces (and weight) on each link, at their points.
     pitch_points : dict of (int, int) to (float, float)
         Pitch point of each gear mesh [m].
+    torques : dict of int to list of (str, float)
+        External torques acting on each link at this position [N·m].
+    guides : dict of (int, int) to (float, float)
+        Unit direction of each prismatic pair's guide.
+    angles : dict of int to float
+        Angle θ of each link's frame [rad].
+    driver_vector : (float, float) or None
+        A slider driver's force F1j as a vector [N] (None for a crank).
     valid : bool
     reason : str
         Why the construction cannot close, when not valid.
@@ -208,6 +216,10 @@ class Construction:
         return total
 
     pitch_points: dict = field(default_factory=dict)
+    torques: dict = field(default_factory=dict)
+    guides: dict = field(default_factory=dict)
+    angles: dict = field(default_factory=dict)
+    driver_vector: tuple[float, float] | None = None
 
     @property
     def driver_name(self) -> str:

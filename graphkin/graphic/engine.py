@@ -102,6 +102,7 @@ class _Builder:
         self.forces, self.normal, self.couple = {}, {}, {}
         self.effort = math.nan
         self.rname: dict[int, str] = {}
+        self.driver_vector = None
         pts = [self.z(link, p) for link in self.mech.moving for p in self.mech.link(link).points]
         self.reach = max((abs(a - b) for a in pts for b in pts), default=1.0) or 1.0
 
@@ -170,6 +171,10 @@ class _Builder:
                 parts.append(f"the external torque {ld.name or 'T'} = {ld.torque:.4g} N·m acts on it")
         only_inertia = len(parts) == 1 and bool(Fi or Ti)
         self.rname[link] = f"R{link}i" if only_inertia else f"R{link}"
+        if len(parts) > 1 and load.F:
+            lines.append(Line(f"R{link}", _xy(load.point()), _xy(load.F / abs(load.F)), "resultant"))
+            values[f"R{link}"] = _xy(load.F)
+            parts.append(f"together they make one resultant R{link} = {abs(load.F):.4g} N")
         if parts:
             caption = f"Link {link}: " + "; ".join(parts) + "."
             self.steps.append(Step("resultant", caption, link, tuple(lines), values=values))
@@ -419,6 +424,7 @@ class _Builder:
                 polygon=(Arrow(Rd, _xy(R.F), True), Arrow(name, _xy(F), False, _xy(X)))))
             self.store(J, link, F)
             self.effort = float(T)
+            self.driver_vector = None
             return
         u = complex(self.kin.z_guide(J)[self.i])
         X = self.z(link, J.point)
@@ -438,6 +444,7 @@ class _Builder:
         self._check(self.steps[-1])
         self.store(J, link, G, C)
         self.effort = float(P)
+        self.driver_vector = _xy(Fd)
 
     def _check(self, step: Step):
         if step.closure() > CLOSE:
@@ -504,12 +511,13 @@ def construct_forces(kin: Kinematics, index: int = 0) -> Construction:
         return Construction(mech, index, q, tuple(b.steps), valid=False, reason=str(exc))
     largest = max([abs(complex(*F)) for F in b.forces.values()] + [0.0])
     return Construction(mech, index, q, tuple(b.steps), b.forces, b.normal, b.couple, b.effort,
-                        nice_scale(largest), True, "", tuple(b.warnings), **_geometry(kin, index))
+                        nice_scale(largest), True, "", tuple(b.warnings), driver_vector=b.driver_vector,
+                        **_geometry(kin, index))
 
 
 def _geometry(kin: Kinematics, i: int) -> dict:
     """Plain-data geometry of position i, for drawing and handouts."""
-    from ..model import GearMesh, PointForce
+    from ..model import GearMesh, PointForce, Torque
     from ..solve.loads import inertia
 
     mech = kin.mechanism
@@ -530,11 +538,17 @@ def _geometry(kin: Kinematics, i: int) -> dict:
             if isinstance(ld, PointForce) and ld.link == link and (ld.active is None or ld.active.mask(kin.q[i:i + 1])[0]):
                 arrows.append(Arrow(ld.name or f"P{link}", ld.force, True, points[link][ld.point]))
         external[link] = arrows
+    torques = {link: [(ld.name or f"T{link}", ld.torque) for ld in mech.loads
+                      if isinstance(ld, Torque) and ld.link == link and (ld.active is None or ld.active.mask(kin.q[i:i + 1])[0])]
+               for link in mech.moving}
+    guides = {tuple(sorted(j.links)): _xy(complex(kin.z_guide(j)[i])) for j in mech.joints if isinstance(j, Prismatic)}
+    angles = {link.number: float(kin.theta[link.number][i]) for link in mech.links}
     pitch = {}
     for joint in mech.joints:
         if isinstance(joint, GearMesh):
             (a, b), (ca, cb) = joint.links, joint.centers
             A, B = complex(kin.z(a, ca)[i]), complex(kin.z(b, cb)[i])
             pitch[tuple(sorted(joint.links))] = _xy(A + joint.radii[0] * (B - A) / abs(B - A))
-    return {"points": points, "G": G, "inertia": inert, "external": external, "pitch_points": pitch}
+    return {"points": points, "G": G, "inertia": inert, "external": external, "pitch_points": pitch,
+            "torques": torques, "guides": guides, "angles": angles}
 
