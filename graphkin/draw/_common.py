@@ -49,6 +49,14 @@ class Drawn(list):
     def figure(self):
         return self.ax.figure
 
+    def _repr_png_(self):
+        """Show the drawing, not the list, when it is the last value of a notebook cell."""
+        import io
+
+        buffer = io.BytesIO()
+        self.ax.figure.savefig(buffer, format="png", bbox_inches="tight", facecolor="white")
+        return buffer.getvalue()
+
     def add(self, artist):
         self.append(artist)
         return artist

@@ -192,7 +192,7 @@ class _Builder:
             self.steps.append(Step(
                 "resultant",
                 f"Link {link} also carries {names}, found before; with its own loads they add up to one resultant "
-                f"R{link} = {abs(load.F):.4g} N" + ("" if P is not None else f" (a pure couple of {load.M0:.4g} N·m)"),
+                f"R{link} = {abs(load.F):.4g} N" + ("." if P is not None else f" (a pure couple of {load.M0:.4g} N·m)."),
                 link, lines, values={f"R{link}": _xy(load.F)}))
         return load
 
@@ -324,13 +324,13 @@ class _Builder:
             for key, F in part.items():
                 total[key] += F
         if len(subs) > 1:
-            arrows = []
-            for J, on in ((d.J1, d.j), (d.J3, d.k)):
+            for J, on in ((d.J1, d.j), (d.J2, d.k), (d.J3, d.k)):
                 other = (set(J.links) - {on}).pop()
                 n = self.name(other, on)
                 arrows = [Arrow(f"{n} ({L} loaded)", _xy(p[id(J)]), True) for L, p in subs]
+                # The closing side runs back to the start: it is −(the sum).
                 self.steps.append(Step("superpose", f"Superposition: {n} is the sum of its parts from each loaded link.",
-                                       on, polygon=tuple(arrows) + (Arrow(n, _xy(-total[id(J)]), False),),
+                                       on, polygon=tuple(arrows) + (Arrow(f"−{n}", _xy(-total[id(J)]), False),),
                                        values={n: _xy(total[id(J)])}))
         X = {id(J): self.joint_point(J, on) for J, on in ((d.J1, d.j), (d.J2, d.k), (d.J3, d.k))}
         F1, F2, F3 = total[id(d.J1)], total[id(d.J2)], total[id(d.J3)]
