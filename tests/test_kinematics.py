@@ -43,29 +43,8 @@ from graphkin.kinematics import Dyad, decompose, solve_kinematics
 from graphkin.model import FRAME, Driver, GearMesh, Link, Mechanism, Prismatic, Revolute
 from graphkin.solve import solve_forces
 
-try:  # `python -m pytest` from the project root
-    from tests.strategies import crank_families, families, length_scale
-except ImportError:  # plain `pytest` (tests/ on sys.path)
-    from strategies import crank_families, families, length_scale
-
-
-# Plane-vector helpers, written out here so that the tests do not lean on
-# graphkin's own geometry module. Vectors are arrays of shape (..., 2).
-def cross(a, b):
-    """z-component of a × b."""
-    a, b = np.asarray(a, float), np.asarray(b, float)
-    return a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]
-
-
-def dot(a, b):
-    a, b = np.asarray(a, float), np.asarray(b, float)
-    return a[..., 0] * b[..., 0] + a[..., 1] * b[..., 1]
-
-
-def perp(v):
-    """k × v (v turned +90°)."""
-    v = np.asarray(v, float)
-    return np.stack([-v[..., 1], v[..., 0]], axis=-1)
+from tests.strategies import crank_families, families, length_scale
+from tests.vectors import cross, dot, perp
 
 
 FD_STEP = 1e-3
