@@ -136,5 +136,6 @@ def test_closure_check_flags_an_open_polygon():
 def test_construction_values_answer_both_orders():
     c = construct_forces(catalog.load("double_slider").kinematics(), 0)
     v = c.values()
-    assert v["F32"] == tuple(-x for x in v["F23"]) and "G14" in v and "G41" in v and v["F12"] == c.effort
+    assert v["F32"] == tuple(-x for x in v["F23"]) and "G14" in v and "G41" in v
+    assert v["F12"] == pytest.approx((c.effort, 0.0)) and c["F12"] == pytest.approx([c.effort, 0.0])
     np.testing.assert_allclose(c["F23"], -c["F32"])

@@ -237,15 +237,20 @@ class Construction:
         from ..solve.result import parse_force_name
 
         if name == self.driver_name:
-            return self.effort
+            # As in ForceAnalysis: a torque is a number, a slider's force a vector.
+            return self.effort if self.driver_vector is None else np.asarray(self.driver_vector)
         return self.force(*parse_force_name(self.mechanism, name))
 
     def values(self) -> dict:
-        """Every force the construction found, by name (both orders) [N], and the driver's effort."""
+        """Every force the construction found, by name (both orders) [N], and the driver's effort.
+
+        The driver's entry is the torque T1j [N·m] of a crank or the force
+        vector F1j [N] of a slider.
+        """
         out = {}
         for (i, j), F in self.forces.items():
             letter = self.mechanism.joint_between(i, j).force_letter
             out[f"{letter}{i}{j}"] = tuple(F)
             out[f"{letter}{j}{i}"] = (-F[0], -F[1])
-        out[self.driver_name] = self.effort
+        out[self.driver_name] = self.effort if self.driver_vector is None else tuple(self.driver_vector)
         return out
