@@ -4,14 +4,15 @@ from __future__ import annotations
 
 import math
 import re
-import weakref
+from contextlib import contextmanager
 
 import numpy as np
+from matplotlib.axes import Axes
+from matplotlib.axis import XAxis, YAxis
 from matplotlib.figure import Figure
+from matplotlib.lines import Line2D
 from matplotlib.patches import ArrowStyle, FancyArrowPatch
 from matplotlib.path import Path
-
-from . import style as _style
 
 MM = 1e3
 """Metres to millimetres: every mechanism drawing is in mm."""
@@ -62,13 +63,109 @@ class Drawn(list):
         return artist
 
 
+class _LazyTicks:
+    """An Axis that makes no tick until one is asked for.
+
+    Matplotlib makes one tick of each kind (each a handful of lines and
+    texts) while it sets an axes up, only to apply the grid and clip settings
+    to them; the settings are kept for later ticks anyway. A drawing with its
+    axis off never asks for a tick, and an axes made without them is ready in
+    half the time. Ticks made later (the axis turned back on) get every
+    setting and the clip path as usual.
+    """
+
+    @contextmanager
+    def _no_new_ticks(self):
+        made = [k for k in ("majorTicks", "minorTicks") if k not in vars(self)]
+        for k in made:
+            setattr(self, k, [])  # shadows the lazy list while the settings are stored
+        try:
+            yield
+        finally:
+            for k in made:
+                if not vars(self).get(k):
+                    vars(self).pop(k, None)
+
+    def set_tick_params(self, which="major", reset=False, **kwargs):
+        with self._no_new_ticks():
+            super().set_tick_params(which, reset, **kwargs)
+
+    def set_clip_path(self, path, transform=None):
+        self._tick_clip = (path, transform)
+        with self._no_new_ticks():
+            super().set_clip_path(path, transform)
+
+    def _get_tick(self, major):
+        tick = super()._get_tick(major)
+        clip = getattr(self, "_tick_clip", None)
+        if clip is not None:
+            tick.set_clip_path(*clip)
+        return tick
+
+
+class _XAxis(_LazyTicks, XAxis):
+    pass
+
+
+class _YAxis(_LazyTicks, YAxis):
+    pass
+
+
+class PanelAxes(Axes):
+    """Axes whose x and y axes make their ticks only when asked (see :class:`_LazyTicks`).
+
+    Pass as ``axes_class`` to ``Figure.add_subplot`` or ``Figure.add_axes``.
+    """
+
+    def _init_axis(self):
+        self.xaxis = _XAxis(self, clear=False)
+        self.spines.bottom.register_axis(self.xaxis)
+        self.spines.top.register_axis(self.xaxis)
+        self.yaxis = _YAxis(self, clear=False)
+        self.spines.left.register_axis(self.yaxis)
+        self.spines.right.register_axis(self.yaxis)
+
+
 def new_axes(ax=None, figsize=(6.0, 4.5), s=None):
     """``ax``, or a fresh axes on a new headless Figure."""
     if ax is not None:
         return ax
-    s = s or _style.STYLE
     fig = Figure(figsize=figsize, dpi=100)
-    return fig.add_subplot()
+    return fig.add_subplot(axes_class=PanelAxes)
+
+
+def line(ax, x, y, **props):
+    """A Line2D on ``ax`` through the points (x, y), as ``ax.plot(x, y, **props)`` draws it; returns it.
+
+    ``props`` are Line2D properties and their short names (``lw``, ``ms``,
+    ``mfc``); give ``color`` (there is no colour cycle). Faster than
+    ``ax.plot``: no format-string parsing, and the points join the data
+    limits directly instead of through the line's transformed path.
+    """
+    x = np.atleast_1d(np.asarray(x, float))
+    y = np.atleast_1d(np.asarray(y, float))
+    artist = Line2D(x, y, **props)
+    ax.add_artist(artist)
+    if x.size:
+        ax.update_datalim(np.column_stack([x, y]))
+    return artist
+
+
+def markers(ax, x, y, marker="o", **props):
+    """Markers at the points (x, y) and no line between them: ``ax.plot(x, y, "o", **props)``."""
+    return line(ax, x, y, linestyle="none", marker=marker, **props)
+
+
+def put(ax, patch, points):
+    """Add a patch to ``ax``, with ``points`` (data coordinates) as its extent in the data limits; returns it.
+
+    ``ax.add_patch`` finds a FancyArrowPatch's extent by laying its arrow out
+    in display coordinates, most of the cost of drawing one; the arrow's
+    ends are extent enough.
+    """
+    ax.add_artist(patch)
+    ax.update_datalim(np.asarray(points, float).reshape(-1, 2))
+    return patch
 
 
 def setup_axes(ax):
@@ -157,8 +254,7 @@ def arrow(ax, tail, tip, *, color, lw, s, hollow=False, zorder=4.0, gid=None, al
         capstyle="butt", joinstyle="miter", zorder=zorder, alpha=alpha)
     if gid:
         a.set_gid(gid)
-    ax.add_patch(a)
-    return a
+    return put(ax, a, [tail, tip])
 
 
 def arc_points(centre, radius, a0, a1, n=48):
@@ -179,7 +275,7 @@ def moment_arrow(ax, centre, radius, ccw: bool, *, color, lw, s, start=-0.75 * m
                         capstyle="butt", joinstyle="miter", zorder=zorder)
     if gid:
         a.set_gid(gid)
-    ax.add_patch(a)
+    put(ax, a, pts)
     mid = pts[len(pts) // 2]
     return a, pts, mid
 
@@ -230,50 +326,58 @@ def _seg_hits_box(p, q, box):
     return True
 
 
-_RENDERERS: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
+_MEASURING: dict = {}
 
 
 def renderer_of(fig):
-    """A renderer for measuring text on ``fig`` (made once per figure; Agg when the canvas has none)."""
-    root = fig.get_figure(root=True) if hasattr(fig, "get_figure") else fig
-    r = _RENDERERS.get(root)
-    if r is None or (r.width, r.height, r.dpi) != (root.bbox.width, root.bbox.height, root.dpi):
-        get = getattr(root.canvas, "get_renderer", None)
-        if get is not None:
-            r = get()
-        else:
-            from matplotlib.backends.backend_agg import RendererAgg
+    """A renderer for measuring text on ``fig``: its canvas's own, or (a headless Figure) a shared Agg one.
 
-            r = RendererAgg(root.bbox.width, root.bbox.height, root.dpi)
-        _RENDERERS[root] = r
+    Text extents depend on the resolution only, not on the size of the
+    canvas, so one small Agg renderer per dpi serves every figure; and
+    matplotlib caches text metrics per renderer, so a label measured once
+    (``A``, ``F₂₃``, ``0``) is not laid out again on the next figure.
+    """
+    root = fig.get_figure(root=True) if hasattr(fig, "get_figure") else fig
+    get = getattr(root.canvas, "get_renderer", None)
+    if get is not None:
+        return get()
+    r = _MEASURING.get(root.dpi)
+    if r is None:
+        from matplotlib.backends.backend_agg import RendererAgg
+
+        r = _MEASURING[root.dpi] = RendererAgg(1, 1, root.dpi)
     return r
 
 
-def _hits(P, Q, W, box, lo=None, hi=None) -> int:
-    """How many segments P[k]–Q[k] (display coordinates, half-widths W[k]) cross the box; Liang–Barsky, vectorised.
+def _hits_many(P, Q, W, boxes):
+    """For each box (x0, y0, x1, y1) in ``boxes`` (n×4), how many segments P[k]–Q[k] cross it.
 
-    ``lo``, ``hi``: the segments' bounding boxes (min and max corners), to skip the far ones quickly.
+    Display coordinates; segment k is W[k] wide on either side. Liang–Barsky
+    clipping (as :func:`_seg_hits_box`), vectorised over boxes × segments.
     """
-    if not len(P):
-        return 0
-    if lo is None:
-        lo, hi = np.minimum(P, Q) - W[:, None], np.maximum(P, Q) + W[:, None]
-    near = (lo[:, 0] <= box[2]) & (hi[:, 0] >= box[0]) & (lo[:, 1] <= box[3]) & (hi[:, 1] >= box[1])
+    n = len(boxes)
+    if not len(P) or not n:
+        return np.zeros(n)
+    lo, hi = np.minimum(P, Q) - W[:, None], np.maximum(P, Q) + W[:, None]
+    bx0, by0, bx1, by1 = (boxes[:, k, None] for k in range(4))
+    near = (lo[None, :, 0] <= bx1) & (hi[None, :, 0] >= bx0) & (lo[None, :, 1] <= by1) & (hi[None, :, 1] >= by0)
     if not near.any():
-        return 0
-    P, Q, W = P[near], Q[near], W[near]
-    x0, y0, x1, y1 = box[0] - W, box[1] - W, box[2] + W, box[3] + W
-    d = Q - P
-    t0 = np.zeros(len(P))
-    t1 = np.ones(len(P))
-    out = np.zeros(len(P), bool)
-    for pp, qq in ((-d[:, 0], P[:, 0] - x0), (d[:, 0], x1 - P[:, 0]), (-d[:, 1], P[:, 1] - y0), (d[:, 1], y1 - P[:, 1])):
-        zero = pp == 0
-        out |= zero & (qq < 0)
-        r = np.divide(qq, pp, out=np.zeros_like(qq), where=~zero)
-        t0 = np.where(~zero & (pp < 0), np.maximum(t0, r), t0)
-        t1 = np.where(~zero & (pp > 0), np.minimum(t1, r), t1)
-    return int(np.count_nonzero(~out & (t0 <= t1)))
+        return np.zeros(n)
+    x0, y0, x1, y1 = bx0 - W, by0 - W, bx1 + W, by1 + W
+    px, py = P[:, 0], P[:, 1]
+    dx, dy = Q[:, 0] - px, Q[:, 1] - py
+    t0 = np.zeros(near.shape)
+    t1 = np.ones(near.shape)
+    out = np.zeros(near.shape, bool)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        for pp, qq in ((-dx, px - x0), (dx, x1 - px), (-dy, py - y0), (dy, y1 - py)):
+            zero = pp == 0
+            qq = np.broadcast_to(qq, near.shape)
+            out |= zero & (qq < 0)
+            r = qq / pp
+            t0 = np.where(~zero & (pp < 0), np.maximum(t0, r), t0)
+            t1 = np.where(~zero & (pp > 0), np.minimum(t1, r), t1)
+    return np.count_nonzero(near & ~out & (t0 <= t1), axis=1).astype(float)
 
 
 class Labeler:
@@ -336,11 +440,11 @@ class Labeler:
         else:
             P = Q = np.zeros((0, 2))
             W = np.zeros(0)
-        lo, hi = np.minimum(P, Q) - W[:, None], np.maximum(P, Q) + W[:, None]
         # The room the axes were given (an equal-scale axes may have shrunk inside it).
         from matplotlib.transforms import TransformedBbox
 
         axbox = TransformedBbox(ax.get_position(original=True), ax.figure.transSubfigure)
+        room = np.array([axbox.x0, axbox.y0, axbox.x1, axbox.y1])
         placed = []
         for kind, b in self.boxes:
             (x0, y0), (x1, y1) = to((b[0], b[1])), to((b[2], b[3]))
@@ -350,35 +454,44 @@ class Labeler:
         for t in self.texts:
             bb = t.get_window_extent(renderer)
             placed.append((bb.x0, bb.y0, bb.x1, bb.y1))
+        grow = 1.5
         for t, candidates in self.items:
+            # A label's size does not depend on where it goes: measure it once, then try every spot by arithmetic.
             bb = t.get_window_extent(renderer)
             w, h = bb.width, bb.height
-            best, best_score = None, math.inf
-            for rank, (anchor, d, pad) in enumerate(candidates):
-                d = unit(d)
-                ha, va = _align(d)
-                x, y = to(np.asarray(anchor, float)) + d * pad * scale
-                x0 = x if ha == "left" else x - w if ha == "right" else x - w / 2
-                y0 = y if va == "bottom" else y - h if va == "top" else y - h / 2
-                grow = 1.5
-                box = (x0 - grow, y0 - grow, x0 + w + grow, y0 + h + grow)
-                score = 10 * _hits(P, Q, W, box, lo, hi)
-                score += 200 * sum(not (box[2] < o[0] or box[0] > o[2] or box[3] < o[1] or box[1] > o[3]) for o in placed)
-                outside = (max(0.0, axbox.x0 - box[0]) + max(0.0, box[2] - axbox.x1)
-                           + max(0.0, axbox.y0 - box[1]) + max(0.0, box[3] - axbox.y1))
-                score += 3.0 * outside
-                clean = score == 0
-                score += 0.3 * rank
-                if score < best_score:
-                    best, best_score = (anchor, d, pad, ha, va, box), score
-                if clean:
-                    break  # the first spot, in order of preference, that covers nothing
-            anchor, d, pad, ha, va, box = best
+            n = len(candidates)
+            A = to(np.array([a for a, _, _ in candidates], float).reshape(n, 2))
+            D = np.array([d for _, d, _ in candidates], float).reshape(n, 2)
+            norm = np.hypot(D[:, 0], D[:, 1])
+            D = np.where(norm[:, None] > 0, D / np.where(norm > 0, norm, 1.0)[:, None], [1.0, 0.0])
+            pads = np.array([pad for _, _, pad in candidates], float)
+            XY = A + D * pads[:, None] * scale
+            # _align, for every candidate: where the text's box starts relative to its anchor point.
+            fx = np.where(D[:, 0] > 0.2, 0.0, np.where(D[:, 0] < -0.2, 1.0, 0.5))
+            fy = np.where(D[:, 1] > 0.2, 0.0, np.where(D[:, 1] < -0.2, 1.0, 0.5))
+            x0 = XY[:, 0] - w * fx
+            y0 = XY[:, 1] - h * fy
+            boxes = np.column_stack([x0 - grow, y0 - grow, x0 + w + grow, y0 + h + grow])
+            score = 10.0 * _hits_many(P, Q, W, boxes)
+            if placed:
+                o = np.asarray(placed, float)
+                overlap = ~((boxes[:, None, 2] < o[None, :, 0]) | (boxes[:, None, 0] > o[None, :, 2])
+                            | (boxes[:, None, 3] < o[None, :, 1]) | (boxes[:, None, 1] > o[None, :, 3]))
+                score = score + 200.0 * np.count_nonzero(overlap, axis=1)
+            outside = (np.maximum(0.0, room[0] - boxes[:, 0]) + np.maximum(0.0, boxes[:, 2] - room[2])
+                       + np.maximum(0.0, room[1] - boxes[:, 1]) + np.maximum(0.0, boxes[:, 3] - room[3]))
+            score = score + 3.0 * outside
+            # The first spot, in order of preference, that covers nothing ends the search; the best so far wins.
+            clean = np.flatnonzero(score == 0)
+            last = int(clean[0]) + 1 if len(clean) else n
+            k = int(np.argmin(score[:last] + 0.3 * np.arange(last)))
+            anchor, d = candidates[k][0], D[k]
+            ha, va = _align(d)
             t.xy = tuple(map(float, anchor))
-            t.set_position(tuple(float(x) for x in d * pad))
+            t.set_position(tuple(float(x) for x in d * pads[k]))
             t.set_ha(ha)
             t.set_va(va)
-            placed.append(box)
+            placed.append(tuple(boxes[k]))
 
 
 def arrow_label_candidates(tail, tip, away, pad):
@@ -432,7 +545,7 @@ def dimension(ax, labeler, p, q, text, *, s, small: float, color=None):
     if L >= small:
         a = FancyArrowPatch(tuple(p), tuple(q), arrowstyle=style, mutation_scale=s.head * 0.9, shrinkA=0, shrinkB=0,
                             lw=s.thin_lw, color=color, zorder=3.5)
-        ax.add_patch(a)
+        put(ax, a, [p, q])
         out.append(a)
         labeler.segment(p, q)
         e = unit(q - p)
@@ -443,11 +556,10 @@ def dimension(ax, labeler, p, q, text, *, s, small: float, color=None):
         for start, end in ((p - e * out_len, p), (q + e * out_len, q)):
             a = FancyArrowPatch(tuple(start), tuple(end), arrowstyle=one, mutation_scale=s.head * 0.9, shrinkA=0,
                                 shrinkB=0, lw=s.thin_lw, color=color, zorder=3.5)
-            ax.add_patch(a)
+            put(ax, a, [start, end])
             out.append(a)
             labeler.segment(start, end)
-        (line,) = ax.plot([p[0], q[0]], [p[1], q[1]], color=color, lw=s.thin_lw, zorder=3.5)
-        out.append(line)
+        out.append(line(ax, [p[0], q[0]], [p[1], q[1]], color=color, lw=s.thin_lw, zorder=3.5))
     n = perp(e)
     mid = 0.5 * (p + q)
     cands = []
@@ -475,9 +587,9 @@ def scale_bar(ax, at, length: float, value: float, *, s, unit_text="N", tick=Non
     """
     x, y = map(float, at)
     tick = tick if tick is not None else length * 0.06
-    (bar,) = ax.plot([x, x + length], [y, y], color=s.ink, lw=1.4, solid_capstyle="butt", zorder=5)
-    (ticks,) = ax.plot([x, x, np.nan, x + length, x + length], [y - tick, y + tick, np.nan, y - tick, y + tick],
-                       color=s.ink, lw=1.0, zorder=5)
+    bar = line(ax, [x, x + length], [y, y], color=s.ink, lw=1.4, solid_capstyle="butt", zorder=5)
+    ticks = line(ax, [x, x, np.nan, x + length, x + length], [y - tick, y + tick, np.nan, y - tick, y + tick],
+                 color=s.ink, lw=1.0, zorder=5)
     t0 = ax.annotate("0", (x, y), xytext=(-3, 0), textcoords="offset points", ha="right", va="center",
                      fontsize=s.small_size, color=s.ink, annotation_clip=False)
     t1 = ax.annotate(f"{num(value)} {unit_text}", (x + length, y), xytext=(3, 0), textcoords="offset points",

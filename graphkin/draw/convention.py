@@ -7,7 +7,7 @@ import math
 import numpy as np
 
 from . import style as _style
-from ._common import Drawn, arrow, moment_arrow, new_axes, setup_axes
+from ._common import Drawn, arrow, line, markers, moment_arrow, new_axes, setup_axes
 
 
 def draw_sign_convention(*, ax=None, title=True, **style) -> Drawn:
@@ -50,18 +50,18 @@ def draw_sign_convention(*, ax=None, title=True, **style) -> Drawn:
     a, arc, mid = moment_arrow(ax, C, 0.55, True, color=s.known, lw=1.6, s=s, start=-0.6 * math.pi, span=1.55 * math.pi)
     drawn.arrows["CCW"] = a
     drawn.add(a)
-    (dot,) = ax.plot(*C, "o", ms=3, color=s.ink)
+    dot = markers(ax, *C, ms=3, color=s.ink)
     drawn.add(dot)
     text(C[0] + 0.75, C[1] + 0.15, "+ CCW:\nθ, ω, α, T", "CCW", ha="left", va="center", color=s.known)
     # Two links pulled apart at their pin: action and reaction.
     A2 = np.array([2.15, 3.55])
     A3 = np.array([3.35, 3.95])
     for P, Q, n in ((np.array([0.35, 2.75]), A2, "2"), (A3, np.array([5.25, 3.2]), "3")):
-        (outer,) = ax.plot(*np.array([P, Q]).T, color=s.ink, lw=s.link_lw, solid_capstyle="round")
-        (inner,) = ax.plot(*np.array([P, Q]).T, color=s.link_fill, lw=s.link_lw - 2 * s.outline_lw,
-                           solid_capstyle="round")
+        outer = line(ax, *np.array([P, Q]).T, color=s.ink, lw=s.link_lw, solid_capstyle="round")
+        inner = line(ax, *np.array([P, Q]).T, color=s.link_fill, lw=s.link_lw - 2 * s.outline_lw,
+                     solid_capstyle="round")
         for X in (P, Q):
-            (pin,) = ax.plot(*X, "o", ms=s.pin_size, mfc="white", mec=s.ink, mew=1.2, zorder=5)
+            pin = markers(ax, *X, ms=s.pin_size, mfc="white", mec=s.ink, mew=1.2, zorder=5)
             drawn.add(pin)
         M = 0.5 * (P + Q)
         d = (Q - P) / np.hypot(*(Q - P))

@@ -8,8 +8,9 @@ import numpy as np
 
 from ..model import FRAME, Prismatic, Torque
 from . import style as _style
-from ._common import (MM, Drawn, Labeler, arrow, points_per_unit, arrow_label_candidates, dimension, had_content, moment_arrow, new_axes,
-                      nice_round, num, point_label_candidates, scale_bar, set_limits, setup_axes, sub, unit)
+from ._common import (MM, Drawn, Labeler, arrow, points_per_unit, arrow_label_candidates, dimension, had_content, line,
+                      moment_arrow, new_axes, nice_round, num, point_label_candidates, scale_bar, set_limits, setup_axes,
+                      sub, unit)
 from .mechanism import Geometry, _label_points, centre_of_mass, draw_link_body
 
 
@@ -197,8 +198,7 @@ def draw_free_body(construction, link: int, *, ax=None, force_scale=None, title=
         e = unit(inert["F"])
         ell = math.hypot(*inert["F"]) / force_scale
         ln = np.array([P - e * max(0.45 * ell, 0.2 * L), P + e * max(1.4 * ell, ell + 0.2 * L)])
-        (line,) = ax.plot(*ln.T, color=s.known, lw=s.thin_lw, linestyle=(0, (6, 3)), zorder=3.0)
-        drawn.add(line)
+        drawn.add(line(ax, *ln.T, color=s.known, lw=s.thin_lw, linestyle=(0, (6, 3)), zorder=3.0))
         lab.segment(*ln)
         h = inert["h"] or 0.0
         if h * MM > 1e-6 * L:

@@ -9,8 +9,8 @@ from matplotlib.patches import Circle, Polygon
 
 from ..model import FRAME, GearMesh, Prismatic, Revolute
 from . import style as _style
-from ._common import (MM, Drawn, Labeler, had_content, new_axes, perp, point_label_candidates, set_limits,
-                      setup_axes, sub, unit)
+from ._common import (MM, Drawn, Labeler, had_content, line, markers, new_axes, perp, point_label_candidates,
+                      set_limits, setup_axes, sub, unit)
 
 
 class Geometry:
@@ -115,9 +115,9 @@ class Geometry:
 def _band(ax, pts, s, out, alpha=1.0, zorder=2.0):
     """A bar as an outlined band of constant width in points."""
     x, y = np.asarray(pts, float).T
-    (outer,) = ax.plot(x, y, color=s.ink, lw=s.link_lw, solid_capstyle="round", zorder=zorder, alpha=alpha)
-    (inner,) = ax.plot(x, y, color=s.link_fill, lw=s.link_lw - 2 * s.outline_lw, solid_capstyle="round",
-                       zorder=zorder + 0.01, alpha=alpha)
+    outer = line(ax, x, y, color=s.ink, lw=s.link_lw, solid_capstyle="round", zorder=zorder, alpha=alpha)
+    inner = line(ax, x, y, color=s.link_fill, lw=s.link_lw - 2 * s.outline_lw, solid_capstyle="round",
+                 zorder=zorder + 0.01, alpha=alpha)
     out += [outer, inner]
 
 
@@ -182,23 +182,23 @@ def draw_link_body(ax, geom: Geometry, n: int, s, labeler: Labeler | None = None
         if labeler:
             labeler.polyline(block.get_xy(), closed=True)
     if len(coords) == 1 and not sliders and not gears:
-        (dot,) = ax.plot(*coords[0], "o", color=s.ink, ms=4, zorder=3)
+        dot = markers(ax, *coords[0], color=s.ink, ms=4, zorder=3)
         out.append(dot)
     # Pins and points of this link.
     joint_points = {j.point for j in geom.mech.joints_of(n) if isinstance(j, Revolute)}
     for name, X in pts.items():
         if name in joint_points:
-            (pin,) = ax.plot(*X, "o", ms=s.pin_size, mfc="white", mec=s.ink, mew=s.outline_lw * 1.2, zorder=5)
+            pin = markers(ax, *X, ms=s.pin_size, mfc="white", mec=s.ink, mew=s.outline_lw * 1.2, zorder=5)
         else:
-            (pin,) = ax.plot(*X, "o", ms=3.6, color=s.ink, zorder=5)
+            pin = markers(ax, *X, ms=3.6, color=s.ink, zorder=5)
         out.append(pin)
     return out
 
 
 def centre_of_mass(ax, X, s, zorder=5.2):
     """The centre-of-mass symbol: a small circle with a cross."""
-    (a,) = ax.plot(*X, "o", ms=7, mfc="white", mec=s.ink, mew=1.0, zorder=zorder)
-    (b,) = ax.plot(*X, "+", ms=7, color=s.ink, mew=1.0, zorder=zorder + 0.01)
+    a = markers(ax, *X, ms=7, mfc="white", mec=s.ink, mew=1.0, zorder=zorder)
+    b = markers(ax, *X, "+", ms=7, color=s.ink, mew=1.0, zorder=zorder + 0.01)
     return [a, b]
 
 
@@ -211,16 +211,16 @@ def _ground(ax, X, size, s, direction, out, labeler=None):
     tri = Polygon([top, base + n * 0.85 * size, base - n * 0.85 * size], closed=True, facecolor="white",
                   edgecolor=s.ink, lw=s.outline_lw, zorder=1.2)
     line_pts = np.array([base + n * 1.3 * size, base - n * 1.3 * size])
-    (line,) = ax.plot(*line_pts.T, color=s.ink, lw=s.outline_lw * 1.3, zorder=1.2, solid_capstyle="butt")
+    base_line = line(ax, *line_pts.T, color=s.ink, lw=s.outline_lw * 1.3, zorder=1.2, solid_capstyle="butt")
     hatch = Polygon([base + n * 1.3 * size, base - n * 1.3 * size, base - n * 1.3 * size + d * 0.55 * size,
                      base + n * 1.3 * size + d * 0.55 * size], closed=True, fill=False, hatch=s.ground_hatch,
                     edgecolor=s.ink, lw=0, zorder=1.1)
     for p in (tri, hatch):
         ax.add_patch(p)
-    line.set_zorder(2.6)
+    base_line.set_zorder(2.6)
     tri.set_zorder(2.6)
     hatch.set_zorder(2.55)
-    out += [tri, line, hatch]
+    out += [tri, base_line, hatch]
     if labeler:
         labeler.polyline([top, base + n * 0.85 * size, base - n * 0.85 * size], closed=True)
         labeler.segment(*line_pts)
@@ -258,11 +258,11 @@ def _rails(ax, geom: Geometry, j: Prismatic, s, out, labeler=None):
     t_through = float(np.dot(T - X, u))
     lo, hi = min(t_through, -R), max(t_through, R)
     cl = np.array([X + u * (lo - 0.6 * geom.sym), X + u * (hi + 0.6 * geom.sym)])
-    (centre,) = ax.plot(*cl.T, color=s.ink, lw=s.thin_lw * 0.8, linestyle=(0, (10, 3, 2, 3)), zorder=1.0)
+    centre = line(ax, *cl.T, color=s.ink, lw=s.thin_lw * 0.8, linestyle=(0, (10, 3, 2, 3)), zorder=1.0)
     out.append(centre)
     for side in (1.0, -1.0):
         a, b = X - u * R + side * n * h, X + u * R + side * n * h
-        (rail,) = ax.plot(*np.array([a, b]).T, color=s.ink, lw=s.outline_lw * 1.3, zorder=1.3, solid_capstyle="butt")
+        rail = line(ax, *np.array([a, b]).T, color=s.ink, lw=s.outline_lw * 1.3, zorder=1.3, solid_capstyle="butt")
         out.append(rail)
         if labeler:
             labeler.segment(a, b)
@@ -346,7 +346,7 @@ def draw_mechanism(construction, *, ax=None, labels=True, faint=False, emphasis=
     pivots = geom.frame_pivots()
     for name, X in geom.P.get(FRAME, {}).items():
         if name not in pivots:
-            (dot,) = ax.plot(*X, "o", ms=3.6, color=s.ink, zorder=5, alpha=s.faint_alpha if faint else None)
+            dot = markers(ax, *X, ms=3.6, color=s.ink, zorder=5, alpha=s.faint_alpha if faint else None)
             drawn.add(dot)
     for n, X in geom.G.items():
         if geom.mech.link(n).mass > 0:
@@ -356,7 +356,7 @@ def draw_mechanism(construction, *, ax=None, labels=True, faint=False, emphasis=
                 drawn.add(a)
     for key, P in c.pitch_points.items():
         X = np.asarray(P, float) * MM
-        (dot,) = ax.plot(*X, "o", ms=3.6, color=s.ink, zorder=5.1, alpha=s.faint_alpha if faint else None)
+        dot = markers(ax, *X, ms=3.6, color=s.ink, zorder=5.1, alpha=s.faint_alpha if faint else None)
         drawn.add(dot)
     if labels:
         _label_points(ax, geom, c, s, lab, drawn, faint, emphasis)

@@ -7,8 +7,8 @@ import math
 import numpy as np
 
 from . import style as _style
-from ._common import (Drawn, Labeler, arrow, points_per_unit, arrow_label_candidates, had_content, new_axes, nice_round, num,
-                      point_label_candidates, scale_bar, set_limits, setup_axes, sub)
+from ._common import (Drawn, Labeler, arrow, points_per_unit, arrow_label_candidates, had_content, line, markers, new_axes,
+                      nice_round, num, point_label_candidates, scale_bar, set_limits, setup_axes, sub)
 
 
 def step_title(step, driver_name: str | None = None) -> str:
@@ -92,8 +92,8 @@ def draw_force_polygon(step, *, scale: float, ax=None, origin=(0.0, 0.0), values
         drawn.add(art)
         if a.known:
             # A light band under a known load highlights it (and shows it where an unknown runs back over it).
-            (band,) = ax.plot([tail[0], tip[0]], [tail[1], tip[1]], color=color, lw=7.5, alpha=0.22,
-                              solid_capstyle="butt", zorder=4.0)
+            band = line(ax, [tail[0], tip[0]], [tail[1], tip[1]], color=color, lw=7.5, alpha=0.22,
+                        solid_capstyle="butt", zorder=4.0)
             drawn.add(band)
             lab.segment(tail, tip, 7.5)
         lab.segment(tail, tip)
@@ -104,8 +104,8 @@ def draw_force_polygon(step, *, scale: float, ax=None, origin=(0.0, 0.0), values
     span = float(np.max(np.ptp(verts, axis=0))) if len(verts) > 1 else 10.0
     span = span or 10.0
     # The start, where the polygon closes.
-    (ring,) = ax.plot(*start, "o", ms=8, mfc="none", mec=s.ink, mew=1.0, zorder=5)
-    (dots,) = ax.plot(*verts[1:-1].T, "o", ms=3, color=s.ink, zorder=5) if len(verts) > 2 else ax.plot([], [])
+    ring = markers(ax, *start, ms=8, mfc="none", mec=s.ink, mew=1.0, zorder=5)
+    dots = markers(ax, *verts[1:-1].T, ms=3, color=s.ink, zorder=5)
     drawn += [ring, dots]
     for a in step.polygon:
         if a.name not in drawn.ends:

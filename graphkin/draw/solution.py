@@ -8,7 +8,7 @@ import numpy as np
 from matplotlib.figure import Figure
 
 from . import style as _style
-from ._common import input_text, num, polar_text, sub
+from ._common import PanelAxes, input_text, num, polar_text, sub
 from .convention import draw_sign_convention
 from .fbd import draw_free_body
 from .mechanism import draw_mechanism
@@ -144,20 +144,20 @@ def draw_solution(construction, analytical=None, *, figsize=None, **style) -> Fi
              "Graphical route (free bodies, force polygons) beside the analytical one ([A]{x} = {b});  "
              "blue: known loads,  vermillion: unknown forces,  purple: the driver",
              ha="center", va="top", fontsize=s.caption_size, color="#444444")
-    ax = fig.add_subplot(gs[0, 0:2])
+    ax = fig.add_subplot(gs[0, 0:2], axes_class=PanelAxes)
     draw_mechanism(c, ax=ax, **style)
     ax.set_title(f"Mechanism at {input_text(c)} (lengths in mm)", fontsize=s.title_size, color=s.ink)
-    ax = fig.add_subplot(gs[0, 2:4])
+    ax = fig.add_subplot(gs[0, 2:4], axes_class=PanelAxes)
     draw_table(c, analytical, ax=ax, **style)
     for k, link in enumerate(moving):
         r, col = divmod(k, NCOLS)
-        ax = fig.add_subplot(gs[1 + r, col])
+        ax = fig.add_subplot(gs[1 + r, col], axes_class=PanelAxes)
         draw_free_body(c, link, ax=ax, **style)
     r, col = divmod(len(moving), NCOLS)
-    ax = fig.add_subplot(gs[1 + r, col])
+    ax = fig.add_subplot(gs[1 + r, col], axes_class=PanelAxes)
     draw_sign_convention(ax=ax, **style)
     for k, step in enumerate(polys):
         r, col = divmod(k, NCOLS)
-        ax = fig.add_subplot(gs[1 + fbd_rows + r, col])
+        ax = fig.add_subplot(gs[1 + fbd_rows + r, col], axes_class=PanelAxes)
         draw_force_polygon(step, scale=c.force_scale, ax=ax, title=step_title(step), driver_name=c.driver_name, **style)
     return fig

@@ -9,7 +9,7 @@ import numpy as np
 from matplotlib.figure import Figure
 
 from . import style as _style
-from ._common import MM, Labeler, arrow, input_text, num, point_label_candidates, set_limits, sub, unit, perp
+from ._common import MM, Labeler, PanelAxes, markers, arrow, input_text, num, point_label_candidates, set_limits, sub, unit, perp
 from .mechanism import Geometry, draw_mechanism
 from .polygon import draw_force_polygon, step_title
 
@@ -81,7 +81,7 @@ def draw_step_geometry(construction, step, *, ax, **style) -> list:
         if np.hypot(*(X - centre)) > FAR * geom.size:
             far.append(f"{name} is off the drawing, at ({num(X[0])}, {num(X[1])}) mm")
             continue
-        (m,) = ax.plot(*X, "o", ms=6.5, mfc=s.found, mec="white", mew=0.8, zorder=6)
+        m = markers(ax, *X, ms=6.5, mfc=s.found, mec="white", mew=0.8, zorder=6)
         out.append(m)
         extent.append(X)
         t = lab.label(sub(name), point_label_candidates(X, np.array([1.0, 1.0]), 6.0), color=s.found)
@@ -108,10 +108,10 @@ def _frame(target, construction, step, number, *, s, style, header=True, caption
     height = max(0.2, 1 - head_h - bottom - 0.02)
     axes = []
     if step.polygon:
-        ax = target.add_axes([0.01, bottom, 0.58, height])
-        ax2 = target.add_axes([0.62, bottom, 0.37, height])
+        ax = target.add_axes([0.01, bottom, 0.58, height], axes_class=PanelAxes)
+        ax2 = target.add_axes([0.62, bottom, 0.37, height], axes_class=PanelAxes)
     else:
-        ax, ax2 = target.add_axes([0.01, bottom, 0.98, height]), None
+        ax, ax2 = target.add_axes([0.01, bottom, 0.98, height], axes_class=PanelAxes), None
     draw_mechanism(c, ax=ax, faint=True, emphasis=step.link, **style)
     draw_step_geometry(c, step, ax=ax, **style)
     axes.append(ax)
