@@ -346,15 +346,28 @@ def test_style_overrides_are_checked():
 # -- image baseline ------------------------------------------------------------------------------
 
 
-def test_double_slider_free_body_looks_as_before(tmp_path):
-    """A small PNG baseline (tests/baseline); regenerate it by deleting the file."""
+def _baseline_drawings():
+    c = construct_forces(catalog.load("double_slider").kinematics(), 0)
+    polygon = next(s for s in c.steps if s.kind == "polygon" and s.link == 3)
+    return {
+        "double_slider_fbd3": lambda: draw.draw_free_body(c, 3),
+        "double_slider_polygon3": lambda: draw.draw_force_polygon(polygon, scale=c.force_scale),
+        "double_slider_mechanism": lambda: draw.draw_mechanism(c),
+        "sign_convention": lambda: draw.draw_sign_convention(),
+    }
+
+
+@pytest.mark.parametrize("name", sorted(_baseline_drawings()))
+def test_figures_users_see_most_look_as_before(tmp_path, name):
+    """Small PNG baselines in tests/baseline; after a deliberate change, regenerate with
+    ``GRAPHKIN_NEW_BASELINES=1 python -m pytest tests/test_draw.py -k look_as_before``."""
+    import os
     from pathlib import Path
 
-    c = construct_forces(catalog.load("double_slider").kinematics(), 0)
-    d = draw.draw_free_body(c, 3)
-    baseline = Path(__file__).parent / "baseline" / "double_slider_fbd3.png"
-    actual = tmp_path / "double_slider_fbd3.png"
-    draw.save(d, actual, dpi=60)
-    if not baseline.exists():
-        pytest.skip(f"no baseline yet; copy {actual} to {baseline}")
+    baseline = Path(__file__).parent / "baseline" / f"{name}.png"
+    actual = tmp_path / f"{name}.png"
+    draw.save(_baseline_drawings()[name](), actual, dpi=60)
+    if os.environ.get("GRAPHKIN_NEW_BASELINES"):
+        baseline.write_bytes(actual.read_bytes())
+    assert baseline.exists(), f"missing baseline {baseline}"
     assert compare_images(str(baseline), str(actual), tol=12) is None
