@@ -116,7 +116,8 @@ def test_console_script_runs_the_default_example():
 
 def test_import_loads_no_heavy_layers():
     code = (
-        "import sys, graphkin, graphkin.model, graphkin.kinematics, graphkin.solve, graphkin.problem, graphkin.catalog;"
+        "import sys, graphkin, graphkin.model, graphkin.kinematics, graphkin.solve, graphkin.problem, graphkin.catalog,"
+        " graphkin.graphic, graphkin.analysis, graphkin.report;"
         "print([m for m in ('matplotlib', 'ipywidgets', 'pint', 'IPython') if m in sys.modules])"
     )
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)

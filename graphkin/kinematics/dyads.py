@@ -38,8 +38,12 @@ from ..geometry import zdot as dot
 from .state import Kinematics
 from .structure import Dyad, DriverGroup, GearGroup, decompose
 
-DEAD_POINT = 1e-9
-"""Relative size of the velocity determinant below which a position is a dead point."""
+DEAD_POINT = 1e-7
+"""Relative size of the velocity determinant below which a position is a dead point.
+
+At an exact toggle the assembled position itself carries rounding of about
+√ε ≈ 1e-8 (a square root of a difference near zero), so the determinant
+there is of that size rather than zero: the threshold sits above it."""
 
 
 def solve_columns(A, B, rhs):

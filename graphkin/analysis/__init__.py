@@ -1,0 +1,14 @@
+"""Full-cycle results: the driving torque curve, joint-force peaks and polar data, shaking
+force and moment, transmission angle, flywheel sizing and the joint-force index.
+
+Compute only (numpy): the drawing layer plots these results.
+"""
+
+from .cycle import Cycle, Peak, Peaks, sweep
+from .flywheel import Disk, Flywheel, Pulse, Rim, size_flywheel
+from .index import JointForceIndex, joint_force_index, static_problem
+
+__all__ = [
+    "Cycle", "Disk", "Flywheel", "JointForceIndex", "Peak", "Peaks", "Pulse", "Rim",
+    "joint_force_index", "size_flywheel", "static_problem", "sweep",
+]

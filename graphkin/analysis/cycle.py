@@ -1,0 +1,334 @@
+"""A whole cycle of a mechanism in one vectorised solve, and what a designer reads off it.
+
+The driving torque against crank angle, its average and power, the peak of
+every joint force and where it occurs, the polar data of each joint force
+(Söylemez §6.4.1, the strip cutter), the shaking force and moment on the
+frame, and the transmission angle of a four-bar.
+
+Signs follow the README's convention: ``F_ij`` is the force of link i on
+link j, CCW positive, SI units throughout.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Mapping
+
+import numpy as np
+
+from ..errors import GraphkinError
+from ..geometry import cross
+from ..model import FRAME, GearMesh, Prismatic, Revolute
+from ..solve import ForceAnalysis
+from ._turn import TURN, closing_step, weights
+
+if TYPE_CHECKING:
+    from ..problem import Problem
+    from .flywheel import Flywheel
+
+
+def positions(problem: "Problem", n: int | None = None) -> np.ndarray | None:
+    """The input positions a sweep uses: None for the problem's own, else n crank angles over one turn.
+
+    Parameters
+    ----------
+    problem : Problem
+    n : int, optional
+        Number of equally spaced crank angles θ = 2πk/n [rad], k = 0 … n−1.
+        Only for a crank driver: a slider has no natural "one turn", so a
+        slider-driven problem is swept at its own positions.
+
+    Raises
+    ------
+    GraphkinError
+        If n is given for a slider driver, or is not a whole number ≥ 2.
+    """
+    if n is None:
+        return None
+    if problem.mechanism.driver.kind != "crank":
+        raise GraphkinError(
+            f"{problem.name}: the driver is a slider, so there is no turn to divide into n positions;"
+            " sweep it at the problem's own positions (n=None)"
+        )
+    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 2:
+        raise GraphkinError(f"n must be a whole number of positions ≥ 2, got {n!r}")
+    return np.linspace(0.0, TURN, int(n), endpoint=False)
+
+
+def sweep(problem: "Problem", n: int | None = None) -> "Cycle":
+    """Solve a problem over a whole cycle in one vectorised call.
+
+    Parameters
+    ----------
+    problem : Problem
+    n : int, optional
+        If given (crank drivers only), solve at n equally spaced crank angles
+        θ = 2πk/n [rad] at the problem's constant ω and α; otherwise at the
+        problem's own positions.
+
+    Returns
+    -------
+    Cycle
+
+    Examples
+    --------
+    >>> from graphkin import catalog
+    >>> c = sweep(catalog.load("strip_cutter"))
+    >>> c.n, c.closed
+    (180, True)
+    """
+    return Cycle(problem, problem.solve(at=positions(problem, n)))
+
+
+@dataclass(frozen=True)
+class Peak:
+    """An extreme value over the cycle and where it occurs.
+
+    Attributes
+    ----------
+    value : float
+        The extreme value (its unit is that of the quantity: N, N·m, ...).
+    at : float
+        Input position where it occurs: θ [rad] or s [m]; nan if no position is valid.
+    index : int
+        Index of that position in the sweep; −1 if no position is valid.
+    """
+
+    value: float
+    at: float
+    index: int
+
+
+def peak_of(values, q, *, lowest: bool = False) -> Peak:
+    """Largest (or lowest) finite value of ``values`` (n,) and the position ``q`` where it occurs."""
+    values = np.asarray(values, dtype=float)
+    finite = np.isfinite(values)
+    if not finite.any():
+        return Peak(float("nan"), float("nan"), -1)
+    masked = np.where(finite, values, np.inf if lowest else -np.inf)
+    i = int(np.argmin(masked) if lowest else np.argmax(masked))
+    return Peak(float(values[i]), float(q[i]), i)
+
+
+@dataclass(frozen=True)
+class Peaks:
+    """Peak joint forces and the extremes of the driving effort over a cycle.
+
+    Attributes
+    ----------
+    forces : dict of str to Peak
+        For each joint force (``"F12"``, ``"F23"``, ``"G14"``, ...): its peak
+        magnitude |F| [N] and where it occurs.
+    effort_max, effort_min : Peak
+        Largest and smallest driving torque T1j [N·m] (or slider force F1j [N]).
+    """
+
+    forces: Mapping[str, Peak]
+    effort_max: Peak
+    effort_min: Peak
+
+
+@dataclass(frozen=True)
+class Cycle:
+    """A force analysis over a cycle, with the quantities a designer reads off it.
+
+    Attributes
+    ----------
+    problem : Problem
+    analysis : ForceAnalysis
+        The vectorised solution at every position of the sweep.
+    """
+
+    problem: "Problem"
+    analysis: ForceAnalysis
+
+    # -- the sweep --------------------------------------------------------
+    @property
+    def n(self) -> int:
+        return self.analysis.n
+
+    @property
+    def q(self) -> np.ndarray:
+        """Input positions, shape (n,): crank angle θ [rad] or slider position s [m]."""
+        return self.analysis.kinematics.q
+
+    @property
+    def q_dot(self) -> np.ndarray:
+        """Input rate, shape (n,): ω [rad/s] of a crank or v [m/s] of a slider."""
+        return self.analysis.kinematics.q_dot
+
+    @property
+    def valid(self) -> np.ndarray:
+        return self.analysis.valid
+
+    @property
+    def closed(self) -> bool:
+        """True if the positions are one full turn of a crank (the last step closes the turn)."""
+        return self.problem.mechanism.driver.kind == "crank" and closing_step(self.q) is not None
+
+    # -- the driving effort -------------------------------------------------
+    @property
+    def torque(self) -> np.ndarray:
+        """Driving torque T1j [N·m], shape (n,) (for a slider driver: its force F1j [N] along the guide)."""
+        return self.analysis.effort
+
+    @property
+    def average(self) -> float:
+        """Mean driving effort over the cycle [N·m] (or [N]).
+
+        Over a closed turn: the periodic trapezoidal rule, (1/2π) ∮ T dθ, the
+        closing interval from the last angle back to the first included. Over
+        positions that are not a closed turn (a slider, a partial sweep): the
+        trapezoidal mean over the range swept, ∫ T dq / (q_last − q_first).
+        nan if any position is invalid.
+        """
+        T, q = self.torque, self.q
+        gap = closing_step(q) if self.closed else None
+        if gap is not None:
+            return float(np.sum(weights(q, gap) * T) / TURN)
+        if self.n < 2 or q[-1] == q[0]:
+            return float(T[0]) if self.n == 1 else float("nan")
+        return float(np.sum(0.5 * (T[1:] + T[:-1]) * np.diff(q)) / (q[-1] - q[0]))
+
+    @property
+    def power(self) -> np.ndarray:
+        """Input power P = T1j·ω (crank) or F1j·v (slider) [W], shape (n,)."""
+        return self.torque * self.q_dot
+
+    # -- joint forces ---------------------------------------------------------
+    def peaks(self) -> Peaks:
+        """Peak magnitude of every joint force, and the effort's maximum and minimum, with their positions."""
+        r = self.analysis
+        forces = {r.name_of(i, j): peak_of(np.hypot(F[:, 0], F[:, 1]), self.q) for (i, j), F in r.forces.items()}
+        return Peaks(forces, peak_of(self.torque, self.q), peak_of(self.torque, self.q, lowest=True))
+
+    def polar(self, name: str) -> tuple[np.ndarray, np.ndarray]:
+        """A joint force in polar form over the cycle, for a polar plot.
+
+        Parameters
+        ----------
+        name : str
+            ``"F23"`` (force of 2 on 3), ``"F32"`` (its reaction), ``"G14"``, ...
+
+        Returns
+        -------
+        magnitude : ndarray, shape (n,)
+            |F| [N].
+        angle : ndarray, shape (n,)
+            Direction of F from +x [rad], CCW positive, in (−π, π].
+        """
+        F = self.analysis[name]
+        if F.ndim != 2:
+            raise GraphkinError(f"{name} is a torque: it has no direction to plot")
+        return np.hypot(F[:, 0], F[:, 1]), np.arctan2(F[:, 1], F[:, 0])
+
+    # -- the frame --------------------------------------------------------------
+    def _frame_joints(self):
+        r = self.analysis
+        mech = self.problem.mechanism
+        for (i, j), F in r.forces.items():
+            if i == FRAME:
+                yield mech.joint_between(i, j), j, F
+
+    def _driver_point(self) -> np.ndarray:
+        mech = self.problem.mechanism
+        joint = mech.joint_between(FRAME, mech.driver.link)
+        return self.analysis.kinematics.position(joint.slider, joint.point)
+
+    def shaking_force(self) -> np.ndarray:
+        """Resultant force of the mechanism on the frame [N], shape (n, 2).
+
+        The sum over the frame's joints of the force of each moving link on
+        the frame, Σ F_j1, plus the reaction −F1j of a slider driver's
+        actuator. Summing every moving link's equilibrium (d'Alembert) shows
+        it equals −Σ m_i a_Gi + Σ (external forces and weights on the moving
+        links): with no external loads it is the inertia forces' resultant.
+        """
+        S = np.zeros((self.n, 2))
+        for _, _, F in self._frame_joints():
+            S = S - F
+        if self.problem.mechanism.driver.kind == "slider":
+            S = S - self.analysis.driver_force()
+        return S
+
+    def shaking_moment(self) -> np.ndarray:
+        """Moment of the mechanism on the frame about the global origin [N·m], shape (n,), CCW positive.
+
+        The moments of the forces F_j1 at the frame's joints, the couples a
+        prismatic pair with the frame transmits, and the driver's reaction:
+        −T12 for a crank, −F12 at the slider's point for a slider. It equals
+        Σ (r_Gi × (−m_i a_Gi) − I_Gi α_i) plus the moment of the external
+        loads on the moving links, all about the origin.
+        """
+        r = self.analysis
+        kin = r.kinematics
+        M = np.zeros(self.n)
+        for joint, j, F in self._frame_joints():
+            if isinstance(joint, Revolute):
+                X = kin.position(FRAME, joint.point)
+                M = M + cross(X, -F)
+            elif isinstance(joint, Prismatic):
+                X = kin.position(joint.slider, joint.point)
+                M = M + cross(X, -F) - r.couple[(FRAME, j)]
+            elif isinstance(joint, GearMesh):  # pragma: no cover - a gear mesh never involves the frame
+                raise GraphkinError(f"{joint.label}: a gear mesh with the frame is not supported")
+        if self.problem.mechanism.driver.kind == "crank":
+            M = M - self.torque
+        else:
+            M = M + cross(self._driver_point(), -r.driver_force())
+        return M
+
+    # -- four-bars ----------------------------------------------------------------
+    def transmission_angle(self) -> np.ndarray:
+        """Transmission angle μ of a crank-driven four-bar [rad], shape (n,), folded to [0, π/2].
+
+        μ is the angle between the coupler (pins A and B) and the rocker
+        (pins B0 and B) at B; an angle μ and its supplement π − μ transmit
+        force equally well, so μ is reported as min(μ, π − μ).
+
+        Raises
+        ------
+        GraphkinError
+            If the mechanism is not a four-bar of revolute joints driven by a crank.
+        """
+        mech = self.problem.mechanism
+        ok = (len(mech.links) == 4 and len(mech.joints) == 4 and mech.driver.kind == "crank"
+              and all(isinstance(j, Revolute) for j in mech.joints))
+        crank = mech.driver.link
+        coupler = [j for j in mech.moving if j != crank and any(set(J.links) == {crank, j} for J in mech.joints)]
+        if not ok or len(coupler) != 1:
+            raise GraphkinError(
+                f"{self.problem.name}: the transmission angle is defined for a crank-driven four-bar of four revolute"
+                " joints; for other linkages use the joint-force index (graphkin.analysis.joint_force_index)"
+            )
+        coupler = coupler[0]
+        (rocker,) = [j for j in mech.moving if j not in (crank, coupler)]
+        kin = self.analysis.kinematics
+        A = mech.joint_between(crank, coupler).point
+        B = mech.joint_between(coupler, rocker).point
+        B0 = mech.joint_between(FRAME, rocker).point
+        PB = kin.position(coupler, B)
+        u, v = kin.position(coupler, A) - PB, kin.position(FRAME, B0) - PB
+        mu = np.arctan2(np.abs(cross(u, v)), np.sum(u * v, axis=-1))
+        return np.minimum(mu, np.pi - mu)
+
+    # -- flywheel ------------------------------------------------------------------
+    def flywheel(self, Cs: float) -> "Flywheel":
+        """Size a flywheel for this cycle's torque (:func:`graphkin.analysis.size_flywheel`).
+
+        Parameters
+        ----------
+        Cs : float
+            Coefficient of speed fluctuation (ω_max − ω_min)/ω_avg, e.g. 0.05.
+        """
+        from .flywheel import size_flywheel
+
+        if not self.closed:
+            raise GraphkinError(f"{self.problem.name}: a flywheel is sized over one full turn of a crank; sweep(problem, n=...)")
+        if not np.all(self.valid):
+            bad = np.degrees(self.q[~self.valid])
+            raise GraphkinError(f"{self.problem.name}: no torque at θ = {', '.join(f'{b:g}°' for b in bad[:5])}: cannot size a flywheel")
+        omega = float(np.mean(self.q_dot))
+        if omega <= 0 or not np.allclose(self.q_dot, omega):
+            raise GraphkinError(f"{self.problem.name}: flywheel sizing needs a crank turning CCW at a constant ω, got ω = {omega:g} rad/s")
+        return size_flywheel(self.q, self.torque, omega_avg=omega, Cs=Cs)
