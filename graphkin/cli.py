@@ -1,4 +1,4 @@
-"""``graphkin`` on the command line: ``graphkin list``, ``graphkin solve PROBLEM``.
+"""``graphkin`` on the command line: ``graphkin list``, ``graphkin solve PROBLEM``, ``graphkin cycle PROBLEM``.
 
 Bad input ends with a one-line message on stderr and exit code 2, never a
 traceback.
@@ -10,6 +10,7 @@ import argparse
 import json
 import math
 import sys
+from pathlib import Path
 
 import numpy as np
 
@@ -27,6 +28,13 @@ def _parser() -> argparse.ArgumentParser:
     s.add_argument("--figure", metavar="FILE", help="write the side-by-side figure (.png, .svg or .pdf); "
                    "with several positions, one file each, numbered")
     s.add_argument("--steps", metavar="DIR", help="write the construction step by step, one PNG frame per step")
+    c = sub.add_parser("cycle", help="a whole cycle: torque, peak joint forces, flywheel, joint-force index")
+    c.add_argument("problem", help="catalog name (see 'graphkin list') or path to a problem file")
+    c.add_argument("--n", type=int, help="number of equally spaced crank angles over one turn (crank drivers only; "
+                   "default: the problem's own positions)")
+    c.add_argument("--cs", type=float, metavar="CS", help="coefficient of speed fluctuation: size a flywheel, e.g. 0.05")
+    c.add_argument("--json", action="store_true", help="print every array as JSON in SI units (schema: docs/json.md)")
+    c.add_argument("--figure", metavar="FILE", help="write the cycle figure (.png, .svg or .pdf)")
     return p
 
 
@@ -94,10 +102,276 @@ def _figures(problem, result, graphical, figure, steps, say):
             print(f"{len(c.steps)} construction steps written to {folder}/", file=say)
 
 
+def _cycle(args) -> int:
+    from . import catalog
+    from .analysis import sweep
+
+    problem = catalog.load(args.problem)
+    if args.figure and Path(args.figure).suffix.lower() not in (".png", ".svg", ".pdf"):
+        raise GraphkinError(f"--figure {args.figure}: the file must end in .png, .svg or .pdf")
+    with _Progress(f"sweeping {problem.name}"):
+        cycle = sweep(problem, args.n)
+        if args.cs is not None and not cycle.closed:
+            kind = problem.mechanism.driver.kind
+            raise GraphkinError(f"{problem.name}: --cs sizes a flywheel over one full turn of a crank, but "
+                                + ("the driver is a slider" if kind != "crank" else
+                                   "the problem's positions are not one full turn: give --n N"))
+        data = cycle_data(cycle, args.cs)
+    if args.json:
+        print(json.dumps(data, indent=2, ensure_ascii=False))
+    else:
+        print(format_cycle(cycle, data))
+    if args.figure:
+        from . import draw
+
+        path = Path(args.figure)
+        with _Progress(f"drawing {path.name}"):
+            path.parent.mkdir(parents=True, exist_ok=True)
+            draw.save(draw.draw_cycle(cycle, Cs=args.cs), path)
+        print(f"figure written to {path}", file=sys.stderr if args.json else sys.stdout)
+    bad = np.flatnonzero(~cycle.valid)
+    if len(bad):
+        i = bad[0]
+        print(f"graphkin: error: {problem.name}: {len(bad)} of {cycle.n} positions have no solution, the first at"
+              f" {_where(cycle, cycle.q[i])}: {cycle.analysis.reason(i)}", file=sys.stderr)
+        return 2
+    return 0
+
+
+STEEL = 7850.0
+"""Density of steel [kg/m³], for the flywheel disk of the cycle summary."""
+DISK_THICKNESS = 0.025
+"""Axial thickness of that disk [m] (an assumption, stated in the summary)."""
+
+
+def _where(cycle, q) -> str:
+    """``θ12 = 62°`` for a crank, ``s = 200 mm`` for a slider driver."""
+    d = cycle.problem.mechanism.driver
+    if not math.isfinite(q):
+        return "—"
+    return f"θ1{d.link} = {math.degrees(q):.6g}°" if d.kind == "crank" else f"s = {q * 1e3:.6g} mm"
+
+
+def _floats(a) -> list:
+    """An array as a JSON list, nan and ±inf as null."""
+    return [float(x) if math.isfinite(x) else None for x in np.asarray(a, dtype=float).ravel()]
+
+
+def _float(x):
+    x = float(x)
+    return x if math.isfinite(x) else None
+
+
+def _peak(p) -> dict:
+    return {"value": _float(p.value), "at": _float(p.at), "index": int(p.index)}
+
+
+def cycle_data(cycle, Cs=None) -> dict:
+    """Everything ``graphkin cycle`` reports, as plain data in SI units (schema: docs/json.md).
+
+    Parameters
+    ----------
+    cycle : graphkin.analysis.Cycle
+    Cs : float, optional
+        Coefficient of speed fluctuation: size a flywheel (its ``"flywheel"`` is null without it).
+
+    Raises
+    ------
+    GraphkinError
+        If a flywheel is asked for where none can be sized (a slider, not one full turn, a failed position).
+    """
+    from .analysis import joint_force_index
+
+    problem, r = cycle.problem, cycle.analysis
+    mech = problem.mechanism
+    crank = mech.driver.kind == "crank"
+    peaks = cycle.peaks()
+    omega = float(np.mean(cycle.q_dot))
+    constant = crank and bool(np.allclose(cycle.q_dot, omega))
+    power = cycle.power
+    forces = {}
+    for (i, j), F in r.forces.items():
+        name = r.name_of(i, j)
+        size, angle = cycle.polar(name)
+        forces[name] = {"x": _floats(F[:, 0]), "y": _floats(F[:, 1]), "magnitude": _floats(size),
+                        "angle": _floats(angle), "peak": _peak(peaks.forces[name])}
+    S = cycle.shaking_force()
+    try:
+        mu = _floats(cycle.transmission_angle())
+    except GraphkinError:
+        mu = None
+    flywheel = None
+    if Cs is not None:
+        f = cycle.flywheel(Cs)
+        disk = f.disk(STEEL, DISK_THICKNESS)
+        flywheel = {
+            "Cs": f.Cs, "omega_avg": f.omega_avg, "T_avg": f.T_avg, "E": f.E, "I_s": f.I_s,
+            "crossings": _floats(f.crossings), "areas": _floats(f.areas), "accumulated": _floats(f.accumulated),
+            "energy": _floats(f.U),
+            "disk": {"material": "steel", "density": disk.density, "thickness": disk.thickness,
+                     "radius": disk.radius, "mass": disk.mass, "I": disk.I},
+        }
+    try:
+        jfi = joint_force_index(problem, cycle.n if cycle.closed and _even(cycle) else None)
+    except GraphkinError as exc:
+        index = {"defined": False, "reason": str(exc)}
+    else:
+        if len(jfi.q) != cycle.n or not np.allclose(jfi.q, cycle.q):
+            jfi = joint_force_index(problem)
+        index = {
+            "defined": True, "reason": "", "units": jfi.units, "limit": jfi.limit, "values": _floats(jfi.index),
+            "load": _floats(jfi.load), "joint": [str(x) for x in jfi.joint], "peak": _peak(jfi.peak),
+            "over_limit": _floats(jfi.over_limit),
+            "immovable": [{"at": float(q), "reason": why} for q, why in jfi.immovable],
+            "unloaded": _floats(jfi.unloaded),
+        }
+    return {
+        "problem": problem.name, "title": problem.title, "source": problem.source,
+        "units": {"length": "m", "angle": "rad", "force": "N", "torque": "N*m", "power": "W", "energy": "J",
+                  "inertia": "kg*m^2", "mass": "kg", "time": "s"},
+        "driver": {"link": mech.driver.link, "kind": mech.driver.kind, "name": mech.driver.symbol},
+        "n": cycle.n,
+        "closed": cycle.closed,
+        "input": {"name": "theta" if crank else "s", "values": _floats(cycle.q), "rate": _floats(cycle.q_dot)},
+        "valid": [bool(v) for v in cycle.valid],
+        "invalid": [{"index": int(i), "reason": r.reason(int(i))} for i in np.flatnonzero(~cycle.valid)],
+        "effort": {"name": mech.driver.symbol, "values": _floats(cycle.torque), "average": _float(cycle.average),
+                   "max": _peak(peaks.effort_max), "min": _peak(peaks.effort_min)},
+        "power": {"values": _floats(power),
+                  "average": _float(cycle.average * omega) if constant else None,
+                  "max": _peak(_peak_of(power, cycle.q)), "min": _peak(_peak_of(power, cycle.q, lowest=True))},
+        "forces": forces,
+        "shaking": {"force": {"x": _floats(S[:, 0]), "y": _floats(S[:, 1])}, "moment": _floats(cycle.shaking_moment())},
+        "transmission_angle": mu,
+        "flywheel": flywheel,
+        "joint_force_index": index,
+    }
+
+
+def _even(cycle) -> bool:
+    """True if the cycle's positions are n equally spaced angles from 0 (what joint_force_index(problem, n) solves at)."""
+    return bool(np.allclose(cycle.q, np.linspace(0.0, 2 * math.pi, cycle.n, endpoint=False), rtol=0, atol=1e-12))
+
+
+def _peak_of(values, q, lowest=False):
+    from .analysis.cycle import peak_of
+
+    return peak_of(values, q, lowest=lowest)
+
+
+def format_cycle(cycle, data: dict) -> str:
+    """The text summary of ``graphkin cycle``, with units, from :func:`cycle_data`."""
+    mech = cycle.problem.mechanism
+    crank = mech.driver.kind == "crank"
+    unit = "N·m" if crank else "N"
+    name = mech.driver.symbol
+
+    def at(p):
+        return _where(cycle, p["at"] if p["at"] is not None else float("nan"))
+
+    def val(x, digits=6):
+        return "—" if x is None else f"{x:.{digits}g}"
+
+    q0, q1 = cycle.q[0], cycle.q[-1]
+    span = _where(cycle, q0) + (f" … {_where(cycle, q1).split(' = ')[1]}" if cycle.n > 1 else "")
+    lines = [f"{cycle.problem.name}: {cycle.problem.title}",
+             f"{cycle.n} position{'s' * (cycle.n != 1)}, {span}{' (one full turn)' if cycle.closed else ''}"]
+    if crank:
+        lines[-1] += f", ω = {float(np.mean(cycle.q_dot)):.6g} rad/s"
+    e = data["effort"]
+    lines += ["", f"Driving {'torque' if crank else 'force'} {name}",
+              f"  peak     {val(e['max']['value'])} {unit} at {at(e['max'])}",
+              f"  lowest   {val(e['min']['value'])} {unit} at {at(e['min'])}",
+              f"  average  {val(e['average'])} {unit}"]
+    p = data["power"]
+    lines += [f"Input power",
+              f"  peak     {val(p['max']['value'])} W at {at(p['max'])}",
+              f"  lowest   {val(p['min']['value'])} W at {at(p['min'])}"]
+    if p["average"] is not None:
+        lines.append(f"  average  {val(p['average'])} W")
+    lines += ["", "Peak joint forces"]
+    width = max(len(k) for k in data["forces"]) if data["forces"] else 3
+    for k, f in data["forces"].items():
+        lines.append(f"  {k:<{width}}  {val(f['peak']['value'])} N at {at(f['peak'])}")
+    fw = data["flywheel"]
+    if fw is not None:
+        d = fw["disk"]
+        lines += ["", f"Flywheel (C_s = {fw['Cs']:.6g}, ω_avg = {fw['omega_avg']:.6g} rad/s, Norton §11.11)",
+                  f"  E        {val(fw['E'])} J (largest energy swing)",
+                  f"  I_s      {val(fw['I_s'])} kg·m² (system inertia on the crank shaft)",
+                  f"  disk     radius {d['radius'] * 1e3:.4g} mm, mass {d['mass']:.4g} kg"
+                  f" (assuming solid steel, ρ = {d['density']:g} kg/m³, {d['thickness'] * 1e3:g} mm thick)"]
+    jfi = data["joint_force_index"]
+    lines += ["", "Joint-force index (static, Holte and Chase, Norton §11.12)"]
+    if not jfi["defined"]:
+        lines.append(f"  undefined: {jfi['reason']}")
+    else:
+        u = f" {jfi['units']}" if jfi["units"] else ""
+        lines.append(f"  peak     {val(jfi['peak']['value'])}{u} at {at(jfi['peak'])}"
+                     f" (limit {jfi['limit']:g}: {'over' if (jfi['peak']['value'] or 0) > jfi['limit'] else 'within'})")
+        if jfi["immovable"]:
+            lines.append(f"  immovable at {len(jfi['immovable'])} position(s):")
+            lines += [f"    {_where(cycle, x['at'])}: {x['reason']}" for x in jfi["immovable"][:10]]
+            if len(jfi["immovable"]) > 10:
+                lines.append(f"    … and {len(jfi['immovable']) - 10} more (see --json)")
+        else:
+            lines.append("  immovable positions: none")
+    return "\n".join(lines)
+
+
+class _Progress:
+    """A one-line progress report on stderr for work that takes more than a second (tqdm is not a dependency).
+
+    A background thread writes ``graphkin: LABEL… 1.2 s`` over itself until the
+    work is done, then ends the line with the total time; nothing at all is
+    written if the work is done within ``delay`` seconds.
+    """
+
+    def __init__(self, label: str, delay: float = 1.0, every: float = 0.25, stream=None):
+        self.label, self.delay, self.every = label, delay, every
+        self.stream = stream or sys.stderr
+        self.shown = False
+
+    def __enter__(self):
+        import threading
+        import time
+
+        self._time = time.perf_counter
+        self._start = self._time()
+        self._done = threading.Event()
+        self._thread = threading.Thread(target=self._run, daemon=True)
+        self._thread.start()
+        return self
+
+    def _run(self):
+        if self._done.wait(self.delay):
+            return
+        while not self._done.is_set():
+            self._write(f"\rgraphkin: {self.label}… {self._time() - self._start:.1f} s")
+            self._done.wait(self.every)
+
+    def _write(self, text):
+        try:
+            self.stream.write(text)
+            self.stream.flush()
+            self.shown = True
+        except (OSError, ValueError):  # stderr closed: no progress, no error
+            pass
+
+    def __exit__(self, *exc):
+        self._done.set()
+        self._thread.join()
+        if self.shown:
+            self._write(f"\rgraphkin: {self.label}: {self._time() - self._start:.1f} s\n")
+        return False
+
+
 def main(argv=None) -> int:
     """Entry point of the ``graphkin`` command."""
     args = _parser().parse_args(argv)
     try:
+        if args.command == "cycle":
+            return _cycle(args)
         return _list() if args.command == "list" else _solve(args)
     except GraphkinError as exc:
         print(f"graphkin: error: {exc}", file=sys.stderr)

@@ -1,0 +1,122 @@
+"""Plots of a whole cycle (graphkin.draw.cycle) on the strip cutter: the artists carry the analysis' numbers."""
+
+import math
+
+import numpy as np
+import pytest
+from matplotlib.figure import Figure
+
+from graphkin import catalog, draw
+from graphkin.analysis import joint_force_index, sweep
+from graphkin.draw.cycle import crossing_energy
+from graphkin.errors import GraphkinError
+
+
+@pytest.fixture(scope="module")
+def cutter():
+    return catalog.load("strip_cutter")
+
+
+@pytest.fixture(scope="module")
+def cycle(cutter):
+    return sweep(cutter, 72)
+
+
+@pytest.fixture(scope="module")
+def flywheel(cycle):
+    return cycle.flywheel(0.05)
+
+
+def test_torque_curve(cycle, flywheel):
+    d = draw.draw_torque_curve(cycle, flywheel=flywheel)
+    T = d.curves["torque"]
+    assert len(T.get_xdata()) == cycle.n
+    np.testing.assert_allclose(T.get_xdata(), np.degrees(cycle.q))
+    np.testing.assert_array_equal(T.get_ydata(), cycle.torque)
+    np.testing.assert_allclose(d.curves["average"].get_ydata(), [cycle.average] * 2)
+    np.testing.assert_allclose(d.curves["smoothed"].get_ydata(), flywheel.smoothed_torque())
+    assert len(d.pulses) == len(flywheel.crossings)
+    assert "T₁₂" in d.ax.get_ylabel() and "N·m" in d.ax.get_ylabel() and "°" in d.ax.get_xlabel()
+    assert d.ax.get_legend() is not None
+
+
+def test_torque_curve_without_flywheel(cycle):
+    d = draw.draw_torque_curve(cycle)
+    assert set(d.curves) == {"torque", "average"} and d.pulses == []
+
+
+def test_polar_forces_are_cycle_polar(cycle):
+    d = draw.draw_polar_forces(cycle)
+    assert d.ax.name == "polar"
+    assert set(d.curves) == {"F12", "F23", "F34", "F14"}
+    for name, curve in d.curves.items():
+        size, angle = cycle.polar(name)
+        assert len(curve.get_xdata()) == cycle.n
+        np.testing.assert_array_equal(curve.get_xdata(), angle)
+        np.testing.assert_array_equal(curve.get_ydata(), size)
+        assert curve.get_label().startswith(draw.cycle.sub(name))
+    assert d.ax.get_ylim()[1] >= max(cycle.peaks().forces.values(), key=lambda p: p.value).value
+    one = draw.draw_polar_forces(cycle, ["F32"])
+    np.testing.assert_array_equal(one.curves["F32"].get_ydata(), cycle.polar("F32")[0])
+
+
+def test_polar_needs_polar_axes(cycle):
+    ax = Figure().add_subplot()
+    with pytest.raises(GraphkinError, match="polar"):
+        draw.draw_polar_forces(cycle, ax=ax)
+
+
+def test_shaking(cycle):
+    fig = draw.draw_shaking(cycle)
+    assert isinstance(fig, Figure) and len(fig.axes) == 2 and fig.axes[0].name == "polar"
+    S = cycle.shaking_force()
+    d = draw.draw_shaking(cycle, ax=Figure().add_subplot(projection="polar"))
+    np.testing.assert_allclose(d.curves["shaking force"].get_ydata(), np.hypot(*S.T))
+    d = draw.draw_shaking(cycle, ax=Figure().add_subplot())
+    np.testing.assert_array_equal(d.curves["shaking moment"].get_ydata(), cycle.shaking_moment())
+    assert "N·m" in d.ax.get_ylabel()
+
+
+def test_energy(flywheel):
+    d = draw.draw_energy(flywheel)
+    np.testing.assert_array_equal(d.curves["energy"].get_ydata(), flywheel.U)
+    Uc = crossing_energy(flywheel)
+    assert Uc.max() - Uc.min() == pytest.approx(flywheel.E, rel=1e-12)
+    lo, hi = sorted(d.curves["E"].get_ydata())
+    assert hi - lo == pytest.approx(flywheel.E, rel=1e-12)
+    # the energy at the crossings lies on the curve (the curve is sampled, so to the step's accuracy)
+    on_curve = np.interp(flywheel.crossings, flywheel.theta, flywheel.U, period=2 * math.pi)
+    np.testing.assert_allclose(Uc, on_curve, atol=0.02 * flywheel.E)
+    assert "E = " in d.labels["E"].get_text() and "J" in d.labels["E"].get_text()
+
+
+def test_joint_force_index(cutter):
+    jfi = joint_force_index(cutter, 72)
+    d = draw.draw_joint_force_index(jfi)
+    assert len(d.curves["index"].get_ydata()) == 72
+    np.testing.assert_array_equal(d.curves["limit"].get_ydata(), [2.0, 2.0])
+    assert d.curves["peak"].get_ydata()[0] == jfi.peak.value
+    assert "immovable" not in d.curves  # the strip cutter has no toggle
+    assert d.ax.get_ylim()[1] > 2.0
+
+
+def test_joint_force_index_marks_immovable(cutter):
+    jfi = joint_force_index(cutter, 8)
+    fake = type(jfi)(**{**jfi.__dict__, "immovable": ((1.0, "dead point"),)})
+    d = draw.draw_joint_force_index(fake)
+    np.testing.assert_allclose(d.curves["immovable"].get_xdata(), [math.degrees(1.0)])
+
+
+def test_draw_cycle(cycle, tmp_path):
+    fig = draw.draw_cycle(cycle)
+    assert len(fig.axes) == 2
+    fig = draw.draw_cycle(cycle, Cs=0.05)
+    assert [ax.name for ax in fig.axes] == ["rectilinear", "polar", "rectilinear"]
+    assert draw.save(fig, tmp_path / "cycle.png").stat().st_size > 10_000
+
+
+def test_slider_driver_in_mm():
+    c = sweep(catalog.load("double_slider"))
+    d = draw.draw_torque_curve(c)
+    assert "mm" in d.ax.get_xlabel() and "F₁₂" in d.ax.get_ylabel()
+    np.testing.assert_allclose(d.curves["torque"].get_xdata(), c.q * 1e3)
