@@ -1,0 +1,56 @@
+"""Speed of the notebook explorer (graphkin.widgets): one update = construction + redraw + PNG.
+
+Prints, for each catalog problem, the median and 90th percentile of 30 slider
+updates over the input range, and MET/NOT MET against the 100 ms aim
+(the aim is set for the strip cutter). Also compares the two ways of showing
+the PNG: assigning it to an ipywidgets.Image (binary buffer) or displaying it
+in an ipywidgets.Output (base64 text in a display message).
+
+    .venv/bin/python benchmarks/bench_explorer.py
+"""
+
+from __future__ import annotations
+
+import base64
+import time
+
+import numpy as np
+
+from graphkin import catalog
+from graphkin.widgets import explore
+
+AIM_MS = 100.0
+UPDATES = 30
+
+
+def bench(name: str):
+    ex = explore(catalog.load(name))
+    lo, hi = ex.limits
+    values = np.linspace(lo, hi, UPDATES + 1)[:-1] + 0.37 * (hi - lo) / UPDATES
+    ex.update()  # warm caches (fonts, text metrics)
+    ex.timings.clear()
+    for v in values:
+        ex.slider.value = float(v)
+    ms = np.array(ex.timings) * 1e3
+    png = ex.png()
+    t = time.perf_counter()
+    for _ in range(10):
+        ex.image.value = png
+    t_image = (time.perf_counter() - t) / 10 * 1e3
+    t = time.perf_counter()
+    for _ in range(10):
+        base64.b64encode(png)
+    t_output = (time.perf_counter() - t) / 10 * 1e3
+    return float(np.median(ms)), float(np.percentile(ms, 90)), len(png), t_image, t_output
+
+
+def main():
+    print(f"{'problem':24s} {'median ms':>10s} {'p90 ms':>8s} {'PNG kB':>7s} {'Image ms':>9s} {'b64 ms':>7s}  aim {AIM_MS:.0f} ms")
+    for name in catalog.names():
+        med, p90, size, t_image, t_output = bench(name)
+        verdict = "MET" if med <= AIM_MS else "NOT MET"
+        print(f"{name:24s} {med:10.1f} {p90:8.1f} {size / 1024:7.1f} {t_image:9.2f} {t_output:7.2f}  {verdict}")
+
+
+if __name__ == "__main__":
+    main()

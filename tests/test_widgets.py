@@ -1,0 +1,136 @@
+"""The notebook explorer (graphkin.widgets): building, slider and speed callbacks, dead positions, lazy imports."""
+
+from __future__ import annotations
+
+import math
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+pytest.importorskip("ipywidgets")
+pytest.importorskip("matplotlib")
+
+from graphkin import catalog  # noqa: E402
+from graphkin.widgets import Explorer, explore  # noqa: E402
+
+SMALL = 36  # positions of the torque curve: keeps the tests fast
+
+
+@pytest.fixture(scope="module")
+def explorers():
+    return {name: explore(catalog.load(name), n=SMALL) for name in catalog.names()}
+
+
+@pytest.mark.parametrize("name", catalog.names())
+def test_builds_for_every_catalog_problem(explorers, name):
+    ex = explorers[name]
+    assert isinstance(ex, Explorer)
+    assert ex.construction is not None and ex.construction.valid
+    assert ex.image.value[:8] == b"\x89PNG\r\n\x1a\n"
+    assert ex.widget.children and ex.figure.axes
+    assert len(ex.cycle.torque) == SMALL
+    crank = ex.problem.mechanism.driver.kind == "crank"
+    assert ("deg" in ex.slider.description) == crank
+    assert ("rpm" in ex.speed.description) == crank
+
+
+@pytest.mark.parametrize("name,value", [("strip_cutter", 140.0), ("slider_crank_friction", 75.0), ("double_slider", -120.0),
+                                        ("gearset", 33.0), ("single_link", 210.0)])
+def test_slider_redraws_and_matches_solve(explorers, name, value):
+    ex = explorers[name]
+    before = len(ex.timings)
+    ex.slider.value = value
+    assert len(ex.timings) == before + 1  # the observer ran update()
+    p = ex.problem
+    q = math.radians(value) if p.mechanism.driver.kind == "crank" else value * 1e-3
+    ref = p.solve(at=[q])
+    c = ex.construction
+    assert c.valid
+    assert c.q == pytest.approx(q)
+    assert ex.analytical.effort[0] == pytest.approx(ref.effort[0])
+    assert c.effort == pytest.approx(ref.effort[0], rel=1e-6, abs=1e-9)
+    for (i, j) in c.forces:
+        np.testing.assert_allclose(c.force(i, j), ref.force(i, j)[0], rtol=1e-6, atol=1e-6)
+    x, y = ex.marker.get_data()
+    assert x[0] == pytest.approx(value) and y[0] == pytest.approx(ref.effort[0])
+
+
+def test_update_returns_the_construction(explorers):
+    ex = explorers["strip_cutter"]
+    ex.slider.value = 130.0
+    c = ex.update()
+    assert c is ex.construction and c.valid
+
+
+def test_speed_change_recomputes_the_torque_curve():
+    ex = explore(catalog.load("strip_cutter"), n=SMALL)
+    ex.slider.value = 100.0
+    old = ex.cycle.torque.copy()
+    ex.speed.value = 450.0  # rpm
+    assert ex.problem.q_dot[0] == pytest.approx(450 * math.pi / 30)
+    assert not np.allclose(ex.cycle.torque, old)
+    ref = ex.problem.solve(at=[math.radians(100.0)])
+    assert ex.cycle.q_dot[0] == pytest.approx(450 * math.pi / 30)
+    x, y = ex.marker.get_data()
+    assert y[0] == pytest.approx(ref.effort[0])
+    assert y[0] == pytest.approx(ex.analytical.effort[0])
+    assert ex.curve.get_ydata() == pytest.approx(np.where(ex.cycle.valid, ex.cycle.torque, np.nan), nan_ok=True)
+
+
+def test_slider_driver_speed_in_m_per_s():
+    ex = explore(catalog.load("double_slider"), n=SMALL)
+    ex.speed.value = 4.0
+    assert ex.problem.q_dot[0] == pytest.approx(4.0)
+    ex.slider.value = 200.0
+    assert ex.analytical.effort[0] == pytest.approx(ex.problem.solve(at=[0.2]).effort[0])
+
+
+def test_dead_position_shows_a_message():
+    ex = explore(catalog.load("double_slider"), n=SMALL)
+    assert ex.slider.min <= 500.0 <= ex.slider.max
+    ex.slider.value = 500.0
+    assert ex.construction is not None and not ex.construction.valid
+    assert "dead point" in ex.message
+    assert "No solution" in ex.status.value
+    assert ex.image.value[:4] == b"\x89PNG"
+    assert np.isnan(ex.marker.get_ydata()[0])
+    ex.slider.value = 200.0  # and it recovers
+    assert ex.construction.valid and not ex.message
+
+
+def test_import_graphkin_does_not_load_widgets_or_matplotlib():
+    code = ("import sys, graphkin, graphkin.problem, graphkin.catalog; "
+            "bad = [m for m in ('ipywidgets', 'matplotlib', 'graphkin.widgets') if m in sys.modules]; "
+            "import graphkin.widgets; "  # the module itself imports them only when an explorer is built
+            "bad += [m for m in ('ipywidgets', 'matplotlib') if m in sys.modules]; "
+            "print(bad); sys.exit(1 if bad else 0)")
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+    assert r.returncode == 0, r.stdout + r.stderr
+
+
+def test_bad_n():
+    from graphkin.errors import GraphkinError
+
+    with pytest.raises(GraphkinError):
+        explore(catalog.load("strip_cutter"), n=1)
+
+
+def test_figure_grows_when_a_position_needs_more_polygons():
+    ex = explore(catalog.load("strip_cutter"), n=SMALL)
+    ex._layout(1)
+    ex._draw_curve()
+    ex.slider.value = 140.0  # the cutting force is on: six polygons
+    polys = [s for s in ex.construction.steps if s.polygon]
+    assert len(ex.ax_polygons) >= len(polys) > 1
+    assert sum(1 for ax in ex.ax_polygons if ax.texts) == len(polys)
+    assert ex.marker.get_ydata()[0] == pytest.approx(ex.analytical.effort[0])
+
+
+def test_display_parts():
+    import ipywidgets
+
+    ex = explore(catalog.load("single_link"), n=SMALL)
+    assert isinstance(ex.widget, ipywidgets.VBox)
+    assert ex.image in ex.widget.children and callable(ex._ipython_display_)
