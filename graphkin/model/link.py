@@ -13,13 +13,18 @@ FRAME = 1
 """Link number of the frame (ground), as in the textbooks."""
 
 
-def _finite(value, what: str) -> float:
+def _finite(value, what: str, unit: str = "") -> float:
+    """``value`` as a finite float, or a one-line ModelError naming ``what`` (and its unit)."""
+    unit = f" [{unit}]" if unit else ""
+    # bool is an int subclass; a student who passes True meant something else.
+    if isinstance(value, bool):
+        raise ModelError(f"{what} must be a number{unit}, got {value!r}")
     try:
         x = float(value)
     except (TypeError, ValueError):
-        raise ModelError(f"{what} must be a number, got {value!r}") from None
+        raise ModelError(f"{what} must be a number{unit}, got {value!r}") from None
     if not math.isfinite(x):
-        raise ModelError(f"{what} must be finite, got {value!r}")
+        raise ModelError(f"{what} must be finite{unit}, got {value!r}")
     return x
 
 

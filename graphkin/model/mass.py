@@ -25,6 +25,7 @@ from shapely.geometry.polygon import orient
 from shapely.validation import explain_validity
 
 from graphkin.errors import ModelError
+from graphkin.model.link import _finite
 
 __all__ = [
     "MassProperties",
@@ -45,16 +46,7 @@ _EPS = float(np.finfo(float).eps)
 
 
 def _number(name: str, value, unit: str) -> float:
-    # bool is an int subclass; a student who passes True meant something else.
-    if isinstance(value, bool):
-        raise ModelError(f"{name} must be a number [{unit}], got {value!r}")
-    try:
-        x = float(value)
-    except (TypeError, ValueError):
-        raise ModelError(f"{name} must be a number [{unit}], got {value!r}") from None
-    if not math.isfinite(x):
-        raise ModelError(f"{name} must be finite [{unit}], got {x!r}")
-    return x
+    return _finite(value, name, unit)
 
 
 def _positive(name: str, value, unit: str) -> float:
