@@ -38,10 +38,10 @@ import numpy as np
 from .errors import GraphkinError
 
 NCOLS = 4
+"""Panels per row of the explorer's figure."""
 
 RC = {"text.hinting": "no_hinting"}
 """matplotlib settings while the explorer draws and renders."""
-"""Panels per row of the explorer's figure."""
 
 CELL = (3.0, 2.7)
 """Size of one panel [in]."""
@@ -107,6 +107,36 @@ def _assembling_span(problem, q0: float, n: int) -> tuple[float, float]:
     return float(q[ok[0]] - step), float(q[ok[-1]] + step)
 
 
+def _cell(v) -> str:
+    """A force as the books print it, for the table: ``1972 N ∠ −73.78°``."""
+    from .report import polar
+
+    size, angle = polar(v)
+    return f"{size:.4g} N ∠ {angle:.2f}°".replace("-", "−") if size else "0 N"
+
+
+def _table(construction, analytical) -> str:
+    """The joint forces and the driving effort at one position, both routes, as an HTML table.
+
+    The explorer's force polygons carry names only: the numbers are here, where
+    they can be read and copied (and a new value costs the figure no text to lay out).
+    """
+    c, a = construction, analytical
+    names = [n for n in (a.names() if a is not None else []) if n != c.driver_name]
+    head = "".join(f"<th style='padding:0 8px'>{n[0]}<sub>{n[1:]}</sub></th>" for n in [*names, c.driver_name])
+    unit = "N·m" if c.driver_name.startswith("T") else "N"
+    rows = []
+    for label, source in (("analytical", a), ("graphical", c)):
+        if source is None:
+            continue
+        cells = [_cell(np.asarray(source[n], float).reshape(-1, 2)[0]) for n in names]
+        effort = float(np.ravel(source.effort)[0])
+        cells.append(f"{effort:.5g} {unit}".replace("-", "−"))
+        rows.append(f"<tr><td style='padding:0 8px'><i>{label}</i></td>"
+                    + "".join(f"<td style='padding:0 8px'>{x}</td>" for x in cells) + "</tr>")
+    return (f"<table style='font-size:90%'><tr><th></th>{head}</tr>{''.join(rows)}</table>")
+
+
 class Explorer:
     """The widgets and figure of :func:`explore`.
 
@@ -123,6 +153,9 @@ class Explorer:
         The rendered figure (PNG).
     status : ipywidgets.HTML
         The driving effort at the position, or why there is no solution there.
+    table : ipywidgets.HTML
+        Every joint force and the driving effort at the position, analytical and
+        graphical (the force polygons in the figure carry the names only).
     widget : ipywidgets.VBox
         Everything, for display.
     construction : Construction
@@ -139,8 +172,9 @@ class Explorer:
 
     def __init__(self, problem, *, n: int = 360, limits=None, dpi: int = 72, halo: bool = False):
         import ipywidgets as W
-        from matplotlib.backends.backend_agg import FigureCanvasAgg
         from matplotlib.figure import Figure
+
+        from .draw._stamps import StampCanvas
 
         if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 2:
             raise GraphkinError(f"n must be a whole number of positions ≥ 2, got {n!r}")
@@ -178,10 +212,11 @@ class Explorer:
         self.speed.style.description_width = "initial"
 
         self.figure = Figure(dpi=dpi)
-        FigureCanvasAgg(self.figure)
+        StampCanvas(self.figure)  # each distinct label is rendered once, then pasted
         self.image = W.Image(format="png")
         self.status = W.HTML()
-        self.widget = W.VBox([W.HBox([self.slider, self.speed]), self.status, self.image])
+        self.table = W.HTML()
+        self.widget = W.VBox([W.HBox([self.slider, self.speed]), self.status, self.table, self.image])
         self._polygon_slots = 0
         self._layout(self._polygons_needed())
         self._sweep()
@@ -360,7 +395,7 @@ class Explorer:
             for link, ax in self.ax_fbd.items():
                 draw.draw_free_body(c, link, ax=ax)
             for step, ax in zip(polys, self.ax_polygons):
-                draw.draw_force_polygon(step, scale=c.force_scale, ax=ax, driver_name=c.driver_name)
+                draw.draw_force_polygon(step, scale=c.force_scale, ax=ax, driver_name=c.driver_name, values=False)
             effort = float(a.effort[0]) if a is not None else float(c.effort)
             x = math.degrees(q) if self.crank else q * 1e3
             self.marker.set_data([x], [effort])
@@ -369,6 +404,7 @@ class Explorer:
             warn = "".join(f"<br>warning: {w}" for w in c.warnings)
             self.status.value = (f"{here}: {name} = {effort:.5g} {unit} (analytical), "
                                  f"{float(c.effort):.5g} {unit} (graphical){warn}")
+        self.table.value = _table(c, a) if not self.message else ""
         for ax in self._panels:
             ax._autotitlepos = False
             if not self.halo:
@@ -405,9 +441,13 @@ class Explorer:
             ax.set_visible(True)
         canvas.restore_region(self._background)
         ax.draw_artist(self.marker)
-        rgb = np.asarray(canvas.buffer_rgba())[..., :3]
+        w, h = canvas.get_width_height(physical=True)
+        # Line art on white has few colours: a 256-colour palette (octree, no dithering visible at
+        # this size) makes a PNG a third the size, and quantising + encoding costs half of what
+        # encoding the full-colour pixels did.
+        image = Image.frombuffer("RGBA", (w, h), canvas.buffer_rgba(), "raw", "RGBA", 0, 1)
         buf = io.BytesIO()
-        Image.fromarray(rgb).save(buf, format="png", compress_level=1)
+        image.quantize(256, method=Image.Quantize.FASTOCTREE).save(buf, format="png", compress_level=1)
         return buf.getvalue()
 
     def _ipython_display_(self):

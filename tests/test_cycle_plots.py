@@ -120,3 +120,33 @@ def test_slider_driver_in_mm():
     d = draw.draw_torque_curve(c)
     assert "mm" in d.ax.get_xlabel() and "F₁₂" in d.ax.get_ylabel()
     np.testing.assert_allclose(d.curves["torque"].get_xdata(), c.q * 1e3)
+
+
+def _shows(ax, y):
+    """The y range of the axes holds every finite value of y (as drawn, after the figure is rendered)."""
+    ax.figure.canvas.draw() if hasattr(ax.figure.canvas, "draw") else None
+    lo, hi = ax.get_ylim()
+    y = np.asarray(y, float)
+    y = y[np.isfinite(y)]
+    return lo <= y.min() and y.max() <= hi
+
+
+def test_every_cycle_plot_shows_its_whole_curve(cycle, flywheel, cutter):
+    """A regression: curves drawn by draw._common.line left the view at 0–1 where no limits were set."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    d = draw.draw_torque_curve(cycle, flywheel=flywheel)
+    FigureCanvasAgg(d.figure)
+    assert _shows(d.ax, cycle.torque) and _shows(d.ax, flywheel.smoothed_torque())
+    ax = Figure().add_subplot()
+    FigureCanvasAgg(ax.figure)
+    d = draw.draw_shaking(cycle, ax=ax)
+    assert _shows(d.ax, cycle.shaking_moment())
+    ax = Figure().add_subplot()
+    FigureCanvasAgg(ax.figure)
+    d = draw.draw_energy(flywheel, ax=ax)
+    assert _shows(d.ax, flywheel.U)
+    fig = draw.draw_cycle(cycle, Cs=0.05)
+    FigureCanvasAgg(fig)
+    torque_axes = [a for a in fig.axes if "T₁₂" in a.get_ylabel()]
+    assert torque_axes and _shows(torque_axes[0], cycle.torque)

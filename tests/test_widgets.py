@@ -134,3 +134,67 @@ def test_display_parts():
     ex = explore(catalog.load("single_link"), n=SMALL)
     assert isinstance(ex.widget, ipywidgets.VBox)
     assert ex.image in ex.widget.children and callable(ex._ipython_display_)
+
+
+def test_table_shows_both_routes_at_the_slider_position(explorers):
+    """The numbers left out of the explorer's polygons are in its table: every joint force, both routes."""
+    import re
+
+    ex = explorers["strip_cutter"]
+    ex.slider.value = 140.0
+    ref = ex.problem.solve(at=[math.radians(140.0)])
+    html = ex.table.value
+    rows = re.findall(r"<tr><td[^>]*><i>(\w+)</i></td>(.*?)</tr>", html)
+    assert [r[0] for r in rows] == ["analytical", "graphical"]
+    heads = re.findall(r"<th[^>]*>(\w)<sub>(\d+)</sub></th>", html)
+    names = [a + b for a, b in heads]
+    assert set(names) == {"F12", "F23", "F34", "F14", "T12"}
+    for _, cells in rows:
+        values = re.findall(r"<td[^>]*>([^<]*)</td>", cells)
+        for name, text in zip(names, values):
+            number = float(text.split()[0].replace("−", "-"))
+            expected = ref.effort[0] if name == "T12" else float(np.hypot(*ref[name][0]))
+            assert number == pytest.approx(expected, rel=1e-3)
+
+
+def test_no_table_where_there_is_no_solution():
+    ex = explore(catalog.load("double_slider"), n=SMALL)
+    ex.slider.value = ex.slider.max
+    assert ex.message and ex.table.value == ""
+
+
+def test_stamped_text_looks_like_drawn_text():
+    """StampCanvas pastes a label's pixels from its second drawing on: the same picture, whole-pixel placed."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
+    from graphkin.draw._stamps import StampCanvas
+
+    def picture(canvas_class, draws):
+        fig = Figure(figsize=(3, 2), dpi=72)
+        canvas_class(fig)
+        ax = fig.add_axes([0, 0, 1, 1])
+        ax.set_axis_off()
+        ax.text(0.1, 0.5, "F₂₃ = 1972 N", fontsize=9, color="#D55E00")
+        ax.text(0.6, 0.2, "A₀ (G₂)", fontsize=8, rotation=30, ha="center", va="center")
+        ax.text(0.5, 0.8, "h = 33 mm", ha="right", va="top")
+        for _ in range(draws):
+            fig.canvas.draw()
+        return np.asarray(fig.canvas.buffer_rgba())[..., :3].astype(int), fig.canvas
+
+    plain, _ = picture(FigureCanvasAgg, 1)
+    stamped, canvas = picture(StampCanvas, 3)
+    assert sum(1 for v in canvas._stamp_cache.values() if isinstance(v, tuple)) == 3  # pasted, not drawn
+    ink = plain.sum(-1) < 3 * 255
+    assert ink.sum() > 200
+    # Same ink within one pixel: every inked pixel of one picture has ink next to it in the other.
+    def near(a, b):
+        grown = np.zeros_like(b)
+        for dy in (-1, 0, 1):
+            for dx in (-1, 0, 1):
+                grown |= np.roll(np.roll(b, dy, 0), dx, 1)
+        return a & ~grown
+    stamped_ink = stamped.sum(-1) < 3 * 255
+    assert not near(ink, stamped_ink).any() and not near(stamped_ink, ink).any()
+    # and the colours are the same: the darkest pixels of the orange label match.
+    assert np.abs(plain.min(axis=(0, 1)) - stamped.min(axis=(0, 1))).max() <= 8

@@ -13,6 +13,7 @@ from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.patches import ArrowStyle, FancyArrowPatch
 from matplotlib.path import Path
+from matplotlib.transforms import ScaledTranslation
 
 MM = 1e3
 """Metres to millimetres: every mechanism drawing is in mm."""
@@ -148,6 +149,9 @@ def line(ax, x, y, **props):
     ax.add_artist(artist)
     if x.size:
         ax.update_datalim(np.column_stack([x, y]))
+        # As ax.plot does: the view follows the data at the next draw (unless the limits were set).
+        request = getattr(ax, "_request_autoscale_view", None)
+        request() if request is not None else ax.autoscale_view()
     return artist
 
 
@@ -293,6 +297,23 @@ def perp(v):
 # -- labels that keep clear of arrows and of each other ------------------------------
 
 
+def _offset(ax, shift_pt):
+    """Data coordinates, then a shift of ``shift_pt`` (x, y) typographic points."""
+    return ax.transData + ScaledTranslation(float(shift_pt[0]) / 72.0, float(shift_pt[1]) / 72.0,
+                                            ax.figure.dpi_scale_trans)
+
+
+def offset_text(ax, text, anchor, shift_pt, **props):
+    """A text ``shift_pt`` points from ``anchor`` (data coordinates), drawn even outside the axes.
+
+    What ``ax.annotate(text, anchor, xytext=shift_pt, textcoords="offset points")``
+    shows, as a plain Text: an Annotation recomputes its offset transform on
+    every draw, a cost the explorer pays for each of its labels.
+    """
+    t = ax.text(float(anchor[0]), float(anchor[1]), text, transform=_offset(ax, shift_pt), clip_on=False, **props)
+    return t
+
+
 def halo(width: float = 2.6):
     """A white outline behind text, so a label stays legible where a line runs under it."""
     from matplotlib.patheffects import withStroke
@@ -347,6 +368,26 @@ def renderer_of(fig):
 
         r = _MEASURING[root.dpi] = RendererAgg(1, 1, root.dpi)
     return r
+
+
+_SIZES: dict = {}
+
+
+def text_size(t, renderer) -> tuple[float, float]:
+    """Width and height [px] of a text's box, measured once per string, font, angle and resolution.
+
+    A label's size does not depend on where it is placed, and the same names
+    (``A``, ``F₂₃``, ``0``) come back on every drawing; measuring through
+    ``get_window_extent`` each time was the larger part of placing them.
+    """
+    key = (t.get_text(), hash(t.get_fontproperties()), t.get_rotation(), t.get_linespacing(), renderer.dpi)
+    size = _SIZES.get(key)
+    if size is None:
+        if len(_SIZES) > 8192:
+            _SIZES.clear()
+        bb = t.get_window_extent(renderer)
+        size = _SIZES[key] = (bb.width, bb.height)
+    return size
 
 
 def _hits_many(P, Q, W, boxes):
@@ -413,9 +454,8 @@ class Labeler:
         anchor, d, pad = candidates[0]
         d = unit(d)
         ha, va = _align(d)
-        t = self.ax.annotate(text, tuple(map(float, anchor)), xytext=tuple(float(x) for x in d * pad),
-                             textcoords="offset points", ha=ha, va=va, color=color or self.s.ink,
-                             fontsize=size or self.s.label_size, zorder=zorder, annotation_clip=False, **kw)
+        t = offset_text(self.ax, text, anchor, d * pad, ha=ha, va=va, color=color or self.s.ink,
+                        fontsize=size or self.s.label_size, zorder=zorder, **kw)
         t.set_path_effects([halo()])
         self.items.append((t, candidates))
         return t
@@ -457,8 +497,7 @@ class Labeler:
         grow = 1.5
         for t, candidates in self.items:
             # A label's size does not depend on where it goes: measure it once, then try every spot by arithmetic.
-            bb = t.get_window_extent(renderer)
-            w, h = bb.width, bb.height
+            w, h = text_size(t, renderer)
             n = len(candidates)
             A = to(np.array([a for a, _, _ in candidates], float).reshape(n, 2))
             D = np.array([d for _, d, _ in candidates], float).reshape(n, 2)
@@ -487,8 +526,8 @@ class Labeler:
             k = int(np.argmin(score[:last] + 0.3 * np.arange(last)))
             anchor, d = candidates[k][0], D[k]
             ha, va = _align(d)
-            t.xy = tuple(map(float, anchor))
-            t.set_position(tuple(float(x) for x in d * pads[k]))
+            t.set_position(tuple(map(float, anchor)))
+            t.set_transform(_offset(ax, d * pads[k]))
             t.set_ha(ha)
             t.set_va(va)
             placed.append(tuple(boxes[k]))
@@ -590,10 +629,9 @@ def scale_bar(ax, at, length: float, value: float, *, s, unit_text="N", tick=Non
     bar = line(ax, [x, x + length], [y, y], color=s.ink, lw=1.4, solid_capstyle="butt", zorder=5)
     ticks = line(ax, [x, x, np.nan, x + length, x + length], [y - tick, y + tick, np.nan, y - tick, y + tick],
                  color=s.ink, lw=1.0, zorder=5)
-    t0 = ax.annotate("0", (x, y), xytext=(-3, 0), textcoords="offset points", ha="right", va="center",
-                     fontsize=s.small_size, color=s.ink, annotation_clip=False)
-    t1 = ax.annotate(f"{num(value)} {unit_text}", (x + length, y), xytext=(3, 0), textcoords="offset points",
-                     ha="left", va="center", fontsize=s.small_size, color=s.ink, annotation_clip=False)
+    t0 = offset_text(ax, "0", (x, y), (-3, 0), ha="right", va="center", fontsize=s.small_size, color=s.ink)
+    t1 = offset_text(ax, f"{num(value)} {unit_text}", (x + length, y), (3, 0), ha="left", va="center",
+                     fontsize=s.small_size, color=s.ink)
     return [bar, ticks, t0, t1]
 
 
