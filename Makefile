@@ -17,7 +17,7 @@ demo: $(VENV)/.installed
 	$(BIN)/graphkin solve double_slider --figure build/double_slider.png
 
 test: $(VENV)/.installed
-	$(BIN)/python -m pytest -q --nbmake --nbmake-timeout=300 tests lessons
+	$(BIN)/python -m pytest -q --nbmake --nbmake-timeout=300 --doctest-modules graphkin tests lessons
 
 figures: $(VENV)/.installed
 	$(BIN)/python figures/build.py

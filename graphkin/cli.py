@@ -31,7 +31,8 @@ def _parser() -> argparse.ArgumentParser:
     c = sub.add_parser("cycle", help="a whole cycle: torque, peak joint forces, flywheel, joint-force index")
     c.add_argument("problem", help="catalog name (see 'graphkin list') or path to a problem file")
     c.add_argument("--n", type=int, help="number of equally spaced crank angles over one turn (crank drivers only; "
-                   "default: the problem's own positions)")
+                   "default: the problem's own positions); a load that switches on and off adds a sample either side "
+                   "of each switching angle")
     c.add_argument("--cs", type=float, metavar="CS", help="coefficient of speed fluctuation: size a flywheel, e.g. 0.05")
     c.add_argument("--json", action="store_true", help="print every array as JSON in SI units (schema: docs/json.md)")
     c.add_argument("--figure", metavar="FILE", help="write the cycle figure (.png, .svg or .pdf)")
@@ -180,8 +181,6 @@ def cycle_data(cycle, Cs=None) -> dict:
     GraphkinError
         If a flywheel is asked for where none can be sized (a slider, not one full turn, a failed position).
     """
-    from .analysis import joint_force_index
-
     problem, r = cycle.problem, cycle.analysis
     mech = problem.mechanism
     crank = mech.driver.kind == "crank"
@@ -212,12 +211,10 @@ def cycle_data(cycle, Cs=None) -> dict:
                      "radius": disk.radius, "mass": disk.mass, "I": disk.I},
         }
     try:
-        jfi = joint_force_index(problem, cycle.n if cycle.closed and _even(cycle) else None)
+        jfi = cycle.joint_force_index()
     except GraphkinError as exc:
         index = {"defined": False, "reason": str(exc)}
     else:
-        if len(jfi.q) != cycle.n or not np.allclose(jfi.q, cycle.q):
-            jfi = joint_force_index(problem)
         index = {
             "defined": True, "reason": "", "units": jfi.units, "limit": jfi.limit, "values": _floats(jfi.index),
             "load": _floats(jfi.load), "joint": [str(x) for x in jfi.joint], "peak": _peak(jfi.peak),
@@ -246,11 +243,6 @@ def cycle_data(cycle, Cs=None) -> dict:
         "flywheel": flywheel,
         "joint_force_index": index,
     }
-
-
-def _even(cycle) -> bool:
-    """True if the cycle's positions are n equally spaced angles from 0 (what joint_force_index(problem, n) solves at)."""
-    return bool(np.allclose(cycle.q, np.linspace(0.0, 2 * math.pi, cycle.n, endpoint=False), rtol=0, atol=1e-12))
 
 
 def _peak_of(values, q, lowest=False):

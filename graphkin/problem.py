@@ -72,6 +72,51 @@ class Problem:
         """``"theta"`` for a crank, ``"s"`` for a slider."""
         return "theta" if self.mechanism.driver.kind == "crank" else "s"
 
+    def at_speed(self, q_dot: float, q_ddot: float | None = None) -> "Problem":
+        """The same problem driven at a constant input rate.
+
+        Parameters
+        ----------
+        q_dot : float
+            ω [rad/s] of a crank or v [m/s] of a slider, at every position.
+        q_ddot : float, optional
+            α [rad/s²] or a [m/s²]; by default the problem's own (first) value.
+
+        Examples
+        --------
+        >>> from graphkin import catalog
+        >>> fast = catalog.load("slider_crank_friction").at_speed(200.0)
+        >>> float(fast.q_dot[0])
+        200.0
+        """
+        from dataclasses import replace
+
+        rate = {"q_dot": q_dot, "q_ddot": self.q_ddot[0] if q_ddot is None else q_ddot}
+        for key, value in rate.items():
+            if isinstance(value, bool) or not isinstance(value, (int, float, np.number)) or not np.isfinite(value):
+                raise GraphkinError(f"{self.name}: {key} must be a finite number (SI), got {value!r}")
+        m = len(self.q)
+        return replace(self, q_dot=np.full(m, float(rate["q_dot"])), q_ddot=np.full(m, float(rate["q_ddot"])))
+
+    def with_friction(self, mu: float) -> "Problem":
+        """The same problem with Coulomb coefficient μ (≥ 0) at every sliding pair; 0 removes friction.
+
+        Examples
+        --------
+        >>> from graphkin import catalog
+        >>> p = catalog.load("slider_crank_friction")
+        >>> round(float(p.with_friction(0.0).solve(at=[0.5]).effort[0]), 4) != round(float(p.solve(at=[0.5]).effort[0]), 4)
+        True
+        """
+        from dataclasses import replace
+
+        from .model import Prismatic
+
+        joints = tuple(replace(j, mu=mu) if isinstance(j, Prismatic) else j for j in self.mechanism.joints)
+        if not any(isinstance(j, Prismatic) for j in joints):
+            raise GraphkinError(f"{self.name}: it has no sliding pair to put friction on")
+        return replace(self, mechanism=replace(self.mechanism, joints=joints))
+
     def kinematics(self, at=None):
         """Kinematics at the file's positions, or at ``at`` (SI values of the input)."""
         from dataclasses import replace

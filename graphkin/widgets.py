@@ -183,7 +183,7 @@ class Explorer:
         self.crank = problem.mechanism.driver.kind == "crank"
         self._original = problem
         q_dot0 = float(problem.q_dot[0])
-        self.problem = self._at_speed(q_dot0)
+        self.problem = self._original.at_speed(q_dot0)
         self.timings: list[float] = []
         self.construction = None
         self.analytical = None
@@ -225,11 +225,6 @@ class Explorer:
         self.update()
 
     # -- the problem at the chosen speed ---------------------------------------
-    def _at_speed(self, q_dot: float):
-        p = self._original
-        m = len(p.q)
-        return replace(p, q_dot=np.full(m, float(q_dot)), q_ddot=np.full(m, float(p.q_ddot[0])))
-
     def _si(self, value: float) -> float:
         """The slider's value in SI (rad or m)."""
         return math.radians(value) if self.crank else value * 1e-3
@@ -300,7 +295,7 @@ class Explorer:
         """Solve the whole cycle at the current speed and draw the torque curve (once per speed)."""
         from .analysis.cycle import Cycle, sweep
 
-        self.problem = self._at_speed(self._q_dot())
+        self.problem = self._original.at_speed(self._q_dot())
         if self.crank:
             self.cycle = sweep(self.problem, self.n)
         else:

@@ -69,13 +69,14 @@ def test_json_arrays_have_n_entries(capsys, cycle):
     code, out, _ = run(capsys, "strip_cutter", "--n", "90", "--cs", "0.05", "--json")
     assert code == 0
     data = json.loads(out)
-    assert data["n"] == 90 and data["closed"] and data["driver"]["name"] == "T12"
+    # 90 equally spaced angles and a sample either side of 124° and of 156°, where the cut starts and ends.
+    assert data["n"] == 94 and data["closed"] and data["driver"]["name"] == "T12"
     for values in (data["input"]["values"], data["valid"], data["effort"]["values"], data["power"]["values"],
                    data["shaking"]["moment"], data["shaking"]["force"]["x"], data["transmission_angle"],
                    data["flywheel"]["energy"], data["joint_force_index"]["values"]):
-        assert len(values) == 90
+        assert len(values) == 94
     for name, f in data["forces"].items():
-        assert all(len(f[k]) == 90 for k in ("x", "y", "magnitude", "angle"))
+        assert all(len(f[k]) == 94 for k in ("x", "y", "magnitude", "angle"))
         np.testing.assert_allclose(f["magnitude"], cycle.polar(name)[0], rtol=1e-12)
     np.testing.assert_allclose(data["effort"]["values"], cycle.torque, rtol=1e-12)
     assert data["flywheel"]["E"] == pytest.approx(cycle.flywheel(0.05).E, rel=1e-12)

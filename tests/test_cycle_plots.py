@@ -93,7 +93,7 @@ def test_energy(flywheel):
 def test_joint_force_index(cutter):
     jfi = joint_force_index(cutter, 72)
     d = draw.draw_joint_force_index(jfi)
-    assert len(d.curves["index"].get_ydata()) == 72
+    assert len(d.curves["index"].get_ydata()) == 72 + 4  # and a sample either side of 124° and 156°
     np.testing.assert_array_equal(d.curves["limit"].get_ydata(), [2.0, 2.0])
     assert d.curves["peak"].get_ydata()[0] == jfi.peak.value
     assert "immovable" not in d.curves  # the strip cutter has no toggle

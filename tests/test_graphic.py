@@ -139,3 +139,14 @@ def test_construction_values_answer_both_orders():
     assert v["F32"] == tuple(-x for x in v["F23"]) and "G14" in v and "G41" in v
     assert v["F12"] == pytest.approx((c.effort, 0.0)) and c["F12"] == pytest.approx([c.effort, 0.0])
     np.testing.assert_allclose(c["F23"], -c["F32"])
+
+
+def test_a_gear_loaded_by_a_couple_alone_is_no_three_force_member():
+    """Gearset (seed 001): the pinion carries only the input torque, so tooth and pivot forces are a couple."""
+    c = construct_forces(catalog.load("gearset").kinematics())
+    couple = [s for s in c.steps if s.link == 3 and "couple" in s.caption and s.kind == "two-force"]
+    assert couple and "three-force" not in {s.kind for s in c.steps if s.link == 3}
+    F_mesh, F_pivot = c.force(2, 3), c.force(1, 3)
+    np.testing.assert_allclose(F_pivot, -F_mesh, atol=1e-9 * np.hypot(*F_mesh))
+    polygon = [s for s in c.steps if s.link == 3 and s.kind == "polygon"][0]
+    assert len(polygon.polygon) == 2 and all(np.hypot(*a.vector) > 0 for a in polygon.polygon)  # no zero-length R3

@@ -25,6 +25,7 @@ from ._turn import TURN, closing_step, weights
 if TYPE_CHECKING:
     from ..problem import Problem
     from .flywheel import Flywheel
+    from .index import JointForceIndex
 
 
 def positions(problem: "Problem", n: int | None = None) -> np.ndarray | None:
@@ -55,6 +56,43 @@ def positions(problem: "Problem", n: int | None = None) -> np.ndarray | None:
     return np.linspace(0.0, TURN, int(n), endpoint=False)
 
 
+SWITCH = 1e-9
+"""Half-width of the pair of samples put either side of a switching angle [rad] (or of a slider's span)."""
+
+
+def switching_samples(problem: "Problem", q: np.ndarray) -> np.ndarray:
+    """``q`` with two more samples, just before and just after, each place a load switches on or off.
+
+    A load that acts over part of the cycle (the strip cutter's cutting force
+    for 124° < θ < 156°) makes the driving effort jump there. Sampled on a
+    plain grid, the jump falls inside a step and the trapezoidal rule errs by
+    up to half a step times the jump, an error only first order in the step.
+    With samples at b ∓ δ (δ = :data:`SWITCH`) the curve is smooth between
+    samples again and the rule is second order; a plot draws the jump as a
+    vertical line where it belongs.
+
+    Only ascending positions are refined (others are returned unchanged);
+    :func:`sweep` refines a problem's own positions only when its input
+    rates are constant and it gives no kinematic values per position.
+    """
+    q = np.asarray(q, dtype=float)
+    loads = [load for load in problem.mechanism.loads if load.active is not None]
+    if not loads or len(q) < 2 or not np.all(np.diff(q) > 0):
+        return q
+    crank = problem.mechanism.driver.kind == "crank"
+    delta = SWITCH if crank else SWITCH * (q[-1] - q[0])
+    end = q[0] + TURN if crank and closing_step(q) is not None else q[-1]
+    extra = []
+    for load in loads:
+        for b in (load.active.start, load.active.stop):
+            for c in (b - delta, b + delta):
+                if crank:
+                    c = q[0] + (c - q[0]) % TURN
+                if q[0] < c < end:
+                    extra.append(c)
+    return np.unique(np.concatenate([q, extra]))
+
+
 def sweep(problem: "Problem", n: int | None = None) -> "Cycle":
     """Solve a problem over a whole cycle in one vectorised call.
 
@@ -64,7 +102,10 @@ def sweep(problem: "Problem", n: int | None = None) -> "Cycle":
     n : int, optional
         If given (crank drivers only), solve at n equally spaced crank angles
         θ = 2πk/n [rad] at the problem's constant ω and α; otherwise at the
-        problem's own positions.
+        problem's own positions. Either way, a load that acts over part of
+        the cycle adds two samples either side of each angle where it
+        switches (:func:`switching_samples`), so the cycle has n + 4 positions
+        for one such load.
 
     Returns
     -------
@@ -74,10 +115,18 @@ def sweep(problem: "Problem", n: int | None = None) -> "Cycle":
     --------
     >>> from graphkin import catalog
     >>> c = sweep(catalog.load("strip_cutter"))
-    >>> c.n, c.closed
-    (180, True)
+    >>> c.n, c.closed   # 180 positions of the book, 2 more either side of 124° and of 156°
+    (184, True)
     """
-    return Cycle(problem, problem.solve(at=positions(problem, n)))
+    return Cycle(problem, problem.solve(at=sweep_positions(problem, n)))
+
+
+def sweep_positions(problem: "Problem", n: int | None = None) -> np.ndarray | None:
+    """The positions :func:`sweep` solves at: :func:`positions` with :func:`switching_samples` added (None: the problem's own)."""
+    q = positions(problem, n)
+    if q is None and len(set(problem.q_dot)) == 1 and len(set(problem.q_ddot)) == 1 and not problem.given:
+        q = problem.q
+    return None if q is None else switching_samples(problem, q)
 
 
 @dataclass(frozen=True)
@@ -313,6 +362,13 @@ class Cycle:
         return np.minimum(mu, np.pi - mu)
 
     # -- flywheel ------------------------------------------------------------------
+    def joint_force_index(self, limit: float = 2.0) -> "JointForceIndex":
+        """Joint-force index at this cycle's positions (:func:`graphkin.analysis.joint_force_index`)."""
+        from .index import index_at
+
+        own = len(self.q) == len(self.problem.q) and np.array_equal(self.q, self.problem.q)
+        return index_at(self.problem, None if own else self.q, limit)
+
     def flywheel(self, Cs: float) -> "Flywheel":
         """Size a flywheel for this cycle's torque (:func:`graphkin.analysis.size_flywheel`).
 

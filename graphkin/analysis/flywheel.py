@@ -320,15 +320,20 @@ class Flywheel:
         line of an induction motor that runs at ω_avg with slip s, i.e. whose
         synchronous (no-load) speed is ω_avg/(1 − s). The shaft obeys
         I_s ω dω/dθ = T_m − T(θ). Linearised about ω_avg (|ω − ω_avg| ≤ C_s ω_avg/2),
-        its periodic solution is, harmonic by harmonic (k per turn),
+        x = T_m − T_avg obeys
 
-            T_m − T_avg = (T − T_avg)_k / (1 + i k ω_avg I_s / k_m),
+            τ dx/dθ + x = T − T_avg,   τ = ω_avg I_s / k_m  [rad],
 
-        a first-order low-pass filter of the torque the linkage demands. It
-        shows what Norton's Fig. 11-12 shows: with the flywheel the motor's
-        torque stays near the average. Its swing is at most about
-        k_m (ω_max − ω_min) ≈ T_avg C_s (1 − s)/s, and the motor sees all of
-        T (no smoothing) as s → 0 (a motor that cannot slow down) or I_s → 0.
+        a first-order low-pass filter of the torque the linkage demands
+        (harmonic k per turn passes as 1/(1 + i k τ)). It shows what Norton's
+        Fig. 11-12 shows: with the flywheel the motor's torque stays near the
+        average. Its swing is at most about k_m (ω_max − ω_min) ≈ T_avg C_s (1 − s)/s,
+        and the motor sees all of T (no smoothing) as s → 0 (a motor that
+        cannot slow down) or I_s → 0.
+
+        The periodic solution is exact for T linear between samples (any
+        spacing, so the jumps a switched load makes, sampled either side by
+        :func:`graphkin.analysis.sweep`, pass through without ringing).
 
         Parameters
         ----------
@@ -339,8 +344,8 @@ class Flywheel:
         Raises
         ------
         GraphkinError
-            If the angles are not equally spaced, or T_avg ≤ 0 (the linkage
-            delivers energy on average: no motor line passes through it).
+            If T_avg ≤ 0 (the linkage delivers energy on average: no motor
+            line passes through it).
         """
         s = _positive(slip, "slip")
         if s >= 1:
@@ -349,14 +354,28 @@ class Flywheel:
             raise GraphkinError(f"the average torque is {self.T_avg:.4g} N·m ≤ 0: a motor model needs a positive average torque")
         if self.E == 0:
             return self.T.copy()
-        # A repeated end point (0° … 360°) is dropped for the transform and put back.
-        repeat = self.gap == 0
-        theta, T = (self.theta[:-1], self.T[:-1]) if repeat else (self.theta, self.T)
-        h = steps(theta, TURN - (theta[-1] - theta[0]))
-        if not np.allclose(h, TURN / len(theta), rtol=1e-9, atol=0):
-            raise GraphkinError("smoothed_torque needs equally spaced crank angles over the turn")
         k_m = self.T_avg * (1 - s) / (s * self.omega_avg)
-        k = np.arange(len(theta) // 2 + 1)
-        H = 1 / (1 + 1j * k * self.omega_avg * self.I_s / k_m)
-        Tm = self.T_avg + np.fft.irfft(np.fft.rfft(T - self.T_avg) * H, len(theta))
-        return np.append(Tm, Tm[0]) if repeat else Tm
+        return self.T_avg + _periodic_lag(self.theta, self.T - self.T_avg, self.gap, self.omega_avg * self.I_s / k_m)
+
+
+def _periodic_lag(theta, u, gap: float, tau: float) -> np.ndarray:
+    """Periodic solution x(θ) of τ x′ + x = u over one turn, u linear between the samples.
+
+    Over a step of width h with slope σ = Δu/h the solution is exactly
+    x_b = E x_a + (u_b − τσ) − E (u_a − τσ), E = e^{−h/τ}; going once round
+    from x = 0 and asking x(2π) = x(0) fixes the start: x_0 = x_N / (1 − ΠE).
+    """
+    h = steps(theta, gap)
+    u_next = np.roll(u, -1)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        sigma = np.where(h > 0, (u_next - u) / h, 0.0)
+    E = np.exp(-h / tau)
+    g = (u_next - tau * sigma) - E * (u - tau * sigma)
+    x = np.empty(len(u) + 1)
+    x[0] = 0.0
+    for k in range(len(u)):  # a linear recurrence with varying steps: no vectorised form that cannot overflow
+        x[k + 1] = E[k] * x[k] + g[k]
+    decay = np.exp(-np.concatenate([[0.0], np.cumsum(h / tau)]))
+    x = x + x[-1] / (1 - decay[-1]) * decay
+    # With a repeated end point (0° … 360°) the closing step is 0 and x[-2] = x[-1] = x[0].
+    return x[:-1]

@@ -24,7 +24,7 @@ import numpy as np
 from ..errors import GraphkinError
 from ..model import PointForce, Torque
 from ..solve import ForceAnalysis, solve_forces
-from .cycle import Peak, peak_of, positions
+from .cycle import Peak, peak_of, sweep_positions
 
 if TYPE_CHECKING:
     from ..problem import Problem
@@ -118,7 +118,8 @@ def joint_force_index(problem: "Problem", n: int | None = None, *, limit: float 
         ignored (a static analysis, :func:`static_problem`).
     n : int, optional
         As in :func:`graphkin.analysis.sweep`: n equally spaced crank angles
-        over one turn, or the problem's own positions if None.
+        over one turn, or the problem's own positions if None (and the
+        samples either side of where a load switches on or off).
     limit : float
         Index to flag (2 by default).
 
@@ -141,8 +142,13 @@ def joint_force_index(problem: "Problem", n: int | None = None, *, limit: float 
     >>> bool(np.isnan(jfi.index[0])), jfi.units      # no cutting force at θ = 0
     (True, '')
     """
+    return index_at(problem, sweep_positions(problem, n), limit)
+
+
+def index_at(problem: "Problem", at, limit: float = 2.0) -> JointForceIndex:
+    """:func:`joint_force_index` at input positions ``at`` (SI; None for the problem's own)."""
     static = static_problem(problem)
-    result = static.solve(at=positions(problem, n))
+    result = static.solve(at=at)
     q = result.kinematics.q
     load, units = _reference_load(problem, q)
     names = np.array([result.name_of(i, j) for i, j in result.forces] + [""])

@@ -118,7 +118,7 @@ class _Builder:
         u = complex(self.kin.z_guide(joint)[self.i])
         w = 1j * u
         if joint.mu:
-            w -= joint.mu * sigma * np.sign(self.kin.slide_rate(joint, on)[self.i]) * u
+            w -= joint.mu * sigma * self.kin.slide_sense(joint, on)[self.i] * u
         return w
 
     def name(self, i, j):
@@ -394,12 +394,23 @@ class _Builder:
             I = _meet(Rp, R.F / abs(R.F), P, d, self.reach)
             if I is not None:
                 points[f"I{g.k}"] = _xy(I)
-        self.steps.append(Step("three-force", f"Gear {g.k} is a three-force member: {Rk}, {nW} and the pivot force {nF} "
-                               f"meet in one point; {nF} passes through the centre {g.pivot.point}.", g.k,
-                               (Line(nF, _xy(Ck), _xy(F_piv / abs(F_piv)) if F_piv else (1.0, 0.0), "found"),), points))
-        poly = (Arrow(Rk, _xy(R.F), True), Arrow(nW, _xy(F_W), False), Arrow(nF, _xy(F_piv), False))
-        self.steps.append(Step("polygon", f"Force polygon of gear {g.k}: {Rk} + {nW} + {nF} = 0.", g.k,
-                               polygon=poly, values={nW: _xy(F_W), nF: _xy(F_piv)}))
+        pivot_line = (Line(nF, _xy(Ck), _xy(F_piv / abs(F_piv)) if F_piv else (1.0, 0.0), "found"),)
+        # A gear loaded by a couple alone (its own weight and inertia force
+        # nil, e.g. an input torque) is no three-force member: the tooth and
+        # pivot forces are then the opposite couple, equal and opposite.
+        if abs(R.F) <= 1e-9 * abs(F_W):
+            self.steps.append(Step("two-force", f"Gear {g.k} carries only a couple ({R.M0:.4g} N·m): {nW} and the pivot "
+                                   f"force {nF} form the opposite couple, so {nF} = −{nW}, through the centre "
+                                   f"{g.pivot.point}.", g.k, pivot_line, points))
+            poly = (Arrow(nW, _xy(F_W), False), Arrow(nF, _xy(F_piv), False))
+            caption = f"Force polygon of gear {g.k}: {nW} + {nF} = 0."
+        else:
+            self.steps.append(Step("three-force", f"Gear {g.k} is a three-force member: {Rk}, {nW} and the pivot force "
+                                   f"{nF} meet in one point; {nF} passes through the centre {g.pivot.point}.", g.k,
+                                   pivot_line, points))
+            poly = (Arrow(Rk, _xy(R.F), True), Arrow(nW, _xy(F_W), False), Arrow(nF, _xy(F_piv), False))
+            caption = f"Force polygon of gear {g.k}: {Rk} + {nW} + {nF} = 0."
+        self.steps.append(Step("polygon", caption, g.k, polygon=poly, values={nW: _xy(F_W), nF: _xy(F_piv)}))
         self._check(self.steps[-1])
         self.store(g.mesh, g.k, F_W)
         self.store(g.pivot, g.k, F_piv)

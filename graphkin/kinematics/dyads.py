@@ -131,9 +131,9 @@ def _bar(st, link, X_from, X_to, p_from, p_to):
 
 
 def _sqrt(st, h2, why):
-    bad = ~(h2 >= 0)
-    st.fail(why, bad)
-    return np.sqrt(np.where(bad, np.nan, h2))
+    # nan comes from a group that failed before, which has said why already.
+    st.fail(why, h2 < 0)
+    return np.sqrt(np.where(h2 >= 0, h2, np.nan))
 
 
 def _positions(st: _State, d: Dyad, sigma: int):
@@ -199,7 +199,8 @@ def _meet(st, d, Y1, u1, Y2, u2):
     """Point on both lines (Y1, u1) and (Y2, u2); nan where they are parallel."""
     with np.errstate(divide="ignore", invalid="ignore"):
         t = cross(Y2 - Y1, u2) / cross(u1, u2)
-    st.fail(f"{d.label}: its two guides are parallel", ~np.isfinite(t))
+    known = np.isfinite(Y2 - Y1) & np.isfinite(u1) & np.isfinite(u2)  # else a group before has failed
+    st.fail(f"{d.label}: its two guides are parallel", known & ~np.isfinite(t))
     return Y1 + t * u1
 
 
@@ -246,7 +247,9 @@ def _rates(st: _State, d: Dyad):
     rhs = v3b - v1a
     for side, link in known_w.items():
         rhs = rhs - st.omega[link] * col[side]
-    st.fail(f"{d.label} is at a dead point", ~(np.abs(cross(A, B)) > DEAD_POINT * np.abs(A) * np.abs(B)))
+    size = np.abs(cross(A, B))
+    # Only where the dyad has a position: one that cannot be assembled is not also "at a dead point".
+    st.fail(f"{d.label} is at a dead point", np.isfinite(size) & ~(size > DEAD_POINT * np.abs(A) * np.abs(B)))
     zv = dict(zip(names, solve_columns(A, B, rhs)))
     w_j, w_k = pick("j", zv, st.omega), pick("k", zv, st.omega)
 

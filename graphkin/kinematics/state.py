@@ -17,6 +17,9 @@ from ..geometry import zcross as cross
 from ..geometry import zdot as dot
 from ..model import Mechanism, Prismatic
 
+STILL = 1e-9
+"""Relative sliding speed below which a sliding pair counts as still (no Coulomb friction)."""
+
 
 @dataclass(frozen=True)
 class Kinematics:
@@ -151,6 +154,26 @@ class Kinematics:
         v_other = self.v_O[other] + 1j * self.w(other) * (X - self.O[other])
         return dot(v_on - v_other, self.z_guide(joint))
 
+    def slide_sense(self, joint: Prismatic, on: int) -> np.ndarray:
+        """Sense of :meth:`slide_rate`: +1, −1, or 0 where the pair is still, shape (n,).
+
+        "Still" means a rate below ``STILL`` times the mechanism's velocity
+        scale (the fastest joint point relative to each link's origin), so a
+        dead centre whose slide rate is rounding (1e-17 m/s) gives no
+        friction rather than full friction of a random sense.
+        """
+        rate = self.slide_rate(joint, on)
+        return np.where(np.abs(rate) > STILL * self._speed_scale(), np.sign(rate), 0.0)
+
+    def _speed_scale(self) -> np.ndarray:
+        """Largest speed of any named point of any moving link [m/s], shape (n,)."""
+        scale = np.zeros(self.n)
+        for link in self.mechanism.moving:
+            for name in self.mechanism.link(link).points:
+                scale = np.maximum(scale, np.abs(self.z_velocity(link, name)))
+        return scale
+
     def reason(self, i: int) -> str:
         """Why position ``i`` is invalid ('' if it is valid)."""
-        return "; ".join(why for why, where in self.failures.items() if where[i])
+        why = "; ".join(why for why, where in self.failures.items() if where[i])
+        return why or ("" if self.valid[i] else "the motion is not finite there (no group says why)")

@@ -15,6 +15,10 @@ from ..errors import ModelError
 from .link import _finite, _point
 
 
+EDGE = 1e-12
+"""Relative distance from an end of an :class:`Active` interval within which a position counts as on the end."""
+
+
 @dataclass(frozen=True)
 class Active:
     """The open interval ``start < q < stop`` of the input where a load acts.
@@ -28,13 +32,21 @@ class Active:
     periodic: bool = True
 
     def mask(self, q):
-        """Boolean array: where the load acts, for input positions ``q``."""
+        """Boolean array: where the load acts, for input positions ``q``.
+
+        The interval is open: a position within rounding (:data:`EDGE`,
+        relative) of ``start`` or ``stop`` is outside, so 124° computed two
+        ways gives the same answer.
+        """
         q = np.asarray(q, dtype=float)
         if not self.periodic:
-            return (q > self.start) & (q < self.stop)
+            tol = EDGE * max(abs(self.start), abs(self.stop), 1.0)
+            return (q > self.start + tol) & (q < self.stop - tol)
         turn = 2 * math.pi
+        tol = EDGE * turn
         width = (self.stop - self.start) % turn
-        return ((q - self.start) % turn > 0) & ((q - self.start) % turn < width)
+        d = (q - self.start) % turn
+        return (d > tol) & (d < width - tol)
 
 
 @dataclass(frozen=True)

@@ -44,13 +44,14 @@ class _Reactions:
 def _w(kin: Kinematics, joint: Prismatic, on: int, sigma_N):
     """Direction w of the reaction on ``on`` per unit normal force: F = N w.
 
-    w = n − μ σ_N sgn(ṡ) u, with u the guide direction, n = k × u, ṡ the
-    velocity of ``on`` relative to the other link and σ_N the sign of N.
+    w = n − μ σ_N sgn(ṡ) u, with u the guide direction, n = k × u, sgn(ṡ)
+    the sense of the velocity of ``on`` relative to the other link
+    (:meth:`Kinematics.slide_sense`, 0 where it is still) and σ_N the sign of N.
     """
     u = kin.z_guide(joint)
     w = 1j * u
     if joint.mu:
-        w = w - joint.mu * sigma_N * np.sign(kin.slide_rate(joint, on)) * u
+        w = w - joint.mu * sigma_N * kin.slide_sense(joint, on) * u
     return w
 
 
