@@ -1,4 +1,5 @@
-"""Rebuild every figure in figures/: each catalog problem's side-by-side figure and construction frames.
+"""Rebuild every figure in figures/: each catalog problem's side-by-side figure and construction frames,
+and the whole-cycle figures of lessons 03–05.
 
 Run with ``make figures``. A problem with several positions is drawn at one
 representative position, named below.
@@ -39,9 +40,28 @@ def build(name: str) -> list[Path]:
     return written
 
 
+CYCLES = {
+    # name: (positions over the turn, coefficient of speed fluctuation for the flywheel)
+    "strip_cutter": (360, 0.05),  # lessons 03 (torque, polar plots, peaks) and 04 (flywheel)
+    "slider_crank_friction": (360, 0.05),  # lesson 05
+}
+
+
+def build_cycle(name: str) -> list[Path]:
+    """The cycle figure (torque with its pulses, polar joint forces, energy) and the flywheel's before/after."""
+    from graphkin.analysis import sweep
+
+    n, Cs = CYCLES[name]
+    cycle = sweep(catalog.load(name), n)
+    written = [draw.save(draw.draw_cycle(cycle, Cs=Cs), HERE / f"{name}_cycle.png")]
+    before_after = draw.draw_torque_curve(cycle, flywheel=cycle.flywheel(Cs))
+    written.append(draw.save(before_after, HERE / f"{name}_flywheel.png"))
+    return written
+
+
 def main(names=None) -> int:
     for name in names or catalog.names():
-        for path in build(name):
+        for path in build(name) + (build_cycle(name) if name in CYCLES else []):
             print(path.relative_to(HERE.parent))
     path = draw.save(draw.draw_sign_convention().ax.figure, HERE / "sign_convention.png")
     print(path.relative_to(HERE.parent))

@@ -77,30 +77,35 @@ def _solve(args) -> int:
 
 
 def _figures(problem, result, graphical, figure, steps, say):
-    """Write the side-by-side figure(s) and the step frames; say where they went."""
+    """Write the side-by-side figure(s) and the step frames; say where they went.
+
+    A batch that takes more than a second shows a tqdm progress bar on stderr,
+    one tick per position drawn.
+    """
     from pathlib import Path
+
+    from tqdm import tqdm
 
     from . import draw
 
+    if figure and Path(figure).suffix.lower() not in (".png", ".svg", ".pdf"):
+        raise GraphkinError(f"--figure {figure}: the file must end in .png, .svg or .pdf")
     many = result.n > 1
-    for i, c in enumerate(graphical):
-        if c is None or not c.valid:
-            continue
+    drawn = [(i, c) for i, c in enumerate(graphical) if c is not None and c.valid]
+    for i, c in tqdm(drawn, desc="graphkin: drawing", unit="position", delay=1.0, file=sys.stderr, leave=False):
         tag = f"_{i + 1}" if many else ""
         if figure:
             path = Path(figure)
             path = path.with_name(f"{path.stem}{tag}{path.suffix}")
-            if path.suffix.lower() not in (".png", ".svg", ".pdf"):
-                raise GraphkinError(f"--figure {figure}: the file must end in .png, .svg or .pdf")
             path.parent.mkdir(parents=True, exist_ok=True)
             draw.save(draw.draw_solution(c, result), path)
-            print(f"figure written to {path}", file=say)
+            tqdm.write(f"figure written to {path}", file=say)
         if steps:
             folder = Path(steps)
             folder.mkdir(parents=True, exist_ok=True)
             for k, fig in enumerate(draw.draw_steps(c), start=1):
                 draw.save(fig, folder / f"{Path(problem.name).stem}{tag}_step{k:02d}.png")
-            print(f"{len(c.steps)} construction steps written to {folder}/", file=say)
+            tqdm.write(f"{len(c.steps)} construction steps written to {folder}/", file=say)
 
 
 def _cycle(args) -> int:
@@ -270,6 +275,10 @@ def format_cycle(cycle, data: dict) -> str:
              f"{cycle.n} position{'s' * (cycle.n != 1)}, {span}{' (one full turn)' if cycle.closed else ''}"]
     if crank:
         lines[-1] += f", ω = {float(np.mean(cycle.q_dot)):.6g} rad/s"
+    ends = sorted({b for load in mech.loads if load.active is not None for b in (load.active.start, load.active.stop)})
+    if ends:
+        where = ", ".join(_where(cycle, b).split(" = ")[1] for b in ends)
+        lines.append(f"loads switch on or off at {where}: each sampled just before and just after")
     e = data["effort"]
     lines += ["", f"Driving {'torque' if crank else 'force'} {name}",
               f"  peak     {val(e['max']['value'])} {unit} at {at(e['max'])}",
@@ -312,7 +321,11 @@ def format_cycle(cycle, data: dict) -> str:
 
 
 class _Progress:
-    """A one-line progress report on stderr for work that takes more than a second (tqdm is not a dependency).
+    """A one-line elapsed-time report on stderr for one call that takes more than a second.
+
+    A sweep is one vectorised call with no iterations to count, so tqdm (used
+    for batches of figures, :func:`_figures`) has nothing to tick; this shows
+    the time instead.
 
     A background thread writes ``graphkin: LABEL… 1.2 s`` over itself until the
     work is done, then ends the line with the total time; nothing at all is

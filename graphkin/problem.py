@@ -73,7 +73,7 @@ class Problem:
         return "theta" if self.mechanism.driver.kind == "crank" else "s"
 
     def at_speed(self, q_dot: float, q_ddot: float | None = None) -> "Problem":
-        """The same problem driven at a constant input rate.
+        """The same problem driven at a constant input rate (its title says so).
 
         Parameters
         ----------
@@ -95,8 +95,16 @@ class Problem:
         for key, value in rate.items():
             if isinstance(value, bool) or not isinstance(value, (int, float, np.number)) or not np.isfinite(value):
                 raise GraphkinError(f"{self.name}: {key} must be a finite number (SI), got {value!r}")
+        if self.given:
+            # Given ω, α, a_G or v_G belong to the file's speed; at another speed they would be silently wrong.
+            raise GraphkinError(f"{self.name}: it gives kinematic values ([given] in the file) that hold at its own"
+                                " speed only; remove them to let graphkin derive the motion at another speed")
         m = len(self.q)
-        return replace(self, q_dot=np.full(m, float(rate["q_dot"])), q_ddot=np.full(m, float(rate["q_ddot"])))
+        crank = self.mechanism.driver.kind == "crank"
+        speed = f"{rate['q_dot'] * 30 / np.pi:.4g} rpm" if crank else f"{rate['q_dot']:.4g} m/s"
+        title = f"{self.title} (driven at {speed})" if self.title else ""
+        return replace(self, q_dot=np.full(m, float(rate["q_dot"])), q_ddot=np.full(m, float(rate["q_ddot"])),
+                       title=title)
 
     def with_friction(self, mu: float) -> "Problem":
         """The same problem with Coulomb coefficient μ (≥ 0) at every sliding pair; 0 removes friction.

@@ -31,7 +31,6 @@ from __future__ import annotations
 import io
 import math
 import time
-from dataclasses import replace
 
 import numpy as np
 
@@ -183,7 +182,8 @@ class Explorer:
         self.crank = problem.mechanism.driver.kind == "crank"
         self._original = problem
         q_dot0 = float(problem.q_dot[0])
-        self.problem = self._original.at_speed(q_dot0)
+        # A problem that gives ω, α or a_G itself holds at its own speed only: the speed box is then fixed.
+        self.problem = problem if problem.given else problem.at_speed(q_dot0)
         self.timings: list[float] = []
         self.construction = None
         self.analytical = None
@@ -210,6 +210,7 @@ class Explorer:
             self.limits = (0.0, 360.0)
         self.slider.style.description_width = "initial"
         self.speed.style.description_width = "initial"
+        self.speed.disabled = bool(problem.given)
 
         self.figure = Figure(dpi=dpi)
         StampCanvas(self.figure)  # each distinct label is rendered once, then pasted
@@ -295,7 +296,8 @@ class Explorer:
         """Solve the whole cycle at the current speed and draw the torque curve (once per speed)."""
         from .analysis.cycle import Cycle, sweep
 
-        self.problem = self._original.at_speed(self._q_dot())
+        if not self._original.given:
+            self.problem = self._original.at_speed(self._q_dot())
         if self.crank:
             self.cycle = sweep(self.problem, self.n)
         else:

@@ -328,3 +328,16 @@ def test_joint_force_index_of_the_strip_cutter(cutter):
     largest = np.max([np.hypot(*F.T) for F in static.forces.values()], axis=0)
     np.testing.assert_allclose(jfi.index[cut], largest[cut] / 2000.0, rtol=1e-12)
     assert jfi.peak.value == pytest.approx(np.nanmax(jfi.index))
+
+
+def test_sweep_at_given_positions_and_the_mean_over_unequal_steps(cutter, cycle):
+    same = sweep(cutter, at=cycle.q)
+    np.testing.assert_array_equal(same.q, cycle.q)
+    np.testing.assert_allclose(same.torque, cycle.torque, rtol=0, atol=0)
+    with pytest.raises(GraphkinError, match="not both"):
+        sweep(cutter, 36, at=cycle.q)
+    # The mean of any array uses the average's rule, so mean(power) = ω · average exactly.
+    assert cycle.mean(cycle.power) == pytest.approx(cycle.average * cycle.q_dot[0], rel=1e-12)
+    assert cycle.mean(cycle.torque) == cycle.average
+    with pytest.raises(GraphkinError, match="one value per position"):
+        cycle.mean(np.ones(3))

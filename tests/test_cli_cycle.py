@@ -33,6 +33,7 @@ def cycle():
 def test_summary_equals_the_analysis(capsys, cycle):
     code, out, err = run(capsys, "strip_cutter", "--n", "90", "--cs", "0.05")
     assert code == 0 and err == ""
+    assert "94 positions" in out and "loads switch on or off at 124°, 156°" in out
     peaks = cycle.peaks()
     value, at = number(out, r"peak\s+(\S+) N·m at θ12 = (\S+)°")
     assert value == pytest.approx(peaks.effort_max.value, rel=1e-5)

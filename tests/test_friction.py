@@ -61,3 +61,13 @@ def test_with_friction_and_at_speed(problem):
         problem.at_speed("fast")
     with pytest.raises(GraphkinError, match="no sliding pair"):
         catalog.load("gearset").with_friction(0.1)
+
+
+def test_at_speed_refuses_given_kinematics_and_renames(problem):
+    """Given ω/α/a_G hold at the file's speed only: at another speed they would be silently wrong."""
+    import dataclasses
+
+    given = dataclasses.replace(problem, given={(3, "omega"): 1.0})
+    with pytest.raises(GraphkinError, match="given"):
+        given.at_speed(10.0)
+    assert "driven at 1200 rpm" in problem.at_speed(1200 * math.pi / 30).title

@@ -158,7 +158,7 @@ class Kinematics:
         """Sense of :meth:`slide_rate`: +1, −1, or 0 where the pair is still, shape (n,).
 
         "Still" means a rate below ``STILL`` times the mechanism's velocity
-        scale (the fastest joint point relative to each link's origin), so a
+        scale (the speed of its fastest named point at that position), so a
         dead centre whose slide rate is rounding (1e-17 m/s) gives no
         friction rather than full friction of a random sense.
         """
