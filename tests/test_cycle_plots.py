@@ -150,3 +150,98 @@ def test_every_cycle_plot_shows_its_whole_curve(cycle, flywheel, cutter):
     FigureCanvasAgg(fig)
     torque_axes = [a for a in fig.axes if "T₁₂" in a.get_ylabel()]
     assert torque_axes and _shows(torque_axes[0], cycle.torque)
+
+
+# -- no text on text -------------------------------------------------------------------------------
+
+
+def _rendered(fig):
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    fig = fig.figure if not isinstance(fig, Figure) else fig
+    FigureCanvasAgg(fig)
+    fig.canvas.draw()
+    return fig, fig.canvas.get_renderer()
+
+
+def _texts(fig):
+    """(what, artist) of every text drawn on the figure: suptitle, titles, axis labels, tick labels, texts, legends."""
+    out = [("suptitle" if t is fig._suptitle else "figure text", t) for t in fig.texts]
+    for k, ax in enumerate(fig.axes):
+        out += [(f"axes {k} title", t) for t in (ax.title, ax._left_title, ax._right_title)]
+        out += [(f"axes {k} text", t) for t in ax.texts]
+        for axis in ax._axis_map.values():
+            out += [(f"axes {k} axis label", axis.label), (f"axes {k} offset", axis.offsetText)]
+            out += [(f"axes {k} tick", lab) for tick in axis._update_ticks() for lab in (tick.label1, tick.label2)]
+        if ax.get_legend() is not None:
+            out.append((f"axes {k} legend", ax.get_legend()))
+    return [(w, t) for w, t in out if t.get_visible() and (not hasattr(t, "get_text") or t.get_text().strip())]
+
+
+def overlapping_texts(fig, tol=0.5):
+    """Pairs of drawn texts (and legends) whose boxes overlap by more than ``tol`` px, with the overlap."""
+    fig, r = _rendered(fig)
+    items = _texts(fig)
+    boxes = [t.get_window_extent(r) for _, t in items]
+    found = []
+    for i in range(len(items)):
+        for j in range(i):
+            a, b = boxes[i], boxes[j]
+            over = min(min(a.x1, b.x1) - max(a.x0, b.x0), min(a.y1, b.y1) - max(a.y0, b.y0))
+            legend = [t for _, t in (items[i], items[j]) if hasattr(t, "get_texts")]
+            if over > tol and not any(t in lg.get_texts() for lg in legend for _, t in (items[i], items[j])):
+                name = lambda w, t: f"{w} {t.get_text()!r}" if hasattr(t, "get_text") else w  # noqa: E731
+                found.append((name(*items[i]), name(*items[j]), round(float(over), 1)))
+    return found
+
+
+_PLOTS = {
+    "shaking": lambda c, f: draw.draw_shaking(c),
+    "cycle": lambda c, f: draw.draw_cycle(c),
+    "cycle with flywheel": lambda c, f: draw.draw_cycle(c, Cs=0.05),
+    "torque": lambda c, f: draw.draw_torque_curve(c, flywheel=f),
+    "polar forces": lambda c, f: draw.draw_polar_forces(c),
+    "energy": lambda c, f: draw.draw_energy(f),
+    "joint-force index": lambda c, f: draw.draw_joint_force_index(c.joint_force_index()),
+}
+
+
+@pytest.mark.parametrize("plot", sorted(_PLOTS))
+def test_no_text_overlaps_other_text(plot, cycle, flywheel):
+    """The shaking figure's suptitle used to run over the polar axes' title (by some 5 px at 100 dpi)."""
+    assert overlapping_texts(_PLOTS[plot](cycle, flywheel)) == []
+
+
+def test_shaking_suptitle_is_above_both_titles(cycle):
+    fig, r = _rendered(draw.draw_shaking(cycle))
+    bottom = fig._suptitle.get_window_extent(r).y0
+    for ax in fig.axes:
+        assert ax.title.get_window_extent(r).y1 <= bottom, ax.get_title()
+
+
+def test_radial_tick_labels_keep_off_the_curves(cycle):
+    """They used to sit on the 112.5° ray whatever the curves: on the strip cutter, 8 label–curve crossings."""
+    from graphkin.draw._common import _seg_hits_box
+
+    for d in (draw.draw_polar_forces(cycle), draw.draw_shaking(cycle, ax=Figure().add_subplot(projection="polar"))):
+        fig, r = _rendered(d.figure)
+        ax = d.ax
+        labels = [t.label1 for t in ax.yaxis._update_ticks() if t.label1.get_visible() and t.label1.get_text()]
+        crossed = 0
+        for t in labels:
+            b = t.get_window_extent(r)
+            for curve in d.curves.values():
+                xy = ax.transData.transform(np.column_stack([curve.get_xdata(), curve.get_ydata()]))
+                crossed += any(_seg_hits_box(p, q, (b.x0, b.y0, b.x1, b.y1)) for p, q in zip(xy[:-1], xy[1:]))
+        assert labels and crossed <= 1, crossed
+        assert all(t.get_path_effects() for t in labels)  # a halo for what still crosses them
+
+
+def test_energy_of_a_steady_torque():
+    """A gear pair under a constant load: T never crosses its average, there is no swing to mark (was an IndexError)."""
+    c = sweep(catalog.load("gearset"), 36)
+    fw = c.flywheel(0.05)
+    assert len(fw.crossings) == 0 and crossing_energy(fw).size == 0
+    d = draw.draw_energy(fw)
+    assert "E" not in d.curves and fw.E == 0.0
+    assert overlapping_texts(d) == []

@@ -50,7 +50,7 @@ _UNSUB = dict(zip("₀₁₂₃₄₅₆₇₈₉ₐₑₕᵢⱼₖₗₘₙₒ�
 def plain(text: str) -> str:
     """Text with subscripts as plain characters and no mathtext markup: ``F₂₃ = 2 N`` → ``F23 = 2 N``."""
     text = "".join(_UNSUB.get(ch, ch) for ch in text)
-    return re.sub(r"[${}]", "", text).replace("_", "")
+    return re.sub(r"\\mathregular|[${}]", "", text).replace("_", "")
 
 
 def texts_of(ax) -> list[str]:
@@ -236,6 +236,147 @@ def test_known_loads_and_unknowns_look_different():
         for u in unknown:
             assert k.get_edgecolor() != u.get_edgecolor()
             assert k.get_facecolor() != u.get_facecolor()  # solid heads vs open heads
+
+
+def _scale_bar_box(d, renderer):
+    """Display box (x0, y0, x1, y1) around a drawing's scale bar: the bar, its end ticks and both numbers."""
+    from matplotlib.lines import Line2D
+
+    zero = next(t for t in d.ax.texts if t.get_text() == "0")
+    x, y = zero.get_position()
+    value = next(t for t in d.ax.texts if re.fullmatch(r"[\d.]+ N", t.get_text()))
+    bar = [a for a in d.ax.lines if isinstance(a, Line2D) and len(a.get_xdata()) in (2, 5)
+           and a.get_xdata()[0] == x and (a.get_ydata()[0] == y or np.isnan(a.get_ydata()).any())]
+    boxes = [a.get_window_extent(renderer) for a in [zero, value, *bar]]
+    return (min(b.x0 for b in boxes), min(b.y0 for b in boxes), max(b.x1 for b in boxes), max(b.y1 for b in boxes))
+
+
+def _overlap_px(a, b) -> float:
+    """How far two display boxes (x0, y0, x1, y1) overlap [px]: the smaller of the two overlaps, 0 if apart."""
+    ox = min(a[2], b[2]) - max(a[0], b[0])
+    oy = min(a[3], b[3]) - max(a[1], b[1])
+    return max(0.0, min(ox, oy))
+
+
+def _panel(size, dpi):
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    from graphkin.draw._common import PanelAxes
+
+    fig = Figure(figsize=size, dpi=dpi)
+    FigureCanvasAgg(fig)
+    return fig.add_subplot(axes_class=PanelAxes)
+
+
+# Panels where a label used to sit on the scale bar (overlap before the fix, in px): small axes, where the
+# bar's numbers reached past the segment that stood for them, and a crossing cost no more than an arrow's.
+_BAR_CASES = {
+    # The superposition polygon of G14 at θ = 0: "G₁₄ (4 loaded) = 45.83 N" over "0 ⊢⊣ 10 N" (11 px).
+    "slider_crank_G14_parts": ("slider_crank_friction", 0.0, "superpose:G14", (2.5, 2.5), 100, True),
+    # The double slider at its book position, the explorer's size (values off): "F₁₂" on the bar (5 px).
+    "double_slider_input": ("double_slider", None, "driver", (2.82, 2.2), 72, False),
+    # The strip cutter at θ = 240°: "F₃₄ (3 loaded)" (8 px).
+    "strip_cutter_F34_parts": ("strip_cutter", math.radians(240), "superpose:F34", (2.82, 2.2), 72, False),
+    # A free body: the crank's driving torque "T₁₂ = 29.49 N·m CW" at θ = 80° (8 px).
+    "slider_crank_fbd2": ("slider_crank_friction", math.radians(80), "fbd:2", (2.82, 2.2), 72, False),
+}
+
+
+@pytest.mark.parametrize("key", sorted(_BAR_CASES))
+def test_labels_keep_off_the_scale_bar(key):
+    from graphkin.draw._common import renderer_of
+
+    name, at, panel, size, dpi, values = _BAR_CASES[key]
+    p = catalog.load(name)
+    c = construct_forces(p.kinematics(None if at is None else [at]), 0)
+    ax = _panel(size, dpi)
+    kind, _, which = panel.partition(":")
+    if kind == "fbd":
+        d = draw.draw_free_body(c, int(which), ax=ax)
+    else:
+        step = next(s for s in c.steps if s.kind == kind and (not which or s.polygon[-1].name == f"−{which}"))
+        d = draw.draw_force_polygon(step, scale=c.force_scale, ax=ax, values=values, driver_name=c.driver_name)
+    r = renderer_of(ax.figure)
+    bar = _scale_bar_box(d, r)
+    for label, t in d.labels.items():
+        over = _overlap_px(tuple(t.get_window_extent(r).extents), bar)
+        assert over <= 0.5, (key, label, t.get_text(), f"{over:.1f} px over the scale bar")
+
+
+def test_scale_bar_is_a_box_the_labeler_keeps_off():
+    """The bar's numbers are measured by arithmetic (no text layout per draw): the box is where the text is drawn."""
+    from graphkin.draw._common import Labeler, _text_box, renderer_of, scale_bar
+    from graphkin.draw.style import resolve
+
+    ax = _panel((3, 3), 100)
+    ax.set_xlim(0, 100)
+    ax.set_ylim(0, 100)
+    ax.set_aspect("equal")
+    lab = Labeler(ax, resolve())
+    bar = scale_bar(ax, (20, 20), 30, 500, s=resolve(), labeler=lab)
+    ax.apply_aspect()
+    r = renderer_of(ax.figure)
+    for t in bar[2:]:
+        np.testing.assert_allclose(_text_box(t, r), tuple(t.get_window_extent(r).extents), atol=1.0)
+    # A label whose first spot is on the bar's reading goes to its next spot.
+    t = lab.label("F23", [((35, 20), (0, 1), 0.0), ((35, 80), (0, 1), 0.0)])
+    lab.place()
+    assert t.get_position() == (35, 80)
+
+
+# -- names as typeset ---------------------------------------------------------------------------
+
+
+def test_negated_names_are_subscripted_like_the_names():
+    from graphkin.draw._common import sub
+
+    assert sub("F23") == "F₂₃"
+    assert sub("−F23") == "−F₂₃"
+    assert sub("-F23") == "−F₂₃"  # a hyphen becomes a true minus, as in every number drawn
+    assert sub("−G14 (4 loaded)") == "−G₁₄ (4 loaded)"
+    assert sub("−R3i") == "−R₃ᵢ"
+    assert sub("−FP") == "−FP" and sub("-") == "-"  # not a name with a subscript: as it is
+
+
+def test_superposition_polygon_shows_the_negated_total_subscripted():
+    """The strip cutter at 140°: each superposition polygon closes with −F₂₃, −F₃₄ or −F₁₄."""
+    p = catalog.load("strip_cutter")
+    c = construct_forces(p.kinematics([math.radians(140)]), 0)
+    steps = [s for s in c.steps if s.kind == "superpose"]
+    assert {s.polygon[-1].name for s in steps} == {"−F23", "−F34", "−F14"}
+    for step in steps:
+        total = step.polygon[-1].name
+        d = draw.draw_force_polygon(step, scale=c.force_scale)
+        shown = d.labels[total].get_text()
+        assert shown.startswith("−F") and shown[2] in "₁₂₃₄" and shown[3] in "₁₂₃₄", shown
+        assert "−F" + "".join("₁₂₃₄"["1234".index(ch)] for ch in total[2:]) in draw.polygon.step_title(step)
+
+
+def test_named_loads_with_a_note_subscript_the_name_and_keep_the_note():
+    from matplotlib import cbook
+
+    from graphkin.draw._common import plain as unsub
+    from graphkin.draw._common import sub
+
+    # There is no Unicode subscript c: the name alone goes to upright mathtext, the note stays text.
+    assert sub("Fc3 (cutting)") == r"$\mathregular{F_{c3}}$ (cutting)"
+    assert sub("Fc3") == r"$\mathregular{F_{c3}}$" and sub("−Fc4") == r"−$\mathregular{F_{c4}}$"
+    assert sub("F14 (cutting)") == "F₁₄ (cutting)"
+    assert unsub(sub("Fc3 (cutting)")) == "Fc3 (cutting)" and unsub(sub("−F23")) == "−F23"
+    # The strip cutter at 140°, cutting: its free bodies label the cutting forces so.
+    p = catalog.load("strip_cutter")
+    c = construct_forces(p.kinematics([math.radians(140)]), 0)
+    for link, name in ((3, "Fc3 (cutting)"), (4, "Fc4 (cutting)")):
+        d = draw.draw_free_body(c, link)
+        t = d.labels[name]
+        assert cbook.is_math_text(t.get_text()) and t.get_text().endswith("$ (cutting)"), t.get_text()
+        assert shows(d.ax, name)
+        # It renders: the subscript sits below the F's baseline, so the label is taller than plain "Fc3".
+        from graphkin.draw._common import renderer_of
+
+        r = renderer_of(d.ax.figure)
+        flat = d.ax.text(0, 0, name, fontsize=t.get_fontsize())
+        assert t.get_window_extent(r).height > flat.get_window_extent(r).height
 
 
 # -- mechanism, convention, steps ------------------------------------------------------------

@@ -180,7 +180,7 @@ def setup_axes(ax):
 
 # -- text ---------------------------------------------------------------------
 
-_NAME = re.compile(r"^([A-Za-z])(\d+(?:,\d+)?[a-z]?)$")
+_NAME = re.compile(r"^([−-]?)([A-Za-z])([a-z]?\d+(?:,\d+)?[a-z]?)$")
 _SUB = dict(zip("0123456789aehijklmnoprstuvx,", "₀₁₂₃₄₅₆₇₈₉ₐₑₕᵢⱼₖₗₘₙₒₚᵣₛₜᵤᵥₓ,"))
 _UNSUB = {v: k for k, v in _SUB.items() if k != ","}
 
@@ -189,21 +189,33 @@ def sub(name: str) -> str:
     """A force or point name with its subscript typeset: ``F23`` → ``F₂₃``, ``R3i`` → ``R₃ᵢ``, ``A0`` → ``A₀``.
 
     Unicode subscripts rather than mathtext: as legible, and text is laid
-    out some twenty times faster. Names that are not a letter and a numeric
-    subscript (``FP``, ``O``) are returned as they are; anything after the first space is
-    kept as plain text (``F14 (cutting)`` → ``F₁₄ (cutting)``).
+    out some twenty times faster. A subscript with a letter Unicode has no
+    subscript for (``Fc3``: there is no subscript c) is set in upright
+    mathtext instead, ``$\\mathregular{F_{c3}}$``. A leading minus (``−F23``,
+    or ``-F23``) stays in front, as a true minus: ``−F₂₃``. Names that are
+    not a letter and a numeric subscript (``FP``, ``O``) are returned as
+    they are; anything after the first space is kept as plain text
+    (``Fc3 (cutting)`` → F_c3 and `` (cutting)``).
     """
     head, sep, rest = name.partition(" ")
     m = _NAME.match(head)
     if not m:
         return name
-    return m.group(1) + "".join(_SUB.get(ch, ch) for ch in m.group(2)) + sep + rest
+    sign, letter, index = m.groups()
+    sign = "−" if sign else ""
+    if all(ch in _SUB for ch in index):
+        return sign + letter + "".join(_SUB[ch] for ch in index) + sep + rest
+    # Only the name goes into mathtext, so a note after it keeps the text font and plain characters.
+    return sign + rf"$\mathregular{{{letter}_{{{index}}}}}$" + sep + rest
 
 
 def plain(text: str) -> str:
-    """Text with subscripts and mathtext markup undone: ``F₂₃ = 27 N`` → ``F23 = 27 N``."""
+    """Text with subscripts and mathtext markup undone: ``F₂₃ = 27 N`` → ``F23 = 27 N``.
+
+    ``$\\mathregular{F_{c3}}$ (cutting)`` → ``Fc3 (cutting)`` too (see :func:`sub`).
+    """
     text = "".join(_UNSUB.get(ch, ch) for ch in text)
-    return re.sub(r"[${}]|_(?=\{)", "", text)
+    return re.sub(r"\\mathregular|[${}]|_(?=\{)", "", text)
 
 
 def num(x: float, digits: int = 4) -> str:
@@ -390,6 +402,23 @@ def text_size(t, renderer) -> tuple[float, float]:
     return size
 
 
+_HA = {"left": 0.0, "center": 0.5, "right": 1.0}
+_VA = {"bottom": 0.0, "baseline": 0.0, "center": 0.5, "center_baseline": 0.5, "top": 1.0}
+
+
+def _text_box(t, renderer) -> tuple[float, float, float, float]:
+    """Display box (x0, y0, x1, y1) of an unrotated text, from its cached size, anchor and alignment.
+
+    ``get_window_extent`` lays the text out again; this is arithmetic once
+    :func:`text_size` has seen the string (the axes' transforms must be final).
+    """
+    w, h = text_size(t, renderer)
+    x, y = t.get_transform().transform(t.get_unitless_position())
+    x0 = x - w * _HA.get(t.get_ha(), 0.0)
+    y0 = y - h * _VA.get(t.get_va(), 0.0)
+    return float(x0), float(y0), float(x0 + w), float(y0 + h)
+
+
 def _hits_many(P, Q, W, boxes):
     """For each box (x0, y0, x1, y1) in ``boxes`` (n×4), how many segments P[k]–Q[k] cross it.
 
@@ -427,7 +456,9 @@ class Labeler:
     Each label has candidate positions ``(anchor, direction, pad)``: the text
     sits ``pad`` points from ``anchor`` (data coordinates) towards
     ``direction``, aligned so that it lies wholly on that side. Obstacles are
-    segments (arrows, bars, lines of action) and labels placed before.
+    segments (arrows, bars, lines of action), which a label may cross at a
+    price, and boxes (labels placed before, texts drawn elsewhere, a scale
+    bar), which it covers only when every spot covers one.
     :meth:`place` runs once the axes limits are final.
     """
 
@@ -437,6 +468,7 @@ class Labeler:
         self.segments = []
         self.boxes = []
         self.texts = []
+        self.fixed = []
 
     def segment(self, p, q, width=0.0):
         """An obstacle segment (data coordinates), ``width`` points wide."""
@@ -464,9 +496,18 @@ class Labeler:
         """Texts already on the axes that the labels must not cover."""
         self.texts += list(texts)
 
-    def box(self, x0, y0, x1, y1):
-        """An obstacle box in data coordinates (e.g. a text drawn elsewhere)."""
-        self.boxes.append(("data", (x0, y0, x1, y1)))
+    def box(self, x0, y0, x1, y1, pad=0.0):
+        """An obstacle box in data coordinates (e.g. a text drawn elsewhere), grown by ``pad`` points all round."""
+        self.boxes.append(("data", (x0, y0, x1, y1), float(pad)))
+
+    def keep_off(self, texts):
+        """Unrotated one-line texts the labels must not cover, measured by arithmetic when the labels are placed.
+
+        As :meth:`avoid`, without laying each text out again: its size is
+        cached by string (:func:`text_size`) and its box follows from its
+        anchor and alignment. For texts this module draws (scale bars).
+        """
+        self.fixed += list(texts)
 
     def place(self):
         ax = self.ax
@@ -486,14 +527,16 @@ class Labeler:
         axbox = TransformedBbox(ax.get_position(original=True), ax.figure.transSubfigure)
         room = np.array([axbox.x0, axbox.y0, axbox.x1, axbox.y1])
         placed = []
-        for kind, b in self.boxes:
+        for kind, b, pad in self.boxes:
             (x0, y0), (x1, y1) = to((b[0], b[1])), to((b[2], b[3]))
-            placed.append((min(x0, x1), min(y0, y1), max(x0, x1), max(y0, y1)))
+            g = pad * dpi / 72
+            placed.append((min(x0, x1) - g, min(y0, y1) - g, max(x0, x1) + g, max(y0, y1) + g))
         scale = ax.figure.dpi / 72.0
         renderer = renderer_of(ax.figure)
         for t in self.texts:
             bb = t.get_window_extent(renderer)
             placed.append((bb.x0, bb.y0, bb.x1, bb.y1))
+        placed += [_text_box(t, renderer) for t in self.fixed]
         grow = 1.5
         for t, candidates in self.items:
             # A label's size does not depend on where it goes: measure it once, then try every spot by arithmetic.
@@ -619,9 +662,10 @@ def nice_round(x: float) -> float:
     return float(best * d)
 
 
-def scale_bar(ax, at, length: float, value: float, *, s, unit_text="N", tick=None):
+def scale_bar(ax, at, length: float, value: float, *, s, unit_text="N", tick=None, labeler=None):
     """A scale bar: a bar ``length`` data units long, starting at ``at``, reading ``0 — value N``.
 
+    With a :class:`Labeler`, its labels keep off the bar and both numbers.
     Returns the artists.
     """
     x, y = map(float, at)
@@ -632,6 +676,10 @@ def scale_bar(ax, at, length: float, value: float, *, s, unit_text="N", tick=Non
     t0 = offset_text(ax, "0", (x, y), (-3, 0), ha="right", va="center", fontsize=s.small_size, color=s.ink)
     t1 = offset_text(ax, f"{num(value)} {unit_text}", (x + length, y), (3, 0), ha="left", va="center",
                      fontsize=s.small_size, color=s.ink)
+    if labeler is not None:
+        # Boxes, not a segment: a label may cross an arrow when it must, but it would hide the bar's reading.
+        labeler.box(x, y - tick, x + length, y + tick, pad=1.0)  # the lines' half width
+        labeler.keep_off([t0, t1])
     return [bar, ticks, t0, t1]
 
 

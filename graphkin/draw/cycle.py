@@ -30,7 +30,7 @@ from matplotlib.figure import Figure
 from ..analysis._turn import TURN
 from ..errors import GraphkinError
 from . import style as _style
-from ._common import Drawn, PanelAxes, line, markers, new_axes, num, sub
+from ._common import Drawn, PanelAxes, halo, line, markers, new_axes, num, sub
 
 SERIES = (_style.BLUE, _style.VERMILLION, _style.GREEN, _style.PURPLE, _style.ORANGE, _style.SKY_BLUE, _style.BLACK)
 """Colours of successive curves (Okabe–Ito, yellow left out: too faint on white)."""
@@ -72,6 +72,28 @@ def _polar_axes(ax, figsize=(5.0, 5.0)):
     if getattr(ax, "name", "") != "polar":
         raise GraphkinError("a polar plot needs a polar axes: fig.add_subplot(projection='polar')")
     return ax
+
+
+def _radial_labels(ax, curves, s):
+    """Put the radial tick labels of a polar plot along the emptiest of 8 rays between the 45° grid lines.
+
+    A fixed ray (matplotlib's 22.5°, or 112.5°) runs through the curves of
+    one mechanism or another, and their numbers are then hard to read. The
+    ray with the fewest curve points within 15° of it is chosen (112.5° on
+    a tie), and the labels get a white halo for whatever still crosses them.
+    ``curves`` is a list of (angle [rad], radius) arrays.
+    """
+    rays = 112.5 + 45.0 * np.arange(8)
+    angles = np.concatenate([np.ravel(a) for a, r in curves] + [np.zeros(0)])
+    radii = np.concatenate([np.ravel(r) for a, r in curves] + [np.zeros(0)])
+    angles = np.degrees(angles[np.isfinite(angles) & np.isfinite(radii)])
+    off = np.abs((angles[None, :] - rays[:, None] + 180.0) % 360.0 - 180.0)
+    crowd = np.count_nonzero(off < 15.0, axis=1)
+    ax.set_rlabel_position(float(rays[int(np.argmin(crowd))] % 360.0))
+    # Tick labels made later copy the first tick's properties, path effects included.
+    for tick in ax.yaxis.get_major_ticks():
+        tick.label1.set_path_effects([halo(2.2)])
+    ax.tick_params(labelsize=s.small_size)
 
 
 def _drawn(ax) -> Drawn:
@@ -222,8 +244,7 @@ def draw_polar_forces(cycle, names=None, *, ax=None, **style) -> Drawn:
         if np.isfinite(size).any():
             d.add(markers(ax, [angle[i]], [size[i]], color=color, ms=5, zorder=4))
     ax.set_ylim(0, 1.05 * top if top > 0 else 1.0)
-    ax.set_rlabel_position(112.5)
-    ax.tick_params(labelsize=s.small_size)
+    _radial_labels(ax, [(c.get_xdata(), c.get_ydata()) for c in d.curves.values()], s)
     ax.set_title("Joint forces |F| [N] against direction", fontsize=s.title_size, pad=14)
     ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.08), ncols=2, fontsize=s.small_size, framealpha=0.9)
     return d
@@ -249,11 +270,13 @@ def draw_shaking(cycle, *, ax=None, **style):
         ``"shaking moment"`` (input, moment [N·m] about the origin).
     """
     if ax is None:
-        fig = Figure(figsize=(11.0, 4.6), dpi=100)
+        # Constrained layout: the polar axes' title sits higher than a rectangular one's (above the 90° label),
+        # and fixed margins put it under the suptitle.
+        fig = Figure(figsize=(11.0, 4.6), dpi=100, layout="constrained")
         _shaking_force(cycle, fig.add_subplot(1, 2, 1, projection="polar"), **style)
         _shaking_moment(cycle, fig.add_subplot(1, 2, 2, axes_class=PanelAxes), **style)
         fig.suptitle(f"Shaking of the frame: {cycle.problem.title}", fontsize=_style.resolve(**style).suptitle_size)
-        fig.subplots_adjust(wspace=0.35)
+        fig.get_layout_engine().set(wspace=0.08)
         return fig
     if getattr(ax, "name", "") == "polar":
         return _shaking_force(cycle, ax, **style)
@@ -268,7 +291,7 @@ def _shaking_force(cycle, ax, **style) -> Drawn:
     d.curves["shaking force"] = d.add(line(ax, angle, size, color=s.unknown, lw=1.5, label="shaking force"))
     top = float(np.nanmax(size)) if np.isfinite(size).any() else 0.0
     ax.set_ylim(0, 1.05 * top if top > 0 else 1.0)
-    ax.tick_params(labelsize=s.small_size)
+    _radial_labels(ax, [(angle, size)], s)
     ax.set_title("Shaking force on the frame [N]", fontsize=s.title_size, pad=14)
     return d
 
@@ -290,7 +313,9 @@ def _shaking_moment(cycle, ax, **style) -> Drawn:
 # -- the flywheel's energy -------------------------------------------------------------------------
 
 def crossing_energy(flywheel) -> np.ndarray:
-    """Energy U = ∫ (T − T_avg) dθ from θ[0] at each crossing [J] (the extremes of U)."""
+    """Energy U = ∫ (T − T_avg) dθ from θ[0] at each crossing [J] (the extremes of U); empty without crossings."""
+    if not len(flywheel.crossings):
+        return np.zeros(0)  # a steady torque: U stays 0, and there is no extreme to mark
     before = np.concatenate([[0.0], flywheel.accumulated[:-1]])
     return flywheel.U_min - before.min(initial=0.0) + before
 
@@ -329,6 +354,7 @@ def draw_energy(flywheel, *, ax=None, **style) -> Drawn:
         d.curves["E"] = d.add(line(ax, [xE, xE], [lo, hi], color=s.found, lw=1.6, marker="_", ms=10, zorder=3))
         d.labels["E"] = d.add(ax.text(xE, 0.5 * (lo + hi), f"  E = {num(flywheel.E)} J", color=s.found,
                                       fontsize=s.label_size, va="center", ha="left" if xE < 250 else "right", zorder=5))
+        d.labels["E"].set_path_effects([halo()])  # the energy curve often runs through it
     ax.axhline(0.0, color=s.ink, lw=0.6)
     _input_axis(ax, True)
     ax.set_ylabel("energy taken from the shaft [J]")
@@ -406,13 +432,14 @@ def draw_cycle(cycle, *, Cs=None, **style) -> Figure:
     s = _style.resolve(**style)
     flywheel = cycle.flywheel(Cs) if Cs is not None else None
     ncols = 3 if flywheel is not None else 2
-    fig = Figure(figsize=(6.2 * ncols, 5.6), dpi=100)
+    # Constrained layout, as draw_shaking: titles, the polar legend below its axes and the suptitle all get room.
+    fig = Figure(figsize=(6.2 * ncols, 5.6), dpi=100, layout="constrained")
     draw_torque_curve(cycle, ax=fig.add_subplot(1, ncols, 1, axes_class=PanelAxes), flywheel=flywheel, **style)
     draw_polar_forces(cycle, ax=fig.add_subplot(1, ncols, 2, projection="polar"), **style)
     if flywheel is not None:
         draw_energy(flywheel, ax=fig.add_subplot(1, ncols, 3, axes_class=PanelAxes), **style)
     fig.suptitle(f"{cycle.problem.title}: {cycle.n} positions", fontsize=s.suptitle_size)
-    fig.subplots_adjust(left=0.06, right=0.98, bottom=0.2, top=0.84, wspace=0.3)
+    fig.get_layout_engine().set(wspace=0.06)
     return fig
 
 

@@ -249,8 +249,7 @@ def draw_free_body(construction, link: int, *, ax=None, force_scale=None, title=
     span = float(np.max(hi - lo))
     value = nice_round(0.22 * span * force_scale)
     bar_at = np.array([lo[0], lo[1] - 0.1 * span])
-    drawn += scale_bar(ax, bar_at, value / force_scale, value, s=s, tick=0.012 * span)
-    lab.segment(bar_at - [0.08 * span, 0], bar_at + [value / force_scale + 0.2 * span, 0], 14.0)  # the bar and its numbers
+    drawn += scale_bar(ax, bar_at, value / force_scale, value, s=s, tick=0.012 * span, labeler=lab)
     extent += [bar_at, bar_at + [value / force_scale, 0]]
     set_limits(ax, extent, margin=0.1, existing=existing)
     lab.place()

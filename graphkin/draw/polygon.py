@@ -127,8 +127,7 @@ def draw_force_polygon(step, *, scale: float, ax=None, origin=(0.0, 0.0), values
     lo, hi = verts.min(axis=0), verts.max(axis=0)
     value = nice_round(0.3 * span * scale)
     bar_at = np.array([lo[0], lo[1] - 0.16 * span])
-    drawn += scale_bar(ax, bar_at, value / scale, value, s=s, tick=0.015 * span)
-    lab.segment(bar_at - [0.08 * span, 0], bar_at + [value / scale + 0.2 * span, 0], 14.0)  # the bar and its numbers
+    drawn += scale_bar(ax, bar_at, value / scale, value, s=s, tick=0.015 * span, labeler=lab)
     set_limits(ax, list(verts) + [bar_at, bar_at + [value / scale, 0]], margin=0.2, existing=existing)
     lab.place()
     return drawn
