@@ -167,7 +167,7 @@ def draw_torque_curve(cycle, *, ax=None, flywheel=None, **style) -> Drawn:
             Tm = None
         if Tm is not None:
             d.curves["smoothed"] = d.add(line(ax, np.degrees(flywheel.theta), Tm, color=s.found, lw=1.6,
-                                              label=f"motor with flywheel (C_s = {num(flywheel.Cs, 3)})", zorder=3))
+                                              label=f"motor with flywheel (Cₛ = {num(flywheel.Cs, 3)})", zorder=3))
     _input_axis(ax, crank)
     ax.set_ylabel(f"driving {'torque' if crank else 'force'} {sub(name)} [{unit}]")
     ax.set_title(f"{'Driving torque' if crank else 'Driving force'} over the cycle", fontsize=s.title_size)
@@ -341,10 +341,10 @@ def draw_energy(flywheel, *, ax=None, **style) -> Drawn:
     ax = _rect_axes(ax)
     d = _drawn(ax)
     x = np.degrees(flywheel.theta)
-    d.curves["energy"] = d.add(line(ax, x, flywheel.U, color=s.driver, lw=1.8, label="∫ (T − T_avg) dθ"))
+    d.curves["energy"] = d.add(line(ax, x, flywheel.U, color=s.driver, lw=1.8, label=r"∫ (T − $\mathregular{T_{avg}}$) dθ"))
     Uc = crossing_energy(flywheel)
     xc = np.degrees(flywheel.crossings)
-    d.curves["crossings"] = d.add(markers(ax, xc, Uc, color=s.ink, ms=4.5, label="T = T_avg (crossings)", zorder=4))
+    d.curves["crossings"] = d.add(markers(ax, xc, Uc, color=s.ink, ms=4.5, label=r"T = $\mathregular{T_{avg}}$ (crossings)", zorder=4))
     if len(Uc):
         i_lo, i_hi = int(np.argmin(Uc)), int(np.argmax(Uc))
         lo, hi = float(Uc[i_lo]), float(Uc[i_hi])
@@ -358,8 +358,8 @@ def draw_energy(flywheel, *, ax=None, **style) -> Drawn:
     ax.axhline(0.0, color=s.ink, lw=0.6)
     _input_axis(ax, True)
     ax.set_ylabel("energy taken from the shaft [J]")
-    ax.set_title(f"Flywheel: E = {num(flywheel.E)} J, I_s = {num(flywheel.I_s)} kg·m² "
-                 f"(C_s = {num(flywheel.Cs, 3)}, ω = {num(flywheel.omega_avg)} rad/s)", fontsize=s.title_size)
+    ax.set_title(f"Flywheel: E = {num(flywheel.E)} J, Iₛ = {num(flywheel.I_s)} kg·m² "
+                 f"(Cₛ = {num(flywheel.Cs, 3)}, ω = {num(flywheel.omega_avg)} rad/s)", fontsize=s.title_size)
     ax.legend(loc="best", fontsize=s.small_size, framealpha=0.9)
     return d
 
@@ -407,7 +407,7 @@ def draw_joint_force_index(jfi, *, ax=None, **style) -> Drawn:
     ax.set_ylim(0, 1.1 * max(float(finite.max()) if finite.size else 0.0, jfi.limit))
     _input_axis(ax, crank)
     ax.set_ylabel(f"joint-force index{unit}")
-    ax.set_title("Joint-force index max|F_ij| / |F_ext| (static)", fontsize=s.title_size)
+    ax.set_title("Joint-force index max|Fᵢⱼ| / |Fₑₓₜ| (static)", fontsize=s.title_size)
     ax.legend(loc="best", fontsize=s.small_size, framealpha=0.9)
     return d
 
