@@ -13,7 +13,7 @@ from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.patches import ArrowStyle, FancyArrowPatch
 from matplotlib.path import Path
-from matplotlib.transforms import ScaledTranslation
+from matplotlib.transforms import ScaledTranslation, TransformedPatchPath
 
 MM = 1e3
 """Metres to millimetres: every mechanism drawing is in mm."""
@@ -146,6 +146,7 @@ def line(ax, x, y, **props):
     x = np.atleast_1d(np.asarray(x, float))
     y = np.atleast_1d(np.asarray(y, float))
     artist = Line2D(x, y, **props)
+    _clip_to(ax, artist)
     ax.add_artist(artist)
     if x.size:
         ax.update_datalim(np.column_stack([x, y]))
@@ -153,6 +154,25 @@ def line(ax, x, y, **props):
         request = getattr(ax, "_request_autoscale_view", None)
         request() if request is not None else ax.autoscale_view()
     return artist
+
+
+def _clip_to(ax, artist):
+    """Clip ``artist`` to the axes, as ``add_artist`` would, with one clip path made once per axes.
+
+    ``add_artist`` clips each new artist to the axes patch, building a fresh
+    transformed box for every one of the hundred-odd artists an explorer
+    update adds; an artist that already has this path is left alone.
+    """
+    if artist.get_clip_on():
+        artist.set_clip_path(_clip_path(ax))
+
+
+def _clip_path(ax) -> TransformedPatchPath:
+    """The axes patch as a clip path, made once per axes (see :func:`_clip_to`)."""
+    patch, path = getattr(ax, "_graphkin_clip", (None, None))
+    if patch is not ax.patch:
+        patch, path = ax._graphkin_clip = (ax.patch, TransformedPatchPath(ax.patch))
+    return path
 
 
 def markers(ax, x, y, marker="o", **props):
@@ -167,6 +187,7 @@ def put(ax, patch, points):
     in display coordinates, most of the cost of drawing one; the arrow's
     ends are extent enough.
     """
+    _clip_to(ax, patch)
     ax.add_artist(patch)
     ax.update_datalim(np.asarray(points, float).reshape(-1, 2))
     return patch
@@ -322,7 +343,8 @@ def offset_text(ax, text, anchor, shift_pt, **props):
     shows, as a plain Text: an Annotation recomputes its offset transform on
     every draw, a cost the explorer pays for each of its labels.
     """
-    t = ax.text(float(anchor[0]), float(anchor[1]), text, transform=_offset(ax, shift_pt), clip_on=False, **props)
+    t = ax.text(float(anchor[0]), float(anchor[1]), text, transform=_offset(ax, shift_pt), clip_on=False,
+                clip_path=_clip_path(ax), **props)
     return t
 
 
@@ -538,8 +560,11 @@ class Labeler:
             placed.append((bb.x0, bb.y0, bb.x1, bb.y1))
         placed += [_text_box(t, renderer) for t in self.fixed]
         grow = 1.5
+        # Every label's candidate boxes first: a label's size does not depend on where it goes, and
+        # the segments it would cross do not depend on the other labels, so one vectorised test
+        # serves them all; only the overlaps with labels placed before need the loop.
+        spots = []
         for t, candidates in self.items:
-            # A label's size does not depend on where it goes: measure it once, then try every spot by arithmetic.
             w, h = text_size(t, renderer)
             n = len(candidates)
             A = to(np.array([a for a, _, _ in candidates], float).reshape(n, 2))
@@ -553,17 +578,23 @@ class Labeler:
             fy = np.where(D[:, 1] > 0.2, 0.0, np.where(D[:, 1] < -0.2, 1.0, 0.5))
             x0 = XY[:, 0] - w * fx
             y0 = XY[:, 1] - h * fy
-            boxes = np.column_stack([x0 - grow, y0 - grow, x0 + w + grow, y0 + h + grow])
-            score = 10.0 * _hits_many(P, Q, W, boxes)
+            spots.append((D, pads, np.column_stack([x0 - grow, y0 - grow, x0 + w + grow, y0 + h + grow])))
+        if not spots:
+            return
+        every = np.concatenate([boxes for _, _, boxes in spots])
+        hits = np.split(10.0 * _hits_many(P, Q, W, every), np.cumsum([len(b) for _, _, b in spots])[:-1])
+        outside = (np.maximum(0.0, room[0] - every[:, 0]) + np.maximum(0.0, every[:, 2] - room[2])
+                   + np.maximum(0.0, room[1] - every[:, 1]) + np.maximum(0.0, every[:, 3] - room[3]))
+        outside = np.split(3.0 * outside, np.cumsum([len(b) for _, _, b in spots])[:-1])
+        for (t, candidates), (D, pads, boxes), hit, out in zip(self.items, spots, hits, outside):
+            score = hit + out
             if placed:
                 o = np.asarray(placed, float)
                 overlap = ~((boxes[:, None, 2] < o[None, :, 0]) | (boxes[:, None, 0] > o[None, :, 2])
                             | (boxes[:, None, 3] < o[None, :, 1]) | (boxes[:, None, 1] > o[None, :, 3]))
                 score = score + 200.0 * np.count_nonzero(overlap, axis=1)
-            outside = (np.maximum(0.0, room[0] - boxes[:, 0]) + np.maximum(0.0, boxes[:, 2] - room[2])
-                       + np.maximum(0.0, room[1] - boxes[:, 1]) + np.maximum(0.0, boxes[:, 3] - room[3]))
-            score = score + 3.0 * outside
             # The first spot, in order of preference, that covers nothing ends the search; the best so far wins.
+            n = len(score)
             clean = np.flatnonzero(score == 0)
             last = int(clean[0]) + 1 if len(clean) else n
             k = int(np.argmin(score[:last] + 0.3 * np.arange(last)))
