@@ -76,6 +76,10 @@ def _solve(args) -> int:
     return 2 if len(bad) else 0
 
 
+PROGRESS_DELAY = 1.0
+"""Work that takes longer than this [s] shows its progress on stderr."""
+
+
 def _figures(problem, result, graphical, figure, steps, say):
     """Write the side-by-side figure(s) and the step frames; say where they went.
 
@@ -92,7 +96,8 @@ def _figures(problem, result, graphical, figure, steps, say):
         raise GraphkinError(f"--figure {figure}: the file must end in .png, .svg or .pdf")
     many = result.n > 1
     drawn = [(i, c) for i, c in enumerate(graphical) if c is not None and c.valid]
-    for i, c in tqdm(drawn, desc="graphkin: drawing", unit="position", delay=1.0, file=sys.stderr, leave=False):
+    for i, c in tqdm(drawn, desc="graphkin: drawing", unit="position", delay=PROGRESS_DELAY, file=sys.stderr,
+                      leave=False, disable=None):  # disable=None: no bar when stderr is not a terminal
         tag = f"_{i + 1}" if many else ""
         if figure:
             path = Path(figure)
@@ -332,8 +337,9 @@ class _Progress:
     written if the work is done within ``delay`` seconds.
     """
 
-    def __init__(self, label: str, delay: float = 1.0, every: float = 0.25, stream=None):
-        self.label, self.delay, self.every = label, delay, every
+    def __init__(self, label: str, delay: float | None = None, every: float = 0.25, stream=None):
+        self.label, self.every = label, every
+        self.delay = PROGRESS_DELAY if delay is None else delay
         self.stream = stream or sys.stderr
         self.shown = False
 

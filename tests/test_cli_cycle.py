@@ -1,6 +1,7 @@
 """``graphkin cycle``: the summary equals the analysis API's numbers, --json, --figure, bad input."""
 
 import io
+import sys
 import json
 import math
 import re
@@ -116,3 +117,19 @@ def test_progress_line_only_after_the_delay():
 
         time.sleep(0.05)
     assert p.shown and slow.getvalue().startswith("\rgraphkin: slow…") and slow.getvalue().endswith(" s\n")
+
+
+def test_a_batch_of_figures_shows_a_progress_bar_on_a_terminal(monkeypatch, tmp_path):
+    """One tick per position drawn, on stderr, when it is a terminal and the batch outlasts the delay."""
+    import graphkin.cli as cli
+
+    class Terminal(io.StringIO):
+        def isatty(self):
+            return True
+
+    err = Terminal()
+    monkeypatch.setattr(cli, "PROGRESS_DELAY", 0.0)
+    monkeypatch.setattr(sys, "stderr", err)
+    assert main(["solve", "strip_cutter", "--at", "124 deg,140 deg", "--figure", str(tmp_path / "f.png")]) == 0
+    assert "graphkin: drawing" in err.getvalue() and "2/2" in err.getvalue()
+    assert (tmp_path / "f_1.png").exists() and (tmp_path / "f_2.png").exists()
