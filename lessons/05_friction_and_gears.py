@@ -712,8 +712,8 @@ for number, step in enumerate(cg.steps, start=1):
     print(f"Step {number} [{step.kind}] link {step.link}: {step.caption}")
 
 # %%
-(pressure,) = [s for s in steps_of(cg, "two-force", 3) if s.lines[0].name == "F23"]  # the tooth force's line
-(couple,) = [s for s in steps_of(cg, "two-force", 3) if s.lines[0].name == "F13"]  # the pivot force's line
+(pressure,) = steps_of(cg, "line", 3)  # the tooth force's line: the pressure line
+(couple,) = steps_of(cg, "couple", 3)  # the pivot force's line: F13 = −F23, a couple
 assert not steps_of(cg, "three-force") and "only a couple" in couple.caption
 (line,) = pressure.lines
 print("pitch point P =", np.array(pressure.points["P"]) * 1e3, "mm")

@@ -144,7 +144,8 @@ def test_construction_values_answer_both_orders():
 def test_a_gear_loaded_by_a_couple_alone_is_no_three_force_member():
     """Gearset (seed 001): the pinion carries only the input torque, so tooth and pivot forces are a couple."""
     c = construct_forces(catalog.load("gearset").kinematics())
-    couple = [s for s in c.steps if s.link == 3 and "couple" in s.caption and s.kind == "two-force"]
+    couple = [s for s in c.steps if s.link == 3 and "couple" in s.caption and s.kind == "couple"]
+    assert [s.kind for s in c.steps if s.link == 3][:3] == ["resultant", "line", "couple"]  # pressure line, then the couple
     assert couple and "three-force" not in {s.kind for s in c.steps if s.link == 3}
     F_mesh, F_pivot = c.force(2, 3), c.force(1, 3)
     np.testing.assert_allclose(F_pivot, -F_mesh, atol=1e-9 * np.hypot(*F_mesh))

@@ -17,6 +17,8 @@ KIND_TITLE = {
     "resultant": "resultant of the known loads",
     "two-force": "two-force member",
     "three-force": "three-force member",
+    "line": "a known line of action",
+    "couple": "a couple balanced by a couple",
     "polygon": "force polygon",
     "superpose": "superposition",
     "driver": "the input link",

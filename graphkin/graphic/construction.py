@@ -66,8 +66,11 @@ class Step:
     Attributes
     ----------
     kind : str
-        ``"resultant"``, ``"two-force"``, ``"three-force"``, ``"polygon"``,
-        ``"superpose"``, ``"driver"`` or ``"note"``.
+        ``"resultant"``, ``"two-force"`` (a member with two forces: they
+        share one line), ``"three-force"``, ``"couple"`` (a member loaded by a
+        couple alone: its two forces are an opposite couple), ``"line"`` (a
+        force whose line of action is known, e.g. a gear's pressure line),
+        ``"polygon"``, ``"superpose"``, ``"driver"`` or ``"note"``.
     caption : str
         What a student does in this step, in words.
     link : int or None

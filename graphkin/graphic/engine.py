@@ -381,7 +381,7 @@ class _Builder:
         d /= abs(d)
         nW, nF = self.name(g.j, g.k), self.name(g.b, g.k)
         Rk = self.rname[g.k]
-        self.steps.append(Step("two-force",
+        self.steps.append(Step("line",
                                f"The tooth force {nW} lies on the pressure line through the pitch point P, inclined "
                                f"{math.degrees(mesh.pressure_angle):.4g}° to the common tangent, on the flank that "
                                f"opposes the load on gear {g.k}.", g.k, (Line(nW, _xy(P), _xy(d)),), {"P": _xy(P)}))
@@ -399,7 +399,7 @@ class _Builder:
         # nil, e.g. an input torque) is no three-force member: the tooth and
         # pivot forces are then the opposite couple, equal and opposite.
         if abs(R.F) <= 1e-9 * abs(F_W):
-            self.steps.append(Step("two-force", f"Gear {g.k} carries only a couple ({R.M0:.4g} N·m): {nW} and the pivot "
+            self.steps.append(Step("couple", f"Gear {g.k} carries only a couple ({R.M0:.4g} N·m): {nW} and the pivot "
                                    f"force {nF} form the opposite couple, so {nF} = −{nW}, through the centre "
                                    f"{g.pivot.point}.", g.k, pivot_line, points))
             poly = (Arrow(nW, _xy(F_W), False), Arrow(nF, _xy(F_piv), False))
