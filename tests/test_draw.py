@@ -512,3 +512,12 @@ def test_figures_users_see_most_look_as_before(tmp_path, name):
         baseline.write_bytes(actual.read_bytes())
     assert baseline.exists(), f"missing baseline {baseline}"
     assert compare_images(str(baseline), str(actual), tol=12) is None
+
+
+def test_a_name_two_links_use_for_different_points_is_told_apart():
+    """The strip cutter's blades are both called C (on links 3 and 4), a few mm apart: C₃ and C₄."""
+    problem = catalog.load("strip_cutter")
+    c = construct_forces(problem.kinematics(at=[math.radians(140.0)]), 0)
+    texts = sorted(t.get_text() for t in draw.draw_mechanism(c).labels.values())
+    assert "C₃" in texts and "C₄" in texts and "C" not in texts
+    assert "B" in texts  # B joins links 3 and 4 at one point: one plain label

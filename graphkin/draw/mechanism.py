@@ -372,6 +372,13 @@ def _candidates(X, away):
     return out
 
 
+def _point_name(name: str, links, shared) -> str:
+    """A point's label; a name that two links use for different points gets the link: ``C₃``, ``C₄``."""
+    if name not in shared or len(links) != 1:
+        return sub(name)
+    return sub(f"{name}{links[0]}") if name.isalpha() and len(name) == 1 else f"{sub(name)} (link {links[0]})"
+
+
 def _label_points(ax, geom, c, s, lab, drawn, faint, emphasis, only=None):
     seen = {}
     for n, pts in geom.P.items():
@@ -380,6 +387,11 @@ def _label_points(ax, geom, c, s, lab, drawn, faint, emphasis, only=None):
         for name, X in pts.items():
             key = (name, round(float(X[0]), 6), round(float(X[1]), 6))
             seen.setdefault(key, []).append(n)
+    # Two links may use one name for different points (the strip cutter's blades, C on 3 and on 4).
+    places = {}
+    for name, _, _ in seen:
+        places[name] = places.get(name, 0) + 1
+    shared = {name for name, count in places.items() if count > 1}
     # A centre of mass on a named point is named with it: "B (G4)".
     tol = 1e-6 * geom.size
     g_at = {}
@@ -396,7 +408,7 @@ def _label_points(ax, geom, c, s, lab, drawn, faint, emphasis, only=None):
         if np.hypot(*away) <= tol:
             away = np.array([-1.0, 0.4])
         gs = [n for n, k in g_at.items() if k == (name, x, y)]
-        text = sub(name) + "".join(f" ({sub(f'G{n}')})" for n in gs)
+        text = _point_name(name, links, shared) + "".join(f" ({sub(f'G{n}')})" for n in gs)
         t = lab.label(text, _candidates(X, away), size=s.label_size)
         if faint and emphasis not in links:
             t.set_alpha(s.faint_alpha + 0.2)
