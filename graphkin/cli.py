@@ -263,6 +263,8 @@ def _peak_of(values, q, lowest=False):
 
 def format_cycle(cycle, data: dict) -> str:
     """The text summary of ``graphkin cycle``, with units, from :func:`cycle_data`."""
+    from .analysis.cycle import switching_angles
+
     mech = cycle.problem.mechanism
     crank = mech.driver.kind == "crank"
     unit = "N·m" if crank else "N"
@@ -280,7 +282,7 @@ def format_cycle(cycle, data: dict) -> str:
              f"{cycle.n} position{'s' * (cycle.n != 1)}, {span}{' (one full turn)' if cycle.closed else ''}"]
     if crank:
         lines[-1] += f", ω = {float(np.mean(cycle.q_dot)):.6g} rad/s"
-    ends = sorted({b for load in mech.loads if load.active is not None for b in (load.active.start, load.active.stop)})
+    ends = switching_angles(cycle.problem)
     if ends:
         where = ", ".join(_where(cycle, b).split(" = ")[1] for b in ends)
         lines.append(f"loads switch on or off at {where}: each sampled just before and just after")

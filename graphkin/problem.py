@@ -91,10 +91,10 @@ class Problem:
         """
         from dataclasses import replace
 
-        rate = {"q_dot": q_dot, "q_ddot": self.q_ddot[0] if q_ddot is None else q_ddot}
-        for key, value in rate.items():
-            if isinstance(value, bool) or not isinstance(value, (int, float, np.number)) or not np.isfinite(value):
-                raise GraphkinError(f"{self.name}: {key} must be a finite number (SI), got {value!r}")
+        from .model.link import _finite
+
+        rate = {"q_dot": _finite(q_dot, f"{self.name}: q_dot", "SI"),
+                "q_ddot": _finite(self.q_ddot[0] if q_ddot is None else q_ddot, f"{self.name}: q_ddot", "SI")}
         if self.given:
             # Given ω, α, a_G or v_G belong to the file's speed; at another speed they would be silently wrong.
             raise GraphkinError(f"{self.name}: it gives kinematic values ([given] in the file) that hold at its own"
@@ -103,8 +103,7 @@ class Problem:
         crank = self.mechanism.driver.kind == "crank"
         speed = f"{rate['q_dot'] * 30 / np.pi:.4g} rpm" if crank else f"{rate['q_dot']:.4g} m/s"
         title = f"{self.title} (driven at {speed})" if self.title else ""
-        return replace(self, q_dot=np.full(m, float(rate["q_dot"])), q_ddot=np.full(m, float(rate["q_ddot"])),
-                       title=title)
+        return replace(self, q_dot=np.full(m, rate["q_dot"]), q_ddot=np.full(m, rate["q_ddot"]), title=title)
 
     def with_friction(self, mu: float) -> "Problem":
         """The same problem with Coulomb coefficient μ (≥ 0) at every sliding pair; 0 removes friction.

@@ -147,7 +147,8 @@ def solution(problem, result: ForceAnalysis, graphical: list | None = None) -> d
     }
 
 
-def _p(v, unit="N", digits=4):
+def polar_text(v, unit="N", digits=4) -> str:
+    """A vector as the books print it: ``27.06 N ∠ -73.78°``."""
     size, angle = polar(v)
     return f"{size:.{digits}g} {unit} ∠ {angle:.2f}°"
 
@@ -177,7 +178,7 @@ def format_solution(problem, result: ForceAnalysis, graphical: list | None = Non
         out.append("  Kinematics")
         out.append(f"    {'link':<6}{'θ [deg]':>10}{'ω [rad/s]':>12}{'α [rad/s²]':>13}   a_G [m/s²]")
         for link, s in entry["links"].items():
-            out.append(f"    {link:<6}{math.degrees(s['theta']):>10.3f}{s['omega']:>12.4f}{s['alpha']:>13.4f}   {_p(s['a_G'], 'm/s²')}")
+            out.append(f"    {link:<6}{math.degrees(s['theta']):>10.3f}{s['omega']:>12.4f}{s['alpha']:>13.4f}   {polar_text(s['a_G'], 'm/s²')}")
         out.append("  Inertia loads (d'Alembert: F_i = −m a_G at G, T_i = −I_G α, h = |T_i|/|F_i|)")
         for link, s in entry["links"].items():
             if mech.link(int(link)).mass == 0:
@@ -186,12 +187,12 @@ def format_solution(problem, result: ForceAnalysis, graphical: list | None = Non
             h = "—" if s["h"] is None else f"{s['h'] * 1e3:.4g} mm"
             T = s["inertia_torque"]
             sense = "CCW" if T > 0 else "CW" if T < 0 else ""
-            out.append(f"    link {link}: F_i = {_p(s['inertia_force'])}   T_i = {T:.4g} N·m {sense}   h = {h}")
+            out.append(f"    link {link}: F_i = {polar_text(s['inertia_force'])}   T_i = {T:.4g} N·m {sense}   h = {h}")
         out.append("  Joint forces")
         for a, b in result.forces:
             name, back = result.name_of(a, b), result.name_of(b, a)
             F = entry["forces"][name]
-            out.append(f"    {name:<5} = ({F[0]:>10.4f}, {F[1]:>10.4f}) N = {_p(F):<24} {back} = −{name}")
+            out.append(f"    {name:<5} = ({F[0]:>10.4f}, {F[1]:>10.4f}) N = {polar_text(F):<24} {back} = −{name}")
             if name in entry["prismatic"]:
                 s = entry["prismatic"][name]
                 where = "—" if s["offset"] is None else f"{s['offset'] * 1e3 + 0.0:.4g} mm from {s['slider_point']} along the guide"
@@ -201,7 +202,7 @@ def format_solution(problem, result: ForceAnalysis, graphical: list | None = Non
             sense = "CCW" if d["value"] > 0 else "CW" if d["value"] < 0 else ""
             out.append(f"  Driver: {d['name']} = {d['value']:.4f} N·m {sense}")
         else:
-            out.append(f"  Driver: {d['name']} = {_p(d['vector'])} ({d['value']:.4f} N along the guide)")
+            out.append(f"  Driver: {d['name']} = {polar_text(d['vector'])} ({d['value']:.4f} N along the guide)")
         if "graphical" in entry:
             out.extend(_format_graphical(entry, crank))
     return "\n".join(out)
@@ -221,6 +222,6 @@ def _format_graphical(entry, crank) -> list[str]:
             a, c = entry["driver"]["value"], g["driver"]["value"]
             out.append(f"    {name:<6}{a:>22.4f} {unit:<3}{c:>22.4f} {unit:<3}{rel:>11.1e}")
         else:
-            out.append(f"    {name:<6}{_p(entry['forces'][name]):>26}{_p(g['forces'][name]):>26}{rel:>11.1e}")
+            out.append(f"    {name:<6}{polar_text(entry['forces'][name]):>26}{polar_text(g['forces'][name]):>26}{rel:>11.1e}")
     out += [f"    warning: {w}" for w in g["warnings"]]
     return out

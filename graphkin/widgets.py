@@ -107,11 +107,10 @@ def _assembling_span(problem, q0: float, n: int) -> tuple[float, float]:
 
 
 def _cell(v) -> str:
-    """A force as the books print it, for the table: ``1972 N ∠ −73.78°``."""
-    from .report import polar
+    """A force for the table, with a true minus: ``1972 N ∠ −73.78°`` (``0 N`` when there is none)."""
+    from .report import polar_text
 
-    size, angle = polar(v)
-    return f"{size:.4g} N ∠ {angle:.2f}°".replace("-", "−") if size else "0 N"
+    return polar_text(v).replace("-", "−") if np.any(v) else "0 N"
 
 
 def _table(construction, analytical) -> str:

@@ -60,6 +60,12 @@ SWITCH = 1e-9
 """Half-width of the pair of samples put either side of a switching angle [rad] (or of a slider's span)."""
 
 
+def switching_angles(problem: "Problem") -> list[float]:
+    """Where a load that acts over part of the cycle switches on or off (input units, ascending, no repeats)."""
+    return sorted({b for load in problem.mechanism.loads if load.active is not None
+                   for b in (load.active.start, load.active.stop)})
+
+
 def switching_samples(problem: "Problem", q: np.ndarray) -> np.ndarray:
     """``q`` with two more samples, just before and just after, each place a load switches on or off.
 
@@ -76,20 +82,19 @@ def switching_samples(problem: "Problem", q: np.ndarray) -> np.ndarray:
     rates are constant and it gives no kinematic values per position.
     """
     q = np.asarray(q, dtype=float)
-    loads = [load for load in problem.mechanism.loads if load.active is not None]
-    if not loads or len(q) < 2 or not np.all(np.diff(q) > 0):
+    ends = switching_angles(problem)
+    if not ends or len(q) < 2 or not np.all(np.diff(q) > 0):
         return q
     crank = problem.mechanism.driver.kind == "crank"
     delta = SWITCH if crank else SWITCH * (q[-1] - q[0])
     end = q[0] + TURN if crank and closing_step(q) is not None else q[-1]
     extra = []
-    for load in loads:
-        for b in (load.active.start, load.active.stop):
-            for c in (b - delta, b + delta):
-                if crank:
-                    c = q[0] + (c - q[0]) % TURN
-                if q[0] < c < end:
-                    extra.append(c)
+    for b in ends:
+        for c in (b - delta, b + delta):
+            if crank:
+                c = q[0] + (c - q[0]) % TURN
+            if q[0] < c < end:
+                extra.append(c)
     return np.unique(np.concatenate([q, extra]))
 
 
