@@ -16,13 +16,17 @@ from graphkin.errors import GraphkinError
 from graphkin.graphic import construct_forces
 from graphkin.model import Prismatic
 
-r, l, e = 0.06, 0.2, 0.02
+PROBLEM = catalog.load("slider_crank_friction")
+_mech = PROBLEM.mechanism
+r = _mech.link(2).points["A"][0]  # crank O2A, along link 2's x-axis [m]
+l = _mech.link(3).points["B"][0]  # rod AB [m]
+e = _mech.link(1).points["E"][1]  # the guide's line passes through E, this far above O2 [m]
 DEAD_CENTRES = np.array([math.asin(e / (l + r)), math.pi + math.asin(e / (l - r))])
 
 
 @pytest.fixture(scope="module")
 def problem():
-    return catalog.load("slider_crank_friction")
+    return PROBLEM
 
 
 def test_the_slider_is_still_at_the_dead_centres(problem):
