@@ -229,11 +229,20 @@ def load_problem(source: str | Path, *, name: str | None = None) -> Problem:
 
 def parse_problem(text: str, *, file: str = "<problem>") -> Problem:
     """Build a :class:`Problem` from TOML text."""
-    rd = _Reader(file)
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise ProblemFileError(file, "", f"is not valid TOML ({exc})") from None
+    return build_problem(data, file=file)
+
+
+def build_problem(data: Mapping[str, Any], *, file: str = "<problem>") -> Problem:
+    """Build a :class:`Problem` from a problem file's TOML already read into a dict.
+
+    Exercises use it to solve a variant: the base file's data with some
+    values replaced by the strings the student is shown.
+    """
+    rd = _Reader(file)
     rd.table(data, "", _TOP)
     links = [_frame(rd, data)] + [_link(rd, t, f"links[{i}]") for i, t in enumerate(_list(rd, data, "links"))]
     joints = [_joint(rd, t, f"joints[{i}]") for i, t in enumerate(_list(rd, data, "joints"))]

@@ -19,6 +19,7 @@ angular_acceleration   rad/s^2     rad/s^2, deg/s^2, rpm/s
 force                  N           N, kN
 torque                 N*m         N*m, N*mm, kN*m
 moment_of_inertia      kg*m^2      kg*m^2, kg*mm^2
+energy                 J           J, kJ, N*m (exercise answers)
 density                kg/m^3      kg/m^3, g/cm^3
 dimensionless          (none)      0.3, "0.3", "30 percent"
 =====================  ==========  =====================================
@@ -91,6 +92,7 @@ DIMENSIONS: dict[str, str] = {
     "force": "[mass] * [length] / [time] ** 2",
     "torque": "[mass] * [length] ** 2 / [time] ** 2",
     "moment_of_inertia": "[mass] * [length] ** 2",
+    "energy": "[mass] * [length] ** 2 / [time] ** 2",
     "density": "[mass] / [length] ** 3",
     "dimensionless": "[]",
 }
@@ -108,6 +110,7 @@ SI_UNITS: dict[str, str] = {
     "force": "N",
     "torque": "N*m",
     "moment_of_inertia": "kg*m^2",
+    "energy": "J",
     "density": "kg/m^3",
     "dimensionless": "",
 }
@@ -134,6 +137,7 @@ _EXAMPLES: dict[str, tuple[str, str]] = {
     "force": ("2000", "N"),
     "torque": ("50", "N*m"),
     "moment_of_inertia": ("0.1", "kg*m^2"),
+    "energy": ("240", "J"),
     "density": ("7850", "kg/m^3"),
     "dimensionless": ("0.3", ""),
 }
@@ -155,6 +159,11 @@ _MAX_UNIT_CHARS = 60
 _MAX_RANGE_POINTS = 1_000_000
 # Relative tolerance for "stop lands on the grid" and "stop is a full turn".
 _GRID_RTOL = 1e-9
+# Strings already converted, (text, dimension) -> SI value: exercise variants
+# re-read the same file hundreds of times, and pint takes ~50 µs a value.
+# Only successes are kept, so every error still names its own file and field.
+_CONVERTED: dict[tuple[str, str], float] = {}
+_MAX_CONVERTED = 10_000
 # Polar components smaller than this times the magnitude are set to 0.0, so
 # that {magnitude = "5 N", angle = "90 deg"} gives exactly (0.0, 5.0).
 _POLAR_ZERO_RTOL = 1e-13
@@ -390,6 +399,9 @@ def _scalar_si(value: Any, dimension: str, file: str, field: str) -> float:
             f"got a {_type_name(value)}",
         )
 
+    known = _CONVERTED.get((value, dimension))
+    if known is not None:
+        return known
     raw = value.strip()
     match = _NUMBER_RE.match(value)
     if not raw or match is None or re.search(r"\d,\d", value):
@@ -425,8 +437,11 @@ def _scalar_si(value: Any, dimension: str, file: str, field: str) -> float:
     unit = _parse_unit(unit_text, raw, file, field)
     _check_unit(unit, raw, dimension, file, field)
     ureg = registry()
-    si = ureg.Quantity(x, unit).m_as(SI_UNITS[dimension] or "dimensionless")
-    return _finite_si(float(si), raw, file, field)
+    si = _finite_si(float(ureg.Quantity(x, unit).m_as(SI_UNITS[dimension] or "dimensionless")), raw, file, field)
+    if len(_CONVERTED) >= _MAX_CONVERTED:
+        _CONVERTED.clear()
+    _CONVERTED[(value, dimension)] = si
+    return si
 
 
 def _finite_si(x: float, raw: str, file: str, field: str) -> float:

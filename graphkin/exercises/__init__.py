@@ -1,0 +1,89 @@
+"""Exercises with per-student data, graded answers and feedback that teaches.
+
+An exercise (a TOML file, ``docs/exercises.md``) is a base problem, the values
+that vary from student to student, and the questions. For each student the
+values are drawn from a stable hash of (exercise, student id, course secret);
+the answers are solved from the data as the student sees them; the grader
+reads answers as students type them (``"27.06 N ∠ −73.78°"``, ``"108.9 N·m CCW"``)
+and names the slip when one is wrong.
+
+Every result is plain data (dicts of str, float, list), for a handout, a
+notebook or a grading platform. This layer never imports matplotlib.
+
+Examples
+--------
+>>> from graphkin import exercises
+>>> sheet = exercises.make("double_slider_forces", "s001")
+>>> [g["shown"] for g in sheet["data"]]
+['x = 230 mm', 'ẋ = 2.5 m/s']
+>>> report = exercises.grade("double_slider_forces", "s001", {"F23": "1 N"})
+>>> report["questions"][0]["verdict"]
+'wrong'
+"""
+
+from __future__ import annotations
+
+from importlib import resources
+from pathlib import Path
+
+from ..errors import GraphkinError
+from .exercise import SLIPS, Exercise, Question, Vary, load_exercise, parse_exercise
+from .variant import MAX_ATTEMPTS, Variant, make_variant
+
+__all__ = ["Exercise", "Question", "Vary", "Variant", "SLIPS", "MAX_ATTEMPTS", "names", "load", "load_exercise",
+           "parse_exercise", "variant", "make", "key", "grade"]
+
+_CACHE: dict = {}
+
+
+def _folder():
+    return resources.files("graphkin.catalog").joinpath("exercises")
+
+
+def names() -> list[str]:
+    """Names of the catalog exercises, sorted."""
+    return sorted(p.name[:-5] for p in _folder().iterdir() if p.name.endswith(".toml"))
+
+
+def load(name_or_path: str | Exercise) -> Exercise:
+    """An :class:`Exercise` from a catalog name or a file path (read once per process)."""
+    if isinstance(name_or_path, Exercise):
+        return name_or_path
+    if name_or_path not in _CACHE:
+        if name_or_path in names():
+            ex = load_exercise(Path(str(_folder().joinpath(name_or_path + ".toml"))), name=name_or_path)
+        else:
+            p = Path(name_or_path)
+            if p.suffix != ".toml" and not p.exists():
+                raise GraphkinError(f"{name_or_path!r} is neither a catalog exercise ({', '.join(names())}) nor a file")
+            ex = load_exercise(p)
+        _CACHE[name_or_path] = ex
+    return _CACHE[name_or_path]
+
+
+def variant(exercise: str | Exercise, student: str, secret: str = "") -> Variant:
+    """The student's variant of an exercise (their data and, for the key, the solved problem)."""
+    return make_variant(load(exercise), student, secret)
+
+
+def make(exercise: str | Exercise, student: str, secret: str = "") -> dict:
+    """The student's sheet as plain data: statement, their data, the questions; no answers."""
+    return variant(exercise, student, secret).sheet()
+
+
+def key(exercise: str | Exercise, student: str, secret: str = "") -> dict:
+    """The sheet with every answer (SI and as printed) and its tolerance."""
+    return variant(exercise, student, secret).key()
+
+
+def grade(exercise: str | Exercise, student: str, answers, secret: str = "", *, reveal: bool | None = None) -> dict:
+    """Grade a student's answers (question id → text as typed) to their variant.
+
+    Returns plain data: ``score``, ``max`` and per question the verdict
+    (``correct``, ``slip``, ``wrong``, ``unreadable``, ``missing``), the slip
+    diagnosed, the points and a sentence of feedback; the expected value only
+    where the exercise (or ``reveal``) allows it.
+    """
+    from .grading import grade_variant
+
+    return grade_variant(variant(exercise, student, secret), answers, reveal=reveal)

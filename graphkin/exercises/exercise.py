@@ -1,0 +1,531 @@
+"""Exercise files: a base problem, the data that vary per student, and the questions.
+
+An exercise is TOML beside the problem files (format: ``docs/exercises.md``).
+Reading one checks every field and names the file and field at fault, as
+problem files do; the base problem is read too, so an exercise that cannot
+be solved fails when it is loaded, not when the first student asks.
+"""
+
+from __future__ import annotations
+
+import difflib
+import re
+import tomllib
+from dataclasses import dataclass
+from decimal import Decimal, InvalidOperation
+from pathlib import Path
+from typing import Any
+
+from ..errors import GraphkinError, ProblemFileError
+
+_TOP = {"title", "source", "problem", "intro", "route", "vary", "questions", "partial", "positions", "flywheel",
+        "reveal", "max_force_ratio", "draw"}
+_VARY = {"field", "from", "to", "step", "values", "label"}
+_QUESTION = {"id", "ask", "find", "part", "unit", "tolerance", "floor", "points", "route"}
+_FLYWHEEL = {"Cs"}
+
+#: Slips the grader can diagnose, with the share of the question's points each earns by default.
+SLIPS: dict[str, float] = {
+    "sign": 0.5,            # F_ji given for F_ij, CW for CCW
+    "opposite": 0.5,        # a direction off by 180°
+    "power_of_ten": 0.5,    # N·mm read as N·m, kN as N: ×10^±3 or ×10^±6
+    "degrees_radians": 0.5,  # an angle in radians written as degrees, or the reverse
+    "rpm_as_rad_s": 0.25,   # the speed in rpm used as if it were rad/s
+    "no_inertia_torque": 0.25,  # −I_G α left out
+    "no_inertia_force": 0.25,   # −m a_G left out
+    "wrong_side": 0.5,      # the inertia resultant offset by h to the wrong side of G
+    "dimension": 0.0,       # a unit of another quantity (J for a torque, N for N·m)
+}
+
+# What a question may ask for (``find``), with the parts it allows; the first part is the default.
+# Joint forces and the driver are named as in the results (F23, G14, T12 ...), see :func:`_kind_of`.
+_PARTS = {
+    "force": ("vector", "magnitude", "direction", "x", "y"),
+    "driver_torque": ("value",),
+    "driver_force": ("value",),
+    "inertia_force": ("vector", "magnitude", "direction", "x", "y"),
+    "inertia_torque": ("value",),
+    "h": ("magnitude", "point"),
+    "concurrency": ("point",),
+    "peak_torque": ("value", "at"),
+    "lowest_torque": ("value", "at"),
+    "average_torque": ("value",),
+    "peak_force": ("magnitude", "at"),
+    "flywheel_E": ("value",),
+    "flywheel_I": ("value",),
+    "jfi_peak": ("value", "at"),
+}
+# Quantities over the whole cycle (the exercise's problem is swept, not solved at one position).
+CYCLE_KINDS = {"peak_torque", "lowest_torque", "average_torque", "peak_force", "flywheel_E", "flywheel_I", "jfi_peak"}
+
+# Default units a bare number is read in, by (kind, part): the units the books print.
+_DEFAULT_UNIT = {
+    "force": "N", "driver_force": "N", "inertia_force": "N", "peak_force": "N",
+    "driver_torque": "N*m", "inertia_torque": "N*m", "peak_torque": "N*m", "lowest_torque": "N*m",
+    "average_torque": "N*m", "h": "mm", "concurrency": "mm", "flywheel_E": "J", "flywheel_I": "kg*m^2",
+    "jfi_peak": "",
+}
+
+_NUMBER_UNIT = re.compile(r"^\s*([+-]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][+-]?\d+)?)\s*(.*?)\s*$")
+_MAX_GRID = 10_000
+
+
+@dataclass(frozen=True)
+class Vary:
+    """One value that differs from student to student.
+
+    Attributes
+    ----------
+    symbol : str
+        What the student sees, e.g. ``"θ12"``.
+    field : tuple of str
+        Where it goes: dotted paths in the problem file (``"driver.theta"``,
+        ``"links[1].mass"``, ``"loads[0].force.magnitude"``) or ``"flywheel.Cs"``;
+        several paths take the same value (the cutting force on both blades).
+    values : tuple of str
+        Every value it may take, as written in the file (``"135 deg"``).
+    label : str
+        Words for it (``"crank angle"``).
+    """
+
+    symbol: str
+    field: tuple[str, ...]
+    values: tuple[str, ...]
+    label: str = ""
+
+
+@dataclass(frozen=True)
+class Question:
+    """One thing the student finds.
+
+    Attributes
+    ----------
+    id : str
+        Key of the answer (``"F23"``, ``"T12"``).
+    ask : str
+        The question as the student reads it.
+    find : str
+        What is asked: a force name (``"F23"``), the driver (``"T12"``), ``"F3i"``,
+        ``"T3i"``, ``"h3"``, ``"I3"``, or a cycle quantity (``"peak_torque"``, ...).
+    kind : str
+        What ``find`` names (a key of ``_PARTS``).
+    link : int or None
+        The link of ``F3i``, ``T3i``, ``h3``, ``I3``.
+    part : str
+        ``"vector"``, ``"magnitude"``, ``"direction"``, ``"x"``, ``"y"``, ``"value"``,
+        ``"point"`` or ``"at"`` (where a peak is).
+    unit : str
+        The unit a bare number is read in and the key is printed in (pint spelling).
+    tolerance : float
+        Relative tolerance for full marks.
+    floor : float or None
+        Absolute floor [SI] for values that are zero or nearly so (None: 0.1 % of
+        the largest value of the same kind in the variant).
+    points : float
+    route : str
+        ``"analytical"`` or ``"graphical"`` (measured off a drawn polygon).
+    """
+
+    id: str
+    ask: str
+    find: str
+    kind: str
+    link: int | None
+    part: str
+    unit: str
+    tolerance: float
+    floor: float | None
+    points: float
+    route: str
+
+
+@dataclass(frozen=True)
+class Exercise:
+    """An exercise read from its file.
+
+    Attributes
+    ----------
+    id : str
+        Catalog name or file stem; part of every variant's seed.
+    title, source, intro : str
+    problem : str
+        The base problem: a catalog name, or a path (relative paths from the exercise file).
+    base : dict
+        The base problem file's data (TOML already read).
+    vary : tuple of Vary
+    questions : tuple of Question
+    partial : dict of str to float
+        Share of a question's points each slip earns (:data:`SLIPS` with the file's changes).
+    positions : int or None
+        Positions over the cycle for cycle questions (None: the problem's own).
+    Cs : float or None
+        Coefficient of speed fluctuation for flywheel questions.
+    reveal : bool
+        Whether grading shows the expected value of a wrong answer.
+    max_force_ratio : float
+        A variant whose largest joint force exceeds this many times the largest
+        load (inertia forces included) is near a dead point and never handed out.
+    draw : bool
+        Whether the student is given the free bodies drawn to scale (graphical exercises).
+    file : str
+    """
+
+    id: str
+    title: str
+    source: str
+    intro: str
+    problem: str
+    base: dict
+    vary: tuple[Vary, ...]
+    questions: tuple[Question, ...]
+    partial: dict
+    positions: int | None
+    Cs: float | None
+    reveal: bool
+    max_force_ratio: float
+    draw: bool
+    file: str
+
+    @property
+    def cycle(self) -> bool:
+        """Whether any question needs the whole cycle."""
+        return any(q.kind in CYCLE_KINDS for q in self.questions)
+
+    def question(self, qid: str) -> Question:
+        for q in self.questions:
+            if q.id == qid:
+                return q
+        raise GraphkinError(f"{self.id}: no question {qid!r} (questions: {', '.join(q.id for q in self.questions)})")
+
+    def variant(self, student: str, secret: str = ""):
+        """This exercise's data for one student (:class:`graphkin.exercises.variant.Variant`)."""
+        from .variant import make_variant
+
+        return make_variant(self, student, secret)
+
+
+class _Reader:
+    def __init__(self, file: str):
+        self.file = file
+
+    def fail(self, field: str, message: str) -> ProblemFileError:
+        return ProblemFileError(self.file, field, message)
+
+    def table(self, value, where, allowed) -> dict:
+        if not isinstance(value, dict):
+            raise self.fail(where, f"must be a table, got {type(value).__name__}")
+        for key in value:
+            if key not in allowed:
+                close = difflib.get_close_matches(key, sorted(allowed), n=1)
+                hint = f" (did you mean {close[0]!r}?)" if close else f" (allowed: {', '.join(sorted(allowed))})"
+                raise self.fail(f"{where}.{key}" if where else key, f"unknown field{hint}")
+        return value
+
+    def text(self, t: dict, key: str, where: str, default: str | None = None) -> str:
+        if key not in t:
+            if default is None:
+                raise self.fail(f"{where}.{key}" if where else key, "is missing")
+            return default
+        value = t[key]
+        if not isinstance(value, str) or not value.strip():
+            raise self.fail(f"{where}.{key}" if where else key, f"must be a non-empty string, got {value!r}")
+        return value.strip()
+
+    def number(self, t: dict, key: str, where: str, default, *, low: float = 0.0, percent: bool = False):
+        if key not in t:
+            return default
+        value = t[key]
+        field = f"{where}.{key}" if where else key
+        if percent and isinstance(value, str) and value.strip().endswith("%"):
+            try:
+                value = float(value.strip()[:-1]) / 100
+            except ValueError:
+                raise self.fail(field, f"could not read {t[key]!r}; write e.g. \"1 %\" or 0.01") from None
+        if isinstance(value, bool) or not isinstance(value, (int, float)) or not value == value or value < low \
+                or value == float("inf"):
+            raise self.fail(field, f"must be a number ≥ {low:g}, got {t[key]!r}")
+        return float(value)
+
+
+def _grid(rd: _Reader, t: dict, where: str) -> tuple[str, ...]:
+    """The values a varied field takes: ``from``/``to``/``step`` in one unit, or a list ``values``."""
+    if "values" in t:
+        if any(k in t for k in ("from", "to", "step")):
+            raise rd.fail(where, "give either values = [...] or from/to/step, not both")
+        values = t["values"]
+        if not isinstance(values, list) or not values or not all(isinstance(v, (str, int, float)) and
+                                                                 not isinstance(v, bool) for v in values):
+            raise rd.fail(f"{where}.values", "must be a non-empty list of values such as [\"4 kg\", \"5 kg\"]")
+        return tuple(str(v) for v in values)
+    parts = {}
+    for key in ("from", "to", "step"):
+        raw = rd.text(t, key, where)
+        m = _NUMBER_UNIT.match(raw)
+        if m is None:
+            raise rd.fail(f"{where}.{key}", f'could not read "{raw}": write a number and a unit, e.g. "10 deg"')
+        try:
+            parts[key] = (Decimal(m[1]), m[2])
+        except InvalidOperation:  # pragma: no cover - the pattern admits only decimals
+            raise rd.fail(f"{where}.{key}", f'could not read "{raw}"') from None
+    units = {u for _, u in parts.values()}
+    if len(units) != 1:
+        raise rd.fail(where, f"from, to and step must be written in one unit, got {', '.join(repr(u) for u in sorted(units))}")
+    (unit,) = units
+    start, stop, step = (parts[k][0] for k in ("from", "to", "step"))
+    if step <= 0:
+        raise rd.fail(f"{where}.step", f"must be positive, got {t['step']!r}")
+    if stop < start:
+        raise rd.fail(f"{where}.to", f"must not be below from ({t['from']!r})")
+    count = int((stop - start) / step) + 1
+    if count > _MAX_GRID:
+        raise rd.fail(f"{where}.step", f"gives {count} values (at most {_MAX_GRID}); take a larger step")
+    # Decimal keeps "0.1 + 0.2" as "0.3": the value shown is the value solved, on every machine.
+    return tuple(f"{(start + k * step).normalize():f} {unit}".strip() for k in range(count))
+
+
+def _kind_of(find: str, base_names: set[str], driver: str) -> tuple[str, int | None]:
+    """What a question's ``find`` names, and the link it is about."""
+    if find in _PARTS and find in CYCLE_KINDS:
+        return find, None
+    if find == driver or find == "driver":
+        return ("driver_torque" if driver.startswith("T") else "driver_force"), None
+    m = re.fullmatch(r"([FT])(\d+)i", find)
+    if m:
+        return ("inertia_force" if m[1] == "F" else "inertia_torque"), int(m[2])
+    m = re.fullmatch(r"h(\d+)", find)
+    if m:
+        return "h", int(m[1])
+    m = re.fullmatch(r"I(\d+)", find)
+    if m:
+        return "concurrency", int(m[1])
+    m = re.fullmatch(r"peak_force\.(\w+)", find)
+    if m and m[1] in base_names:
+        return "peak_force", None
+    if find in base_names:
+        return "force", None
+    raise KeyError(find)
+
+
+def _question(rd: _Reader, t: dict, where: str, names: set[str], driver: str, route: str, moving) -> Question:
+    rd.table(t, where, _QUESTION)
+    qid = rd.text(t, "id", where)
+    if not re.fullmatch(r"[A-Za-z_][\w.]*", qid):
+        raise rd.fail(f"{where}.id", f"must be a name of letters, digits, _ and . (it keys the answers), got {qid!r}")
+    find = rd.text(t, "find", where)
+    try:
+        kind, link = _kind_of(find, names, driver)
+    except KeyError:
+        known = sorted(names) + [driver, "F<k>i", "T<k>i", "h<k>", "I<k>"] + sorted(CYCLE_KINDS) + ["peak_force.<F>"]
+        raise rd.fail(f"{where}.find", f"{find!r} names nothing this problem has (it has: {', '.join(known)})") from None
+    if link is not None and link not in moving:
+        raise rd.fail(f"{where}.find", f"{find!r}: link {link} is not a moving link (moving: {', '.join(map(str, moving))})")
+    parts = _PARTS[kind]
+    part = rd.text(t, "part", where, parts[0])
+    if part not in parts:
+        raise rd.fail(f"{where}.part", f"must be one of {', '.join(parts)} for {find}, got {part!r}")
+    q_route = rd.text(t, "route", where, route)
+    if q_route not in ("analytical", "graphical"):
+        raise rd.fail(f"{where}.route", f"must be 'analytical' or 'graphical', got {q_route!r}")
+    if part in ("direction", "at"):
+        unit = "deg"
+    elif kind == "h" and part == "point":
+        unit = "mm"
+    else:
+        unit = _DEFAULT_UNIT[kind]
+    unit = rd.text(t, "unit", where, unit) if "unit" in t else unit
+    tolerance = rd.number(t, "tolerance", where, 0.03 if q_route == "graphical" else 0.01, percent=True)
+    if not 0 < tolerance < 1:
+        raise rd.fail(f"{where}.tolerance", f"must lie between 0 and 100 %, got {t['tolerance']!r}")
+    floor = None
+    if "floor" in t:
+        from ..units import to_si
+
+        floor = to_si(t["floor"], _dimension(kind, part), field=f"{where}.floor", file=rd.file)
+        if floor < 0:
+            raise rd.fail(f"{where}.floor", f"must not be negative, got {t['floor']!r}")
+    from ..units import to_si
+
+    if unit:
+        # The unit must suit the question: "mm" for a force is a slip in the file, not the student's.
+        try:
+            to_si(f"1 {unit}", _dimension(kind, part), field=f"{where}.unit", file=rd.file)
+        except ProblemFileError as exc:
+            raise rd.fail(f"{where}.unit", exc.message) from None
+    points = rd.number(t, "points", where, 1.0)
+    ask = rd.text(t, "ask", where, f"{find} ({part})")
+    return Question(qid, ask, find, kind, link, part, unit, tolerance, floor, points, q_route)
+
+
+def _dimension(kind: str, part: str) -> str:
+    """The dimension (a :data:`graphkin.units.DIMENSIONS` key, or ``"energy"``) of a question's answer."""
+    if part in ("direction", "at"):
+        return "angle"
+    if kind in ("h", "concurrency"):
+        return "length"
+    if kind in ("force", "driver_force", "inertia_force", "peak_force"):
+        return "force"
+    if kind == "flywheel_E":
+        return "energy"
+    if kind == "flywheel_I":
+        return "moment_of_inertia"
+    if kind == "jfi_peak":
+        return "dimensionless"
+    return "torque"
+
+
+dimension_of = _dimension
+
+
+def load_exercise(source: str | Path, *, name: str | None = None) -> Exercise:
+    """Read an exercise file (a path; catalog names through :func:`graphkin.exercises.load`).
+
+    Raises
+    ------
+    ProblemFileError
+        Naming the file and the field at fault.
+    """
+    path = Path(source)
+    file = name or str(path)
+    try:
+        text = path.read_text(encoding="utf-8")
+    except OSError as exc:
+        raise ProblemFileError(file, "", f"cannot be read ({exc.strerror})") from None
+    except UnicodeDecodeError:
+        raise ProblemFileError(file, "", "is not UTF-8 text") from None
+    return parse_exercise(text, file=file, id=name or path.stem, folder=path.parent)
+
+
+def parse_exercise(text: str, *, file: str = "<exercise>", id: str = "exercise", folder: Path | None = None) -> Exercise:
+    """Build an :class:`Exercise` from TOML text (relative problem paths from ``folder``)."""
+    from .. import catalog
+
+    rd = _Reader(file)
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise rd.fail("", f"is not valid TOML ({exc})") from None
+    rd.table(data, "", _TOP)
+    problem = rd.text(data, "problem", "")
+    if problem in catalog.names():
+        base_path = catalog.path(problem)
+    else:
+        base_path = (folder or Path(".")) / problem
+        if not base_path.is_file():
+            raise rd.fail("problem", f"{problem!r} is neither a catalog problem ({', '.join(catalog.names())}) nor a file")
+    try:
+        base = tomllib.loads(base_path.read_text(encoding="utf-8"))
+    except (OSError, UnicodeDecodeError, tomllib.TOMLDecodeError) as exc:
+        raise rd.fail("problem", f"{problem!r} cannot be read ({exc})") from None
+    from ..problem import build_problem
+
+    problem_obj = build_problem(base, file=problem)
+    mech = problem_obj.mechanism
+    from ..solve.result import parse_force_name
+
+    names = set()
+    for J in mech.joints:
+        i, j = J.links
+        for a, b in ((i, j), (j, i)):
+            name = f"{J.force_letter}{a}{b}"
+            parse_force_name(mech, name)
+            names.add(name)
+    driver = mech.driver.symbol
+    route = rd.text(data, "route", "", "analytical")
+    if route not in ("analytical", "graphical"):
+        raise rd.fail("route", f"must be 'analytical' or 'graphical', got {route!r}")
+    vary_table = rd.table(data.get("vary", {}), "vary", set(data.get("vary", {})))
+    vary = []
+    for symbol, t in vary_table.items():
+        where = f"vary.{symbol}"
+        rd.table(t, where, _VARY)
+        raw = t.get("field")
+        if isinstance(raw, list) and raw and all(isinstance(f, str) and f.strip() for f in raw):
+            field = tuple(f.strip() for f in raw)
+        else:
+            field = (rd.text(t, "field", where),)
+        values = _grid(rd, t, where)
+        vary.append(Vary(symbol, field, values, rd.text(t, "label", where, "") if "label" in t else ""))
+    questions_raw = data.get("questions")
+    if not isinstance(questions_raw, list) or not questions_raw:
+        raise rd.fail("questions", "must be a non-empty list of [[questions]] tables")
+    questions = tuple(_question(rd, t, f"questions[{i}]", names, driver, route, mech.moving)
+                      for i, t in enumerate(questions_raw))
+    ids = [q.id for q in questions]
+    if len(set(ids)) != len(ids):
+        dup = sorted({i for i in ids if ids.count(i) > 1})
+        raise rd.fail("questions", f"question ids must differ; repeated: {', '.join(dup)}")
+    partial = dict(SLIPS)
+    for key, value in rd.table(data.get("partial", {}), "partial", set(SLIPS)).items():
+        share = rd.number({key: value}, key, "partial", None)
+        if share > 1:
+            raise rd.fail(f"partial.{key}", f"is a share of the question's points, between 0 and 1, got {value!r}")
+        partial[key] = share
+    positions = None
+    if "positions" in data:
+        positions = data["positions"]
+        if isinstance(positions, bool) or not isinstance(positions, int) or not 8 <= positions <= 36_000:
+            raise rd.fail("positions", f"must be a whole number from 8 to 36000, got {positions!r}")
+    fly = rd.table(data.get("flywheel", {}), "flywheel", _FLYWHEEL)
+    Cs = rd.number(fly, "Cs", "flywheel", None) if "Cs" in fly else None
+    if any(q.kind in ("flywheel_E", "flywheel_I") for q in questions) and Cs is None \
+            and not any("flywheel.Cs" in v.field for v in vary):
+        raise rd.fail("flywheel.Cs", "is missing: a flywheel question needs the coefficient of speed fluctuation")
+    for v in vary:
+        for f in v.field:
+            if f != "flywheel.Cs":
+                _check_field(rd, base, v.symbol, f)
+    reveal = data.get("reveal", False)
+    if not isinstance(reveal, bool):
+        raise rd.fail("reveal", f"must be true or false, got {reveal!r}")
+    draw = data.get("draw", route == "graphical")
+    if not isinstance(draw, bool):
+        raise rd.fail("draw", f"must be true or false, got {draw!r}")
+    return Exercise(id, rd.text(data, "title", ""), rd.text(data, "source", "", ""), rd.text(data, "intro", "", ""),
+                    problem, base, tuple(vary), questions, partial, positions, Cs, reveal,
+                    rd.number(data, "max_force_ratio", "", 20.0, low=1.0), draw, file)
+
+
+_TOKEN = re.compile(r"([A-Za-z_]\w*)|\[(\d+)\]")
+
+
+def field_path(field: str) -> list[str | int]:
+    """The keys of a dotted field path: ``"links[1].mass"`` → ``["links", 1, "mass"]``."""
+    keys: list[str | int] = []
+    for part in field.split("."):
+        pos = 0
+        for m in _TOKEN.finditer(part):
+            if m.start() != pos:
+                raise KeyError(field)
+            keys.append(m[1] if m[1] is not None else int(m[2]))
+            pos = m.end()
+        if pos != len(part) or not part:
+            raise KeyError(field)
+    return keys
+
+
+def _check_field(rd: _Reader, base: dict, symbol: str, field: str) -> None:
+    """A varied field must exist in the base problem."""
+    where = f"vary.{symbol}.field"
+    try:
+        keys = field_path(field)
+    except KeyError:
+        raise rd.fail(where, f"could not read the path {field!r}; write it as in the problem file, "
+                             "e.g. \"driver.theta\" or \"links[1].mass\"") from None
+    node: Any = base
+    for i, key in enumerate(keys):
+        last = i == len(keys) - 1
+        ok = (isinstance(key, int) and isinstance(node, list) and key < len(node)) or \
+             (isinstance(key, str) and isinstance(node, dict) and (key in node or last))
+        if not ok:
+            raise rd.fail(where, f"{field!r}: the problem has no {'.'.join(map(str, keys[:i + 1]))!r}")
+        if not last:
+            node = node[key]
+
+
+def set_field(data: dict, field: str, value: str) -> None:
+    """Put ``value`` at the dotted ``field`` of problem data (in place; a copy is the caller's)."""
+    keys = field_path(field)
+    node: Any = data
+    for key in keys[:-1]:
+        node = node[key]
+    node[keys[-1]] = value

@@ -1,0 +1,276 @@
+"""What each question's answer is, computed from a variant's solved problem.
+
+Every value is SI inside (N, N·m, m, rad, J, kg·m²); the key prints it as the
+books do, in the question's unit. Vectors and points are complex numbers
+x + iy here, as in the solvers.
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from .exercise import Question, dimension_of
+
+# SI unit of each dimension, as printed in keys.
+_SI = {"force": "N", "torque": "N*m", "length": "m", "angle": "rad", "energy": "J",
+       "moment_of_inertia": "kg*m^2", "dimensionless": ""}
+
+
+@dataclass(frozen=True)
+class Expected:
+    """A question's answer for one variant.
+
+    Attributes
+    ----------
+    question : Question
+    form : str
+        ``"scalar"`` (signed), ``"magnitude"``, ``"direction"`` (an angle, compared
+        modulo 360°), ``"vector"`` (a force, x + iy) or ``"point"`` (a position, x + iy).
+    value : float or complex
+        SI (angles in rad).
+    slack : float
+        The largest difference that still earns full marks [SI; rad for angles].
+    text : str
+        As the book prints it, in the question's unit.
+    hint : str
+        Where the value comes from: the construction step or equations to revisit.
+    link : int or None
+        The link whose equilibrium gives the value (for hints).
+    anchor : complex or None
+        For an inertia resultant's point: the centre of mass G it is offset from.
+    undefined : str or None
+        Why the question has no answer in this variant (then the variant is not handed out).
+    """
+
+    question: Question
+    form: str
+    value: float | complex
+    slack: float
+    text: str
+    hint: str = ""
+    link: int | None = None
+    anchor: complex | None = None
+    undefined: str | None = None
+
+    @property
+    def si_unit(self) -> str:
+        return _SI[dimension_of(self.question.kind, self.question.part)]
+
+    def si_data(self):
+        """The value as plain data: a float, or [x, y] for vectors and points."""
+        if isinstance(self.value, complex):
+            return [self.value.real, self.value.imag]
+        return float(self.value)
+
+    def close(self, value) -> bool:
+        """Whether ``value`` (same form, SI) is within the slack of this answer."""
+        return _distance(self.form, value, self.value) <= self.slack
+
+
+def _distance(form: str, a, b) -> float:
+    if form == "direction":
+        return abs(math.remainder(a - b, 2 * math.pi))
+    return abs(a - b)
+
+
+@functools.cache
+def unit_factor(unit: str, dimension: str) -> float:
+    """SI value of one ``unit`` (1 for ``"mm"`` → 0.001)."""
+    if not unit:
+        return 1.0
+    from ..units import to_si
+
+    return to_si(f"1 {unit}", dimension, field="unit")
+
+
+def question_data(q: Question) -> dict:
+    """A question as the student sees it (no answer)."""
+    return {"id": q.id, "ask": q.ask, "find": q.find, "part": q.part, "unit": q.unit, "points": q.points,
+            "route": q.route, "tolerance": q.tolerance, "form": _form(q)}
+
+
+def _form(q: Question) -> str:
+    if q.part in ("direction", "at"):
+        return "direction"
+    if q.part in ("vector", "point") or q.kind == "concurrency":
+        return "point" if (q.part == "point" or q.kind == "concurrency") else "vector"
+    if q.part == "magnitude":
+        return "magnitude"
+    return "scalar"
+
+
+def _num(x: float, digits: int = 4) -> str:
+    """A number to ``digits`` significant figures, with a true minus sign."""
+    if x == 0:
+        return "0"
+    text = f"{x:.{digits}g}"
+    if "e" in text:
+        # Books print 11330 N, not 1.133e+04 N; very large or small values keep a power of ten.
+        exponent = math.floor(math.log10(abs(x)))
+        if -4 <= exponent < 9:
+            text = f"{round(x, digits - 1 - exponent):.{max(digits - 1 - exponent, 0)}f}"
+        else:
+            mant, exp = text.split("e")
+            text = f"{mant}×10^{int(exp)}"
+    return text.replace("-", "−")
+
+
+def _unit_text(unit: str) -> str:
+    return unit.replace("*", "·").replace("^2", "²").replace("^3", "³")
+
+
+def format_value(form: str, value, unit: str, dimension: str, *, torque: bool = False) -> str:
+    """A value as the book prints it: ``27.06 N ∠ −73.78°``, ``108.9 N·m CCW``, ``(120.5, −33.3) mm``."""
+    f = unit_factor(unit, dimension)
+    u = (" " + _unit_text(unit)) if unit else ""
+    if form == "direction":
+        return f"{math.degrees(value):.2f}°".replace("-", "−")
+    if form == "vector":
+        return f"{_num(abs(value) / f)}{u} ∠ {math.degrees(math.atan2(value.imag, value.real)):.2f}°".replace("-", "−")
+    if form == "point":
+        return f"({_num(value.real / f)}, {_num(value.imag / f)}){u}"
+    text = f"{_num(value / f)}{u}"
+    if torque and value:
+        text += " CCW" if value > 0 else " CW"
+    return text
+
+
+def value_of(solved, q: Question):
+    """The raw answer of ``q`` on a solved problem (SI; vectors complex); None where it has none."""
+    kind, part = q.kind, q.part
+    if kind in ("force", "inertia_force"):
+        if kind == "force":
+            src = solved.construction if q.route == "graphical" else solved.result
+            F = np.asarray(src[q.find], dtype=float)
+            F = F[0] if F.ndim == 2 else F
+        else:
+            F = solved.result.inertia(q.link).F[0]
+        z = complex(F[0], F[1])
+        return {"vector": z, "magnitude": abs(z), "direction": math.atan2(z.imag, z.real) if z else None,
+                "x": z.real, "y": z.imag}[part]
+    if kind in ("driver_torque", "driver_force"):
+        src = solved.construction if q.route == "graphical" else solved.result
+        e = src.effort if q.route == "graphical" else src.effort[0]
+        return float(e)
+    if kind == "inertia_torque":
+        return float(solved.result.inertia(q.link).T[0])
+    if kind == "h":
+        inn = solved.result.inertia(q.link)
+        if not np.isfinite(inn.h[0]):
+            return None
+        return float(inn.h[0]) if part == "magnitude" else complex(*inn.line_point[0])
+    if kind == "concurrency":
+        for step in solved.construction.steps:
+            if f"I{q.link}" in step.points:
+                return complex(*step.points[f"I{q.link}"])
+        return None
+    cycle = solved.cycle
+    if kind in ("peak_torque", "lowest_torque"):
+        p = cycle.peaks().effort_max if kind == "peak_torque" else cycle.peaks().effort_min
+        return p.value if part == "value" else p.at
+    if kind == "average_torque":
+        return cycle.average
+    if kind == "peak_force":
+        from ..solve.result import parse_force_name
+
+        i, j = parse_force_name(solved.problem.mechanism, q.find.split(".", 1)[1])
+        p = cycle.peaks().forces[cycle.analysis.name_of(min(i, j), max(i, j))]
+        return p.value if part == "magnitude" else p.at
+    if kind == "flywheel_E":
+        return solved.flywheel.E
+    if kind == "flywheel_I":
+        return solved.flywheel.I_s
+    if kind == "jfi_peak":
+        p = solved.jfi.peak
+        return p.value if part == "value" else p.at
+    raise KeyError(kind)  # pragma: no cover - the exercise reader admits only the kinds above
+
+
+def _scale(solved, q: Question) -> float:
+    """The size of the largest value of the question's kind in this variant, for the absolute floor."""
+    kind = q.kind
+    if kind in ("peak_torque", "lowest_torque", "average_torque"):
+        return float(np.nanmax(np.abs(solved.cycle.torque)))
+    if kind in ("peak_force",):
+        return max(p.value for p in solved.cycle.peaks().forces.values())
+    if kind in ("flywheel_E", "flywheel_I", "jfi_peak"):
+        return abs(value_of(solved, q) if q.part != "at" else 1.0)
+    c = solved.construction
+    forces = [math.hypot(*F) for F in c.forces.values()] + [math.hypot(*v["F"]) for v in c.inertia.values()]
+    span = _span(c)
+    if kind in ("h", "concurrency"):
+        return span
+    if kind in ("driver_torque", "inertia_torque"):
+        return max([abs(c.effort), max(forces + [0.0]) * span] + [abs(v["T"]) for v in c.inertia.values()])
+    return max(forces + [abs(c.effort) if kind == "driver_force" else 0.0])
+
+
+def _span(c) -> float:
+    """The mechanism's size at this position: the largest distance between two of its points [m]."""
+    pts = np.array([p for link in c.points.values() for p in link.values()] or [(0.0, 0.0)])
+    return float(np.max(np.hypot(*(pts[:, None, :] - pts[None, :, :]).transpose(2, 0, 1))))
+
+
+def _hint(solved, q: Question) -> tuple[str, int | None]:
+    """The construction step (and link) a student should revisit for ``q``."""
+    kind = q.kind
+    if kind in ("peak_torque", "lowest_torque", "average_torque"):
+        return "the driving torque at every crank angle of the cycle (sweep), then its extremes and mean", None
+    if kind == "peak_force":
+        return "the magnitude of the joint force at every crank angle of the cycle", None
+    if kind in ("flywheel_E", "flywheel_I"):
+        return ("the energy table (Norton §11.11): the areas of the pulses of T − T_avg, E the largest swing, "
+                "I_s = E / (C_s ω_avg²)"), None
+    if kind == "jfi_peak":
+        return "the static joint forces (masses set to zero) divided by the external load (Norton §11.12)", None
+    c = solved.construction
+    want = {"force": q.find, "driver_torque": q.find, "driver_force": q.find}.get(kind)
+    for n, step in enumerate(c.steps, 1):
+        if want and step.kind in ("driver",) and kind.startswith("driver"):
+            return f"step {n} of the construction: {step.caption}", step.link
+        if want and (want in step.values or any(a.name == want and not a.known for a in step.polygon)):
+            return f"step {n} of the construction: {step.caption}", step.link
+        if kind in ("inertia_force", "inertia_torque", "h") and step.kind == "resultant" and step.link == q.link:
+            return f"step {n} of the construction: {step.caption}", q.link
+        if kind == "concurrency" and f"I{q.link}" in step.points:
+            return f"step {n} of the construction: {step.caption}", q.link
+    if kind == "force":
+        from ..solve.result import parse_force_name
+
+        i, j = parse_force_name(solved.problem.mechanism, q.find)
+        return f"the equilibrium of link {j} (ΣF = 0, ΣM = 0: its rows of [A]{{x}} = {{b}})", j
+    return "", q.link
+
+
+def expected(variant, q: Question) -> Expected:
+    """The answer to ``q`` for ``variant`` (anything with ``.solved`` and ``.exercise``)."""
+    solved = variant.solved
+    form = _form(q)
+    dim = dimension_of(q.kind, q.part)
+    value = value_of(solved, q)
+    if value is None or (isinstance(value, float) and not math.isfinite(value)):
+        what = {"h": f"link {q.link}'s inertia force is zero, so h is not defined",
+                "concurrency": f"link {q.link} has no point of concurrency at this position",
+                "force": f"{q.find} has no direction (it is zero)"}.get(q.kind, f"{q.find} is not defined")
+        return Expected(q, form, 0.0, 0.0, "", undefined=what)
+    if form == "direction":
+        slack = math.atan(q.tolerance)
+        if q.part == "at":
+            # A peak's position is known only to the grid of the sweep.
+            grid = np.diff(np.sort(solved.cycle.q))
+            slack = max(slack, float(np.max(grid)) if len(grid) else 0.0)
+    else:
+        floor = q.floor if q.floor is not None else 1e-3 * _scale(solved, q)
+        size = _span(solved.construction) if form == "point" else abs(value)
+        slack = max(q.tolerance * size, floor)
+    hint, link = _hint(solved, q)
+    anchor = None
+    if q.kind == "h" and q.part == "point":
+        anchor = complex(*solved.result.kinematics.G(q.link)[0])
+    torque = q.kind in ("driver_torque", "inertia_torque", "peak_torque", "lowest_torque", "average_torque")
+    text = format_value(form, value, q.unit, dim, torque=torque and form == "scalar")
+    return Expected(q, form, value, slack, text, hint, link, anchor)

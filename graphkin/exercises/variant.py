@@ -1,0 +1,293 @@
+"""Variants: each student's own data, drawn from a stable hash, and the answers they imply.
+
+A variant is fixed by (exercise id, student id, course secret): the values are
+picked with SHA-256 and integer arithmetic only, so the same student gets the
+same data on every machine and every Python or numpy version. The answers are
+computed from the data **as the student sees them**: the value strings shown
+("135 deg") are the strings the problem is solved with.
+
+A draw that does not assemble, sits near a dead point, or whose graphical
+construction fails is never handed out: the next draw (``attempt`` + 1) is
+taken instead.
+"""
+
+from __future__ import annotations
+
+import copy
+import hashlib
+import math
+import re
+from dataclasses import dataclass, field, replace
+from functools import cached_property
+
+import numpy as np
+
+from ..errors import GraphkinError
+from .exercise import Exercise, Question, set_field
+
+MAX_ATTEMPTS = 64
+"""Draws tried per student before the exercise is declared unusable."""
+
+MAX_STUDENT_CHARS = 100
+
+_SEED_TAG = "graphkin-variant-v1"
+
+
+def check_student(student) -> str:
+    """The student id as used in the seed (stripped), or a clear error."""
+    if not isinstance(student, str) or not student.strip():
+        raise GraphkinError(f"student id must be a non-empty text, got {student!r}")
+    student = student.strip()
+    if len(student) > MAX_STUDENT_CHARS or not student.isprintable():
+        raise GraphkinError(f"student id must be printable text of at most {MAX_STUDENT_CHARS} characters")
+    return student
+
+
+def draw_index(secret: str, exercise: str, student: str, attempt: int, symbol: str, count: int) -> int:
+    """Index in ``range(count)`` for one varied value: SHA-256 of the seed fields, reduced mod ``count``.
+
+    Examples
+    --------
+    >>> draw_index("", "double_slider_forces", "s001", 0, "x", 21)
+    4
+    """
+    text = "\x1f".join((_SEED_TAG, secret, exercise, student, str(attempt), symbol))
+    digest = hashlib.sha256(text.encode("utf-8")).digest()
+    return int.from_bytes(digest[:8], "big") % count
+
+
+_PRETTY = (("deg", "°"), ("^2", "²"), ("^3", "³"), ("*", "·"))
+
+
+def pretty(value: str) -> str:
+    """A value string as a book prints it: ``"135 deg"`` → ``"135°"``, ``"8.3 rad/s^2"`` → ``"8.3 rad/s²"``."""
+    m = re.match(r"^(\S+)\s+deg$", value)
+    if m:
+        return f"{m[1]}°"
+    for a, b in _PRETTY[1:]:
+        value = value.replace(a, b)
+    return value
+
+
+@dataclass(frozen=True)
+class Given:
+    """One value of a student's data: ``θ12 = 135°``."""
+
+    symbol: str
+    label: str
+    field: tuple[str, ...]
+    value: str
+
+    @property
+    def shown(self) -> str:
+        return f"{self.symbol} = {pretty(self.value)}"
+
+
+class Solved:
+    """A problem's results at the exercise's position or over its cycle, computed when first asked for."""
+
+    def __init__(self, problem, exercise: Exercise, Cs: float | None):
+        self.problem = problem
+        self.exercise = exercise
+        self.Cs = Cs
+
+    @cached_property
+    def result(self):
+        return self.problem.solve()
+
+    @cached_property
+    def construction(self):
+        from ..graphic import construct_forces
+
+        return construct_forces(self.result.kinematics, 0)
+
+    @cached_property
+    def cycle(self):
+        from ..analysis import sweep
+
+        return sweep(self.problem, self.exercise.positions)
+
+    @cached_property
+    def flywheel(self):
+        return self.cycle.flywheel(self.Cs)
+
+    @cached_property
+    def jfi(self):
+        return self.cycle.joint_force_index()
+
+
+@dataclass(frozen=True)
+class Variant:
+    """One student's exercise: their data, and (for the key and the grader) the solved problem.
+
+    Attributes
+    ----------
+    exercise : Exercise
+    student : str
+    attempt : int
+        Which draw this is (0 unless earlier draws were unusable).
+    data : tuple of Given
+    problem : graphkin.problem.Problem
+        The base problem with the student's values.
+    Cs : float or None
+    """
+
+    exercise: Exercise
+    student: str
+    attempt: int
+    data: tuple[Given, ...]
+    problem: object
+    Cs: float | None
+    solved: Solved = field(repr=False, compare=False)
+
+    def altered(self, slip: str) -> Solved | None:
+        """The same variant solved as a student who made ``slip`` would (None if it cannot apply)."""
+        return _altered(self, slip)
+
+    def sheet(self) -> dict:
+        """The student's exercise as plain data: the statement, their data and the questions; no answers."""
+        from .quantities import question_data
+
+        intro = _fill(self.exercise.intro, self.data)
+        return {"exercise": self.exercise.id, "title": self.exercise.title, "source": self.exercise.source,
+                "student": self.student, "intro": intro,
+                "data": [{"symbol": g.symbol, "label": g.label, "value": g.value, "shown": g.shown}
+                         for g in self.data],
+                "questions": [question_data(q) for q in self.exercise.questions]}
+
+    def key(self) -> dict:
+        """The sheet with every answer: its value in SI and as the book prints it, and the tolerance."""
+        from .quantities import expected
+
+        out = self.sheet()
+        out["attempt"] = self.attempt
+        for q, entry in zip(self.exercise.questions, out["questions"]):
+            e = expected(self, q)
+            entry["answer"] = {"text": e.text, "si": e.si_data(), "unit_si": e.si_unit, "hint": e.hint}
+        return out
+
+    def grade(self, answers) -> dict:
+        """Grade a student's answers (a mapping of question id to text); see :func:`graphkin.exercises.grade`."""
+        from .grading import grade_variant
+
+        return grade_variant(self, answers)
+
+
+def _fill(text: str, data) -> str:
+    """Replace ``{symbol}`` in an exercise's statement by the student's value."""
+    values = {g.symbol: pretty(g.value) for g in data}
+    return re.sub(r"\{([^{}\s]+)\}", lambda m: values.get(m[1], m[0]), text)
+
+
+def _choose(ex: Exercise, student: str, secret: str, attempt: int) -> tuple[Given, ...]:
+    return tuple(Given(v.symbol, v.label, v.field, v.values[draw_index(secret, ex.id, student, attempt, v.symbol,
+                                                                      len(v.values))])
+                 for v in ex.vary)
+
+
+def _build(ex: Exercise, data: tuple[Given, ...], student: str):
+    from ..problem import build_problem
+    from ..units import to_si
+
+    base = copy.deepcopy(ex.base)
+    Cs = ex.Cs
+    for g in data:
+        for f in g.field:
+            if f == "flywheel.Cs":
+                Cs = to_si(g.value, "dimensionless", field=f"vary.{g.symbol}", file=ex.file)
+            else:
+                set_field(base, f, g.value)
+    problem = build_problem(base, file=f"{ex.id} (student {student})")
+    return problem, Cs
+
+
+def _unusable(ex: Exercise, solved: Solved) -> str | None:
+    """Why a draw cannot be handed out (None when it can)."""
+    if ex.cycle:
+        if not solved.cycle.closed:
+            bad = np.flatnonzero(~solved.cycle.valid)[0]
+            return solved.cycle.analysis.reason(int(bad))
+        if any(q.kind in ("flywheel_E", "flywheel_I") for q in ex.questions) and not solved.flywheel.E > 0:
+            return "the driving torque is constant, so there is no flywheel to size"
+        if any(q.kind == "jfi_peak" for q in ex.questions) and not math.isfinite(solved.jfi.peak.value):
+            return "the joint-force index is not defined (no external load)"
+    if all(q.kind in _CYCLE_ONLY for q in ex.questions):
+        return None
+    r = solved.result
+    if not r.valid[0]:
+        return r.reason(0)
+    c = solved.construction
+    if not c.valid:
+        return f"the graphical construction fails: {c.reason}"
+    if c.warnings:
+        return f"the graphical construction is not clean: {c.warnings[0]}"
+    loads = [math.hypot(*v["F"]) for v in c.inertia.values()]
+    loads += [math.hypot(*a.vector) for arrows in c.external.values() for a in arrows]
+    largest = max([math.hypot(*F) for F in c.forces.values()] + [0.0])
+    if max(loads + [0.0]) > 0 and largest > ex.max_force_ratio * max(loads):
+        return (f"the joint forces are {largest / max(loads):.0f} times the largest load: the linkage is near a dead "
+                "point")
+    from .quantities import expected
+
+    for q in ex.questions:
+        if q.kind not in _CYCLE_ONLY:
+            e = expected(_Probe(ex, solved), q)
+            if e.undefined:
+                return e.undefined
+    return None
+
+
+_CYCLE_ONLY = {"peak_torque", "lowest_torque", "average_torque", "peak_force", "flywheel_E", "flywheel_I", "jfi_peak"}
+
+
+@dataclass(frozen=True)
+class _Probe:
+    """The parts of a Variant that :func:`expected` reads, before the Variant exists."""
+
+    exercise: Exercise
+    solved: Solved
+
+
+def make_variant(ex: Exercise, student: str, secret: str = "") -> Variant:
+    """The student's variant: the first usable draw for (exercise id, student id, secret).
+
+    Raises
+    ------
+    GraphkinError
+        If the student id is empty or too long, or no draw in :data:`MAX_ATTEMPTS`
+        can be handed out (the message says why the last one could not).
+    """
+    student = check_student(student)
+    if not isinstance(secret, str):
+        raise GraphkinError("the course secret must be text")
+    why = ""
+    for attempt in range(MAX_ATTEMPTS):
+        data = _choose(ex, student, secret, attempt)
+        problem, Cs = _build(ex, data, student)
+        solved = Solved(problem, ex, Cs)
+        why = _unusable(ex, solved)
+        if why is None:
+            return Variant(ex, student, attempt, data, problem, Cs, solved)
+        if not ex.vary:
+            break
+    raise GraphkinError(f"exercise {ex.id}: no usable data for student {student!r} in {MAX_ATTEMPTS} draws "
+                        f"(the last: {why}); narrow the ranges in [vary]")
+
+
+def _altered(v: Variant, slip: str) -> Solved | None:
+    p = v.problem
+    moving = p.mechanism.moving
+    if slip == "no_inertia_torque":
+        given = dict(p.given) | {(k, "alpha"): 0.0 for k in moving}
+        return Solved(replace(p, given=given), v.exercise, v.Cs)
+    if slip == "no_inertia_force":
+        given = dict(p.given) | {(k, "a_G"): (0.0, 0.0) for k in moving}
+        return Solved(replace(p, given=given), v.exercise, v.Cs)
+    if slip == "rpm_as_rad_s":
+        speed = next((g.value for g in v.data if "driver.omega" in g.field), None) or \
+            v.exercise.base.get("driver", {}).get("omega")
+        if not isinstance(speed, str) or not speed.strip().endswith("rpm") or p.given \
+                or p.mechanism.driver.kind != "crank" or len(set(p.q_dot)) > 1:
+            return None
+        return Solved(p.at_speed(float(p.q_dot[0]) * 30 / math.pi), v.exercise, v.Cs)
+    raise KeyError(slip)
