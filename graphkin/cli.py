@@ -1,4 +1,4 @@
-"""``graphkin`` on the command line: ``graphkin list``, ``graphkin solve PROBLEM``, ``graphkin cycle PROBLEM``.
+"""``graphkin`` on the command line: ``list``, ``solve PROBLEM``, ``cycle PROBLEM``, ``exercise ...``.
 
 Bad input ends with a one-line message on stderr and exit code 2, never a
 traceback.
@@ -36,6 +36,9 @@ def _parser() -> argparse.ArgumentParser:
     c.add_argument("--cs", type=float, metavar="CS", help="coefficient of speed fluctuation: size a flywheel, e.g. 0.05")
     c.add_argument("--json", action="store_true", help="print every array as JSON in SI units (schema: docs/json.md)")
     c.add_argument("--figure", metavar="FILE", help="write the cycle figure (.png, .svg or .pdf)")
+    from .cli_exercises import add_parser
+
+    add_parser(sub)
     return p
 
 
@@ -385,6 +388,10 @@ def main(argv=None) -> int:
     try:
         if args.command == "cycle":
             return _cycle(args)
+        if args.command == "exercise":
+            from .cli_exercises import run
+
+            return run(args)
         return _list() if args.command == "list" else _solve(args)
     except GraphkinError as exc:
         print(f"graphkin: error: {exc}", file=sys.stderr)

@@ -15,7 +15,7 @@ Examples
 >>> from graphkin import exercises
 >>> sheet = exercises.make("double_slider_forces", "s001")
 >>> [g["shown"] for g in sheet["data"]]
-['x = 230 mm', 'ẋ = 2.5 m/s']
+['x = 330 mm', 'ẋ = 3 m/s']
 >>> report = exercises.grade("double_slider_forces", "s001", {"F23": "1 N"})
 >>> report["questions"][0]["verdict"]
 'wrong'
@@ -31,7 +31,7 @@ from .exercise import SLIPS, Exercise, Question, Vary, load_exercise, parse_exer
 from .variant import MAX_ATTEMPTS, Variant, make_variant
 
 __all__ = ["Exercise", "Question", "Vary", "Variant", "SLIPS", "MAX_ATTEMPTS", "names", "load", "load_exercise",
-           "parse_exercise", "variant", "make", "key", "grade"]
+           "parse_exercise", "variant", "make", "key", "grade", "check"]
 
 _CACHE: dict = {}
 
@@ -87,3 +87,19 @@ def grade(exercise: str | Exercise, student: str, answers, secret: str = "", *, 
     from .grading import grade_variant
 
     return grade_variant(variant(exercise, student, secret), answers, reveal=reveal)
+
+
+def check(exercise: str | Exercise, student: str, answers, secret: str = "") -> str:
+    """Grade answers and return the feedback as text, one line per question (for a notebook cell).
+
+    Examples
+    --------
+    >>> print(check("single_link", "s001", {"T12": "4.531 N*m CW"}).splitlines()[1])
+    F12: missing — No answer was given for F12.
+    """
+    report = grade(exercise, student, answers, secret)
+    lines = [f"{report['exercise']} (student {report['student']}): {report['score']:g} / {report['max']:g} points"]
+    for q in report["questions"]:
+        slip = f" ({q['slip'].replace('_', ' ')})" if q["slip"] else ""
+        lines.append(f"{q['id']}: {q['verdict']}{slip} — {q['feedback']}")
+    return "\n".join(lines)

@@ -19,7 +19,7 @@ from typing import Any
 from ..errors import GraphkinError, ProblemFileError
 
 _TOP = {"title", "source", "problem", "intro", "route", "vary", "questions", "partial", "positions", "flywheel",
-        "reveal", "max_force_ratio", "draw"}
+        "reveal", "max_force_ratio", "max_speed_ratio", "draw"}
 _VARY = {"field", "from", "to", "step", "values", "label"}
 _QUESTION = {"id", "ask", "find", "part", "unit", "tolerance", "floor", "points", "route"}
 _FLYWHEEL = {"Cs"}
@@ -165,6 +165,9 @@ class Exercise:
     max_force_ratio : float
         A variant whose largest joint force exceeds this many times the largest
         load (inertia forces included) is near a dead point and never handed out.
+    max_speed_ratio : float
+        Nor is one where a point moves faster than this many times the input
+        (the crank pin's speed ω·span, or the driving slider's speed).
     draw : bool
         Whether the student is given the free bodies drawn to scale (graphical exercises).
     file : str
@@ -183,6 +186,7 @@ class Exercise:
     Cs: float | None
     reveal: bool
     max_force_ratio: float
+    max_speed_ratio: float
     draw: bool
     file: str
 
@@ -482,7 +486,8 @@ def parse_exercise(text: str, *, file: str = "<exercise>", id: str = "exercise",
         raise rd.fail("draw", f"must be true or false, got {draw!r}")
     return Exercise(id, rd.text(data, "title", ""), rd.text(data, "source", "", ""), rd.text(data, "intro", "", ""),
                     problem, base, tuple(vary), questions, partial, positions, Cs, reveal,
-                    rd.number(data, "max_force_ratio", "", 20.0, low=1.0), draw, file)
+                    rd.number(data, "max_force_ratio", "", 20.0, low=1.0),
+                    rd.number(data, "max_speed_ratio", "", 5.0, low=1.0), draw, file)
 
 
 _TOKEN = re.compile(r"([A-Za-z_]\w*)|\[(\d+)\]")

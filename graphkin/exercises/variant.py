@@ -216,6 +216,9 @@ def _unusable(ex: Exercise, solved: Solved) -> str | None:
     r = solved.result
     if not r.valid[0]:
         return r.reason(0)
+    ratio = _speed_ratio(solved.problem, _span_of(solved))
+    if ratio > ex.max_speed_ratio:
+        return (f"a point moves {ratio:.0f} times as fast as the input: the linkage is near a dead point")
     c = solved.construction
     if not c.valid:
         return f"the graphical construction fails: {c.reason}"
@@ -235,6 +238,33 @@ def _unusable(ex: Exercise, solved: Solved) -> str | None:
             if e.undefined:
                 return e.undefined
     return None
+
+
+def _span_of(solved: Solved) -> float:
+    from .quantities import _span
+
+    return _span(solved.construction) if solved.construction.valid else math.nan
+
+
+def _speed_ratio(problem, span: float) -> float:
+    """The fastest point of the linkage at unit input rate, over the input's own speed (crank: ω·span).
+
+    Near a dead point some link moves without bound for a finite input rate
+    (v ∝ 1/sin μ, μ the transmission angle), so this ratio flags it whatever
+    the loads are; inertia loads grow there too, so a force ratio alone cannot.
+    """
+    if problem.given or not math.isfinite(span) or span <= 0:
+        return 0.0
+    unit = replace(problem, q_dot=np.ones_like(problem.q_dot), q_ddot=np.zeros_like(problem.q_ddot))
+    kin = unit.kinematics()
+    mech = problem.mechanism
+    fastest = 0.0
+    for link in mech.moving:
+        fastest = max(fastest, float(np.max(np.abs(kin.omega[link]))) * span)
+        for point in mech.link(link).points:
+            fastest = max(fastest, float(np.max(np.abs(kin.z_velocity(link, point)))))
+    reference = span if mech.driver.kind == "crank" else 1.0
+    return fastest / reference
 
 
 _CYCLE_ONLY = {"peak_torque", "lowest_torque", "average_torque", "peak_force", "flywheel_E", "flywheel_I", "jfi_peak"}

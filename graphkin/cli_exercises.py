@@ -1,0 +1,225 @@
+"""``graphkin exercise ...``: list, make, key and grade exercises, for one student or a roster.
+
+``make`` gives a student's data and questions (no answers), ``key`` the same
+with the answers, ``grade`` reads a student's answers (JSON, question id →
+text as typed) and prints the verdict and feedback per question. With
+``--roster FILE.csv`` each command runs for every student of the roster (a
+``student`` column) and writes one CSV row per student; ``grade --answers
+FILE.csv`` grades a CSV with a ``student`` column and one column per question.
+
+The course secret comes from ``--secret`` or the ``GRAPHKIN_SECRET``
+environment variable; without one, students can compute their own keys.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+import os
+import sys
+
+from .errors import GraphkinError
+from .files import check_destination, read_text, write_text
+
+MAX_ROSTER = 100_000
+
+
+def add_parser(sub) -> None:
+    """Add ``exercise`` and its subcommands to the ``graphkin`` parser."""
+    e = sub.add_parser("exercise", help="exercises with per-student data: list, make, key, grade")
+    esub = e.add_subparsers(dest="action", required=True)
+    esub.add_parser("list", help="list the catalog exercises")
+    for action, text in (("make", "a student's data and questions (no answers)"),
+                         ("key", "a student's data, questions and answers"),
+                         ("grade", "grade a student's answers, with feedback")):
+        a = esub.add_parser(action, help=text)
+        a.add_argument("exercise", help="catalog name (see 'graphkin exercise list') or path to an exercise file")
+        who = a.add_mutually_exclusive_group(required=action != "grade")
+        who.add_argument("--student", help="the student's id")
+        who.add_argument("--roster", metavar="CSV", help="a CSV with a 'student' column: one row out per student")
+        a.add_argument("--secret", help="the course secret (default: $GRAPHKIN_SECRET)")
+        a.add_argument("--json", action="store_true", help="print plain data as JSON")
+        a.add_argument("-o", "--output", metavar="FILE", help="write to FILE instead of standard output")
+        if action == "grade":
+            a.add_argument("--answers", required=True, metavar="FILE",
+                           help="JSON {question id: answer} for --student ('-' reads stdin), "
+                                "or a CSV with a 'student' column and one column per question")
+            a.add_argument("--reveal", action="store_true", help="show the expected value of every question")
+
+
+def run(args) -> int:
+    from . import exercises
+
+    if args.action == "list":
+        for name in exercises.names():
+            ex = exercises.load(name)
+            print(f"{name:<26}{ex.title}")
+        return 0
+    if args.output:
+        check_destination(args.output)
+    secret = args.secret if args.secret is not None else os.environ.get("GRAPHKIN_SECRET", "")
+    if args.action in ("key", "grade") and not secret:
+        print("graphkin: note: no course secret (--secret or GRAPHKIN_SECRET): students can compute these keys "
+              "themselves", file=sys.stderr)
+    ex = exercises.load(args.exercise)
+    if args.action == "grade":
+        return _grade(ex, args, secret)
+    if args.roster:
+        rows = [_sheet(ex, s, secret, args.action) for s in _progress(_roster(args.roster), args.action)]
+        text = json.dumps(rows, indent=2, ensure_ascii=False) if args.json else _csv(_flat(rows))
+    else:
+        sheet = _sheet(ex, args.student, secret, args.action)
+        text = json.dumps(sheet, indent=2, ensure_ascii=False) if args.json else format_sheet(sheet)
+    _emit(text, args.output)
+    return 0
+
+
+def _sheet(ex, student, secret, action):
+    v = ex.variant(student, secret)
+    return v.key() if action == "key" else v.sheet()
+
+
+def _progress(items, label):
+    from tqdm import tqdm
+
+    from .cli import PROGRESS_DELAY
+
+    return tqdm(items, desc=f"graphkin: {label}", unit="student", delay=PROGRESS_DELAY, file=sys.stderr,
+                leave=False, disable=None)
+
+
+def _emit(text: str, output) -> None:
+    if output:
+        write_text(output, text if text.endswith("\n") else text + "\n")
+        print(f"written to {output}", file=sys.stderr)
+    else:
+        print(text)
+
+
+def _read_csv(path, what) -> list[dict]:
+    text = read_text(path, what)
+    try:
+        reader = csv.DictReader(io.StringIO(text))
+        rows = []
+        for row in reader:
+            rows.append(row)
+            if len(rows) > MAX_ROSTER:
+                raise GraphkinError(f"{what} {path}: more than {MAX_ROSTER} rows")
+    except csv.Error as exc:
+        raise GraphkinError(f"{what} {path}: not a readable CSV ({exc})") from None
+    fields = [f.strip().lower() for f in reader.fieldnames or []]
+    if "student" not in fields:
+        raise GraphkinError(f"{what} {path}: needs a header row with a 'student' column "
+                            f"(found: {', '.join(reader.fieldnames or []) or 'no header'})")
+    key = (reader.fieldnames or [])[fields.index("student")]
+    for n, row in enumerate(rows, start=2):
+        if not (row.get(key) or "").strip():
+            raise GraphkinError(f"{what} {path}: line {n}: the student id is empty")
+        row["student"] = row.pop(key).strip()
+    return rows
+
+
+def _roster(path) -> list[str]:
+    return [row["student"] for row in _read_csv(path, "roster")]
+
+
+def _flat(sheets: list[dict]) -> list[dict]:
+    """One CSV row per student: the data (by symbol) and, for a key, each answer as printed."""
+    rows = []
+    for s in sheets:
+        row = {"student": s["student"]}
+        row.update({g["symbol"]: g["value"] for g in s["data"]})
+        for q in s["questions"]:
+            if "answer" in q:
+                row[q["id"]] = q["answer"]["text"]
+        rows.append(row)
+    return rows
+
+
+def _csv(rows: list[dict]) -> str:
+    out = io.StringIO()
+    fields = list(dict.fromkeys(k for row in rows for k in row))
+    w = csv.DictWriter(out, fieldnames=fields, lineterminator="\n")
+    w.writeheader()
+    w.writerows(rows)
+    return out.getvalue()
+
+
+def _answers_json(path) -> dict:
+    text = read_text(path, "answers")
+    try:
+        data = json.loads(text)
+    except json.JSONDecodeError as exc:
+        raise GraphkinError(f"answers {path}: not valid JSON ({exc.msg} at line {exc.lineno}, column {exc.colno}); "
+                            'write {"F23": "27.06 N ∠ -73.78°", ...}') from None
+    if not isinstance(data, dict):
+        raise GraphkinError(f'answers {path}: must be a JSON object of question id to answer, e.g. {{"F23": "27.06 N"}}')
+    return data
+
+
+def _grade(ex, args, secret) -> int:
+    from .exercises.grading import grade_variant
+
+    reveal = True if args.reveal else None
+    if args.student:
+        answers = _answers_json(args.answers)
+        report = grade_variant(ex.variant(args.student, secret), answers, reveal=reveal)
+        text = json.dumps(report, indent=2, ensure_ascii=False) if args.json else format_report(report)
+        _emit(text, args.output)
+        return 0
+    rows = _read_csv(args.answers, "answers")
+    if args.roster:
+        wanted = set(_roster(args.roster))
+        rows = [r for r in rows if r["student"] in wanted]
+    reports = []
+    for row in _progress(rows, "grading"):
+        answers = {k: v for k, v in row.items() if k != "student" and k is not None}
+        reports.append(grade_variant(ex.variant(row["student"], secret), answers, reveal=reveal))
+    if args.json:
+        text = json.dumps(reports, indent=2, ensure_ascii=False)
+    else:
+        flat = []
+        for r in reports:
+            row = {"student": r["student"], "score": r["score"], "max": r["max"]}
+            for q in r["questions"]:
+                row[q["id"]] = q["score"]
+                row[f"{q['id']} verdict"] = q["verdict"] + (f" ({q['slip']})" if q["slip"] else "")
+                row[f"{q['id']} feedback"] = q["feedback"]
+            flat.append(row)
+        text = _csv(flat)
+    _emit(text, args.output)
+    return 0
+
+
+def format_sheet(sheet: dict) -> str:
+    """A student's sheet (or key) as text."""
+    lines = [sheet["title"], f"student: {sheet['student']}"]
+    if sheet.get("source"):
+        lines.append(f"source: {sheet['source']}")
+    if sheet.get("intro"):
+        lines += ["", sheet["intro"].strip()]
+    lines += ["", "Your data"]
+    lines += [f"  {g['shown']}" + (f"   ({g['label']})" if g["label"] else "") for g in sheet["data"]]
+    lines += ["", "Questions"]
+    for q in sheet["questions"]:
+        tol = f"{100 * q['tolerance']:g} %"
+        lines.append(f"  {q['id']}: {q['ask']}   [{q['unit'] or 'no unit'}, within {tol}, {q['points']:g} point"
+                     f"{'s' if q['points'] != 1 else ''}]")
+        if "answer" in q:
+            lines.append(f"      answer: {q['answer']['text']}")
+    return "\n".join(lines)
+
+
+def format_report(report: dict) -> str:
+    """A graded answer sheet as text."""
+    lines = [f"{report['exercise']}, student {report['student']}: {report['score']:g} / {report['max']:g}"]
+    for q in report["questions"]:
+        slip = f" ({q['slip']})" if q["slip"] else ""
+        lines.append(f"  {q['id']:<10} {q['verdict']}{slip:<20} {q['score']:g}/{q['max']:g}   {q['answer']}")
+        lines.append(f"      {q['feedback']}")
+        if "expected" in q:
+            lines.append(f"      expected: {q['expected']}")
+    if report.get("ignored"):
+        lines.append(f"  not questions of this exercise (ignored): {', '.join(report['ignored'])}")
+    return "\n".join(lines)
