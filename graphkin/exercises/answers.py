@@ -147,11 +147,13 @@ _SPACES_RE = re.compile(r"\s+")
 
 # --- the parts of an answer -----------------------------------------------
 
-_SENSE_WORDS = r"counter[- ]?clockwise|anti[- ]?clockwise|clockwise|ccw|cw"
-# A sense word ends the answer; it may not be glued to a unit ("N*mCW").
+# A sense word ends the answer, optionally in brackets; it may not be glued
+# to a unit ("N*mCW"). Which group matched gives the sense.
 _SENSE_RE = re.compile(
-    rf" ?(?:\((?P<a>{_SENSE_WORDS})\)|(?<![^\W\d_])(?P<b>{_SENSE_WORDS}))$",
-    re.IGNORECASE,
+    r"""\ ?(?P<open>\()?(?<![^\W\d_])
+        (?:(?P<ccw>counter[-\ ]?clockwise|anti[-\ ]?clockwise|ccw)|(?P<cw>clockwise|cw))
+        (?(open)\))$""",
+    re.IGNORECASE | re.VERBOSE,
 )
 # "∠", "@" or the word "at" between a magnitude and a direction.
 _POLAR_RE = re.compile(r" ?(?:∠|@|(?<![^\W\d_])at(?![^\W\d_])) ?", re.IGNORECASE)
@@ -159,9 +161,10 @@ _VECTOR_RE = re.compile(
     r"^(?:\((?P<a>[^()\[\]]*)\)|\[(?P<b>[^()\[\]]*)\]) ?(?P<unit>.*)$", re.DOTALL
 )
 # A number, optionally times a power of ten ("1.29 × 10³"), then the rest.
+# ASCII digits only: float() would also take other scripts' digits.
 _NUMBER_RE = re.compile(
-    r"""(?P<number>[+-]?\ ?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][+-]?\d+)?)
-        (?:\ ?[*x]\ ?10\ ?(?:\^|\*\*)\ ?(?P<exp10>[+-]?\d+))?
+    r"""(?P<number>[+-]?\ ?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)(?:[eE][+-]?[0-9]+)?)
+        (?:\ ?[*x]\ ?10\ ?(?:\^|\*\*)\ ?(?P<exp10>[+-]?[0-9]+))?
         \ ?(?P<rest>.*)""",
     re.VERBOSE | re.DOTALL,
 )
@@ -345,7 +348,7 @@ def _written_kind(u: _Unit, question: str) -> str:
 @functools.lru_cache(maxsize=256)
 def _question(dimension: str, unit: str) -> _Question:
     """Check and cache the question's dimension and unit (a programming error raises)."""
-    if dimension not in _QUESTION_DIMENSIONS:
+    if not isinstance(dimension, str) or dimension not in _QUESTION_DIMENSIONS:
         known = ", ".join(sorted(_QUESTION_DIMENSIONS))
         raise ValueError(f"unknown dimension {dimension!r}; known: {known}")
     if unit:
@@ -383,7 +386,10 @@ def _unit_text(rest: str) -> str:
 
 def _shown(text: str) -> str:
     """The student's text for a message: printable, on one line, short."""
-    text = "".join(c if c.isprintable() else "\N{REPLACEMENT CHARACTER}" for c in text[: _SHOWN_CHARS + 1])
+    text = "".join(
+        c if c.isprintable() else "\N{REPLACEMENT CHARACTER}"
+        for c in text[: _SHOWN_CHARS + 1]
+    )
     if len(text) > _SHOWN_CHARS:
         text = text[: _SHOWN_CHARS - 1] + "…"
     return text
@@ -557,7 +563,7 @@ def _read_polar(magnitude: str, direction: str, ctx: _Context) -> Reading:
 
 
 def _polar_xy(r: float, a: float) -> tuple[float, float]:
-    """Components of a polar vector; roundoff-sized ones are exactly 0.0 (so 90° gives x == 0.0)."""
+    """Components of a polar vector; roundoff-sized ones are exactly 0.0 (90° gives x == 0.0)."""
     x, y = r * math.cos(a), r * math.sin(a)
     small = units._POLAR_ZERO_RTOL * abs(r)
     return (0.0 if abs(x) <= small else x, 0.0 if abs(y) <= small else y)
@@ -598,8 +604,7 @@ def _split_sense(text: str) -> tuple[str, int | None]:
     m = _SENSE_RE.search(text)
     if m is None:
         return text, None
-    word = (m["a"] or m["b"]).lower()
-    sense = -1 if word in ("cw", "clockwise") else 1
+    sense = 1 if m["ccw"] else -1
     return text[: m.start()].rstrip(), sense
 
 
@@ -663,10 +668,10 @@ def read_answer(text: Any, *, dimension: str, unit: str) -> Reading:
     Examples
     --------
     >>> r = read_answer("27.06 N ∠ -73.78°", dimension="force", unit="N")
-    >>> r.form, round(r.vector[0], 3), round(r.vector[1], 3)
+    >>> r.form, round(r.vector[0], 2), round(r.vector[1], 2)
     ('polar', 7.56, -25.98)
-    >>> read_answer("-73.78", dimension="angle", unit="deg").value
-    -1.2877088434638046
+    >>> round(read_answer("-73.78", dimension="angle", unit="deg").value, 6)
+    -1.287704
     """
     if not isinstance(unit, str):
         raise ValueError(f"the question's unit must be a string, got {unit!r}")
@@ -683,7 +688,7 @@ def read_answer(text: Any, *, dimension: str, unit: str) -> Reading:
     raw = text.strip()
     ctx = _Context(raw, q)
     if not raw:
-        raise Unreadable(f"The answer is empty: write a number and a unit, such as {ctx.example()}.")
+        raise Unreadable(f"The answer is empty: {ctx.scalar_advice()}.")
     if len(raw) > MAX_CHARS:
         raise Unreadable(
             f"The answer is too long ({len(raw)} characters, at most {MAX_CHARS}): "
@@ -697,7 +702,8 @@ def read_answer(text: Any, *, dimension: str, unit: str) -> Reading:
                 "CW and CCW go after a single number, such as "
                 f"{ctx.example(unit=f'{ctx.q.unit} CCW'.strip())}"
             )
-        return _read_vector(vector["a"] if vector["a"] is not None else vector["b"], vector["unit"], ctx)
+        body = vector["a"] if vector["a"] is not None else vector["b"]
+        return _read_vector(body, vector["unit"], ctx)
     if "," in body:
         if _DECIMAL_COMMA_RE.search(body):
             raise ctx.fail(f"{ctx.scalar_advice()} (use a decimal point)")

@@ -478,6 +478,7 @@ def parse_exercise(text: str, *, file: str = "<exercise>", id: str = "exercise",
         for f in v.field:
             if f != "flywheel.Cs":
                 _check_field(rd, base, v.symbol, f)
+    _check_values(rd, base, problem, vary)
     reveal = data.get("reveal", False)
     if not isinstance(reveal, bool):
         raise rd.fail("reveal", f"must be true or false, got {reveal!r}")
@@ -525,6 +526,30 @@ def _check_field(rd: _Reader, base: dict, symbol: str, field: str) -> None:
             raise rd.fail(where, f"{field!r}: the problem has no {'.'.join(map(str, keys[:i + 1]))!r}")
         if not last:
             node = node[key]
+
+
+def _check_values(rd: _Reader, base: dict, problem: str, vary: list[Vary]) -> None:
+    """Every value of every varied field must be one the problem file accepts there (units, field name)."""
+    import copy
+
+    from ..problem import build_problem
+    from ..units import to_si
+
+    for v in vary:
+        # The ends and the middle: a unit or a field name at fault shows on any of them.
+        for value in dict.fromkeys((v.values[0], v.values[len(v.values) // 2], v.values[-1])):
+            trial = copy.deepcopy(base)
+            for f in v.field:
+                if f == "flywheel.Cs":
+                    to_si(value, "dimensionless", field=f"vary.{v.symbol}", file=rd.file)
+                    continue
+                set_field(trial, f, value)
+            try:
+                build_problem(trial, file=problem)
+            except ProblemFileError as exc:
+                where = f" at {exc.field}" if exc.field else ""
+                raise rd.fail(f"vary.{v.symbol}", f"the problem does not accept {value!r}{where}: {exc.message}") \
+                    from None
 
 
 def set_field(data: dict, field: str, value: str) -> None:

@@ -17,6 +17,7 @@ import copy
 import hashlib
 import math
 import re
+import unicodedata
 from dataclasses import dataclass, field, replace
 from functools import cached_property
 
@@ -37,7 +38,9 @@ def check_student(student) -> str:
     """The student id as used in the seed (stripped), or a clear error."""
     if not isinstance(student, str) or not student.strip():
         raise GraphkinError(f"student id must be a non-empty text, got {student!r}")
-    student = student.strip()
+    # The same id typed on any keyboard or pasted from a spreadsheet gives the same data: Unicode NFC
+    # (é composed or not) and any run of white space (no-break spaces too) as one space.
+    student = " ".join(unicodedata.normalize("NFC", student).split())
     if len(student) > MAX_STUDENT_CHARS or not student.isprintable():
         raise GraphkinError(f"student id must be printable text of at most {MAX_STUDENT_CHARS} characters")
     return student
@@ -139,10 +142,13 @@ class Variant:
     problem: object
     Cs: float | None
     solved: Solved = field(repr=False, compare=False)
+    _alts: dict = field(default_factory=dict, repr=False, compare=False)
 
     def altered(self, slip: str) -> Solved | None:
         """The same variant solved as a student who made ``slip`` would (None if it cannot apply)."""
-        return _altered(self, slip)
+        if slip not in self._alts:
+            self._alts[slip] = _altered(self, slip)
+        return self._alts[slip]
 
     def sheet(self) -> dict:
         """The student's exercise as plain data: the statement, their data and the questions; no answers."""
