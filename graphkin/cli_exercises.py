@@ -20,6 +20,7 @@ import os
 import sys
 
 from .errors import GraphkinError
+from .exercises.batch import run_roster
 from .files import check_destination, read_text, write_text
 
 MAX_ROSTER = 100_000
@@ -66,26 +67,25 @@ def run(args) -> int:
     if args.action == "grade":
         return _grade(ex, args, secret)
     if args.roster:
-        rows = [_sheet(ex, s, secret, args.action) for s in _progress(_roster(args.roster), args.action)]
+        students = _roster(args.roster)
+        with _progress(len(students), args.action) as bar:
+            rows = run_roster(ex, args.action, students, secret, progress=bar.update)
         text = json.dumps(rows, indent=2, ensure_ascii=False) if args.json else _csv(_flat(rows))
     else:
-        sheet = _sheet(ex, args.student, secret, args.action)
+        v = ex.variant(args.student, secret)
+        sheet = v.key() if args.action == "key" else v.sheet()
         text = json.dumps(sheet, indent=2, ensure_ascii=False) if args.json else format_sheet(sheet)
     _emit(text, args.output)
     return 0
 
 
-def _sheet(ex, student, secret, action):
-    v = ex.variant(student, secret)
-    return v.key() if action == "key" else v.sheet()
-
-
-def _progress(items, label):
+def _progress(total: int, label: str):
+    """A progress bar on stderr for a batch that takes more than a second (none when stderr is not a terminal)."""
     from tqdm import tqdm
 
     from .cli import PROGRESS_DELAY
 
-    return tqdm(items, desc=f"graphkin: {label}", unit="student", delay=PROGRESS_DELAY, file=sys.stderr,
+    return tqdm(total=total, desc=f"graphkin: {label}", unit="student", delay=PROGRESS_DELAY, file=sys.stderr,
                 leave=False, disable=None)
 
 
@@ -128,6 +128,9 @@ def _flat(sheets: list[dict]) -> list[dict]:
     """One CSV row per student: the data (by symbol) and, for a key, each answer as printed."""
     rows = []
     for s in sheets:
+        if "error" in s:
+            rows.append(s)
+            continue
         row = {"student": s["student"]}
         row.update({g["symbol"]: g["value"] for g in s["data"]})
         for q in s["questions"]:
@@ -172,15 +175,18 @@ def _grade(ex, args, secret) -> int:
     if args.roster:
         wanted = set(_roster(args.roster))
         rows = [r for r in rows if r["student"] in wanted]
-    reports = []
-    for row in _progress(rows, "grading"):
-        answers = {k: v for k, v in row.items() if k != "student" and k is not None}
-        reports.append(grade_variant(ex.variant(row["student"], secret), answers, reveal=reveal))
+    answers = [{k: v for k, v in row.items() if k != "student" and k is not None} for row in rows]
+    with _progress(len(rows), "grading") as bar:
+        reports = run_roster(ex, "grade", [row["student"] for row in rows], secret, answers=answers, reveal=reveal,
+                             progress=bar.update)
     if args.json:
         text = json.dumps(reports, indent=2, ensure_ascii=False)
     else:
         flat = []
         for r in reports:
+            if "error" in r:
+                flat.append(r)
+                continue
             row = {"student": r["student"], "score": r["score"], "max": r["max"]}
             for q in r["questions"]:
                 row[q["id"]] = q["score"]

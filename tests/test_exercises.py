@@ -205,10 +205,14 @@ find = "flywheel_E"
 
 
 def test_student_ids_are_checked():
-    for bad in ("", "   ", None, 12, "x" * 101, "a\nb"):
+    for bad in ("", "   ", None, 12, "x" * 101, "a\x00b"):
         with pytest.raises(GraphkinError, match="student id"):
             exercises.make("single_link", bad)
     assert exercises.make("single_link", "  s1 ")["student"] == "s1"
+    # The same id however it was typed or pasted: composed or decomposed é, no-break or doubled spaces.
+    same = {exercises.make("strip_cutter_cut", s)["data"][0]["value"] for s in ("José Ruiz", "Jose\u0301 Ruiz",
+                                                                               "José\u00a0 Ruiz\n")}
+    assert len(same) == 1
 
 
 def test_exercises_do_not_import_matplotlib_or_ipywidgets():

@@ -245,3 +245,12 @@ def _fuzz_variant():
 def test_message_catalogue_is_sentences():
     for key, text in MESSAGES.items():
         assert text.endswith("."), key
+
+
+@pytest.mark.parametrize("name", exercises.names())
+def test_the_keys_printed_answers_earn_full_marks(name):
+    """The key as printed (4 significant figures, the sense in words) is itself a right answer."""
+    for i in range(15):
+        key = exercises.key(name, f"s{i}")
+        report = exercises.grade(name, f"s{i}", {q["id"]: q["answer"]["text"] for q in key["questions"]})
+        assert report["score"] == report["max"], [q for q in report["questions"] if q["verdict"] != "correct"]

@@ -176,6 +176,8 @@ _EXPONENT_RE = re.compile(r"(?:\^|\*\*)[+-]?\d+(?:\.\d+)?")
 # A number inside the unit text (after its powers are removed): "12 5 N".
 _STRAY_NUMBER_RE = re.compile(r"(?:^|[*/()+-])\.?\d")
 _LETTERS_RE = re.compile(r"[^\W\d_]+")
+# Units joined by "-" or "." ("N-m", "N.m"), as some books print them.
+_JOINED_UNITS_RE = re.compile(r"[^\W\d_]([-.])[^\W\d_]")
 # What may reach pint: unit names with integer powers of one or two digits,
 # "*", "/", brackets and "%", optionally after "1/". Possessive quantifiers
 # keep the match linear on any text.
@@ -348,7 +350,7 @@ def _written_kind(u: _Unit, question: str) -> str:
 @functools.lru_cache(maxsize=256)
 def _question(dimension: str, unit: str) -> _Question:
     """Check and cache the question's dimension and unit (a programming error raises)."""
-    if not isinstance(dimension, str) or dimension not in _QUESTION_DIMENSIONS:
+    if dimension not in _QUESTION_DIMENSIONS:
         known = ", ".join(sorted(_QUESTION_DIMENSIONS))
         raise ValueError(f"unknown dimension {dimension!r}; known: {known}")
     if unit:
@@ -419,7 +421,13 @@ class _Context:
     def fail(self, advice: str) -> Unreadable:
         return Unreadable(f'Could not read "{_shown(self.raw)}": {advice}.')
 
+    def sense_advice(self) -> str:
+        example = self.example(unit=f"{self.q.unit} CCW".strip())
+        return f"CW and CCW go after a single number, such as {example}"
+
     def scalar_advice(self) -> str:
+        if not self.q.unit:  # a dimensionless question
+            return f"write a number, such as {self.example()}"
         return f"write a number and a unit, such as {self.example()}"
 
 
@@ -468,10 +476,11 @@ def _check_unit_text(text: str, ctx: _Context, what: str) -> None:
         raise ctx.fail('write one power per unit, such as "kg*m^2"')
     bare = text[2:] if text.startswith("1/") else text
     if _STRAY_NUMBER_RE.search(_EXPONENT_RE.sub("", bare)):
-        raise ctx.fail(f"write one number and a unit, such as {ctx.example()}")
+        raise ctx.fail(ctx.scalar_advice().replace("a number", "one number", 1))
     if not _UNIT_TEXT_RE.fullmatch(text):
-        if "-" in text and _LETTERS_RE.search(text):
-            raise ctx.fail('multiply units with "*", such as "N*m", not "-"')
+        joined = _JOINED_UNITS_RE.search(text)
+        if joined:
+            raise ctx.fail(f'multiply units with "*", such as "N*m", not "{joined[1]}"')
         raise ctx.fail(f"could not read the unit; {what}")
 
 
@@ -537,7 +546,7 @@ def _read_scalar(body: str, sense: int | None, ctx: _Context) -> Reading:
 def _read_polar(magnitude: str, direction: str, ctx: _Context) -> Reading:
     what = f"write a magnitude and a direction, such as {ctx.polar_example()}"
     r, text, u = _quantity(magnitude, ctx, what)
-    a, a_text, a_unit = _quantity(direction, ctx, what)
+    a, _, a_unit = _quantity(direction, ctx, what)
     if a_unit is None:
         a = math.radians(a)  # a bare direction is in degrees, as the books print it
     elif a_unit.kind != "angle":
@@ -673,16 +682,15 @@ def read_answer(text: Any, *, dimension: str, unit: str) -> Reading:
     >>> round(read_answer("-73.78", dimension="angle", unit="deg").value, 6)
     -1.287704
     """
-    if not isinstance(unit, str):
-        raise ValueError(f"the question's unit must be a string, got {unit!r}")
+    if not isinstance(dimension, str) or not isinstance(unit, str):
+        raise ValueError(
+            f"the question's dimension and unit must be strings, got {dimension!r}, {unit!r}"
+        )
     q = _question(dimension, unit)
     if isinstance(text, bool) or not isinstance(text, (str, numbers.Real)):
         kind = "None" if text is None else type(text).__name__
-        example = _Context("", q).example()
-        raise Unreadable(
-            f"Could not read an answer of type {kind}: write a number and a unit, "
-            f"such as {example}."
-        )
+        advice = _Context("", q).scalar_advice()
+        raise Unreadable(f"Could not read an answer of type {kind}: {advice}.")
     if not isinstance(text, str):
         return _read_number(text, q)
     raw = text.strip()
@@ -698,10 +706,7 @@ def read_answer(text: Any, *, dimension: str, unit: str) -> Reading:
     vector = _VECTOR_RE.match(body)
     if vector is not None:
         if sense is not None:
-            raise ctx.fail(
-                "CW and CCW go after a single number, such as "
-                f"{ctx.example(unit=f'{ctx.q.unit} CCW'.strip())}"
-            )
+            raise ctx.fail(ctx.sense_advice())
         body = vector["a"] if vector["a"] is not None else vector["b"]
         return _read_vector(body, vector["unit"], ctx)
     if "," in body:
@@ -711,6 +716,8 @@ def read_answer(text: Any, *, dimension: str, unit: str) -> Reading:
     parts = _POLAR_RE.split(body)
     if len(parts) == 1:
         return _read_scalar(body, sense, ctx)
-    if len(parts) > 2 or sense is not None:
+    if sense is not None:
+        raise ctx.fail(ctx.sense_advice())
+    if len(parts) > 2:
         raise ctx.fail(f"write a magnitude and one direction, such as {ctx.polar_example()}")
     return _read_polar(parts[0], parts[1], ctx)

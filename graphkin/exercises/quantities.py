@@ -133,10 +133,10 @@ def format_value(form: str, value, unit: str, dimension: str, *, torque: bool = 
         return f"{_num(abs(value) / f)}{u} ∠ {math.degrees(math.atan2(value.imag, value.real)):.2f}°".replace("-", "−")
     if form == "point":
         return f"({_num(value.real / f)}, {_num(value.imag / f)}){u}"
-    text = f"{_num(value / f)}{u}"
     if torque and value:
-        text += " CCW" if value > 0 else " CW"
-    return text
+        # As the books print a torque: its size and its sense (a signed number with CW would read as −(−T)).
+        return f"{_num(abs(value) / f)}{u} {'CCW' if value > 0 else 'CW'}"
+    return f"{_num(value / f)}{u}"
 
 
 def value_of(solved, q: Question):
@@ -246,6 +246,16 @@ def _hint(solved, q: Question) -> tuple[str, int | None]:
     return "", q.link
 
 
+def undefined(solved, q: Question) -> str | None:
+    """Why ``q`` has no answer on this solved problem (None when it has one)."""
+    value = value_of(solved, q)
+    if value is not None and not (isinstance(value, float) and not math.isfinite(value)):
+        return None
+    return {"h": f"link {q.link}'s inertia force is zero, so h is not defined",
+            "concurrency": f"link {q.link} has no point of concurrency at this position",
+            "force": f"{q.find} has no direction (it is zero)"}.get(q.kind, f"{q.find} is not defined")
+
+
 def expected(variant, q: Question) -> Expected:
     """The answer to ``q`` for ``variant`` (anything with ``.solved`` and ``.exercise``)."""
     solved = variant.solved
@@ -253,10 +263,7 @@ def expected(variant, q: Question) -> Expected:
     dim = dimension_of(q.kind, q.part)
     value = value_of(solved, q)
     if value is None or (isinstance(value, float) and not math.isfinite(value)):
-        what = {"h": f"link {q.link}'s inertia force is zero, so h is not defined",
-                "concurrency": f"link {q.link} has no point of concurrency at this position",
-                "force": f"{q.find} has no direction (it is zero)"}.get(q.kind, f"{q.find} is not defined")
-        return Expected(q, form, 0.0, 0.0, "", undefined=what)
+        return Expected(q, form, 0.0, 0.0, "", undefined=undefined(solved, q))
     if form == "direction":
         slack = math.atan(q.tolerance)
         if q.part == "at":

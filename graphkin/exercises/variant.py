@@ -13,7 +13,6 @@ taken instead.
 
 from __future__ import annotations
 
-import copy
 import hashlib
 import math
 import re
@@ -195,14 +194,14 @@ def _build(ex: Exercise, data: tuple[Given, ...], student: str):
     from ..problem import build_problem
     from ..units import to_si
 
-    base = copy.deepcopy(ex.base)
+    base = dict(ex.base)
     Cs = ex.Cs
     for g in data:
         for f in g.field:
             if f == "flywheel.Cs":
                 Cs = to_si(g.value, "dimensionless", field=f"vary.{g.symbol}", file=ex.file)
             else:
-                set_field(base, f, g.value)
+                set_field(base, f, g.value, copy=True)
     problem = build_problem(base, file=f"{ex.id} (student {student})")
     return problem, Cs
 
@@ -222,7 +221,7 @@ def _unusable(ex: Exercise, solved: Solved) -> str | None:
     r = solved.result
     if not r.valid[0]:
         return r.reason(0)
-    ratio = _speed_ratio(solved.problem, _span_of(solved))
+    ratio = _speed_ratio(solved.problem, _span_of(solved), r.kinematics)
     if ratio > ex.max_speed_ratio:
         return (f"a point moves {ratio:.0f} times as fast as the input: the linkage is near a dead point")
     c = solved.construction
@@ -236,13 +235,13 @@ def _unusable(ex: Exercise, solved: Solved) -> str | None:
     if max(loads + [0.0]) > 0 and largest > ex.max_force_ratio * max(loads):
         return (f"the joint forces are {largest / max(loads):.0f} times the largest load: the linkage is near a dead "
                 "point")
-    from .quantities import expected
+    from .quantities import undefined
 
     for q in ex.questions:
         if q.kind not in _CYCLE_ONLY:
-            e = expected(_Probe(ex, solved), q)
-            if e.undefined:
-                return e.undefined
+            why = undefined(solved, q)
+            if why:
+                return why
     return None
 
 
@@ -252,7 +251,7 @@ def _span_of(solved: Solved) -> float:
     return _span(solved.construction) if solved.construction.valid else math.nan
 
 
-def _speed_ratio(problem, span: float) -> float:
+def _speed_ratio(problem, span: float, kinematics) -> float:
     """The fastest point of the linkage at unit input rate, over the input's own speed (crank: ω·span).
 
     Near a dead point some link moves without bound for a finite input rate
@@ -261,27 +260,23 @@ def _speed_ratio(problem, span: float) -> float:
     """
     if problem.given or not math.isfinite(span) or span <= 0:
         return 0.0
-    unit = replace(problem, q_dot=np.ones_like(problem.q_dot), q_ddot=np.zeros_like(problem.q_ddot))
-    kin = unit.kinematics()
+    if np.all(problem.q_dot != 0):
+        # Velocities are linear in the input rate: the solved kinematics divided by it are those at unit rate.
+        kin, rate = kinematics, np.abs(problem.q_dot)
+    else:
+        unit = replace(problem, q_dot=np.ones_like(problem.q_dot), q_ddot=np.zeros_like(problem.q_ddot))
+        kin, rate = unit.kinematics(), 1.0
     mech = problem.mechanism
     fastest = 0.0
     for link in mech.moving:
-        fastest = max(fastest, float(np.max(np.abs(kin.omega[link]))) * span)
+        fastest = max(fastest, float(np.max(np.abs(kin.omega[link]) / rate)) * span)
         for point in mech.link(link).points:
-            fastest = max(fastest, float(np.max(np.abs(kin.z_velocity(link, point)))))
+            fastest = max(fastest, float(np.max(np.abs(kin.z_velocity(link, point)) / rate)))
     reference = span if mech.driver.kind == "crank" else 1.0
     return fastest / reference
 
 
 _CYCLE_ONLY = {"peak_torque", "lowest_torque", "average_torque", "peak_force", "flywheel_E", "flywheel_I", "jfi_peak"}
-
-
-@dataclass(frozen=True)
-class _Probe:
-    """The parts of a Variant that :func:`expected` reads, before the Variant exists."""
-
-    exercise: Exercise
-    solved: Solved
 
 
 def make_variant(ex: Exercise, student: str, secret: str = "") -> Variant:

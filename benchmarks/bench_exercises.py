@@ -1,0 +1,71 @@
+"""Exercises benchmark: make + key + grade for a roster of 1000 students, and the grader alone.
+
+Run directly: ``.venv/bin/python benchmarks/bench_exercises.py [students]``.
+
+For each catalog exercise, the time to make every student's sheet and key
+and grade their answers (the key's own printed answers, so every question
+goes through the whole grader) through :func:`graphkin.exercises.batch.run_roster`,
+the path ``graphkin exercise ... --roster`` takes:
+
+  serial     one process
+  parallel   every core (``os.cpu_count()``), chunks of 50 students
+
+and the time to grade one answer sheet whose answers are all slipped (the
+sign reversed: the grader then searches the slips, re-solving where needed).
+The aim (issue 9) is make + key + grade for 1000 students in <= 2 s on 2 cores.
+"""
+
+from __future__ import annotations
+
+import os
+import sys
+import time
+
+from graphkin import exercises
+from graphkin.exercises.batch import run_roster
+
+AIM = 2.0  # s for 1000 students
+
+
+def roster_time(ex, students, workers) -> float:
+    t = time.perf_counter()
+    sheets = run_roster(ex, "make", students, "bench", workers=workers)
+    keys = run_roster(ex, "key", students, "bench", workers=workers)
+    answers = [{q["id"]: q["answer"]["text"] for q in k["questions"]} for k in keys]
+    grades = run_roster(ex, "grade", students, "bench", answers=answers, workers=workers)
+    elapsed = time.perf_counter() - t
+    assert len(sheets) == len(grades) == len(students)
+    assert all(g["score"] == g["max"] for g in grades), "a key's own answers must earn full marks"
+    return elapsed
+
+
+def main(n: int = 1000) -> int:
+    students = [f"s{i:05d}" for i in range(n)]
+    cores = os.cpu_count() or 1
+    print(f"make + key + grade for {n} students; {cores} cores; aim {AIM:g} s on 2 cores\n")
+    print(f"{'exercise':<26}{'serial [s]':>12}{'parallel [s]':>14}{'per student [ms]':>18}{'slipped sheet [ms]':>20}")
+    worst = 0.0
+    for name in exercises.names():
+        ex = exercises.load(name)
+        ex.variant("warm-up").key()
+        serial = roster_time(ex, students, 1)
+        parallel = roster_time(ex, students, cores)
+        v = ex.variant("slips")
+        slipped = {}
+        for q in v.key()["questions"]:
+            text = q["answer"]["text"]
+            slipped[q["id"]] = text[1:] if text.startswith("−") else "−" + text
+        t = time.perf_counter()
+        for _ in range(20):
+            v = ex.variant("slips")
+            v.grade(slipped)
+        slip_ms = (time.perf_counter() - t) / 20 * 1e3
+        worst = max(worst, parallel)
+        print(f"{name:<26}{serial:>12.2f}{parallel:>14.2f}{serial / n * 1e3:>18.2f}{slip_ms:>20.1f}")
+    verdict = "met" if worst <= AIM else "NOT met"
+    print(f"\nslowest exercise, parallel: {worst:.2f} s for {n} students (aim {AIM:g} s: {verdict})")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(*(int(a) for a in sys.argv[1:])))
