@@ -210,7 +210,8 @@ def format_sheet(sheet: dict) -> str:
     lines += ["", "Questions"]
     for q in sheet["questions"]:
         tol = f"{100 * q['tolerance']:g} %"
-        lines.append(f"  {q['id']}: {q['ask']}   [{q['unit'] or 'no unit'}, within {tol}, {q['points']:g} point"
+        unit = q["unit"].replace("*", "·").replace("^2", "²") or "no unit"
+        lines.append(f"  {q['id']}: {q['ask']}   [{unit}, within {tol}, {q['points']:g} point"
                      f"{'s' if q['points'] != 1 else ''}]")
         if "answer" in q:
             lines.append(f"      answer: {q['answer']['text']}")
