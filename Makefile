@@ -28,6 +28,8 @@ bench: $(VENV)/.installed
 	$(BIN)/python benchmarks/bench_graphical.py
 	$(BIN)/python benchmarks/bench_cycle.py
 	$(BIN)/python benchmarks/bench_explorer.py
+	$(BIN)/python benchmarks/bench_exercises.py
+	$(BIN)/python benchmarks/fuzz_grader.py
 
 clean:
 	rm -rf $(VENV) build *.egg-info

@@ -179,7 +179,7 @@ def _distance_ok(exp: Expected, a, other) -> bool:
 
 def grade_question(variant, q, answer, *, reveal: bool = False) -> dict:
     """Grade one answer; never raises on the answer, whatever it is."""
-    exp = expected(variant, q)
+    exp = variant.expected(q) if hasattr(variant, "expected") else expected(variant, q)
     if answer is None or (isinstance(answer, str) and not answer.strip()):
         return _verdict(exp, "missing", None, 0.0, MESSAGES["missing"].format(name=q.find), "", reveal)
     dim = dimension_of(q.kind, q.part)

@@ -141,13 +141,21 @@ class Variant:
     problem: object
     Cs: float | None
     solved: Solved = field(repr=False, compare=False)
-    _alts: dict = field(default_factory=dict, repr=False, compare=False)
+    _memo: dict = field(default_factory=dict, repr=False, compare=False)
 
     def altered(self, slip: str) -> Solved | None:
         """The same variant solved as a student who made ``slip`` would (None if it cannot apply)."""
-        if slip not in self._alts:
-            self._alts[slip] = _altered(self, slip)
-        return self._alts[slip]
+        if ("slip", slip) not in self._memo:
+            self._memo["slip", slip] = _altered(self, slip)
+        return self._memo["slip", slip]
+
+    def expected(self, q: Question):
+        """The answer to question ``q`` (:class:`graphkin.exercises.quantities.Expected`), computed once."""
+        from .quantities import expected
+
+        if ("question", q.id) not in self._memo:
+            self._memo["question", q.id] = expected(self, q)
+        return self._memo["question", q.id]
 
     def sheet(self) -> dict:
         """The student's exercise as plain data: the statement, their data and the questions; no answers."""
@@ -162,12 +170,10 @@ class Variant:
 
     def key(self) -> dict:
         """The sheet with every answer: its value in SI and as the book prints it, and the tolerance."""
-        from .quantities import expected
-
         out = self.sheet()
         out["attempt"] = self.attempt
         for q, entry in zip(self.exercise.questions, out["questions"]):
-            e = expected(self, q)
+            e = self.expected(q)
             entry["answer"] = {"text": e.text, "si": e.si_data(), "unit_si": e.si_unit, "hint": e.hint}
         return out
 
