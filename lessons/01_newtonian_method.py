@@ -24,10 +24,14 @@
 # 1. see why adding inertia loads turns every moving link into a body in equilibrium;
 # 2. solve a single rotating link by hand, as a 3 × 3 linear system, and with `graphkin`;
 # 3. solve a four-link double slider (9 unknowns) and compare every number with the textbook;
-# 4. solve the same mechanism at other positions, to see that nothing was typed in by hand.
+# 4. solve the same mechanism at other positions, to see that nothing was typed in by hand;
+# 5. solve both problems again with **your own data**, and have your answers checked.
 #
 # All numbers inside `graphkin` are SI (m, kg, s, N, rad). We convert to mm, degrees and N·mm
 # only when printing, to match the books.
+#
+# The checks that keep the lesson honest (the numbers quoted in the text are compared there with
+# what `graphkin` computes) are collected at the very end, out of your way.
 
 # %%
 import math
@@ -125,17 +129,17 @@ print("r_G =", rG, "m")
 print("a_G =", aG, "m/s² =", show(aG, "m/s²"))
 
 by_hand = alpha2 * np.array([-rG[1], rG[0]]) - omega2**2 * rG
-assert np.allclose(aG, by_hand)
+print("a_G by the formula =", by_hand, "m/s²")
 
 # %% [markdown]
 # ### Step 2: inertia loads
 #
-# `result.inertia(2)` gives $\vec F_i = -m\vec a_G$, $T_i = -I_G\alpha$ and the distance
+# `bar_result.inertia(2)` gives $\vec F_i = -m\vec a_G$, $T_i = -I_G\alpha$ and the distance
 # $h = |T_i|/|\vec F_i|$ by which the single equivalent inertia force is shifted from $G$.
 
 # %%
-result = p.solve()
-inert = result.inertia(2)
+bar_result = p.solve()
+inert = bar_result.inertia(2)
 print("F_i =", inert.F[0], "N =", show(inert.F[0]))
 print(f"T_i = {inert.T[0]:.4f} N·m  (negative: clockwise)")
 print(f"h   = {inert.h[0] * 1e3:.3f} mm")
@@ -153,16 +157,16 @@ print(f"h   = {inert.h[0] * 1e3:.3f} mm")
 # \end{aligned}$$
 #
 # Keep the unknowns on the left and move everything known to the right-hand side: this is
-# $[A]\{x\} = \{b\}$. `assemble(result)` builds it; `format(0)` prints it for position 0.
+# $[A]\{x\} = \{b\}$. `assemble(bar_result)` builds it; `format(0)` prints it for position 0.
 # (A 2-D cross product is the scalar $a_x b_y - a_y b_x$.)
 
 # %%
-system = assemble(result)
+system = assemble(bar_result)
 print(system.format(0))
 
 # %% [markdown]
 # We solve it with plain numpy and compare with what `p.solve()` found.
-# `result["F12"]` is an (n, 2) array — one row per position; here there is one position.
+# `bar_result["F12"]` is an (n, 2) array — one row per position; here there is one position.
 
 # %%
 x = np.linalg.solve(system.A[0], system.b[0])
@@ -170,10 +174,8 @@ for name, value in zip(system.unknowns, x):
     print(f"{name:>5} = {value:10.4f}")
 
 print()
-print("graphkin: F12 =", result["F12"][0], "N =", show(result["F12"][0]))
-print(f"graphkin: T12 = {result['T12'][0]:.4f} N·m")
-assert np.allclose(x[:2], result["F12"][0])
-assert np.isclose(x[2], result["T12"][0])
+print("graphkin: F12 =", bar_result["F12"][0], "N =", show(bar_result["F12"][0]))
+print(f"graphkin: T12 = {bar_result['T12'][0]:.4f} N·m")
 
 # %% [markdown]
 # ### Step 4: check $T_{12}$ by hand
@@ -200,8 +202,7 @@ FP = np.array(mech.loads[0].force)
 T12_hand = I_O * alpha2 - cross(rP, FP)
 print(f"I_G = {I_G:.6f} kg·m², I_O = {I_O:.6f} kg·m² (= m L²/3 = {m * L**2 / 3:.6f})")
 print(f"I_O α = {I_O * alpha2:.4f} N·m,  r_P × F_P = {cross(rP, FP):.4f} N·m")
-print(f"T12 by hand = {T12_hand:.4f} N·m,  graphkin = {result['T12'][0]:.4f} N·m")
-assert math.isclose(T12_hand, result["T12"][0], rel_tol=1e-12)
+print(f"T12 by hand = {T12_hand:.4f} N·m,  graphkin = {bar_result['T12'][0]:.4f} N·m")
 
 # %% [markdown]
 # The motor must hold the bar back (clockwise torque): the tip force pushes harder than the
@@ -209,7 +210,7 @@ assert math.isclose(T12_hand, result["T12"][0], rel_tol=1e-12)
 # $\vec F_{12} = m\vec a_G - \vec F_P$. Everything together, with textbook units:
 
 # %%
-print(format_solution(p, result))
+print(format_solution(p, bar_result))
 
 # %% [markdown]
 # ## 3. The double slider (Söylemez, §6.4)
@@ -257,6 +258,7 @@ print("valid position:", result.valid)
 # Every list must add up to zero.
 
 # %%
+sums = {}  # link → the sum of the forces on it
 for j in mech.moving:
     print(f"link {j} ({mech.link(j).name}):")
     total = np.zeros(2)
@@ -276,7 +278,7 @@ for j in mech.moving:
     else:
         print("         massless: no inertia loads")
     print(f"   sum of forces = {total}")
-    assert np.allclose(total, 0, atol=1e-9)
+    sums[j] = total
 
 # %% [markdown]
 # ### The inertia loads of the rod
@@ -294,7 +296,6 @@ print("a_G3 =", show(k.a_G(3)[0], "m/s²"))
 print("F3i  =", show(i3.F[0]))
 print(f"T3i  = {i3.T[0] * 1e3:.1f} N·mm  ({'CW' if i3.T[0] < 0 else 'CCW'})")
 print(f"h    = {i3.h[0] * 1e3:.2f} mm")
-assert math.isclose(i3.h[0], abs(i3.T[0]) / np.linalg.norm(i3.F[0]))
 
 # %% [markdown]
 # ### The 9 × 9 system
@@ -309,15 +310,9 @@ system = assemble(result)
 print(system.format(0))
 
 # %%
-x = np.linalg.solve(system.A[0], system.b[0])
-sol = dict(zip(system.unknowns, x))
+sol = dict(zip(system.unknowns, np.linalg.solve(system.A[0], system.b[0])))
 for name, value in sol.items():
     print(f"{name:>5} = {value:10.4f}")
-
-assert np.allclose([sol["F23x"], sol["F23y"]], result["F23"][0])
-assert np.allclose([sol["F34x"], sol["F34y"]], result["F34"][0])
-assert np.isclose(sol["F12"], result.effort[0])
-assert np.allclose([0.0, sol["N12"]], result["G12"][0])  # guide 1–2 is the x-axis: normal is +y
 
 # %% [markdown]
 # The couples $C_{12}$ and $C_{14}$ come out zero: every force on a massless slider passes through
@@ -356,6 +351,7 @@ rows = [
 
 print(f"{'':6}{'book':>22}{'graphkin':>24}   {'unit':<7}{'rel. diff':>10}")
 worst = 0.0
+diffs = {}  # name → relative difference from the book
 for name, book, ours, unit in rows:
     if isinstance(book, tuple):
         ref = vec(*book)
@@ -366,8 +362,8 @@ for name, book, ours, unit in rows:
         diff = abs(ours - book) / abs(book)
         book_text, ours_text = f"{book:g}", f"{ours:.4f}"
     worst = max(worst, diff)
+    diffs[name] = diff
     print(f"{name:6}{book_text:>22}{ours_text:>24}   {unit:<7}{diff:>9.3%}")
-    assert diff < 3e-3, f"{name} differs from the book by {diff:.2%}"
 print(f"\nlargest difference: {worst:.3%}")
 
 # %% [markdown]
@@ -380,10 +376,9 @@ print(f"\nlargest difference: {worst:.3%}")
 #   horizontal part ($\vec F_{12} = -\vec F_{43}$).
 
 # %%
-assert np.allclose(result["G12"][0], -i3.F[0])
-assert np.allclose(result["F12"][0], -result["F43"][0])
-assert np.allclose(result["G14"][0], result["F43"][0])
-print("G12 = −F3i, F12 = −F43 and G14 = F43: confirmed")
+print("G12 =", show(result["G12"][0]), "    −F3i =", show(-i3.F[0]))
+print("F12 =", show(result["F12"][0]), "     −F43 =", show(-result["F43"][0]))
+print("G14 =", show(result["G14"][0]), "      F43 =", show(result["F43"][0]))
 
 # %% [markdown]
 # ## 4. Other positions: nothing is hard-coded
@@ -409,7 +404,7 @@ P_driver = r300["F12"][0] @ k300.velocity(2, "A")[0]
 P_inertia = i300.F[0] @ k300.v_G(3)[0] + i300.T[0] * k300.omega[3][0]
 print(f"driver power  {P_driver:9.4f} W")
 print(f"inertia power {P_inertia:9.4f} W")
-assert math.isclose(P_driver + P_inertia, 0.0, abs_tol=1e-9 * abs(P_driver))
+print(f"sum           {P_driver + P_inertia:9.1e} W")
 
 # %% [markdown]
 # `at` may hold many positions at once: every result array then has one row per position.
@@ -419,7 +414,6 @@ assert math.isclose(P_driver + P_inertia, 0.0, abs_tol=1e-9 * abs(P_driver))
 xs = np.linspace(0.05, 0.45, 9)
 sweep = p.solve(at=xs)
 ks = sweep.kinematics
-assert sweep.valid.all()
 print(f"{'x_A [mm]':>9}{'θ3 [°]':>9}{'ω3 [rad/s]':>12}{'α3 [rad/s²]':>13}{'F12 [N]':>10}{'G12 [N]':>10}")
 for n, xa in enumerate(xs):
     print(f"{xa * 1e3:9.0f}{math.degrees(ks.theta[3][n]):9.2f}{ks.omega[3][n]:12.3f}{ks.alpha[3][n]:13.3f}"
@@ -430,10 +424,6 @@ for n, xa in enumerate(xs):
 # lies almost along the $x$-axis, slider 4 must move very fast for a small motion of slider 2,
 # and $\omega_3$, $\alpha_3$ and the inertia loads blow up. At $x_A = 500$ mm the mechanism is
 # at a dead point. The row for 200 mm repeats the book's problem.
-
-# %%
-row = int(np.argmin(abs(xs - 0.2)))
-assert np.isclose(sweep.effort[row], result.effort[0])
 
 # %% [markdown]
 # ## 5. Try it yourself
@@ -459,3 +449,155 @@ mine = parse_problem(text, file="my double slider")
 mine_result = mine.solve()
 print(f"F12 = {mine_result.effort[0]:.4f} N   (v = 2 m/s gave {result.effort[0]:.4f} N)")
 print(f"ratio: {mine_result.effort[0] / result.effort[0]:.3f}")
+
+# %% [markdown]
+# ## 6. Your turn
+#
+# Now the two problems of this lesson with **your own data**. Every student gets different
+# numbers, drawn from their id, and the answers are checked against a key solved from exactly the
+# numbers you see. A wrong answer gets a sentence of feedback; when the grader recognises the slip
+# (the force of the wrong link, a torque with the wrong sense, mm read as m) it says so, and the
+# answer earns part of the points.
+#
+# **Type your own id** (for example your student number) between the quotes below, in place of
+# `"your-id"`, and run the cells of this section. (The lesson comes with the placeholder so that it
+# can be run and tested as it is.)
+
+# %%
+from graphkin import exercises
+from graphkin.widgets import exercise
+
+student = "your-id"  # ← type your own id here
+
+# %% [markdown]
+# ### 6.1 The single link, with your mass and angle
+#
+# Work it out as in section 2: step 4 gives $T_{12}$ in one line, and the two force equations give
+# $\vec F_{12} = m\vec a_G - \vec F_P$. (To check your hand work with `graphkin`, change
+# `mass = "2 kg"` and `theta = "30 deg"` in the problem text, as in section 5.) Type each answer in
+# its box and press **Check**, as often as you like. Write a force as magnitude and direction,
+# `12.3 N at -45 deg` (or `12.3 N ∠ -45°`), or as components, `(8.7, -8.7) N`; a torque with its
+# sense, `4.5 N*m CW`.
+
+# %%
+exercise("single_link", student)
+
+# %% [markdown]
+# If you prefer code to boxes, put your answers in a dictionary (question → answer as you would
+# type it) and print `exercises.check`: it gives the same feedback. Empty answers are reported as
+# missing.
+
+# %%
+answers = {"F12": "", "T12": ""}  # e.g. "12.3 N at -45 deg" and "4.5 N*m CW"
+print(exercises.check("single_link", student, answers))
+
+# %% [markdown]
+# ### 6.2 The double slider, at your position and speed
+#
+# Five answers from the method of section 3. You can find them with the free bodies by hand, or
+# with `graphkin`: `p.at_speed(v).solve(at=[x])` solves the double slider of section 3 at your
+# speed `v` [m/s] and position `x` [m].
+
+# %%
+exercise("double_slider_forces", student)
+
+# %% [markdown]
+# ### 6.3 What the feedback looks like
+#
+# A made-up student, `"demo"`, answers the double slider with three classic slips: they give
+# $\vec F_{32}$ where $\vec F_{23}$ is asked, take the driving force with the wrong sign, and type
+# $h$ in metres into a question that reads a bare number in millimetres. The other two answers are
+# right. (The folded cell below makes these answers from the demo student's key; you need not
+# read it.)
+
+# %% jupyter={"source_hidden": true}
+def slipped_answers(name, student):
+    """Answers to the double slider exercise with three typical slips, made from the key (for the demo only)."""
+    key = {q["id"]: q["answer"] for q in exercises.key(name, student)["questions"]}
+    return {
+        "F23": show(-np.array(key["F23"]["si"])),  # F32 = −F23 given for F23
+        "F34": key["F34"]["text"],  # right
+        "G12": key["G12"]["text"],  # right
+        "F12": f"{-key['F12']['si']:.4g} N",  # the sign of the driving force reversed
+        "h3": f"{key['h3']['si']:.4g}",  # h in metres, where a bare number is read in mm
+    }
+
+
+# %%
+demo = slipped_answers("double_slider_forces", "demo")
+print(demo)
+print(exercises.check("double_slider_forces", "demo", demo))
+
+# %% [markdown]
+# Each slip is named and earns half a point; the feedback says what to look at again but does not
+# give the value. Now check your own.
+
+# %% [markdown]
+# ## Checks (for the course maintainers; students may skip)
+#
+# Every number this lesson quotes, and every claim it makes, is checked here against the variables
+# of the cells above, so that a change in `graphkin` that breaks the lesson fails the notebook test.
+# (If you edited an "edit here" cell, the checks of section 5 may fail: that is expected.)
+
+# %% [markdown]
+# ### Section 2: a single link
+
+# %%
+assert np.allclose(aG, by_hand)
+assert math.isclose(bar.mass, m) and math.isclose(bar.I_G, I_G)  # the data typed in step 4
+assert len(x) == 3  # three unknowns, three equations
+assert np.allclose(x[:2], bar_result["F12"][0])
+assert np.isclose(x[2], bar_result["T12"][0])
+assert math.isclose(T12_hand, bar_result["T12"][0], rel_tol=1e-12)
+assert bar_result["T12"][0] < 0  # "the motor must hold the bar back (clockwise torque)"
+
+# %% [markdown]
+# ### Section 3: the double slider
+
+# %%
+assert np.isclose(p.q[0], 0.2) and np.isclose(p.q_dot[0], 2.0)  # x_A = 200 mm, 2 m/s
+assert math.isclose(mech.link(3).mass, 5.0)  # the rod: 5 kg ...
+assert math.isclose(math.dist(*mech.link(3).points.values()), 0.5)  # ... and 500 mm
+assert system.A[0].shape == (9, 9) and len(system.unknowns) == 9  # 9 unknowns, 3 × 3 equations
+for j, total in sums.items():
+    assert np.allclose(total, 0, atol=1e-9)
+assert abs(i3.F[0][0]) < 1e-9 * np.linalg.norm(i3.F[0])  # the inertia force is vertical
+assert math.isclose(i3.h[0], abs(i3.T[0]) / np.linalg.norm(i3.F[0]))
+assert np.allclose([sol["F23x"], sol["F23y"]], result["F23"][0])
+assert np.allclose([sol["F34x"], sol["F34y"]], result["F34"][0])
+assert np.isclose(sol["F12"], result.effort[0])
+assert np.allclose([0.0, sol["N12"]], result["G12"][0])  # guide 1–2 is the x-axis: normal is +y
+assert abs(sol["C12"]) < 1e-9 and abs(sol["C14"]) < 1e-9  # "the couples come out zero"
+assert round(math.degrees(2 * math.asin(3e-3 / 2)), 2) == 0.17  # a turn of 0.17° moves a vector by 0.3 %
+for name, diff in diffs.items():
+    assert diff < 3e-3, f"{name} differs from the book by {diff:.2%}"
+assert np.allclose(result["G12"][0], -i3.F[0])
+assert np.allclose(result["F12"][0], -result["F43"][0])
+assert np.allclose(result["G14"][0], result["F43"][0])
+
+# %% [markdown]
+# ### Section 4: other positions
+
+# %%
+assert math.isclose(P_driver + P_inertia, 0.0, abs_tol=1e-9 * abs(P_driver))
+assert sweep.valid.all()
+row = int(np.argmin(abs(xs - 0.2)))
+assert np.isclose(sweep.effort[row], result.effort[0])  # the row for 200 mm is the book's problem
+
+# %% [markdown]
+# ### Section 5: try it yourself (as shipped: v = 4 m/s)
+
+# %%
+assert math.isclose(mine_result.effort[0] / result.effort[0], 4.0)  # accelerations scale with v_A²
+
+# %% [markdown]
+# ### Section 6: the demo student's slips are named
+
+# %%
+demo_report = {q["id"]: q for q in exercises.grade("double_slider_forces", "demo", demo)["questions"]}
+assert demo_report["F23"]["verdict"] == "slip" and demo_report["F23"]["slip"] == "sign"
+assert demo_report["F34"]["verdict"] == "correct" and demo_report["G12"]["verdict"] == "correct"
+assert demo_report["F12"]["verdict"] == "slip" and demo_report["F12"]["slip"] == "sign"
+assert demo_report["h3"]["verdict"] == "slip" and demo_report["h3"]["slip"] == "power_of_ten"
+assert all(q["score"] == 0.5 for q in demo_report.values() if q["verdict"] == "slip")  # "half a point"
+assert "F32" in demo_report["F23"]["feedback"]

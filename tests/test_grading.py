@@ -254,3 +254,15 @@ def test_the_keys_printed_answers_earn_full_marks(name):
         key = exercises.key(name, f"s{i}")
         report = exercises.grade(name, f"s{i}", {q["id"]: q["answer"]["text"] for q in key["questions"]})
         assert report["score"] == report["max"], [q for q in report["questions"] if q["verdict"] != "correct"]
+
+
+@pytest.mark.parametrize("name", exercises.names())
+def test_feedback_never_gives_the_answer_away(name):
+    """Unless the teacher reveals answers, no message quotes the expected value (nor a step caption that does)."""
+    v = exercises.variant(name, "s7")
+    for q in v.exercise.questions:
+        e = v.expected(q)
+        digits = e.text.split()[0].strip("(,").replace("−", "")
+        for text in ["1", "1 N", "1 N*m", "1 J", "(1, 2) N", "1 N ∠ 3°", "abc", "", formats(e)[0].replace("1", "7")]:
+            r = grade_question(v, q, text)
+            assert digits not in r["feedback"], (q.id, text, r["feedback"])

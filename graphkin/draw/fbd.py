@@ -93,7 +93,8 @@ def _color(kind, s):
     return {"unknown": s.unknown, "known": s.known, "inertia": s.known, "driver": s.driver}[kind]
 
 
-def draw_free_body(construction, link: int, *, ax=None, force_scale=None, title=True, **style) -> Drawn:
+def draw_free_body(construction, link: int, *, ax=None, force_scale=None, title=True, unknowns=True,
+                   **style) -> Drawn:
     """The free-body diagram of one link.
 
     The link alone, every force on it as an arrow at its point of application
@@ -115,6 +116,11 @@ def draw_free_body(construction, link: int, *, ax=None, force_scale=None, title=
         about 40 % as long as the link. A scale bar shows it.
     title : bool
         Put "Free body: link 3 (rod AB)" above.
+    unknowns : bool
+        Draw the forces the construction finds (joint forces, the driver's
+        effort). ``False`` leaves only what a student is given — the inertia
+        resultant on its offset line, external loads, the scale bar — for an
+        exercise in which they draw the polygon themselves.
     **style
         Overrides of :class:`graphkin.draw.style.Style` fields.
 
@@ -147,6 +153,9 @@ def draw_free_body(construction, link: int, *, ax=None, force_scale=None, title=
     if body.mass > 0:
         drawn += centre_of_mass(ax, G, s)
     loads = loads_on(c, link)
+    if not unknowns:
+        loads = {**loads, "forces": [f for f in loads["forces"] if f[3] not in ("unknown", "driver")],
+                 "couples": [m for m in loads["couples"] if m[3] not in ("unknown", "driver")]}
     pts = list(geom.link_points(link).values())
     centroid = np.mean(pts, axis=0) if pts else G
     extent = list(pts) + [G]

@@ -65,7 +65,19 @@ _DIMENSION_WORDS = {"force": "a force", "torque": "a torque", "length": "a lengt
 
 
 def _example(exp: Expected) -> str:
-    return exp.text or f"1 {exp.question.unit}"
+    """How to write an answer to this question, with a made-up number (never the answer itself)."""
+    q = exp.question
+    u = _unit_text(q.unit)
+    u = f" {u}" if u else ""
+    if exp.form == "vector":
+        return f"12.3{u} ∠ −45°"
+    if exp.form == "point":
+        return f"(120, −35){u}"
+    if exp.form == "direction":
+        return "−45°"
+    if q.kind in _TORQUE_KINDS:
+        return f"12.3{u} CCW"
+    return f"12.3{u}"
 
 
 def _comparable(exp: Expected, r: Reading):
@@ -106,7 +118,9 @@ def _names(exp: Expected, variant):
     if q.kind == "h":
         T = float(variant.solved.result.inertia(q.link).T[0])
         sense = "counter-clockwise" if T > 0 else "clockwise"
-    return {"name": name, "other": other, "i": i, "j": j, "sense": sense, "hint": exp.hint or "the solution"}
+    # Step captions end with a full stop; the messages put their own.
+    return {"name": name, "other": other, "i": i, "j": j, "sense": sense,
+            "hint": (exp.hint or "the solution").rstrip(".")}
 
 
 def _slip(exp: Expected, a, variant) -> tuple[str, dict] | None:
@@ -162,7 +176,9 @@ def _may(q, slip: str, variant) -> bool:
     """Whether a re-solved slip can change this question's answer at all."""
     if slip == "rpm_as_rad_s":
         return True
-    return q.kind not in ("flywheel_E", "flywheel_I", "jfi_peak", "peak_torque", "lowest_torque", "average_torque",
+    # Leaving out an inertia load makes the inertia questions themselves zero or undefined: a wrong answer
+    # there is not that slip.
+    return q.kind not in ("inertia_force", "inertia_torque", "h", "flywheel_E", "flywheel_I", "jfi_peak", "peak_torque", "lowest_torque", "average_torque",
                           "peak_force")
 
 
@@ -181,7 +197,7 @@ def grade_question(variant, q, answer, *, reveal: bool = False) -> dict:
     """Grade one answer; never raises on the answer, whatever it is."""
     exp = variant.expected(q) if hasattr(variant, "expected") else expected(variant, q)
     if answer is None or (isinstance(answer, str) and not answer.strip()):
-        return _verdict(exp, "missing", None, 0.0, MESSAGES["missing"].format(name=q.find), "", reveal)
+        return _verdict(exp, "missing", None, 0.0, MESSAGES["missing"].format(name=q.id), "", reveal)
     dim = dimension_of(q.kind, q.part)
     try:
         r = read_answer(answer, dimension=dim, unit=q.unit)
@@ -216,7 +232,7 @@ def grade_question(variant, q, answer, *, reveal: bool = False) -> dict:
     if exp.form in ("scalar", "magnitude") and exp.value:
         off = f" (yours is {100 * (a - exp.value) / abs(exp.value):+.1f} % off)".replace("-", "−")
     tol = f"{100 * q.tolerance:g} %" if exp.form != "direction" else f"{math.degrees(exp.slack):.2g}°"
-    msg = MESSAGES["wrong" if exp.hint else "wrong_nohint"].format(tolerance=tol, off=off, hint=exp.hint)
+    msg = MESSAGES["wrong" if exp.hint else "wrong_nohint"].format(tolerance=tol, off=off, hint=exp.hint.rstrip("."))
     return _verdict(exp, "wrong", None, 0.0, msg, text, reveal)
 
 

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import functools
 import math
+import re
 from dataclasses import dataclass
 
 import numpy as np
@@ -215,6 +216,26 @@ def _span(c) -> float:
     return float(np.max(np.hypot(*(pts[:, None, :] - pts[None, :, :]).transpose(2, 0, 1))))
 
 
+# A caption that quotes a value (e.g. "h = |T|/|F| = 33.33 mm") would give the answer away in the feedback.
+_VALUE = re.compile(r"\d\s*(?:N|mm|m|°|rad|J|kg)\b|=\s*[−-]?\d")
+_KIND_WORDS = {
+    "resultant": "link {k}'s inertia force −m a_G and torque −I_G α combined into one resultant offset by h = |T|/|F|",
+    "polygon": "the force polygon of link {k}, closed tip to tail",
+    "three-force": "link {k} as a three-force member and its point of concurrency",
+    "two-force": "link {k} as a two-force member",
+    "superpose": "the superposition of the loads of link {k}",
+    "driver": "the driver's equilibrium (the driving torque or force)",
+    "line": "the line of action of the tooth force",
+    "couple": "link {k} loaded by a couple",
+}
+
+
+def _step_hint(n: int, step) -> str:
+    if _VALUE.search(step.caption):
+        return f"step {n} of the construction: " + _KIND_WORDS.get(step.kind, "step {k}").format(k=step.link)
+    return f"step {n} of the construction: {step.caption}"
+
+
 def _hint(solved, q: Question) -> tuple[str, int | None]:
     """The construction step (and link) a student should revisit for ``q``."""
     kind = q.kind
@@ -231,13 +252,13 @@ def _hint(solved, q: Question) -> tuple[str, int | None]:
     want = {"force": q.find, "driver_torque": q.find, "driver_force": q.find}.get(kind)
     for n, step in enumerate(c.steps, 1):
         if want and step.kind in ("driver",) and kind.startswith("driver"):
-            return f"step {n} of the construction: {step.caption}", step.link
+            return _step_hint(n, step), step.link
         if want and (want in step.values or any(a.name == want and not a.known for a in step.polygon)):
-            return f"step {n} of the construction: {step.caption}", step.link
+            return _step_hint(n, step), step.link
         if kind in ("inertia_force", "inertia_torque", "h") and step.kind == "resultant" and step.link == q.link:
-            return f"step {n} of the construction: {step.caption}", q.link
+            return _step_hint(n, step), q.link
         if kind == "concurrency" and f"I{q.link}" in step.points:
-            return f"step {n} of the construction: {step.caption}", q.link
+            return _step_hint(n, step), q.link
     if kind == "force":
         from ..solve.result import parse_force_name
 

@@ -143,6 +143,11 @@ class Variant:
     solved: Solved = field(repr=False, compare=False)
     _memo: dict = field(default_factory=dict, repr=False, compare=False)
 
+    @property
+    def construction(self):
+        """The graphical construction of the student's position (:class:`graphkin.graphic.Construction`)."""
+        return self.solved.construction
+
     def altered(self, slip: str) -> Solved | None:
         """The same variant solved as a student who made ``slip`` would (None if it cannot apply)."""
         if ("slip", slip) not in self._memo:
