@@ -18,6 +18,7 @@ import io
 import json
 import os
 import sys
+from pathlib import Path
 
 from .errors import GraphkinError
 from .exercises.batch import run_roster
@@ -42,6 +43,10 @@ def add_parser(sub) -> None:
         a.add_argument("--secret", help="the course secret (default: $GRAPHKIN_SECRET)")
         a.add_argument("--json", action="store_true", help="print plain data as JSON")
         a.add_argument("-o", "--output", metavar="FILE", help="write to FILE instead of standard output")
+        if action == "make":
+            a.add_argument("--figure", metavar="FILE", help="with --student: write what the student is given to "
+                           "draw on (the mechanism and the free bodies to scale, without the forces to find) as "
+                           ".png, .svg or .pdf")
         if action == "grade":
             a.add_argument("--answers", required=True, metavar="FILE",
                            help="JSON {question id: answer} for --student ('-' reads stdin), "
@@ -59,6 +64,13 @@ def run(args) -> int:
         return 0
     if args.output:
         check_destination(args.output)
+    figure = getattr(args, "figure", None)
+    if figure:
+        if args.roster:
+            raise GraphkinError("--figure draws one student's exercise: use it with --student, not --roster")
+        check_destination(figure, "--figure")
+        if Path(figure).suffix.lower() not in (".png", ".svg", ".pdf"):
+            raise GraphkinError(f"--figure {figure}: the file must end in .png, .svg or .pdf")
     secret = args.secret if args.secret is not None else os.environ.get("GRAPHKIN_SECRET", "")
     if args.action in ("key", "grade") and not secret:
         print("graphkin: note: no course secret (--secret or GRAPHKIN_SECRET): students can compute these keys "
@@ -74,9 +86,21 @@ def run(args) -> int:
     else:
         v = ex.variant(args.student, secret)
         sheet = v.key() if args.action == "key" else v.sheet()
+        if figure:
+            _given_figure(v, figure)
         text = json.dumps(sheet, indent=2, ensure_ascii=False) if args.json else format_sheet(sheet)
     _emit(text, args.output)
     return 0
+
+
+def _given_figure(v, figure) -> None:
+    from . import draw
+
+    c = v.construction
+    if not c.valid:
+        raise GraphkinError(f"--figure: {v.exercise.id} has no single position to draw (a whole-cycle exercise)")
+    draw.save(draw.draw_given(c), figure)
+    print(f"figure written to {figure}", file=sys.stderr)
 
 
 def _progress(total: int, label: str):
@@ -192,6 +216,8 @@ def _grade(ex, args, secret) -> int:
                 row[q["id"]] = q["score"]
                 row[f"{q['id']} verdict"] = q["verdict"] + (f" ({q['slip']})" if q["slip"] else "")
                 row[f"{q['id']} feedback"] = q["feedback"]
+                if "expected" in q:
+                    row[f"{q['id']} expected"] = q["expected"]
             flat.append(row)
         text = _csv(flat)
     _emit(text, args.output)

@@ -132,3 +132,13 @@ def test_a_failed_write_is_checked_before_the_work(capsys, tmp_path, monkeypatch
     (tmp_path / "FILE").write_text("x")
     code, _, err = run(capsys, "exercise", "key", "single_link", "--student", "s", "-o", str(tmp_path / "FILE" / "k"))
     assert code == 2 and not calls
+
+
+def test_make_figure_draws_what_the_student_is_given(capsys, tmp_path):
+    out = tmp_path / "given.svg"
+    code, _, err = run(capsys, "exercise", "make", "double_slider_graphical", "--student", "s1", "--figure", str(out))
+    assert code == 0 and "figure written" in err
+    svg = out.read_text(encoding="utf-8")
+    assert "fbd3:R3i" in svg and "fbd3:F23" not in svg and "fbd3:F43" not in svg
+    code, _, err = run(capsys, "exercise", "make", "torque_curve", "--student", "s1", "--figure", str(tmp_path / "x.jpg"))
+    assert code == 2 and ".png, .svg or .pdf" in err

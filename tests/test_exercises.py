@@ -192,6 +192,40 @@ def test_bad_exercise_files_name_the_field(old, new, field):
     assert "ex.toml" in str(err.value)
 
 
+@pytest.mark.parametrize("extra, field", [
+    ('[[questions]]\nid = "P"\nfind = "peak_force"', "questions[1].find"),
+    ('[[questions]]\nid = "P"\nfind = "F23"\npart = "direction"\nfloor = "1 deg"', "questions[1].floor"),
+    ('[[questions]]\nid = "E"\nfind = "flywheel_E"\n[flywheel]\nCs = 0', "flywheel.Cs"),
+])
+def test_more_bad_questions(extra, field):
+    text = NEAR_TOGGLE.replace('problem = "double_slider"', 'problem = "strip_cutter"').split("[vary.x]")[0]
+    text += '[[questions]]\nid = "F23"\nfind = "F23"\n' + extra
+    with pytest.raises(ProblemFileError) as err:
+        exercises.parse_exercise(text)
+    assert err.value.field == field
+
+
+def test_cycle_questions_on_a_crank_that_cannot_turn_fully_are_never_handed_out():
+    text = """
+title = "t"
+problem = "strip_cutter"
+[vary.a2]
+field = "links[0].points.A[0]"
+values = ["300 mm"]
+[[questions]]
+id = "T"
+find = "peak_torque"
+"""
+    with pytest.raises(GraphkinError, match="cannot turn fully"):
+        exercises.parse_exercise(text).variant("s1")
+    with pytest.raises(ProblemFileError, match="crank driver"):
+        exercises.parse_exercise(text.replace("strip_cutter", "double_slider").replace(
+            'field = "links[0].points.A[0]"', 'field = "driver.s"').replace("300 mm", "200 mm"))
+    one = exercises.parse_exercise(text.replace("strip_cutter", "single_link").replace(
+        'field = "links[0].points.A[0]"', 'field = "links[0].mass"').replace("300 mm", "2 kg"))
+    assert one.positions == 360 and exercises.key(one, "s1")["questions"][0]["answer"]["text"]
+
+
 def test_flywheel_question_needs_Cs():
     text = """
 title = "t"

@@ -141,6 +141,8 @@ find = "T12"
     ("strip_cutter_cut", "T12", "power_of_ten"),
     ("double_slider_forces", "h3", "power_of_ten"),
     ("inertia_resultant", "F3i", "rpm_as_rad_s"),
+    ("strip_cutter_cut", "F14", "rpm_as_rad_s"),
+    ("strip_cutter_cut", "T12", "rpm_as_rad_s"),
     ("strip_cutter_cut", "F23", "no_inertia_torque"),
     ("strip_cutter_cut", "F23", "no_inertia_force"),
     ("slider_crank_friction", "T12", "no_inertia_force"),
@@ -166,7 +168,7 @@ def test_slip_messages_point_to_the_step_to_revisit():
     assert "F32" in r["feedback"]
     v = exercises.variant("strip_cutter_cut", "s001")
     r = grade_question(v, v.exercise.question("T12"), "1 N")
-    assert r["verdict"] == "wrong" and r["slip"] == "dimension" and "a force" in r["feedback"]
+    assert r["verdict"] == "slip" and r["slip"] == "dimension" and r["score"] == 0 and "a force" in r["feedback"]
     e = expected(v, v.exercise.question("T12"))
     r = grade_question(v, v.exercise.question("T12"), f"{g(e.value)} J")
     assert r["slip"] == "dimension" and "energy" in r["feedback"] and "N·m" in r["feedback"]
@@ -192,6 +194,8 @@ def test_report_is_plain_data():
     assert json.loads(json.dumps(report)) == report
     assert report["ignored"] == ["bogus"]
     assert [q["verdict"] for q in report["questions"]] == ["wrong", "missing", "wrong"]
+    report = exercises.grade("strip_cutter_cut", "s1", {"F23": [1, 2], "T12": {"a": 1}})
+    assert [q["verdict"] for q in report["questions"]] == ["unreadable", "missing", "unreadable"]
 
 
 INJECTIONS = ["__import__('os').system('touch /tmp/graphkin_pwned')", "eval('1+1')", "exec('x=1')", "{{7*7}}",

@@ -21,6 +21,8 @@ Examples
 
 from __future__ import annotations
 
+import os
+import tempfile
 from pathlib import Path
 
 from . import style
@@ -28,6 +30,7 @@ from ._common import Drawn
 from .convention import draw_sign_convention
 from .cycle import draw_cycle, draw_energy, draw_joint_force_index, draw_polar_forces, draw_shaking, draw_torque_curve
 from .fbd import draw_free_body, loads_on
+from .given import draw_given
 from .mechanism import draw_mechanism
 from .polygon import draw_force_polygon
 from .solution import comparison_rows, draw_solution
@@ -70,12 +73,24 @@ def save(fig, path, *, dpi=None, **kwargs) -> Path:
     if fmt in ("svg", "pdf"):
         # No creation date: the same figure gives the same file.
         kwargs.setdefault("metadata", {"Date": None} if fmt == "svg" else {"CreationDate": None})
-    fig.savefig(path, format=fmt, dpi=dpi or style.STYLE.dpi, **kwargs)
+    # A temporary file in the same folder, then a rename: a reader never sees half a figure, and an
+    # interrupted or failed save leaves the old file (or none).
+    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
+    os.close(fd)
+    try:
+        fig.savefig(tmp, format=fmt, dpi=dpi or style.STYLE.dpi, **kwargs)
+        os.replace(tmp, path)
+    except BaseException:
+        try:
+            os.unlink(tmp)
+        except OSError:
+            pass
+        raise
     return path
 
 
 __all__ = [
     "Drawn", "FORMATS", "comparison_rows", "draw_cycle", "draw_energy", "draw_force_polygon", "draw_free_body",
-    "draw_joint_force_index", "draw_mechanism", "draw_polar_forces", "draw_shaking", "draw_sign_convention",
+    "draw_given", "draw_joint_force_index", "draw_mechanism", "draw_polar_forces", "draw_shaking", "draw_sign_convention",
     "draw_solution", "draw_step_grid", "draw_steps", "draw_torque_curve", "loads_on", "save", "style",
 ]

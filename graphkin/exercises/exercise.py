@@ -289,7 +289,7 @@ def _grid(rd: _Reader, t: dict, where: str) -> tuple[str, ...]:
 
 def _kind_of(find: str, base_names: set[str], driver: str) -> tuple[str, int | None]:
     """What a question's ``find`` names, and the link it is about."""
-    if find in _PARTS and find in CYCLE_KINDS:
+    if find in CYCLE_KINDS and find != "peak_force":
         return find, None
     if find == driver or find == "driver":
         return ("driver_torque" if driver.startswith("T") else "driver_force"), None
@@ -319,7 +319,8 @@ def _question(rd: _Reader, t: dict, where: str, names: set[str], driver: str, ro
     try:
         kind, link = _kind_of(find, names, driver)
     except KeyError:
-        known = sorted(names) + [driver, "F<k>i", "T<k>i", "h<k>", "I<k>"] + sorted(CYCLE_KINDS) + ["peak_force.<F>"]
+        known = sorted(names) + [driver, "F<k>i", "T<k>i", "h<k>", "I<k>"] + sorted(CYCLE_KINDS - {"peak_force"}) \
+            + ["peak_force.<F> (e.g. peak_force.F23)"]
         raise rd.fail(f"{where}.find", f"{find!r} names nothing this problem has (it has: {', '.join(known)})") from None
     if link is not None and link not in moving:
         raise rd.fail(f"{where}.find", f"{find!r}: link {link} is not a moving link (moving: {', '.join(map(str, moving))})")
@@ -341,6 +342,8 @@ def _question(rd: _Reader, t: dict, where: str, names: set[str], driver: str, ro
     if not 0 < tolerance < 1:
         raise rd.fail(f"{where}.tolerance", f"must lie between 0 and 100 %, got {t['tolerance']!r}")
     floor = None
+    if "floor" in t and part in ("direction", "at"):
+        raise rd.fail(f"{where}.floor", "applies to values, not to angles (an angle's slack comes from the tolerance)")
     if "floor" in t:
         from ..units import to_si
 
@@ -471,6 +474,13 @@ def parse_exercise(text: str, *, file: str = "<exercise>", id: str = "exercise",
             raise rd.fail("positions", f"must be a whole number from 8 to 36000, got {positions!r}")
     fly = rd.table(data.get("flywheel", {}), "flywheel", _FLYWHEEL)
     Cs = rd.number(fly, "Cs", "flywheel", None) if "Cs" in fly else None
+    if Cs is not None and not 0 < Cs < 1:
+        raise rd.fail("flywheel.Cs", f"the coefficient of speed fluctuation must lie between 0 and 1, got {fly['Cs']!r}")
+    if any(q.kind in CYCLE_KINDS for q in questions):
+        if mech.driver.kind != "crank":
+            raise rd.fail("questions", "questions over the cycle need a crank driver (a whole turn)")
+        if positions is None and len(problem_obj.q) < 8:
+            positions = 360  # the problem is given at one position: sweep a whole turn in 1° steps
     if any(q.kind in ("flywheel_E", "flywheel_I") for q in questions) and Cs is None \
             and not any("flywheel.Cs" in v.field for v in vary):
         raise rd.fail("flywheel.Cs", "is missing: a flywheel question needs the coefficient of speed fluctuation")
@@ -541,7 +551,8 @@ def _check_values(rd: _Reader, base: dict, problem: str, vary: list[Vary]) -> No
             trial = copy.deepcopy(base)
             for f in v.field:
                 if f == "flywheel.Cs":
-                    to_si(value, "dimensionless", field=f"vary.{v.symbol}", file=rd.file)
+                    if not 0 < to_si(value, "dimensionless", field=f"vary.{v.symbol}", file=rd.file) < 1:
+                        raise rd.fail(f"vary.{v.symbol}", f"C_s must lie between 0 and 1, got {value!r}")
                     continue
                 set_field(trial, f, value)
             try:

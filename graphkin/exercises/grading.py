@@ -39,9 +39,11 @@ MESSAGES = {
     "sign_magnitude": "A magnitude is never negative: give the size of {name} and, where asked, its direction apart.",
     "opposite": ("The direction is off by 180°: that is the direction of {other}. Check which link acts on "
                  "which ({name} is the force of link {i} on link {j})."),
+    "opposite_other": ("The direction is off by 180°: check which way {name} acts (angles from +x, "
+                       "counter-clockwise positive)."),
     "power_of_ten": ("The digits are right but the value is {factor} too {way}: check the unit conversion "
                      "(N·mm and N·m, mm and m, kN and N)."),
-    "degrees_radians": "That angle looks like {wrong} read as {right}: write the angle in degrees, e.g. \"{example}\".",
+    "degrees_radians": "That angle looks like {wrong} read as {right}: write the angle in degrees, e.g. \"-45 deg\".",
     "rpm_as_rad_s": ("This is the answer for a crank turning at {rpm} rad/s: the speed was given in rpm. "
                      "Convert first: ω = 2π n / 60 = {omega} rad/s."),
     "no_inertia_torque": ("This is the answer without the inertia torque −I_G α: include it (or offset the inertia "
@@ -106,7 +108,9 @@ def _verdict(exp: Expected, verdict: str, slip: str | None, score: float, feedba
 def _names(exp: Expected, variant):
     """Words for the messages: the quantity's name, its reverse, the links, the sense."""
     q = exp.question
-    name, other, i, j = q.find, q.find, "", ""
+    # A force or torque by its textbook name (F23, T12); a cycle quantity by its question id (T_peak).
+    name = q.find if q.kind in ("force", "driver_torque", "driver_force", "inertia_force", "inertia_torque") else q.id
+    other, i, j = name, "", ""
     if q.kind == "force":
         from ..solve.result import parse_force_name
 
@@ -137,14 +141,12 @@ def _slip(exp: Expected, a, variant) -> tuple[str, dict] | None:
     if form == "magnitude" and e and exp.close(-a):
         return "sign", {**words, "msg": "sign_magnitude"}
     if form == "direction":
-        if exp.close(a + math.pi):
-            if q.kind in ("force", "inertia_force"):
-                return "opposite", {**words, "msg": "opposite"}
-            return "opposite", {**words, "msg": "opposite", "other": f"−{q.find}"}
+        # A crank angle where a peak occurs has no "opposite": only a direction of a force does.
+        if q.part == "direction" and exp.close(a + math.pi):
+            return "opposite", {**words, "msg": "opposite" if q.kind == "force" else "opposite_other"}
         for factor, wrong, right in ((180 / math.pi, "radians", "degrees"), (math.pi / 180, "degrees", "radians")):
             if exp.close(a * factor):
-                return "degrees_radians", {**words, "wrong": wrong, "right": right,
-                                           "example": f"{math.degrees(e):.2f} deg"}
+                return "degrees_radians", {**words, "wrong": wrong, "right": right}
     if form in ("scalar", "magnitude", "vector", "point") and e:
         for k in (3, -3, 6, -6):
             if exp.close(a / 10.0**k):
@@ -188,9 +190,13 @@ def _same(exp: Expected, other) -> bool:
 
 
 def _distance_ok(exp: Expected, a, other) -> bool:
+    """Whether ``a`` is the slipped value ``other``, to the question's tolerance of that value."""
     from .quantities import _distance
 
-    return _distance(exp.form, a, other) <= exp.slack
+    slack = exp.slack
+    if exp.form not in ("direction", "point") and abs(exp.value) > 0:
+        slack = max(slack, exp.question.tolerance * abs(other))
+    return _distance(exp.form, a, other) <= slack
 
 
 def grade_question(variant, q, answer, *, reveal: bool = False) -> dict:
@@ -202,21 +208,19 @@ def grade_question(variant, q, answer, *, reveal: bool = False) -> dict:
     try:
         r = read_answer(answer, dimension=dim, unit=q.unit)
     except Unreadable as exc:
-        return _verdict(exp, "unreadable", None, 0.0, str(exc), str(answer)[:200], reveal)
+        return _verdict(exp, "unreadable", None, 0.0, str(exc), _shown(answer), reveal)
     text = r.text
     if r.value is None and r.vector is None and not r.bare:
         right = _unit_text(q.unit) or "no unit"
         words = _names(exp, variant)
-        msg = MESSAGES["dimension"].format(unit=_unit_text(r.unit), given=_DIMENSION_WORDS.get(r.dimension, r.dimension
-                                                                                          or "something else"),
-                                           name=q.find, wanted=_DIMENSION_WORDS.get(dim, dim), right=right,
-                                           example=_example(exp), **{k: v for k, v in words.items() if k == "x"})
+        given = _DIMENSION_WORDS.get(r.dimension, r.dimension or "something else")
+        msg = MESSAGES["dimension"].format(unit=_unit_text(r.unit), given=given, name=words["name"],
+                                           wanted=_DIMENSION_WORDS.get(dim, dim), right=right, example=_example(exp))
         share = variant.exercise.partial["dimension"]
-        verdict = "slip" if share else "wrong"
-        # A wrong dimension earns the share only when the number itself is right.
+        # A wrong dimension earns the share (0 by default) only when the number itself is right.
         number_right = r.number is not None and exp.form in ("scalar", "magnitude") and \
             exp.close(r.number * _factor(q))
-        return _verdict(exp, verdict, "dimension", q.points * share if number_right else 0.0, msg, text, reveal)
+        return _verdict(exp, "slip", "dimension", q.points * share if number_right else 0.0, msg, text, reveal)
     a = _comparable(exp, r)
     if isinstance(a, str) or a is None:
         key = a or "need_scalar"
@@ -234,6 +238,11 @@ def grade_question(variant, q, answer, *, reveal: bool = False) -> dict:
     tol = f"{100 * q.tolerance:g} %" if exp.form != "direction" else f"{math.degrees(exp.slack):.2g}°"
     msg = MESSAGES["wrong" if exp.hint else "wrong_nohint"].format(tolerance=tol, off=off, hint=exp.hint.rstrip("."))
     return _verdict(exp, "wrong", None, 0.0, msg, text, reveal)
+
+
+def _shown(answer) -> str:
+    """An unreadable answer as text for the report (at most 200 characters)."""
+    return (answer if isinstance(answer, str) else repr(answer))[:200]
 
 
 def _factor(q) -> float:
@@ -266,9 +275,9 @@ def grade_variant(variant, answers, *, reveal: bool | None = None) -> dict:
         answers = {}
     results = []
     for q in ex.questions:
+        # Whatever the sheet holds (a list, a table, null) goes to the reader as it is: it refuses what is not
+        # text or a number with a sentence, rather than the grader guessing at str(value).
         raw = answers.get(q.id)
-        if raw is not None and not isinstance(raw, (str, int, float)) or isinstance(raw, bool):
-            raw = str(raw)[:200]
         results.append(grade_question(variant, q, raw, reveal=reveal))
     known = {q.id for q in ex.questions}
     ignored = sorted(str(k)[:100] for k in answers if k not in known)[:50]

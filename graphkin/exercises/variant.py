@@ -220,9 +220,12 @@ def _build(ex: Exercise, data: tuple[Given, ...], student: str):
 def _unusable(ex: Exercise, solved: Solved) -> str | None:
     """Why a draw cannot be handed out (None when it can)."""
     if ex.cycle:
-        if not solved.cycle.closed:
-            bad = np.flatnonzero(~solved.cycle.valid)[0]
-            return solved.cycle.analysis.reason(int(bad))
+        cycle = solved.cycle
+        if not cycle.valid.all():
+            bad = int(np.flatnonzero(~cycle.valid)[0])
+            return f"θ = {math.degrees(cycle.q[bad]):.4g}°: {cycle.analysis.reason(bad)} (the crank cannot turn fully)"
+        if not cycle.closed:
+            return "the positions do not make a whole turn"
         if any(q.kind in ("flywheel_E", "flywheel_I") for q in ex.questions) and not solved.flywheel.E > 0:
             return "the driving torque is constant, so there is no flywheel to size"
         if any(q.kind == "jfi_peak" for q in ex.questions) and not math.isfinite(solved.jfi.peak.value):
