@@ -168,7 +168,7 @@ class Variant:
 
         intro = _fill(self.exercise.intro, self.data)
         return {"exercise": self.exercise.id, "title": self.exercise.title, "source": self.exercise.source,
-                "student": self.student, "intro": intro,
+                "student": self.student, "intro": intro, "draw": self.exercise.draw,
                 "data": [{"symbol": g.symbol, "label": g.label, "value": g.value, "shown": g.shown}
                          for g in self.data],
                 "questions": [question_data(q) for q in self.exercise.questions]}
