@@ -35,9 +35,12 @@
 #    strip**, found from the geometry alone;
 # 4. plot the joint forces in polar form and find the peak of each (for sizing pins and bearings);
 # 5. find the shaking force and shaking moment on the frame, and the transmission angle;
-# 6. move the crank with the interactive explorer, and change the speed and the cutting range.
+# 6. move the crank with the interactive explorer, and change the speed and the cutting range;
+# 7. solve two exercises with **your own data**, and get feedback on your answers.
 #
-# As before: SI inside (m, kg, s, N, rad); mm, degrees and rpm only when printing.
+# As before: SI inside (m, kg, s, N, rad); mm, degrees and rpm only when printing. The checks that
+# keep this notebook honest (every number quoted in the text is verified) are collected at the end,
+# in a section students may skip.
 
 # %%
 # %matplotlib inline
@@ -151,9 +154,6 @@ print(f"{len(p.q)} positions from the file, and {extra.sum()} added by the sweep
 for q in cyc.q[extra]:
     b = switches[np.argmin(abs(switches - q))]
     print(f"   θ12 = {deg(b):g}° {q - b:+.0e} rad")
-assert cyc.closed and cyc.valid.all()
-assert cyc.n == len(p.q) + 4 and np.all(np.isin(p.q, cyc.q))
-assert np.allclose(np.sort(cyc.q[extra]), np.repeat(switches, 2) + [-SWITCH, SWITCH] * 2, rtol=0, atol=1e-15)
 
 # %% [markdown]
 # Nothing magic happens in a sweep: each row must be exactly what we would get by solving that one
@@ -163,6 +163,7 @@ assert np.allclose(np.sort(cyc.q[extra]), np.repeat(switches, 2) + [-SWITCH, SWI
 
 # %%
 print(f"{'θ12':>5}  {'sweep T12':>11}{'solve(at=)':>12}{'[A]{x}={b}':>12}{'graphical':>12}   largest force difference")
+one_position = {}  # θ12 → (largest force difference, T12 by the three routes)
 for a in (40, 140, 342):
     i = at_angle(cyc, a)
     one = p.solve(at=[math.radians(a)])
@@ -175,9 +176,7 @@ for a in (40, 140, 342):
         for other in (one[name][0], [x[name + "x"], x[name + "y"]], c[name]):
             worst = max(worst, float(np.linalg.norm(np.subtract(other, F)) / np.linalg.norm(F)))
     print(f"{a:4}°  {cyc.torque[i]:11.4f}{one.effort[0]:12.4f}{x['T12']:12.4f}{c.effort:12.4f}   {worst:.1e}")
-    assert worst < 1e-9
-    for other in (one.effort[0], x["T12"], c.effort):
-        assert math.isclose(other, cyc.torque[i], rel_tol=1e-9, abs_tol=1e-9)
+    one_position[a] = worst, (one.effort[0], x["T12"], c.effort)
 
 # %% [markdown]
 # ## 3. The driving torque over the cycle
@@ -196,9 +195,6 @@ T0 = no_cut.solve(at=cyc.q).effort  # the no-cut torque at the positions of cyc
 on = mech.loads[0].active.mask(cyc.q)  # positions where the cutting force acts
 print(f"no-cut sweep: {cyc0.n} positions;  cutting force on at {on.sum()} of the {cyc.n} positions of cyc, "
       f"from θ12 = {label(cyc.q[on][0])} to {label(cyc.q[on][-1])}")
-assert cyc0.n == len(p.q) and np.allclose(cyc0.torque, T0[~extra], rtol=0, atol=1e-12)
-assert np.allclose(cyc.torque[~on], T0[~on], rtol=0, atol=1e-12)  # identical outside the cut
-assert not on[at_angle(cyc, 124)] and not on[at_angle(cyc, 156)]  # the book's interval is open
 
 # %% [markdown]
 # ### What the cut adds: virtual work
@@ -219,7 +215,6 @@ assert not on[at_angle(cyc, 124)] and not on[at_angle(cyc, 156)]  # the book's i
 kin = r.kinematics
 Fc3 = np.array(mech.loads[0].force)  # (0, +2000) N on link 3
 Fc4 = np.array(mech.loads[1].force)  # (0, −2000) N on link 4
-assert np.allclose(Fc3, -Fc4)
 T_cut = -(kin.velocity(3, "C") @ Fc3 + kin.velocity(4, "C") @ Fc4) / kin.omega[2]
 difference = cyc.torque - T0
 print(f"{'θ12':>7}{'T12 (no cut)':>14}{'T12 (cut)':>12}{'difference':>12}{'T_cut':>10}")
@@ -227,12 +222,12 @@ rows = {at_angle(cyc, a) for a in (120, 122, 124, 126, 128, 140, 152, 154, 156, 
 rows = sorted(rows | set(np.flatnonzero(extra)))  # and the samples at ±ε
 for i in rows:
     print(f"{label(cyc.q[i]):>7}{T0[i]:14.2f}{cyc.torque[i]:12.2f}{difference[i]:12.2f}{T_cut[i]:10.2f}")
-assert np.allclose(difference, np.where(on, T_cut, 0.0), rtol=0, atol=1e-9)
-print("T12 − T12(no cut) = T_cut inside the cut and 0 outside: confirmed at all", cyc.n, "positions")
+print(f"T12 − T12(no cut) = T_cut inside the cut and 0 outside, to "
+      f"{abs(difference - np.where(on, T_cut, 0.0)).max():.0e} N·m at all {cyc.n} positions")
 i_sw = np.flatnonzero(extra)  # 124°−ε, 124°+ε, 156°−ε, 156°+ε
 jumps = cyc.torque[i_sw[1::2]] - cyc.torque[i_sw[::2]]
-print(f"the jumps: {jumps[0]:+.1f} N·m at 124°, {jumps[1]:+.1f} N·m at 156°")
-assert np.allclose(jumps, [T_cut[i_sw[1]], -T_cut[i_sw[2]]], rtol=1e-6)  # T_cut switched on, then off
+print(f"the jumps: {jumps[0]:+.1f} N·m at 124°, {jumps[1]:+.1f} N·m at 156°"
+      f"  (T_cut there: {T_cut[i_sw[1]]:.1f} and {T_cut[i_sw[2]]:.1f} N·m)")
 
 # %% [markdown]
 # $T_{cut} > 0$ throughout the cut: blade 3 moves **down** relative to blade 4 while the strip pushes
@@ -276,8 +271,6 @@ fig
 pk = cyc.peaks()
 print(f"largest T12  = {pk.effort_max.value:8.2f} N·m at θ12 = {deg(pk.effort_max.at):g}°")
 print(f"smallest T12 = {pk.effort_min.value:8.2f} N·m at θ12 = {deg(pk.effort_min.at):g}°")
-assert pk.effort_max.value == cyc.torque.max() and pk.effort_min.value == cyc.torque.min()
-assert not on[pk.effort_max.index] and not on[pk.effort_min.index]  # both are inertia peaks
 
 # %% [markdown]
 # ## 4. Average torque, power and the work done on the strip
@@ -299,7 +292,6 @@ assert not on[pk.effort_max.index] and not on[pk.effort_min.index]  # both are i
 
 # %%
 print(f"average T12 without the cut: {cyc0.average:.2e} N·m   (the curve swings over ±{abs(cyc0.torque).max():.0f} N·m)")
-assert abs(cyc0.average) < 1e-9 * abs(cyc0.torque).max()
 
 # %% [markdown]
 # Now the work done on the strip, from the positions of the two blades at the ends of the cut
@@ -360,22 +352,16 @@ for n in ns:
     sweep_err.append(sweep(p, n).average - exact)
     print(f"{n:6}{360 / n:7.3f}°{exact + plain_err[-1]:12.5f}{plain_err[-1]:10.5f}{exact + sweep_err[-1]:11.5f}"
           f"{sweep_err[-1]:11.1e}")
-assert math.isclose(plain_err[0], plain - exact) and math.isclose(sweep_err[0], cyc.average - exact)
 r_plain, r_sweep = np.divide(plain_err[:-1], plain_err[1:]), np.divide(sweep_err[:-1], sweep_err[1:])
 print("error ratio when the step halves:  plain grid", r_plain.round(3), "  sweep", r_sweep.round(3))
 print(f"quartering the step cuts the sweep's error {sweep_err[0] / sweep_err[2]:.1f}× (2° → 0.5°) "
       f"and {sweep_err[2] / sweep_err[4]:.1f}× (0.5° → 0.125°)")
-# First order: ratio 2 up to the h² term (0.1 %). Second order: ratio 4 up to the h⁴ term and the
-# steps ε wide between the file's samples at 124° and 156° (force off) and their neighbours at ±ε
-# (force on): together a constant ε·(116 + 58 N·m)/4π ≈ 1.4e-8 N·m, 0.3 % of the smallest error here.
-assert np.all(abs(r_plain - 2) < 0.05) and np.all(abs(r_sweep - 4) < 0.05)
 
 h = math.radians(2)
 i124, i156 = at_angle(cyc, 124), at_angle(cyc, 156)
 missed = h / 2 * (T_cut[i124] + T_cut[i156])  # the half-jumps the plain trapezoids leave out [J]
 print(f"\nplain 2° grid + the missed half-jumps: {plain + missed / (2 * math.pi):.6f} N·m;"
       f"  sweep: {cyc.average:.6f} N·m")
-assert math.isclose(plain + missed / (2 * math.pi), cyc.average, rel_tol=0, abs_tol=1e-6)  # up to ε·jump terms
 
 # %% [markdown]
 # The last line says the same thing once more: the sweep's average is the plain grid's plus exactly
@@ -396,8 +382,6 @@ print(f"average input power  = W_cut/2π · ω12 = {P_avg:.1f} W  =  W_cut × {t
       f"= {W_cut * turns_per_second:.1f} W")
 print(f"(from the sweep's average torque: {cyc.average * omega:.1f} W)")
 print(f"peak input power     = {cyc.power.max() / 1e3:.2f} kW,  most negative = {cyc.power.min() / 1e3:.2f} kW")
-assert np.allclose(cyc.power, cyc.torque * omega)
-assert math.isclose(cyc.average * omega, P_avg, rel_tol=1e-3)  # the sweep's h² error is 1.4e-4 (above)
 
 # %% [markdown]
 # A motor rated near 0.76 kW would do the cutting on average, but the inertia torques demand
@@ -415,7 +399,6 @@ P_inertia = sum(np.sum(r.inertia(j).F * kin.v_G(j), axis=1) + r.inertia(j).T * k
 P_cutting = np.where(on, kin.velocity(3, "C") @ Fc3 + kin.velocity(4, "C") @ Fc4, 0.0)
 residual = cyc.power + P_cutting + P_inertia
 print(f"largest |power sum| = {abs(residual).max():.1e} W  (largest |P| = {abs(cyc.power).max():.0f} W)")
-assert abs(residual).max() < 1e-9 * abs(cyc.power).max()
 
 # %% [markdown]
 # ## 5. Joint forces: polar plots and peaks
@@ -432,10 +415,6 @@ assert abs(residual).max() < 1e-9 * abs(cyc.power).max()
 
 # %%
 d = draw.draw_polar_forces(cyc)
-for name in r.names()[:-1]:
-    size, angle = cyc.polar(name)
-    F = r[name]
-    assert np.allclose(size * np.cos(angle), F[:, 0]) and np.allclose(size * np.sin(angle), F[:, 1])
 d.figure
 
 # %% [markdown]
@@ -446,7 +425,7 @@ d.figure
 # pin $A$ carry the same force.
 
 # %%
-assert np.allclose(r["F12"], r["F23"], rtol=0, atol=1e-9)
+print(f"largest |F12 − F23| over the cycle: {abs(r['F12'] - r['F23']).max():.0e} N")
 
 # %% [markdown]
 # The peaks, where they occur, and — since the samples are 2° apart — the same peaks from a sweep
@@ -463,9 +442,6 @@ for name, peak in pk.forces.items():
     j = int(np.argmax(np.where(on, size, -1)))
     print(f"{name:4}{peak.value:13.0f} N{deg(peak.at):7.0f}°{fp.value:15.0f} N{deg(fp.at):7.1f}°"
           f"{'yes' if on[peak.index] else 'no':>13}{size[j]:12.0f} N at {label(cyc.q[j]):>6}")
-    assert peak.value == size.max() and math.isclose(peak.at, cyc.q[np.argmax(size)])
-    assert peak.value <= fp.value < peak.value * 1.001  # sampling every 2° misses less than 0.1 %
-    assert abs(deg(fp.at) - deg(peak.at)) <= 2.0
 
 # %% [markdown]
 # Every joint force peaks **outside** the cut, and at more than twice the 2000 N cutting force:
@@ -474,8 +450,6 @@ for name, peak in pk.forces.items():
 
 # %%
 pk0 = cyc0.peaks()
-for name, peak in pk.forces.items():
-    assert math.isclose(pk0.forces[name].value, peak.value) and pk0.forces[name].at == peak.at
 print("peaks without the cut = peaks with it:", {n: f"{v.value:.0f} N" for n, v in pk0.forces.items()})
 
 # %% [markdown]
@@ -506,8 +480,8 @@ for load in mech.loads:
     act = load.active.mask(cyc.q)
     S_check = S_check + np.where(act[:, None], load.force, 0.0)
     M_check = M_check + np.where(act, cross(kin.position(load.link, load.point), load.force), 0.0)
-assert np.allclose(S, S_check, rtol=0, atol=1e-9 * abs(S).max())
-assert np.allclose(M, M_check, rtol=0, atol=1e-9 * abs(M).max())
+print(f"cycle.shaking_force() − the sum above: at most {abs(S - S_check).max():.0e} N;"
+      f"  cycle.shaking_moment() − the sum above: at most {abs(M - M_check).max():.0e} N·m")
 
 size_S = np.hypot(S[:, 0], S[:, 1])
 iS, iM = int(np.argmax(size_S)), int(np.argmax(abs(M)))
@@ -515,10 +489,8 @@ couple = cross(kin.position(3, "C") - kin.position(4, "C"), Fc3)
 print(f"largest shaking force  = {size_S[iS]:.0f} N at θ12 = {deg(cyc.q[iS]):g}°  ({show(S[iS])})")
 print(f"largest shaking moment = {M[iM]:.0f} N·m at θ12 = {deg(cyc.q[iM]):g}°")
 print(f"moment of the cutting pair during the cut: {couple[on].min():.1f} … {couple[on].max():.1f} N·m")
-fig = draw.draw_shaking(cyc)
-lo, hi = fig.axes[1].get_ylim()  # the moment's axis: its curve must fill it
-assert lo <= M.min() and hi >= M.max() and hi - lo < 1.5 * np.ptp(M)
-fig
+shaking_fig = draw.draw_shaking(cyc)
+shaking_fig
 
 # %% [markdown]
 # A shaking force of more than 5 kN at 15 turns a second would shake the floor: balancing the
@@ -550,8 +522,8 @@ a_, b_, c_, d_ = length(2, "A0", "A"), length(3, "A", "B"), length(4, "B0", "B")
 s2 = a_**2 + d_**2 - 2 * a_ * d_ * np.cos(cyc.q)
 mu_cos = np.arccos((b_**2 + c_**2 - s2) / (2 * b_ * c_))
 print(f"a = {a_ * 1e3:g}, b = {b_ * 1e3:g}, c = {c_ * 1e3:g}, d = {d_ * 1e3:g} mm")
-print(f"μ (unfolded) from {deg(mu_cos.min()):.2f}° to {deg(mu_cos.max()):.2f}°")
-assert np.allclose(mu, np.minimum(mu_cos, np.pi - mu_cos), atol=1e-9)
+print(f"μ (unfolded) from {deg(mu_cos.min()):.2f}° to {deg(mu_cos.max()):.2f}°;"
+      f"  folded, it is cycle.transmission_angle() to {abs(mu - np.minimum(mu_cos, np.pi - mu_cos)).max():.0e} rad")
 i_mu = int(np.argmin(mu))
 print(f"worst μ = {deg(mu[i_mu]):.2f}° at θ12 = {deg(cyc.q[i_mu]):g}°;  during the cut μ ≥ {deg(mu[on].min()):.1f}°")
 
@@ -588,7 +560,7 @@ ex = explore(p)
 ex
 
 # %% [markdown]
-# The explorer can be driven from code too (that is how this notebook's test checks it). Setting
+# The explorer can be driven from code too (that is how the checks at the end test it). Setting
 # the slider redraws everything; then `ex.construction` is the graphical solution it drew,
 # `ex.analytical` the matrix solution at the same position, and `ex.cycle` the sweep behind its
 # torque curve (`sweep(p, 360)`: 360 positions 1° apart, and the four at ±ε). All must agree with
@@ -602,19 +574,82 @@ for a in (140.0, 40.0, 130.0):
     print(f"θ12 = {a:5.1f}°: graphical {graphical:9.4f}, analytical {analytical:9.4f}, "
           f"explorer's curve {ex.cycle.torque[i_ex]:9.4f}, our sweep {cyc.torque[i]:9.4f} N·m")
     print("            status:", ex.status.value)
-    assert ex.construction.valid and not ex.message
-    assert math.isclose(graphical, analytical, rel_tol=1e-9)
-    assert math.isclose(analytical, ex.cycle.torque[i_ex], rel_tol=1e-12)
-    assert math.isclose(analytical, cyc.torque[i], rel_tol=1e-12)
-    for name in ("F23", "F34", "F14"):
-        assert np.allclose(ex.construction[name], r[name][i], rtol=1e-9, atol=1e-9)
-    assert np.allclose(ex.marker.get_data(), [[a], [analytical]])  # the marker sits on the curve
 ex.slider.value = 140.0
-assert ex.cycle.n == 360 + 4 and math.isclose(ex.cycle.average, sweep(p, 360).average)
 print(f"{len(ex.timings)} redraws, the last in {ex.timings[-1] * 1e3:.0f} ms")
 
 # %% [markdown]
-# ## 9. Try it yourself
+# ## 9. Your turn
+#
+# Two exercises on the strip cutter, with **your own numbers**: every student id gets its own
+# speed, cutting force and crank angle, the same each time you run the notebook. Type the id your
+# teacher gave you between the quotes below, in place of `"your-id"`, and run the cells from here.
+# You can answer in the boxes and press **Check**, or in code with `exercises.check`. Either way the
+# grader reads numbers with their units as you would write them (`"120.5 N*m"`, `"120.5 N·m CCW"`,
+# `"35 deg"`) and, when an answer is off, tells you what kind of slip it looks like.
+
+# %%
+from graphkin import exercises
+from graphkin.widgets import exercise
+
+student = "your-id"  # ← type your own id here
+
+# %% [markdown]
+# ### Exercise 1: the torque curve of your cutter
+#
+# Your cutter turns at its own speed and cuts with its own force. The box shows your data, the
+# questions, and a box for each answer:
+
+# %%
+exercise("torque_curve", student)
+
+# %% [markdown]
+# `exercises.variant(name, student).problem` is your machine as a `Problem`, just like `p`. Sweep it
+# at 1° steps, `sweep(my_cutter, 360)`, and read off what the questions ask with the tools of
+# sections 3–5 (`peaks()`, `average`). Then type your answers in the boxes above, or fill them in
+# here and run the cell:
+
+# %%
+my_cutter = exercises.variant("torque_curve", student).problem
+# your work here: sweep my_cutter at 1° steps, then its peaks and its average
+answers = {"T_peak": "", "T_peak_at": "", "T_low": "", "T_avg": "", "F23_peak": ""}  # e.g. "123.4 N*m", "56 deg"
+print(exercises.check("torque_curve", student, answers))
+
+# %% [markdown]
+# ### What the feedback looks like
+#
+# A made-up student, `"example"`, found the size of the largest torque but gave it the wrong sense
+# (a minus sign: clockwise), got the average right, and left the other boxes empty. Their correct
+# answers come from `exercises.key`, the teacher's answer sheet (values in SI) — for another id than
+# yours, so that nothing is given away:
+
+# %%
+demo = "example"
+key = {q["id"]: q["answer"]["si"] for q in exercises.key("torque_curve", demo)["questions"]}
+slipped = {"T_peak": f"{-key['T_peak']:.4g} N*m", "T_avg": f"{key['T_avg']:.4g} N*m"}  # T_peak: the wrong sense
+print(exercises.check("torque_curve", demo, slipped))
+
+# %% [markdown]
+# A slip earns part of the points (a sign slip, half) and says what to look at; a wrong answer earns
+# nothing. `exercises.grade(...)` gives the same report as plain data (score, and per question the
+# verdict, the slip and the feedback), for your own records.
+#
+# ### Exercise 2: the forces during your cut
+#
+# One position inside the cut, at your own crank angle, speed and cutting force: the force of the
+# crank on the coupler, the frame's force on the rocker, and the motor's torque — as in section 2
+# (`.solve()` solves your problem at your angle), or graphically as in lesson 02.
+
+# %%
+exercise("strip_cutter_cut", student)
+
+# %%
+my_cut = exercises.variant("strip_cutter_cut", student).problem
+# your work here: my_cut.solve() at your θ12, then read F23, F14 and T12
+answers = {"F23": "", "F14": "", "T12": ""}  # e.g. "1234 N ∠ -56.7°", "789 N", "12.3 N*m CW"
+print(exercises.check("strip_cutter_cut", student, answers))
+
+# %% [markdown]
+# ### More to try: change the speed and the cutting range
 #
 # **Change the speed.** Predict first: the crank turns at constant speed, so every velocity is
 # proportional to $\omega_{12}$ and every acceleration to $\omega_{12}^2$. What happens to the inertia
@@ -627,7 +662,7 @@ print(f"{len(ex.timings)} redraws, the last in {ex.timings[-1] * 1e3:.0f} ms")
 # The speed is a number, so `Problem.at_speed(ω)` gives the same problem at another constant crank
 # speed (in rad/s). The cutting range lives in the problem file, so we edit its text — one
 # `replace` changes the `from` of both blades' loads — and parse it again. Edit the two marked
-# lines and run the cell; the checks are written for any speed and range.
+# lines and run the cell; it prints how far the torque is from the prediction, for any speed and range.
 
 # %%
 speed = 450  # edit here: the crank speed [rpm]
@@ -637,12 +672,13 @@ mine = parse_problem(text, file="my strip cutter").at_speed(speed * RPM)
 cm = sweep(mine)
 w_mine = float(mine.q_dot[0])
 
-# The prediction, checked: inertia part ∝ ω², cutting part unchanged.
+# The prediction: inertia part ∝ ω², cutting part unchanged.
 k_m = cm.analysis.kinematics
 on_m = mine.mechanism.loads[0].active.mask(cm.q)
 T_cut_m = -sum(k_m.velocity(ld.link, ld.point) @ np.asarray(ld.force) for ld in mine.mechanism.loads) / w_mine
 T0_m = no_cut.solve(at=cm.q).effort  # the 900-rpm inertia torque at the positions of cm
-assert np.allclose(cm.torque, T0_m * (w_mine / omega) ** 2 + np.where(on_m, T_cut_m, 0.0), atol=1e-9)
+predicted_m = T0_m * (w_mine / omega) ** 2 + np.where(on_m, T_cut_m, 0.0)
+print(f"T12 = (inertia torque at 900 rpm) × (ω/900 rpm)² + T_cut, to {abs(cm.torque - predicted_m).max():.0e} N·m")
 
 W_mine = cutting_work(mine)
 print(f"speed {w_mine / RPM:g} rpm, cut from {deg(mine.mechanism.loads[0].active.start):g}° "
@@ -653,8 +689,6 @@ print(f"W_cut = {W_mine:.2f} J per turn, average torque W_cut/2π = {W_mine / (2
 print(f"average power = {W_mine / (2 * math.pi) * w_mine:.0f} W")
 for name, peak in cm.peaks().forces.items():
     print(f"   peak {name} = {peak.value:6.0f} N at {label(peak.at):>7}{'  (in the cut)' if on_m[peak.index] else ''}")
-# The sweep's 2° average is second order (section 4: 1.4e-4 of the average for the book's cut).
-assert abs(cm.average - W_mine / (2 * math.pi)) < 1e-3 * abs(W_mine / (2 * math.pi))
 
 fig = Figure(figsize=(6.4, 4.2))
 ax = fig.add_subplot()
@@ -675,3 +709,162 @@ fig
 # * in the explorer, type a new speed into the speed box and watch the torque curve redraw;
 # * `draw.draw_cycle(cyc, Cs=0.05)` sizes a flywheel that keeps the speed within 5 % (Norton §11.11):
 #   compare the energy it must store with the 50 J done on the strip each turn.
+
+# %% [markdown]
+# ## Checks (for the course maintainers; students may skip)
+#
+# Every claim of the lesson, checked against a route that does not use it, and every number quoted
+# in the text checked at the precision it is quoted. Grouped by section; they read the variables the
+# sections above computed. The widgets are driven here from a known state, whatever was done with
+# them above.
+
+# %% [markdown]
+# ### 1–2. The machine and the whole cycle
+
+# %%
+assert len(p.q) == 180 and np.allclose(np.diff(p.q), math.radians(2))  # 180 angles, 2° apart
+assert math.isclose(omega / RPM, 900) and np.allclose([abs(ld.force[1]) for ld in mech.loads], 2000)
+assert cyc.closed and cyc.valid.all()
+assert cyc.n == len(p.q) + 4 and np.all(np.isin(p.q, cyc.q))
+assert np.allclose(np.sort(cyc.q[extra]), np.repeat(switches, 2) + [-SWITCH, SWITCH] * 2, rtol=0, atol=1e-15)
+for a, (worst, efforts) in one_position.items():  # the sweep against three one-position routes
+    i = at_angle(cyc, a)
+    assert worst < 1e-9
+    for other in efforts:
+        assert math.isclose(other, cyc.torque[i], rel_tol=1e-9, abs_tol=1e-9)
+
+# %% [markdown]
+# ### 3. The driving torque over the cycle
+
+# %%
+assert cyc0.n == len(p.q) and np.allclose(cyc0.torque, T0[~extra], rtol=0, atol=1e-12)
+assert np.allclose(cyc.torque[~on], T0[~on], rtol=0, atol=1e-12)  # identical outside the cut
+assert not on[at_angle(cyc, 124)] and not on[at_angle(cyc, 156)]  # the book's interval is open
+assert np.allclose(Fc3, -Fc4)
+assert np.allclose(difference, np.where(on, T_cut, 0.0), rtol=0, atol=1e-9)  # virtual work
+assert np.allclose(jumps, [T_cut[i_sw[1]], -T_cut[i_sw[2]]], rtol=1e-6)  # T_cut switched on, then off
+assert np.all(T_cut[on] > 0)  # the motor pushes the cutter through the strip
+assert round(jumps[0]) == 116 and round(-jumps[1]) == 58  # "up by about 116 N·m ... down by about 58 N·m"
+assert np.ptp(cyc0.torque) > 4 * T_cut[on].max()  # the inertia swings are far larger than the cut's part
+assert pk.effort_max.value == cyc.torque.max() and pk.effort_min.value == cyc.torque.min()
+assert not on[pk.effort_max.index] and not on[pk.effort_min.index]  # both are inertia peaks
+
+# %% [markdown]
+# ### 4. Average torque, power and the work done on the strip
+
+# %%
+assert abs(cyc0.average) < 1e-9 * abs(cyc0.torque).max()  # the inertia loads do no net work
+assert round(W_cut) == 50  # "the 50 J done on the strip each turn"
+assert round(abs(cyc.average / exact - 1), 4) == 0.0001  # "the two agree to about 0.01 %"
+assert round(plain / exact - 1, 2) == -0.06  # "the plain grid is about 6 % low"
+assert math.isclose(plain_err[0], plain - exact) and math.isclose(sweep_err[0], cyc.average - exact)
+# First order: ratio 2 up to the h² term (0.1 %). Second order: ratio 4 up to the h⁴ term and the
+# steps ε wide between the file's samples at 124° and 156° (force off) and their neighbours at ±ε
+# (force on): together a constant ε·(116 + 58 N·m)/4π ≈ 1.4e-8 N·m, 0.3 % of the smallest error here.
+assert np.all(abs(r_plain - 2) < 0.05) and np.all(abs(r_sweep - 4) < 0.05)
+assert math.isclose(plain + missed / (2 * math.pi), cyc.average, rel_tol=0, abs_tol=1e-6)  # up to ε·jump terms
+assert np.allclose(cyc.power, cyc.torque * omega)
+assert math.isclose(cyc.average * omega, P_avg, rel_tol=1e-3)  # the sweep's h² error is 1.4e-4 (above)
+assert round(P_avg / 1e3, 2) == 0.76  # "a motor rated near 0.76 kW"
+assert round(cyc.power.min() / 1e3) == -31 and round(cyc.power.max() / 1e3) == 24  # "from −31 kW to +24 kW"
+assert abs(residual).max() < 1e-9 * abs(cyc.power).max()  # the power balance at each position
+
+# %% [markdown]
+# ### 5. Joint forces: polar plots and peaks
+
+# %%
+for name in r.names()[:-1]:
+    size, angle = cyc.polar(name)
+    F = r[name]
+    assert np.allclose(size * np.cos(angle), F[:, 0]) and np.allclose(size * np.sin(angle), F[:, 1])
+assert np.allclose(r["F12"], r["F23"], rtol=0, atol=1e-9)
+for name, peak in pk.forces.items():
+    fp = pk_fine.forces[name]
+    size, _ = cyc.polar(name)
+    assert peak.value == size.max() and math.isclose(peak.at, cyc.q[np.argmax(size)])
+    assert peak.value <= fp.value < peak.value * 1.001  # sampling every 2° misses less than 0.1 %
+    assert abs(deg(fp.at) - deg(peak.at)) <= 2.0
+    assert not on[peak.index] and peak.value > 2 * 2000  # outside the cut, more than twice the cutting force
+    assert math.isclose(pk0.forces[name].value, peak.value) and pk0.forces[name].at == peak.at
+
+# %% [markdown]
+# ### 6. Shaking force and shaking moment
+
+# %%
+assert np.allclose(S, S_check, rtol=0, atol=1e-9 * abs(S).max())
+assert np.allclose(M, M_check, rtol=0, atol=1e-9 * abs(M).max())
+lo, hi = shaking_fig.axes[1].get_ylim()  # the moment's axis: its curve must fill it
+assert lo <= M.min() and hi >= M.max() and hi - lo < 1.5 * np.ptp(M)
+assert size_S.max() > 5000 and math.isclose(turns_per_second, 15)  # "more than 5 kN at 15 turns a second"
+
+# %% [markdown]
+# ### 7. Transmission angle
+
+# %%
+assert np.allclose(mu, np.minimum(mu_cos, np.pi - mu_cos), atol=1e-9)
+assert {round(deg(cyc.q[np.argmin(mu_cos)])), round(deg(cyc.q[np.argmax(mu_cos)]))} == {0, 180}  # extremes
+assert np.all(abs(mu_cos - np.pi / 2) < math.radians(50))  # inside the rule of thumb, 90° ± 50°
+assert np.all(np.pi / 2 - mu[on] < math.radians(13))  # "during the cut μ stays within 13° of 90°"
+
+# %% [markdown]
+# ### 8. The interactive explorer
+
+# %%
+ex.speed.value = 900  # the file's speed, whatever was typed above
+for a in (140.0, 40.0, 130.0):
+    ex.slider.value = a
+    i_ex, i = at_angle(ex.cycle, a), at_angle(cyc, a)
+    graphical, analytical = ex.construction.effort, float(ex.analytical["T12"][0])
+    assert ex.construction.valid and not ex.message
+    assert math.isclose(graphical, analytical, rel_tol=1e-9)
+    assert math.isclose(analytical, ex.cycle.torque[i_ex], rel_tol=1e-12)
+    assert math.isclose(analytical, cyc.torque[i], rel_tol=1e-12)
+    for name in ("F23", "F34", "F14"):
+        assert np.allclose(ex.construction[name], r[name][i], rtol=1e-9, atol=1e-9)
+    assert np.allclose(ex.marker.get_data(), [[a], [analytical]])  # the marker sits on the curve
+ex.slider.value = 140.0
+assert ex.cycle.n == 360 + 4 and math.isclose(ex.cycle.average, sweep(p, 360).average)
+
+# %% [markdown]
+# ### 9. Your turn
+
+# %%
+# The feedback example: a sign slip earns half the points, a right answer all, an empty box none.
+report = exercises.grade("torque_curve", demo, slipped)
+verdict = {q["id"]: (q["verdict"], q["slip"], q["score"] / q["max"]) for q in report["questions"]}
+assert verdict["T_peak"] == ("slip", "sign", 0.5) and verdict["T_avg"] == ("correct", None, 1.0)
+assert all(verdict[q][0] == "missing" for q in ("T_peak_at", "T_low", "F23_peak"))
+assert exercises.check("torque_curve", demo, slipped).splitlines()[0].endswith(f"{report['score']:g} / 5 points")
+
+# The lesson's own tools give the answer key (for the id the notebook runs with).
+key1 = {q["id"]: q["answer"]["si"] for q in exercises.key("torque_curve", student)["questions"]}
+mine_cycle = sweep(my_cutter, 360)
+pk_mine = mine_cycle.peaks()
+assert math.isclose(pk_mine.effort_max.value, key1["T_peak"], rel_tol=1e-9)
+assert math.isclose(pk_mine.effort_max.at, key1["T_peak_at"], rel_tol=1e-9)
+assert math.isclose(pk_mine.effort_min.value, key1["T_low"], rel_tol=1e-9)
+assert math.isclose(mine_cycle.average, key1["T_avg"], rel_tol=1e-9)
+assert math.isclose(pk_mine.forces["F23"].value, key1["F23_peak"], rel_tol=1e-9)
+key2 = {q["id"]: q["answer"]["si"] for q in exercises.key("strip_cutter_cut", student)["questions"]}
+r_cut = my_cut.solve()
+assert np.allclose(r_cut["F23"][0], key2["F23"], rtol=1e-9, atol=0)
+assert math.isclose(np.linalg.norm(r_cut["F14"][0]), key2["F14"], rel_tol=1e-9)
+assert math.isclose(r_cut["T12"][0], key2["T12"], rel_tol=1e-9)
+
+# The answer boxes: type an id, fill in the key's answers as it prints them, press Check; then a slip.
+box = exercise("torque_curve", "")
+box.student.value = demo
+assert all(g["shown"] in box.data.value for g in exercises.make("torque_curve", demo)["data"])
+for q in exercises.key("torque_curve", demo)["questions"]:
+    box.answers[q["id"]].value = q["answer"]["text"]
+assert box.check()["score"] == 5
+box.answers["T_peak"].value = slipped["T_peak"]
+assert box.check()["score"] == 4.5 and box.report["questions"][0]["slip"] == "sign"
+
+# %%
+# More to try: the prediction holds for any speed and cutting range typed above.
+assert np.allclose(cm.torque, T0_m * (w_mine / omega) ** 2 + np.where(on_m, T_cut_m, 0.0), atol=1e-9)
+# The sweep's 2° average is second order (section 4: 1.4e-4 of the average for the book's cut).
+assert abs(cm.average - W_mine / (2 * math.pi)) < 1e-3 * abs(W_mine / (2 * math.pi))
+if speed == 450 and mine.mechanism.loads[0].active.start == mech.loads[0].active.start:  # as the text says
+    assert any(on_m[peak.index] for peak in cm.peaks().forces.values())

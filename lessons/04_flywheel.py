@@ -32,10 +32,13 @@
 #    inertia $I_s$, and a steel disk or a cast-iron rim that provides it;
 # 4. look at the machine **before and after**: the speed and the torque the motor sees;
 # 5. compute Holte and Chase's **joint-force index** (Norton §11.12) over the cut;
-# 6. drive the **interactive explorer** from code, and check what it shows.
+# 6. drive the **interactive explorer** from code, and check what it shows;
+# 7. size a flywheel and find the index for **your own data**, and get feedback on your answers.
 #
-# Every number `graphkin` gives is checked against a route that does not use it: the work of the
+# Every number `graphkin` gives is compared with a route that does not use it: the work of the
 # cutting force, the kinetic energy of the links, a hand integration, a simulation of the shaft.
+# The checks that keep this notebook honest (every number quoted in the text is verified) are
+# collected at the end, in a section students may skip.
 # All numbers inside `graphkin` are SI (m, kg, s, N, J, rad); we print degrees and rpm.
 
 # %%
@@ -117,7 +120,6 @@ def label(q):
 most_delivered, most_returned = 200.73, -60.32  # in·lb, Norton §11.11 (Table 11-1)
 E_book = most_delivered - most_returned
 print(f"E = {most_delivered} − ({most_returned}) = {E_book:.2f} in·lb   (book: −261.05 in·lb, energy out of the linkage)")
-assert math.isclose(E_book, 261.05, abs_tol=0.005)  # the book's own total, to its 2 decimals
 
 # With the book's speed and the C_s of its Fig. 11-12 (our arithmetic; the text does not print I_s):
 omega_book, Cs_book = 50.0, 0.05  # rad/s, Norton §11.11
@@ -166,12 +168,6 @@ for row, area, acc in zip(f_hand.table(), areas, accumulated):
           f"{row.accumulated:12.4f} J")
 print(f"E = {f_hand.E:.4f} J (by hand {E_exact:.4f} J = 160/3 J),  I_s = {f_hand.I_s:.6f} kg·m²")
 
-assert math.isclose(f_hand.T_avg, T0, rel_tol=1e-12)
-assert np.allclose(f_hand.crossings, crossings, atol=1e-4)  # rad: linear interpolation near a crossing
-assert np.allclose(f_hand.areas, areas, atol=2e-3)  # J: trapezoidal rule with 0.5° steps
-assert math.isclose(E_exact, 160 / 3) and math.isclose(f_hand.E, E_exact, rel_tol=1e-4)
-assert math.isclose(f_hand.I_s, f_hand.E / (0.05 * 100.0**2))
-
 # %% [markdown]
 # ## 3. The strip cutter over one turn
 #
@@ -193,8 +189,6 @@ print(f"{c.n} positions ({len(p.q)} from the file, 4 at the jumps), closed turn:
 print(f"largest torque  {peaks.effort_max.value:8.2f} N·m at θ12 = {math.degrees(peaks.effort_max.at):5.1f}°")
 print(f"smallest torque {peaks.effort_min.value:8.2f} N·m at θ12 = {math.degrees(peaks.effort_min.at):5.1f}°")
 print(f"average torque  {c.average:8.4f} N·m   (average power {c.average * omega:.1f} W)")
-assert c.closed and c.valid.all() and c.n == len(p.q) + 4
-assert math.isclose(peaks.effort_max.value, c.torque.max()) and math.isclose(peaks.effort_min.value, c.torque.min())
 
 # %% [markdown]
 # The motor must push with up to 256 N·m and hold back with up to 325 N·m, although on average it
@@ -258,14 +252,8 @@ for m in ns:
     E_plain.append(fp.E)
     E_sweep.append(fs.E)
     print(f"{m:6}{360 / m:7.4f}°{err_plain[-1]:14.5f}{fp.E:12.3f}{err_sweep[-1]:14.2e}{fs.E:12.3f}")
-assert math.isclose(err_plain[0], plain - T_exact) and math.isclose(err_sweep[0], c.average - T_exact)
 r_plain, r_sweep = np.divide(err_plain[:-1], err_plain[1:]), np.divide(err_sweep[:-1], err_sweep[1:])
 print("T_avg error ratio between successive steps:  plain", r_plain.round(3), "  sweep", r_sweep.round(3))
-# First order: the ratio is 2 up to the next (h²) term. Second order: 4 up to the h⁴ term and the
-# steps ε wide between the file's samples at 124° and 156° (force off) and their neighbours at ±ε
-# (force on): together a constant ε·(116 + 58 N·m)/4π ≈ 1.4e-8 N·m, 1.3 % of the smallest error in
-# the table — hence its last ratio, 3.96.
-assert np.all(abs(r_plain - 2) < 0.05) and np.all(abs(r_sweep - 4) < 0.05)
 
 # %% [markdown]
 # $E$ converges the same two ways. On the plain grid it is 0.3 % low at 2°, and almost all of that
@@ -280,7 +268,6 @@ A, B = f_sweep.crossings[:2]
 shift = -err_plain[0] * (B - A)  # [J]
 print(f"−(T_avg error of the plain 2° grid) × (B − A) = {-err_plain[0]:.4f} N·m × {B - A:.4f} rad = {shift:.4f} J")
 print(f"E(sweep) − E(plain) at 2° = {E_sweep[0] - E_plain[0]:.4f} J")
-assert math.isclose(shift, E_sweep[0] - E_plain[0], rel_tol=0.01)  # the rest: the crossings move a little
 print(f"E at 2°, relative to the finest sweep: plain {E_plain[0] / E_sweep[-1] - 1:+.3%},"
       f" sweep {E_sweep[0] / E_sweep[-1] - 1:+.3%}")
 
@@ -329,14 +316,10 @@ print(f"\nlargest running sum {hi:.2f} J, smallest {lo:.2f} J:  E = {hi:.2f} −
 T_at_crossings = np.interp(f.crossings, f.theta, f.T, period=TURN)
 print("T at the crossings − T_avg:", T_at_crossings - f.T_avg)
 print(f"sum of the pulse areas: {f.areas.sum():.1e} J")
-assert np.allclose(T_at_crossings, f.T_avg, atol=1e-9 * np.abs(f.T).max())
-assert abs(f.areas.sum()) < 1e-12 * f.E
-assert math.isclose(f.E, hi - lo)
 for first in range(len(f.areas)):
     running = np.cumsum(np.roll(f.areas, -first))
     E_here = max(running.max(), 0) - min(running.min(), 0)
     print(f"table started at {labels[first]}: running sums {running.round(2)} J, E = {E_here:.4f} J")
-    assert math.isclose(E_here, f.E, rel_tol=1e-12)
 
 # %% [markdown]
 # The torque curve with its pulses shaded, and the energy $U(\theta)$ with the swing $E$ marked.
@@ -383,11 +366,6 @@ print(f"E from the 2° torque samples: {f.E:.3f} J   ({(f.E - E_energy) / E_ener
 
 dense = sweep(p, 11520).flywheel(Cs)  # and graphkin's own procedure on a 1/32° grid
 print(f"E from the 1/32° torque samples: {dense.E:.3f} J   ({(dense.E - E_energy) / E_energy:+.3%})")
-# Second order in the step (section 3): 0.07 % at 2°, a quarter of that at each halving.
-assert abs(f.E - E_energy) < 0.001 * E_energy
-assert abs(dense.E - E_energy) < 0.0002 * E_energy
-assert np.allclose(np.degrees(f.crossings[:2]), np.degrees([fine[np.argmax(U_energy)], fine[np.argmin(U_energy)]]),
-                   atol=0.1)
 
 # %% [markdown]
 # Two lessons from this. First, the 2° sizing is less than 0.1 % low (0.3 % on the plain grid),
@@ -404,7 +382,6 @@ assert np.allclose(np.degrees(f.crossings[:2]), np.degrees([fine[np.argmax(U_ene
 # %%
 print(f"E = {f.E:.3f} J,  C_s = {f.Cs},  ω_avg = {f.omega_avg:.4f} rad/s")
 print(f"I_s = E / (C_s ω_avg²) = {f.I_s:.4f} kg·m²")
-assert math.isclose(f.I_s, f.E / (Cs * omega**2), rel_tol=1e-12)
 
 # %% [markdown]
 # For the **same torque curve**, halving $C_s$ doubles $I_s$, and running the shaft at half the
@@ -416,8 +393,6 @@ f_half_Cs = size_flywheel(f.theta, f.T, omega_avg=f.omega_avg, Cs=Cs / 2)
 f_half_w = size_flywheel(f.theta, f.T, Cs=Cs, omega_avg=f.omega_avg / 2)
 print(f"C_s = {Cs / 2}: I_s = {f_half_Cs.I_s:.4f} kg·m²  (× {f_half_Cs.I_s / f.I_s:.4f})")
 print(f"ω/2:         I_s = {f_half_w.I_s:.4f} kg·m²  (× {f_half_w.I_s / f.I_s:.4f})")
-assert math.isclose(f_half_Cs.I_s, 2 * f.I_s, rel_tol=1e-12) and f_half_Cs.E == f.E
-assert math.isclose(f_half_w.I_s, 4 * f.I_s, rel_tol=1e-12)
 
 # %% [markdown]
 # (A real machine slowed to half speed also has a different torque curve: its inertia torques
@@ -448,12 +423,7 @@ print(f"cast-iron rim, R = {rim.mean_radius * 1e3:.0f} mm, t = {rim.thickness * 
 
 # %%
 m_hand = STEEL * math.pi * disk.radius**2 * disk.thickness
-assert math.isclose(disk.mass, m_hand, rel_tol=1e-12)
-assert math.isclose(0.5 * m_hand * disk.radius**2, f.I_s, rel_tol=1e-12)  # I = m r²/2
-assert math.isclose(mass.disk(disk.radius, disk.thickness, STEEL).I_G, f.I_s, rel_tol=1e-12)
 ring = mass.hollow_cylinder(rim.inner_radius, rim.outer_radius, rim.thickness, CAST_IRON)
-assert math.isclose(ring.I_G, f.I_s, rel_tol=1e-12) and math.isclose(ring.m, rim.mass, rel_tol=1e-12)
-assert math.isclose(rim.outer_radius - rim.inner_radius, rim.width)
 print(f"m r²/2 = {0.5 * m_hand * disk.radius**2:.6f},  mass.disk: {mass.disk(disk.radius, disk.thickness, STEEL).I_G:.6f},"
       f"  mass.hollow_cylinder: {ring.I_G:.6f},  I_s = {f.I_s:.6f} kg·m²")
 
@@ -470,7 +440,6 @@ for t, d in disks.items():
 for R in (0.2, 0.25, 0.3):
     r_ = f.rim(CAST_IRON, R, 0.05)
     print(f"{f'cast-iron rim, R = {R * 1e3:g} mm, t = 50':>32}{r_.outer_radius * 1e3:13.1f}{r_.mass:11.2f}")
-assert math.isclose(disks[0.1].mass / disks[0.025].mass, 2.0, rel_tol=1e-12)  # 4 × t  →  2 × m
 
 # %% [markdown]
 # ## 7. Before and after
@@ -486,9 +455,6 @@ assert math.isclose(disks[0.1].mass / disks[0.025].mass, 2.0, rel_tol=1e-12)  # 
 w = f.speed()
 print(f"ω from {w.min():.3f} to {w.max():.3f} rad/s ({w.min() / RPM:.1f} to {w.max() / RPM:.1f} rpm)")
 print(f"(ω_max − ω_min)/ω_avg = {np.ptp(w) / f.omega_avg:.5f}   (C_s = {Cs})")
-assert abs(np.ptp(w) / f.omega_avg - Cs) < 0.01 * Cs
-# The energy balance between the two extremes, on the samples: ½ I_s (ω_max² − ω_min²) ≈ E.
-assert rel(0.5 * f.I_s * (w.max() ** 2 - w.min() ** 2), f.E) < 0.01
 
 # %% [markdown]
 # ### The torque the motor sees
@@ -530,7 +496,6 @@ for turn in range(60):
         k4 = shaft(x + h, w_sim + h * k3)
         w_sim = w_sim + h / 6 * (k1 + 2 * k2 + 2 * k3 + k4)
 print(f"after 60 turns the speed changes by {abs(w_sim - one_turn[0]):.1e} rad/s per turn")
-assert abs(w_sim - one_turn[0]) < 1e-4
 
 Tm_sim = f.T_avg - k_m * (one_turn - f.omega_avg)
 w_mean = np.sum(0.5 * (one_turn + np.roll(one_turn, -1)) * steps) / TURN  # (1/2π)∮ω dθ, trapezoidal
@@ -541,9 +506,6 @@ print(f"motor torque, simulation: {Tm_sim.min():.3f} to {Tm_sim.max():.3f} N·m"
 print(f"speed fluctuation in the simulation: {np.ptp(one_turn) / f.omega_avg:.4f},"
       f" mean speed over the turn {w_mean / RPM:.3f} rpm")
 print(f"without the flywheel the motor would see {f.T.min():.1f} to {f.T.max():.1f} N·m")
-assert np.abs(Tm - Tm_sim).max() < 0.02 * np.ptp(Tm)
-assert abs(np.ptp(one_turn) / f.omega_avg - Cs) < 0.05 * Cs
-assert abs(w_mean - f.omega_avg) < 1e-3 * Cs * f.omega_avg
 
 # %% [markdown]
 # In the speed plot the two curves have the same shape but not the same level: `f.speed()` puts
@@ -563,8 +525,6 @@ swing = f.T_avg * Cs * (1 - slip) / slip
 f_01 = c.flywheel(0.01)
 print(f"motor swing: C_s = 0.05: {np.ptp(Tm):.3f} N·m (estimate {swing:.3f});"
       f"  C_s = 0.01: {np.ptp(f_01.smoothed_torque(slip)):.3f} N·m")
-assert rel(np.ptp(Tm), swing) < 0.02
-assert rel(np.ptp(Tm) / np.ptp(f_01.smoothed_torque(slip)), 5.0) < 0.02
 
 fig = Figure(figsize=(13, 4.3))
 ax1, ax2 = fig.subplots(1, 2)
@@ -614,9 +574,6 @@ for q, value, name in zip(jfi.q[defined], jfi.index[defined], jfi.joint[defined]
 print(f"\npeak {jfi.peak.value:.4f} at θ12 = {label(jfi.peak.at)} (in {jfi.joint[jfi.peak.index]})")
 print(f"positions above {jfi.limit:g}: {np.degrees(jfi.over_limit).tolist() or 'none'}")
 print(f"immovable positions: {list(jfi.immovable) or 'none'}")
-assert np.array_equal(jfi.q, c.q)  # the positions of the sweep, the samples at ±ε included
-assert defined.sum() + len(jfi.unloaded) == c.n and not jfi.immovable and len(jfi.over_limit) == 0
-assert np.array_equal(defined, cut[0].active.mask(jfi.q))
 
 # %% [markdown]
 # ### Check at the peak, with the matrix of lesson 01
@@ -628,15 +585,12 @@ assert np.array_equal(defined, cut[0].active.mask(jfi.q))
 
 # %%
 static = static_problem(p)
-assert all(link.mass == 0 and link.I_G == 0 for link in static.mechanism.links)
 system = assemble(static.solve(at=[jfi.peak.at]))
 x = dict(zip(system.unknowns, np.linalg.solve(system.A[0], system.b[0])))
 pins = {name: math.hypot(x[name + "x"], x[name + "y"]) for name in ("F12", "F23", "F34", "F14")}
 print({name: round(v, 2) for name, v in pins.items()}, "N")
 by_hand = max(pins.values()) / 2000.0
 print(f"max |F| / 2000 N = {by_hand:.4f}   (graphkin: {jfi.peak.value:.4f})")
-assert math.isclose(by_hand, jfi.peak.value, rel_tol=1e-9)
-assert np.allclose([x["F34x"], x["F34y"]], np.array([x["F23x"], x["F23y"]]) + cut[0].force)
 
 # %% [markdown]
 # The static index stays near 1.4 over the whole cut: the strip cutter transmits its cutting force
@@ -667,12 +621,10 @@ fig
 # %%
 text = catalog.path("strip_cutter").read_text()
 crank = 'A = ["85 mm", "0 mm"]'
-assert text.count(crank) == 1
 long_crank = parse_problem(text.replace(crank, 'A = ["245 mm", "0 mm"]'), file="strip cutter, 245 mm crank")
 jfi_long = joint_force_index(long_crank)
 long_cycle = sweep(long_crank)
 mu = np.degrees(long_cycle.transmission_angle())
-assert np.array_equal(long_cycle.q, jfi_long.q)  # the file's 180 angles and the 4 at ±ε, as before
 ok = np.isfinite(jfi_long.index)
 print(f"{'θ12':>7}{'JFI':>8}{'transmission angle':>20}")
 for i in np.flatnonzero(ok):
@@ -693,11 +645,6 @@ print(f"a1 = {a1 * 1e3:g} mm, a2 = {a2 * 1e3:g} mm, a3 = {a3 * 1e3:g} mm, a4 = {
 theta_t = math.acos((a2**2 + a1**2 - (a3 + a4) ** 2) / (2 * a2 * a1))
 print(f"toggle by hand: θ_t = {math.degrees(theta_t):.2f}° and {360 - math.degrees(theta_t):.2f}°")
 q_long = jfi_long.q
-assert np.array_equal(stuck, q_long[(q_long > theta_t) & (q_long < TURN - theta_t)])
-assert np.array_equal(np.isin(q_long, stuck), ~long_crank.kinematics(at=q_long).valid)
-assert np.all(np.diff(jfi_long.index[ok]) > 0) and np.all(np.diff(mu[ok]) < 0)  # index up, transmission angle down
-assert jfi_long.peak.index == np.flatnonzero(ok)[-1] and jfi_long.peak.value > 5
-assert np.array_equal(jfi_long.over_limit, jfi_long.q[ok])  # all of the cut is above 2
 
 # %% [markdown]
 # ## 9. The interactive explorer
@@ -725,14 +672,10 @@ ex
 # %%
 ex.speed.value = 600
 speed_line = 'omega = "900 rpm"'
-assert text.count(speed_line) == 1
 p600 = parse_problem(text.replace(speed_line, 'omega = "600 rpm"'), file="strip cutter at 600 rpm")
 c600 = sweep(p600, ex.n)
 print(f"explorer: {ex.cycle.n} positions at {ex.cycle.q_dot[0] / RPM:.1f} rpm;"
       f" largest difference from the independent sweep {np.abs(ex.cycle.torque - c600.torque).max():.1e} N·m")
-assert ex.n == 360 and ex.cycle.n == 364
-assert math.isclose(ex.cycle.q_dot[0], 600 * RPM) and np.allclose(ex.cycle.q, c600.q)
-assert np.allclose(ex.cycle.torque, c600.torque, rtol=1e-12, atol=1e-9)
 
 # %% [markdown]
 # A second, physical check of the new curve. The crank turns at a constant speed, so every
@@ -748,14 +691,11 @@ assert np.allclose(ex.cycle.torque, c600.torque, rtol=1e-12, atol=1e-9)
 c900 = sweep(p, ex.n)
 T_static = static.solve(at=c900.q).effort
 predicted = T_static + (600 / 900) ** 2 * (c900.torque - T_static)
-assert np.allclose(ex.cycle.torque, predicted, rtol=1e-9, atol=1e-9)
-assert math.isclose(ex.cycle.average, c900.average, rel_tol=1e-9)
 
 f600, f900 = ex.cycle.flywheel(Cs), c900.flywheel(Cs)
 print(f"{f'n = {ex.n}':>8}{'T_avg [N·m]':>13}{'peak T [N·m]':>14}{'E [J]':>9}{'I_s [kg·m²]':>13}")
 for speed_name, cy, fl in (("900 rpm", c900, f900), ("600 rpm", ex.cycle, f600)):
     print(f"{speed_name:>8}{cy.average:13.4f}{np.abs(cy.torque).max():14.2f}{fl.E:9.2f}{fl.I_s:13.4f}")
-assert f600.E < 0.5 * f900.E and f600.I_s > f900.I_s
 
 # %% [markdown]
 # At 600 rpm the swing $E$ is less than half, but the flywheel must store it at a lower speed, so
@@ -768,18 +708,14 @@ assert f600.E < 0.5 * f900.E and f600.I_s > f900.I_s
 
 # %%
 i_max = int(np.argmax(c600.torque))
-assert i_max == np.flatnonzero(mech.loads[0].active.mask(c600.q))[0]  # the first sample of the cut
 ex.slider.value = math.degrees(c600.q[i_max])
 print(ex.status.value)
 marker_x, marker_y = (float(v[0]) for v in ex.marker.get_data())
 print(f"independent sweep: T12 = {c600.torque[i_max]:.4f} N·m at {label(c600.q[i_max])};"
       f" marker at ({marker_x:g}°, {marker_y:.4f} N·m)")
-assert math.isclose(ex.analytical.effort[0], c600.torque[i_max], rel_tol=1e-9)
-assert math.isclose(ex.construction.effort, c600.torque[i_max], rel_tol=1e-9)
-assert math.isclose(marker_x, math.degrees(c600.q[i_max])) and math.isclose(marker_y, c600.torque[i_max], rel_tol=1e-9)
-for name in ex.analytical.names():  # every joint force, both routes, against the sweep
-    assert np.allclose(ex.analytical[name][0], c600.analysis[name][i_max], rtol=1e-9, atol=1e-6)
-    assert np.allclose(ex.construction[name], c600.analysis[name][i_max], rtol=1e-9, atol=1e-6)
+worst = max(float(np.abs(np.subtract(route, c600.analysis[name][i_max])).max())
+            for name in ex.analytical.names() for route in (ex.analytical[name][0], ex.construction[name]))
+print(f"the forces and T12, analytical and graphical, against the sweep: largest difference {worst:.1e} (N, N·m)")
 
 # %% [markdown]
 # And in the middle of the cut, where the polygons carry the 2000 N cutting forces:
@@ -788,22 +724,89 @@ for name in ex.analytical.names():  # every joint force, both routes, against th
 ex.slider.value = 140
 i140 = int(np.argmin(abs(np.degrees(c600.q) - 140)))
 print(ex.status.value)
-assert math.isclose(ex.analytical.effort[0], c600.torque[i140], rel_tol=1e-9)
-assert math.isclose(ex.construction.effort, c600.torque[i140], rel_tol=1e-9)
 Image(data=ex.image.value)  # exactly what the widget shows now
 
 # %% [markdown]
-# ## 10. Try it yourself
+# ## 10. Your turn
 #
-# * Change `Cs` in section 4 to 0.01 and predict $I_s$, the disk's radius and its mass before you
-#   run the cells (hint: $r \propto I_s^{1/4}$ at a given thickness).
+# Two exercises on the strip cutter, with **your own numbers**: every student id gets its own
+# speed, coefficient of speed fluctuation and crank length, the same each time you run the notebook.
+# Type the id your teacher gave you between the quotes below, in place of `"your-id"`, and run the
+# cells from here. Answer in the boxes and press **Check**, or in code with `exercises.check`: the
+# grader reads numbers with their units as you would write them (`"250 J"`, `"0.75 kg*m^2"`,
+# `"150 deg"`) and, when an answer is off, tells you what kind of slip it looks like.
+
+# %%
+from graphkin import exercises
+from graphkin.widgets import exercise
+
+student = "your-id"  # ← type your own id here
+
+# %% [markdown]
+# ### Exercise 1: size the flywheel of your cutter
+#
+# Your cutter turns at its own average speed, and must keep its own $C_s$:
+
+# %%
+exercise("flywheel", student)
+
+# %% [markdown]
+# `exercises.variant(name, student).problem` is your machine as a `Problem`, just like `p`. Sweep it
+# at 1° steps, `sweep(my_cutter, 360)`, and size the flywheel as in sections 4–6 with **your** $C_s$
+# (it is in your data, not in the problem). Then type your answers in the boxes above, or fill them
+# in here and run the cell:
+
+# %%
+my_cutter = exercises.variant("flywheel", student).problem
+# your work here: sweep my_cutter at 1° steps, then .flywheel(your C_s)
+answers = {"E": "", "I_s": ""}  # e.g. "123.4 J", "0.123 kg*m^2"
+print(exercises.check("flywheel", student, answers))
+
+# %% [markdown]
+# ### What the feedback looks like
+#
+# A made-up student, `"example"`, worked out $E$ in kJ but wrote J after it (a factor of 1000), and
+# got $I_s$ right. Their correct answers come from `exercises.key`, the teacher's answer sheet
+# (values in SI) — for another id than yours, so that nothing is given away:
+
+# %%
+demo = "example"
+key = {q["id"]: q["answer"]["si"] for q in exercises.key("flywheel", demo)["questions"]}
+slipped = {"E": f"{key['E'] / 1000:.4g} J", "I_s": f"{key['I_s']:.4g} kg*m^2"}  # E: kJ written as J
+print(exercises.check("flywheel", demo, slipped))
+
+# %% [markdown]
+# A slip earns part of the points (a power of ten, half) and says what to look at; a wrong answer
+# earns nothing. `exercises.grade(...)` gives the same report as plain data (score, and per question
+# the verdict, the slip and the feedback), for your own records.
+#
+# ### Exercise 2: the joint-force index of your cutter
+#
+# Your cutter has a crank of its own length. Find its joint-force index over the cut as in
+# section 8, at 1° steps: `joint_force_index(my_crank, 360)`.
+
+# %%
+exercise("joint_force_index", student)
+
+# %%
+my_crank = exercises.variant("joint_force_index", student).problem
+# your work here: the joint-force index of my_crank at 1° steps, its peak and where it is
+answers = {"JFI": "", "JFI_at": ""}  # e.g. "1.234", "145 deg"
+print(exercises.check("joint_force_index", student, answers))
+
+# %% [markdown]
+# ### More to try
+#
+# * The cell below sizes the flywheel for $C_s = 0.01$ instead of 0.05: predict $I_s$, the disk's
+#   radius and its mass before you run it (hint: $r \propto I_s^{1/4}$ at a given thickness).
 # * Which costs less material for the same $I_s$: a steel disk 25 mm thick or a cast-iron rim of
 #   mean radius 300 mm? What limits how large you can make a rim? (Think of the stress in a
 #   spinning ring, $\sigma = \rho v^2$ — and see what `f.rim` says if you ask for a small mean radius.)
 # * In the explorer, type speeds of 300, 600, 1200 rpm. Where is the largest torque each time, and
 #   why does the average not move?
-# * Try crank lengths between 85 and 245 mm in section 8. For which does the index first pass 2?
-#   Compare with where the transmission angle drops below about 40°.
+# * Copy the cell of section 8 that lengthens the crank, and try crank lengths between 85 and
+#   245 mm. For which does the index first pass 2? Compare with where the transmission angle drops
+#   below about 40°.
 
 # %%
 Cs_try = 0.01  # edit here
@@ -811,3 +814,186 @@ f_try = c.flywheel(Cs_try)
 d_try = f_try.disk(STEEL, 0.050)
 print(f"C_s = {Cs_try}: I_s = {f_try.I_s:.4f} kg·m², steel disk 50 mm thick: r = {d_try.radius * 1e3:.1f} mm,"
       f" m = {d_try.mass:.2f} kg")
+
+# %% [markdown]
+# ## Checks (for the course maintainers; students may skip)
+#
+# Every claim of the lesson, checked against a route that does not use it, and every number quoted
+# in the text checked at the precision it is quoted. Grouped by section; they read the variables the
+# sections above computed. The explorer is driven here from a known state, whatever was done with it
+# above.
+
+# %% [markdown]
+# ### 1–2. Norton's table, and a curve integrated by hand
+
+# %%
+assert math.isclose(E_book, 261.05, abs_tol=0.005)  # the book's own total, to its 2 decimals
+assert math.isclose(f_hand.T_avg, T0, rel_tol=1e-12)
+assert np.allclose(f_hand.crossings, crossings, atol=1e-4)  # rad: linear interpolation near a crossing
+assert np.allclose(np.degrees(crossings), [90, 199.47, 270, 340.53], atol=0.005)  # as in the comment
+assert np.allclose(f_hand.areas, areas, atol=2e-3)  # J: trapezoidal rule with 0.5° steps
+assert math.isclose(E_exact, 160 / 3) and math.isclose(f_hand.E, E_exact, rel_tol=1e-4)
+assert math.isclose(f_hand.I_s, f_hand.E / (0.05 * 100.0**2))
+
+# %% [markdown]
+# ### 3. The strip cutter over one turn
+
+# %%
+assert c.closed and c.valid.all() and c.n == len(p.q) + 4
+assert len(p.q) == 180 and c.n == 184  # "184 positions instead of 180"
+assert math.isclose(omega / RPM, 900)
+assert math.isclose(peaks.effort_max.value, c.torque.max()) and math.isclose(peaks.effort_min.value, c.torque.min())
+assert round(peaks.effort_max.value) == 256 and round(-peaks.effort_min.value) == 325  # "up to 256 ... up to 325 N·m"
+assert round(c.average) == 8  # "on average it supplies only about 8 N·m"
+assert round(abs(c.average / T_exact - 1), 4) == 0.0001  # "the two agree to about 0.01 %"
+assert math.isclose(err_plain[0], plain - T_exact) and math.isclose(err_sweep[0], c.average - T_exact)
+# First order: the ratio is 2 up to the next (h²) term. Second order: 4 up to the h⁴ term and the
+# steps ε wide between the file's samples at 124° and 156° (force off) and their neighbours at ±ε
+# (force on): together a constant ε·(116 + 58 N·m)/4π ≈ 1.4e-8 N·m, 1.3 % of the smallest error in
+# the table — hence its last ratio, 3.96.
+assert np.all(abs(r_plain - 2) < 0.05) and np.all(abs(r_sweep - 4) < 0.05)
+assert round(r_sweep[-1], 2) == 3.96
+assert round(E_plain[0] / E_sweep[-1] - 1, 3) == -0.003  # "on the plain grid it is 0.3 % low at 2°"
+assert np.allclose(np.degrees([A, B]), [10, 76], atol=0.5)  # "A and B, near 10° and 76°"
+assert round(-err_plain[0], 2) == 0.48 and round(B - A, 2) == 1.16  # "0.48 N·m too low", "B − A ≈ 1.16 rad"
+assert math.isclose(shift, E_sweep[0] - E_plain[0], rel_tol=0.01)  # the rest: the crossings move a little
+assert abs(E_sweep[0] / E_sweep[-1] - 1) < 0.001  # "within 0.1 % of the finest"
+
+# %% [markdown]
+# ### 4. Crossings, pulses and the energy table
+
+# %%
+assert np.allclose(T_at_crossings, f.T_avg, atol=1e-9 * np.abs(f.T).max())
+assert abs(f.areas.sum()) < 1e-12 * f.E
+assert math.isclose(f.E, hi - lo)
+for first in range(len(f.areas)):
+    running = np.cumsum(np.roll(f.areas, -first))
+    E_here = max(running.max(), 0) - min(running.min(), 0)
+    assert math.isclose(E_here, f.E, rel_tol=1e-12)
+# The reading of the table: A (9.6°) and B (75.8°); 237.2 J returned from A to B, the running sum
+# lowest there; 211.8 J taken by the last pulse, D to A, and the running sum highest, 0, at A; E = 237.2 J.
+assert len(f.crossings) == 4 and np.allclose(np.degrees(f.crossings[:2]), [9.6, 75.8], atol=0.05)
+assert round(f.areas[0], 1) == -237.2 and round(f.areas[-1], 1) == 211.8
+assert np.argmin(f.accumulated) == 0 and round(lo, 1) == -237.2 and hi == 0.0 and abs(f.accumulated[-1]) < 1e-9
+assert round(f.E, 1) == 237.2
+
+# %% [markdown]
+# ### 5. $E$ from the kinetic energy of the links
+
+# %%
+# Second order in the step (section 3): 0.07 % at 2°, a quarter of that at each halving.
+assert abs(f.E - E_energy) < 0.001 * E_energy
+assert abs(dense.E - E_energy) < 0.0002 * E_energy
+assert np.allclose(np.degrees(f.crossings[:2]), np.degrees([fine[np.argmax(U_energy)], fine[np.argmin(U_energy)]]),
+                   atol=0.1)
+assert f.E < E_energy and round((E_plain[0] - E_energy) / E_energy, 3) == -0.003  # "less than 0.1 % low (0.3 %...)"
+assert round(np.ptp(K), -1) == 230 and round(K.min()) == 215 and round(K.max()) == 443  # "about 230 J (215 to 443)"
+assert round(-W_cut) == 50  # "the cut takes only 50 J per turn"
+
+# %% [markdown]
+# ### 6. The system inertia, a disk or a rim
+
+# %%
+assert math.isclose(f.I_s, f.E / (Cs * omega**2), rel_tol=1e-12)
+assert math.isclose(f_half_Cs.I_s, 2 * f.I_s, rel_tol=1e-12) and f_half_Cs.E == f.E
+assert math.isclose(f_half_w.I_s, 4 * f.I_s, rel_tol=1e-12)
+assert math.isclose(disk.mass, m_hand, rel_tol=1e-12)
+assert math.isclose(0.5 * m_hand * disk.radius**2, f.I_s, rel_tol=1e-12)  # I = m r²/2
+assert math.isclose(mass.disk(disk.radius, disk.thickness, STEEL).I_G, f.I_s, rel_tol=1e-12)
+assert math.isclose(ring.I_G, f.I_s, rel_tol=1e-12) and math.isclose(ring.m, rim.mass, rel_tol=1e-12)
+assert math.isclose(rim.outer_radius - rim.inner_radius, rim.width)
+assert math.isclose(disks[0.1].mass / disks[0.025].mass, 2.0, rel_tol=1e-12)  # 4 × t  →  2 × m
+
+# %% [markdown]
+# ### 7. Before and after
+
+# %%
+assert abs(np.ptp(w) / f.omega_avg - Cs) < 0.01 * Cs
+# The energy balance between the two extremes, on the samples: ½ I_s (ω_max² − ω_min²) ≈ E.
+assert rel(0.5 * f.I_s * (w.max() ** 2 - w.min() ** 2), f.E) < 0.01
+assert abs(w_sim - one_turn[0]) < 1e-4  # the simulation has settled on a periodic turn
+assert np.abs(Tm - Tm_sim).max() < 0.02 * np.ptp(Tm)
+assert abs(np.ptp(one_turn) / f.omega_avg - Cs) < 0.05 * Cs
+assert abs(w_mean - f.omega_avg) < 1e-3 * Cs * f.omega_avg
+assert round(Tm.min()) == 5 and round(Tm.max(), 1) == 12.7  # "between about 5 and 12.7 N·m"
+assert round(f.T.min()) == -325 and round(f.T.max()) == 256  # "instead of −325 and +256 N·m"
+assert rel(np.ptp(Tm), swing) < 0.02
+assert math.isclose(swing / f.T_avg, 1 - slip) and slip == Cs == 0.05  # "about T_avg itself" (0.95 T_avg)
+assert rel(np.ptp(Tm) / np.ptp(f_01.smoothed_torque(slip)), 5.0) < 0.02
+
+# %% [markdown]
+# ### 8. The joint-force index
+
+# %%
+assert np.array_equal(jfi.q, c.q)  # the positions of the sweep, the samples at ±ε included
+assert defined.sum() + len(jfi.unloaded) == c.n and not jfi.immovable and len(jfi.over_limit) == 0
+assert np.array_equal(defined, cut[0].active.mask(jfi.q))
+assert np.all(abs(jfi.index[defined] - 1.4) < 0.05)  # "the static index stays near 1.4 over the whole cut"
+assert all(link.mass == 0 and link.I_G == 0 for link in static.mechanism.links)
+assert math.isclose(by_hand, jfi.peak.value, rel_tol=1e-9)
+assert np.allclose([x["F34x"], x["F34y"]], np.array([x["F23x"], x["F23y"]]) + cut[0].force)
+assert text.count(crank) == 1
+assert np.array_equal(long_cycle.q, jfi_long.q)  # the file's 180 angles and the 4 at ±ε, as before
+assert np.array_equal(stuck, q_long[(q_long > theta_t) & (q_long < TURN - theta_t)])
+assert np.array_equal(np.isin(q_long, stuck), ~long_crank.kinematics(at=q_long).valid)
+assert np.all(np.diff(jfi_long.index[ok]) > 0) and np.all(np.diff(mu[ok]) < 0)  # index up, transmission angle down
+assert jfi_long.peak.index == np.flatnonzero(ok)[-1] and jfi_long.peak.value > 5
+assert np.array_equal(jfi_long.over_limit, jfi_long.q[ok])  # all of the cut is above 2
+
+# %% [markdown]
+# ### 9. The interactive explorer
+
+# %%
+ex.speed.value = 600  # the state the section's text describes, whatever was typed above
+assert text.count(speed_line) == 1
+assert ex.n == 360 and ex.cycle.n == 364
+assert math.isclose(ex.cycle.q_dot[0], 600 * RPM) and np.allclose(ex.cycle.q, c600.q)
+assert np.allclose(ex.cycle.torque, c600.torque, rtol=1e-12, atol=1e-9)
+assert np.allclose(ex.cycle.torque, predicted, rtol=1e-9, atol=1e-9)
+assert math.isclose(ex.cycle.average, c900.average, rel_tol=1e-9)
+assert f600.E < 0.5 * f900.E and f600.I_s > f900.I_s
+
+assert i_max == np.flatnonzero(mech.loads[0].active.mask(c600.q))[0]  # the first sample of the cut
+ex.slider.value = math.degrees(c600.q[i_max])
+marker_x, marker_y = (float(v[0]) for v in ex.marker.get_data())
+assert math.isclose(ex.analytical.effort[0], c600.torque[i_max], rel_tol=1e-9)
+assert math.isclose(ex.construction.effort, c600.torque[i_max], rel_tol=1e-9)
+assert math.isclose(marker_x, math.degrees(c600.q[i_max])) and math.isclose(marker_y, c600.torque[i_max], rel_tol=1e-9)
+for name in ex.analytical.names():  # every joint force, both routes, against the sweep
+    assert np.allclose(ex.analytical[name][0], c600.analysis[name][i_max], rtol=1e-9, atol=1e-6)
+    assert np.allclose(ex.construction[name], c600.analysis[name][i_max], rtol=1e-9, atol=1e-6)
+
+ex.slider.value = 140
+assert math.isclose(ex.analytical.effort[0], c600.torque[i140], rel_tol=1e-9)
+assert math.isclose(ex.construction.effort, c600.torque[i140], rel_tol=1e-9)
+
+# %% [markdown]
+# ### 10. Your turn
+
+# %%
+# The feedback example: E a factor 1000 off earns half the points, the right I_s all of them.
+report = exercises.grade("flywheel", demo, slipped)
+verdict = {q["id"]: (q["verdict"], q["slip"], q["score"] / q["max"]) for q in report["questions"]}
+assert verdict["E"] == ("slip", "power_of_ten", 0.5) and verdict["I_s"] == ("correct", None, 1.0)
+assert exercises.check("flywheel", demo, slipped).splitlines()[0].endswith(f"{report['score']:g} / 2 points")
+
+# The lesson's own tools give the answer key (for the id the notebook runs with); C_s comes with the data.
+mine = exercises.variant("flywheel", student)
+assert f"Cs = {mine.Cs:g}" in [g["shown"] for g in exercises.make("flywheel", student)["data"]]
+key1 = {q["id"]: q["answer"]["si"] for q in exercises.key("flywheel", student)["questions"]}
+f_mine = sweep(my_cutter, 360).flywheel(mine.Cs)
+assert math.isclose(f_mine.E, key1["E"], rel_tol=1e-9) and math.isclose(f_mine.I_s, key1["I_s"], rel_tol=1e-9)
+key2 = {q["id"]: q["answer"]["si"] for q in exercises.key("joint_force_index", student)["questions"]}
+jfi_mine = joint_force_index(my_crank, 360)
+assert math.isclose(jfi_mine.peak.value, key2["JFI"], rel_tol=1e-9)
+assert math.isclose(jfi_mine.peak.at, key2["JFI_at"], rel_tol=1e-9)
+
+# The answer boxes: type an id, fill in the key's answers as it prints them, press Check; then a slip.
+box = exercise("flywheel", "")
+box.student.value = demo
+assert all(g["shown"] in box.data.value for g in exercises.make("flywheel", demo)["data"])
+for q in exercises.key("flywheel", demo)["questions"]:
+    box.answers[q["id"]].value = q["answer"]["text"]
+assert box.check()["score"] == 2
+box.answers["E"].value = slipped["E"]
+assert box.check()["score"] == 1.5 and box.report["questions"][0]["slip"] == "power_of_ten"

@@ -42,9 +42,13 @@
 #    extra work the motor puts in;
 # 4. solve the gearset both ways: the tooth force along the pressure line, the torque ratio, and the
 #    power balance;
-# 5. drive the interactive explorer of each problem from code and check what it shows.
+# 5. drive the interactive explorer of each problem from code and check what it shows;
+# 6. solve a slider-crank with friction and a gear pair with **your own data**, and get feedback on
+#    your answers.
 #
 # All numbers inside graphkin are SI (m, kg, s, N, rad); we print mm, degrees and rpm to read them.
+# The checks that keep this notebook honest (every number quoted in the text is verified) are
+# collected at the end, in a section students may skip.
 
 # %%
 # %matplotlib inline
@@ -149,8 +153,7 @@ print(f"normal force N14 = F14y = {N14:.3f} N")
 print("G14 (guide on slider) =", r["G14"][0], "N =", show(r["G14"][0]))
 print(f"T12 = {r['T12'][0]:.4f} N·m")
 G14 = r["G14"][0]
-assert math.isclose(abs(G14[0]), mu * abs(N14), rel_tol=1e-12)  # friction = μ|N|
-assert np.sign(G14[0]) == -np.sign(vB[0])  # ... against the sliding
+print(f"friction G14x = {G14[0]:+.3f} N: size μ|N14| = {mu * abs(N14):.3f} N, against the sliding")
 
 # %% [markdown]
 # ### The matrix
@@ -177,14 +180,11 @@ row = system.equations.index("link 4: ΣFx")
 col = system.unknowns.index("N14")
 sigma = np.sign(N14)
 print(f"A[link 4: ΣFx, N14] = {system.A[0, row, col]:+.3f}   (−μ σ sign V4 = {-mu * sigma * np.sign(vB[0]):+.3f})")
-assert math.isclose(system.A[0, row, col], -mu * sigma * np.sign(vB[0]))
 
 x = np.linalg.solve(system.A[0], system.b[0])
 sol = dict(zip(system.unknowns, x))
-assert np.allclose([sol["F23x"], sol["F23y"]], r["F23"][0])
-assert np.allclose([sol["F34x"], sol["F34y"]], r["F34"][0])
-assert math.isclose(sol["N14"], N14) and abs(sol["C14"]) < 1e-9
-assert math.isclose(sol["T12"], r["T12"][0])
+print(f"numpy's solution: N14 = {sol['N14']:.3f} N, C14 = {sol['C14']:.1e} N·m, T12 = {sol['T12']:.4f} N·m"
+      f"   (graphkin: N14 = {N14:.3f} N, T12 = {r['T12'][0]:.4f} N·m)")
 
 # %% [markdown]
 # `assemble` took $\sigma$ from the answer (that is what the entry above shows). A student does not
@@ -202,8 +202,6 @@ for s in (+1.0, -1.0):
           f"{'consistent' if ok else 'contradicts the assumption'}")
     if ok:
         consistent.append(xs)
-assert len(consistent) == 1
-assert math.isclose(consistent[0]["T12"], r["T12"][0])
 
 # %% [markdown]
 # ### The graphical route: a guide reaction tilted by the friction angle
@@ -221,7 +219,6 @@ assert math.isclose(consistent[0]["T12"], r["T12"][0])
 
 # %%
 c = construct_forces(k, 0)
-assert c.valid and not c.warnings
 for number, step in enumerate(c.steps, start=1):
     print(f"Step {number:2} [{step.kind}] link {step.link}: {step.caption}")
 
@@ -232,15 +229,11 @@ G14g = c.force(1, 4)
 print(f"friction angle ρ = atan μ = {rho:.3f}°")
 print(f"G14 = {show(G14g)}: tilted {tilt(G14g, normal):.3f}° from the guide's normal, "
       f"its x part {'+' if G14g[0] > 0 else '−'}, the slider moves {'−' if vB[0] < 0 else '+'}x")
-assert math.isclose(tilt(G14g, normal), rho)
-assert np.sign(G14g[0]) == -np.sign(vB[0])
 
 # While only the rod is loaded, the slider passes the rod's force on along the tilted guide line:
 (two_force,) = [s for s in steps_of(c, "two-force", 4)]
 (F43_line,) = two_force.lines
 print(f"{two_force.caption}\n  its line through B is tilted {tilt(F43_line.direction, normal):.3f}° from the normal")
-assert math.isclose(tilt(F43_line.direction, normal), rho)
-assert np.allclose(F43_line.point, k.position(4, "B")[0])
 
 # %% [markdown]
 # Both routes, force by force:
@@ -254,7 +247,6 @@ for name in r.names():
     else:
         g_text, a_text = show(g), show(a)
     print(f"{name:5}{g_text:>24}{a_text:>24}{rel(g, a):>11.1e}")
-    assert rel(g, a) < 1e-9, name
 
 # %%
 draw.draw_solution(c, r)
@@ -269,12 +261,10 @@ rs = p.solve(at=at)
 worst = 0.0
 for i, th in enumerate(at):
     ci = construct_forces(rs.kinematics, i)
-    assert ci.valid and not ci.warnings
     worst = max(worst, max(rel(ci[name], rs[name][i]) for name in rs.names()))
     print(f"θ12 = {math.degrees(th):5.0f}°: N14 = {rs.normal[(1, 4)][i]:8.2f} N, "
           f"T12 = {rs['T12'][i]:8.3f} N·m (analytical), {ci.effort:8.3f} N·m (graphical)")
 print(f"largest relative difference over these positions: {worst:.1e}")
-assert worst < 1e-9
 
 # %% [markdown]
 # ## 2. Friction over a whole turn
@@ -290,10 +280,6 @@ p0_file = edited("slider_crank_friction", "mu = 0.2", "mu = 0.0")
 
 n = 360
 cyc, cyc0 = sweep(p, n), sweep(p0, n)
-assert cyc.closed and cyc.valid.all() and cyc0.valid.all()
-assert cyc.n == cyc0.n == n  # the gas force acts all the time: no switching samples to add
-assert np.array_equal(sweep(p0_file, n).torque, cyc0.torque)
-assert all(getattr(j, "mu", 0.0) == 0.0 for j in p0.mechanism.joints) and guide.mu == mu > 0  # p is unchanged
 
 deg = np.degrees(cyc.q)
 res, res0 = cyc.analysis, cyc0.analysis
@@ -343,7 +329,6 @@ print("dead centres from the geometry: θ12 =", np.round(np.degrees(dead), 3), "
 
 V_dead = p.kinematics(at=dead).velocity(4, "B")[:, 0]
 print("slider velocity there:", V_dead, "m/s")
-assert np.allclose(V_dead, 0, atol=1e-12)
 
 flips_V = np.flatnonzero(np.sign(V4) != np.sign(np.roll(V4, -1)))
 flips_F = np.flatnonzero(np.sign(G[:, 0]) != np.sign(np.roll(G[:, 0], -1)))
@@ -351,10 +336,6 @@ flips_N = np.flatnonzero(np.sign(N) != np.sign(np.roll(N, -1)))
 print("V4 changes sign between θ =", [f"{deg[i]:.0f}°…{deg[i] + 1:.0f}°" for i in flips_V])
 print("friction changes sign between θ =", [f"{deg[i]:.0f}°…{deg[i] + 1:.0f}°" for i in flips_F])
 print("N changes sign between θ =", [f"{deg[i]:.0f}°…{deg[i] + 1:.0f}°" for i in flips_N])
-assert list(flips_F) == list(flips_V) and len(flips_V) == 2
-for i, th in zip(flips_V, dead):
-    assert cyc.q[i] < th < cyc.q[i] + 2 * np.pi / n
-assert not set(flips_N) & set(flips_V)  # here N changes side at other angles
 
 # %% [markdown]
 # Everywhere on the turn the friction force has size $\mu|N|$ and opposes the sliding. So at a dead centre it
@@ -370,8 +351,8 @@ assert not set(flips_N) & set(flips_V)  # here N changes side at other angles
 # centre the solution *with* friction is exactly the frictionless one, and lies between its two neighbours:
 
 # %%
-assert np.allclose(np.abs(G[:, 0]), mu * np.abs(N))
-assert np.all(np.sign(G[:, 0]) == -np.sign(V4))
+print(f"over the turn: |friction| − μ|N| at most {np.max(np.abs(np.abs(G[:, 0]) - mu * np.abs(N))):.0e} N;"
+      f" friction against V4 at {np.sum(np.sign(G[:, 0]) == -np.sign(V4))} of {n} positions")
 hair = math.radians(0.01)
 for th in dead:
     around = p.solve(at=[th - hair, th, th + hair])
@@ -380,17 +361,10 @@ for th in dead:
           f"   V4 {Va[0]:+.5f} → {Va[1]:+.0e} → {Va[2]:+.5f} m/s,  friction {Ga[0, 0]:+7.3f} → {Ga[1, 0]:+.3f} → {Ga[2, 0]:+7.3f} N,\n"
           f"   N14 {Na[0]:+8.3f} → {Na[1]:+8.3f} → {Na[2]:+8.3f} N,  T12 {around['T12'][0]:+.4f} → {around['T12'][1]:+.4f}"
           f" → {around['T12'][2]:+.4f} N·m")
-    assert np.sign(Va[0]) == -np.sign(Va[2]) and np.sign(Ga[0, 0]) == -np.sign(Ga[2, 0])
-    assert np.allclose(np.abs(Ga[::2, 0]), mu * np.abs(Na[::2]))  # μ|N| either side
-    assert Ga[1, 0] == 0.0  # and no friction at the dead centre itself
 
 guide_kin = p.kinematics(at=dead)
 print("slide_sense at the dead centres:", guide_kin.slide_sense(guide, guide.slider))
 at_dead, at_dead0 = p.solve(at=dead), p0.solve(at=dead)
-assert np.array_equal(guide_kin.slide_sense(guide, guide.slider), [0.0, 0.0])
-assert np.allclose(at_dead.effort, at_dead0.effort, rtol=1e-12, atol=1e-12)
-for name in at_dead0.names():
-    assert np.allclose(at_dead[name], at_dead0[name], rtol=1e-12, atol=1e-9), name
 print("at the dead centres the solution with μ =", mu, "is the frictionless one: T12 =", at_dead.effort, "N·m")
 
 # %% [markdown]
@@ -406,7 +380,6 @@ for th in (60, 120, 240, 300):
     i = int(np.argmin(abs(deg - th)))
     print(f"θ12 = {th:3}°: V4 = {V4[i]:+.3f} m/s, N14 = {N[i]:+8.2f} N, friction {G[i, 0]:+7.2f} N, "
           f"−sign(V4) μ F14y = {lecture[i]:+7.2f} N")
-assert np.all(agree[N > 0]) and not np.any(agree[(N < 0) & (V4 != 0)])
 
 # %% [markdown]
 # ### The work lost to friction
@@ -429,15 +402,12 @@ P_f = mu * np.abs(N) * np.abs(V4)  # friction power [W]
 extra = (cyc.torque - cyc0.torque) * omega
 print(f"largest |(T12 − T12⁰)ω − μ|N||V4|| over the turn: {np.max(np.abs(extra - P_f)):.1e} W "
       f"(friction power up to {P_f.max():.1f} W)")
-assert np.allclose(extra, P_f, rtol=1e-9, atol=1e-9)
 
 period = 2 * math.pi / omega
 W_in, W_in0 = 2 * math.pi * cyc.average, 2 * math.pi * cyc0.average  # ∮ T dθ
 W_f = np.mean(P_f) * period  # ∫ μ|N||V4| dt, trapezoidal rule on the periodic grid
 print(f"input work per turn: {W_in:.4f} J with friction, {W_in0:.1e} J without")
 print(f"work lost to friction per turn: {W_f:.4f} J  (average friction power {W_f / period:.2f} W)")
-assert W_f > 0
-assert math.isclose(W_in - W_in0, W_f, rel_tol=1e-9)
 
 # %% [markdown]
 # Without friction the motor does **no net work** over a turn: the kinetic energy comes back to the
@@ -445,7 +415,8 @@ assert math.isclose(W_in - W_in0, W_f, rel_tol=1e-9)
 # other. That is a check of its own:
 
 # %%
-assert abs(W_in0) < 1e-9 * np.max(np.abs(cyc0.torque)) * 2 * math.pi
+print(f"motor's work per turn without friction: {W_in0:.1e} J"
+      f"  (its torque swings over ±{np.max(np.abs(cyc0.torque)):.0f} N·m)")
 
 # %% [markdown]
 # A last check of the friction solution, with no frictionless solution involved: the **power balance**
@@ -462,12 +433,9 @@ vB_all = kin.velocity(4, "B")
 FP = np.array(p.mechanism.loads[0].force)
 balance = cyc.torque * omega + P_inertia + vB_all @ FP + np.sum(G * vB_all, axis=1)
 print(f"largest residual of the power balance: {np.max(np.abs(balance)):.1e} W")
-assert np.allclose(balance, 0, atol=1e-9 * np.max(np.abs(cyc.torque * omega)))
 
 stroke = math.sqrt((rod + crank) ** 2 - e**2) - math.sqrt((rod - crank) ** 2 - e**2)
 print(f"stroke {stroke * 1e3:.2f} mm; μ max|N| · 2·stroke = {mu * np.abs(N).max() * 2 * stroke:.3f} J ≥ W_f = {W_f:.3f} J")
-assert np.isclose(np.ptp(kin.position(4, "B")[:, 0]), stroke, rtol=1e-3)
-assert W_f <= mu * np.abs(N).max() * 2 * stroke
 
 # %% [markdown]
 # ### The interactive explorer
@@ -487,7 +455,6 @@ ex
 # sweep behind the curve (`ex.cycle`).
 
 # %%
-assert np.allclose(ex.cycle.torque, cyc.torque)  # the same turn at 300 rpm
 for angle in (60.0, 150.0, 240.0, 330.0):
     ex.slider.value = angle
     mine = p.solve(at=[math.radians(angle)])
@@ -495,13 +462,6 @@ for angle in (60.0, 150.0, 240.0, 330.0):
     x_marker, y_marker = (float(v[0]) for v in ex.marker.get_data())
     print(f"θ12 = {angle:5.1f}°: explorer T12 = {shown_T:8.4f} (analytical), {ex.construction.effort:8.4f} (graphical); "
           f"own solve {mine['T12'][0]:8.4f} N·m;  G14 drawn = {show(ex.construction['G14'])}")
-    assert not ex.message
-    assert math.isclose(shown_T, mine["T12"][0], rel_tol=1e-12)
-    assert math.isclose(ex.construction.effort, mine["T12"][0], rel_tol=1e-9)
-    assert rel(ex.construction["G14"], mine["G14"][0]) < 1e-9
-    assert math.isclose(tilt(ex.construction["G14"], normal), rho)
-    assert math.isclose(x_marker, angle) and math.isclose(y_marker, mine["T12"][0])
-    assert f"{mine['T12'][0]:.5g}" in ex.status.value
 
 # %% [markdown]
 # Doubling the speed to 600 rpm recomputes the torque curve: the explorer solves `p.at_speed(ω)`, the same
@@ -513,9 +473,6 @@ ex.speed.value = 600
 fast = edited("slider_crank_friction", 'omega = "300 rpm"', 'omega = "600 rpm"')
 fast_cycle = sweep(fast, n)
 print(f"at 600 rpm: average T12 = {ex.cycle.average:.4f} N·m (explorer), {fast_cycle.average:.4f} N·m (own sweep)")
-assert np.allclose(ex.cycle.torque, fast_cycle.torque)
-assert np.allclose(sweep(p.at_speed(2 * omega), n).torque, fast_cycle.torque)
-assert math.isclose(ex.analytical["T12"][0], fast.solve(at=[math.radians(330)])["T12"][0])
 ex.speed.value = 300  # back to the file's speed
 
 # %% [markdown]
@@ -552,8 +509,6 @@ rg = g.solve()
 kg = rg.kinematics
 w2, w3, a2, a3 = kg.omega[2][0], kg.omega[3][0], kg.alpha[2][0], kg.alpha[3][0]
 print(f"ω2 = {w2:.4f} rad/s, ω3 = {w3:.4f} rad/s;  α2 = {a2:g} rad/s², α3 = {a3:g} rad/s²")
-assert math.isclose(w3, -r2 / r3 * w2) and math.isclose(a3, -r2 / r3 * a2)
-assert np.allclose(kg.a_G(2), 0) and np.allclose(kg.a_G(3), 0)
 for j in (2, 3):
     print(f"link {j}: F_i = {rg.inertia(j).F[0]} N, T_i = {rg.inertia(j).T[0]:+.4f} N·m")
 
@@ -596,12 +551,9 @@ cF = sys_g.unknowns.index("F23")
 rows3 = [sys_g.equations.index(f"link 3: ΣF{a}") for a in "xy"]
 d = sys_g.A[0, rows3, cF]
 print(f"column F23 in link 3's force rows: {d}  = (sin φ, cos φ) = ({math.sin(phi):.4f}, {math.cos(phi):.4f})")
-assert np.allclose(d, [math.sin(phi), math.cos(phi)])
 xg = dict(zip(sys_g.unknowns, np.linalg.solve(sys_g.A[0], sys_g.b[0])))
 for name, value in xg.items():
     print(f"{name:>5} = {value:10.4f}")
-assert np.allclose(xg["F23"] * d, rg["F23"][0])
-assert math.isclose(xg["T12"], rg["T12"][0])
 
 # %% [markdown]
 # ### The lecture's 6 × 6, built by hand
@@ -634,10 +586,6 @@ for s in (+1.0, -1.0):
           f"{'consistent' if ok else 'contradicts the assumption'}")
     if ok:
         lecture_answer = dict(F12=np.array([F12x, F12y]), F32=np.array([cc * F32y, F32y]), F13=np.array([F13x, F13y]), T12=T12)
-assert lecture_answer is not None
-assert np.allclose(lecture_answer["F32"], -rg["F23"][0])
-assert np.allclose(lecture_answer["F12"], rg["F12"][0]) and np.allclose(lecture_answer["F13"], rg["F13"][0])
-assert math.isclose(lecture_answer["T12"], rg["T12"][0])
 print("the lecture's matrix and graphkin agree:", show(-lecture_answer["F32"]), "=", show(rg["F23"][0]))
 
 # %% [markdown]
@@ -666,14 +614,10 @@ W_r = W_t * math.tan(phi)
 e23 = (O3 - O2) / np.linalg.norm(O3 - O2)  # from gear centre to pinion centre
 print(f"W_t = {W_t:.3f} N, W = W_t / cos φ = {W:.3f} N, W_r = W_t tan φ = {W_r:.3f} N")
 print(f"graphkin: F23 = {show(F23)} (tangential {F23[1]:.3f} N, radial {F23 @ e23:.3f} N, pushing the pinion away)")
-assert math.isclose(np.linalg.norm(F23), W) and math.isclose(F23 @ e23, W_r)  # radial part pushes 3 away from 2
-assert math.isclose(tilt(F23, e23), 90 - math.degrees(phi))  # φ from the tangent = 90° − φ from the line of centres
 
 T12g = rg["T12"][0]
 print(f"T12 = {T12g:.4f} N·m;  I2 α2 + (r2/r3)(T13 − I3 α3) = {I2 * a2 + r2 / r3 * (T13 - I3 * a3):.4f} N·m")
 print(f"torque ratio without the inertia torques: (T12 − I2α2)/(T13 − I3α3) = {(T12g - I2 * a2) / (T13 - I3 * a3):.4f}")
-assert math.isclose(T12g, I2 * a2 + r2 / r3 * (T13 - I3 * a3))
-assert np.allclose(rg["F12"][0], F23) and np.allclose(rg["F13"][0], -F23)  # pivots take the tooth force
 
 # %% [markdown]
 # The pressure angle changes the **bearing loads**, not the torques: the radial part has no moment about the
@@ -686,8 +630,6 @@ for new in ("14.5 deg", "25 deg"):
     phi_p = math.radians(float(new.split()[0]))
     print(f"φ = {new:>8}: T12 = {rp['T12'][0]:.4f} N·m, |F23| = {np.linalg.norm(rp['F23'][0]):7.3f} N "
           f"(W_t / cos φ = {W_t / math.cos(phi_p):7.3f} N)")
-    assert math.isclose(rp["T12"][0], T12g)
-    assert math.isclose(np.linalg.norm(rp["F23"][0]), W_t / math.cos(phi_p))
 
 # %% [markdown]
 # ### The graphical route
@@ -707,37 +649,27 @@ for new in ("14.5 deg", "25 deg"):
 # driver step balances it.
 # %%
 cg = construct_forces(kg, 0)
-assert cg.valid and not cg.warnings
 for number, step in enumerate(cg.steps, start=1):
     print(f"Step {number} [{step.kind}] link {step.link}: {step.caption}")
 
 # %%
 (pressure,) = steps_of(cg, "line", 3)  # the tooth force's line: the pressure line
 (couple,) = steps_of(cg, "couple", 3)  # the pivot force's line: F13 = −F23, a couple
-assert not steps_of(cg, "three-force") and "only a couple" in couple.caption
 (line,) = pressure.lines
 print("pitch point P =", np.array(pressure.points["P"]) * 1e3, "mm")
 print(f"pressure line: {tilt(line.direction, e23):.3f}° from the line of centres "
       f"(= 90° − φ), distance {off_line(O2, line) * 1e3:.3f} mm from O2 and {off_line(O3, line) * 1e3:.3f} mm from O3")
 print(f"base circles: r2 cos φ = {r2 * math.cos(phi) * 1e3:.3f} mm, r3 cos φ = {r3 * math.cos(phi) * 1e3:.3f} mm")
-assert np.allclose(pressure.points["P"], P) and np.allclose(cg.pitch_points[(2, 3)], P)
-assert math.isclose(tilt(line.direction, e23), 90 - math.degrees(phi))
-assert math.isclose(off_line(O2, line), r2 * math.cos(phi)) and math.isclose(off_line(O3, line), r3 * math.cos(phi))
 
 (poly3,) = steps_of(cg, "polygon", 3)
 print(poly3.caption, "—", len(poly3.polygon), "arrows:", ", ".join(arrow.name for arrow in poly3.polygon))
-assert [arrow.name for arrow in poly3.polygon] == ["F23", "F13"]
 F23g = np.array(poly3.values["F23"])
 (pivot_line,) = couple.lines
-assert np.allclose(pivot_line.point, O3) and math.isclose(tilt(pivot_line.direction, e23), 90 - math.degrees(phi))
 print(f"gear 3: |F23| · r3 cos φ = {np.linalg.norm(F23g) * r3 * math.cos(phi):.4f} N·m = T13 + T3i = "
       f"{T13 + rg.inertia(3).T[0]:.4f} N·m")
-assert np.allclose(cg.force(1, 3), -F23g)
-assert math.isclose(np.linalg.norm(F23g) * r3 * math.cos(phi), T13 + rg.inertia(3).T[0])
 
 (drive,) = steps_of(cg, "driver")
 print(drive.caption)
-assert math.isclose(drive.values["d"] * np.linalg.norm(drive.values["F12"]), abs(cg.effort))
 
 # %% [markdown]
 # On gear 2 the tooth force $\vec F_{32}$ and the inertia torque $T_{2i}$ add up to one resultant $\vec R_2$: the same
@@ -751,7 +683,6 @@ for name in rg.names():
     gv, av = cg[name], rg[name][0]
     g_text, a_text = (f"{gv:.4f} N·m", f"{av:.4f} N·m") if np.ndim(av) == 0 else (show(gv), show(av))
     print(f"{name:5}{g_text:>24}{a_text:>24}{rel(gv, av):>11.1e}")
-    assert rel(gv, av) < 1e-9, name
 
 # %%
 draw.draw_solution(cg, rg)
@@ -772,17 +703,16 @@ draw.draw_solution(cg, rg)
 gcyc = sweep(g, 72)
 ga = gcyc.analysis
 gk = ga.kinematics
-assert gcyc.valid.all() and np.ptp(gcyc.torque) < 1e-12 * abs(T12g)
 P_in = gcyc.power
 P_load = T13 * gk.omega[3]
 dEdt = I2 * gk.alpha[2] * gk.omega[2] + I3 * gk.alpha[3] * gk.omega[3]
 print(f"power in {P_in[0]:.3f} W = to the load {-P_load[0]:.3f} W + into kinetic energy {dEdt[0]:.3f} W")
-assert np.allclose(P_in + P_load, dEdt)
 # The tooth force's power: the velocity of P is the same on both pitch circles.
 vP2 = gk.omega[2][:, None] * np.array([-R32[1], R32[0]])
 vP3 = gk.omega[3][:, None] * np.array([-R23[1], R23[0]])
-assert np.allclose(vP2, vP3)
-assert np.allclose(np.sum(ga["F23"] * vP3, axis=1) + np.sum(ga["F32"] * vP2, axis=1), 0)
+P_teeth = np.sum(ga["F23"] * vP3, axis=1) + np.sum(ga["F32"] * vP2, axis=1)
+print(f"the velocity of P on the two pitch circles differs by at most {np.abs(vP2 - vP3).max():.0e} m/s;"
+      f" the two tooth forces take {np.abs(P_teeth).max():.0e} W together")
 
 # %% [markdown]
 # At a **steady** speed ($\alpha_2 = 0$) no energy goes into the gears: power in equals power out, and over one
@@ -799,9 +729,6 @@ dtheta3 = -2 * math.pi * r2 / r3
 W_load = -T13 * dtheta3
 print(f"steady speed: T12 = {scyc.average:.4f} N·m = (r2/r3) T13 = {r2 / r3 * T13:.4f} N·m")
 print(f"per turn of the gear: motor work {W_motor:.4f} J, work against the load {W_load:.4f} J")
-assert math.isclose(scyc.average, r2 / r3 * T13)
-assert np.allclose(scyc.power, -T13 * sk.omega[3])
-assert math.isclose(W_motor, W_load)
 
 # %% [markdown]
 # ### The explorer for the gearset
@@ -814,21 +741,85 @@ ex_g = explore(g)
 ex_g
 
 # %%
-assert np.allclose(ex_g.cycle.torque, T12g)
 for angle in (0.0, 90.0, 200.0):
     ex_g.slider.value = angle
     mine = g.solve(at=[math.radians(angle)])
     print(f"θ12 = {angle:5.1f}°: explorer T12 = {ex_g.analytical['T12'][0]:.4f} (analytical), "
           f"{ex_g.construction.effort:.4f} (graphical); own solve {mine['T12'][0]:.4f} N·m; "
           f"F23 drawn = {show(ex_g.construction['F23'])}")
-    assert not ex_g.message
-    assert math.isclose(ex_g.analytical["T12"][0], mine["T12"][0])
-    assert math.isclose(ex_g.construction.effort, mine["T12"][0], rel_tol=1e-9)
-    assert rel(ex_g.construction["F23"], mine["F23"][0]) < 1e-9
-    assert np.allclose(ex_g.construction.pitch_points[(2, 3)], P)
 
 # %% [markdown]
-# ## 4. Try it yourself
+# ## 4. Your turn
+#
+# Two exercises with **your own numbers**: every student id gets its own crank angle, speed and
+# coefficient of friction for the slider-crank, and its own speed, acceleration and load for the
+# gears, the same each time you run the notebook. Type the id your teacher gave you between the
+# quotes below, in place of `"your-id"`, and run the cells from here. Answer in the boxes and press
+# **Check**, or in code with `exercises.check`: the grader reads numbers with their units as you would
+# write them (`"85.2 N ∠ 61.5°"`, `"20.4 N*m CW"`, `"410 N"`) and, when an answer is off, tells you
+# what kind of slip it looks like.
+
+# %%
+from graphkin import exercises
+from graphkin.widgets import exercise
+
+student = "your-id"  # ← type your own id here
+
+# %% [markdown]
+# ### Exercise 1: your slider-crank with friction
+#
+# The slider-crank of section 1 (its gas force, dimensions and masses) at your own crank angle, speed
+# and coefficient of friction:
+
+# %%
+exercise("slider_crank_friction", student)
+
+# %% [markdown]
+# `exercises.variant(name, student).problem` is your machine as a `Problem`, just like `p`; `.solve()`
+# solves it at your angle (section 1), or draw the polygons with the guide reaction tilted by your
+# friction angle. Then type your answers in the boxes above, or fill them in here and run the cell:
+
+# %%
+my_slider = exercises.variant("slider_crank_friction", student).problem
+# your work here: my_slider.solve(), then G14, |F34| and T12
+answers = {"G14": "", "F34": "", "T12": ""}  # e.g. "12.3 N ∠ 45.6°", "123 N", "1.23 N*m CCW"
+print(exercises.check("slider_crank_friction", student, answers))
+
+# %% [markdown]
+# ### What the feedback looks like
+#
+# A made-up student, `"example"`, got the guide force the wrong way round — they gave the force of
+# the slider on the guide, $\vec G_{41} = -\vec G_{14}$ — and the torque right. Their correct answers
+# come from `exercises.key`, the teacher's answer sheet (values in SI) — for another id than yours,
+# so that nothing is given away:
+
+# %%
+demo = "example"
+key = {q["id"]: q["answer"]["si"] for q in exercises.key("slider_crank_friction", demo)["questions"]}
+slipped = {"G14": show(-np.array(key["G14"])), "T12": f"{key['T12']:.4g} N*m"}  # G14: turned round
+print(exercises.check("slider_crank_friction", demo, slipped))
+
+# %% [markdown]
+# A slip earns part of the points (a force turned round, half) and says what to look at; a wrong
+# answer earns nothing. `exercises.grade(...)` gives the same report as plain data (score, and per
+# question the verdict, the slip and the feedback), for your own records.
+#
+# ### Exercise 2: your gear pair
+#
+# The gearset of section 3 at your own speed and acceleration of gear 2, with your own load on the
+# pinion: the tooth force, the bearing force on the gear and the driving torque.
+
+# %%
+exercise("gear_pair", student)
+
+# %%
+my_gears = exercises.variant("gear_pair", student).problem
+# your work here: my_gears.solve(), then |F23|, F12 and T12
+answers = {"F23": "", "F12": "", "T12": ""}  # e.g. "123 N", "123 N ∠ 45.6°", "12.3 N*m CCW"
+print(exercises.check("gear_pair", student, answers))
+
+# %% [markdown]
+# ### More to try
 #
 # * **More friction.** Predict first: is the work lost to friction proportional to $\mu$? (It would be if $N$ did not
 #   depend on $\mu$.) The cell below sweeps a few values; then try μ = 3. graphkin reports positions where friction
@@ -868,3 +859,202 @@ else:
     print()
 print(f"the rod leans more than 90° − ρ = {limit:.2f}° at {np.sum(lean > limit)} positions; "
       f"the two lists agree at {np.mean((lean > limit) == stuck):.1%} of the turn")
+
+# %% [markdown]
+# ## Checks (for the course maintainers; students may skip)
+#
+# Every claim of the lesson, checked against a route that does not use it, and every number quoted
+# in the text checked at the precision it is quoted. Grouped by section; they read the variables the
+# sections above computed. The explorers are driven here from a known state, whatever was done with
+# them above.
+
+# %% [markdown]
+# ### 1. The slider-crank with friction at the slider
+
+# %%
+links = {j: p.mechanism.link(j) for j in (1, 2, 3, 4)}
+assert np.allclose([e, crank, rod], [links[1].points["E"][1], math.dist(links[2].points["O2"], links[2].points["A"]),
+                                     math.dist(links[3].points["A"], links[3].points["B"])])  # the data as quoted
+assert [links[3].mass, links[4].mass] == [1.2, 0.8] and p.mechanism.loads[0].force == (-500.0, 0.0) and mu == 0.2
+assert math.isclose(abs(G14[0]), mu * abs(N14), rel_tol=1e-12)  # friction = μ|N|
+assert np.sign(G14[0]) == -np.sign(vB[0])  # ... against the sliding
+assert math.isclose(system.A[0, row, col], -mu * sigma * np.sign(vB[0]))
+assert np.allclose([sol["F23x"], sol["F23y"]], r["F23"][0])
+assert np.allclose([sol["F34x"], sol["F34y"]], r["F34"][0])
+assert math.isclose(sol["N14"], N14) and abs(sol["C14"]) < 1e-9
+assert math.isclose(sol["T12"], r["T12"][0])
+assert len(consistent) == 1  # assume and check: exactly one side of N is consistent
+assert math.isclose(consistent[0]["T12"], r["T12"][0])
+assert c.valid and not c.warnings
+assert math.isclose(tilt(G14g, normal), rho)
+assert np.sign(G14g[0]) == -np.sign(vB[0])
+assert math.isclose(tilt(F43_line.direction, normal), rho)
+assert np.allclose(F43_line.point, k.position(4, "B")[0])
+for name in r.names():  # both routes, force by force
+    gv, av = c[name], r[name][0]
+    assert rel(gv, av) < 1e-9, name
+for i, th in enumerate(at):  # the graphical route at other positions
+    ci = construct_forces(rs.kinematics, i)
+    assert ci.valid and not ci.warnings
+assert worst < 1e-9
+
+# %% [markdown]
+# ### 2. Friction over a whole turn
+
+# %%
+assert math.isclose(omega, 300 * math.pi / 30)
+assert cyc.closed and cyc.valid.all() and cyc0.valid.all()
+assert cyc.n == cyc0.n == n  # the gas force acts all the time: no switching samples to add
+assert np.array_equal(sweep(p0_file, n).torque, cyc0.torque)
+assert all(getattr(j, "mu", 0.0) == 0.0 for j in p0.mechanism.joints) and guide.mu == mu > 0  # p is unchanged
+assert np.allclose(V_dead, 0, atol=1e-12)
+assert np.array_equal(np.round(np.degrees(dead)), [4, 188])  # "the dead centres near 4° and 188°"
+assert list(flips_F) == list(flips_V) and len(flips_V) == 2
+for i, th in zip(flips_V, dead):
+    assert cyc.q[i] < th < cyc.q[i] + 2 * np.pi / n
+assert not set(flips_N) & set(flips_V)  # here N changes side at other angles
+assert len(flips_N) == 2  # "the normal force changes side twice a turn"
+assert np.allclose(np.abs(G[:, 0]), mu * np.abs(N))
+assert np.all(np.sign(G[:, 0]) == -np.sign(V4))
+for th in dead:
+    around = p.solve(at=[th - hair, th, th + hair])
+    Ga, Na, Va = around["G14"], around.normal[(1, 4)], around.kinematics.velocity(4, "B")[:, 0]
+    assert np.sign(Va[0]) == -np.sign(Va[2]) and np.sign(Ga[0, 0]) == -np.sign(Ga[2, 0])
+    assert np.allclose(np.abs(Ga[::2, 0]), mu * np.abs(Na[::2]))  # μ|N| either side
+    assert Ga[1, 0] == 0.0  # and no friction at the dead centre itself
+assert np.array_equal(guide_kin.slide_sense(guide, guide.slider), [0.0, 0.0])
+assert np.allclose(at_dead.effort, at_dead0.effort, rtol=1e-12, atol=1e-12)
+for name in at_dead0.names():
+    assert np.allclose(at_dead[name], at_dead0[name], rtol=1e-12, atol=1e-9), name
+assert np.all(agree[N > 0]) and not np.any(agree[(N < 0) & (V4 != 0)])
+assert np.sum(N < 0) > n / 2  # the unsigned form is wrong on "most of the turn"
+assert np.allclose(extra, P_f, rtol=1e-9, atol=1e-9)
+assert W_f > 0
+assert math.isclose(W_in - W_in0, W_f, rel_tol=1e-9)
+assert abs(W_in0) < 1e-9 * np.max(np.abs(cyc0.torque)) * 2 * math.pi
+assert np.allclose(balance, 0, atol=1e-9 * np.max(np.abs(cyc.torque * omega)))
+assert np.isclose(np.ptp(kin.position(4, "B")[:, 0]), stroke, rtol=1e-3)
+assert W_f <= mu * np.abs(N).max() * 2 * stroke
+
+# %%
+# The explorer, driven from a known state: the file's speed, then the four angles, then 600 rpm.
+ex.speed.value = 300
+assert np.allclose(ex.cycle.torque, cyc.torque)  # the same turn at 300 rpm
+for angle in (60.0, 150.0, 240.0, 330.0):
+    ex.slider.value = angle
+    mine = p.solve(at=[math.radians(angle)])
+    shown_T = ex.analytical["T12"][0]
+    x_marker, y_marker = (float(v[0]) for v in ex.marker.get_data())
+    assert not ex.message
+    assert math.isclose(shown_T, mine["T12"][0], rel_tol=1e-12)
+    assert math.isclose(ex.construction.effort, mine["T12"][0], rel_tol=1e-9)
+    assert rel(ex.construction["G14"], mine["G14"][0]) < 1e-9
+    assert math.isclose(tilt(ex.construction["G14"], normal), rho)
+    assert math.isclose(x_marker, angle) and math.isclose(y_marker, mine["T12"][0])
+    assert f"{mine['T12'][0]:.5g}" in ex.status.value
+ex.speed.value = 600
+assert np.allclose(ex.cycle.torque, fast_cycle.torque)
+assert np.allclose(sweep(p.at_speed(2 * omega), n).torque, fast_cycle.torque)
+assert math.isclose(ex.analytical["T12"][0], fast.solve(at=[math.radians(330)])["T12"][0])
+ex.speed.value = 300  # back to the file's speed
+
+# %% [markdown]
+# ### 3. The gearset
+
+# %%
+assert np.allclose([r2, r3, math.degrees(phi), T13, m2, m3, I2, I3], [0.1, 0.04, 20, 8, 3, 0.6, 0.015, 0.0005])
+assert np.allclose(O3 - O2, [0.14, 0]) and math.isclose(w2, 120 * math.pi / 30) and a2 == 50  # the data as quoted
+assert math.isclose(w3, -r2 / r3 * w2) and math.isclose(a3, -r2 / r3 * a2)
+assert np.allclose(kg.a_G(2), 0) and np.allclose(kg.a_G(3), 0)
+assert np.allclose(d, [math.sin(phi), math.cos(phi)])
+assert np.allclose(xg["F23"] * d, rg["F23"][0])
+assert math.isclose(xg["T12"], rg["T12"][0])
+assert lecture_answer is not None
+assert np.allclose(lecture_answer["F32"], -rg["F23"][0])
+assert np.allclose(lecture_answer["F12"], rg["F12"][0]) and np.allclose(lecture_answer["F13"], rg["F13"][0])
+assert math.isclose(lecture_answer["T12"], rg["T12"][0])
+assert R23[1] == 0.0  # "Y = −R23x here, since R23y = 0"
+assert math.isclose(np.linalg.norm(F23), W) and math.isclose(F23 @ e23, W_r)  # radial part pushes 3 away from 2
+assert math.isclose(tilt(F23, e23), 90 - math.degrees(phi))  # φ from the tangent = 90° − φ from the line of centres
+assert math.isclose(T12g, I2 * a2 + r2 / r3 * (T13 - I3 * a3))
+assert np.allclose(rg["F12"][0], F23) and np.allclose(rg["F13"][0], -F23)  # pivots take the tooth force
+assert math.isclose(r2 / r3, 2.5)  # the torque ratio; the pinion turns 2.5 times per turn of the gear
+for new in ("14.5 deg", "25 deg"):  # the pressure angle changes the bearing loads, not the torques
+    rp = edited("gearset", 'pressure_angle = "20 deg"', f'pressure_angle = "{new}"').solve()
+    phi_p = math.radians(float(new.split()[0]))
+    assert math.isclose(rp["T12"][0], T12g)
+    assert math.isclose(np.linalg.norm(rp["F23"][0]), W_t / math.cos(phi_p))
+
+# %%
+# The graphical route
+assert cg.valid and not cg.warnings
+assert not steps_of(cg, "three-force") and "only a couple" in couple.caption
+assert np.allclose(pressure.points["P"], P) and np.allclose(cg.pitch_points[(2, 3)], P)
+assert math.isclose(tilt(line.direction, e23), 90 - math.degrees(phi))
+assert math.isclose(off_line(O2, line), r2 * math.cos(phi)) and math.isclose(off_line(O3, line), r3 * math.cos(phi))
+assert [arrow.name for arrow in poly3.polygon] == ["F23", "F13"]
+assert np.allclose(pivot_line.point, O3) and math.isclose(tilt(pivot_line.direction, e23), 90 - math.degrees(phi))
+assert np.allclose(cg.force(1, 3), -F23g)
+assert math.isclose(np.linalg.norm(F23g) * r3 * math.cos(phi), T13 + rg.inertia(3).T[0])
+assert math.isclose(drive.values["d"] * np.linalg.norm(drive.values["F12"]), abs(cg.effort))
+assert r2 * math.cos(phi) < drive.values["d"] < 1.05 * r2 * math.cos(phi)  # "a little more than the base radius"
+for name in rg.names():
+    gv, av = cg[name], rg[name][0]
+    assert rel(gv, av) < 1e-9, name
+
+# %%
+# Power balance, and the explorer driven from a known state
+assert gcyc.valid.all() and np.ptp(gcyc.torque) < 1e-12 * abs(T12g)
+assert np.allclose(P_in + P_load, dEdt)
+assert np.allclose(vP2, vP3)
+assert np.allclose(np.sum(ga["F23"] * vP3, axis=1) + np.sum(ga["F32"] * vP2, axis=1), 0)
+assert math.isclose(scyc.average, r2 / r3 * T13)
+assert np.allclose(scyc.power, -T13 * sk.omega[3])
+assert math.isclose(W_motor, W_load)
+ex_g.speed.value = 120  # the file's speed
+assert np.allclose(ex_g.cycle.torque, T12g)
+for angle in (0.0, 90.0, 200.0):
+    ex_g.slider.value = angle
+    mine = g.solve(at=[math.radians(angle)])
+    assert not ex_g.message
+    assert math.isclose(ex_g.analytical["T12"][0], mine["T12"][0])
+    assert math.isclose(ex_g.construction.effort, mine["T12"][0], rel_tol=1e-9)
+    assert rel(ex_g.construction["F23"], mine["F23"][0]) < 1e-9
+    assert np.allclose(ex_g.construction.pitch_points[(2, 3)], P)
+
+# %% [markdown]
+# ### 4. Your turn
+
+# %%
+# More to try: the self-locking rule of thumb, with the numbers of its text (whatever μ was typed above).
+assert round(math.degrees(math.atan(3.0)), 1) == 71.6 and round(90 - math.degrees(math.atan(3.0)), 1) == 18.4
+
+# The feedback example: a force turned round earns half the points, a right torque all, an empty box none.
+report = exercises.grade("slider_crank_friction", demo, slipped)
+verdict = {q["id"]: (q["verdict"], q["slip"], q["score"] / q["max"]) for q in report["questions"]}
+assert verdict["G14"] == ("slip", "sign", 0.5) and verdict["T12"] == ("correct", None, 1.0)
+assert verdict["F34"][0] == "missing"
+assert exercises.check("slider_crank_friction", demo, slipped).splitlines()[0].endswith(
+    f"{report['score']:g} / 3 points")
+
+# The lesson's own tools give the answer key (for the id the notebook runs with).
+key1 = {q["id"]: q["answer"]["si"] for q in exercises.key("slider_crank_friction", student)["questions"]}
+r_mine = my_slider.solve()
+assert np.allclose(r_mine["G14"][0], key1["G14"], rtol=1e-9, atol=0)
+assert math.isclose(np.linalg.norm(r_mine["F34"][0]), key1["F34"], rel_tol=1e-9)
+assert math.isclose(r_mine["T12"][0], key1["T12"], rel_tol=1e-9)
+key2 = {q["id"]: q["answer"]["si"] for q in exercises.key("gear_pair", student)["questions"]}
+r_gears = my_gears.solve()
+assert math.isclose(np.linalg.norm(r_gears["F23"][0]), key2["F23"], rel_tol=1e-9)
+assert np.allclose(r_gears["F12"][0], key2["F12"], rtol=1e-9, atol=0)
+assert math.isclose(r_gears["T12"][0], key2["T12"], rel_tol=1e-9)
+
+# The answer boxes: type an id, fill in the key's answers as it prints them, press Check; then a slip.
+box = exercise("slider_crank_friction", "")
+box.student.value = demo
+assert all(g["shown"] in box.data.value for g in exercises.make("slider_crank_friction", demo)["data"])
+for q in exercises.key("slider_crank_friction", demo)["questions"]:
+    box.answers[q["id"]].value = q["answer"]["text"]
+assert box.check()["score"] == 3
+box.answers["G14"].value = slipped["G14"]
+assert box.check()["score"] == 2.5 and box.report["questions"][0]["slip"] == "sign"

@@ -31,7 +31,7 @@ from .exercise import SLIPS, Exercise, Question, Vary, load_exercise, parse_exer
 from .variant import MAX_ATTEMPTS, Variant, make_variant
 
 __all__ = ["Exercise", "Question", "Vary", "Variant", "SLIPS", "MAX_ATTEMPTS", "names", "load", "load_exercise",
-           "parse_exercise", "variant", "make", "key", "grade", "check"]
+           "parse_exercise", "path", "variant", "make", "key", "grade", "check"]
 
 _CACHE: dict = {}
 
@@ -45,13 +45,20 @@ def names() -> list[str]:
     return sorted(p.name[:-5] for p in _folder().iterdir() if p.name.endswith(".toml"))
 
 
+def path(name: str) -> Path:
+    """Path of a catalog exercise file (to read it, or to copy it as the start of your own)."""
+    if name not in names():
+        raise GraphkinError(f"no catalog exercise {name!r} (the catalog has: {', '.join(names())})")
+    return Path(str(_folder().joinpath(name + ".toml")))
+
+
 def load(name_or_path: str | Exercise) -> Exercise:
     """An :class:`Exercise` from a catalog name or a file path (read once per process)."""
     if isinstance(name_or_path, Exercise):
         return name_or_path
     if name_or_path not in _CACHE:
         if name_or_path in names():
-            ex = load_exercise(Path(str(_folder().joinpath(name_or_path + ".toml"))), name=name_or_path)
+            ex = load_exercise(path(name_or_path), name=name_or_path)
         else:
             p = Path(name_or_path)
             if p.suffix != ".toml" and not p.exists():
@@ -89,7 +96,7 @@ def grade(exercise: str | Exercise, student: str, answers, secret: str = "", *, 
     return grade_variant(variant(exercise, student, secret), answers, reveal=reveal)
 
 
-def check(exercise: str | Exercise, student: str, answers, secret: str = "") -> str:
+def check(exercise: str | Exercise, student: str, answers, secret: str = "", *, reveal: bool | None = None) -> str:
     """Grade answers and return the feedback as text, one line per question (for a notebook cell).
 
     Examples
@@ -97,9 +104,10 @@ def check(exercise: str | Exercise, student: str, answers, secret: str = "") -> 
     >>> print(check("single_link", "s001", {"T12": "4.531 N*m CW"}).splitlines()[1])
     F12: missing — No answer was given for F12.
     """
-    report = grade(exercise, student, answers, secret)
+    report = grade(exercise, student, answers, secret, reveal=reveal)
     lines = [f"{report['exercise']} (student {report['student']}): {report['score']:g} / {report['max']:g} points"]
     for q in report["questions"]:
         slip = f" ({q['slip'].replace('_', ' ')})" if q["slip"] else ""
-        lines.append(f"{q['id']}: {q['verdict']}{slip} — {q['feedback']}")
+        expected = f" (expected: {q['expected']})" if "expected" in q and q["verdict"] != "correct" else ""
+        lines.append(f"{q['id']}: {q['verdict']}{slip} — {q['feedback']}{expected}")
     return "\n".join(lines)

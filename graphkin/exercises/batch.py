@@ -1,13 +1,18 @@
 """A whole roster at once: sheets, keys or grades for every student, on all cores.
 
 Each student's variant is independent of every other's, so a roster is cut
-into chunks that worker processes solve; the results come back as plain data
-in the roster's order. Small rosters (or one core) run in this process, where
-starting workers would cost more than it saves.
+into one shard per core, each solved by its own worker process; the results
+come back as plain data in the roster's order. A student always goes to the
+same worker (shard = position in the roster modulo the number of workers),
+and the workers live for the whole session, so the variants a worker made
+for the sheets serve the keys and the grades too (see
+:data:`graphkin.exercises.variant.CACHE_SIZE`). Small rosters (or one core)
+run in this process, where starting workers would cost more than it saves.
 """
 
 from __future__ import annotations
 
+import atexit
 import os
 from concurrent.futures import ProcessPoolExecutor
 
@@ -17,6 +22,7 @@ PARALLEL_FROM = 200
 """Rosters of at least this many students are spread over the cores."""
 
 _CHUNK = 50
+_WORKERS: list[ProcessPoolExecutor] = []
 
 
 def _one(exercise: Exercise, action: str, student: str, secret: str, answers, reveal):
@@ -38,6 +44,21 @@ def _one(exercise: Exercise, action: str, student: str, secret: str, answers, re
 def _chunk(args):
     exercise, action, items, secret, reveal = args
     return [_one(exercise, action, student, secret, answers, reveal) for student, answers in items]
+
+
+def _workers(n: int) -> list[ProcessPoolExecutor]:
+    """``n`` single-process pools, started once and kept for the session."""
+    while len(_WORKERS) < n:
+        if not _WORKERS:
+            atexit.register(_shutdown)
+        _WORKERS.append(ProcessPoolExecutor(max_workers=1))
+    return _WORKERS[:n]
+
+
+def _shutdown():
+    for pool in _WORKERS:
+        pool.shutdown(cancel_futures=True)
+    _WORKERS.clear()
 
 
 def run_roster(exercise: Exercise, action: str, students, secret: str = "", *, answers=None, reveal=None,
@@ -68,18 +89,24 @@ def run_roster(exercise: Exercise, action: str, students, secret: str = "", *, a
     students = list(students)
     answers = list(answers) if answers is not None else [None] * len(students)
     items = list(zip(students, answers))
-    chunks = [items[i:i + _CHUNK] for i in range(0, len(items), _CHUNK)]
     cores = workers or os.cpu_count() or 1
-    out: list[dict] = []
     if cores == 1 or len(items) < PARALLEL_FROM:
-        for chunk in chunks:
-            out.extend(_chunk((exercise, action, chunk, secret, reveal)))
+        out: list[dict] = []
+        for i in range(0, len(items), _CHUNK):
+            out.extend(_chunk((exercise, action, items[i:i + _CHUNK], secret, reveal)))
             if progress:
-                progress(len(chunk))
+                progress(len(items[i:i + _CHUNK]))
         return out
-    with ProcessPoolExecutor(max_workers=cores) as pool:
-        for chunk, done in zip(chunks, pool.map(_chunk, [(exercise, action, c, secret, reveal) for c in chunks])):
-            out.extend(done)
-            if progress:
-                progress(len(chunk))
+    out = [None] * len(items)
+    futures = []
+    for k, pool in enumerate(_workers(cores)):
+        index = list(range(k, len(items), cores))
+        for i in range(0, len(index), _CHUNK):
+            part = index[i:i + _CHUNK]
+            futures.append((part, pool.submit(_chunk, (exercise, action, [items[j] for j in part], secret, reveal))))
+    for part, future in futures:
+        for j, result in zip(part, future.result()):
+            out[j] = result
+        if progress:
+            progress(len(part))
     return out

@@ -9,6 +9,7 @@ be solved fails when it is loaded, not when the first student asks.
 from __future__ import annotations
 
 import difflib
+import hashlib
 import re
 import tomllib
 from dataclasses import dataclass
@@ -171,6 +172,9 @@ class Exercise:
     draw : bool
         Whether the student is given the free bodies drawn to scale (graphical exercises).
     file : str
+    fingerprint : str
+        SHA-256 of the id, the exercise file and the base problem file: two
+        Exercise objects with the same fingerprint make the same variants.
     """
 
     id: str
@@ -189,6 +193,7 @@ class Exercise:
     max_speed_ratio: float
     draw: bool
     file: str
+    fingerprint: str = ""
 
     @property
     def cycle(self) -> bool:
@@ -420,7 +425,8 @@ def parse_exercise(text: str, *, file: str = "<exercise>", id: str = "exercise",
         if not base_path.is_file():
             raise rd.fail("problem", f"{problem!r} is neither a catalog problem ({', '.join(catalog.names())}) nor a file")
     try:
-        base = tomllib.loads(base_path.read_text(encoding="utf-8"))
+        base_text = base_path.read_text(encoding="utf-8")
+        base = tomllib.loads(base_text)
     except (OSError, UnicodeDecodeError, tomllib.TOMLDecodeError) as exc:
         raise rd.fail("problem", f"{problem!r} cannot be read ({exc})") from None
     from ..problem import build_problem
@@ -498,7 +504,8 @@ def parse_exercise(text: str, *, file: str = "<exercise>", id: str = "exercise",
     return Exercise(id, rd.text(data, "title", ""), rd.text(data, "source", "", ""), rd.text(data, "intro", "", ""),
                     problem, base, tuple(vary), questions, partial, positions, Cs, reveal,
                     rd.number(data, "max_force_ratio", "", 20.0, low=1.0),
-                    rd.number(data, "max_speed_ratio", "", 5.0, low=1.0), draw, file)
+                    rd.number(data, "max_speed_ratio", "", 5.0, low=1.0), draw, file,
+                    hashlib.sha256("\x1f".join((id, text, base_text)).encode("utf-8")).hexdigest())
 
 
 _TOKEN = re.compile(r"([A-Za-z_]\w*)|\[(\d+)\]")

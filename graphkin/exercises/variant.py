@@ -17,6 +17,7 @@ import hashlib
 import math
 import re
 import unicodedata
+from collections import OrderedDict
 from dataclasses import dataclass, field, replace
 from functools import cached_property
 
@@ -293,7 +294,40 @@ def _speed_ratio(problem, span: float, kinematics) -> float:
 _CYCLE_ONLY = {"peak_torque", "lowest_torque", "average_torque", "peak_force", "flywheel_E", "flywheel_I", "jfi_peak"}
 
 
+CACHE_SIZE = 1024
+"""Variants kept per process (a roster's make, key and grade, or a notebook's checks, solve each once)."""
+
+_CACHE: OrderedDict = OrderedDict()
+
+
 def make_variant(ex: Exercise, student: str, secret: str = "") -> Variant:
+    """The student's variant (made once per process, then reused; see :data:`CACHE_SIZE`).
+
+    Variants are immutable, so one made for a sheet serves the key and the
+    grader. A cached variant keeps every question's answer but not the arrays
+    of a whole cycle, which are recomputed if a slip needs them.
+    """
+    student = check_student(student)
+    if not isinstance(secret, str):
+        raise GraphkinError("the course secret must be text")
+    # By content, not identity: a worker process receives a fresh copy of the exercise with every chunk.
+    key = (ex.fingerprint or id(ex), student, secret)
+    v = _CACHE.get(key)
+    if v is not None and (v.exercise is ex or v.exercise.fingerprint == ex.fingerprint != ""):
+        _CACHE.move_to_end(key)
+        return v
+    v = _make_variant(ex, student, secret)
+    for q in ex.questions:
+        v.expected(q)
+    for name in ("cycle", "flywheel", "jfi"):
+        v.solved.__dict__.pop(name, None)
+    _CACHE[key] = v
+    if len(_CACHE) > CACHE_SIZE:
+        _CACHE.popitem(last=False)
+    return v
+
+
+def _make_variant(ex: Exercise, student: str, secret: str = "") -> Variant:
     """The student's variant: the first usable draw for (exercise id, student id, secret).
 
     Raises

@@ -1,0 +1,654 @@
+# ---
+# jupyter:
+#   jupytext:
+#     formats: ipynb,py:percent
+#     text_representation:
+#       extension: .py
+#       format_name: percent
+#       format_version: '1.3'
+#       jupytext_version: 1.19.6
+#   kernelspec:
+#     display_name: Python 3 (ipykernel)
+#     language: python
+#     name: python3
+# ---
+
+# %% [markdown]
+# # Lesson 06 — Exercises for a course (for teachers)
+#
+# The other lessons are for students. This one is for you, the teacher: how to give each of your
+# students **their own numbers** for an exercise, grade what they type, and see at a glance which
+# slips the class made. `graphkin.exercises` does the work; every result is plain data (dicts,
+# strings, numbers) that you can save as CSV or JSON for your learning platform.
+#
+# The weekly loop, and the sections of this lesson:
+#
+# 1. choose an exercise from the catalog, or write your own (a short TOML file);
+# 2. make every student's sheet and your answer key from the roster and a **course secret**;
+# 3. do the same from the command line, for a script or a cron job;
+# 4. collect the answers as a CSV, grade them, and read the class's scores and slips;
+# 5. decide how much a slip is worth, whether to reveal the answers, and keep the secret secret;
+# 6. what next.
+#
+# Everything happens in a temporary folder, deleted when the notebook's kernel stops. The class
+# is simulated (section 4) from the keys with a fixed random seed, so the notebook gives the same
+# numbers every time; the checks at the end make sure the text says what the code does.
+
+# %%
+# %matplotlib inline
+
+import csv
+import json
+import math
+import os
+import subprocess
+import sys
+import tempfile
+from collections import Counter
+from importlib import resources
+from pathlib import Path
+
+import numpy as np
+from matplotlib.figure import Figure
+
+from graphkin import exercises
+from graphkin.errors import ProblemFileError
+from graphkin.exercises.quantities import value_of
+
+NAME = "strip_cutter_cut"     # the exercise of this lesson
+SECRET = "mech-2025-autumn"   # a demo secret; a real one never goes in a notebook (section 5)
+workdir = tempfile.TemporaryDirectory(prefix="graphkin-course-")
+folder = Path(workdir.name)
+
+# %% [markdown]
+# ## 1. What an exercise is
+#
+# The catalog has ten exercises, on the problems of lessons 01–05:
+
+# %%
+for name in exercises.names():
+    print(f"{name:<26}{exercises.load(name).title}")
+
+# %% [markdown]
+# Each is a TOML file shipped inside the package. `importlib.resources` finds it whether graphkin
+# was installed from a wheel or from a checkout. Here is the one we use in this lesson, the strip
+# cutter of lessons 02–03 during the cut:
+
+# %%
+toml_file = resources.files("graphkin.catalog") / "exercises" / f"{NAME}.toml"
+print(toml_file.read_text(encoding="utf-8"))
+
+# %% [markdown]
+# How to read it:
+#
+# * `problem` is the **base problem**, here the catalog's `strip_cutter` (lesson 03). Everything
+#   the exercise doesn't vary is taken from it.
+# * `intro` is the statement. `{θ12}`, `{ω}` and `{Fc}` are replaced by the student's own values.
+# * Each `[vary.SYMBOL]` table is one value that changes from student to student. `field` says
+#   where it goes in the problem file (a list puts the same value in several places: the cutting
+#   force acts on both blades). `from`, `to` and `step` make a grid in one unit, so students get
+#   round numbers like the book's (126°, 1150 rpm), never 131.4729°. A list `values = [...]` works too.
+# * Each `[[questions]]` has an `id` (the column of the answers CSV), `find` (a joint force `F23`,
+#   the driver `T12`, …), the `part` asked (for a force, the whole vector unless you say otherwise), and optionally a `unit`
+#   (the unit of a bare number and of the key), a `tolerance` (default 1 %) and `points` (default 1).
+#
+# What the file allows, once read:
+
+# %%
+ex = exercises.load(NAME)
+for v in ex.vary:
+    print(f"{v.symbol:>4} ({v.label}): {len(v.values)} values, {v.values[0]}, {v.values[1]}, …, {v.values[-1]}")
+print(f"     {math.prod(len(v.values) for v in ex.vary)} different data sets")
+for q in ex.questions:
+    print(f"{q.id}: {q.part} in {q.unit}, within {q.tolerance:.0%}, {q.points:g} point")
+
+# %% [markdown]
+# ### Writing your own
+#
+# Write the TOML in a file, or in a string while you try it out, and read it with
+# `exercises.parse_exercise`. Reading it checks everything: graphkin builds the base problem with
+# the first, middle and last value of every range, so a mistake shows up now, not when the first
+# student asks. Here is a short exercise on the same machine, with the speed from a list, two points
+# for the torque and the rocker force in kN within 2 %:
+
+# %%
+MY_EXERCISE = """
+title = "Strip cutter: how fast may it cut?"
+problem = "strip_cutter"
+intro = "The strip cutter of lesson 03 cuts with 2000 N. At θ12 = {θ12}, with the crank at {ω}, find:"
+
+[vary."θ12"]
+field = "driver.theta"
+from = "130 deg"
+to = "150 deg"
+step = "5 deg"
+
+[vary."ω"]
+field = "driver.omega"
+values = ["600 rpm", "900 rpm", "1200 rpm"]
+
+[[questions]]
+id = "T12"
+find = "T12"
+ask = "T12, the motor torque, with its sense"
+points = 2
+
+[[questions]]
+id = "F34"
+find = "F34"
+part = "magnitude"
+unit = "kN"
+tolerance = "2 %"
+ask = "|F34|, the force of the coupler on the rocker at B [kN]"
+"""
+mine = exercises.parse_exercise(MY_EXERCISE, id="cutter_speed")
+my_key = exercises.key(mine, "s001", secret=SECRET)
+print(my_key["intro"])
+for q in my_key["questions"]:
+    print(f"  {q['id']}: {q['ask']}  →  key: {q['answer']['text']}")
+
+# %% [markdown]
+# The `id` is part of every student's data (section 2): save the file as `cutter_speed.toml`, so
+# the command line, which takes the id from the file name, gives the same data.
+#
+# A slip in the file is named with its field, as in problem files:
+
+# %%
+try:
+    exercises.parse_exercise(MY_EXERCISE.replace('tolerance = "2 %"', 'tolerence = "2 %"'), id="cutter_speed")
+except ProblemFileError as err:
+    typo = str(err)
+print(typo)
+
+# %% [markdown]
+# ## 2. A roster, the sheets and the key
+#
+# Your platform exports the class list as a CSV. graphkin needs one column, `student`; the others
+# are ignored. Here is a made-up class of 30 in two lab groups:
+
+# %%
+roster = folder / "roster.csv"
+with roster.open("w", newline="", encoding="utf-8") as f:
+    out = csv.writer(f)
+    out.writerow(["student", "group"])
+    out.writerows([f"s{n:03d}", "AB"[n % 2]] for n in range(1, 31))
+
+with roster.open(encoding="utf-8") as f:
+    students = [row["student"] for row in csv.DictReader(f)]
+print(len(students), "students:", ", ".join(students[:5]), "…")
+
+# %% [markdown]
+# A student's **sheet** (`exercises.make`) is the statement with their data and the questions, no
+# answers: that is what you hand out. The **key** (`exercises.key`) adds every answer, in SI and as
+# the book prints it. Both depend on the course secret:
+
+# %%
+sheets = {s: exercises.make(NAME, s, secret=SECRET) for s in students}
+keys = {s: exercises.key(NAME, s, secret=SECRET) for s in students}
+
+print(sheets["s001"]["intro"])
+
+# %%
+symbols = [v.symbol for v in ex.vary]
+print(f"{'student':<8}" + "".join(f"{s:>10}" for s in symbols) + "   " +
+      "".join(f"{q.id:<22}" for q in ex.questions))
+for s in students[:8]:
+    data = {g["symbol"]: g["shown"].split(" = ")[1] for g in sheets[s]["data"]}
+    answers = {q["id"]: q["answer"]["text"] for q in keys[s]["questions"]}
+    print(f"{s:<8}" + "".join(f"{data[x]:>10}" for x in symbols) + "   " +
+          "".join(f"{answers[q.id]:<22}" for q in ex.questions))
+
+# %% [markdown]
+# Each student's data come from a hash of (exercise, student id, secret) and nothing else, so
+#
+# * the same id always gives the same data, on any machine, this week or next;
+# * a student who joins late changes nobody else's data, and neither does the order of the roster;
+# * stray spaces around an id (pasted from a spreadsheet) don't matter, but the case does: `S001`
+#   is another student than `s001`;
+# * another secret (next year's course) gives other data.
+
+# %%
+print("s001 again:        ", exercises.make(NAME, "s001", secret=SECRET) == sheets["s001"])
+print("' s001 ' (spaces): ", exercises.make(NAME, " s001 ", secret=SECRET)["data"] == sheets["s001"]["data"])
+print("'S001':            ", exercises.make(NAME, "S001", secret=SECRET)["data"] == sheets["s001"]["data"])
+next_year = {s: exercises.make(NAME, s, secret="mech-2026-autumn")["data"] for s in students}
+changed = sum(next_year[s] != sheets[s]["data"] for s in students)
+print(f"another secret: {changed} of {len(students)} students get other data")
+
+# %% [markdown]
+# 2145 data sets is plenty, but two students out of 30 may still draw the same (the birthday
+# problem: the chance is $1 - \prod_{k<30} (1 - k/2145) \approx 18\,\%$). Does it happen here?
+
+# %%
+by_data = {}
+for s in students:
+    by_data.setdefault(tuple(g["value"] for g in sheets[s]["data"]), []).append(s)
+twins = [group for group in by_data.values() if len(group) > 1]
+print(f"{len(by_data)} different data sets for {len(students)} students; the same data: {twins}")
+
+# %% [markdown]
+# It does: s013 and s025 have the same numbers. If that matters (they sit side by side), vary one
+# more value or take a finer step; every student's data change with the file, so do it before
+# you hand out the sheets.
+
+# %% [markdown]
+# ## 3. The same from the command line
+#
+# The `graphkin exercise` command does the same for a whole roster and writes one CSV row per
+# student. Here we run it from the notebook with `subprocess`, exactly as you would type it in a
+# terminal in the course folder (the helper runs `python -m graphkin.cli`, which is the `graphkin`
+# command). From a few hundred students on, the command spreads the work over all your cores.
+
+# %%
+def graphkin(*args, env=None):
+    """Run `graphkin ARGS...` in the course folder and return what it printed."""
+    print("$ graphkin", " ".join(args))
+    done = subprocess.run([sys.executable, "-m", "graphkin.cli", *args], cwd=folder, env=env,
+                          capture_output=True, text=True, encoding="utf-8", check=True)
+    if done.stderr:
+        print(done.stderr.strip())
+    return done.stdout
+
+
+graphkin("exercise", "make", NAME, "--roster", "roster.csv", "--secret", SECRET, "-o", "sheets.csv")
+graphkin("exercise", "key", NAME, "--roster", "roster.csv", "--secret", SECRET, "-o", "keys.csv")
+print()
+print("".join((folder / "keys.csv").read_text(encoding="utf-8").splitlines(keepends=True)[:4]))
+
+# %% [markdown]
+# One student's sheet, as text to print or mail (`--json` gives the same as plain data):
+
+# %%
+print(graphkin("exercise", "make", NAME, "--student", "s001", "--secret", SECRET))
+
+# %% [markdown]
+# ## 4. Collecting and grading the answers
+#
+# Students hand in a CSV (or a form your platform turns into one): a `student` column and one
+# column per question id, the answers as typed. We don't have a real class, so we make one
+# **honestly from the keys**: each answer is right, or carries one of the classic slips made on
+# purpose, or is wrong, blank or unreadable. The slips are computed, not guessed:
+#
+# * **sign**: the force of the other link (F32 for F23), or the torque with the wrong sense;
+# * **power of ten**: the torque worked out in N·mm and written as N·m;
+# * **no inertia torque**: the variant solved again without $-I_G\alpha$
+#   (`variant.altered("no_inertia_torque")`), and the answer read off it with `value_of`.
+#
+# A wrong answer is 5 to 15 % off; an unreadable one is "see my drawing", "?", or the right answer
+# with a decimal comma. Answers are typed as students type them; s001's F23 and T12, for instance,
+# as `2643 N ∠ -126.57°`, `(-1575, -2123) N` or `2.643 kN at -126.6 deg`, and `216.6 N·m CCW`,
+# `216.6 N*m` or `0.2166 kN·m`.
+
+# %%
+def fmt(x):
+    """A number as a student writes it: 4 significant figures, no powers of ten."""
+    return f"{x:.4g}" if abs(x) < 1e4 else f"{x:.0f}"
+
+
+def typed(q, value, style):
+    """An answer (SI value) typed in one of three styles."""
+    if q.part == "vector":
+        size, angle = abs(value), math.degrees(math.atan2(value.imag, value.real))
+        return [f"{fmt(size)} N ∠ {angle:.2f}°", f"({fmt(value.real)}, {fmt(value.imag)}) N",
+                f"{fmt(size / 1e3)} kN at {angle:.1f} deg"][style]
+    if q.part == "magnitude":
+        return [f"{fmt(value)} N", f"{fmt(value / 1e3)} kN", fmt(value)][style]
+    return [f"{fmt(abs(value))} N·m {'CCW' if value > 0 else 'CW'}", f"{fmt(value)} N*m",
+            f"{fmt(value / 1e3)} kN·m"][style]
+
+
+def slipped(variant, q, slip):
+    """The value (SI) of a student who made `slip`."""
+    right = value_of(variant.solved, q)
+    if slip == "sign":
+        return -right
+    if slip == "power_of_ten":   # N·mm written as N·m
+        return right * 1e3
+    return value_of(variant.altered(slip), q)
+
+
+SLIPS_MADE = {"F23": ["sign", "no_inertia_torque"], "F14": ["no_inertia_torque"],
+              "T12": ["sign", "power_of_ten", "no_inertia_torque"]}
+GARBAGE = ["see my drawing", "?", "comma"]   # "comma": the right answer with a decimal comma
+
+# %%
+rng = np.random.default_rng(2025)
+made = {}   # (student, question) → what we made: "correct", a slip, "wrong", "missing", "unreadable"
+rows = []
+for s in students:
+    v = exercises.variant(NAME, s, secret=SECRET)
+    row = {"student": s}
+    for q in ex.questions:
+        right, style = value_of(v.solved, q), int(rng.integers(3))
+        what = str(rng.choice(["correct", "slip", "wrong", "missing", "unreadable"], p=[.75, .13, .04, .04, .04]))
+        if what == "correct":
+            answer = typed(q, right, style)
+        elif what == "slip":   # one that changes the answer: at some angles T12 hardly feels the inertia torques
+            what = str(rng.choice([sl for sl in SLIPS_MADE[q.id]
+                                   if abs(slipped(v, q, sl) - right) > 3 * q.tolerance * abs(right)]))
+            answer = typed(q, slipped(v, q, what), style)
+        elif what == "wrong":   # 5 to 15 % off: an arm measured badly
+            answer = typed(q, right * (1 + rng.choice([-1, 1]) * rng.uniform(0.05, 0.15)), style)
+        elif what == "missing":
+            answer = ""
+        else:
+            answer = str(rng.choice(GARBAGE))
+            if answer == "comma":
+                answer = next(t for t in (typed(q, right, k) for k in range(3)) if "." in t).replace(".", ",")
+        made[s, q.id] = what
+        row[q.id] = answer
+    rows.append(row)
+
+answers_csv = folder / "answers.csv"
+with answers_csv.open("w", newline="", encoding="utf-8") as f:
+    out = csv.DictWriter(f, fieldnames=["student"] + [q.id for q in ex.questions])
+    out.writeheader()
+    out.writerows(rows)
+print("".join(answers_csv.read_text(encoding="utf-8").splitlines(keepends=True)[:8]))
+
+# %% [markdown]
+# Grading a row is one call, `exercises.grade(exercise, student, answers, secret=...)`, where
+# `answers` maps each question id to the text typed. It returns the score and, per question, the
+# verdict (`correct`, `slip`, `wrong`, `unreadable`, `missing`), the slip it diagnosed, the points
+# and a sentence of feedback.
+
+# %%
+with answers_csv.open(encoding="utf-8") as f:
+    handed_in = {row["student"]: {q.id: row[q.id] for q in ex.questions} for row in csv.DictReader(f)}
+reports = {s: exercises.grade(NAME, s, handed_in[s], secret=SECRET) for s in handed_in}
+scores = [r["score"] for r in reports.values()]
+top = sum(q.points for q in ex.questions)
+print(f"mean {np.mean(scores):.2f} / {top:g}; full marks: {scores.count(top)} of {len(scores)} students")
+as_made = sum((q["slip"] or q["verdict"]) == made[s, q["id"]] for s in students for q in reports[s]["questions"])
+print(f"the grader named what we made in {as_made} of {len(made)} answers")
+
+# %% [markdown]
+# The grader named every answer as we made it: right, the slip we put in, wrong, blank or
+# unreadable. It can only judge the number, though: a wrong answer that happens to land within the
+# tolerance of a slip's value is named as that slip. That happens now and then, because some slips
+# change the answer only a little: at some crank angles the inertia torques add only a few percent to T12.
+
+# %%
+fig = Figure(figsize=(10, 3.6))
+ax1, ax2 = fig.subplots(1, 2, gridspec_kw={"width_ratios": [1, 1.6]})
+ax1.hist(scores, bins=np.arange(-0.125, top + 0.25, 0.25), color="tab:blue", edgecolor="white")
+ax1.set(xlabel="score", ylabel="students", title="Scores")
+
+labels = ["sign", "power_of_ten", "no_inertia_torque", "wrong", "unreadable", "missing"]
+counts = Counter((q["id"], q["slip"] or q["verdict"]) for r in reports.values() for q in r["questions"])
+x = np.arange(len(labels))
+for n, q in enumerate(ex.questions):
+    ax2.bar(x + (n - 1) * 0.27, [counts[q.id, lab] for lab in labels], width=0.27, label=q.id)
+ax2.set_xticks(x, [lab.replace("_", " ") for lab in labels], rotation=20, fontsize=8)
+ax2.set(ylabel="answers", title="What went wrong, per question")
+ax2.legend()
+fig.tight_layout()
+fig
+
+# %% [markdown]
+# The right-hand chart is your plan for the next class: the tallest bars are what to go over again.
+# A **slip** earns part of the points (half for a sign or a power of ten, a quarter for a missing
+# inertia torque, by default — section 5); a **wrong** answer earns none. An **unreadable** answer
+# earns none either, but its feedback says how to write it: you may want to let those students
+# hand in again.
+#
+# What a student sees, here one who slipped (`exercises.check` gives the report as text):
+
+# %%
+shown = next(s for s in students if len({q["verdict"] for q in reports[s]["questions"]}) == 3)  # 3 verdicts
+print(exercises.check(NAME, shown, handed_in[shown], secret=SECRET))
+
+# %% [markdown]
+# The command line grades the whole CSV at once and writes one row per student: the score, and per
+# question the points, the verdict and the feedback, ready to import into your gradebook.
+
+# %%
+graphkin("exercise", "grade", NAME, "--answers", "answers.csv", "--secret", SECRET, "-o", "grades.csv")
+with (folder / "grades.csv").open(encoding="utf-8") as f:
+    grades = list(csv.DictReader(f))
+print(list(grades[0]))
+for g in grades[:4]:
+    print(g["student"], g["score"], "|", g["F23 verdict"], "|", g["F14 verdict"], "|", g["T12 verdict"])
+
+# %% [markdown]
+# ## 5. Partial credit, revealing answers, and the secret
+#
+# ### How much a slip is worth
+#
+# The default shares of a question's points for each slip the grader can diagnose:
+
+# %%
+for slip, share in exercises.SLIPS.items():
+    print(f"{slip:<20}{share:g}")
+
+# %% [markdown]
+# You change them in the exercise file, with a `[partial]` table. Say you want the sign to cost more,
+# a power of ten less, and no credit at all for a forgotten inertia torque (the point of the exercise!).
+# Keep the same `id`, and the students keep their data; then grade the same CSV again:
+
+# %%
+STRICT = toml_file.read_text(encoding="utf-8") + """
+[partial]
+sign = 0.25
+power_of_ten = 0.75
+no_inertia_torque = 0
+"""
+strict = exercises.parse_exercise("reveal = true\n" + STRICT, id=NAME)
+strict_reports = {s: exercises.grade(strict, s, handed_in[s], secret=SECRET) for s in handed_in}
+strict_scores = [r["score"] for r in strict_reports.values()]
+print(f"mean score, default shares: {np.mean(scores):.3f}; with this [partial]: {np.mean(strict_scores):.3f}")
+
+# %% [markdown]
+# ### Revealing the answers
+#
+# By default the report never shows the expected value, so that a student can try again. Put
+# `reveal = true` at the top of the file (as in `strict` above) once the deadline has passed, or
+# pass `reveal=True` to `exercises.grade` (`--reveal` on the command line) for one run. Each
+# question of the report then has an `expected` entry:
+
+# %%
+for q in strict_reports[shown]["questions"]:
+    print(f"{q['id']}: {q['verdict']:<10} {q['score']:g}/{q['max']:g}   typed {q['answer']!r:<24} expected {q['expected']}")
+
+# %% [markdown]
+# ### Keeping the secret out of the students' notebook
+#
+# Whoever has the secret can compute every key, with one call to `exercises.key`. So:
+#
+# * never write the secret in a notebook, a script or a repository you share. Put it in the
+#   environment of *your* terminal (`export GRAPHKIN_SECRET=...`, then start Jupyter from it). The
+#   command line reads `GRAPHKIN_SECRET` when there is no `--secret`, which also keeps it out of
+#   your shell history;
+# * the Python functions don't read it: pass it yourself, `secret=os.environ["GRAPHKIN_SECRET"]`;
+# * choose a new secret each term, or last year's keys will circulate;
+# * without a secret (`secret=""`, the default) anyone can compute any key. That's fine for
+#   practice, as in lesson 03, where students check their own answers in the notebook. For graded
+#   work use a secret, hand out the sheets, and grade yourself: the notebook check of lesson 03
+#   would give a student the data of the course *without* a secret, which aren't theirs.
+#
+# The command line with the secret in the environment gives the same key as `exercises.key` with
+# `secret=SECRET` (compare s001's row in the table of section 2):
+
+# %%
+course_env = {**os.environ, "GRAPHKIN_SECRET": SECRET}   # in a course: set in your terminal, not here
+print(graphkin("exercise", "key", NAME, "--student", "s001", env=course_env))
+secret = os.environ.get("GRAPHKIN_SECRET", "")   # how your own grading notebook reads it
+
+# %% [markdown]
+# ## 6. What next
+#
+# * `docs/exercises.md` is the reference: every field of an exercise file, what
+#   students may type, how a slip is diagnosed, and the commands.
+# * Grading on a platform (otter-grader, nbgrader, PrairieLearn, Gradescope) is planned. Until then
+#   the CSV in and out of section 4 (or `--json`) is the way in.
+# * Try an exercise of your own: copy a catalog file, change the ranges and the questions, and read
+#   it with `exercises.load_exercise("my_exercise.toml")`. (`exercises.load` also takes a path, but
+#   reads each file once per session: it won't see your edits until you restart the kernel.)
+
+# %% [markdown]
+# ## Checks (for the course maintainers)
+#
+# Every number and claim of the text, checked. They read the variables the sections above computed.
+
+# %% [markdown]
+# ### 1. What an exercise is
+
+# %%
+assert len(exercises.names()) == 10 and NAME in exercises.names()
+assert [len(v.values) for v in ex.vary] == [15, 13, 11] and math.prod(len(v.values) for v in ex.vary) == 2145
+assert ex.vary[0].values[:2] == ("126 deg", "128 deg") and ex.vary[0].values[-1] == "154 deg"
+assert all(q.tolerance == 0.01 and q.points == 1 for q in ex.questions)
+assert [(q.id, q.part, q.unit) for q in ex.questions] == [("F23", "vector", "N"), ("F14", "magnitude", "N"),
+                                                          ("T12", "value", "N*m")]
+assert exercises.load(str(toml_file)).vary == ex.vary   # the file found is the catalog's
+assert [v.values for v in mine.vary] == [("130 deg", "135 deg", "140 deg", "145 deg", "150 deg"),
+                                         ("600 rpm", "900 rpm", "1200 rpm")]
+assert [(q.points, q.unit, q.tolerance) for q in mine.questions] == [(2, "N*m", 0.01), (1, "kN", 0.02)]
+assert my_key["questions"][1]["answer"]["text"].endswith(" kN")
+assert "tolerence" in typo and "did you mean 'tolerance'" in typo
+# The id is the seed: the file saved as cutter_speed.toml gives the same data.
+(folder / "cutter_speed.toml").write_text(MY_EXERCISE, encoding="utf-8")
+assert exercises.make(str(folder / "cutter_speed.toml"), "s001", SECRET)["data"] == my_key["data"]
+
+# %% [markdown]
+# ### 2. A roster, the sheets and the key
+
+# %%
+assert len(students) == 30 and len(set(students)) == 30
+assert all(keys[s]["data"] == sheets[s]["data"] for s in students)
+assert all("answer" not in q for s in students for q in sheets[s]["questions"])
+assert exercises.make(NAME, "s001", secret=SECRET) == sheets["s001"]
+assert exercises.make(NAME, " s001 ", secret=SECRET)["data"] == sheets["s001"]["data"]
+assert exercises.make(NAME, "S001", secret=SECRET)["data"] != sheets["s001"]["data"]
+assert changed == len(students)
+# A late student changes nobody's data; the roster's order doesn't matter.
+late = {s: exercises.make(NAME, s, secret=SECRET) for s in reversed(students + ["s031"])}
+assert all(late[s] == sheets[s] for s in students)
+assert twins == [["s013", "s025"]] and len(by_data) == 29
+assert round(100 * (1 - math.prod(1 - k / 2145 for k in range(30)))) == 18
+
+# %% [markdown]
+# ### 3. The same from the command line
+
+# %%
+from graphkin.exercises.batch import PARALLEL_FROM
+
+
+def read_csv(name):
+    with (folder / name).open(encoding="utf-8") as f:
+        return list(csv.DictReader(f))
+
+
+cli_sheets, cli_keys = read_csv("sheets.csv"), read_csv("keys.csv")
+assert [r["student"] for r in cli_sheets] == [r["student"] for r in cli_keys] == students
+for r_sheet, r_key in zip(cli_sheets, cli_keys):
+    s = r_sheet["student"]
+    assert all(r_sheet[g["symbol"]] == r_key[g["symbol"]] == g["value"] for g in sheets[s]["data"])
+    assert all(r_key[q["id"]] == q["answer"]["text"] for q in keys[s]["questions"])
+assert PARALLEL_FROM <= 500   # "from a few hundred students on, ... all your cores"
+
+# %% [markdown]
+# ### 4. Collecting and grading the answers
+
+# %%
+ids = [q.id for q in ex.questions]
+# The CSV round trip kept every answer.
+assert [{"student": s, **handed_in[s]} for s in students] == rows
+# The grader says what we made, for every answer: right ones correct, each slip diagnosed as the slip made.
+for s in students:
+    for q in reports[s]["questions"]:
+        assert (q["slip"] or q["verdict"]) == made[s, q["id"]], (s, q, made[s, q["id"]])
+assert as_made == len(made) == 90
+# "a few percent": T12 without the inertia torques, for the students of this roster.
+T12_off = []
+for s in students:
+    v = exercises.variant(NAME, s, secret=SECRET)
+    q = ex.question("T12")
+    T12_off.append(abs(value_of(v.altered("no_inertia_torque"), q) / value_of(v.solved, q) - 1))
+assert sum(0.01 < d < 0.1 for d in T12_off) >= 5 and min(T12_off) < 0.01
+tally = Counter(made.values())
+assert tally["correct"] > len(made) / 2 and all(tally[k] > 0 for k in labels)   # "most right", some of each
+assert all(counts[q, lab] == sum(made[s, q] == lab for s in students) for q in ids for lab in labels)
+# Students with every answer right have full marks, and only they.
+all_right = {s for s in students if all(made[s, q] == "correct" for q in ids)}
+assert all_right and all_right == {s for s in students if reports[s]["score"] == top}
+# The default shares quoted: half for a sign or a power of ten, a quarter for a missing inertia torque.
+for s in students:
+    for q in reports[s]["questions"]:
+        share = {"correct": 1, "sign": 0.5, "power_of_ten": 0.5, "no_inertia_torque": 0.25}.get(made[s, q["id"]], 0)
+        assert q["score"] == share * q["max"]
+# The student shown has a slip, and the feedback printed is their report.
+assert any(q["verdict"] == "slip" for q in reports[shown]["questions"])
+assert exercises.check(NAME, shown, handed_in[shown], secret=SECRET).splitlines()[0].endswith(
+    f"{reports[shown]['score']:g} / {top:g} points")
+# The CLI's grades agree with the Python API for every student.
+assert [g["student"] for g in grades] == students
+for g in grades:
+    r = reports[g["student"]]
+    assert float(g["score"]) == r["score"] and float(g["max"]) == r["max"]
+    for q in r["questions"]:
+        assert float(g[q["id"]]) == q["score"]
+        assert g[f"{q['id']} verdict"] == q["verdict"] + (f" ({q['slip']})" if q["slip"] else "")
+        assert g[f"{q['id']} feedback"] == q["feedback"]
+# The formats quoted in the text: s001's answers in each style, and every style was handed in.
+v001 = exercises.variant(NAME, "s001", secret=SECRET)
+assert [typed(ex.question("F23"), value_of(v001.solved, ex.question("F23")), k) for k in range(3)] == \
+    ["2643 N ∠ -126.57°", "(-1575, -2123) N", "2.643 kN at -126.6 deg"]
+assert [typed(ex.question("T12"), value_of(v001.solved, ex.question("T12")), k) for k in range(3)] == \
+    ["216.6 N·m CCW", "216.6 N*m", "0.2166 kN·m"]
+typed_text = " ".join(row[q] for row in rows for q in ids)
+assert all(form in typed_text for form in (" N ∠ ", ") N", " kN at ", " N·m CCW", " N*m", " kN·m"))
+assert {row[q] for row in rows for q in ids if made[row["student"], q] == "unreadable"} >= {"see my drawing", "?"}
+assert any("," in row[q] and "(" not in row[q] for row in rows for q in ids if made[row["student"], q] == "unreadable")
+# "wrong" is 5 to 15 % off (for the scalar and magnitude answers, read back from the text).
+for row in rows:
+    for q in ex.questions:
+        if made[row["student"], q.id] == "wrong" and q.part == "magnitude":
+            right = keys[row["student"]]["questions"][ids.index(q.id)]["answer"]["si"]
+            assert 0.04 < abs(float(row[q.id].split()[0]) * (1e3 if "kN" in row[q.id] else 1) / right - 1) < 0.16
+
+# %% [markdown]
+# ### 5. Partial credit, revealing answers, and the secret
+
+# %%
+assert exercises.SLIPS["sign"] == exercises.SLIPS["power_of_ten"] == 0.5
+assert exercises.SLIPS["no_inertia_torque"] == 0.25
+assert strict.reveal and not ex.reveal and strict.id == ex.id
+assert strict.partial == {**exercises.SLIPS, "sign": 0.25, "power_of_ten": 0.75, "no_inertia_torque": 0}
+for s in students:
+    assert exercises.make(strict, s, secret=SECRET) == sheets[s]   # the same data
+    for q_default, q_strict in zip(reports[s]["questions"], strict_reports[s]["questions"]):
+        assert (q_default["verdict"], q_default["slip"]) == (q_strict["verdict"], q_strict["slip"])
+        assert "expected" not in q_default and "expected" in q_strict
+        share = {"correct": 1, "sign": 0.25, "power_of_ten": 0.75}.get(made[s, q_strict["id"]], 0)
+        assert q_strict["score"] == share * q_strict["max"]
+assert np.mean(strict_scores) < np.mean(scores)
+assert [q["expected"] for q in strict_reports[shown]["questions"]] == \
+       [q["answer"]["text"] for q in keys[shown]["questions"]]
+assert all("expected" in q for q in exercises.grade(NAME, shown, handed_in[shown], SECRET, reveal=True)["questions"])
+# GRAPHKIN_SECRET: the CLI without --secret uses it; the Python functions don't read it.
+env_key = subprocess.run([sys.executable, "-m", "graphkin.cli", "exercise", "key", NAME, "--student", "s001",
+                          "--json"], env=course_env, capture_output=True, text=True, encoding="utf-8", check=True)
+assert json.loads(env_key.stdout) == keys["s001"]
+before = os.environ.get("GRAPHKIN_SECRET")
+os.environ["GRAPHKIN_SECRET"] = SECRET
+try:
+    assert exercises.key(NAME, "s001") != keys["s001"]   # the Python default is no secret, whatever the environment
+finally:
+    if before is None:
+        del os.environ["GRAPHKIN_SECRET"]
+    else:
+        os.environ["GRAPHKIN_SECRET"] = before
+assert secret == (before or "")
+
+# %% [markdown]
+# ### 6. What next
+
+# %%
+draft = folder / "my_exercise.toml"
+draft.write_text(MY_EXERCISE, encoding="utf-8")
+assert exercises.load(str(draft)).questions[1].tolerance == 0.02
+draft.write_text(MY_EXERCISE.replace('tolerance = "2 %"', 'tolerance = "3 %"'), encoding="utf-8")
+assert exercises.load(str(draft)).questions[1].tolerance == 0.02            # the copy read first
+assert exercises.load_exercise(draft).questions[1].tolerance == 0.03        # the file as it is now
+assert exercises.load_exercise(draft).id == "my_exercise"
