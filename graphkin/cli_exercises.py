@@ -16,6 +16,7 @@ from __future__ import annotations
 import csv
 import io
 import json
+import math
 import os
 import sys
 from pathlib import Path
@@ -236,6 +237,9 @@ def format_sheet(sheet: dict) -> str:
     lines += ["", "Questions"]
     for q in sheet["questions"]:
         tol = f"{100 * q['tolerance']:g} %"
+        if q["form"] == "direction":
+            # An angle's slack is the direction error of a vector off by the tolerance; a peak's place, the grid's.
+            tol = "the step of the sweep" if q["part"] == "at" else f"{math.degrees(math.atan(q['tolerance'])):.2g}°"
         unit = q["unit"].replace("*", "·").replace("^2", "²") or "no unit"
         lines.append(f"  {q['id']}: {q['ask']}   [{unit}, within {tol}, {q['points']:g} point"
                      f"{'s' if q['points'] != 1 else ''}]")

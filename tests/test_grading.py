@@ -108,9 +108,13 @@ def slipped(name, student, qid, slip, *, drawn=True):
 
         alt = v.altered(slip)
         val = value_of(alt, q)
+        # Where the slipped value also reads as another slip (e.g. exactly 1000 times the answer), the grader
+        # names the first in its order; such coincidences are not this slip's test.
+        ambiguous = e.close(val) or (e.form == "scalar" and any(e.close(val / 10.0**k) for k in (3, -3, 6, -6))) \
+            or (e.form == "scalar" and e.close(-val))
         if drawn:
-            assume(not e.close(val))
-        assert not e.close(val)
+            assume(not ambiguous)
+        assert not ambiguous
     text = formats(type(e)(**{**e.__dict__, "value": val}))[0]
     return v, q, grade_question(v, q, text)
 

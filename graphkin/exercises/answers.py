@@ -44,8 +44,9 @@ Rules:
 * **Sense words.** ``CCW``, ``counterclockwise``, ``counter-clockwise``,
   ``anticlockwise``, ``anti-clockwise`` (sense +1) and ``CW``, ``clockwise``
   (sense -1), in any case, optionally in brackets, may end a scalar answer.
-  ``CW`` multiplies the number by -1, whatever its sign: ``"-108.9 N·m CW"``
-  is +108.9 N·m (the negative of a clockwise moment). A sense word after a
+  ``CW`` makes the number negative: ``"108.9 N·m CW"`` is −108.9 N·m. A
+  negative number with a sense word (``"-108.9 N·m CW"``) is refused: it
+  could mean either sense. A sense word after a
   vector is refused.
 * **Units.** A unit of the question's dimension is converted to SI. A unit
   of another dimension is *not* an error: the reading has ``value`` (or
@@ -528,6 +529,10 @@ def _read_scalar(body: str, sense: int | None, ctx: _Context) -> Reading:
     what = ctx.scalar_advice()
     x, text, u = _quantity(body, ctx, what)
     if sense is not None:
+        if x < 0:
+            # "−108.9 N·m CW" could mean CW or its negative, CCW: refused rather than guessed.
+            example = ctx.example(unit=f"{ctx.q.unit} CW".strip())
+            raise ctx.fail(f"give a signed number or the size with CW/CCW, not both, such as {example}")
         x = sense * x
     return Reading(
         text=ctx.raw,
