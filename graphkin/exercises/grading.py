@@ -236,6 +236,8 @@ def grade_question(variant, q, answer, *, reveal: bool = False) -> dict:
     if exp.form in ("scalar", "magnitude") and exp.value:
         off = f" (yours is {100 * (a - exp.value) / abs(exp.value):+.1f} % off)".replace("-", "−")
     tol = f"{100 * q.tolerance:g} %" if exp.form != "direction" else f"{math.degrees(exp.slack):.2g}°"
+    if exp.form == "point":
+        tol = f"{1000 * exp.slack:.3g} mm ({tol} of the mechanism's size)"
     msg = MESSAGES["wrong" if exp.hint else "wrong_nohint"].format(tolerance=tol, off=off, hint=exp.hint.rstrip("."))
     return _verdict(exp, "wrong", None, 0.0, msg, text, reveal)
 
