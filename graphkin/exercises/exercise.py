@@ -8,7 +8,6 @@ be solved fails when it is loaded, not when the first student asks.
 
 from __future__ import annotations
 
-import difflib
 import hashlib
 import re
 import tomllib
@@ -18,6 +17,7 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import GraphkinError, ProblemFileError
+from ..problem import _Reader as ProblemReader
 
 _TOP = {"title", "source", "problem", "intro", "route", "vary", "questions", "partial", "positions", "flywheel",
         "reveal", "max_force_ratio", "max_speed_ratio", "draw"}
@@ -213,24 +213,12 @@ class Exercise:
         return make_variant(self, student, secret)
 
 
-class _Reader:
-    def __init__(self, file: str):
-        self.file = file
+class _Reader(ProblemReader):
+    """The problem files' reader (file name in every message, unknown fields with a hint), with the
+    two kinds of entry exercise files add."""
 
-    def fail(self, field: str, message: str) -> ProblemFileError:
-        return ProblemFileError(self.file, field, message)
-
-    def table(self, value, where, allowed) -> dict:
-        if not isinstance(value, dict):
-            raise self.fail(where, f"must be a table, got {type(value).__name__}")
-        for key in value:
-            if key not in allowed:
-                close = difflib.get_close_matches(key, sorted(allowed), n=1)
-                hint = f" (did you mean {close[0]!r}?)" if close else f" (allowed: {', '.join(sorted(allowed))})"
-                raise self.fail(f"{where}.{key}" if where else key, f"unknown field{hint}")
-        return value
-
-    def text(self, t: dict, key: str, where: str, default: str | None = None) -> str:
+    def string(self, t: dict, key: str, where: str, default: str | None = None) -> str:
+        """A non-empty string entry ``t[key]`` (``default`` when absent, or an error if there is none)."""
         if key not in t:
             if default is None:
                 raise self.fail(f"{where}.{key}" if where else key, "is missing")
@@ -241,6 +229,7 @@ class _Reader:
         return value.strip()
 
     def number(self, t: dict, key: str, where: str, default, *, low: float = 0.0, percent: bool = False):
+        """A number entry ≥ ``low`` (``"1 %"`` allowed with ``percent``), or ``default`` when absent."""
         if key not in t:
             return default
         value = t[key]
@@ -268,7 +257,7 @@ def _grid(rd: _Reader, t: dict, where: str) -> tuple[str, ...]:
         return tuple(str(v) for v in values)
     parts = {}
     for key in ("from", "to", "step"):
-        raw = rd.text(t, key, where)
+        raw = rd.string(t, key, where)
         m = _NUMBER_UNIT.match(raw)
         if m is None:
             raise rd.fail(f"{where}.{key}", f'could not read "{raw}": write a number and a unit, e.g. "10 deg"')
@@ -317,10 +306,10 @@ def _kind_of(find: str, base_names: set[str], driver: str) -> tuple[str, int | N
 
 def _question(rd: _Reader, t: dict, where: str, names: set[str], driver: str, route: str, moving) -> Question:
     rd.table(t, where, _QUESTION)
-    qid = rd.text(t, "id", where)
+    qid = rd.string(t, "id", where)
     if not re.fullmatch(r"[A-Za-z_][\w.]*", qid):
         raise rd.fail(f"{where}.id", f"must be a name of letters, digits, _ and . (it keys the answers), got {qid!r}")
-    find = rd.text(t, "find", where)
+    find = rd.string(t, "find", where)
     try:
         kind, link = _kind_of(find, names, driver)
     except KeyError:
@@ -330,10 +319,10 @@ def _question(rd: _Reader, t: dict, where: str, names: set[str], driver: str, ro
     if link is not None and link not in moving:
         raise rd.fail(f"{where}.find", f"{find!r}: link {link} is not a moving link (moving: {', '.join(map(str, moving))})")
     parts = _PARTS[kind]
-    part = rd.text(t, "part", where, parts[0])
+    part = rd.string(t, "part", where, parts[0])
     if part not in parts:
         raise rd.fail(f"{where}.part", f"must be one of {', '.join(parts)} for {find}, got {part!r}")
-    q_route = rd.text(t, "route", where, route)
+    q_route = rd.string(t, "route", where, route)
     if q_route not in ("analytical", "graphical"):
         raise rd.fail(f"{where}.route", f"must be 'analytical' or 'graphical', got {q_route!r}")
     if part in ("direction", "at"):
@@ -342,7 +331,7 @@ def _question(rd: _Reader, t: dict, where: str, names: set[str], driver: str, ro
         unit = "mm"
     else:
         unit = _DEFAULT_UNIT[kind]
-    unit = rd.text(t, "unit", where, unit) if "unit" in t else unit
+    unit = rd.string(t, "unit", where, unit) if "unit" in t else unit
     tolerance = rd.number(t, "tolerance", where, 0.03 if q_route == "graphical" else 0.01, percent=True)
     if not 0 < tolerance < 1:
         raise rd.fail(f"{where}.tolerance", f"must lie between 0 and 100 %, got {t['tolerance']!r}")
@@ -352,7 +341,7 @@ def _question(rd: _Reader, t: dict, where: str, names: set[str], driver: str, ro
     if "floor" in t:
         from ..units import to_si
 
-        floor = to_si(t["floor"], _dimension(kind, part), field=f"{where}.floor", file=rd.file)
+        floor = to_si(t["floor"], dimension_of(kind, part), field=f"{where}.floor", file=rd.file)
         if floor < 0:
             raise rd.fail(f"{where}.floor", f"must not be negative, got {t['floor']!r}")
     from ..units import to_si
@@ -360,15 +349,15 @@ def _question(rd: _Reader, t: dict, where: str, names: set[str], driver: str, ro
     if unit:
         # The unit must suit the question: "mm" for a force is a slip in the file, not the student's.
         try:
-            to_si(f"1 {unit}", _dimension(kind, part), field=f"{where}.unit", file=rd.file)
+            to_si(f"1 {unit}", dimension_of(kind, part), field=f"{where}.unit", file=rd.file)
         except ProblemFileError as exc:
             raise rd.fail(f"{where}.unit", exc.message) from None
     points = rd.number(t, "points", where, 1.0)
-    ask = rd.text(t, "ask", where, f"{find} ({part})")
+    ask = rd.string(t, "ask", where, f"{find} ({part})")
     return Question(qid, ask, find, kind, link, part, unit, tolerance, floor, points, q_route)
 
 
-def _dimension(kind: str, part: str) -> str:
+def dimension_of(kind: str, part: str) -> str:
     """The dimension (a :data:`graphkin.units.DIMENSIONS` key, or ``"energy"``) of a question's answer."""
     if part in ("direction", "at"):
         return "angle"
@@ -384,8 +373,6 @@ def _dimension(kind: str, part: str) -> str:
         return "dimensionless"
     return "torque"
 
-
-dimension_of = _dimension
 
 
 def load_exercise(source: str | Path, *, name: str | None = None) -> Exercise:
@@ -417,7 +404,7 @@ def parse_exercise(text: str, *, file: str = "<exercise>", id: str = "exercise",
     except tomllib.TOMLDecodeError as exc:
         raise rd.fail("", f"is not valid TOML ({exc})") from None
     rd.table(data, "", _TOP)
-    problem = rd.text(data, "problem", "")
+    problem = rd.string(data, "problem", "")
     if problem in catalog.names():
         base_path = catalog.path(problem)
     else:
@@ -443,7 +430,7 @@ def parse_exercise(text: str, *, file: str = "<exercise>", id: str = "exercise",
             parse_force_name(mech, name)
             names.add(name)
     driver = mech.driver.symbol
-    route = rd.text(data, "route", "", "analytical")
+    route = rd.string(data, "route", "", "analytical")
     if route not in ("analytical", "graphical"):
         raise rd.fail("route", f"must be 'analytical' or 'graphical', got {route!r}")
     vary_table = rd.table(data.get("vary", {}), "vary", set(data.get("vary", {})))
@@ -455,9 +442,9 @@ def parse_exercise(text: str, *, file: str = "<exercise>", id: str = "exercise",
         if isinstance(raw, list) and raw and all(isinstance(f, str) and f.strip() for f in raw):
             field = tuple(f.strip() for f in raw)
         else:
-            field = (rd.text(t, "field", where),)
+            field = (rd.string(t, "field", where),)
         values = _grid(rd, t, where)
-        vary.append(Vary(symbol, field, values, rd.text(t, "label", where, "") if "label" in t else ""))
+        vary.append(Vary(symbol, field, values, rd.string(t, "label", where, "") if "label" in t else ""))
     questions_raw = data.get("questions")
     if not isinstance(questions_raw, list) or not questions_raw:
         raise rd.fail("questions", "must be a non-empty list of [[questions]] tables")
@@ -501,7 +488,7 @@ def parse_exercise(text: str, *, file: str = "<exercise>", id: str = "exercise",
     draw = data.get("draw", route == "graphical")
     if not isinstance(draw, bool):
         raise rd.fail("draw", f"must be true or false, got {draw!r}")
-    return Exercise(id, rd.text(data, "title", ""), rd.text(data, "source", "", ""), rd.text(data, "intro", "", ""),
+    return Exercise(id, rd.string(data, "title", ""), rd.string(data, "source", "", ""), rd.string(data, "intro", "", ""),
                     problem, base, tuple(vary), questions, partial, positions, Cs, reveal,
                     rd.number(data, "max_force_ratio", "", 20.0, low=1.0),
                     rd.number(data, "max_speed_ratio", "", 5.0, low=1.0), draw, file,

@@ -19,8 +19,8 @@ import math
 from collections.abc import Mapping
 
 from .answers import Reading, Unreadable, read_answer
-from .exercise import dimension_of
-from .quantities import Expected, _unit_text, expected, format_value, value_of
+from .exercise import CYCLE_KINDS, dimension_of
+from .quantities import Expected, _distance, _unit_text, unit_factor, value_of
 
 #: Verdicts a question can get.
 VERDICTS = ("correct", "slip", "wrong", "unreadable", "missing")
@@ -154,7 +154,7 @@ def _slip(exp: Expected, a, variant) -> tuple[str, dict] | None:
     if form == "point" and exp.anchor is not None and exp.close(2 * exp.anchor - a):
         return "wrong_side", words
     for slip in ("rpm_as_rad_s", "no_inertia_torque", "no_inertia_force"):
-        if not _may(q, slip, variant):
+        if not _may(q, slip):
             continue
         solved = variant.altered(slip)
         if solved is None:
@@ -163,7 +163,7 @@ def _slip(exp: Expected, a, variant) -> tuple[str, dict] | None:
             other = value_of(solved, q)
         except Exception:  # the altered problem may not solve (e.g. a dead point at the wrong speed)
             continue
-        if other is None or _same(exp, other):
+        if other is None or exp.close(other):  # the slip leaves this answer unchanged: it cannot be told apart
             continue
         if _distance_ok(exp, a, other):
             extra = {}
@@ -174,25 +174,18 @@ def _slip(exp: Expected, a, variant) -> tuple[str, dict] | None:
     return None
 
 
-def _may(q, slip: str, variant) -> bool:
+def _may(q, slip: str) -> bool:
     """Whether a re-solved slip can change this question's answer at all."""
     if slip == "rpm_as_rad_s":
         return True
     # Leaving out an inertia load makes the inertia questions themselves zero or undefined: a wrong answer
     # there is not that slip.
-    return q.kind not in ("inertia_force", "inertia_torque", "h", "flywheel_E", "flywheel_I", "jfi_peak", "peak_torque", "lowest_torque", "average_torque",
-                          "peak_force")
-
-
-def _same(exp: Expected, other) -> bool:
-    """Whether a slip leaves the answer unchanged (then it cannot be told from a right answer)."""
-    return exp.close(other)
+    # there is not that slip. Over the cycle they are not tried (a sweep per slip, for little diagnosis).
+    return q.kind not in ("inertia_force", "inertia_torque", "h") and q.kind not in CYCLE_KINDS
 
 
 def _distance_ok(exp: Expected, a, other) -> bool:
     """Whether ``a`` is the slipped value ``other``, to the question's tolerance of that value."""
-    from .quantities import _distance
-
     slack = exp.slack
     if exp.form not in ("direction", "point") and abs(exp.value) > 0:
         slack = max(slack, exp.question.tolerance * abs(other))
@@ -201,7 +194,7 @@ def _distance_ok(exp: Expected, a, other) -> bool:
 
 def grade_question(variant, q, answer, *, reveal: bool = False) -> dict:
     """Grade one answer; never raises on the answer, whatever it is."""
-    exp = variant.expected(q) if hasattr(variant, "expected") else expected(variant, q)
+    exp = variant.expected(q)
     if answer is None or (isinstance(answer, str) and not answer.strip()):
         return _verdict(exp, "missing", None, 0.0, MESSAGES["missing"].format(name=q.id), "", reveal)
     dim = dimension_of(q.kind, q.part)
@@ -248,8 +241,6 @@ def _shown(answer) -> str:
 
 
 def _factor(q) -> float:
-    from .quantities import unit_factor
-
     return unit_factor(q.unit, dimension_of(q.kind, q.part))
 
 
@@ -287,4 +278,4 @@ def grade_variant(variant, answers, *, reveal: bool | None = None) -> dict:
             "max": sum(q.points for q in ex.questions), "questions": results, "ignored": ignored}
 
 
-__all__ = ["MESSAGES", "VERDICTS", "grade_question", "grade_variant", "format_value"]
+__all__ = ["MESSAGES", "VERDICTS", "grade_question", "grade_variant"]

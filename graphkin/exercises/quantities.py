@@ -39,8 +39,6 @@ class Expected:
         As the book prints it, in the question's unit.
     hint : str
         Where the value comes from: the construction step or equations to revisit.
-    link : int or None
-        The link whose equilibrium gives the value (for hints).
     anchor : complex or None
         For an inertia resultant's point: the centre of mass G it is offset from.
     undefined : str or None
@@ -53,7 +51,6 @@ class Expected:
     slack: float
     text: str
     hint: str = ""
-    link: int | None = None
     anchor: complex | None = None
     undefined: str | None = None
 
@@ -97,10 +94,8 @@ def question_data(q: Question) -> dict:
 def _form(q: Question) -> str:
     if q.part in ("direction", "at"):
         return "direction"
-    if q.part in ("vector", "point") or q.kind == "concurrency":
-        return "point" if (q.part == "point" or q.kind == "concurrency") else "vector"
-    if q.part == "magnitude":
-        return "magnitude"
+    if q.part in ("vector", "point", "magnitude"):  # a concurrency point's only part is "point"
+        return q.part
     return "scalar"
 
 
@@ -236,35 +231,35 @@ def _step_hint(n: int, step) -> str:
     return f"step {n} of the construction: {step.caption}"
 
 
-def _hint(solved, q: Question) -> tuple[str, int | None]:
-    """The construction step (and link) a student should revisit for ``q``."""
+def _hint(solved, q: Question) -> str:
+    """The construction step or the equations a student should revisit for ``q``."""
     kind = q.kind
     if kind in ("peak_torque", "lowest_torque", "average_torque"):
-        return "the driving torque at every crank angle of the cycle (sweep), then its extremes and mean", None
+        return "the driving torque at every crank angle of the cycle (sweep), then its extremes and mean"
     if kind == "peak_force":
-        return "the magnitude of the joint force at every crank angle of the cycle", None
+        return "the magnitude of the joint force at every crank angle of the cycle"
     if kind in ("flywheel_E", "flywheel_I"):
         return ("the energy table (Norton §11.11): the areas of the pulses of T − T_avg, E the largest swing, "
-                "I_s = E / (C_s ω_avg²)"), None
+                "I_s = E / (C_s ω_avg²)")
     if kind == "jfi_peak":
-        return "the static joint forces (masses set to zero) divided by the external load (Norton §11.12)", None
+        return "the static joint forces (masses set to zero) divided by the external load (Norton §11.12)"
     c = solved.construction
     want = {"force": q.find, "driver_torque": q.find, "driver_force": q.find}.get(kind)
     for n, step in enumerate(c.steps, 1):
         if want and step.kind in ("driver",) and kind.startswith("driver"):
-            return _step_hint(n, step), step.link
+            return _step_hint(n, step)
         if want and (want in step.values or any(a.name == want and not a.known for a in step.polygon)):
-            return _step_hint(n, step), step.link
+            return _step_hint(n, step)
         if kind in ("inertia_force", "inertia_torque", "h") and step.kind == "resultant" and step.link == q.link:
-            return _step_hint(n, step), q.link
+            return _step_hint(n, step)
         if kind == "concurrency" and f"I{q.link}" in step.points:
-            return _step_hint(n, step), q.link
+            return _step_hint(n, step)
     if kind == "force":
         from ..solve.result import parse_force_name
 
         i, j = parse_force_name(solved.problem.mechanism, q.find)
-        return f"the equilibrium of link {j} (ΣF = 0, ΣM = 0: its rows of [A]{{x}} = {{b}})", j
-    return "", q.link
+        return f"the equilibrium of link {j} (ΣF = 0, ΣM = 0: its rows of [A]{{x}} = {{b}})"
+    return ""
 
 
 def undefined(solved, q: Question) -> str | None:
@@ -295,10 +290,10 @@ def expected(variant, q: Question) -> Expected:
         floor = q.floor if q.floor is not None else 1e-3 * _scale(solved, q)
         size = _span(solved.construction) if form == "point" else abs(value)
         slack = max(q.tolerance * size, floor)
-    hint, link = _hint(solved, q)
+    hint = _hint(solved, q)
     anchor = None
     if q.kind == "h" and q.part == "point":
         anchor = complex(*solved.result.kinematics.G(q.link)[0])
     torque = q.kind in ("driver_torque", "inertia_torque", "peak_torque", "lowest_torque", "average_torque")
     text = format_value(form, value, q.unit, dim, torque=torque and form == "scalar")
-    return Expected(q, form, value, slack, text, hint, link, anchor)
+    return Expected(q, form, value, slack, text, hint, anchor)

@@ -24,7 +24,7 @@ from functools import cached_property
 import numpy as np
 
 from ..errors import GraphkinError
-from .exercise import Exercise, Question, set_field
+from .exercise import CYCLE_KINDS, Exercise, Question, set_field
 
 MAX_ATTEMPTS = 64
 """Draws tried per student before the exercise is declared unusable."""
@@ -231,7 +231,7 @@ def _unusable(ex: Exercise, solved: Solved) -> str | None:
             return "the driving torque is constant, so there is no flywheel to size"
         if any(q.kind == "jfi_peak" for q in ex.questions) and not math.isfinite(solved.jfi.peak.value):
             return "the joint-force index is not defined (no external load)"
-    if all(q.kind in _CYCLE_ONLY for q in ex.questions):
+    if all(q.kind in CYCLE_KINDS for q in ex.questions):
         return None
     r = solved.result
     if not r.valid[0]:
@@ -253,7 +253,7 @@ def _unusable(ex: Exercise, solved: Solved) -> str | None:
     from .quantities import undefined
 
     for q in ex.questions:
-        if q.kind not in _CYCLE_ONLY:
+        if q.kind not in CYCLE_KINDS:
             why = undefined(solved, q)
             if why:
                 return why
@@ -289,9 +289,6 @@ def _speed_ratio(problem, span: float, kinematics) -> float:
             fastest = max(fastest, float(np.max(np.abs(kin.z_velocity(link, point)) / rate)))
     reference = span if mech.driver.kind == "crank" else 1.0
     return fastest / reference
-
-
-_CYCLE_ONLY = {"peak_torque", "lowest_torque", "average_torque", "peak_force", "flywheel_E", "flywheel_I", "jfi_peak"}
 
 
 CACHE_SIZE = 1024
