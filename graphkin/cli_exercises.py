@@ -30,7 +30,7 @@ MAX_ROSTER = 100_000
 
 def add_parser(sub) -> None:
     """Add ``exercise`` and its subcommands to the ``graphkin`` parser."""
-    e = sub.add_parser("exercise", help="exercises with per-student data: list, make, key, grade")
+    e = sub.add_parser("exercise", help="exercises with per-student data: list, make, key, grade, export")
     esub = e.add_subparsers(dest="action", required=True)
     esub.add_parser("list", help="list the catalog exercises")
     for action, text in (("make", "a student's data and questions (no answers)"),
@@ -53,6 +53,16 @@ def add_parser(sub) -> None:
                            help="JSON {question id: answer} for --student ('-' reads stdin), "
                                 "or a CSV with a 'student' column and one column per question")
             a.add_argument("--reveal", action="store_true", help="show the expected value of every question")
+    x = esub.add_parser("export", help="everything a grading platform needs: otter-grader, nbgrader, "
+                        "PrairieLearn or Gradescope")
+    x.add_argument("exercise", help="catalog name (see 'graphkin exercise list') or path to an exercise file")
+    x.add_argument("--to", required=True, metavar="PLATFORM",
+                   help="otter, nbgrader, prairielearn or gradescope")
+    x.add_argument("-o", "--output", required=True, metavar="DIR", help="the folder to write (made if missing)")
+    x.add_argument("--roster", metavar="CSV", help="a CSV with a 'student' column; the notebook platforms carry "
+                   "each student's data (never the answers), so the student notebook needs no secret")
+    x.add_argument("--secret", help="the course secret (default: $GRAPHKIN_SECRET); it goes only into the parts "
+                   "students never see")
 
 
 def run(args) -> int:
@@ -63,6 +73,8 @@ def run(args) -> int:
             ex = exercises.load(name)
             print(f"{name:<26}{ex.title}")
         return 0
+    if args.action == "export":
+        return _export(args)
     if args.output:
         check_destination(args.output)
     figure = getattr(args, "figure", None)
@@ -91,6 +103,23 @@ def run(args) -> int:
             _given_figure(v, figure)
         text = json.dumps(sheet, indent=2, ensure_ascii=False) if args.json else format_sheet(sheet)
     _emit(text, args.output)
+    return 0
+
+
+def _export(args) -> int:
+    from .exercises import platforms
+
+    platforms.platform(args.to)
+    secret = args.secret if args.secret is not None else os.environ.get("GRAPHKIN_SECRET", "")
+    if not secret:
+        print("graphkin: note: no course secret (--secret or GRAPHKIN_SECRET): students can compute their keys "
+              "themselves", file=sys.stderr)
+    students = _roster(args.roster) if args.roster else None
+    with _progress(len(students or ()), "export") as bar:
+        written = platforms.export(args.exercise, args.to, args.output, secret=secret, students=students,
+                                   progress=bar.update)
+    print(f"{len(written)} files written to {args.output}; next: see {Path(args.output) / 'README.md'}",
+          file=sys.stderr)
     return 0
 
 

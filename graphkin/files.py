@@ -14,6 +14,9 @@ from pathlib import Path
 
 from .errors import GraphkinError
 
+_UMASK = os.umask(0)
+os.umask(_UMASK)
+
 MAX_INPUT_BYTES = 10_000_000
 """Largest answers or roster file read (10 MB: a course of thousands is far below it)."""
 
@@ -33,6 +36,15 @@ def check_destination(path: str | Path, what: str = "output") -> Path:
 
 def write_text(path: str | Path, text: str, what: str = "output") -> Path:
     """Write ``text`` (UTF-8) to ``path`` atomically: a temporary file, then :func:`os.replace`."""
+    return write_bytes(path, text.encode("utf-8"), what)
+
+
+def write_bytes(path: str | Path, data: bytes, what: str = "output", *, executable: bool = False) -> Path:
+    """Write ``data`` to ``path`` atomically: a temporary file in the same folder, then :func:`os.replace`.
+
+    The file gets the permissions a plain ``open`` would give it (the
+    temporary file's are owner-only), plus execute bits for a script.
+    """
     p = check_destination(path, what)
     try:
         p.parent.mkdir(parents=True, exist_ok=True)
@@ -40,8 +52,9 @@ def write_text(path: str | Path, text: str, what: str = "output") -> Path:
     except OSError as exc:
         raise GraphkinError(f"{what} {p}: cannot be written ({exc.strerror})") from None
     try:
-        with os.fdopen(fd, "w", encoding="utf-8", newline="") as f:
-            f.write(text)
+        with os.fdopen(fd, "wb") as f:
+            f.write(data)
+        os.chmod(tmp, (0o777 if executable else 0o666) & ~_UMASK)
         os.replace(tmp, p)
     except BaseException as exc:
         try:

@@ -175,6 +175,10 @@ class Exercise:
     fingerprint : str
         SHA-256 of the id, the exercise file and the base problem file: two
         Exercise objects with the same fingerprint make the same variants.
+    text : str
+        The exercise file's text, as read (an export carries it).
+    base_text : str
+        The base problem file's text.
     """
 
     id: str
@@ -194,6 +198,8 @@ class Exercise:
     draw: bool
     file: str
     fingerprint: str = ""
+    text: str = ""
+    base_text: str = ""
 
     @property
     def cycle(self) -> bool:
@@ -492,7 +498,7 @@ def parse_exercise(text: str, *, file: str = "<exercise>", id: str = "exercise",
                     problem, base, tuple(vary), questions, partial, positions, Cs, reveal,
                     rd.number(data, "max_force_ratio", "", 20.0, low=1.0),
                     rd.number(data, "max_speed_ratio", "", 5.0, low=1.0), draw, file,
-                    hashlib.sha256("\x1f".join((id, text, base_text)).encode("utf-8")).hexdigest())
+                    hashlib.sha256("\x1f".join((id, text, base_text)).encode("utf-8")).hexdigest(), text, base_text)
 
 
 _TOKEN = re.compile(r"([A-Za-z_]\w*)|\[(\d+)\]")

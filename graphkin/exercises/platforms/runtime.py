@@ -1,0 +1,127 @@
+"""What the exported notebooks, tests and server code call on the platform.
+
+Kept small and stable: a platform's hidden test or ``server.py`` says
+``from graphkin.exercises.platforms import runtime`` and calls one of these
+with the exercise file that travelled with the export, the student's id and
+the course secret. Nothing here evaluates what a student typed: an answer is
+text (or a number) handed to the same reader ``graphkin exercise grade`` uses.
+"""
+
+from __future__ import annotations
+
+import json
+from functools import lru_cache
+from pathlib import Path
+
+from ...errors import GraphkinError
+
+
+@lru_cache(maxsize=16)
+def _load(path: str):
+    from .. import load_exercise
+
+    p = Path(path)
+    return load_exercise(p, name=p.stem)
+
+
+def exercise(path_or_exercise):
+    """The exercise of an export (read once per process), from its file or as given."""
+    from ..exercise import Exercise
+
+    if isinstance(path_or_exercise, Exercise):
+        return path_or_exercise
+    return _load(str(Path(path_or_exercise).resolve()))
+
+
+def variant(path_or_exercise, student: str, secret: str = ""):
+    """The student's variant (:class:`graphkin.exercises.Variant`)."""
+    from ..variant import make_variant
+
+    return make_variant(exercise(path_or_exercise), student, secret)
+
+
+def answer_value(value):
+    """What a notebook variable holds, as the grader reads it: text or a number; unanswered is ``None``.
+
+    ``...`` (the placeholder the notebook platforms leave in a student's
+    copy) and ``None`` are unanswered; anything else goes to the reader as
+    it is, which refuses what is not text or a number with a sentence.
+    """
+    return None if value is None or value is Ellipsis else value
+
+
+def sheet(path_or_exercise, student: str, sheets=None, secret: str = "") -> dict:
+    """The student's sheet: from the roster's sheets (a JSON file or dict) when given, else drawn from the id.
+
+    A student notebook passes the sheets that travelled with the export, so
+    it never needs the course secret; an id that is not on the roster is an
+    error that says so.
+    """
+    from ..variant import check_student
+
+    student = check_student(student)
+    if sheets is None:
+        return variant(path_or_exercise, student, secret).sheet()
+    if not isinstance(sheets, dict):
+        sheets = json.loads(Path(sheets).read_text(encoding="utf-8"))
+    if student not in sheets:
+        raise GraphkinError(f"student id {student!r} is not on this assignment's roster: check the id you typed "
+                            "(as your teacher gave it), or ask your teacher to add you")
+    return sheets[student]
+
+
+def sheet_text(path_or_exercise, student: str, sheets=None, secret: str = "") -> str:
+    """The student's sheet as text (data and questions), for a notebook cell to print."""
+    from ...cli_exercises import format_sheet
+
+    return format_sheet(sheet(path_or_exercise, student, sheets, secret))
+
+
+def grade(path_or_exercise, student: str, answers: dict, secret: str = "", *, reveal=None) -> dict:
+    """Grade a student's answers (question id → value): the report of ``graphkin exercise grade --json``."""
+    from ..grading import grade_variant
+
+    answers = {k: answer_value(v) for k, v in dict(answers).items()}
+    return grade_variant(variant(path_or_exercise, student, secret), answers, reveal=reveal)
+
+
+def grade_question(path_or_exercise, student: str, qid: str, answer, secret: str = "", *, reveal=None) -> dict:
+    """Grade one answer: ``{"id", "verdict", "slip", "score", "max", "feedback", "answer"[, "expected"]}``."""
+    from ..grading import grade_question as _grade_one
+
+    v = variant(path_or_exercise, student, secret)
+    q = v.exercise.question(qid)
+    reveal = v.exercise.reveal if reveal is None else bool(reveal)
+    return _grade_one(v, q, answer_value(answer), reveal=reveal)
+
+
+def feedback_line(result: dict) -> str:
+    """One question's result as the line a student reads: verdict, points and the feedback sentence."""
+    slip = f" ({result['slip'].replace('_', ' ')})" if result.get("slip") else ""
+    line = f"{result['id']}: {result['verdict']}{slip}, {result['score']:g} / {result['max']:g} — {result['feedback']}"
+    if "expected" in result and result["verdict"] != "correct":
+        line += f" (expected: {result['expected']})"
+    return line
+
+
+def identity_error(claimed, graded_as) -> str | None:
+    """Why a submission must not be graded under ``graded_as`` when it carries ``claimed``; None when they agree.
+
+    The notebook carries the student's id as a field the student fills in;
+    the platform knows whom it grades. A submission that carries another
+    student's id (a friend's variant, a friend's answers) scores nothing.
+    """
+    from ..variant import check_student
+
+    try:
+        claimed = check_student(claimed)
+    except GraphkinError:
+        return f"this submission carries no usable student id ({claimed!r}); it is graded as {graded_as!r}"
+    if claimed != check_student(graded_as):
+        return (f"this submission carries the student id {claimed!r} but was handed in by {graded_as!r}: "
+                "each student answers their own variant")
+    return None
+
+
+__all__ = ["answer_value", "exercise", "feedback_line", "grade", "grade_question", "identity_error", "sheet",
+           "sheet_text", "variant"]
