@@ -45,8 +45,25 @@ def _parser() -> argparse.ArgumentParser:
 def _positions(problem, text: str):
     from .units import to_si
 
-    dim = "angle" if problem.mechanism.driver.kind == "crank" else "length"
-    return np.array([to_si(part.strip(), dim, field="--at", file="command line") for part in text.split(",")])
+    crank = problem.mechanism.driver.kind == "crank"
+    dim = "angle" if crank else "length"
+    parts = text.split(",")
+    if not text.strip() or any(not part.strip() for part in parts):
+        raise GraphkinError(f"--at {text!r}: give one or more positions with units, separated by commas, e.g. "
+                            + ("'124 deg,140 deg'" if crank else "'200 mm,250 mm'"))
+    return np.array([to_si(part.strip(), dim, field="--at", file="command line") for part in parts])
+
+
+def _check_outputs(figure=None, steps=None) -> None:
+    """Refuse a figure or step folder that cannot be written, before any work is done."""
+    from .files import check_destination, check_folder
+
+    if figure:
+        if Path(figure).suffix.lower() not in (".png", ".svg", ".pdf"):
+            raise GraphkinError(f"--figure {figure}: the file must end in .png, .svg or .pdf")
+        check_destination(figure, "--figure")
+    if steps:
+        check_folder(steps, "--steps")
 
 
 def _list() -> int:
@@ -62,8 +79,9 @@ def _list() -> int:
 def _solve(args) -> int:
     from . import catalog, report
 
+    _check_outputs(args.figure, args.steps)
     problem = catalog.load(args.problem)
-    result = problem.solve(_positions(problem, args.at) if args.at else None)
+    result = problem.solve(_positions(problem, args.at) if args.at is not None else None)
     graphical = report.constructions(result)
     if args.json:
         print(json.dumps(report.solution(problem, result, graphical), indent=2, ensure_ascii=False))
@@ -95,8 +113,6 @@ def _figures(problem, result, graphical, figure, steps, say):
 
     from . import draw
 
-    if figure and Path(figure).suffix.lower() not in (".png", ".svg", ".pdf"):
-        raise GraphkinError(f"--figure {figure}: the file must end in .png, .svg or .pdf")
     many = result.n > 1
     drawn = [(i, c) for i, c in enumerate(graphical) if c is not None and c.valid]
     for i, c in tqdm(drawn, desc="graphkin: drawing", unit="position", delay=PROGRESS_DELAY, file=sys.stderr,
@@ -120,9 +136,12 @@ def _cycle(args) -> int:
     from . import catalog
     from .analysis import sweep
 
+    from .analysis.flywheel import check_Cs
+
+    _check_outputs(args.figure)
+    if args.cs is not None:
+        check_Cs(args.cs, "--cs")
     problem = catalog.load(args.problem)
-    if args.figure and Path(args.figure).suffix.lower() not in (".png", ".svg", ".pdf"):
-        raise GraphkinError(f"--figure {args.figure}: the file must end in .png, .svg or .pdf")
     with _Progress(f"sweeping {problem.name}"):
         cycle = sweep(problem, args.n)
         if args.cs is not None and not cycle.closed:
@@ -362,6 +381,12 @@ class _Progress:
     def _run(self):
         if self._done.wait(self.delay):
             return
+        try:
+            # A log file gets no "\r" updates four times a second: the bar is for a person at a terminal.
+            if not self.stream.isatty():
+                return
+        except (AttributeError, ValueError):
+            return
         while not self._done.is_set():
             self._write(f"\rgraphkin: {self.label}… {self._time() - self._start:.1f} s")
             self._done.wait(self.every)
@@ -399,6 +424,15 @@ def main(argv=None) -> int:
     except BrokenPipeError:  # output piped into `head`: not an error of ours
         sys.stderr.close()
         return 0
+    except KeyboardInterrupt:
+        # Every file is written to a temporary file and moved into place, so Ctrl-C leaves none half-written.
+        print("graphkin: interrupted", file=sys.stderr)
+        return 130
+    except OSError as exc:
+        # A write that passed the checks made before the work (a full disk, a folder removed meanwhile).
+        where = f"{exc.filename}: " if exc.filename else ""
+        print(f"graphkin: error: {where}{exc.strerror or exc}", file=sys.stderr)
+        return 2
 
 
 if __name__ == "__main__":  # pragma: no cover

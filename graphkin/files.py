@@ -26,11 +26,27 @@ def check_destination(path: str | Path, what: str = "output") -> Path:
     p = Path(path)
     if p.is_dir():
         raise GraphkinError(f"{what} {p}: is a folder, not a file")
-    parent = p.parent if str(p.parent) else Path(".")
-    if parent.exists() and not parent.is_dir():
-        raise GraphkinError(f"{what} {p}: {parent} is a file, not a folder")
-    if parent.exists() and not os.access(parent, os.W_OK):
-        raise GraphkinError(f"{what} {p}: the folder {parent} cannot be written")
+    check_folder(p.parent if str(p.parent) else Path("."), what, shown=p)
+    return p
+
+
+def check_folder(path: str | Path, what: str = "output", *, shown=None) -> Path:
+    """The folder, if files can be written in it (made if missing); a clear error naming it if not.
+
+    Walks up to the first folder that exists: a file on the way (``out.txt/x.png``)
+    or a folder that cannot be written is refused before any work is done.
+    """
+    p = Path(path)
+    shown = shown or p
+    q = p
+    while not q.exists():
+        if q.parent == q:
+            break
+        q = q.parent
+    if q.exists() and not q.is_dir():
+        raise GraphkinError(f"{what} {shown}: {q} is a file, not a folder")
+    if q.exists() and not os.access(q, os.W_OK | os.X_OK):
+        raise GraphkinError(f"{what} {shown}: the folder {q} cannot be written")
     return p
 
 
@@ -67,23 +83,45 @@ def write_bytes(path: str | Path, data: bytes, what: str = "output", *, executab
     return p
 
 
-def read_text(path: str | Path, what: str) -> str:
-    """A UTF-8 text file (a byte-order mark is fine), at most :data:`MAX_INPUT_BYTES`; ``-`` reads stdin."""
+def read_text(path: str | Path, what: str, *, shown: str | None = None) -> str:
+    """A UTF-8 text file (a byte-order mark is fine), at most :data:`MAX_INPUT_BYTES`; ``-`` reads stdin.
+
+    Parameters
+    ----------
+    path : str or Path
+    what : str
+        What the file is ("problem", "roster"), to start the message of an error.
+    shown : str, optional
+        The name to show in messages (default: the path).
+
+    Raises
+    ------
+    GraphkinError
+        One sentence naming the file and what is wrong: cannot be read, too
+        large, UTF-16, binary, or not UTF-8 (with the byte and a hint).
+    """
     import sys
 
+    name = shown or ("standard input" if str(path) == "-" else str(path))
     try:
         if str(path) == "-":
             data = sys.stdin.buffer.read(MAX_INPUT_BYTES + 1)
-            name = "standard input"
         else:
             with open(path, "rb") as f:
                 data = f.read(MAX_INPUT_BYTES + 1)
-            name = str(path)
     except OSError as exc:
-        raise GraphkinError(f"{what} {path}: cannot be read ({exc.strerror})") from None
+        raise GraphkinError(f"{what} {name}: cannot be read ({exc.strerror})") from None
     if len(data) > MAX_INPUT_BYTES:
-        raise GraphkinError(f"{what} {name}: larger than {MAX_INPUT_BYTES // 1_000_000} MB")
+        raise GraphkinError(f"{what} {name}: larger than {MAX_INPUT_BYTES // 1_000_000} MB; is it the right file?")
+    if data[:2] in (b"\xff\xfe", b"\xfe\xff"):
+        raise GraphkinError(f"{what} {name}: is UTF-16 text; save it as UTF-8")
+    if b"\x00" in data:
+        raise GraphkinError(f"{what} {name}: is not a text file (it holds NUL bytes)")
     try:
         return data.decode("utf-8-sig")
     except UnicodeDecodeError as exc:
-        raise GraphkinError(f"{what} {name}: is not UTF-8 text (byte {exc.start}); save it as UTF-8") from None
+        # Editors on some systems still save Latin-1 or Windows-1252: say which character it would be there.
+        line = data[:exc.start].count(b"\n") + 1
+        guess = data[exc.start:exc.start + 1].decode("cp1252", errors="replace")
+        raise GraphkinError(f"{what} {name}: is not UTF-8 text (line {line}, byte 0x{data[exc.start]:02x}, "
+                            f"{guess!r} in Latin-1); save it as UTF-8") from None

@@ -218,13 +218,11 @@ def load_problem(source: str | Path, *, name: str | None = None) -> Problem:
     ProblemFileError
         With the file, the field and what is wrong.
     """
+    from .files import read_text
+
     path = Path(source)
     file = name or str(path)
-    try:
-        text = path.read_text(encoding="utf-8")
-    except OSError as exc:
-        raise ProblemFileError(file, "", f"cannot be read ({exc.strerror})") from None
-    return parse_problem(text, file=file)
+    return parse_problem(read_text(path, "problem", shown=file), file=file)
 
 
 def parse_problem(text: str, *, file: str = "<problem>") -> Problem:

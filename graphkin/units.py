@@ -155,8 +155,9 @@ _GLUED_TORQUE_RE = re.compile(r"^(?P<prefix>da|[kMmcd])?N(?P<length>m|mm|cm)$")
 # A power of a power (m^2^3, 9**9**9): refused, it can take forever to evaluate.
 _POWER_CHAIN_RE = re.compile(r"(?:\^|\*\*)[^*/^]*(?:\^|\*\*)")
 _MAX_UNIT_CHARS = 60
-# Cap on the length of a range table, to catch a mistyped step.
-_MAX_RANGE_POINTS = 1_000_000
+# Cap on the length of a range table, to catch a mistyped step; also the most positions a sweep solves at once.
+MAX_POSITIONS = 1_000_000
+_MAX_RANGE_POINTS = MAX_POSITIONS
 # Relative tolerance for "stop lands on the grid" and "stop is a full turn".
 _GRID_RTOL = 1e-9
 # Strings already converted, (text, dimension) -> SI value: exercise variants

@@ -96,7 +96,9 @@ def test_figure_is_written(capsys, tmp_path):
     (["double_slider", "--n", "36"], "the driver is a slider"),
     (["double_slider", "--cs", "0.05"], "the driver is a slider"),
     (["strip_cutter", "--n", "1"], "n must be a whole number"),
-    (["strip_cutter", "--cs", "-1"], "Cs must be > 0"),
+    (["strip_cutter", "--cs", "-1"], "--cs must be > 0"),
+    (["strip_cutter", "--cs", "5"], "--cs 5: the coefficient of speed fluctuation must be below 2"),
+    (["strip_cutter", "--n", "1000000000"], "from 2 to 1,000,000"),
     (["strip_cutter", "--figure", "cycle.gif"], ".png, .svg or .pdf"),
     (["no_such_problem"], "neither a catalog problem"),
 ])
@@ -106,17 +108,32 @@ def test_bad_input_is_one_line_and_exit_2(capsys, argv, message):
     assert err.count("\n") == 1 and err.startswith("graphkin: error: ") and message in err
 
 
+class _Terminal(io.StringIO):
+    def isatty(self):
+        return True
+
+
 def test_progress_line_only_after_the_delay():
-    quick = io.StringIO()
+    quick = _Terminal()
     with _Progress("quick", stream=quick):
         pass
     assert quick.getvalue() == ""
-    slow = io.StringIO()
+    slow = _Terminal()
     with _Progress("slow", delay=0.0, every=0.01, stream=slow) as p:
         import time
 
         time.sleep(0.05)
     assert p.shown and slow.getvalue().startswith("\rgraphkin: slow…") and slow.getvalue().endswith(" s\n")
+
+
+def test_no_progress_line_in_a_log_file():
+    """Issue 12: a log (stderr not a terminal) gets no "\r" updates, however long the work."""
+    log = io.StringIO()
+    with _Progress("slow", delay=0.0, every=0.01, stream=log) as p:
+        import time
+
+        time.sleep(0.05)
+    assert not p.shown and log.getvalue() == ""
 
 
 def test_a_batch_of_figures_shows_a_progress_bar_on_a_terminal(monkeypatch, tmp_path):

@@ -101,7 +101,9 @@ def test_roster_make_key_grade(capsys, tmp_path):
     (None, ["exercise", "make", "single_link", "--student", ""], "student id"),
     ("a.json:{not json", ["exercise", "grade", "single_link", "--student", "s", "--answers", "A"], "not valid JSON"),
     ("a.json:[1, 2]", ["exercise", "grade", "single_link", "--student", "s", "--answers", "A"], "JSON object"),
-    ("a.json:\xff\xfe", ["exercise", "grade", "single_link", "--student", "s", "--answers", "A"], "not UTF-8"),
+    ("a.json:\xff\xfe", ["exercise", "grade", "single_link", "--student", "s", "--answers", "A"], "is UTF-16 text"),
+    ("a.json:{\"T12\": \"1 N\xb7m\"}", ["exercise", "grade", "single_link", "--student", "s", "--answers", "A"],
+     "not UTF-8 text (line 1, byte 0xb7"),
     (None, ["exercise", "grade", "single_link", "--student", "s", "--answers", "missing.json"], "cannot be read"),
     ("r.csv:name\nx", ["exercise", "key", "single_link", "--roster", "A"], "'student' column"),
     ("r.csv:student\n\n,", ["exercise", "key", "single_link", "--roster", "A"], "student id is empty"),
@@ -114,7 +116,7 @@ def test_bad_input_is_one_line_and_exit_2(capsys, tmp_path, setup, args, expecte
     if setup:
         name, text = setup.split(":", 1)
         target = tmp_path / name
-        target.write_bytes(text.encode("latin-1") if "\xff" in text else text.encode("utf-8"))
+        target.write_bytes(text.encode("latin-1") if ("\xff" in text or "\xb7" in text) else text.encode("utf-8"))
     (tmp_path / "DIR").mkdir()
     (tmp_path / "FILE").write_text("x")
     args = [str(target) if a == "A" else str(tmp_path / a) if a in ("DIR", "FILE/x.txt", "missing.json") else a

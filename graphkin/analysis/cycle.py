@@ -51,8 +51,11 @@ def positions(problem: "Problem", n: int | None = None) -> np.ndarray | None:
             f"{problem.name}: the driver is a slider, so there is no turn to divide into n positions;"
             " sweep it at the problem's own positions (n=None)"
         )
-    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 2:
-        raise GraphkinError(f"n must be a whole number of positions ≥ 2, got {n!r}")
+    from ..units import MAX_POSITIONS
+
+    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or not 2 <= n <= MAX_POSITIONS:
+        raise GraphkinError(f"n must be a whole number of positions from 2 to {MAX_POSITIONS:,} (the limit of a "
+                            f"problem file's ranges: 1° steps need 360, 0.01° steps 36,000), got {n!r}")
     return np.linspace(0.0, TURN, int(n), endpoint=False)
 
 

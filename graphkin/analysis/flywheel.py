@@ -102,6 +102,16 @@ class Rim:
     I: float
 
 
+def check_Cs(Cs, what: str = "Cs") -> float:
+    """The coefficient of speed fluctuation as a float, if 0 < C_s < 2; a clear error naming ``what`` if not."""
+    Cs = _positive(Cs, what)
+    if Cs >= 2:
+        # ω_min = ω_avg (1 − Cs/2): at Cs = 2 the crank would stop once a turn.
+        raise GraphkinError(f"{what} {Cs:g}: the coefficient of speed fluctuation must be below 2, where the slowest "
+                            "speed ω_avg (1 − Cs/2) reaches zero (machines use 0.002 to 0.2)")
+    return Cs
+
+
 def _positive(value, what) -> float:
     try:
         x = float(value)
@@ -157,7 +167,7 @@ def size_flywheel(theta, T, *, omega_avg: float, Cs: float) -> "Flywheel":
     if gap is None or not np.all(np.diff(theta) > 0):
         raise GraphkinError("theta must increase through one full turn of the crank (e.g. 0°, 2°, …, 358° in radians)")
     omega_avg = _positive(omega_avg, "omega_avg")
-    Cs = _positive(Cs, "Cs")
+    Cs = check_Cs(Cs)
 
     h = steps(theta, gap)
     T_next = np.roll(T, -1)

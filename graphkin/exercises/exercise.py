@@ -389,14 +389,11 @@ def load_exercise(source: str | Path, *, name: str | None = None) -> Exercise:
     ProblemFileError
         Naming the file and the field at fault.
     """
+    from ..files import read_text
+
     path = Path(source)
     file = name or str(path)
-    try:
-        text = path.read_text(encoding="utf-8")
-    except OSError as exc:
-        raise ProblemFileError(file, "", f"cannot be read ({exc.strerror})") from None
-    except UnicodeDecodeError:
-        raise ProblemFileError(file, "", "is not UTF-8 text") from None
+    text = read_text(path, "exercise", shown=file)
     return parse_exercise(text, file=file, id=name or path.stem, folder=path.parent)
 
 
@@ -417,10 +414,12 @@ def parse_exercise(text: str, *, file: str = "<exercise>", id: str = "exercise",
         base_path = (folder or Path(".")) / problem
         if not base_path.is_file():
             raise rd.fail("problem", f"{problem!r} is neither a catalog problem ({', '.join(catalog.names())}) nor a file")
+    from ..files import read_text
+
+    base_text = read_text(base_path, "problem", shown=str(base_path))
     try:
-        base_text = base_path.read_text(encoding="utf-8")
         base = tomllib.loads(base_text)
-    except (OSError, UnicodeDecodeError, tomllib.TOMLDecodeError) as exc:
+    except tomllib.TOMLDecodeError as exc:
         raise rd.fail("problem", f"{problem!r} cannot be read ({exc})") from None
     from ..problem import build_problem
 
