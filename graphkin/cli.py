@@ -407,9 +407,27 @@ class _Progress:
         return False
 
 
+def _one_line_warnings() -> None:
+    """Print graphkin's warnings as ``graphkin: warning: ...``, one line each, not Python's two-line form."""
+    import warnings
+
+    from .errors import GraphkinWarning
+
+    default = warnings.showwarning
+
+    def show(message, category, filename, lineno, file=None, line=None):
+        if issubclass(category, GraphkinWarning):
+            print(f"graphkin: warning: {message}", file=sys.stderr)
+        else:
+            default(message, category, filename, lineno, file, line)
+
+    warnings.showwarning = show
+
+
 def main(argv=None) -> int:
     """Entry point of the ``graphkin`` command."""
     args = _parser().parse_args(argv)
+    _one_line_warnings()
     try:
         if args.command == "cycle":
             return _cycle(args)

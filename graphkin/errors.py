@@ -12,6 +12,13 @@ class GraphkinError(ValueError):
     """Base class: a one-line message a student can act on."""
 
 
+class GraphkinWarning(UserWarning):
+    """Input that is accepted but unusual enough to say so (a friction coefficient above 1, ...).
+
+    The command line prints each as one line, ``graphkin: warning: ...``.
+    """
+
+
 class ModelError(GraphkinError):
     """The mechanism as described cannot be built (unknown link, zero length, ...)."""
 

@@ -270,10 +270,17 @@ def build_problem(data: Mapping[str, Any], *, file: str = "<problem>") -> Proble
     given = _given(rd, data.get("given", {}), mech, len(q))
     try:
         from .kinematics import decompose
+        from .kinematics.structure import Dyad
 
-        decompose(mech)
+        groups = decompose(mech)
     except GraphkinError as exc:
         raise rd.fail("joints", str(exc)) from None
+    branches = sorted({g.key for g in groups if isinstance(g, Dyad)})
+    for key in assembly:
+        if key not in branches:
+            raise rd.fail(f"assembly.{key}", f"{key} is not the middle joint of a dyad, so it chooses no branch; "
+                          + (f"this mechanism's branches are chosen at {', '.join(branches)}" if branches else
+                             "this mechanism has no dyad, so no branch to choose: leave out [assembly]"))
     return Problem(file, mech, q, q_dot, q_ddot, given, str(data.get("title", "")), str(data.get("source", "")),
                    str(data.get("notes", "")))
 
@@ -380,6 +387,14 @@ def _joint(rd, t, where):
             mu = rd.si(t.get("mu", 0.0), "dimensionless", f"{where}.mu")
             if mu < 0:
                 raise rd.fail(f"{where}.mu", f"friction coefficient must be ≥ 0, got {t['mu']!r}")
+            if mu > 1:
+                import warnings
+
+                from .errors import GraphkinWarning
+
+                # Rubber on dry concrete reaches about 1; above it is more often a typing slip than a material.
+                warnings.warn(f"{rd.file}: {where}.mu: a friction coefficient of {mu:g} is unusually high "
+                              "(dry metals on metals: 0.15 to 0.6); solving with it", GraphkinWarning, stacklevel=2)
             return Prismatic(
                 rd.whole(rd.need(t, "guide", where), f"{where}.guide"), rd.whole(rd.need(t, "slider", where), f"{where}.slider"),
                 rd.text(rd.need(t, "point", where), f"{where}.point"), rd.text(rd.need(t, "through", where), f"{where}.through"),
@@ -431,6 +446,11 @@ def _load(rd, t, where, driver_kind):
         dim = "angle" if driver_kind == "crank" else "length"
         active = Active(rd.si(rd.need(a, "from", f"{where}.active"), dim, f"{where}.active.from"),
                         rd.si(rd.need(a, "to", f"{where}.active"), dim, f"{where}.active.to"), periodic=driver_kind == "crank")
+        if not active.mask(np.array([active.start + 0.5 * active.width])).all():
+            raise rd.fail(f"{where}.active", f"from {a['from']!r} to {a['to']!r} is a window of zero width, so the load "
+                          "would never act" + (" (angles are taken modulo 360°)" if active.periodic else
+                                               "; 'to' must lie above 'from'") +
+                          "; leave out 'active' for a load that always acts")
     name = str(t.get("name", ""))
     if kind == "force":
         return PointForce(link, rd.text(rd.need(t, "point", where), f"{where}.point"),

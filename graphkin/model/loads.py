@@ -31,6 +31,11 @@ class Active:
     stop: float
     periodic: bool = True
 
+    @property
+    def width(self) -> float:
+        """Width of the window [rad or m] (modulo one turn for a crank)."""
+        return (self.stop - self.start) % (2 * math.pi) if self.periodic else self.stop - self.start
+
     def mask(self, q):
         """Boolean array: where the load acts, for input positions ``q``.
 
