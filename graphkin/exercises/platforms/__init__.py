@@ -101,8 +101,9 @@ def requirements() -> list[str]:
         if "extra ==" in r:
             continue
         name = re.split(r"[<>=!~ ;\[]", r, maxsplit=1)[0].lower()
-        # The platforms grade without a browser: the notebook front end is theirs, not graphkin's to install.
-        if name in ("jupyterlab", "ipywidgets"):
+        # The platforms grade without a browser: the notebook front end is theirs, not graphkin's to install;
+        # nor do they typeset handouts.
+        if name in ("jupyterlab", "ipywidgets", "typst"):
             continue
         lines.append(r.split(";")[0].strip())
     return lines

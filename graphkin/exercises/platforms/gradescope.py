@@ -650,7 +650,11 @@ def results_from_report(ex, report: dict, notes: list[str]) -> dict:
         "visibility": "visible",
     } for r in report["questions"]]
     summary = f"{ex.title}\nGraded as student {report['student']!r}: {report['score']:g} / {report['max']:g} points."
-    return _results(report["score"], "\n".join([summary, *notes]), tests)
+    results = _results(report["score"], "\n".join([summary, *notes]), tests)
+    # Gradescope stores extra_data with the submission without showing it: graphkin's report as plain data
+    # (verdicts and slips per question), for the teacher's own statistics over a class.
+    results["extra_data"] = {"graphkin": report}
+    return results
 
 
 def not_graded(exercise_file, reason: str) -> dict:
