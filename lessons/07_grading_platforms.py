@@ -98,8 +98,7 @@ print("".join(sheets.read_text(encoding="utf-8").splitlines(keepends=True)[:4]))
 # the roster and says so to anyone else.
 
 # %%
-print(graphkin("exercise", "export", NAME, "--to", "gradescope", "-o", "export",
-               "--roster", "roster.csv", "--secret", SECRET) or "(nothing on standard output)")
+graphkin("exercise", "export", NAME, "--to", "gradescope", "-o", "export", "--roster", "roster.csv", "--secret", SECRET)
 export = folder / "export"
 for p in sorted(export.rglob("*")):
     if p.is_file():
@@ -255,6 +254,7 @@ ax1.set(xlabel="score (of 3 points)", ylabel="students", title=f"Scores, mean {s
 labels = [f"{qid}: {what.replace('_', ' ')}" for (qid, what), n in counts.most_common()]
 ax2.barh(labels[::-1], [n for _, n in counts.most_common()][::-1], color="#dd8452")
 ax2.set(xlabel="answers", title="What went wrong, by question")
+ax2.xaxis.get_major_locator().set_params(integer=True)
 fig
 
 # %% [markdown]
@@ -284,7 +284,7 @@ fig
 # data (never the answers), and the course secret stays in the hidden tests.
 
 # %%
-print(graphkin("exercise", "export", NAME, "--to", "prairielearn", "-o", "pl", "--secret", SECRET) or "")
+graphkin("exercise", "export", NAME, "--to", "prairielearn", "-o", "pl", "--secret", SECRET)
 print("\n".join(sorted(str(p.relative_to(folder / "pl")) for p in (folder / "pl").rglob("*")
                        if p.is_file() and "serverFilesCourse" not in p.parts)))
 
