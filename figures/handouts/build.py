@@ -1,0 +1,49 @@
+"""Rebuild figures/handouts/: the double slider's and the strip cutter's worked-solution handouts.
+
+Writes each key as PDF (what ``graphkin handout NAME -o NAME.pdf`` writes) and, as PNG, its first
+page and the page with the first force polygon, for the README and the lessons to show.
+
+    .venv/bin/python figures/handouts/build.py
+
+Needs pypdfium2 (in the test extras) to render the pages.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pypdfium2 as pdfium
+
+from graphkin import handout
+
+HERE = Path(__file__).resolve().parent
+PROBLEMS = ("double_slider", "strip_cutter")
+DPI = 110
+
+
+def polygon_page(pdf) -> int:
+    """The first page that shows a force polygon (its caption says so)."""
+    for k in range(len(pdf)):
+        if "Force polygon of link" in pdf[k].get_textpage().get_text_range():
+            return k
+    return 0
+
+
+def build(name: str) -> list[Path]:
+    doc = handout.build(name)
+    path = HERE / f"{name}.pdf"
+    handout.write(doc, path)
+    pdf = pdfium.PdfDocument(path)
+    written = [path]
+    for k in sorted({0, polygon_page(pdf)}):
+        png = HERE / f"{name}_page{k + 1}.png"
+        pdf[k].render(scale=DPI / 72).to_pil().save(png, optimize=True)
+        written.append(png)
+    print(f"{name}: {len(pdf)} pages")
+    return written
+
+
+if __name__ == "__main__":
+    for name in PROBLEMS:
+        for p in build(name):
+            print(f"  {p.relative_to(HERE.parent.parent)}")

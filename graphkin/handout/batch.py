@@ -1,0 +1,117 @@
+"""A class's handouts at once: a sheet and a key per student, on all cores.
+
+Each student's handouts depend on nothing but their own variant, so the
+roster is spread over a pool of worker processes, a few students per task
+(one student's sheet and key are made in the same task, from one solved
+variant, sharing their drawings). Every file is written atomically by the
+worker that made it (:func:`graphkin.files.write_bytes`): an interrupted
+batch leaves whole files or none, never half a PDF.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import multiprocessing
+import os
+import re
+from concurrent.futures import ProcessPoolExecutor, as_completed
+from pathlib import Path
+
+from ..errors import GraphkinError
+
+CHUNK = 4
+"""Students per task: big enough to amortise sending the task, small enough to keep both cores busy to the end."""
+
+PARALLEL_FROM = 4
+"""Rosters smaller than this are made in this process: starting workers would cost more than it saves."""
+
+SUFFIX = {"pdf": ".pdf", "html": ".html", "md": ".md"}
+
+
+def file_stem(student: str) -> str:
+    """A file name for a student id: the id if it is plain, else a cleaned id and a short hash of it.
+
+    Two different ids never share a file, and an id cannot climb out of the
+    folder (``../x``) or hide a file (``.x``).
+
+    Examples
+    --------
+    >>> file_stem("s001"), file_stem("Ana María")
+    ('s001', 'Ana_Mar_a-8358ed')
+    """
+    clean = re.sub(r"[^A-Za-z0-9_-]", "_", student).strip("_") or "student"
+    if clean == student:
+        return clean
+    return f"{clean[:60]}-{hashlib.sha256(student.encode('utf-8')).hexdigest()[:6]}"
+
+
+def _one(exercise: str, student: str, secret: str, versions: tuple, fmt: str, folder: str, Cs) -> tuple:
+    """Make one student's handouts; (student, files written, error or "")."""
+    from . import build, write
+    from .content import subject
+
+    try:
+        s = subject(exercise, student=student, secret=secret, Cs=Cs)
+        written = []
+        for version in versions:
+            doc = build(s, version=version)
+            path = Path(folder) / f"{file_stem(student)}_{version}{SUFFIX[fmt]}"
+            written += [str(p) for p in write(doc, path)]
+        return student, written, ""
+    except GraphkinError as exc:
+        return student, [], str(exc)
+
+
+def _chunk(args) -> list[tuple]:
+    exercise, students, secret, versions, fmt, folder, Cs = args
+    return [_one(exercise, st, secret, versions, fmt, folder, Cs) for st in students]
+
+
+def make_roster(exercise: str, students, folder, *, secret: str = "", versions=("sheet", "key"), fmt: str = "pdf",
+                Cs=None, workers: int | None = None, progress=None) -> list[tuple]:
+    """Write every student's handouts into ``folder``.
+
+    Parameters
+    ----------
+    exercise : str
+        Catalog name or file of the exercise (each worker reads it once).
+    students : sequence of str
+    folder : str or Path
+        Made if missing; each student's files are ``<id>_sheet.pdf``, ``<id>_key.pdf``.
+    secret : str
+    versions : tuple of {"sheet", "key", "blank"}
+    fmt : {"pdf", "html", "md"}
+    Cs : float, optional
+    workers : int, optional
+        Processes (default: every core).
+    progress : callable, optional
+        Called with the number of students just finished.
+
+    Returns
+    -------
+    list of (student, files, error)
+        In roster order; ``error`` is "" for a student whose handouts were written.
+    """
+    students = list(students)
+    folder = str(folder)
+    cores = workers or os.cpu_count() or 1
+    tasks = [(exercise, students[k:k + CHUNK], secret, tuple(versions), fmt, folder, Cs)
+             for k in range(0, len(students), CHUNK)]
+    results: dict[int, list] = {}
+    if cores == 1 or len(students) < PARALLEL_FROM:
+        for k, task in enumerate(tasks):
+            results[k] = _chunk(task)
+            if progress:
+                progress(len(task[1]))
+    else:
+        # Fresh interpreters, not forks: a fork of a process whose other threads hold a lock (typst's
+        # compiler threads once a PDF has been made here, a notebook's kernel) can wait on it for ever.
+        spawn = multiprocessing.get_context("spawn")
+        with ProcessPoolExecutor(max_workers=min(cores, len(tasks)), mp_context=spawn) as pool:
+            futures = {pool.submit(_chunk, task): k for k, task in enumerate(tasks)}
+            for future in as_completed(futures):
+                k = futures[future]
+                results[k] = future.result()
+                if progress:
+                    progress(len(results[k]))
+    return [row for k in range(len(tasks)) for row in results[k]]

@@ -1,0 +1,83 @@
+"""The handout's figures: drawn by :mod:`graphkin.draw` when a renderer first asks, kept as SVG.
+
+A :class:`Picture` holds a callable that returns a matplotlib figure (or a
+:class:`graphkin.draw.Drawn`); nothing is drawn until a renderer asks for
+:meth:`Picture.svg`, and then only once, so the PDF, the HTML and the
+Markdown of one handout (or a student's sheet and key, which share their
+pictures) draw each figure a single time. This module never imports
+matplotlib: the drawing layer does.
+"""
+
+from __future__ import annotations
+
+import io
+import re
+
+
+class Picture:
+    """One figure of a handout, drawn on demand and kept as SVG text.
+
+    Parameters
+    ----------
+    key : str
+        A name unique within the handout (``"step-3"``); Markdown names the
+        figure's file after it, HTML prefixes the SVG's ids with it.
+    draw : callable
+        Returns the matplotlib Figure (or a ``Drawn``/axes of one) to show.
+    width : float
+        Share of the text width the picture takes (0–1].
+    height : float
+        The most height it may take [mm]: a tall mechanism is shown smaller
+        rather than filling a page.
+    alt : str
+        Alternative text: what the picture shows, for a reader who cannot see it.
+    """
+
+    def __init__(self, key: str, draw, width: float = 1.0, alt: str = "", height: float = 80.0):
+        self.key, self.draw, self.width, self.alt, self.height = key, draw, width, alt, height
+        self._svg: str | None = None
+
+    def __repr__(self) -> str:
+        return f"Picture({self.key!r})"
+
+    def svg(self) -> str:
+        """The figure as a standalone SVG document (text drawn as paths: no font needed to show it)."""
+        if self._svg is None:
+            fig = self.draw()
+            fig = getattr(fig, "ax", fig)              # a Drawn
+            fig = getattr(fig, "figure", fig) if not hasattr(fig, "savefig") else fig
+            if hasattr(fig, "get_figure"):
+                fig = fig.get_figure(root=True)
+            from ..draw._common import renderer_of
+
+            # The drawing's own extent, measured with the drawing layer's shared renderer: bbox_inches="tight"
+            # would find the same box by drawing the whole figure once more, a third of the cost of a figure.
+            box = fig.get_tightbbox(renderer_of(fig)).padded(0.04)
+            out = io.BytesIO()
+            # No date in the file: the same handout gives the same bytes.
+            fig.savefig(out, format="svg", bbox_inches=box, facecolor="white", metadata={"Date": None})
+            self._svg = out.getvalue().decode("utf-8")
+            self.draw = None  # the figure and its data can go
+        return self._svg
+
+
+_PROLOG = re.compile(r"^\s*<\?xml[^>]*\?>\s*(<!DOCTYPE[^>]*>\s*)?", re.S)
+_ID = re.compile(r'\bid="([^"]+)"')
+
+
+def inline_svg(svg: str, prefix: str) -> str:
+    """An SVG document made fit to sit inside HTML beside others.
+
+    The XML prolog, the DOCTYPE and matplotlib's RDF metadata go (they name
+    web addresses, and HTML needs none of them), and so do the namespace
+    declarations, which HTML5 adds itself; every id gets ``prefix`` so that two figures' clip paths and
+    glyphs cannot take each other's place.
+    """
+    svg = _PROLOG.sub("", svg)
+    svg = re.sub(r"<metadata>.*?</metadata>\s*", "", svg, flags=re.S)
+    svg = re.sub(r'\s+xmlns(:xlink)?="[^"]*"', "", svg)
+    ids = set(_ID.findall(svg))
+    if ids:
+        svg = _ID.sub(lambda m: f'id="{prefix}-{m[1]}"', svg)
+        svg = re.sub(r'(href="#|url\(#)([^")]+)', lambda m: m[1] + (f"{prefix}-{m[2]}" if m[2] in ids else m[2]), svg)
+    return svg.strip()

@@ -1,0 +1,106 @@
+"""The handout as one self-contained HTML file: figures inline as SVG, mathematics as MathML.
+
+Nothing in the file points outside it: no script, no stylesheet, no font or
+image to fetch, not even a namespace address (HTML5 supplies the SVG and
+MathML namespaces itself). The equations are MathML, which browsers draw
+natively (Chromium from version 109, Firefox, Safari), converted from the
+LaTeX writer's output by ``latex2mathml``; a reader without MathML support
+still sees the symbols and digits in order.
+"""
+
+from __future__ import annotations
+
+import html as _html
+import re
+
+from ..errors import GraphkinError
+from . import maths as M
+from .figures import inline_svg
+
+CSS = """
+body { font-family: "Libertinus Serif", "Linux Libertine", Georgia, serif; max-width: 52rem; margin: 2rem auto;
+       padding: 0 1rem; line-height: 1.45; color: #1a1a1a; }
+header { text-align: center; margin-bottom: 2rem; }
+header h1 { margin-bottom: 0.2rem; }
+header .source { font-style: italic; font-size: 0.9rem; }
+table { border-collapse: collapse; margin: 0.6rem 0; font-size: 0.92rem; }
+th, td { border: 1px solid #aaa; padding: 0.2rem 0.5rem; vertical-align: middle; }
+th { background: #eee; }
+td.r, th.r { text-align: right; } td.c, th.c { text-align: center; }
+caption { caption-side: bottom; font-style: italic; font-size: 0.85rem; text-align: left; padding-top: 0.3rem; }
+math { font-family: "STIX Two Math", "Cambria Math", "Latin Modern Math", "New Computer Modern Math", math; }
+.eq { overflow-x: auto; margin: 0.5rem 0; }
+.eq.small { font-size: 0.8rem; }
+figure { margin: 1rem 0; text-align: center; }
+figure .row { display: flex; gap: 1rem; align-items: center; justify-content: center; }
+figure svg { max-width: 100%; height: auto; }
+figcaption { font-size: 0.9rem; text-align: left; margin-top: 0.3rem; }
+.space { border: 1px solid #999; padding: 0.4rem; margin: 0.6rem 0; font-size: 0.9rem; }
+@media print { .pagebreak { break-after: page; } .space { break-inside: avoid; } figure { break-inside: avoid; } }
+"""
+
+
+def _mathml(node, display: bool) -> str:
+    try:
+        from latex2mathml.converter import convert
+    except ImportError:
+        raise GraphkinError("HTML handouts need the latex2mathml package for their equations: "
+                            "pip install latex2mathml") from None
+    out = convert(M.to_latex(node), display="block" if display else "inline")
+    # HTML5 knows the MathML namespace: the address is dropped so that the file names none.
+    return re.sub(r'\s+xmlns="[^"]*"', "", out)
+
+
+def _inline(runs) -> str:
+    return "".join(_html.escape(r, quote=False) if isinstance(r, str) else _mathml(r, False) for r in runs)
+
+
+def _block(b: dict) -> str:
+    kind = b["kind"]
+    esc = _html.escape
+    if kind == "heading":
+        level = min(b["level"] + 1, 6)  # the title is the page's h1
+        return f"<h{level}>{esc(b['text'])}</h{level}>"
+    if kind == "text":
+        return f"<p>{_inline(b['runs'])}</p>"
+    if kind == "list":
+        tag = "ol" if b["ordered"] else "ul"
+        return f"<{tag}>" + "".join(f"<li>{_inline(item)}</li>" for item in b["items"]) + f"</{tag}>"
+    if kind == "table":
+        cls = [f' class="{a}"' if a != "l" else "" for a in b["align"]]
+        head = "".join(f"<th{c}>{_inline(h)}</th>" for c, h in zip(cls, b["header"]))
+        body = "".join("<tr>" + "".join(f"<td{c}>{_inline(x)}</td>" for c, x in zip(cls, row)) + "</tr>"
+                       for row in b["rows"])
+        caption = f"<caption>{esc(b['caption'])}</caption>" if b.get("caption") else ""
+        return f"<table>{caption}<thead><tr>{head}</tr></thead><tbody>{body}</tbody></table>"
+    if kind == "equation":
+        small = " small" if b.get("small") else ""
+        return "".join(f'<div class="eq{small}">{_mathml(line, True)}</div>' for line in b["lines"])
+    if kind == "figure":
+        pics = b["pictures"]
+        total = sum(p.width for p in pics)
+        items = "".join(f'<div style="flex: {p.width / total:.3f} 1 0; max-width: {100 * p.width:.0f}%" role="img" '
+                        f'aria-label="{esc(p.alt)}">{_sized(inline_svg(p.svg(), p.key), p.height)}</div>' for p in pics)
+        return f'<figure><div class="row">{items}</div><figcaption>{esc(b["caption"])}</figcaption></figure>'
+    if kind == "space":
+        extra = " " + _mathml(b["math"], False) if b.get("math") else ""
+        return f'<div class="space" style="height: {b["height"]:g}mm">{esc(b["label"])}{extra}</div>'
+    if kind == "pagebreak":
+        return '<div class="pagebreak"></div>'
+    raise ValueError(f"unknown block {kind!r}")
+
+
+def _sized(svg: str, height: float) -> str:
+    """The SVG scaled to fit the column and at most ``height`` mm tall (its viewBox keeps the proportions)."""
+    return svg.replace("<svg ", f'<svg style="max-height: {height:g}mm; width: auto; max-width: 100%" ', 1)
+
+
+def render(doc: dict) -> str:
+    """The handout as one HTML document (a str)."""
+    esc = _html.escape
+    body = "\n".join(_block(b) for b in doc["blocks"])
+    return (f'<!DOCTYPE html>\n<html lang="en">\n<head>\n<meta charset="utf-8">\n'
+            f'<meta name="viewport" content="width=device-width, initial-scale=1">\n'
+            f"<title>{esc(doc['title'])} — {esc(doc['subtitle'])}</title>\n<style>{CSS}</style>\n</head>\n<body>\n"
+            f"<header><h1>{esc(doc['title'])}</h1><div>{esc(doc['subtitle'])}</div>"
+            f"<div class=\"source\">{esc(doc['source'])}</div></header>\n<main>\n{body}\n</main>\n</body>\n</html>\n")

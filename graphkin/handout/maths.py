@@ -1,0 +1,327 @@
+r"""A small representation of the handout's mathematics, and its three writers.
+
+An equation is plain data: nested lists whose first item names the node.
+
+=====================  =====================================================
+``["i", "F"]``         an identifier (a symbol, italic): ``F``, ``θ``
+``["n", "−25.98"]``    a number, already formatted (U+2212 for minus)
+``["t", "N·m"]``       upright text: a unit, a word, a point's name
+``["o", "="]``         an operator or punctuation: ``= + − · × ∠ ° , ;``
+``["sub", b, s]``      b with subscript s
+``["sup", b, s]``      b with superscript s
+``["frac", a, b]``     a over b
+``["vec", a]``         a with an arrow over it (a vector)
+``["abs", a]``         the absolute value: a between bars
+``["paren", a]``       (a), the parentheses as tall as a
+``["mat", rows, d]``   a matrix, rows of cells, delimiter ``"["`` or ``"("``
+``["row", *items]``    items one after the other
+``["sp"]``             a thin space
+=====================  =====================================================
+
+The handout builds these with the helpers below and never writes typst or
+LaTeX itself; :func:`to_typst` (the PDF), :func:`to_latex` (Markdown, and
+MathML for HTML through ``latex2mathml``) and :func:`to_text` (alternative
+text) each turn one node into their own notation, so the three documents
+show the same mathematics.
+
+Examples
+--------
+>>> eq = row(sym("F", "23"), op("="), polar(27.06, -73.78, "N"))
+>>> to_text(eq)
+'F23 = 27.06 N ∠ −73.78°'
+>>> to_typst(eq)
+'attach(F, b: "23") = 27.06 thin "N" thin ∠ thin class("unary", −)73.78 degree'
+"""
+
+from __future__ import annotations
+
+import math
+import re
+
+MINUS = "\u2212"
+
+
+# -- numbers ------------------------------------------------------------------
+def fmt(x: float, digits: int = 4) -> str:
+    """A number with ``digits`` significant digits, as the handout prints it.
+
+    No exponent between 10⁻⁴ and 10⁹ (a book prints 7580 N, not 7.58e+03),
+    U+2212 for the minus sign, and ``"0"`` for zero (never ``"−0"``). Rounding
+    noise (1e-17 where a lever arm is zero) is the caller's to clear: only
+    the caller knows the scale.
+
+    Examples
+    --------
+    >>> fmt(25.97834), fmt(-0.865942), fmt(7580.38), fmt(-0.0), fmt(123456.0), fmt(9.99996)
+    ('25.98', '−0.8659', '7580', '0', '123500', '10')
+    """
+    x = float(x)
+    if not math.isfinite(x):
+        return "—"
+    if x == 0:
+        return "0"
+    exponent = math.floor(math.log10(abs(x)))
+    if -4 <= exponent < 9:
+        places = digits - 1 - exponent
+        text = f"{round(x, places):.{max(places, 0)}f}"
+        if "." in text:
+            text = text.rstrip("0").rstrip(".")
+    else:
+        text = f"{x:.{digits}g}"
+    if float(text) == 0:
+        return "0"
+    return text.replace("-", MINUS)
+
+
+def fmt_fixed(x: float, places: int = 2) -> str:
+    """A number with a fixed number of decimals (angles: ``−73.78``), U+2212 for minus, never ``−0.00``."""
+    x = float(x)
+    if not math.isfinite(x):
+        return "—"
+    text = f"{x:.{places}f}"
+    if float(text) == 0:
+        text = text.lstrip("-")
+    return text.replace("-", MINUS)
+
+
+def angle_of(v) -> float:
+    """Direction of a plane vector [deg] in (−180°, 180°], as :func:`graphkin.report.polar`."""
+    from ..report import polar as _polar
+
+    return _polar(v)[1]
+
+
+def size_of(v) -> float:
+    return math.hypot(float(v[0]), float(v[1]))
+
+
+# -- nodes ----------------------------------------------------------------------
+def i(name: str) -> list:
+    return ["i", name]
+
+
+def n(value: float | str, digits: int = 4) -> list:
+    """A number node; a float is formatted with :func:`fmt`."""
+    return ["n", value if isinstance(value, str) else fmt(value, digits)]
+
+
+def t(text: str) -> list:
+    return ["t", text]
+
+
+def op(symbol: str) -> list:
+    return ["o", symbol]
+
+
+def sub(base, subscript) -> list:
+    return ["sub", _node(base), _node(subscript, text=True)]
+
+
+def sup(base, superscript) -> list:
+    return ["sup", _node(base), _node(superscript, text=True)]
+
+
+def frac(a, b) -> list:
+    return ["frac", _node(a), _node(b)]
+
+
+def vec(a) -> list:
+    return ["vec", _node(a)]
+
+
+def absval(a) -> list:
+    return ["abs", _node(a)]
+
+
+def paren(*items) -> list:
+    return ["paren", row(*items)]
+
+
+def mat(rows, delim: str = "[") -> list:
+    return ["mat", [[_node(c) for c in r] for r in rows], delim]
+
+
+def row(*items) -> list:
+    return ["row", *(_node(x) for x in items)]
+
+
+SP = ["sp"]
+
+
+def _node(x, text=False):
+    if isinstance(x, list):
+        return x
+    if isinstance(x, (int, float)):
+        return n(x)
+    return t(x) if text else i(x)
+
+
+def sym(letter: str, subscript: str | None = None) -> list:
+    """A symbol with an upright subscript: ``sym("F", "23")`` is F₂₃, ``sym("a", "G3")`` is a_G3."""
+    return i(letter) if not subscript else sub(i(letter), t(subscript))
+
+
+_NAME = re.compile(r"^([A-Za-z])_?([0-9][0-9A-Za-z,]*|[A-Z][0-9A-Za-z]*)$")
+
+
+def name(text: str) -> list:
+    """A force, torque or point name as a symbol: ``"F23"`` → F₂₃, ``"R3i"`` → R₃ᵢ, ``"T12"`` → T₁₂.
+
+    Names that do not look like a letter and a subscript are kept upright.
+    """
+    m = _NAME.match(text)
+    return sym(m[1], m[2]) if m else t(text)
+
+
+def qty(value: float | str, unit: str, digits: int = 4) -> list:
+    """A number and its unit: 25.98 N."""
+    return row(n(value, digits), SP, t(unit)) if unit else n(value, digits)
+
+
+def polar(size: float, angle: float, unit: str, digits: int = 4) -> list:
+    """The books' polar form: 27.06 N ∠ −73.78°."""
+    return row(qty(size, unit, digits), op("∠"), n(fmt_fixed(angle)), op("°"))
+
+
+def pair(v, unit: str = "", digits: int = 4) -> list:
+    """A vector by components: (7.559, −25.98) N.
+
+    A component below 10⁻⁹ of the other is rounding noise (−2e-16 where
+    the exact value is 0) and is printed as 0.
+    """
+    x, y = (float(c) for c in v)
+    tiny = 1e-9 * max(abs(x), abs(y))
+    x, y = (0.0 if abs(x) <= tiny else x), (0.0 if abs(y) <= tiny else y)
+    inside = paren(n(x, digits), op(","), n(y, digits))
+    return row(inside, SP, t(unit)) if unit else inside
+
+
+def column(items) -> list:
+    return mat([[x] for x in items], "{")
+
+
+# -- writers ------------------------------------------------------------------------
+# An escaped comma is a comma even inside a function's arguments (frac, attach), where a bare one would
+# separate them.
+_TYPST_OPS = {"·": "dot", "×": "times", "°": "degree", ",": "\\,", ";": "\\;", "(": "\\(", ")": "\\)",
+              "/": "\\/", "∠": "thin ∠ thin", "Σ": "Σ"}
+
+
+def _typst_text(s: str) -> str:
+    return '"' + s.replace("\\", "\\\\").replace('"', '\\"') + '"'
+
+
+def to_typst(node) -> str:
+    """The node as typst math (the content between ``$ ... $``)."""
+    kind = node[0]
+    if kind == "i":
+        s = node[1]
+        return s if len(s) == 1 else f"italic({_typst_text(s)})"
+    if kind == "n":
+        text = node[1]
+        if not re.fullmatch(r"[−-]?[0-9.]+", text):
+            return _typst_text(text)
+        # A leading minus is the number's sign, not a subtraction: unary, so "∠ −73.78" is not spaced as "∠ − 73.78".
+        return f'class("unary", −){text[1:]}' if text[0] in "−-" else text
+    if kind == "t":
+        return _typst_text(node[1])
+    if kind == "o":
+        return _TYPST_OPS.get(node[1], node[1] if node[1] in "=+−<>≈∠→" else _typst_text(node[1]))
+    if kind == "sub":
+        return f"attach({to_typst(node[1])}, b: {to_typst(node[2])})"
+    if kind == "sup":
+        return f"attach({to_typst(node[1])}, t: {to_typst(node[2])})"
+    if kind == "frac":
+        return f"frac({to_typst(node[1])}, {to_typst(node[2])})"
+    if kind == "vec":
+        return f"arrow({to_typst(node[1])})"
+    if kind == "abs":
+        return f"abs({to_typst(node[1])})"
+    if kind == "paren":
+        return f"lr(( {to_typst(node[1])} ))"
+    if kind == "mat":
+        delim = {"[": '"["', "(": '"("', "{": '"{"'}[node[2]]
+        body = "; ".join(", ".join(to_typst(c) for c in r) for r in node[1])
+        return f"mat(delim: {delim}, {body})"
+    if kind == "row":
+        return " ".join(to_typst(x) for x in node[1:]) or '""'
+    if kind == "sp":
+        return "thin"
+    raise ValueError(f"unknown math node {kind!r}")
+
+
+_GREEK = {"α": r"\alpha", "β": r"\beta", "γ": r"\gamma", "θ": r"\theta", "ω": r"\omega", "μ": r"\mu", "ρ": r"\rho",
+          "Σ": r"\Sigma", "Δ": r"\Delta", "τ": r"\tau", "φ": r"\varphi"}
+_LATEX_OPS = {"·": r"\cdot", "×": r"\times", "∠": r"\;\angle\;", "°": r"^{\circ}", "−": "-", ",": r",\ ", ";": ";",
+              "≈": r"\approx", "→": r"\rightarrow"}
+
+
+def _latex_text(s: str) -> str:
+    s = re.sub(r"([{}_%#&$^~\\])", lambda m: "\\" + m[1] if m[1] not in "\\^~" else
+               {"\\": r"\backslash ", "^": r"\^{}", "~": r"\~{}"}[m[1]], s)
+    return r"\text{" + s + "}"
+
+
+def to_latex(node) -> str:
+    """The node as LaTeX math (for Markdown's ``$…$``, and MathML through ``latex2mathml``)."""
+    kind = node[0]
+    if kind == "i":
+        return "".join(_GREEK.get(ch, ch) for ch in node[1]) if len(node[1]) == 1 else r"\mathit{" + node[1] + "}"
+    if kind == "n":
+        text = node[1].replace(MINUS, "-")
+        if not re.fullmatch(r"-?[0-9.]+", text):
+            return _latex_text(node[1])
+        return "{" + text + "}" if text.startswith("-") else text  # braced: a sign, not a subtraction
+    if kind == "t":
+        return _latex_text(node[1])
+    if kind == "o":
+        return _LATEX_OPS.get(node[1], _GREEK.get(node[1], node[1]))
+    if kind == "sub":
+        return f"{{{to_latex(node[1])}}}_{{{to_latex(node[2])}}}"
+    if kind == "sup":
+        return f"{{{to_latex(node[1])}}}^{{{to_latex(node[2])}}}"
+    if kind == "frac":
+        return rf"\frac{{{to_latex(node[1])}}}{{{to_latex(node[2])}}}"
+    if kind == "vec":
+        return rf"\vec{{{to_latex(node[1])}}}"
+    if kind == "abs":
+        return rf"\left|{to_latex(node[1])}\right|"
+    if kind == "paren":
+        return rf"\left({to_latex(node[1])}\right)"
+    if kind == "mat":
+        # \left … \right rather than bmatrix: latex2mathml then marks the brackets as stretchy fences,
+        # which browsers' MathML draws as tall as the matrix.
+        left, right = {"[": (r"\left[", r"\right]"), "(": (r"\left(", r"\right)"), "{": (r"\left\{", r"\right\}")}[node[2]]
+        body = r" \\ ".join(" & ".join(to_latex(c) for c in r) for r in node[1])
+        return rf"{left}\begin{{matrix}} {body} \end{{matrix}}{right}"
+    if kind == "row":
+        return " ".join(to_latex(x) for x in node[1:])
+    if kind == "sp":
+        return r"\,"
+    raise ValueError(f"unknown math node {kind!r}")
+
+
+def to_text(node) -> str:
+    """The node as plain text (alternative text, search, tests)."""
+    kind = node[0]
+    if kind in ("i", "n", "t"):
+        return node[1]
+    if kind == "o":
+        return {",": ", ", "°": "°"}.get(node[1], f" {node[1]} ")
+    if kind in ("sub", "sup"):
+        return to_text(node[1]) + ("" if kind == "sub" else "^") + to_text(node[2])
+    if kind == "frac":
+        return f"({to_text(node[1])})/({to_text(node[2])})"
+    if kind == "vec":
+        return to_text(node[1])
+    if kind == "abs":
+        return f"|{to_text(node[1])}|"
+    if kind == "paren":
+        return f"({to_text(node[1])})"
+    if kind == "mat":
+        return "[" + "; ".join(", ".join(to_text(c) for c in r) for r in node[1]) + "]"
+    if kind == "row":
+        return re.sub(r" {2,}", " ", "".join(to_text(x) for x in node[1:])).strip()
+    if kind == "sp":
+        return " "
+    raise ValueError(f"unknown math node {kind!r}")

@@ -1,0 +1,142 @@
+"""The handout as a PDF: typst source written from the document's blocks, compiled by the ``typst`` package.
+
+Typst (from PyPI, compiled in-process, offline) typesets the mathematics
+natively; the figures go in as SVG, so the PDF is vector throughout. Only
+the fonts typst carries inside it are used (Libertinus Serif for the text,
+New Computer Modern Math for the equations), never the machine's own: the
+same handout gives the same pages on every computer, which the page-image
+test relies on.
+
+A typst error, or a font typst does not have, is a
+:class:`graphkin.errors.GraphkinError` with one line of text.
+"""
+
+from __future__ import annotations
+
+from ..errors import GraphkinError
+from . import maths as M
+
+FONT = "Libertinus Serif"
+MATH_FONT = "New Computer Modern Math"
+
+_ALIGN = {"l": "left", "c": "center", "r": "right"}
+
+
+def _string(text: str) -> str:
+    """A typst string literal: markup characters in it stay plain text."""
+    return '"' + text.replace("\\", "\\\\").replace('"', '\\"') + '"'
+
+
+def _inline(runs) -> str:
+    out = []
+    for r in runs:
+        if isinstance(r, str):
+            if r:
+                out.append(f"#{_string(r)}")
+        else:
+            out.append(f"${M.to_typst(r)}$")
+    return "".join(out)
+
+
+def _fit(body: str) -> str:
+    """Content scaled down to the line's width when wider (a 9×9 matrix), as it is otherwise."""
+    return (f"#layout(size => {{ let it = [{body}]; let w = measure(it).width; "
+            f"if w > size.width {{ scale(size.width / w * 100%, reflow: true, it) }} else {{ it }} }})")
+
+
+def _block(b: dict) -> str:
+    kind = b["kind"]
+    if kind == "heading":
+        return f"#heading(level: {b['level']})[#{_string(b['text'])}]"
+    if kind == "text":
+        return _inline(b["runs"])
+    if kind == "list":
+        mark = "+" if b["ordered"] else "-"
+        return "\n".join(f"{mark} {_inline(item)}" for item in b["items"])
+    if kind == "table":
+        cols = len(b["header"])
+        align = ", ".join(_ALIGN[a] + " + horizon" for a in b["align"])
+        head = ", ".join(f"[*{_inline(h)}*]" for h in b["header"])
+        cells = ",\n  ".join(", ".join(f"[{_inline(c)}]" for c in row) for row in b["rows"])
+        table = (f"#table(columns: {cols}, align: ({align},), table.header({head}),\n  {cells},\n)")
+        if b.get("caption"):
+            table += f"\n#block(above: 0.4em)[#text(size: 8.5pt, style: \"italic\")[#{_string(b['caption'])}]]"
+        return table
+    if kind == "equation":
+        lines = [f"$ {M.to_typst(line)} $" for line in b["lines"]]
+        body = "\n".join(_fit(x) for x in lines)
+        return f"#text(size: 8pt)[{body}]" if b.get("small") else body
+    if kind == "figure":
+        pics = b["pictures"]
+        images = [f"image(bytes({_string(p.svg())}), format: \"svg\", width: 100%, height: {p.height:g}mm, "
+                  f"fit: \"contain\", alt: {_string(p.alt)})" for p in pics]
+        total = sum(p.width for p in pics)
+        widths = ", ".join(f"{100 * p.width / max(total, 1.0):.1f}%" for p in pics)
+        body = images[0] if len(pics) == 1 else (f"grid(columns: ({widths}), column-gutter: 1em, align: horizon, "
+                                                 + ", ".join(images) + ")")
+        width = min(total, 1.0)
+        return (f"#figure(box(width: {100 * width:.1f}%, {body}), caption: [#{_string(b['caption'])}], "
+                f"numbering: none, supplement: none)")
+    if kind == "space":
+        label = _string(b["label"])
+        extra = f" ${M.to_typst(b['math'])}$" if b.get("math") else ""
+        return (f"#block(width: 100%, height: {b['height']:g}mm, stroke: 0.5pt + luma(150), inset: 6pt, "
+                f"breakable: false)[#text(size: 9pt)[#{label}{extra}]]")
+    if kind == "pagebreak":
+        return "#pagebreak(weak: true)"
+    raise ValueError(f"unknown block {kind!r}")
+
+
+def source(doc: dict, *, font: str | None = None, math_font: str | None = None) -> str:
+    """The typst source of a handout (figures inline as SVG bytes), set in ``font`` (default :data:`FONT`)."""
+    font, math_font = font or FONT, math_font or MATH_FONT
+    head = f"""#set document(title: {_string(doc['title'])})
+#set page(paper: "a4", margin: (x: 18mm, top: 18mm, bottom: 20mm),
+  footer: context [#set text(size: 8pt); #{_string(doc['title'])} #h(1fr) #counter(page).display("1 / 1", both: true)])
+#set text(font: {_string(font)}, size: 10pt, lang: "en")
+#show math.equation: set text(font: {_string(math_font)})
+#set par(justify: true, leading: 0.6em)
+#set heading(numbering: none)
+#show heading.where(level: 1): set text(size: 14pt)
+#show heading.where(level: 2): set text(size: 12pt)
+#show heading.where(level: 3): set text(size: 10.5pt)
+#set table(stroke: 0.5pt + luma(160), inset: (x: 5pt, y: 3.5pt))
+#show table: set text(size: 9pt)
+#show figure.caption: set text(size: 9pt)
+#align(center)[
+  #text(size: 17pt, weight: "bold")[#{_string(doc['title'])}] \\
+  #v(0.2em) #text(size: 11pt)[#{_string(doc['subtitle'])}] \\
+  #v(0.2em) #text(size: 8.5pt, style: "italic")[#{_string(doc['source'])}]
+]
+"""
+    return head + "\n\n".join(_block(b) for b in doc["blocks"]) + "\n"
+
+
+def render(doc: dict, *, font: str | None = None, math_font: str | None = None) -> bytes:
+    """The handout as PDF bytes.
+
+    Raises
+    ------
+    GraphkinError
+        On a typst error, or when typst has no font named ``font`` or
+        ``math_font`` (typst would quietly fall back to another; a handout
+        silently set in the wrong font is not what was asked for).
+    """
+    import typst
+
+    text = source(doc, font=font, math_font=math_font)
+    try:
+        # Fixed timestamp (2000-01-01): the same handout gives the same bytes.
+        pdf, warnings = typst.compile_with_warnings(text.encode("utf-8"), format="pdf", ignore_system_fonts=True,
+                                                    timestamp=946684800)
+    except typst.TypstError as exc:
+        raise GraphkinError(f"typst: {_one_line(exc.message)}") from None
+    for w in warnings:
+        if "font" in w.message:
+            raise GraphkinError(f"typst: {_one_line(w.message)} (fonts available: "
+                                f"{', '.join(typst.Fonts(include_system_fonts=False).families())})")
+    return pdf
+
+
+def _one_line(text: str) -> str:
+    return " ".join(str(text).split())

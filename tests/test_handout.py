@@ -1,0 +1,462 @@
+"""Worked-solution handouts (issue 11): the numbers of ``solve --json`` in every format, figures, layout, errors.
+
+The handouts are built once per module (a few seconds: every figure is
+drawn) and each test reads the rendered PDF, HTML or Markdown.
+"""
+
+from __future__ import annotations
+
+import html.parser
+import io
+import json
+import math
+import os
+import re
+import subprocess
+import sys
+from contextlib import redirect_stderr, redirect_stdout
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+pypdf = pytest.importorskip("pypdf")
+pdfium = pytest.importorskip("pypdfium2")
+
+from graphkin import handout  # noqa: E402
+from graphkin.handout import maths as M  # noqa: E402
+
+ROOT = Path(__file__).resolve().parent
+BASELINES = ROOT / "baseline"
+PROBLEMS = ("double_slider", "strip_cutter")
+
+
+# -- the handouts and the JSON they must agree with ------------------------------------------------
+def _main(argv) -> tuple[int, str, str]:
+    """``graphkin ARGV`` in this process: exit code, stdout, stderr.
+
+    Through ``graphkin.cli.main`` once ``handout`` is wired into it; until
+    then through the same two steps main takes (parse, run, and a
+    GraphkinError printed as one line with exit code 2).
+    """
+    from graphkin import cli, cli_handout
+    from graphkin.errors import GraphkinError
+
+    out, err = io.StringIO(), io.StringIO()
+    with redirect_stdout(out), redirect_stderr(err):
+        try:
+            parser = cli._parser()
+            wired = "handout" in parser._subparsers._group_actions[0].choices
+        except Exception:
+            wired = False
+        if wired or argv[0] != "handout":
+            code = cli.main(argv)
+        else:
+            import argparse
+
+            p = argparse.ArgumentParser(prog="graphkin")
+            cli_handout.add_parser(p.add_subparsers(dest="command", required=True))
+            try:
+                code = cli_handout.run(p.parse_args(argv))
+            except GraphkinError as exc:
+                print(f"graphkin: error: {exc}", file=sys.stderr)
+                code = 2
+    return code, out.getvalue(), err.getvalue()
+
+
+@pytest.fixture(scope="module")
+def built(tmp_path_factory):
+    """Each problem's key: the document, its PDF, HTML and Markdown, and the ``solve --json`` of the problem."""
+    folder = tmp_path_factory.mktemp("handouts")
+    out = {}
+    for name in PROBLEMS:
+        doc = handout.build(name)
+        paths = {fmt: folder / f"{name}.{fmt}" for fmt in ("pdf", "html", "md")}
+        for p in paths.values():
+            handout.write(doc, p)
+        code, stdout, _ = _main(["solve", name, "--json"])
+        assert code == 0
+        out[name] = {"doc": doc, "paths": paths, "json": json.loads(stdout),
+                     "pdf_text": "\n".join(page.extract_text() for page in pypdf.PdfReader(paths["pdf"]).pages)}
+    return out
+
+
+def _expected(entry: dict) -> dict[str, str]:
+    """What the handout must print for one position of ``solve --json``, formatted as the handout formats.
+
+    Keys say where a number comes from (for the failure message); the values
+    are derived from the JSON's SI values with the handout's own formatter.
+    """
+    want = {}
+    for link, d in entry["links"].items():
+        want[f"θ{link}"] = M.fmt_fixed(math.degrees(d["theta"]))
+        want[f"ω{link}"] = M.fmt(d["omega"])
+        want[f"α{link}"] = M.fmt(d["alpha"])
+        if any(d["inertia_force"]):
+            want[f"|a_G{link}|"] = M.fmt(M.size_of(d["a_G"]))
+            want[f"∠a_G{link}"] = M.fmt_fixed(M.angle_of(d["a_G"]))
+            want[f"|F{link}i|"] = M.fmt(M.size_of(d["inertia_force"]))
+            want[f"∠F{link}i"] = M.fmt_fixed(M.angle_of(d["inertia_force"]))
+        if d["inertia_torque"]:
+            want[f"T{link}i"] = M.fmt(d["inertia_torque"])
+        if d["h"] is not None:
+            want[f"h{link} [mm]"] = M.fmt(d["h"] * 1e3)
+    for name, F in entry["forces"].items():
+        want[f"|{name}|"] = M.fmt(M.size_of(F))
+        i, j = (int(c) for c in re.findall(r"\d", name)[:2])
+        if i < j:  # the table prints F_ij with i < j; F_ji = −F_ij
+            want[f"∠{name}"] = M.fmt_fixed(M.angle_of(F))
+            for axis, value in zip("xy", F):
+                if abs(value) > 1e-9 * M.size_of(F):
+                    want[f"{name}{axis}"] = M.fmt(value)
+    want[entry["driver"]["name"]] = M.fmt(entry["driver"]["value"])
+    g = entry["graphical"]
+    want["force scale"] = M.fmt(g["force_scale_N_per_mm"])
+    for name, F in g["forces"].items():
+        want[f"graphical |{name}|"] = M.fmt(M.size_of(F))
+    return want
+
+
+def _worked(b) -> dict:
+    """The ``solve --json`` position the handout works out."""
+    return b["json"]["positions"][b["doc"]["worked"][0]["index"]]
+
+
+def _missing(text: str, want: dict) -> dict:
+    return {k: v for k, v in want.items() if v not in text}
+
+
+@pytest.mark.parametrize("name", PROBLEMS)
+def test_pdf_text_carries_the_numbers_of_solve_json(built, name):
+    b = built[name]
+    want = _expected(_worked(b))
+    assert len(want) > 20
+    assert _missing(b["pdf_text"], want) == {}
+
+
+def test_the_worked_position_of_a_cycle_is_where_the_driving_effort_peaks(built):
+    b = built["strip_cutter"]
+    efforts = [abs(p["driver"]["value"]) if p["valid"] else -1 for p in b["json"]["positions"]]
+    assert b["doc"]["worked"][0]["index"] == int(np.argmax(efforts))
+    assert len(built["double_slider"]["doc"]["worked"]) == 1 and built["double_slider"]["doc"]["worked"][0]["index"] == 0
+
+
+def test_the_whole_cycle_carries_the_numbers_of_cycle_json(built):
+    from graphkin import catalog
+    from graphkin.analysis import sweep
+    from graphkin.cli import cycle_data
+
+    data = cycle_data(sweep(catalog.load("strip_cutter")), handout.content.DEFAULT_CS)
+    fw, jfi, e = data["flywheel"], data["joint_force_index"], data["effort"]
+    want = {"E": M.fmt(fw["E"]), "I_s": M.fmt(fw["I_s"]), "T_avg": M.fmt(fw["T_avg"]),
+            "peak": M.fmt(e["max"]["value"]), "lowest": M.fmt(e["min"]["value"]),
+            "disk radius": M.fmt(fw["disk"]["radius"] * 1e3), "JFI": M.fmt(jfi["peak"]["value"])}
+    want |= {f"ΔE{k}": M.fmt(a) for k, a in enumerate(fw["areas"])}
+    want |= {f"peak {k}": M.fmt(v["peak"]["value"]) for k, v in data["forces"].items()}
+    assert _missing(built["strip_cutter"]["pdf_text"], want) == {}
+
+
+@pytest.mark.parametrize("name", PROBLEMS)
+def test_every_figure_named_in_the_text_is_present(built, name):
+    b = built[name]
+    text = b["pdf_text"]
+    figures = [blk for blk in b["doc"]["blocks"] if blk["kind"] == "figure"]
+    named = set(re.findall(r"Figure (\d+)", text))
+    captions = set(re.findall(r"Figure (\d+)\. ", text))
+    assert named and named <= captions
+    assert captions == {str(k) for k in range(1, len(figures) + 1)}
+    # Each picture is one vector drawing in the PDF: typst turns an SVG into a form XObject.
+    forms = 0
+    for page in pypdf.PdfReader(b["paths"]["pdf"]).pages:
+        xobjects = page["/Resources"].get("/XObject", {})
+        forms += sum(1 for x in xobjects.values() if x.get_object().get("/Subtype") == "/Form")
+    pictures = sum(len(blk["pictures"]) for blk in figures)
+    assert forms >= pictures
+    # No raster image: the figures stay vector.
+    assert not any(x.get_object().get("/Subtype") == "/Image" for page in pypdf.PdfReader(b["paths"]["pdf"]).pages
+                   for x in page["/Resources"].get("/XObject", {}).values())
+
+
+# -- the page image ----------------------------------------------------------------------------------------
+BASELINE_PAGE = 2           # the third page: tables, equations, the matrix
+DPI = 100
+DOWNSAMPLE = 8              # average over 8×8 pixel blocks (2 mm): antialiasing and hinting wash out
+TOLERANCE = 1.5             # mean absolute difference allowed, grey levels out of 255
+# Measured: the same PDF with text antialiasing switched off differs by 0.9; the text block moved by
+# 2 mm (margins) by 2.0, the text 5 % larger by 3.6, a table left out by 6.4.
+
+
+def _page_image(pdf_bytes: bytes, page: int, **render) -> np.ndarray:
+    """A page rendered at DPI in grey, averaged over DOWNSAMPLE² blocks."""
+    doc = pdfium.PdfDocument(pdf_bytes)
+    img = doc[page].render(scale=DPI / 72, grayscale=True, **render).to_pil().convert("L")
+    img = np.asarray(img, dtype=float)
+    h, w = (s // DOWNSAMPLE * DOWNSAMPLE for s in img.shape)
+    return img[:h, :w].reshape(h // DOWNSAMPLE, DOWNSAMPLE, w // DOWNSAMPLE, DOWNSAMPLE).mean(axis=(1, 3))
+
+
+def _baseline(name: str, image: np.ndarray) -> np.ndarray:
+    from PIL import Image
+
+    path = BASELINES / f"handout_{name}_p{BASELINE_PAGE + 1}.png"
+    if os.environ.get("GRAPHKIN_UPDATE_BASELINES") or not path.exists():
+        if not os.environ.get("GRAPHKIN_UPDATE_BASELINES"):
+            pytest.fail(f"no baseline {path}: run with GRAPHKIN_UPDATE_BASELINES=1 to make it, and look at it")
+        path.parent.mkdir(exist_ok=True)
+        Image.fromarray(np.round(image).astype(np.uint8)).save(path)
+    return np.asarray(Image.open(path).convert("L"), dtype=float)
+
+
+def _difference(a: np.ndarray, b: np.ndarray) -> float:
+    if a.shape != b.shape:
+        return math.inf
+    return float(np.mean(np.abs(a - b)))
+
+
+def test_a_page_matches_its_baseline(built):
+    pdf = built["double_slider"]["paths"]["pdf"].read_bytes()
+    image = _page_image(pdf, BASELINE_PAGE)
+    assert _difference(image, _baseline("double_slider", image)) < TOLERANCE
+    # Robust to how the glyphs are smoothed: without any text antialiasing the page still matches.
+    rough = _page_image(pdf, BASELINE_PAGE, no_smoothtext=True, no_smoothpath=True)
+    assert _difference(rough, _baseline("double_slider", image)) < TOLERANCE
+
+
+@pytest.mark.parametrize("break_it", ["margins", "larger text", "a block left out"])
+def test_a_broken_layout_fails_the_page_comparison(built, monkeypatch, break_it):
+    from graphkin.handout import typst as T
+
+    doc = dict(built["double_slider"]["doc"])
+    if break_it == "margins":
+        source = T.source
+        monkeypatch.setattr(T, "source", lambda d, **kw: source(d, **kw).replace("margin: (x: 18mm", "margin: (x: 20mm"))
+    elif break_it == "larger text":
+        source = T.source
+        monkeypatch.setattr(T, "source", lambda d, **kw: source(d, **kw).replace("size: 10pt", "size: 10.5pt"))
+    else:
+        tables = [k for k, blk in enumerate(doc["blocks"]) if blk["kind"] == "table"]
+        doc["blocks"] = doc["blocks"][:tables[2]] + doc["blocks"][tables[2] + 1:]  # the kinematics table
+    image = _page_image(T.render(doc), BASELINE_PAGE)
+    reference = _baseline("double_slider", image)
+    assert _difference(image, reference) > TOLERANCE
+
+
+# -- HTML ----------------------------------------------------------------------------------------------------
+class _Page(html.parser.HTMLParser):
+    def __init__(self):
+        super().__init__(convert_charrefs=True)
+        self.text, self.refs, self.tags, self.styles = [], [], [], []
+        self._style = False
+
+    def handle_starttag(self, tag, attrs):
+        self.tags.append(tag)
+        self._style = tag == "style"
+        for k, v in attrs:
+            if k in ("src", "href", "xlink:href", "action", "data", "poster", "srcset") and v:
+                self.refs.append(v)
+            if k == "style" and v:
+                self.styles.append(v)
+
+    def handle_endtag(self, tag):
+        self._style = False
+
+    def handle_data(self, data):
+        (self.styles if self._style else self.text).append(data)
+
+
+@pytest.mark.parametrize("name", PROBLEMS)
+def test_html_is_one_self_contained_file_with_the_same_numbers(built, name):
+    b = built[name]
+    page = b["paths"]["html"].read_text(encoding="utf-8")
+    parsed = _Page()
+    parsed.feed(page)
+    parsed.close()
+    assert parsed.tags.count("svg") == sum(len(blk["pictures"]) for blk in b["doc"]["blocks"] if blk["kind"] == "figure")
+    assert "math" in parsed.tags
+    assert not {"script", "link", "iframe", "img", "object", "embed"} & set(parsed.tags)
+    # Every reference stays inside the file (#id); nothing names a network address, not even a namespace.
+    assert all(ref.startswith("#") for ref in parsed.refs), [r for r in parsed.refs if not r.startswith("#")][:3]
+    for css in parsed.styles:
+        assert "@import" not in css
+        assert all(u.strip(" '\"").startswith("#") for u in re.findall(r"url\(([^)]*)\)", css))
+    assert not re.search(r"https?:|//[a-z0-9]", page.replace("// ", ""), re.I)
+    text = "".join(parsed.text)
+    assert _missing(text, _expected(_worked(b))) == {}
+
+
+def test_html_ids_are_unique_across_figures(built):
+    page = built["strip_cutter"]["paths"]["html"].read_text(encoding="utf-8")
+    ids = re.findall(r'\bid="([^"]+)"', page)
+    assert len(ids) == len(set(ids)) > 0
+
+
+# -- Markdown ----------------------------------------------------------------------------------------------------
+@pytest.mark.parametrize("name", PROBLEMS)
+def test_markdown_has_the_numbers_and_its_figures(built, name):
+    b = built[name]
+    path = b["paths"]["md"]
+    text = path.read_text(encoding="utf-8")
+    # In $…$ a number is LaTeX (-73.78, a negative one braced); in prose it has the true minus sign.
+    plain = text.replace("{-", "-").replace(M.MINUS, "-")
+    want = {k: v.replace(M.MINUS, "-") for k, v in _expected(_worked(b)).items()}
+    assert _missing(plain, want) == {}
+    links = re.findall(r"!\[[^\]]*\]\(([^)]+)\)", text)
+    assert len(links) == sum(len(blk["pictures"]) for blk in b["doc"]["blocks"] if blk["kind"] == "figure")
+    for link in links:
+        assert (path.parent / link).read_text(encoding="utf-8").lstrip().startswith("<?xml")
+    assert "$$" in text
+
+
+# -- versions --------------------------------------------------------------------------------------------------------
+def test_an_exercise_sheet_has_no_answers_and_its_key_has_them(tmp_path):
+    from graphkin import exercises
+
+    key = exercises.key("strip_cutter_cut", "s007", "course")
+    answers = [q["answer"]["text"] for q in key["questions"]]
+    sheet = handout.build("strip_cutter_cut", student="s007", secret="course")
+    keydoc = handout.build("strip_cutter_cut", student="s007", secret="course", version="key")
+    assert sheet["version"] == "sheet" and keydoc["version"] == "key"
+    sheet_html, _ = handout.render(sheet, "html")
+    key_html, _ = handout.render(keydoc, "html")
+    for g in key["data"]:
+        assert g["shown"].split(" = ")[1] in sheet_html.decode()
+    for text in answers:
+        assert text not in sheet_html.decode()
+        assert text in key_html.decode()
+    kinds = {b["kind"] for b in sheet["blocks"]}
+    assert "equation" not in kinds  # no working shown
+
+
+def test_blank_gives_the_free_bodies_to_scale_and_room_for_every_polygon():
+    doc = handout.build("double_slider", version="blank")
+    c = handout.content.subject("double_slider").construction(0)
+    spaces = [b for b in doc["blocks"] if b["kind"] == "space"]
+    assert len(spaces) == sum(1 for s in c.steps if s.polygon) > 0
+    assert all(b["height"] >= 50 for b in spaces)
+    figures = [b for b in doc["blocks"] if b["kind"] == "figure"]
+    assert any(p.key == "given" for b in figures for p in b["pictures"])
+    text = json.dumps([b.get("runs", "") for b in doc["blocks"]], ensure_ascii=False, default=str)
+    assert M.fmt(c.force_scale) in text
+    # No answer: neither a joint force nor the driver's effort.
+    assert M.fmt(abs(c.effort)) not in text
+    assert not any(b["kind"] == "equation" for b in doc["blocks"])
+
+
+# -- errors: one line, exit code 2 -------------------------------------------------------------------------------------
+def _one_error_line(err: str) -> str:
+    lines = err.strip().splitlines()
+    assert len(lines) == 1, err
+    assert lines[0].startswith("graphkin: error: ") and "Traceback" not in err
+    return lines[0]
+
+
+def test_an_unknown_suffix_is_refused_before_anything_is_computed(tmp_path, monkeypatch):
+    def boom(*a, **k):
+        raise AssertionError("computed before checking the destination")
+
+    monkeypatch.setattr(handout, "build", boom)
+    code, _, err = _main(["handout", "double_slider", "-o", str(tmp_path / "out.docx")])
+    assert code == 2 and ".pdf, .html or .md" in _one_error_line(err)
+    assert not (tmp_path / "out.docx").exists()
+
+
+def test_an_unwritable_output_gives_one_line(tmp_path, monkeypatch):
+    monkeypatch.setattr(handout, "build", lambda *a, **k: pytest.fail("computed before checking the destination"))
+    blocker = tmp_path / "a_file"
+    blocker.write_text("x")
+    code, _, err = _main(["handout", "double_slider", "-o", str(blocker / "out.pdf")])
+    assert code == 2 and "is a file, not a folder" in _one_error_line(err)
+
+
+def test_a_typst_error_gives_one_line(tmp_path, monkeypatch):
+    from graphkin.handout import typst as T
+
+    monkeypatch.setattr(T, "source", lambda doc, **kw: "#let broken = (\n")
+    code, _, err = _main(["handout", "single_link", "-o", str(tmp_path / "x.pdf")])
+    assert code == 2 and "typst:" in _one_error_line(err)
+    assert not (tmp_path / "x.pdf").exists()
+
+
+def test_a_missing_font_gives_one_line(tmp_path, monkeypatch):
+    from graphkin.handout import typst as T
+
+    monkeypatch.setattr(T, "FONT", "No Such Font Sans")
+    code, _, err = _main(["handout", "single_link", "-o", str(tmp_path / "x.pdf")])
+    line = _one_error_line(err)
+    assert code == 2 and "no such font sans" in line.lower() and "Libertinus Serif" in line
+
+
+@pytest.mark.parametrize("argv, words", [
+    (["handout", "strip_cutter_cut", "-o", "OUT/x.pdf"], "--student"),
+    (["handout", "double_slider", "--at", "nonsense", "-o", "OUT/x.pdf"], "--at"),
+    (["handout", "strip_cutter_cut", "--student", "s1", "--at", "130 deg", "-o", "OUT/x.pdf"], "--at"),
+    (["handout", "strip_cutter_cut", "--roster", "ROSTER", "-o", "OUT/a_file"], "folder"),
+    (["handout", "double_slider", "--format", "html", "-o", "OUT/x.pdf"], "--roster"),
+])
+def test_bad_requests_give_one_line(tmp_path, argv, words):
+    (tmp_path / "a_file").write_text("x")
+    (tmp_path / "roster.csv").write_text("student\ns1\n")
+    argv = [a.replace("OUT", str(tmp_path)).replace("ROSTER", str(tmp_path / "roster.csv")) for a in argv]
+    code, _, err = _main(argv)
+    assert code == 2 and words in _one_error_line(err)
+
+
+# -- a class at once ----------------------------------------------------------------------------------------------------
+@pytest.mark.parametrize("workers", [1, 2])
+def test_a_roster_gives_a_sheet_and_a_key_per_student(built, tmp_path, workers):
+    """In this process, and on two worker processes started after typst has run here (``built``): workers
+    forked from such a process could wait for ever on a lock held by one of typst's threads."""
+    from graphkin.handout.batch import CHUNK, file_stem, make_roster
+
+    students = ["s001", "s002", "Ana María", "s004"] + [f"t{k}" for k in range(CHUNK)]  # two tasks
+    done = []
+    rows = make_roster("double_slider_forces", students, tmp_path, secret="k", fmt="html", workers=workers,
+                       progress=done.append)
+    assert [r[0] for r in rows] == students and all(not r[2] for r in rows)
+    assert sum(done) == len(students)
+    for st in students:
+        for version in ("sheet", "key"):
+            page = (tmp_path / f"{file_stem(st)}_{version}.html").read_text(encoding="utf-8")
+            assert f"student {st}" in page
+    assert not list(tmp_path.glob(".*"))  # atomic writes leave no temporary file behind
+    assert len(list(tmp_path.iterdir())) == 2 * len(students)
+
+
+def test_the_roster_command(tmp_path):
+    (tmp_path / "roster.csv").write_text("student\ns1\ns2\n")
+    code, _, err = _main(["handout", "double_slider_forces", "--roster", str(tmp_path / "roster.csv"),
+                          "--secret", "k", "--key", "-o", str(tmp_path / "class")])
+    assert code == 0, err
+    assert sorted(p.name for p in (tmp_path / "class").iterdir()) == ["s1_key.pdf", "s2_key.pdf"]
+    assert "2 files written" in err
+
+
+# -- the maths, and what importing costs --------------------------------------------------------------------------------------
+def test_every_math_node_compiles_in_typst_and_converts_to_mathml():
+    import typst
+    from latex2mathml.converter import convert
+
+    node = M.row(M.sub(M.i("F"), M.t("23")), M.op("="), M.frac(M.absval(M.i("T")), M.vec(M.i("F"))), M.op("+"),
+                 M.sup(M.paren(M.n(-4.364)), "2"), M.pair((7.5586, -25.978), "N"), M.op("∠"), M.n("−73.78"),
+                 M.op("°"), M.op("·"), M.op("×"), M.i("θ"), M.SP, M.mat([[M.n(1), M.n(-2)], [M.n(0), M.t("x")]]),
+                 M.column([M.t("a, b")]), M.i("ab"))
+    pdf = typst.compile(f"$ {M.to_typst(node)} $".encode(), format="pdf", ignore_system_fonts=True)
+    text = pypdf.PdfReader(io.BytesIO(pdf)).pages[0].extract_text()
+    for number in ("23", "7.559", "−25.98", "−73.78", "−4.364"):
+        assert number in text
+    mathml = convert(M.to_latex(node))
+    assert "<mfrac>" in mathml and "<mtable>" in mathml and "25.98" in mathml
+    assert M.to_text(node).startswith("F23 = (|T|)/(F)")
+
+
+def test_fmt_prints_as_the_books_do():
+    assert [M.fmt(x) for x in (27.0597, -73.7812, 0.86594, 7580.38, 1.0, -0.0)] == \
+        ["27.06", "−73.78", "0.8659", "7580", "1", "0"]
+    assert M.fmt_fixed(-0.001) == "0.00" and M.fmt_fixed(180.0) == "180.00"
+
+
+def test_importing_the_handouts_loads_neither_matplotlib_nor_typst():
+    code = ("import sys, graphkin, graphkin.handout, graphkin.cli_handout; "
+            "print(sorted(m for m in ('matplotlib', 'typst', 'pint', 'latex2mathml') if m in sys.modules))")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True, cwd=ROOT.parent)
+    assert out.stdout.strip() == "[]"
