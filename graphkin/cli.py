@@ -17,8 +17,16 @@ import numpy as np
 from .errors import GraphkinError
 
 
+class _Parser(argparse.ArgumentParser):
+    """argparse, but a mistake on the command line is one line on stderr like every other error."""
+
+    def error(self, message):
+        # argparse's own error prints the usage (several lines) first; the usage is one --help away.
+        self.exit(2, f"graphkin: error: {message}; see '{self.prog} --help'\n")
+
+
 def _parser() -> argparse.ArgumentParser:
-    p = argparse.ArgumentParser(prog="graphkin", description="Kinetostatics of planar machinery.")
+    p = _Parser(prog="graphkin", description="Kinetostatics of planar machinery.")
     sub = p.add_subparsers(dest="command", required=True)
     sub.add_parser("list", help="list the catalog problems")
     s = sub.add_parser("solve", help="solve a problem: a catalog name or a TOML file")
@@ -37,8 +45,10 @@ def _parser() -> argparse.ArgumentParser:
     c.add_argument("--json", action="store_true", help="print every array as JSON in SI units (schema: docs/json.md)")
     c.add_argument("--figure", metavar="FILE", help="write the cycle figure (.png, .svg or .pdf)")
     from .cli_exercises import add_parser
+    from .cli_handout import add_parser as add_handout
 
     add_parser(sub)
+    add_handout(sub)
     return p
 
 
@@ -51,7 +61,14 @@ def _positions(problem, text: str):
     if not text.strip() or any(not part.strip() for part in parts):
         raise GraphkinError(f"--at {text!r}: give one or more positions with units, separated by commas, e.g. "
                             + ("'124 deg,140 deg'" if crank else "'200 mm,250 mm'"))
-    return np.array([to_si(part.strip(), dim, field="--at", file="command line") for part in parts])
+    from .model.ranges import complaint
+
+    q = np.array([to_si(part.strip(), dim, field="--at", file="command line") for part in parts])
+    for x, part in zip(q, parts):
+        why = complaint(x, "angle" if crank else "coordinate")
+        if why:
+            raise GraphkinError(f"--at: {part.strip()!r} {why}")
+    return q
 
 
 def _check_outputs(figure=None, steps=None) -> None:
@@ -90,11 +107,20 @@ def _solve(args) -> int:
     if args.figure or args.steps:
         _figures(problem, result, graphical, args.figure, args.steps, sys.stderr if args.json else sys.stdout)
     bad = np.flatnonzero(~result.valid)
-    for i in bad:
-        q = result.kinematics.q[i]
-        where = f"θ = {math.degrees(q):.6g}°" if problem.mechanism.driver.kind == "crank" else f"s = {q * 1e3:.6g} mm"
-        print(f"graphkin: error: {problem.name}: {where}: {result.reason(i)}", file=sys.stderr)
+    if len(bad):
+        # One line, however many positions fail: the first names the position and the reason.
+        i = bad[0]
+        more = f" (and {len(bad) - 1} more of the {result.n} positions)" if len(bad) > 1 else ""
+        print(f"graphkin: error: {problem.name}: {position_text(problem, result.kinematics.q[i])}: "
+              f"{result.reason(i)}{more}", file=sys.stderr)
     return 2 if len(bad) else 0
+
+
+def position_text(problem, q) -> str:
+    """``θ = 89.99999999999°`` or ``s = 499.99 mm``: as many digits as name the position (a dead point's neighbour)."""
+    from .kinematics import position_text as text
+
+    return text(q, problem.mechanism.driver.kind == "crank")
 
 
 PROGRESS_DELAY = 1.0
@@ -102,10 +128,12 @@ PROGRESS_DELAY = 1.0
 
 
 def _figures(problem, result, graphical, figure, steps, say):
-    """Write the side-by-side figure(s) and the step frames; say where they went.
+    """Write the side-by-side figure(s) and the step frames; say which files went where.
 
     A batch that takes more than a second shows a tqdm progress bar on stderr,
-    one tick per position drawn.
+    one tick per position drawn. Each file is written whole or not at all
+    (:func:`graphkin.draw.save`); if the batch stops part-way (Ctrl-C, a full
+    disk), the one-line message says how many files were written and the last.
     """
     from pathlib import Path
 
@@ -115,21 +143,42 @@ def _figures(problem, result, graphical, figure, steps, say):
 
     many = result.n > 1
     drawn = [(i, c) for i, c in enumerate(graphical) if c is not None and c.valid]
-    for i, c in tqdm(drawn, desc="graphkin: drawing", unit="position", delay=PROGRESS_DELAY, file=sys.stderr,
-                      leave=False, disable=None):  # disable=None: no bar when stderr is not a terminal
-        tag = f"_{i + 1}" if many else ""
-        if figure:
-            path = Path(figure)
-            path = path.with_name(f"{path.stem}{tag}{path.suffix}")
-            path.parent.mkdir(parents=True, exist_ok=True)
-            draw.save(draw.draw_solution(c, result), path)
-            tqdm.write(f"figure written to {path}", file=say)
-        if steps:
-            folder = Path(steps)
-            folder.mkdir(parents=True, exist_ok=True)
-            for k, fig in enumerate(draw.draw_steps(c), start=1):
-                draw.save(fig, folder / f"{Path(problem.name).stem}{tag}_step{k:02d}.png")
-            tqdm.write(f"{len(c.steps)} construction steps written to {folder}/", file=say)
+    written: list[Path] = []
+    try:
+        for i, c in tqdm(drawn, desc="graphkin: drawing", unit="position", delay=PROGRESS_DELAY, file=sys.stderr,
+                          leave=False, disable=None):  # disable=None: no bar when stderr is not a terminal
+            tag = f"_{i + 1}" if many else ""
+            if figure:
+                path = Path(figure)
+                path = path.with_name(f"{path.stem}{tag}{path.suffix}")
+                path.parent.mkdir(parents=True, exist_ok=True)
+                written.append(draw.save(draw.draw_solution(c, result), path))
+                tqdm.write(f"figure written to {path}", file=say)
+            if steps:
+                folder = Path(steps)
+                folder.mkdir(parents=True, exist_ok=True)
+                frames = []
+                for k, fig in enumerate(draw.draw_steps(c), start=1):
+                    frames.append(draw.save(fig, folder / f"{Path(problem.name).stem}{tag}_step{k:02d}.png"))
+                    written.append(frames[-1])
+                tqdm.write(f"{len(frames)} construction steps written to {folder}/ "
+                           f"({frames[0].name} … {frames[-1].name})" if frames else
+                           f"no construction steps to write for position {i + 1}", file=say)
+    except KeyboardInterrupt:
+        raise KeyboardInterrupt(_batch_note(written)) from None
+    except OSError as exc:
+        where = exc.filename or (figure or steps)
+        raise GraphkinError(f"{where}: cannot be written ({exc.strerror or exc}); {_batch_note(written)}") from None
+    except GraphkinError as exc:
+        raise GraphkinError(f"{exc}; {_batch_note(written)}") from None
+
+
+def _batch_note(written) -> str:
+    """``"3 files were written before it stopped, the last build/out_3.png"``, or that none were."""
+    if not written:
+        return "no file was written"
+    return (f"{len(written)} file{'s' * (len(written) != 1)} {'were' if len(written) != 1 else 'was'} written "
+            f"before it stopped, the last {written[-1]}")
 
 
 def _cycle(args) -> int:
@@ -137,18 +186,23 @@ def _cycle(args) -> int:
     from .analysis import sweep
 
     from .analysis.flywheel import check_Cs
+    from .model.ranges import MAX_POSITIONS
 
     _check_outputs(args.figure)
     if args.cs is not None:
         check_Cs(args.cs, "--cs")
+    if args.n is not None and not 2 <= args.n <= MAX_POSITIONS:
+        raise GraphkinError(f"--n {args.n}: n must be a whole number of positions from 2 to {MAX_POSITIONS:,} "
+                            "(1° steps need 360, 0.01° steps 36,000)")
     problem = catalog.load(args.problem)
+    if args.n is not None and problem.mechanism.driver.kind != "crank":
+        raise GraphkinError(f"{problem.name}: --n: the driver is a slider, so there is no turn to divide into "
+                            "positions; leave out --n to sweep the problem's own positions")
     with _Progress(f"sweeping {problem.name}"):
         cycle = sweep(problem, args.n)
-        if args.cs is not None and not cycle.closed:
-            kind = problem.mechanism.driver.kind
-            raise GraphkinError(f"{problem.name}: --cs sizes a flywheel over one full turn of a crank, but "
-                                + ("the driver is a slider" if kind != "crank" else
-                                   "the problem's positions are not one full turn: give --n N"))
+        why = cycle.why_no_flywheel() if args.cs is not None else None
+        if why:
+            raise GraphkinError(f"{problem.name}: --cs {args.cs:g}: {why}")
         data = cycle_data(cycle, args.cs)
     if args.json:
         print(json.dumps(data, indent=2, ensure_ascii=False))
@@ -166,7 +220,7 @@ def _cycle(args) -> int:
     if len(bad):
         i = bad[0]
         print(f"graphkin: error: {problem.name}: {len(bad)} of {cycle.n} positions have no solution, the first at"
-              f" {_where(cycle, cycle.q[i])}: {cycle.analysis.reason(i)}", file=sys.stderr)
+              f" {position_text(problem, cycle.q[i])}: {cycle.analysis.reason(i)}", file=sys.stderr)
         return 2
     return 0
 
@@ -425,8 +479,14 @@ def _one_line_warnings() -> None:
 
 
 def main(argv=None) -> int:
-    """Entry point of the ``graphkin`` command."""
-    args = _parser().parse_args(argv)
+    """Entry point of the ``graphkin`` command; returns the exit code (2 for bad input, 130 for Ctrl-C)."""
+    try:
+        args = _parser().parse_args(argv)
+    except SystemExit as exc:  # --help, or a mistake argparse caught: its message is already printed
+        return exc.code if isinstance(exc.code, int) else 2
+    except KeyboardInterrupt:
+        print("graphkin: interrupted", file=sys.stderr)
+        return 130
     _one_line_warnings()
     try:
         if args.command == "cycle":
@@ -435,6 +495,10 @@ def main(argv=None) -> int:
             from .cli_exercises import run
 
             return run(args)
+        if args.command == "handout":
+            from .cli_handout import run as handout
+
+            return handout(args)
         return _list() if args.command == "list" else _solve(args)
     except GraphkinError as exc:
         print(f"graphkin: error: {exc}", file=sys.stderr)
@@ -442,9 +506,10 @@ def main(argv=None) -> int:
     except BrokenPipeError:  # output piped into `head`: not an error of ours
         sys.stderr.close()
         return 0
-    except KeyboardInterrupt:
-        # Every file is written to a temporary file and moved into place, so Ctrl-C leaves none half-written.
-        print("graphkin: interrupted", file=sys.stderr)
+    except KeyboardInterrupt as exc:
+        # Every file is written to a temporary file and moved into place, so Ctrl-C leaves none half-written;
+        # a batch adds which files it had written (:func:`_figures`).
+        print("graphkin: interrupted" + (f": {exc.args[0]}" if exc.args and exc.args[0] else ""), file=sys.stderr)
         return 130
     except OSError as exc:
         # A write that passed the checks made before the work (a full disk, a folder removed meanwhile).

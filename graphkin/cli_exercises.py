@@ -66,6 +66,20 @@ def add_parser(sub) -> None:
 
 
 def run(args) -> int:
+    """Run ``graphkin exercise ACTION``; returns the exit code."""
+    code = _run(args)
+    if code == 0 and args.action in ("key", "grade", "export") and not _secret(args):
+        # Said once the work is done: a command that fails prints its one error line and nothing else.
+        print("graphkin: note: no course secret (--secret or GRAPHKIN_SECRET): students can compute these keys "
+              "themselves", file=sys.stderr)
+    return code
+
+
+def _secret(args) -> str:
+    return args.secret if args.secret is not None else os.environ.get("GRAPHKIN_SECRET", "")
+
+
+def _run(args) -> int:
     from . import exercises
 
     if args.action == "list":
@@ -76,7 +90,7 @@ def run(args) -> int:
     if args.action == "export":
         return _export(args)
     if args.output:
-        check_destination(args.output)
+        check_destination(args.output, "-o")
     figure = getattr(args, "figure", None)
     if figure:
         if args.roster:
@@ -84,10 +98,7 @@ def run(args) -> int:
         check_destination(figure, "--figure")
         if Path(figure).suffix.lower() not in (".png", ".svg", ".pdf"):
             raise GraphkinError(f"--figure {figure}: the file must end in .png, .svg or .pdf")
-    secret = args.secret if args.secret is not None else os.environ.get("GRAPHKIN_SECRET", "")
-    if args.action in ("key", "grade") and not secret:
-        print("graphkin: note: no course secret (--secret or GRAPHKIN_SECRET): students can compute these keys "
-              "themselves", file=sys.stderr)
+    secret = _secret(args)
     ex = exercises.load(args.exercise)
     if args.action == "grade":
         return _grade(ex, args, secret)
@@ -110,10 +121,7 @@ def _export(args) -> int:
     from .exercises import platforms
 
     platforms.platform(args.to)
-    secret = args.secret if args.secret is not None else os.environ.get("GRAPHKIN_SECRET", "")
-    if not secret:
-        print("graphkin: note: no course secret (--secret or GRAPHKIN_SECRET): students can compute their keys "
-              "themselves", file=sys.stderr)
+    secret = _secret(args)
     students = _roster(args.roster) if args.roster else None
     with _progress(len(students or ()), "export") as bar:
         written = platforms.export(args.exercise, args.to, args.output, secret=secret, students=students,
@@ -129,6 +137,7 @@ def _given_figure(v, figure) -> None:
     c = v.construction
     if not c.valid:
         raise GraphkinError(f"--figure: {v.exercise.id} has no single position to draw (a whole-cycle exercise)")
+    Path(figure).parent.mkdir(parents=True, exist_ok=True)  # checked writable before any work: check_destination
     draw.save(draw.draw_given(c), figure)
     print(f"figure written to {figure}", file=sys.stderr)
 
@@ -145,7 +154,7 @@ def _progress(total: int, label: str):
 
 def _emit(text: str, output) -> None:
     if output:
-        write_text(output, text if text.endswith("\n") else text + "\n")
+        write_text(output, text if text.endswith("\n") else text + "\n", "-o")
         print(f"written to {output}", file=sys.stderr)
     else:
         print(text)
@@ -205,13 +214,14 @@ def _csv(rows: list[dict]) -> str:
 
 def _answers_json(path) -> dict:
     text = read_text(path, "answers")
+    name = "standard input" if str(path) == "-" else path
     try:
         data = json.loads(text)
     except json.JSONDecodeError as exc:
-        raise GraphkinError(f"answers {path}: not valid JSON ({exc.msg} at line {exc.lineno}, column {exc.colno}); "
+        raise GraphkinError(f"answers {name}: not valid JSON ({exc.msg} at line {exc.lineno}, column {exc.colno}); "
                             'write {"F23": "27.06 N ∠ -73.78°", ...}') from None
     if not isinstance(data, dict):
-        raise GraphkinError(f'answers {path}: must be a JSON object of question id to answer, e.g. {{"F23": "27.06 N"}}')
+        raise GraphkinError(f'answers {name}: must be a JSON object of question id to answer, e.g. {{"F23": "27.06 N"}}')
     return data
 
 

@@ -20,7 +20,22 @@ class GraphkinWarning(UserWarning):
 
 
 class ModelError(GraphkinError):
-    """The mechanism as described cannot be built (unknown link, zero length, ...)."""
+    """The mechanism as described cannot be built (unknown link, zero length, ...).
+
+    Parameters
+    ----------
+    message : str
+        What is wrong, in words.
+    at : tuple, optional
+        Where in the :class:`graphkin.model.Mechanism` the fault lies, e.g.
+        ``("joints", 2, "point")`` for the point of its third joint or
+        ``("links", 1, "number")``; the problem-file reader turns it into the
+        field path of the file (``joints[2].point``). Empty when unknown.
+    """
+
+    def __init__(self, message: str, at: tuple = ()):
+        self.at = tuple(at)
+        super().__init__(message)
 
 
 class ProblemFileError(GraphkinError):

@@ -50,6 +50,16 @@ def check_folder(path: str | Path, what: str = "output", *, shown=None) -> Path:
     return p
 
 
+def file_mode(executable: bool = False) -> int:
+    """The permissions a plain ``open(path, "w")`` gives a new file (under the current umask), plus execute bits.
+
+    :func:`tempfile.mkstemp` makes its file owner-only; a file moved into place
+    from it gets these instead, so a figure or a sheet can be read by whoever
+    could read one written the ordinary way.
+    """
+    return (0o777 if executable else 0o666) & ~_UMASK
+
+
 def write_text(path: str | Path, text: str, what: str = "output") -> Path:
     """Write ``text`` (UTF-8) to ``path`` atomically: a temporary file, then :func:`os.replace`."""
     return write_bytes(path, text.encode("utf-8"), what)
@@ -70,7 +80,7 @@ def write_bytes(path: str | Path, data: bytes, what: str = "output", *, executab
     try:
         with os.fdopen(fd, "wb") as f:
             f.write(data)
-        os.chmod(tmp, (0o777 if executable else 0o666) & ~_UMASK)
+        os.chmod(tmp, file_mode(executable))
         os.replace(tmp, p)
     except BaseException as exc:
         try:

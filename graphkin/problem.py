@@ -16,9 +16,10 @@ from typing import Any, Mapping
 
 import numpy as np
 
-from .errors import GraphkinError, ProblemFileError
+from .errors import GraphkinError, ModelError, ProblemFileError
 from .model import Active, Driver, GearMesh, Link, Mechanism, PointForce, Prismatic, Revolute, Torque
 from .model import mass as massprops
+from .model.ranges import complaint
 
 _TOP = {"title", "source", "notes", "gravity", "frame", "links", "joints", "driver", "loads", "assembly", "given"}
 _LINK = {"number", "name", "points", "mass", "G", "I_G", "k", "shape"}
@@ -92,15 +93,19 @@ class Problem:
         from dataclasses import replace
 
         from .model.link import _finite
+        from .model.ranges import check
 
-        rate = {"q_dot": _finite(q_dot, f"{self.name}: q_dot", "SI"),
-                "q_ddot": _finite(self.q_ddot[0] if q_ddot is None else q_ddot, f"{self.name}: q_ddot", "SI")}
+        crank = self.mechanism.driver.kind == "crank"
+        rate = {"q_dot": _finite(q_dot, f"{self.name}: q_dot", "rad/s" if crank else "m/s"),
+                "q_ddot": _finite(self.q_ddot[0] if q_ddot is None else q_ddot, f"{self.name}: q_ddot",
+                                  "rad/s²" if crank else "m/s²")}
+        check(rate["q_dot"], "angular_velocity" if crank else "velocity", f"{self.name}: q_dot")
+        check(rate["q_ddot"], "angular_acceleration" if crank else "acceleration", f"{self.name}: q_ddot")
         if self.given:
             # Given ω, α, a_G or v_G belong to the file's speed; at another speed they would be silently wrong.
             raise GraphkinError(f"{self.name}: it gives kinematic values ([given] in the file) that hold at its own"
                                 " speed only; remove them to let graphkin derive the motion at another speed")
         m = len(self.q)
-        crank = self.mechanism.driver.kind == "crank"
         speed = f"{rate['q_dot'] * 30 / np.pi:.4g} rpm" if crank else f"{rate['q_dot']:.4g} m/s"
         title = f"{self.title} (driven at {speed})" if self.title else ""
         return replace(self, q_dot=np.full(m, rate["q_dot"]), q_ddot=np.full(m, rate["q_ddot"]), title=title)
@@ -125,14 +130,32 @@ class Problem:
         return replace(self, mechanism=replace(self.mechanism, joints=joints))
 
     def kinematics(self, at=None):
-        """Kinematics at the file's positions, or at ``at`` (SI values of the input)."""
+        """Kinematics at the file's positions, or at ``at``.
+
+        Parameters
+        ----------
+        at : float or array_like, shape (n,), optional
+            Input positions θ [rad] or s [m], instead of the file's.
+
+        Returns
+        -------
+        graphkin.kinematics.Kinematics
+
+        Raises
+        ------
+        GraphkinError
+            If ``at`` is not one number or a 1-D list of finite numbers within
+            graphkin's ranges, or the file's rates vary with position.
+        """
         from dataclasses import replace
 
         from .kinematics import solve_kinematics
+        from .model.ranges import as_array
 
         q, q_dot, q_ddot = self.q, self.q_dot, self.q_ddot
         if at is not None:
-            at = np.atleast_1d(np.asarray(at, dtype=float))
+            crank = self.mechanism.driver.kind == "crank"
+            at = as_array(at, f"{self.name}: at", "angle" if crank else "coordinate")
             if len(set(self.q_dot)) > 1 or len(set(self.q_ddot)) > 1:
                 raise GraphkinError(f"{self.name}: its input rates vary with position, so it can only be solved at its own positions")
             q, q_dot, q_ddot = at, np.full(len(at), self.q_dot[0]), np.full(len(at), self.q_ddot[0])
@@ -144,7 +167,13 @@ class Problem:
         return kin
 
     def solve(self, at=None):
-        """Force analysis (:class:`graphkin.solve.ForceAnalysis`) at the file's positions or at ``at``."""
+        """Force analysis (:class:`graphkin.solve.ForceAnalysis`) at the file's positions or at ``at``.
+
+        Parameters
+        ----------
+        at : float or array_like, shape (n,), optional
+            Input positions θ [rad] or s [m] (see :meth:`kinematics`).
+        """
         from .solve import solve_forces
 
         return solve_forces(self.kinematics(at))
@@ -174,20 +203,55 @@ class _Reader:
             raise self.fail(f"{where}.{key}" if where else key, "is missing")
         return t[key]
 
-    def si(self, value, dimension, where):
+    def si(self, value, dimension, where, kind="auto"):
+        """``value`` in SI, inside the range of ``kind`` (:mod:`graphkin.model.ranges`).
+
+        ``kind="auto"`` takes the dimension's range (:data:`_KIND`); None
+        checks none (the caller checks the sign first, with its own message).
+        """
         from .units import to_si
 
-        return to_si(value, dimension, field=where, file=self.file)
+        x = to_si(value, dimension, field=where, file=self.file)
+        self.ranged(x, value, _KIND.get(dimension) if kind == "auto" else kind, where)
+        return x
+
+    def ranged(self, x, raw, kind, where):
+        """Refuse a value outside the range graphkin accepts for ``kind``, naming the field and showing it as written."""
+        if kind is None:
+            return
+        why = complaint(x, kind)
+        if why is not None:
+            raise self.fail(where, f"{_shown(raw)} {why}")
 
     def vec(self, value, dimension, where):
         from .units import to_si_vector
 
-        return to_si_vector(value, dimension, field=where, file=self.file)
+        x, y = to_si_vector(value, dimension, field=where, file=self.file)
+        kind = _KIND.get(dimension)
+        if isinstance(value, dict):
+            self.ranged(math.hypot(x, y), value.get("magnitude"), kind, f"{where}.magnitude")
+        else:
+            for i, c in enumerate((x, y)):
+                self.ranged(c, value[i], kind, f"{where}[{i}]")
+        return (x, y)
 
     def array(self, value, dimension, where):
         from .units import to_si_array
 
-        return to_si_array(value, dimension, field=where, file=self.file)
+        if isinstance(value, dict):
+            # A range is linear: its ends bound every value in it. They are checked first, so that a start of
+            # "1e9 deg" is named as such rather than as a step that gives too many points.
+            for end in ("start", "stop"):
+                if end in value:
+                    self.si(value[end], dimension, f"{where}.{end}")
+        q = to_si_array(value, dimension, field=where, file=self.file)
+        kind = _KIND.get(dimension)
+        if isinstance(value, list):
+            for i, (x, raw) in enumerate(zip(q, value)):
+                self.ranged(x, raw, kind, f"{where}[{i}]")
+        elif not isinstance(value, dict):
+            self.ranged(q[0], value, kind, where)
+        return q
 
     def whole(self, value, where) -> int:
         if isinstance(value, bool) or not isinstance(value, int):
@@ -210,6 +274,35 @@ class _Reader:
         return self.vec(value, "length", where)
 
 
+_KIND = {"length": "coordinate", "angle": "angle", "mass": "mass", "moment_of_inertia": "moment_of_inertia",
+         "density": "density", "angular_velocity": "angular_velocity", "angular_acceleration": "angular_acceleration",
+         "velocity": "velocity", "acceleration": "acceleration", "force": "force", "torque": "torque"}
+"""The range (:data:`graphkin.model.ranges.RANGES`) a value of each dimension is checked against, unless the
+field says more (a radius is a ``length``, which must not be zero; a friction coefficient is ``friction``)."""
+
+
+def _shown(raw) -> str:
+    """A value as the file wrote it, for a message: ``"1e-200 kg"`` (quoted when it is text)."""
+    return f'"{raw}"' if isinstance(raw, str) else repr(raw)
+
+
+def _field_of(at: tuple) -> str:
+    """The field path in a problem file of a place in the mechanism (:attr:`graphkin.errors.ModelError.at`).
+
+    The file's ``[frame]`` is the mechanism's first link, so ``links[k]`` of
+    the mechanism is ``links[k-1]`` of the file.
+    """
+    if not at:
+        return ""
+    head, rest = at[0], [str(x) for x in at[1:]]
+    if head == "links" and rest:
+        k = int(rest[0])
+        return ".".join(["frame" if k == 0 else f"links[{k - 1}]"] + rest[1:])
+    if head in ("joints", "loads") and rest:
+        return ".".join([f"{head}[{rest[0]}]"] + rest[1:])
+    return ".".join([head] + rest)
+
+
 def load_problem(source: str | Path, *, name: str | None = None) -> Problem:
     """Read a problem file (a path, or a catalog name via :func:`graphkin.catalog.load`).
 
@@ -220,13 +313,41 @@ def load_problem(source: str | Path, *, name: str | None = None) -> Problem:
     """
     from .files import read_text
 
+    if not isinstance(source, (str, Path)) or not str(source):
+        raise GraphkinError(f"load_problem takes the path of a problem file (a str or Path), got "
+                            f"{type(source).__name__} {source!r}"
+                            + ("; for the file's text use parse_problem(text)" if isinstance(source, bytes) else ""))
+    if name is not None and not isinstance(name, str):
+        raise GraphkinError(f"load_problem: name must be a str, got {type(name).__name__} {name!r}")
     path = Path(source)
     file = name or str(path)
     return parse_problem(read_text(path, "problem", shown=file), file=file)
 
 
 def parse_problem(text: str, *, file: str = "<problem>") -> Problem:
-    """Build a :class:`Problem` from TOML text."""
+    """Build a :class:`Problem` from TOML text.
+
+    Parameters
+    ----------
+    text : str
+        The file's text (not bytes: decode them first, or use :func:`load_problem` on the path).
+    file : str, optional
+        The name shown in messages.
+
+    Raises
+    ------
+    ProblemFileError
+        With the file, the field and what is wrong.
+    GraphkinError
+        If ``text`` is not a str.
+    """
+    if not isinstance(file, str):
+        raise GraphkinError(f"parse_problem: file must be a str (the name shown in messages), got {file!r}")
+    if isinstance(text, (bytes, bytearray)):
+        raise GraphkinError(f"parse_problem takes the file's text as a str, got {type(text).__name__}: decode it first "
+                            "(text = data.decode('utf-8')) or give the path to load_problem")
+    if not isinstance(text, str):
+        raise GraphkinError(f"parse_problem takes the file's text as a str, got {type(text).__name__} {text!r:.60}")
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
@@ -241,7 +362,9 @@ def build_problem(data: Mapping[str, Any], *, file: str = "<problem>") -> Proble
     values replaced by the strings the student is shown.
     """
     rd = _Reader(file)
-    rd.table(data, "", _TOP)
+    if not isinstance(data, Mapping):
+        raise GraphkinError(f"build_problem takes a problem file's tables as a dict, got {type(data).__name__}")
+    rd.table(dict(data), "", _TOP)
     links = [_frame(rd, data)] + [_link(rd, t, f"links[{i}]") for i, t in enumerate(_list(rd, data, "links"))]
     joints = [_joint(rd, t, f"joints[{i}]") for i, t in enumerate(_list(rd, data, "joints"))]
     d = rd.table(rd.need(data, "driver", ""), "driver", _DRIVER["crank"] | _DRIVER["slider"])
@@ -252,7 +375,10 @@ def build_problem(data: Mapping[str, Any], *, file: str = "<problem>") -> Proble
     driver = Driver(rd.whole(rd.need(d, "link", "driver"), "driver.link"), kind)
     q, q_dot, q_ddot = _motion(rd, d, kind)
     loads = [_load(rd, t, f"loads[{i}]", kind) for i, t in enumerate(_list(rd, data, "loads"))]
-    gravity = rd.si(data["gravity"], "acceleration", "gravity") if "gravity" in data else 0.0
+    gravity = rd.si(data["gravity"], "acceleration", "gravity", None) if "gravity" in data else 0.0
+    if gravity < 0:
+        raise rd.fail("gravity", f"must be ≥ 0 (g acts along −y; write its size), got {data['gravity']!r}")
+    rd.ranged(gravity, data.get("gravity"), "acceleration", "gravity")
     assembly = {}
     for key, sigma in rd.table(data.get("assembly", {}), "assembly", set(data.get("assembly", {}))).items():
         if sigma not in (1, -1) or isinstance(sigma, bool):
@@ -261,8 +387,8 @@ def build_problem(data: Mapping[str, Any], *, file: str = "<problem>") -> Proble
     try:
         mech = Mechanism(links, joints, driver, loads, gravity, assembly,
                          title=str(data.get("title", "")), source=str(data.get("source", "")))
-    except GraphkinError as exc:
-        raise rd.fail("", str(exc)) from None
+    except ModelError as exc:
+        raise rd.fail(_field_of(exc.at), str(exc)) from None
     for key in assembly:
         points = {j.point for j in joints if not isinstance(j, GearMesh)}
         if key not in points:
@@ -273,8 +399,8 @@ def build_problem(data: Mapping[str, Any], *, file: str = "<problem>") -> Proble
         from .kinematics.structure import Dyad
 
         groups = decompose(mech)
-    except GraphkinError as exc:
-        raise rd.fail("joints", str(exc)) from None
+    except ModelError as exc:
+        raise rd.fail(_field_of(exc.at) or "joints", str(exc)) from None
     branches = sorted({g.key for g in groups if isinstance(g, Dyad)})
     for key in assembly:
         if key not in branches:
@@ -316,31 +442,37 @@ def _link(rd, t, where):
                 raise rd.fail(f"{where}.{key}", "give either a shape or the mass properties, not both")
         props = _shape(rd, t, points, f"{where}.shape")
     else:
-        m = rd.si(rd.need(t, "mass", where), "mass", f"{where}.mass")
+        m = rd.si(rd.need(t, "mass", where), "mass", f"{where}.mass", None)
         if m < 0:
             raise rd.fail(f"{where}.mass", f"must be ≥ 0 kg, got {t['mass']!r}")
+        rd.ranged(m, t["mass"], "mass", f"{where}.mass")
         G = rd.point(t["G"], f"{where}.G") if "G" in t else (0.0, 0.0)
         if "I_G" in t and "k" in t:
             raise rd.fail(f"{where}.k", "give I_G or the radius of gyration k, not both")
         if "k" in t:
-            k = rd.si(t["k"], "length", f"{where}.k")
+            k = rd.si(t["k"], "length", f"{where}.k", None)
             if k < 0:
                 raise rd.fail(f"{where}.k", f"must be ≥ 0, got {t['k']!r}")
+            rd.ranged(k, t["k"], "length0", f"{where}.k")
             I_G = m * k * k
         else:
-            I_G = rd.si(t.get("I_G", "0 kg*m^2"), "moment_of_inertia", f"{where}.I_G")
+            I_G = rd.si(t.get("I_G", "0 kg*m^2"), "moment_of_inertia", f"{where}.I_G", None)
             if I_G < 0:
                 raise rd.fail(f"{where}.I_G", f"must be ≥ 0, got {t['I_G']!r}")
+            rd.ranged(I_G, t.get("I_G"), "moment_of_inertia", f"{where}.I_G")
         props = massprops.MassProperties(m, G, I_G)
     try:
         return Link(number, points, props.m, props.G, props.I_G, name)
     except GraphkinError as exc:
-        raise rd.fail(where, str(exc)) from None
+        # Only a shape's mass properties can fail here: everything else was checked as it was read.
+        raise rd.fail(f"{where}.shape" if "shape" in t else where, str(exc)) from None
 
 
 def _shape(rd, t, points, where):
     s = t["shape"]
     kind = rd.table(s, where, set(s) if isinstance(s, dict) else set()).get("type")
+    if kind is None:
+        raise rd.fail(f"{where}.type", f"is missing: write type = one of {', '.join(sorted(_SHAPES))}")
     if kind not in _SHAPES:
         raise rd.fail(f"{where}.type", f"must be one of {', '.join(sorted(_SHAPES))}, got {kind!r}")
     rd.table(s, where, _SHAPES[kind])
@@ -352,22 +484,23 @@ def _shape(rd, t, points, where):
 
     try:
         if kind == "rod":
-            m = rd.si(rd.need(t, "mass", where[:-6]), "mass", f"{where[:-6]}.mass")
+            m = rd.si(rd.need(t, "mass", where[:-6]), "mass", f"{where[:-6]}.mass", None)
             if m < 0:
                 raise rd.fail(f"{where[:-6]}.mass", f"must be ≥ 0 kg, got {t['mass']!r}")
+            rd.ranged(m, t["mass"], "mass", f"{where[:-6]}.mass")
             (x0, y0), (x1, y1) = pt(rd.need(s, "from", where), "from"), pt(rd.need(s, "to", where), "to")
             return massprops.thin_rod(math.hypot(x1 - x0, y1 - y0), m, start=(x0, y0), angle=math.atan2(y1 - y0, x1 - x0))
         if "mass" in t:
             raise rd.fail(f"{where[:-6]}.mass", f"a {kind} shape gets its mass from density and size: leave mass out")
-        thickness = rd.si(rd.need(s, "thickness", where), "length", f"{where}.thickness")
+        thickness = rd.si(rd.need(s, "thickness", where), "length", f"{where}.thickness", "length")
         density = rd.si(rd.need(s, "density", where), "density", f"{where}.density")
         if kind == "disk":
-            radius = rd.si(rd.need(s, "radius", where), "length", f"{where}.radius")
+            radius = rd.si(rd.need(s, "radius", where), "length", f"{where}.radius", "length")
             return massprops.disk(radius, thickness, density, center=pt(rd.need(s, "center", where), "center"))
         through = rd.need(s, "through", where)
         centers = [pt(p, "through") for p in through]
-        width = rd.si(rd.need(s, "width", where), "length", f"{where}.width")
-        hole = rd.si(s.get("hole_diameter", "0 mm"), "length", f"{where}.hole_diameter")
+        width = rd.si(rd.need(s, "width", where), "length", f"{where}.width", "length")
+        hole = rd.si(s.get("hole_diameter", "0 mm"), "length", f"{where}.hole_diameter", "length0")
         return massprops.from_shape(massprops.link_outline(centers, width, hole), thickness, density)
     except GraphkinError as exc:
         if isinstance(exc, ProblemFileError):
@@ -377,6 +510,8 @@ def _shape(rd, t, points, where):
 
 def _joint(rd, t, where):
     kind = rd.table(t, where, set().union(*_JOINT.values())).get("type")
+    if kind is None:
+        raise rd.fail(f"{where}.type", "is missing: write type = \"revolute\", \"prismatic\" or \"gear\"")
     if kind not in _JOINT:
         raise rd.fail(f"{where}.type", f"must be one of revolute, prismatic, gear; got {kind!r}")
     rd.table(t, where, _JOINT[kind])
@@ -387,6 +522,7 @@ def _joint(rd, t, where):
             mu = rd.si(t.get("mu", 0.0), "dimensionless", f"{where}.mu")
             if mu < 0:
                 raise rd.fail(f"{where}.mu", f"friction coefficient must be ≥ 0, got {t['mu']!r}")
+            rd.ranged(mu, t.get("mu"), "friction", f"{where}.mu")
             if mu > 1:
                 import warnings
 
@@ -407,12 +543,13 @@ def _joint(rd, t, where):
         if not isinstance(centers, list) or len(centers) != 2:
             raise rd.fail(f"{where}.centers", "must name the two gear centres, e.g. [\"O2\", \"O3\"]")
         return GearMesh(_pair(rd, rd.need(t, "links", where), f"{where}.links"), tuple(centers),
-                        tuple(rd.si(r, "length", f"{where}.radii[{i}]") for i, r in enumerate(radii)),
+                        tuple(rd.si(r, "length", f"{where}.radii[{i}]", "length") for i, r in enumerate(radii)),
                         rd.si(t.get("pressure_angle", "20 deg"), "angle", f"{where}.pressure_angle"))
     except ProblemFileError:
         raise
-    except GraphkinError as exc:
-        raise rd.fail(where, str(exc)) from None
+    except ModelError as exc:
+        # The joint's constructor says which of its fields is at fault (``at``, relative to the joint).
+        raise rd.fail(".".join([where, *map(str, exc.at)]), str(exc)) from None
 
 
 def _pair(rd, value, where):
@@ -436,6 +573,8 @@ def _motion(rd, d, kind):
 
 def _load(rd, t, where, driver_kind):
     kind = rd.table(t, where, set().union(*_LOAD.values())).get("type")
+    if kind is None:
+        raise rd.fail(f"{where}.type", "is missing: write type = \"force\" or \"torque\"")
     if kind not in _LOAD:
         raise rd.fail(f"{where}.type", f"must be 'force' or 'torque', got {kind!r}")
     rd.table(t, where, _LOAD[kind])

@@ -18,6 +18,7 @@ import numpy as np
 
 from ..errors import GraphkinError
 from ..geometry import cross
+from ..kinematics import position_text
 from ..model import FRAME, GearMesh, Prismatic, Revolute
 from ..solve import ForceAnalysis
 from ._turn import TURN, closing_step, weights
@@ -101,6 +102,13 @@ def switching_samples(problem: "Problem", q: np.ndarray) -> np.ndarray:
     return np.unique(np.concatenate([q, extra]))
 
 
+def check_problem(problem, what: str) -> None:
+    """A plain error if ``problem`` is not a :class:`graphkin.problem.Problem` (by its parts, to keep layers apart)."""
+    if not all(hasattr(problem, name) for name in ("mechanism", "q", "solve", "kinematics")):
+        raise GraphkinError(f"{what} takes a Problem (graphkin.catalog.load(name) or graphkin.problem.load_problem"
+                            f"(path)), got {type(problem).__name__}")
+
+
 def sweep(problem: "Problem", n: int | None = None, *, at=None) -> "Cycle":
     """Solve a problem over a whole cycle in one vectorised call.
 
@@ -129,6 +137,7 @@ def sweep(problem: "Problem", n: int | None = None, *, at=None) -> "Cycle":
     >>> c.n, c.closed   # 180 positions of the book, 2 more either side of 124° and of 156°
     (184, True)
     """
+    check_problem(problem, "sweep")
     if at is not None:
         if n is not None:
             raise GraphkinError("give either n (equally spaced crank angles) or at (the positions), not both")
@@ -417,12 +426,34 @@ class Cycle:
         """
         from .flywheel import size_flywheel
 
+        why = self.why_no_flywheel()
+        if why:
+            raise GraphkinError(f"{self.problem.name}: {why}")
+        return size_flywheel(self.q, self.torque, omega_avg=float(np.mean(self.q_dot)), Cs=Cs)
+
+    def why_no_flywheel(self) -> str | None:
+        """Why no flywheel can be sized for this cycle, in words a student can act on; None if one can.
+
+        A flywheel stores and returns the energy of the torque's swings over
+        one whole turn (Norton §11.11), so it needs a crank swept over one
+        full turn, a torque at every position of it, and a constant speed.
+        """
+        if self.problem.mechanism.driver.kind != "crank":
+            return "no flywheel can be sized: the driver is a slider, and a flywheel evens out a crank's turn"
         if not self.closed:
-            raise GraphkinError(f"{self.problem.name}: a flywheel is sized over one full turn of a crank; sweep(problem, n=...)")
-        if not np.all(self.valid):
-            bad = np.degrees(self.q[~self.valid])
-            raise GraphkinError(f"{self.problem.name}: no torque at θ = {', '.join(f'{b:g}°' for b in bad[:5])}: cannot size a flywheel")
+            return ("no flywheel can be sized from these positions: they are not one full turn of the crank; "
+                    "sweep it over a whole turn (--n N, or sweep(problem, n=...))")
+        bad = np.flatnonzero(~self.valid)
+        if len(bad):
+            i = int(bad[0])
+            return (f"no flywheel can be sized: it evens out the torque over a whole turn, but the linkage has no "
+                    f"solution at {len(bad)} of the {self.n} positions, the first at "
+                    f"{position_text(self.q[i], True)} ({self.analysis.reason(i)}); choose dimensions that let the "
+                    "crank turn fully")
         omega = float(np.mean(self.q_dot))
-        if omega <= 0 or not np.allclose(self.q_dot, omega):
-            raise GraphkinError(f"{self.problem.name}: flywheel sizing needs a crank turning CCW at a constant ω, got ω = {omega:g} rad/s")
-        return size_flywheel(self.q, self.torque, omega_avg=omega, Cs=Cs)
+        if not np.allclose(self.q_dot, omega):
+            return "no flywheel can be sized: the crank's speed varies over the turn, and sizing assumes a constant ω"
+        if omega <= 0:
+            return (f"no flywheel can be sized: sizing needs the crank turning counter-clockwise (ω > 0), "
+                    f"and here ω = {omega:.6g} rad/s")
+        return None

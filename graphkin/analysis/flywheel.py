@@ -25,6 +25,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import GraphkinError
+from ..model.ranges import complaint
 from ._turn import TURN, closing_step, steps
 
 
@@ -113,6 +114,9 @@ def check_Cs(Cs, what: str = "Cs") -> float:
 
 
 def _positive(value, what) -> float:
+    # A string ("0.05") is refused like any other non-number: float() would quietly accept "1e5" or " 5 ".
+    if isinstance(value, (str, bytes, bool, np.bool_)) or np.ndim(value) != 0:
+        raise GraphkinError(f"{what} must be a number, got {value!r}")
     try:
         x = float(value)
     except (TypeError, ValueError):
@@ -120,6 +124,17 @@ def _positive(value, what) -> float:
     if not (math.isfinite(x) and x > 0):
         raise GraphkinError(f"{what} must be > 0, got {value!r}")
     return x
+
+
+def _numbers(values, what) -> np.ndarray:
+    """``values`` as a float array, or a plain error naming ``what`` (not numpy's "could not convert")."""
+    if isinstance(values, (str, bytes)):
+        raise GraphkinError(f"{what} must be an array of numbers, got {values!r:.60}")
+    try:
+        out = np.asarray(values, dtype=float)
+    except (TypeError, ValueError):
+        raise GraphkinError(f"{what} must be a 1-D array of numbers, got {values!r:.60}") from None
+    return out
 
 
 def size_flywheel(theta, T, *, omega_avg: float, Cs: float) -> "Flywheel":
@@ -157,8 +172,7 @@ def size_flywheel(theta, T, *, omega_avg: float, Cs: float) -> "Flywheel":
     >>> round(f.I_s, 4)                          # E / (Cs ω²)
     0.02
     """
-    theta = np.asarray(theta, dtype=float)
-    T = np.asarray(T, dtype=float)
+    theta, T = _numbers(theta, "theta"), _numbers(T, "T")
     if theta.ndim != 1 or theta.shape != T.shape:
         raise GraphkinError(f"theta and T must be 1-D arrays of the same length, got shapes {theta.shape} and {T.shape}")
     if not np.all(np.isfinite(T)):
@@ -167,6 +181,10 @@ def size_flywheel(theta, T, *, omega_avg: float, Cs: float) -> "Flywheel":
     if gap is None or not np.all(np.diff(theta) > 0):
         raise GraphkinError("theta must increase through one full turn of the crank (e.g. 0°, 2°, …, 358° in radians)")
     omega_avg = _positive(omega_avg, "omega_avg")
+    why = complaint(omega_avg, "angular_velocity")
+    if why:
+        # Cs ω² would underflow to 0 (or overflow) and the inertia I_s = E / (Cs ω²) with it.
+        raise GraphkinError(f"omega_avg = {omega_avg:g} rad/s {why}")
     Cs = check_Cs(Cs)
 
     h = steps(theta, gap)

@@ -24,7 +24,7 @@ import numpy as np
 from ..errors import GraphkinError
 from ..model import PointForce, Torque
 from ..solve import ForceAnalysis, solve_forces
-from .cycle import Peak, peak_of, sweep_positions
+from .cycle import Peak, check_problem, peak_of, sweep_positions
 
 if TYPE_CHECKING:
     from ..problem import Problem
@@ -142,11 +142,15 @@ def joint_force_index(problem: "Problem", n: int | None = None, *, limit: float 
     >>> bool(np.isnan(jfi.index[0])), jfi.units      # no cutting force at θ = 0
     (True, '')
     """
+    check_problem(problem, "joint_force_index")
     return index_at(problem, sweep_positions(problem, n), limit)
 
 
 def index_at(problem: "Problem", at, limit: float = 2.0) -> JointForceIndex:
     """:func:`joint_force_index` at input positions ``at`` (SI; None for the problem's own)."""
+    from .flywheel import _positive
+
+    limit = _positive(limit, "limit")
     static = static_problem(problem)
     result = static.solve(at=at)
     q = result.kinematics.q

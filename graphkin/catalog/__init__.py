@@ -27,6 +27,10 @@ def load(name_or_path: str):
     """A :class:`graphkin.problem.Problem` from a catalog name or a file path."""
     from ..problem import load_problem
 
+    if not isinstance(name_or_path, (str, Path)):
+        raise GraphkinError(f"catalog.load takes a catalog name ({', '.join(names())}) or a file path, "
+                            f"got {type(name_or_path).__name__} {name_or_path!r}")
+    name_or_path = str(name_or_path)
     if name_or_path in names():
         return load_problem(path(name_or_path), name=name_or_path)
     p = Path(name_or_path)

@@ -25,6 +25,7 @@ import os
 import tempfile
 from pathlib import Path
 
+from ..files import file_mode
 from . import style
 from ._common import Drawn
 from .convention import draw_sign_convention
@@ -79,6 +80,8 @@ def save(fig, path, *, dpi=None, **kwargs) -> Path:
     os.close(fd)
     try:
         fig.savefig(tmp, format=fmt, dpi=dpi or style.STYLE.dpi, **kwargs)
+        # mkstemp's file is owner-only: the figure gets the permissions a plain open() would give it.
+        os.chmod(tmp, file_mode())
         os.replace(tmp, path)
     except BaseException:
         try:

@@ -31,12 +31,14 @@ assumption was wrong.
 
 from __future__ import annotations
 
+import cmath
 import itertools
 import math
 
 import numpy as np
 import shapely
 
+from ..errors import GraphkinError
 from ..kinematics import Dyad, DriverGroup, GearGroup, Kinematics
 from ..geometry import zcross as cross
 from ..geometry import zdot as dot
@@ -69,7 +71,11 @@ class _Load:
         """The point of the resultant's line nearest the origin (None for a pure couple)."""
         if self.F == 0:
             return None
-        return -1j * self.M0 * self.F / abs(self.F) ** 2
+        # F/|F|² written as 1/conj(F): |F|² underflows to 0 for a force of 1e-170 N, the quotient does not.
+        # Plain complex numbers: a force so small beside its moment that its line lies beyond any float gives
+        # inf quietly, and is then a pure couple.
+        P = complex(-1j * float(self.M0)) / complex(self.F).conjugate()
+        return P if cmath.isfinite(P) else None
 
 
 def _meet(p, u, q, w, reach):
@@ -143,7 +149,7 @@ class _Builder:
                 h = abs(Ti) / abs(Fi)
                 values["h"] = h
                 # The offset side makes the moment of F about G equal T.
-                P = G - 1j * Ti * Fi / abs(Fi) ** 2
+                P = G - 1j * Ti / Fi.conjugate()  # Ti Fi/|Fi|², without squaring a small |Fi| to 0
                 lines.append(Line(f"R{link}i", _xy(P), _xy(Fi / abs(Fi)), "resultant"))
                 sense = "clockwise" if Ti < 0 else "counter-clockwise"
                 parts.append(
@@ -171,7 +177,7 @@ class _Builder:
                 parts.append(f"the external torque {ld.name or 'T'} = {ld.torque:.4g} N·m acts on it")
         only_inertia = len(parts) == 1 and bool(Fi or Ti)
         self.rname[link] = f"R{link}i" if only_inertia else f"R{link}"
-        if len(parts) > 1 and load.F:
+        if len(parts) > 1 and load.F and load.point() is not None:
             lines.append(Line(f"R{link}", _xy(load.point()), _xy(load.F / abs(load.F)), "resultant"))
             values[f"R{link}"] = _xy(load.F)
             parts.append(f"together they make one resultant R{link} = {abs(load.F):.4g} N")
@@ -423,15 +429,20 @@ class _Builder:
         if isinstance(J, Revolute):
             X = self.z(FRAME, J.point)
             F = -R.F
-            T = -R.about(X)
-            d = abs(R.about(X)) / abs(R.F) if R.F else 0.0
+            T = float(-R.about(X))
+            # Plain floats: a resultant tiny beside its moment (a pure couple in all but rounding) gives an arm
+            # too long for a float, which is said in words rather than as a numpy overflow.
+            d = abs(T) / abs(complex(R.F)) if R.F else 0.0
+            sense = "CCW" if T > 0 else "CW"
+            arm = (f"with {Rd} it forms a couple of arm d = {d * 1e3:.4g} mm, which the driving torque balances: "
+                   f"T1{link} = ±|{Rd}|·d = {T:.4g} N·m ({sense})." if math.isfinite(d * 1e3) else
+                   f"{Rd} is so small beside its moment about {J.point} that the loads are a pure couple, which the "
+                   f"driving torque balances: T1{link} = {T:.4g} N·m ({sense}).")
             self.steps.append(Step(
                 "driver",
-                f"The crank: the pivot force {name} = −{Rd} acts at {J.point}; with {Rd} it forms a couple of arm "
-                f"d = {d * 1e3:.4g} mm, which the driving torque balances: T1{link} = ±|{Rd}|·d = {T:.4g} N·m "
-                f"({'CCW' if T > 0 else 'CW'}).", link,
+                f"The crank: the pivot force {name} = −{Rd} acts at {J.point}; {arm}", link,
                 (Line(name, _xy(X), _xy(F / abs(F)) if F else (1.0, 0.0), "found"),),
-                values={name: _xy(F), f"T1{link}": T, "d": d},
+                values={name: _xy(F), f"T1{link}": T, **({"d": d} if math.isfinite(d) else {})},
                 polygon=(Arrow(Rd, _xy(R.F), True), Arrow(name, _xy(F), False, _xy(X)))))
             self.store(J, link, F)
             self.effort = float(T)
@@ -487,6 +498,13 @@ def construct_forces(kin: Kinematics, index: int = 0) -> Construction:
         Not ``valid`` (with the reason) where the position cannot be assembled,
         is a dead point, or friction locks it.
     """
+    if not isinstance(kin, Kinematics):
+        raise GraphkinError(f"construct_forces takes the Kinematics of a problem (problem.kinematics()), "
+                            f"got {type(kin).__name__}")
+    if isinstance(index, (bool, np.bool_)) or not isinstance(index, (int, np.integer)) or not -kin.n <= index < kin.n:
+        raise GraphkinError(f"construct_forces: index must be a whole number from 0 to {kin.n - 1} (one of the "
+                            f"{kin.n} positions), got {index!r}")
+    index = int(index) % kin.n
     mech = kin.mechanism
     q = float(kin.q[index])
     if not kin.valid[index]:

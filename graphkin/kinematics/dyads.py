@@ -32,7 +32,9 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..errors import ModelError
 from ..model import FRAME, Mechanism, Prismatic, Revolute
+from ..model.ranges import as_array
 from ..geometry import zcross as cross
 from ..geometry import zdot as dot
 from .state import Kinematics
@@ -328,18 +330,28 @@ def solve_kinematics(mech: Mechanism, q, q_dot=0.0, q_ddot=0.0) -> Kinematics:
     mech : Mechanism
     q : array_like, shape (n,) or scalar
         Input coordinate: crank angle θ [rad] or slider position s [m].
-    q_dot, q_ddot : array_like, broadcast to q
-        Input rates: ω [rad/s] and α [rad/s²], or v [m/s] and a [m/s²].
+    q_dot, q_ddot : float or array_like, shape (n,)
+        Input rates: ω [rad/s] and α [rad/s²], or v [m/s] and a [m/s²]; one
+        value for every position, or one per position.
 
     Returns
     -------
     Kinematics
         Positions that cannot be assembled, or are dead points, hold nan and
         are False in ``valid``; ``reason(i)`` says why.
+
+    Raises
+    ------
+    ModelError
+        If the inputs are not numbers, not 1-D, of different lengths, not
+        finite or outside graphkin's ranges (:mod:`graphkin.model.ranges`).
     """
-    q = np.atleast_1d(np.asarray(q, dtype=float))
-    q_dot = np.broadcast_to(np.asarray(q_dot, dtype=float), q.shape).astype(float)
-    q_ddot = np.broadcast_to(np.asarray(q_ddot, dtype=float), q.shape).astype(float)
+    if not isinstance(mech, Mechanism):
+        raise ModelError(f"solve_kinematics takes a Mechanism first, got {type(mech).__name__}")
+    crank = mech.driver.kind == "crank"
+    q = as_array(q, "q (the input positions)", "angle" if crank else "coordinate")
+    q_dot = as_array(q_dot, "q_dot", "angular_velocity" if crank else "velocity", n=len(q))
+    q_ddot = as_array(q_ddot, "q_ddot", "angular_acceleration" if crank else "acceleration", n=len(q))
     st = _State(mech, len(q))
     groups = decompose(mech)
     # Unassemblable positions and dead points propagate as nan, by design.

@@ -7,6 +7,7 @@ equations (r e^{iθ}): a rotation is one multiplication by e^{iθ}, and
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 from typing import Mapping
 
@@ -177,3 +178,43 @@ class Kinematics:
         """Why position ``i`` is invalid ('' if it is valid)."""
         why = "; ".join(why for why, where in self.failures.items() if where[i])
         return why or ("" if self.valid[i] else "the motion is not finite there (no group says why)")
+
+
+def position_text(q: float, crank: bool, symbol: str = "") -> str:
+    """An input position for a message: ``θ = 89.99999999999°`` or ``s = 499.999999999999 mm``.
+
+    With as many digits as it takes to name this very position (up to 17),
+    never fewer than the 6 a report prints: near a dead point the position
+    that fails may differ from the dead point itself only in the 13th digit,
+    and "θ = 90°" would name the wrong one. 124° read from a file, which is
+    124.00000000000001° after the trip through radians, still prints "124°".
+
+    Parameters
+    ----------
+    q : float
+        The position, θ [rad] for a crank, s [m] for a slider.
+    crank : bool
+        Whether the driver is a crank.
+    symbol : str, optional
+        The name to print (default ``θ`` or ``s``).
+
+    Examples
+    --------
+    >>> import math
+    >>> position_text(math.radians(124.0), True)
+    'θ = 124°'
+    >>> position_text(0.499999999999999, False)
+    's = 499.999999999999 mm'
+    """
+    q = float(q)
+    name = symbol or ("θ" if crank else "s")
+    if not math.isfinite(q):
+        return f"{name} = {q}"
+    shown, unit = (math.degrees(q), "°") if crank else (q * 1e3, " mm")
+    for digits in range(6, 18):
+        text = f"{shown:.{digits}g}"
+        # Converted back as the units boundary converts "124 deg" and "200 mm", the text gives q exactly.
+        back = math.radians(float(text)) if crank else float(text) * 1e-3
+        if back == q:
+            break
+    return f"{name} = {text}{unit}"

@@ -159,7 +159,8 @@ def _next_gear(mech, unknown, known, used):
                     except ModelError:
                         j_pivot = None
                     if not isinstance(j_pivot, Revolute):
-                        raise ModelError(f"{mesh.label}: both gears must be pivoted on one link; gear {j} is not pivoted on link {b}")
+                        raise ModelError(f"{mesh.label}: both gears must be pivoted on one link; gear {j} is not "
+                                         f"pivoted on link {b}", at=("joints", _index(mech, mesh), "links"))
                     _check_centre_distance(mech, mesh, k, j, b, pivot, j_pivot)
                     return GearGroup(k, j, b, mesh, pivot, j_pivot)
     return None
@@ -171,7 +172,14 @@ def _check_centre_distance(mech, mesh, k, j, b, pivot, j_pivot):
     d = math.hypot(xk - xj, yk - yj)
     r = sum(mesh.radii)
     if abs(d - r) > 1e-9 * max(d, r):
-        raise ModelError(f"{mesh.label}: pitch radii {mesh.radii[0]:g} m + {mesh.radii[1]:g} m do not add up to the centre distance {d:g} m")
+        raise ModelError(f"{mesh.label}: pitch radii {mesh.radii[0] * 1e3:.6g} mm + {mesh.radii[1] * 1e3:.6g} mm do not "
+                         f"add up to the centre distance {d * 1e3:.6g} mm between {pivot.point} and {j_pivot.point}",
+                         at=("joints", _index(mech, mesh), "radii"))
+
+
+def _index(mech, joint) -> int:
+    """Position of ``joint`` in the mechanism's joints (by identity: two equal joints are two joints)."""
+    return next(k for k, j in enumerate(mech.joints) if j is joint)
 
 
 def _next_dyad(mech, unknown, known, used, joints_to_known, located):

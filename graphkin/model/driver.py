@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import numbers
 from dataclasses import dataclass
 from typing import Literal
 
@@ -26,6 +27,10 @@ class Driver:
     kind: Literal["crank", "slider"] = "crank"
 
     def __post_init__(self):
+        # int("2") or int(2.5) would quietly turn a slip into another link.
+        if isinstance(self.link, bool) or not isinstance(self.link, numbers.Integral):
+            raise ModelError(f"driver link must be a link number, e.g. 2, got {self.link!r}")
+        object.__setattr__(self, "link", int(self.link))
         if self.kind not in ("crank", "slider"):
             raise ModelError(f"driver kind must be 'crank' or 'slider', got {self.kind!r}")
 

@@ -11,18 +11,32 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+import numpy as np
+
 from ..errors import ModelError
 from .link import _finite
+from .ranges import check
 
 
-def _pair(links, what):
+def _pair(links, what, at=("links",)):
     try:
         i, j = links
     except (TypeError, ValueError):
-        raise ModelError(f"{what} must join two links, got {links!r}") from None
+        raise ModelError(f"{what} must join two links, got {links!r}", at=at) from None
+    for n in (i, j):
+        # int("3") or int(2.7) would quietly make a link number of a string or a fraction.
+        if isinstance(n, (bool, np.bool_)) or not isinstance(n, (int, np.integer)):
+            raise ModelError(f"{what} must join two links given by number, e.g. (2, 3), got {links!r}", at=at)
     if i == j:
-        raise ModelError(f"{what} joins link {i} to itself")
+        raise ModelError(f"{what} joins link {i} to itself", at=at)
     return int(i), int(j)
+
+
+def _name(value, what, at=()) -> str:
+    """A point's name: a non-empty string."""
+    if not isinstance(value, str) or not value:
+        raise ModelError(f"{what} must be the name of a point, e.g. 'A', got {value!r}", at=at)
+    return value
 
 
 @dataclass(frozen=True)
@@ -36,6 +50,7 @@ class Revolute:
     point: str
 
     def __post_init__(self):
+        _name(self.point, "revolute joint: point", ("point",))
         object.__setattr__(self, "links", _pair(self.links, f"revolute joint at {self.point}"))
 
     @property
@@ -83,13 +98,16 @@ class Prismatic:
     mu: float = 0.0
 
     def __post_init__(self):
-        _pair((self.guide, self.slider), f"prismatic joint at {self.point}")
+        _name(self.point, "prismatic joint: point", ("point",))
+        _name(self.through, f"prismatic joint at {self.point}: through", ("through",))
+        _pair((self.guide, self.slider), f"prismatic joint at {self.point}", ("slider",))
         for name in ("direction", "slider_direction"):
-            object.__setattr__(self, name, _finite(getattr(self, name), f"prismatic joint at {self.point}: {name}"))
+            what = f"prismatic joint at {self.point}: {name}"
+            object.__setattr__(self, name, check(_finite(getattr(self, name), what, "rad"), "angle", what))
         mu = _finite(self.mu, f"prismatic joint at {self.point}: friction coefficient mu")
         if mu < 0:
             raise ModelError(f"prismatic joint at {self.point}: friction coefficient mu must be ≥ 0, got {mu:g}")
-        object.__setattr__(self, "mu", mu)
+        object.__setattr__(self, "mu", check(mu, "friction", f"prismatic joint at {self.point}: friction coefficient mu"))
 
     @property
     def links(self) -> tuple[int, int]:
@@ -127,15 +145,23 @@ class GearMesh:
 
     def __post_init__(self):
         object.__setattr__(self, "links", _pair(self.links, "gear mesh"))
-        r = tuple(_finite(x, "gear mesh pitch radius") for x in self.radii)
-        if len(r) != 2 or min(r) <= 0:
-            raise ModelError(f"gear mesh {self.links[0]}–{self.links[1]}: pitch radii must be two positive lengths, got {self.radii!r}")
-        object.__setattr__(self, "radii", r)
+        label = f"gear mesh {self.links[0]}–{self.links[1]}"
+        if isinstance(self.radii, (str, bytes)) or not hasattr(self.radii, "__len__") or len(self.radii) != 2:
+            raise ModelError(f"{label}: pitch radii must be two positive lengths [m], got {self.radii!r}")
+        r = tuple(_finite(x, f"{label}: pitch radius", "m") for x in self.radii)
+        if min(r) <= 0:
+            raise ModelError(f"{label}: pitch radii must be two positive lengths, got {self.radii!r}")
+        object.__setattr__(self, "radii", tuple(check(x, "length", f"{label}: pitch radius") for x in r))
+        if isinstance(self.centers, (str, bytes)) or not hasattr(self.centers, "__len__") or len(self.centers) != 2:
+            raise ModelError(f"{label}: centers must name the two gear centres, e.g. ('O2', 'O3'), got {self.centers!r}")
+        for c in self.centers:
+            _name(c, f"{label}: centre")
         phi = _finite(self.pressure_angle, "gear mesh pressure angle")
         if not 0 <= phi < math.radians(45):
-            raise ModelError(f"gear mesh {self.links[0]}–{self.links[1]}: pressure angle must be in [0°, 45°), got {math.degrees(phi):g}°")
+            raise ModelError(f"gear mesh {self.links[0]}–{self.links[1]}: pressure angle must be in [0°, 45°), "
+                             f"got {math.degrees(phi):.12g}°", at=("pressure_angle",))
         object.__setattr__(self, "pressure_angle", phi)
-        object.__setattr__(self, "centers", tuple(str(c) for c in self.centers))
+        object.__setattr__(self, "centers", tuple(self.centers))
 
     @property
     def label(self) -> str:

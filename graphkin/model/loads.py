@@ -13,6 +13,7 @@ import numpy as np
 
 from ..errors import ModelError
 from .link import _finite, _point
+from .ranges import check
 
 
 EDGE = 1e-12
@@ -30,6 +31,12 @@ class Active:
     start: float
     stop: float
     periodic: bool = True
+
+    def __post_init__(self):
+        kind, unit = ("angle", "rad") if self.periodic else ("coordinate", "m")
+        for name in ("start", "stop"):
+            what = f"active window: {name}"
+            object.__setattr__(self, name, check(_finite(getattr(self, name), what, unit), kind, what))
 
     @property
     def width(self) -> float:
@@ -79,7 +86,7 @@ class PointForce:
     name: str = ""
 
     def __post_init__(self):
-        object.__setattr__(self, "force", _point(self.force, f"force on link {self.link} at {self.point}"))
+        object.__setattr__(self, "force", _point(self.force, f"force on link {self.link} at {self.point}", "force"))
 
 
 @dataclass(frozen=True)
@@ -92,7 +99,8 @@ class Torque:
     name: str = ""
 
     def __post_init__(self):
-        object.__setattr__(self, "torque", _finite(self.torque, f"torque on link {self.link}"))
+        what = f"torque on link {self.link}"
+        object.__setattr__(self, "torque", check(_finite(self.torque, what, "N·m"), "torque", what))
 
 
 Load = PointForce | Torque
@@ -100,7 +108,7 @@ Load = PointForce | Torque
 
 def standard_gravity(g: float) -> float:
     """Validate a gravitational acceleration g [m/s²] (acts along −y)."""
-    g = _finite(g, "gravity")
+    g = check(_finite(g, "gravity", "m/s²"), "acceleration", "gravity")
     if g < 0:
         raise ModelError(f"gravity must be ≥ 0 m/s² (it acts along −y), got {g:g}")
     return g

@@ -12,7 +12,8 @@ from ..errors import ModelError
 from .driver import Driver
 from .joints import GearMesh, Joint, Prismatic, Revolute
 from .link import FRAME, Link
-from .loads import Load, PointForce, standard_gravity
+from .loads import Load, PointForce, Torque, standard_gravity
+from .ranges import complaint
 
 
 @dataclass(frozen=True)
@@ -46,10 +47,16 @@ class Mechanism:
     source: str = ""
 
     def __post_init__(self):
-        object.__setattr__(self, "links", tuple(self.links))
-        object.__setattr__(self, "joints", tuple(self.joints))
-        object.__setattr__(self, "loads", tuple(self.loads))
+        for name in ("links", "joints", "loads"):
+            value = getattr(self, name)
+            # A single Link (or a string) where a list of them belongs would otherwise fail deep inside.
+            if isinstance(value, (str, bytes, Mapping)) or not hasattr(value, "__iter__"):
+                raise ModelError(f"{name} must be a list, got a single {type(value).__name__}", at=(name,))
+            object.__setattr__(self, name, tuple(value))
         object.__setattr__(self, "gravity", standard_gravity(self.gravity))
+        if not isinstance(self.assembly, Mapping):
+            raise ModelError(f"assembly must map joint points to +1 or -1, e.g. {{'B': 1}}, got {self.assembly!r}",
+                             at=("assembly",))
         object.__setattr__(self, "assembly", MappingProxyType(dict(self.assembly)))
         self._check()
 
@@ -78,66 +85,102 @@ class Mechanism:
 
     # -- validation -------------------------------------------------------
     def _check(self):
+        # Each error carries where it lies (``at``), so a problem file's reader can name the field.
+        self._check_types()
         numbers = [l.number for l in self.links]
-        for n in set(numbers):
-            if numbers.count(n) > 1:
-                raise ModelError(f"link {n} is defined {numbers.count(n)} times")
+        for k, n in enumerate(numbers):
+            if n in numbers[:k]:
+                raise ModelError(f"link {n} is defined twice; give each link its own number", at=("links", k, "number"))
         if FRAME not in numbers:
             raise ModelError("the mechanism needs a frame: link 1")
-        for joint in self.joints:
-            for n in joint.links:
+        known = ", ".join(map(str, sorted(numbers)))
+        for k, joint in enumerate(self.joints):
+            fields = ("guide", "slider") if isinstance(joint, Prismatic) else ("links[0]", "links[1]")
+            for n, name in zip(joint.links, fields):
                 if n not in numbers:
-                    known = ", ".join(map(str, sorted(numbers)))
-                    raise ModelError(f"{joint.label} names unknown link {n} (links are {known})")
+                    raise ModelError(f"{joint.label} names unknown link {n} (links are {known})", at=("joints", k, name))
             if isinstance(joint, Revolute):
-                for n in joint.links:
-                    self.link(n).point(joint.point)
+                needs = [(n, joint.point, "point") for n in joint.links]
             elif isinstance(joint, Prismatic):
-                self.link(joint.slider).point(joint.point)
-                self.link(joint.guide).point(joint.through)
-            elif isinstance(joint, GearMesh):
-                for n, c in zip(joint.links, joint.centers):
-                    self.link(n).point(c)
+                needs = [(joint.slider, joint.point, "point"), (joint.guide, joint.through, "through")]
+            else:
+                needs = [(n, c, f"centers[{m}]") for m, (n, c) in enumerate(zip(joint.links, joint.centers))]
+            for n, name, where in needs:
+                try:
+                    self.link(n).point(name)
+                except ModelError as exc:
+                    raise ModelError(f"{joint.label}: {exc}", at=("joints", k, where)) from None
         pairs = [frozenset(j.links) for j in self.joints]
-        for p in set(pairs):
-            if pairs.count(p) > 1:
+        for k, p in enumerate(pairs):
+            if p in pairs[:k]:
                 i, j = sorted(p)
-                raise ModelError(f"links {i} and {j} are joined {pairs.count(p)} times; one joint per pair")
-        for link in self.links:
+                raise ModelError(f"links {i} and {j} are joined twice; one joint per pair",
+                                 at=("joints", k, "slider" if isinstance(self.joints[k], Prismatic) else "links"))
+        for k, link in enumerate(self.links):
             pins = [j.point for j in self.joints_of(link.number) if isinstance(j, Revolute)]
             for a, b in itertools.combinations(sorted(set(pins)), 2):
                 (xa, ya), (xb, yb) = link.point(a), link.point(b)
-                if math.hypot(xb - xa, yb - ya) <= 1e-12:
-                    raise ModelError(f"{link.label}: pins {a} and {b} coincide (zero length)")
+                d = math.hypot(xb - xa, yb - ya)
+                if d <= 1e-12:
+                    raise ModelError(f"{link.label}: pins {a} and {b} coincide (zero length)", at=("links", k, "points"))
+                # Shorter than the smallest length graphkin accepts: surely a unit slip (µm for mm), and the
+                # solvers' products of such lengths would lose every digit.
+                why = complaint(d, "length")
+                if why:
+                    raise ModelError(f"{link.label}: the distance {d:.3g} m between pins {a} and {b} {why}",
+                                     at=("links", k, "points"))
         self._check_driver()
-        for load in self.loads:
+        for k, load in enumerate(self.loads):
             if load.link == FRAME or load.link not in numbers:
-                raise ModelError(f"load {load.name or ''} names link {load.link}, which is not a moving link".replace("  ", " "))
+                raise ModelError(f"load {load.name or ''} names link {load.link}, which is not a moving link "
+                                 f"(moving links are {', '.join(map(str, self.moving))})".replace("  ", " "),
+                                 at=("loads", k, "link"))
             if isinstance(load, PointForce):
-                self.link(load.link).point(load.point)
+                try:
+                    self.link(load.link).point(load.point)
+                except ModelError as exc:
+                    raise ModelError(f"load {load.name + ': ' if load.name else ''}{exc}", at=("loads", k, "point")) from None
         for key, sigma in self.assembly.items():
-            if sigma not in (1, -1):
-                raise ModelError(f"assembly branch for {key!r} must be +1 or -1, got {sigma!r}")
+            if isinstance(sigma, bool) or sigma not in (1, -1):
+                raise ModelError(f"assembly branch for {key!r} must be +1 or -1, got {sigma!r}", at=("assembly", key))
         lower = sum(1 for j in self.joints if not isinstance(j, GearMesh))
         higher = len(self.joints) - lower
         dof = 3 * (len(self.links) - 1) - 2 * lower - higher
         if dof != 1:
             raise ModelError(
                 f"the mechanism has {dof} degrees of freedom (Gruebler: 3·({len(self.links)}−1) − 2·{lower} − {higher});"
-                " graphkin needs exactly one, driven by the driver"
+                " graphkin needs exactly one, driven by the driver", at=("joints",)
             )
+
+    def _check_types(self):
+        """Plain messages for parts of the wrong kind (a dict for a Link, a tuple for a joint, ...)."""
+        for what, items, kinds, names in (
+            ("links", self.links, (Link,), "Link"),
+            ("joints", self.joints, (Revolute, Prismatic, GearMesh), "Revolute, Prismatic or GearMesh"),
+            ("loads", self.loads, (PointForce, Torque), "PointForce or Torque"),
+        ):
+            for k, item in enumerate(items):
+                if not isinstance(item, kinds):
+                    raise ModelError(f"{what}[{k}] must be a {names}, got a {type(item).__name__}",
+                                     at=(what, k))
+        if not isinstance(self.driver, Driver):
+            raise ModelError(f"driver must be a Driver, e.g. Driver(2, 'crank'), got {self.driver!r}", at=("driver",))
 
     def _check_driver(self):
         d = self.driver
+        at = ("driver", "link")
         if d.link == FRAME:
-            raise ModelError("the driver cannot be the frame (link 1)")
-        self.link(d.link)
+            raise ModelError("the driver cannot be the frame (link 1)", at=at)
         try:
+            self.link(d.link)
             joint = self.joint_between(FRAME, d.link)
-        except ModelError:
-            raise ModelError(f"driver link {d.link} must be joined to the frame (link 1)") from None
+        except ModelError as exc:
+            if d.link not in [l.number for l in self.links]:
+                raise ModelError(f"driver: {exc}", at=at) from None
+            raise ModelError(f"driver link {d.link} must be joined to the frame (link 1)", at=at) from None
         wanted = Revolute if d.kind == "crank" else Prismatic
         if not isinstance(joint, wanted):
-            raise ModelError(f"a {d.kind} driver needs a {wanted.__name__.lower()} joint to the frame; link {d.link} has a {joint.label}")
+            raise ModelError(f"a {d.kind} driver needs a {wanted.__name__.lower()} joint to the frame; "
+                             f"link {d.link} has a {joint.label}", at=("driver", "type"))
         if isinstance(joint, Prismatic) and joint.guide != FRAME:
-            raise ModelError(f"slider driver {d.link}: the guide must be the frame (link 1)")
+            raise ModelError(f"slider driver {d.link}: the guide must be the frame (link 1)", at=at)

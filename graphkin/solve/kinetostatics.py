@@ -22,6 +22,7 @@ import itertools
 
 import numpy as np
 
+from ..errors import GraphkinError
 from ..kinematics import Dyad, DriverGroup, GearGroup, Kinematics, solve_kinematics
 from ..kinematics.dyads import solve_columns
 from ..geometry import as_xy
@@ -166,6 +167,9 @@ def solve_forces(kin: Kinematics) -> ForceAnalysis:
     -------
     ForceAnalysis
     """
+    if not isinstance(kin, Kinematics):
+        raise GraphkinError(f"solve_forces takes the Kinematics of a mechanism (solve_kinematics(...) or "
+                            f"problem.kinematics()), got {type(kin).__name__}")
     mech = kin.mechanism
     n = kin.n
     L, M = {}, {}

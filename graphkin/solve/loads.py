@@ -41,10 +41,14 @@ def inertia(kin: Kinematics, link: int) -> Inertia:
     F = -body.mass * kin.z_a_G(link)
     T = -body.I_G * kin.al(link)
     size = np.abs(F)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        h = np.where(size > 0, np.abs(T) / size, np.nan)
-        # r × F = T with r ⟂ F gives r = −i T F / |F|².
-        shift = np.where(size > 0, -1j * T * F / size**2, np.nan)
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        # r × F = T with r ⟂ F gives r = −i T F / |F|² = −i T / conj(F) (no |F|² to underflow or overflow).
+        shift = -1j * T / np.conj(F)
+        h = np.abs(T) / size
+    # No force, or one so small beside the torque that its line lies beyond any float: a pure couple.
+    couple = ~np.isfinite(shift) | ~(size > 0)
+    h = np.where(couple, np.nan, h)
+    shift = np.where(couple, np.nan, shift)
     return Inertia(as_xy(F), T, h, as_xy(kin.z_G(link) + shift))
 
 

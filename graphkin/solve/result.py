@@ -18,7 +18,7 @@ _NAME = re.compile(r"^([FGT])(\d)(\d)$|^([FGT])_?(\d+),(\d+)$")
 
 def parse_force_name(mechanism, name: str) -> tuple[int, int]:
     """Links (i, j) of a joint-force name: ``"F23"`` → (2, 3); checks the letter (F or G) fits the joint."""
-    m = _NAME.match(name)
+    m = _NAME.match(name) if isinstance(name, str) else None
     if not m:
         raise GraphkinError(f"{name!r} is not a force name like 'F23', 'G14' or {mechanism.driver.symbol!r}")
     letter, i, j = (m.group(1), m.group(2), m.group(3)) if m.group(1) else (m.group(4), m.group(5), m.group(6))
