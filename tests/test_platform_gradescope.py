@@ -314,3 +314,26 @@ def test_whom_to_grade_without_a_roster():
     assert gradescope.whom_to_grade([user("123", "a@b.edu")], "a@b.edu", None) == ("a@b.edu", [])
     with pytest.raises(gradescope.SubmissionError, match="neither a student id nor an email"):
         gradescope.whom_to_grade([user("", "")], None, None)
+
+
+def test_an_interrupted_export_says_how_far_it_got(tmp_path, monkeypatch, capsys):
+    """Issue 12: a batch of files says which it wrote; Ctrl-C part-way leaves whole files only."""
+    import graphkin.exercises.platforms as p
+    from graphkin.cli import main
+
+    real, calls = p.write_bytes, []
+
+    def write_then_stop(*args, **kwargs):
+        if calls:
+            raise KeyboardInterrupt
+        calls.append(args[0])
+        return real(*args, **kwargs)
+
+    monkeypatch.setattr(p, "write_bytes", write_then_stop)
+    code = main(["exercise", "export", NAME, "--to", "gradescope", "-o", str(tmp_path / "gs")])
+    assert code == 130
+    files = [f for f in (tmp_path / "gs").rglob("*") if f.is_file()]
+    assert files == [calls[0]] and not [f for f in files if f.name.endswith(".tmp")]
+    err = capsys.readouterr().err.strip().splitlines()
+    assert err == [f"graphkin: interrupted: 1 of 5 files of the export were written to {tmp_path / 'gs'}; "
+                   "run the export again"]

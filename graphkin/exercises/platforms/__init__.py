@@ -190,9 +190,17 @@ def export(exercise, to: str, dest, *, secret: str = "", students=None, progress
     check_destination(dest / "README.md", "-o")
     tree = module.build(bundle(exercise, secret=secret, students=students, progress=progress))
     written = []
-    for rel, content in sorted(tree.items()):
-        data = content.encode("utf-8") if isinstance(content, str) else content
-        written.append(write_bytes(dest / rel, data, "-o", executable=rel.endswith((".sh", "run_autograder"))))
+    try:
+        for rel, content in sorted(tree.items()):
+            data = content.encode("utf-8") if isinstance(content, str) else content
+            written.append(write_bytes(dest / rel, data, "-o", executable=rel.endswith((".sh", "run_autograder"))))
+    except KeyboardInterrupt:
+        # Each file is whole or absent; say how far the export got, so the teacher knows to run it again.
+        raise KeyboardInterrupt(f"{len(written)} of {len(tree)} files of the export were written to {dest}; "
+                                "run the export again") from None
+    except GraphkinError as exc:
+        raise GraphkinError(f"{exc}; {len(written)} of {len(tree)} files of the export were written to {dest}") \
+            from None
     return written
 
 
