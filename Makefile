@@ -3,7 +3,7 @@ PYTHON ?= python3
 VENV   := .venv
 BIN    := $(VENV)/bin
 
-.PHONY: demo test bench figures clean
+.PHONY: demo test e2e bench figures clean
 
 $(BIN)/python:
 	$(PYTHON) -m venv $(VENV)
@@ -18,6 +18,27 @@ demo: $(VENV)/.installed
 
 test: $(VENV)/.installed
 	$(BIN)/python -m pytest -q --nbmake --nbmake-timeout=300 --doctest-modules graphkin tests lessons
+
+# The lessons (cell by cell in JupyterLab, and in Voilà) and `graphkin explore` in a real browser:
+# Debian's chromium driven by Playwright's Python package. Root installs chromium where it is missing;
+# `playwright install` is never run (it downloads a browser build). Screenshots and timings: build/e2e/.
+CHROMIUM ?= /usr/bin/chromium
+
+$(VENV)/.e2e: $(VENV)/.installed
+	$(BIN)/python -m pip install --quiet -e '.[test,e2e]'
+	touch $@
+
+e2e: $(VENV)/.e2e
+	@if [ ! -x "$(CHROMIUM)" ]; then \
+	  if [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null; then \
+	    echo "installing chromium (apt-get)"; \
+	    apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq chromium >/dev/null; \
+	  else \
+	    echo "make e2e needs Chromium at $(CHROMIUM): apt-get install chromium, or make e2e CHROMIUM=/path/to/it"; \
+	    exit 1; \
+	  fi; \
+	fi
+	GRAPHKIN_CHROMIUM=$(CHROMIUM) $(BIN)/python -m pytest -q -s tests/e2e
 
 figures: $(VENV)/.installed
 	$(BIN)/python figures/build.py

@@ -1,5 +1,5 @@
 """Rebuild every figure in figures/: each catalog problem's side-by-side figure and construction frames,
-and the whole-cycle figures of lessons 03–05.
+the whole-cycle figures of lessons 03–05, and the worked-solution handouts of figures/handouts/.
 
 Run with ``make figures``. A problem with several positions is drawn at one
 representative position, named below.
@@ -59,12 +59,22 @@ def build_cycle(name: str) -> list[Path]:
     return written
 
 
+def build_handouts(names=None) -> list[Path]:
+    """The worked-solution handouts of figures/handouts/ (their PDFs and page images), by its own build.py."""
+    import runpy
+
+    handouts = runpy.run_path(str(HERE / "handouts" / "build.py"))
+    return [p for name in handouts["PROBLEMS"] if not names or name in names for p in handouts["build"](name)]
+
+
 def main(names=None) -> int:
     for name in names or catalog.names():
         for path in build(name) + (build_cycle(name) if name in CYCLES else []):
             print(path.relative_to(HERE.parent))
     path = draw.save(draw.draw_sign_convention().ax.figure, HERE / "sign_convention.png")
     print(path.relative_to(HERE.parent))
+    for path in build_handouts(names):
+        print(path.relative_to(HERE.parent))
     return 0
 
 

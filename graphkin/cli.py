@@ -1,4 +1,4 @@
-"""``graphkin`` on the command line: ``list``, ``solve PROBLEM``, ``cycle PROBLEM``, ``exercise ...``.
+"""``graphkin`` on the command line: ``list``, ``solve PROBLEM``, ``cycle PROBLEM``, ``flywheel FILE``, ``exercise ...``.
 
 Bad input ends with a one-line message on stderr and exit code 2, never a
 traceback.
@@ -45,10 +45,14 @@ def _parser() -> argparse.ArgumentParser:
     c.add_argument("--json", action="store_true", help="print every array as JSON in SI units (schema: docs/json.md)")
     c.add_argument("--figure", metavar="FILE", help="write the cycle figure (.png, .svg or .pdf)")
     from .cli_exercises import add_parser
+    from .cli_flywheel import add_parser as add_flywheel
+    from .cli_explore import add_parser as add_explore
     from .cli_handout import add_parser as add_handout
 
     add_parser(sub)
+    add_explore(sub)
     add_handout(sub)
+    add_flywheel(sub)
     return p
 
 
@@ -236,7 +240,7 @@ def _where(cycle, q) -> str:
     d = cycle.problem.mechanism.driver
     if not math.isfinite(q):
         return "—"
-    return f"θ1{d.link} = {math.degrees(q):.6g}°" if d.kind == "crank" else f"s = {q * 1e3:.6g} mm"
+    return f"θ{d.frame}{d.link} = {math.degrees(q):.6g}°" if d.kind == "crank" else f"s = {q * 1e3:.6g} mm"
 
 
 def _floats(a) -> list:
@@ -499,6 +503,14 @@ def main(argv=None) -> int:
             from .cli_handout import run as handout
 
             return handout(args)
+        if args.command == "explore":
+            from .cli_explore import run as explore
+
+            return explore(args)
+        if args.command == "flywheel":
+            from .cli_flywheel import run as flywheel
+
+            return flywheel(args)
         return _list() if args.command == "list" else _solve(args)
     except GraphkinError as exc:
         print(f"graphkin: error: {exc}", file=sys.stderr)

@@ -21,7 +21,9 @@ from .model import Active, Driver, GearMesh, Link, Mechanism, PointForce, Prisma
 from .model import mass as massprops
 from .model.ranges import complaint
 
-_TOP = {"title", "source", "notes", "gravity", "frame", "links", "joints", "driver", "loads", "assembly", "given"}
+_TOP = {"title", "source", "notes", "analysis", "gravity", "frame", "links", "joints", "driver", "loads", "assembly",
+        "given"}
+_ANALYSES = ("dynamic", "static")
 _LINK = {"number", "name", "points", "mass", "G", "I_G", "k", "shape"}
 _JOINT = {
     "revolute": {"type", "links", "point"},
@@ -33,7 +35,7 @@ _DRIVER = {
     "slider": {"type", "link", "s", "v", "a"},
 }
 _LOAD = {"force": {"type", "link", "point", "force", "active", "name"}, "torque": {"type", "link", "torque", "active", "name"}}
-_GIVEN = {"omega", "alpha", "a_G", "v_G"}
+_GIVEN = {"omega", "alpha", "a_G", "v_G", "theta", "points"}
 _SHAPES = {
     "rod": {"type", "from", "to"},
     "outline": {"type", "through", "width", "thickness", "density", "hole_diameter"},
@@ -54,8 +56,14 @@ class Problem:
         Input positions and rates, SI.
     given : dict
         Kinematic values the problem gives instead of deriving them, keyed
-        ``(link, "omega" | "alpha" | "a_G" | "v_G")``.
+        ``(link, "omega" | "alpha" | "a_G" | "v_G" | "theta")`` and
+        ``(link, "at", point)`` for a point's position [m] (see
+        :class:`graphkin.kinematics.Kinematics`).
     title, source, notes : str
+    analysis : {"dynamic", "static"}
+        ``"static"`` leaves every inertia load out (masses are then needed
+        only for weights, and the input rates only give the sense of motion
+        for friction); ``"dynamic"`` (the default) includes them.
     """
 
     name: str
@@ -67,6 +75,12 @@ class Problem:
     title: str = ""
     source: str = ""
     notes: str = ""
+    analysis: str = "dynamic"
+
+    @property
+    def static(self) -> bool:
+        """True for a static force analysis (no inertia loads)."""
+        return self.analysis == "static"
 
     @property
     def input_name(self) -> str:
@@ -162,8 +176,11 @@ class Problem:
         kin = solve_kinematics(self.mechanism, q, q_dot, q_ddot)
         if self.given:
             n = len(q)
-            given = {key: np.broadcast_to(np.asarray(v, dtype=float), (n, 2) if key[1] in ("a_G", "v_G") else (n,)) for key, v in self.given.items()}
-            kin = replace(kin, given=given)
+            given = {key: np.broadcast_to(np.asarray(v, dtype=float), (n, 2) if key[1] in ("a_G", "v_G", "at") else (n,))
+                     for key, v in self.given.items()}
+            kin = kin.with_given(given)
+        if self.static:
+            kin = replace(kin, static=True)
         return kin
 
     def solve(self, at=None):
@@ -365,7 +382,13 @@ def build_problem(data: Mapping[str, Any], *, file: str = "<problem>") -> Proble
     if not isinstance(data, Mapping):
         raise GraphkinError(f"build_problem takes a problem file's tables as a dict, got {type(data).__name__}")
     rd.table(dict(data), "", _TOP)
-    links = [_frame(rd, data)] + [_link(rd, t, f"links[{i}]") for i, t in enumerate(_list(rd, data, "links"))]
+    analysis = data.get("analysis", "dynamic")
+    if analysis not in _ANALYSES:
+        raise rd.fail("analysis", f"must be \"dynamic\" (inertia loads included, the default) or \"static\" (no inertia "
+                      f"loads), got {analysis!r}")
+    static = analysis == "static"
+    frame = _frame(rd, data)
+    links = [frame] + [_link(rd, t, f"links[{i}]", frame.number, static) for i, t in enumerate(_list(rd, data, "links"))]
     joints = [_joint(rd, t, f"joints[{i}]") for i, t in enumerate(_list(rd, data, "joints"))]
     d = rd.table(rd.need(data, "driver", ""), "driver", _DRIVER["crank"] | _DRIVER["slider"])
     kind = d.get("type", "crank")
@@ -373,7 +396,7 @@ def build_problem(data: Mapping[str, Any], *, file: str = "<problem>") -> Proble
         raise rd.fail("driver.type", f"must be 'crank' or 'slider', got {kind!r}")
     rd.table(d, "driver", _DRIVER[kind])
     driver = Driver(rd.whole(rd.need(d, "link", "driver"), "driver.link"), kind)
-    q, q_dot, q_ddot = _motion(rd, d, kind)
+    q, q_dot, q_ddot = _motion(rd, d, kind, static)
     loads = [_load(rd, t, f"loads[{i}]", kind) for i, t in enumerate(_list(rd, data, "loads"))]
     gravity = rd.si(data["gravity"], "acceleration", "gravity", None) if "gravity" in data else 0.0
     if gravity < 0:
@@ -386,14 +409,20 @@ def build_problem(data: Mapping[str, Any], *, file: str = "<problem>") -> Proble
         assembly[key] = sigma
     try:
         mech = Mechanism(links, joints, driver, loads, gravity, assembly,
-                         title=str(data.get("title", "")), source=str(data.get("source", "")))
+                         title=str(data.get("title", "")), source=str(data.get("source", "")), frame=frame.number)
     except ModelError as exc:
         raise rd.fail(_field_of(exc.at), str(exc)) from None
     for key in assembly:
         points = {j.point for j in joints if not isinstance(j, GearMesh)}
         if key not in points:
             raise rd.fail(f"assembly.{key}", f"names no joint point (joints are at {', '.join(sorted(points))})")
-    given = _given(rd, data.get("given", {}), mech, len(q))
+    speed = "omega" if kind == "crank" else "v"
+    if not static and speed not in d:
+        # Checked once the mechanism is known to be sound, so that a wrong driver type is named first.
+        raise rd.fail(f"driver.{speed}", f"is missing: a dynamic analysis needs the input speed, e.g. {speed} = "
+                      + ('"900 rpm"' if kind == "crank" else '"2 m/s"')
+                      + ' (for a linkage at rest or at negligible speed write analysis = "static")')
+    given = _given(rd, data.get("given", {}), mech, len(q), static)
     try:
         from .kinematics import decompose
         from .kinematics.structure import Dyad
@@ -408,7 +437,7 @@ def build_problem(data: Mapping[str, Any], *, file: str = "<problem>") -> Proble
                           + (f"this mechanism's branches are chosen at {', '.join(branches)}" if branches else
                              "this mechanism has no dyad, so no branch to choose: leave out [assembly]"))
     return Problem(file, mech, q, q_dot, q_ddot, given, str(data.get("title", "")), str(data.get("source", "")),
-                   str(data.get("notes", "")))
+                   str(data.get("notes", "")), analysis)
 
 
 def _list(rd, data, key):
@@ -419,8 +448,12 @@ def _list(rd, data, key):
 
 
 def _frame(rd, data):
-    t = rd.table(data.get("frame", {}), "frame", {"points"})
-    return Link(1, _points(rd, t.get("points", {}), "frame.points"), name="frame")
+    t = rd.table(data.get("frame", {}), "frame", {"points", "number"})
+    number = rd.whole(t.get("number", 1), "frame.number")
+    if number not in (0, 1):
+        raise rd.fail("frame.number", f"the frame is numbered 1 (as in Norton and Söylemez) or 0 (books that write F01, "
+                      f"T01), got {number!r}")
+    return Link(number, _points(rd, t.get("points", {}), "frame.points"), name="frame")
 
 
 def _points(rd, value, where):
@@ -429,23 +462,27 @@ def _points(rd, value, where):
     return {name: rd.point(p, f"{where}.{name}") for name, p in value.items()}
 
 
-def _link(rd, t, where):
+def _link(rd, t, where, frame=1, static=False):
     rd.table(t, where, _LINK)
     number = rd.whole(rd.need(t, "number", where), f"{where}.number")
-    if number == 1:
-        raise rd.fail(f"{where}.number", "link 1 is the frame: describe it in [frame]")
+    if number == frame:
+        raise rd.fail(f"{where}.number", f"link {frame} is the frame: describe it in [frame]")
+    if number < frame:
+        raise rd.fail(f"{where}.number", f"with the frame numbered {frame}, the moving links are numbered from {frame + 1}"
+                      f" up, got {number!r}" + (" (number the frame 0 with [frame] number = 0)" if number == 0 else ""))
     points = _points(rd, rd.need(t, "points", where), f"{where}.points")
     name = str(t.get("name", ""))
     if "shape" in t:
         for key in ("mass", "G", "I_G", "k"):
             if key in t and key != "mass":
                 raise rd.fail(f"{where}.{key}", "give either a shape or the mass properties, not both")
-        props = _shape(rd, t, points, f"{where}.shape")
+        props = _shape(rd, t, points, f"{where}.shape", static)
     else:
-        m = rd.si(rd.need(t, "mass", where), "mass", f"{where}.mass", None)
+        # A static analysis has no inertia loads: a mass matters only for a weight, so it may be left out (0 kg).
+        m = rd.si(t.get("mass", "0 kg") if static else rd.need(t, "mass", where), "mass", f"{where}.mass", None)
         if m < 0:
             raise rd.fail(f"{where}.mass", f"must be ≥ 0 kg, got {t['mass']!r}")
-        rd.ranged(m, t["mass"], "mass", f"{where}.mass")
+        rd.ranged(m, t.get("mass"), "mass", f"{where}.mass")
         G = rd.point(t["G"], f"{where}.G") if "G" in t else (0.0, 0.0)
         if "I_G" in t and "k" in t:
             raise rd.fail(f"{where}.k", "give I_G or the radius of gyration k, not both")
@@ -468,7 +505,7 @@ def _link(rd, t, where):
         raise rd.fail(f"{where}.shape" if "shape" in t else where, str(exc)) from None
 
 
-def _shape(rd, t, points, where):
+def _shape(rd, t, points, where, static=False):
     s = t["shape"]
     kind = rd.table(s, where, set(s) if isinstance(s, dict) else set()).get("type")
     if kind is None:
@@ -484,10 +521,11 @@ def _shape(rd, t, points, where):
 
     try:
         if kind == "rod":
-            m = rd.si(rd.need(t, "mass", where[:-6]), "mass", f"{where[:-6]}.mass", None)
+            m = rd.si(t.get("mass", "0 kg") if static else rd.need(t, "mass", where[:-6]), "mass", f"{where[:-6]}.mass",
+                      None)
             if m < 0:
                 raise rd.fail(f"{where[:-6]}.mass", f"must be ≥ 0 kg, got {t['mass']!r}")
-            rd.ranged(m, t["mass"], "mass", f"{where[:-6]}.mass")
+            rd.ranged(m, t.get("mass"), "mass", f"{where[:-6]}.mass")
             (x0, y0), (x1, y1) = pt(rd.need(s, "from", where), "from"), pt(rd.need(s, "to", where), "to")
             return massprops.thin_rod(math.hypot(x1 - x0, y1 - y0), m, start=(x0, y0), angle=math.atan2(y1 - y0, x1 - x0))
         if "mass" in t:
@@ -558,10 +596,14 @@ def _pair(rd, value, where):
     return tuple(rd.whole(v, f"{where}[{i}]") for i, v in enumerate(value))
 
 
-def _motion(rd, d, kind):
+def _motion(rd, d, kind, static=False):
     names = ("theta", "omega", "alpha") if kind == "crank" else ("s", "v", "a")
     dims = ("angle", "angular_velocity", "angular_acceleration") if kind == "crank" else ("length", "velocity", "acceleration")
     q = rd.array(rd.need(d, names[0], "driver"), dims[0], f"driver.{names[0]}")
+    accel = names[2]
+    if static and accel in d:
+        raise rd.fail(f"driver.{accel}", f"a static analysis has no inertia loads, so {accel} is not used: leave it out "
+                      f"(or write analysis = \"dynamic\")")
     rates = []
     for name, dim in zip(names[1:], dims[1:]):
         r = rd.array(d.get(name, f"0 {'rad/s' if kind == 'crank' else 'm/s'}{'^2' if name in ('alpha', 'a') else ''}"), dim, f"driver.{name}")
@@ -597,13 +639,14 @@ def _load(rd, t, where, driver_kind):
     return Torque(link, rd.si(rd.need(t, "torque", where), "torque", f"{where}.torque"), active, name)
 
 
-def _given(rd, value, mech, n):
+def _given(rd, value, mech, n, static=False):
     out = {}
     if not isinstance(value, dict):
         raise rd.fail("given", "must be a table of links, e.g. [given.3]")
     if value and n != 1:
         raise rd.fail("given", f"given kinematics need a single input position, the file has {n}")
-    dims = {"omega": "angular_velocity", "alpha": "angular_acceleration", "a_G": "acceleration", "v_G": "velocity"}
+    dims = {"omega": "angular_velocity", "alpha": "angular_acceleration", "a_G": "acceleration", "v_G": "velocity",
+            "theta": "angle"}
     for key, t in value.items():
         where = f"given.{key}"
         try:
@@ -614,6 +657,22 @@ def _given(rd, value, mech, n):
             raise rd.fail(where, f"names no moving link (moving links are {', '.join(map(str, mech.moving))})")
         rd.table(t, where, _GIVEN)
         for name, v in t.items():
+            if static and name in ("alpha", "a_G"):
+                raise rd.fail(f"{where}.{name}", "a static analysis has no inertia loads, so it is not used: leave it out "
+                              "(or write analysis = \"dynamic\")")
+            if name == "theta" and link == mech.driver.link and mech.driver.kind == "crank":
+                raise rd.fail(f"{where}.theta", f"link {link} is the crank: its angle is the input, driver.theta")
+            if name == "points":
+                if not isinstance(v, dict) or not v:
+                    raise rd.fail(f"{where}.points", 'must be a table of named points in global coordinates, e.g. '
+                                  '{ B = ["-200 mm", "458 mm"] }')
+                own = mech.link(link).points
+                for point, xy in v.items():
+                    if point not in own:
+                        raise rd.fail(f"{where}.points.{point}", f"names no point of link {link} "
+                                      f"({', '.join(own) or 'it has none'})")
+                    out[(link, "at", point)] = rd.vec(xy, "length", f"{where}.points.{point}")
+                continue
             read = rd.vec if name in ("a_G", "v_G") else rd.si
             out[(link, name)] = read(v, dims[name], f"{where}.{name}")
     return out

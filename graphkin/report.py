@@ -11,7 +11,7 @@ import math
 
 import numpy as np
 
-from .model import FRAME, GearMesh, Prismatic
+from .model import GearMesh, Prismatic
 from .solve import ForceAnalysis
 
 
@@ -85,7 +85,7 @@ def solution(problem, result: ForceAnalysis, graphical: list | None = None) -> d
     Returns
     -------
     dict
-        ``{"problem", "title", "source", "units", "driver", "positions": [...]}``;
+        ``{"problem", "title", "source", "analysis", "frame", "units", "driver", "positions": [...]}``;
         see ``docs/json.md``.
     """
     kin = result.kinematics
@@ -141,10 +141,41 @@ def solution(problem, result: ForceAnalysis, graphical: list | None = None) -> d
         "problem": problem.name,
         "title": problem.title,
         "source": problem.source,
+        "analysis": "static" if kin.static else "dynamic",
+        "frame": mech.frame,
         "units": {"length": "m", "angle": "rad", "force": "N", "torque": "N*m", "mass": "kg", "time": "s"},
         "driver": {"link": mech.driver.link, "kind": mech.driver.kind, "name": result.driver_name},
+        "given": _given(kin),
         "positions": positions,
     }
+
+
+def _given(kin) -> list:
+    """The values the problem gives instead of deriving them, as plain data (SI): one dict per value."""
+    out = []
+    for key, v in kin.given.items():
+        v = np.asarray(v, dtype=float)[0]
+        entry = {"link": int(key[0]), "name": key[1] if key[1] != "at" else "point"}
+        if key[1] == "at":
+            entry["point"] = key[2]
+        entry["value"] = _vec(v) if v.ndim else float(v)
+        out.append(entry)
+    return out
+
+
+def _given_text(given) -> list[str]:
+    units = {"omega": ("ω", "rad/s"), "alpha": ("α", "rad/s²"), "a_G": ("a_G", "m/s²"), "v_G": ("v_G", "m/s")}
+    out = []
+    for g in given:
+        n, v = g["name"], g["value"]
+        if n == "theta":
+            out.append(f"θ{g['link']} = {math.degrees(v):.6g}°")
+        elif n == "point":
+            out.append(f"{g['point']} on link {g['link']} at ({v[0] * 1e3:.6g}, {v[1] * 1e3:.6g}) mm")
+        else:
+            sym, unit = units[n]
+            out.append(f"{sym}{g['link']} = " + (polar_text(v, unit) if isinstance(v, list) else f"{v:.6g} {unit}"))
+    return out
 
 
 def polar_text(v, unit="N", digits=4) -> str:
@@ -153,8 +184,11 @@ def polar_text(v, unit="N", digits=4) -> str:
     return f"{size:.{digits}g} {unit} ∠ {angle:.2f}°"
 
 
-def _input_text(entry, crank):
+def _input_text(entry, crank, static=False):
     q = entry["input"]
+    if static:
+        # Only the position matters; a rate, if the file gives one, only sets the sense of sliding for friction.
+        return f"θ = {math.degrees(q['value']):.6g}°" if crank else f"s = {q['value'] * 1e3:.6g} mm"
     if crank:
         return f"θ = {math.degrees(q['value']):.6g}°, ω = {q['rate']:.6g} rad/s, α = {q['rate2']:.6g} rad/s²"
     return f"s = {q['value'] * 1e3:.6g} mm, v = {q['rate']:.6g} m/s, a = {q['rate2']:.6g} m/s²"
@@ -168,19 +202,34 @@ def format_solution(problem, result: ForceAnalysis, graphical: list | None = Non
     out = [data["title"] or data["problem"]]
     if data["source"]:
         out.append(f"source: {data['source']}")
-    out.append("convention: F_ij is the force of link i on link j; angles and torques CCW positive")
+    static = data["analysis"] == "static"
+    frame = data["frame"]
+    out.append(f"convention: F_ij is the force of link i on link j; link {frame} is the frame; angles and torques CCW "
+               "positive")
+    if static:
+        out.append("analysis: static (no inertia loads: the links carry their external loads"
+                   + (" and weights" if mech.gravity else "") + " only)")
+    if data["given"]:
+        out.append("given (instead of derived): " + "; ".join(_given_text(data["given"])))
     for entry in data["positions"]:
         out.append("")
-        out.append(f"Position {entry['index'] + 1} of {len(data['positions'])}: {_input_text(entry, crank)}")
+        out.append(f"Position {entry['index'] + 1} of {len(data['positions'])}: {_input_text(entry, crank, static)}")
         if not entry["valid"]:
             out.append(f"  no solution: {entry['reason']}")
             continue
-        out.append("  Kinematics")
-        out.append(f"    {'link':<6}{'θ [deg]':>10}{'ω [rad/s]':>12}{'α [rad/s²]':>13}   a_G [m/s²]")
-        for link, s in entry["links"].items():
-            out.append(f"    {link:<6}{math.degrees(s['theta']):>10.3f}{s['omega']:>12.4f}{s['alpha']:>13.4f}   {polar_text(s['a_G'], 'm/s²')}")
-        out.append("  Inertia loads (d'Alembert: F_i = −m a_G at G, T_i = −I_G α, h = |T_i|/|F_i|)")
-        for link, s in entry["links"].items():
+        if static:
+            out.append("  Positions")
+            out.append(f"    {'link':<6}{'θ [deg]':>10}")
+            for link, s in entry["links"].items():
+                out.append(f"    {link:<6}{math.degrees(s['theta']):>10.3f}")
+        else:
+            out.append("  Kinematics")
+            out.append(f"    {'link':<6}{'θ [deg]':>10}{'ω [rad/s]':>12}{'α [rad/s²]':>13}   a_G [m/s²]")
+            for link, s in entry["links"].items():
+                out.append(f"    {link:<6}{math.degrees(s['theta']):>10.3f}{s['omega']:>12.4f}{s['alpha']:>13.4f}   "
+                           f"{polar_text(s['a_G'], 'm/s²')}")
+            out.append("  Inertia loads (d'Alembert: F_i = −m a_G at G, T_i = −I_G α, h = |T_i|/|F_i|)")
+        for link, s in ([] if static else entry["links"].items()):
             if mech.link(int(link)).mass == 0:
                 out.append(f"    link {link}: massless")
                 continue

@@ -1,17 +1,32 @@
 """An interactive explorer for notebooks: move the crank (or slider), watch the forces.
 
 :func:`explore` builds an :class:`Explorer`: a slider for the input position
-(crank angle in degrees, or slider position in mm), a speed input (rpm, or
-m/s for a slider driver), and one figure that shows the mechanism, each moving
-link's free-body diagram, every force polygon of the graphical construction
-and the driving torque (or force) over the cycle with a marker at the current
-position. Moving the slider redraws the position; changing the speed
-recomputes the torque curve (once per speed, by :func:`graphkin.analysis.cycle.sweep`).
+(crank angle in whole degrees, or slider position in mm) with a numeric box
+beside it, a speed input (rpm, or m/s for a slider driver), and one figure
+that shows the mechanism, each moving link's free-body diagram, every force
+polygon of the graphical construction and the driving torque (or force) over
+the cycle with a marker at the current position. Moving the slider redraws
+the position; changing the speed recomputes the torque curve (once per speed,
+by :func:`graphkin.analysis.cycle.sweep`).
 
 The figure is one persistent headless :class:`matplotlib.figure.Figure` whose
 axes are cleared and redrawn on each update with the ``graphkin.draw``
-functions, rendered to PNG bytes (Agg, small dpi) into an
-``ipywidgets.Image``. No interactive matplotlib backend (ipympl) is needed.
+functions, rendered to PNG bytes (Agg) into an ``ipywidgets.Image``. No
+interactive matplotlib backend (ipympl) is needed.
+
+What a person sees in a browser, and what code sees, agree:
+
+* A value the kernel sets stands. It is snapped to the slider's step (whole
+  degrees for a crank: an integer slider, which the browser never sends back
+  changed), and a value the browser sends back late, from before the kernel
+  set a newer one, is recognised and ignored (:meth:`Explorer.from_browser`).
+* Values that arrive from the browser in a burst (key presses, a drag) are
+  drawn once, at the latest value, after the burst settles (:data:`SETTLE`).
+  Values set from code are drawn at once, so a cell can read the result.
+* The figure is rendered for the screen: the browser reports its pixel ratio
+  and the width it gives the explorer, and the PNG is drawn at
+  ``CSS_DPI × pixel ratio`` (text of 8 pt is then at least 11 screen pixels
+  high and sharp on a HiDPI screen), at most as wide as the page.
 
 ipywidgets and matplotlib are imported here only, when an explorer is built:
 ``import graphkin`` does not load them.
@@ -28,7 +43,10 @@ Examples
 
 from __future__ import annotations
 
+import contextlib
+import functools
 import io
+import json
 import math
 import time
 
@@ -42,24 +60,49 @@ NCOLS = 4
 RC = {"text.hinting": "no_hinting"}
 """matplotlib settings while the explorer draws and renders."""
 
-CELL = (3.0, 2.7)
-"""Size of one panel [in]."""
+CELL_ASPECT = 0.9
+"""Height of a panel over its width."""
+
+CSS_DPI = 100.0
+"""Screen (CSS) pixels per inch of the figure, at least: its smallest text (:data:`MIN_PT`) is then 11 px high."""
+
+MIN_PT = 8.0
+"""The smallest text in the explorer's figure [pt]."""
+
+FIGURE_WIDTH = (8.0, 13.0)
+"""Narrowest and widest figure [in]: between them it fills the width the page gives the explorer."""
+
+PAGE_WIDTH = 1100.0
+"""The width the explorer is given [CSS px] until a browser reports it (and where there is none)."""
+
+SETTLE = 0.03
+"""Seconds without a new value from the browser before it is drawn: a burst of key presses is drawn once."""
+
+LIVE = 0.15
+"""While values keep coming from the browser (a drag), one is drawn at least this often [s]."""
+
+ECHOES = 64
+"""Values set by the kernel that are remembered to recognise their late echoes."""
 
 
-def explore(problem, *, n: int = 360, limits=None, dpi: int = 72, halo: bool = False):
+def explore(problem, *, n: int = 360, limits=None, dpi: int | None = None, halo: bool = False):
     """An interactive explorer of a problem, for a Jupyter notebook.
 
     Parameters
     ----------
     problem : graphkin.problem.Problem
     n : int
-        Number of positions of the torque curve over the cycle (and steps of the slider).
+        Number of positions of the torque curve over the cycle. A crank's
+        slider moves in whole degrees; a slider driver's in a round step
+        (1, 2 or 5 × 10^k mm) of about ``range / n``.
     limits : (float, float), optional
         Slider range for a slider driver [mm]; by default the problem's own
         positions if they span a range, else its position ± the total length of
-        its links. A crank always turns 0–360°.
-    dpi : int
-        Resolution of the rendered figure (small is fast).
+        its links (rounded out to the step). A crank always turns 0–360°.
+    dpi : int, optional
+        Resolution of the rendered PNG [pixels per inch of the figure]. By
+        default ``CSS_DPI`` times the screen's pixel ratio, as the browser
+        reports it (100 until it does).
     halo : bool
         Keep the white outline behind labels (legible over lines, but drawing
         outlined text costs about a third of the rendering time).
@@ -106,6 +149,71 @@ def _assembling_span(problem, q0: float, n: int) -> tuple[float, float]:
     return float(q[ok[0]] - step), float(q[ok[-1]] + step)
 
 
+def _nice_step(x: float) -> float:
+    """The largest 1, 2 or 5 × 10^k not above ``x`` (a slider step a person reads at a glance)."""
+    base = 10.0 ** math.floor(math.log10(x))
+    for m in (5.0, 2.0, 1.0):
+        if m * base <= x * (1 + 1e-9):
+            return float(f"{m * base:.12g}")
+    return float(f"{base:.12g}")  # pragma: no cover  (1 × base ≤ x always)
+
+
+@functools.cache
+def _degree_controls():
+    """An integer slider and box whose value, set from code, is rounded to the nearest degree.
+
+    ipywidgets' integer traits truncate (``int(139.9999)`` is 139); a crank
+    angle computed in radians and converted must land on the nearest degree.
+    The browser's integer slider rounds what it shows in the same way, so a
+    value the kernel sets comes back unchanged and is never echoed.
+    """
+    import ipywidgets as W
+    import traitlets
+
+    class RoundedInt(traitlets.CInt):
+        def validate(self, obj, value):
+            if isinstance(value, (float, np.floating)) and math.isfinite(value):
+                value = round(float(value))
+            return super().validate(obj, value)
+
+    class DegreeSlider(W.IntSlider):
+        value = RoundedInt(0, help="Crank angle [deg]").tag(sync=True)
+
+    class DegreeBox(W.BoundedIntText):
+        value = RoundedInt(0, help="Crank angle [deg]").tag(sync=True)
+
+    return DegreeSlider, DegreeBox
+
+
+# A hidden image that fails to load runs its onerror handler, standard ipywidgets' only way to run
+# a line of JavaScript: it writes the screen's pixel ratio and the width the page gives the explorer
+# into the explorer's hidden text box, as if typed, and again when that width changes.
+_PROBE = ("<img src='data:,' alt='' style='display:none' onerror=\"(function probe(img, tries) {"
+          "var root = img.closest('.graphkin-explorer');"
+          "var box = root && root.querySelector('.graphkin-screen input');"
+          "if (!box || !root.parentElement) { if (tries < 100) setTimeout(probe, 100, img, tries + 1); return; }"
+          "var host = root.parentElement;"
+          "function report() {"
+          "var width = Math.round(host.getBoundingClientRect().width);"
+          "var said = JSON.stringify({ratio: window.devicePixelRatio || 1, width: width});"
+          "if (width > 0 && box.value !== said) {"
+          "box.value = said; box.dispatchEvent(new Event('input', {bubbles: true})); } }"
+          "report();"
+          "if (window.ResizeObserver) { var wait;"
+          "new ResizeObserver(function () { clearTimeout(wait); wait = setTimeout(report, 250); }).observe(host); }"
+          "})(this, 0)\">")
+
+
+def _running_loop():
+    """The event loop a kernel dispatches messages from, or None (plain Python, a test)."""
+    import asyncio
+
+    try:
+        return asyncio.get_running_loop()
+    except RuntimeError:
+        return None
+
+
 def _cell(v) -> str:
     """A force for the table, with a true minus: ``1972 N ∠ −73.78°`` (``0 N`` when there is none)."""
     from .report import polar_text
@@ -113,11 +221,13 @@ def _cell(v) -> str:
     return polar_text(v).replace("-", "−") if np.any(v) else "0 N"
 
 
-def _table(construction, analytical) -> str:
+def _table(construction, analytical, where: str = "") -> str:
     """The joint forces and the driving effort at one position, both routes, as an HTML table.
 
     The explorer's force polygons carry names only: the numbers are here, where
     they can be read and copied (and a new value costs the figure no text to lay out).
+    ``where`` (the position, e.g. ``"θ = 150°"``) heads the table, so that a copy
+    of it says where it holds.
     """
     c, a = construction, analytical
     names = [n for n in (a.names() if a is not None else []) if n != c.driver_name]
@@ -132,7 +242,8 @@ def _table(construction, analytical) -> str:
         cells.append(f"{effort:.5g} {unit}".replace("-", "−"))
         rows.append(f"<tr><td style='padding:0 8px'><i>{label}</i></td>"
                     + "".join(f"<td style='padding:0 8px'>{x}</td>" for x in cells) + "</tr>")
-    return (f"<table style='font-size:90%'><tr><th></th>{head}</tr>{''.join(rows)}</table>")
+    return (f"<table style='font-size:90%'><tr><th style='padding:0 8px;text-align:left'>{where}</th>{head}</tr>"
+            f"{''.join(rows)}</table>")
 
 
 class Explorer:
@@ -142,13 +253,19 @@ class Explorer:
     ----------
     problem : Problem
         The problem at the current speed (the original's input rate replaced).
-    slider : ipywidgets.FloatSlider
-        Crank angle θ [deg] or slider position s [mm].
+    value : float
+        The position drawn: crank angle θ [deg, whole] or slider position s [mm],
+        on the slider's step.
+    slider : ipywidgets.IntSlider or ipywidgets.FloatSlider
+        Crank angle θ [deg] (whole degrees) or slider position s [mm]. Setting
+        its value from code snaps it to the step and redraws at once.
+    box : ipywidgets.BoundedIntText or ipywidgets.BoundedFloatText
+        The same position as a number, beside the slider (type a value).
     speed : ipywidgets.FloatText
         Crank speed [rpm] or slider speed [m/s].
     figure : matplotlib.figure.Figure
     image : ipywidgets.Image
-        The rendered figure (PNG).
+        The rendered figure (PNG, its resolution in the file).
     status : ipywidgets.HTML
         The driving effort at the position, or why there is no solution there.
     table : ipywidgets.HTML
@@ -164,11 +281,14 @@ class Explorer:
         The sweep behind the torque curve, at the current speed.
     marker : matplotlib.lines.Line2D
         The marker on the torque curve.
+    pixel_ratio, page_width : float
+        The screen's pixel ratio and the width the page gives the explorer [CSS px],
+        as the browser last reported them (1 and :data:`PAGE_WIDTH` before it does).
     timings : list of float
         Seconds taken by each update (construction + redraw + PNG).
     """
 
-    def __init__(self, problem, *, n: int = 360, limits=None, dpi: int = 72, halo: bool = False):
+    def __init__(self, problem, *, n: int = 360, limits=None, dpi: int | None = None, halo: bool = False):
         import ipywidgets as W
         from matplotlib.figure import Figure
 
@@ -176,6 +296,8 @@ class Explorer:
 
         if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 2:
             raise GraphkinError(f"n must be a whole number of positions ≥ 2, got {n!r}")
+        if dpi is not None and (isinstance(dpi, bool) or not isinstance(dpi, (int, np.integer)) or dpi < 10):
+            raise GraphkinError(f"dpi must be a whole number ≥ 10 (or None: the screen's), got {dpi!r}")
         self.n = int(n)
         self.halo = halo
         self.crank = problem.mechanism.driver.kind == "crank"
@@ -187,51 +309,227 @@ class Explorer:
         self.construction = None
         self.analytical = None
         self.message = ""
+        self.pixel_ratio, self.page_width = 1.0, PAGE_WIDTH
+        self._dpi = None if dpi is None else int(dpi)
+        self._quiet = False  # True while the explorer itself sets its controls
+        self._sent: list[float] = []  # values set by the kernel since the browser last moved the slider
+        self._timer = None  # the pending draw of a value from the browser
+        self._first_wait = None  # when the values now waiting began to arrive (loop time)
 
         q0 = float(problem.q[0])
         if self.crank:
-            self.slider = W.FloatSlider(value=math.degrees(q0) % 360.0, min=0.0, max=360.0, step=360.0 / self.n,
-                                        description="θ (deg)", continuous_update=True, readout_format=".1f")
+            Slider, Box = _degree_controls()
+            self.limits = (0.0, 360.0)
+            self.step = 1.0
+            self.value = float(round(math.degrees(q0) % 360.0))
+            self.slider = Slider(value=self.value, min=0, max=360, step=1, description="θ (deg)")
+            self.box = Box(value=self.value, min=0, max=360, step=1)
             self.speed = W.FloatText(value=round(q_dot0 * 30.0 / math.pi, 6), description="speed (rpm)")
         else:
             if limits is None:
                 lo, hi = float(np.min(problem.q)), float(np.max(problem.q))
                 if hi - lo < 1e-9:
                     lo, hi = _assembling_span(self.problem, q0, self.n)
-                lo, hi = lo * 1e3, hi * 1e3
+                self.step = _nice_step((hi - lo) * 1e3 / self.n)
+                # Rounded out to the step, the grid holds the round numbers (200 mm, −120 mm).
+                lo = math.floor(round(lo * 1e3 / self.step, 6)) * self.step
+                hi = math.ceil(round(hi * 1e3 / self.step, 6)) * self.step
             else:
                 lo, hi = map(float, limits)
-            self.limits = (lo, hi)
-            self.slider = W.FloatSlider(value=q0 * 1e3, min=lo, max=hi, step=(hi - lo) / self.n,
-                                        description="s (mm)", continuous_update=True, readout_format=".1f")
+                if not hi > lo:
+                    raise GraphkinError(f"limits must be (low, high) with high > low [mm], got {limits!r}")
+                self.step = _nice_step((hi - lo) / self.n)
+            self.limits = (float(f"{lo:.12g}"), float(f"{hi:.12g}"))
+            self.value = self._snap(q0 * 1e3)
+            self.slider = W.FloatSlider(value=self.value, min=self.limits[0], max=self.limits[1], step=self.step,
+                                        description="s (mm)")
+            self.box = W.BoundedFloatText(value=self.value, min=self.limits[0], max=self.limits[1], step=self.step)
             self.speed = W.FloatText(value=q_dot0, description="speed (m/s)")
-        if self.crank:
-            self.limits = (0.0, 360.0)
+        # The box beside the slider is the readout: large, and a person can type in it.
+        self.slider.readout = False
+        self.slider.continuous_update = True
+        self.slider.layout = W.Layout(flex="1 1 auto", width="auto", min_width="60%")
+        self.box.layout = W.Layout(width="7em")
         self.slider.style.description_width = "initial"
         self.speed.style.description_width = "initial"
+        self.speed.layout = W.Layout(width="15em", flex="0 0 auto")
         self.speed.disabled = bool(problem.given)
 
-        self.figure = Figure(dpi=dpi)
+        self.figure = Figure(dpi=self._dpi or CSS_DPI)
         StampCanvas(self.figure)  # each distinct label is rendered once, then pasted
-        self.image = W.Image(format="png")
-        self.status = W.HTML()
+        self.image = W.Image(format="png", layout=W.Layout(max_width="100%", height="auto"))
+        self.status = W.HTML(layout=W.Layout(flex="1 1 auto"))
         self.table = W.HTML()
-        self.widget = W.VBox([W.HBox([self.slider, self.speed]), self.status, self.table, self.image])
+        self._screen = W.Text(layout=W.Layout(display="none"))
+        probe = W.HTML(_PROBE, layout=W.Layout(display="none"))
+        for widget, name in ((self.slider, "position"), (self.box, "position-box"), (self.speed, "speed"),
+                             (self.status, "status"), (self.table, "table"), (self.image, "image"),
+                             (self._screen, "screen")):
+            widget.add_class(f"graphkin-{name}")  # for the browser test and for the probe
+        self.widget = W.VBox([W.HBox([self.slider, self.box], layout=W.Layout(width="100%", align_items="center")),
+                              W.HBox([self.speed, self.status], layout=W.Layout(width="100%", align_items="center")),
+                              self.table, self.image, probe, self._screen])
+        self.widget.add_class("graphkin-explorer")
         self._polygon_slots = 0
         self._layout(self._polygons_needed())
         self._sweep()
-        self.slider.observe(self._on_position, names="value")
+        self.slider.observe(self._on_slider, names="value")
+        self.box.observe(self._on_box, names="value")
         self.speed.observe(self._on_speed, names="value")
+        self._screen.observe(self._on_screen, names="value")
         self.update()
 
-    # -- the problem at the chosen speed ---------------------------------------
+    # -- the position -------------------------------------------------------------
     def _si(self, value: float) -> float:
-        """The slider's value in SI (rad or m)."""
+        """A position in the slider's unit, in SI (rad or m)."""
         return math.radians(value) if self.crank else value * 1e-3
 
     def _q_dot(self) -> float:
         v = float(self.speed.value)
         return v * math.pi / 30.0 if self.crank else v
+
+    def _snap(self, value: float) -> float:
+        """``value`` on the slider's step, inside its range (whole degrees for a crank)."""
+        lo, hi = self.limits
+        value = min(max(float(value), lo), hi)
+        k = round((value - lo) / self.step)
+        return float(f"{min(lo + k * self.step, hi):.12g}")
+
+    def _same(self, a: float, b: float) -> bool:
+        """Equal to far below one step: the same position after a browser's floating-point round trip."""
+        return abs(a - b) <= 1e-6 * self.step
+
+    @contextlib.contextmanager
+    def _hushed(self):
+        """Set the controls without their observers answering."""
+        self._quiet, quiet = True, self._quiet
+        try:
+            yield
+        finally:
+            self._quiet = quiet
+
+    def _show(self, value: float, *, slider: bool = True):
+        """Put ``value`` in the box (and the slider)."""
+        with self._hushed():
+            if slider:
+                self.slider.value = value
+            self.box.value = value
+
+    def _on_slider(self, change):
+        if self._quiet:
+            return
+        # ipywidgets locks a property while it applies a value that came from the browser: that is
+        # the only way to tell a person's move (or the browser's echo) from a value set by code.
+        if "value" in self.slider._property_lock:
+            self.from_browser(change["new"])
+        else:
+            self._goto(change["new"])
+
+    def _on_box(self, change):
+        if self._quiet:
+            return
+        if "value" in self.box._property_lock:
+            # Typed by a person: it stands, even if it equals a value the kernel set earlier.
+            self._sent.clear()
+            self.value = self._snap(change["new"])
+            self._show(self.value)
+            self._later()
+        else:
+            self._goto(change["new"])
+
+    def _goto(self, value: float):
+        """A position set by code: snapped, remembered (to know its echo), drawn at once."""
+        v = self._snap(value)
+        self._sent.append(v)
+        del self._sent[:-ECHOES]
+        self.value = v
+        self._show(v)
+        self.update()
+
+    def from_browser(self, value: float) -> bool:
+        """Take a value of the slider that came from the browser; returns whether it moved the explorer.
+
+        A browser's slider may send back a value the kernel set, changed by a
+        floating-point round trip (``150.00000000000003`` for 150), and it may
+        arrive after the kernel has set a newer one. A value within a millionth of
+        a step of the position drawn changes nothing; one equal to an earlier value
+        the kernel set is such a late echo: the slider is put back to the position
+        drawn. Anything else is a person's move: it is drawn once the burst of
+        moves settles (:data:`SETTLE`), or at once outside a running event loop.
+
+        Parameters
+        ----------
+        value : float
+            The slider's value as the browser sent it.
+
+        Returns
+        -------
+        bool
+        """
+        v = self._snap(value)
+        if self._same(v, self.value):
+            return False
+        if any(self._same(v, old) for old in self._sent[:-1]):
+            with self._hushed():
+                self.slider.value = self.value  # tells the browser where the explorer is
+            return False
+        self._sent.clear()
+        self.value = v
+        self._show(v, slider=False)
+        self._later()
+        return True
+
+    def _later(self):
+        """Draw the latest value once the values from the browser stop coming (or every LIVE seconds)."""
+        loop = _running_loop()
+        if loop is None:
+            self.update()
+            return
+        now = loop.time()
+        if self._timer is not None:
+            self._timer.cancel()
+        if self._first_wait is None:
+            self._first_wait = now
+        delay = SETTLE if now - self._first_wait < LIVE else 0.0
+        self._timer = loop.call_later(delay, self._draw_waiting)
+
+    def _draw_waiting(self):
+        self._timer = self._first_wait = None
+        try:
+            self.update()
+        except Exception as exc:  # no cell shows what a loop callback raises: the status line does
+            self.status.value = f"<b>Could not draw {self.value:g}</b>: {_escape(f'{type(exc).__name__}: {exc}')}"
+
+    def _cancel(self):
+        if self._timer is not None:
+            self._timer.cancel()
+        self._timer = self._first_wait = None
+
+    # -- the screen -----------------------------------------------------------------
+    def _on_screen(self, change):
+        """The browser reports its pixel ratio and the width it gives the explorer: re-render to fit."""
+        try:
+            said = json.loads(change["new"])
+            ratio = min(max(float(said["ratio"]), 1.0), 4.0)
+            width = min(max(float(said["width"]), 200.0), 8000.0)
+        except (ValueError, TypeError, KeyError):
+            return
+        if abs(ratio - self.pixel_ratio) < 0.01 and abs(width - self.page_width) < 8:
+            return
+        self.pixel_ratio, self.page_width = ratio, width
+        self._layout(self._polygon_slots)
+        self._draw_curve()
+        self._later()
+
+    def _geometry(self) -> tuple[float, float, float]:
+        """Figure width [in], screen pixels per inch of it, and the PNG's pixels per inch."""
+        lo, hi = FIGURE_WIDTH
+        width = min(hi, max(lo, self.page_width / CSS_DPI))
+        css_dpi = max(CSS_DPI, min(self.page_width / width, 1.5 * CSS_DPI))
+        if self._dpi:
+            return width, css_dpi, float(self._dpi)
+        dpi = round(css_dpi * self.pixel_ratio)  # whole: one PNG pixel per screen pixel exactly
+        return width, dpi / self.pixel_ratio, float(dpi)
 
     # -- layout -----------------------------------------------------------------
     def _polygons_needed(self) -> int:
@@ -262,15 +560,22 @@ class Explorer:
         fbd_rows = math.ceil(len(moving) / NCOLS)
         poly_rows = math.ceil(polygons / NCOLS)
         nrows = 1 + fbd_rows + poly_rows
-        fig.set_size_inches(CELL[0] * NCOLS, CELL[1] * nrows)
-        gs = GridSpec(nrows, NCOLS, figure=fig, left=0.01, right=0.99, top=1 - 0.3 / (CELL[1] * nrows),
+        width, css_dpi, dpi = self._geometry()
+        cell_h = CELL_ASPECT * width / NCOLS
+        fig.set_size_inches(width, cell_h * nrows)
+        fig.set_dpi(dpi)
+        # Shown at css_dpi screen pixels per inch whatever the PNG's own resolution: sharp on a HiDPI screen.
+        self.image.layout.width = f"{round(width * css_dpi)}px"
+        gs = GridSpec(nrows, NCOLS, figure=fig, left=0.01, right=0.99, top=1 - 0.3 / (cell_h * nrows),
                       bottom=0.01, hspace=0.3, wspace=0.08)
         self.ax_mechanism = fig.add_subplot(gs[0, 0:2], axes_class=PanelAxes)
         self.ax_torque = fig.add_subplot(gs[0, 2:4])
         # Inside its cell with room for its tick labels, so the cell can be cached as pixels (see png()).
         cell = gs[0, 2:4].get_position(fig)
         w, h = fig.get_size_inches()
-        self.ax_torque.set_position([cell.x0 + 0.6 / w, cell.y0 + 0.45 / h, cell.width - 0.7 / w, cell.height - 0.75 / h])
+        # 0.8 in on the left: room for "−50000" and the axis label at 8-9 pt.
+        self.ax_torque.set_position([cell.x0 + 0.8 / w, cell.y0 + 0.45 / h,
+                                     cell.width - 0.9 / w, cell.height - 0.75 / h])
         self._torque_cell = cell
         self._background = None
         self.ax_fbd = {}
@@ -324,10 +629,10 @@ class Explorer:
             lo, hi = np.percentile(finite, [0.5, 99.5]) if finite.size > 20 else (finite.min(), finite.max())
             pad = 0.08 * max(hi - lo, 1e-9)
             ax.set_ylim(min(lo, 0.0) - pad, max(hi, 0.0) + pad)
-        ax.set_xlabel("θ (deg)" if self.crank else "s (mm)", fontsize=8, labelpad=1)
-        ax.set_ylabel(f"{name} ({unit})", fontsize=8, labelpad=1)
-        ax.tick_params(labelsize=7, pad=1.5)
-        ax.set_title(f"Driving {'torque' if self.crank else 'force'} {name} at {speed}", fontsize=9)
+        ax.set_xlabel("θ (deg)" if self.crank else "s (mm)", fontsize=MIN_PT + 1, labelpad=1)
+        ax.set_ylabel(f"{name} ({unit})", fontsize=MIN_PT + 1, labelpad=1)
+        ax.tick_params(labelsize=MIN_PT, pad=1.5)
+        ax.set_title(f"Driving {'torque' if self.crank else 'force'} {name} at {speed}", fontsize=MIN_PT + 2)
         # Fixed ticks: no locator runs on each render.
         ax.set_xticks(ax.get_xticks())
         ax.set_yticks(ax.get_yticks())
@@ -335,10 +640,7 @@ class Explorer:
         if finite.size:
             ax.set_ylim(min(lo, 0.0) - pad, max(hi, 0.0) + pad)
 
-    # -- callbacks ------------------------------------------------------------------
-    def _on_position(self, change):
-        self.update()
-
+    # -- the speed ------------------------------------------------------------------
     def _on_speed(self, change):
         try:
             self._sweep()
@@ -348,9 +650,10 @@ class Explorer:
 
     # -- one update -----------------------------------------------------------------
     def update(self):
-        """Solve and redraw at the slider's current value; returns the Construction drawn (None if none)."""
+        """Solve and redraw at the current position (:attr:`value`); returns the Construction drawn (None if none)."""
         import matplotlib
 
+        self._cancel()  # what was waiting to be drawn is drawn now
         # Unhinted glyphs lay out and render about a quarter faster, and look the same at this size.
         with matplotlib.rc_context(RC):
             return self._update()
@@ -360,7 +663,7 @@ class Explorer:
         from .graphic import construct_forces
 
         t0 = time.perf_counter()
-        q = self._si(float(self.slider.value))
+        q = self._si(self.value)
         c = a = None
         self.message = ""
         try:
@@ -380,7 +683,7 @@ class Explorer:
             self._draw_curve()
         for ax in self._panels:
             _empty(ax)
-        here = f"{float(self.slider.value):.1f}{'°' if self.crank else ' mm'}"
+        here = f"{self.value:g}{'°' if self.crank else ' mm'}"
         if self.message:
             self.ax_mechanism.text(0.5, 0.5, f"No solution at {here}:\n{self.message}", ha="center", va="center",
                                    wrap=True, fontsize=10, color="#D55E00", transform=self.ax_mechanism.transAxes)
@@ -393,14 +696,14 @@ class Explorer:
             for step, ax in zip(polys, self.ax_polygons):
                 draw.draw_force_polygon(step, scale=c.force_scale, ax=ax, driver_name=c.driver_name, values=False)
             effort = float(a.effort[0]) if a is not None else float(c.effort)
-            x = math.degrees(q) if self.crank else q * 1e3
-            self.marker.set_data([x], [effort])
+            self.marker.set_data([self.value], [effort])
             name = c.driver_name
             unit = "N·m" if self.crank else "N"
             warn = "".join(f"<br>warning: {w}" for w in c.warnings)
             self.status.value = (f"{here}: {name} = {effort:.5g} {unit} (analytical), "
                                  f"{float(c.effort):.5g} {unit} (graphical){warn}")
-        self.table.value = _table(c, a) if not self.message else ""
+        where = f"θ = {here}" if self.crank else f"s = {here}"
+        self.table.value = _table(c, a, where) if not self.message else ""
         for ax in self._panels:
             ax._autotitlepos = False
             if not self.halo:
@@ -443,7 +746,8 @@ class Explorer:
         # encoding the full-colour pixels did.
         image = Image.frombuffer("RGBA", (w, h), canvas.buffer_rgba(), "raw", "RGBA", 0, 1)
         buf = io.BytesIO()
-        image.quantize(256, method=Image.Quantize.FASTOCTREE).save(buf, format="png", compress_level=1)
+        dpi = round(float(fig.dpi))  # in the file (pHYs), so what shows it can tell its resolution
+        image.quantize(256, method=Image.Quantize.FASTOCTREE).save(buf, format="png", compress_level=1, dpi=(dpi, dpi))
         return buf.getvalue()
 
     def _ipython_display_(self):

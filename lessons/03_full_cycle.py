@@ -547,11 +547,11 @@ fig
 #
 # ## 8. The interactive explorer
 #
-# `explore(problem)` builds a small app: a slider for the crank angle, a box for the speed, and one
-# picture with the mechanism, each link's free body, the force polygons of the graphical
-# construction, and the torque curve with a marker at the current angle. Run the notebook in
-# Jupyter and drag the slider — through the cut, watch the cutting forces appear in the free
-# bodies of links 3 and 4 and the polygons change shape.
+# `explore(problem)` builds a small app: a slider for the crank angle in whole degrees (with a box
+# beside it to type one in), a box for the speed, and one picture with the mechanism, each link's
+# free body, the force polygons of the graphical construction, and the torque curve with a marker
+# at the current angle. Run the notebook in Jupyter and drag the slider — through the cut, watch
+# the cutting forces appear in the free bodies of links 3 and 4 and the polygons change shape.
 
 # %%
 from graphkin.widgets import explore
@@ -564,9 +564,11 @@ ex
 # the slider redraws everything; then `ex.construction` is the graphical solution it drew,
 # `ex.analytical` the matrix solution at the same position, and `ex.cycle` the sweep behind its
 # torque curve (`sweep(p, 360)`: 360 positions 1° apart, and the four at ±ε). All must agree with
-# each other and with our sweep.
+# each other and with our sweep. The cell sets the speed as well as the angles: what it prints
+# depends on nothing done with the explorer before it.
 
 # %%
+ex.speed.value = 900  # the file's speed, whatever was typed above
 for a in (140.0, 40.0, 130.0):
     ex.slider.value = a
     i_ex, i = at_angle(ex.cycle, a), at_angle(cyc, a)

@@ -692,28 +692,34 @@ c900 = sweep(p, ex.n)
 T_static = static.solve(at=c900.q).effort
 predicted = T_static + (600 / 900) ** 2 * (c900.torque - T_static)
 
-f600, f900 = ex.cycle.flywheel(Cs), c900.flywheel(Cs)
+f600, f900 = c600.flywheel(Cs), c900.flywheel(Cs)  # c600: the same curve as the explorer's, shown above
 print(f"{f'n = {ex.n}':>8}{'T_avg [N·m]':>13}{'peak T [N·m]':>14}{'E [J]':>9}{'I_s [kg·m²]':>13}")
-for speed_name, cy, fl in (("900 rpm", c900, f900), ("600 rpm", ex.cycle, f600)):
+for speed_name, cy, fl in (("900 rpm", c900, f900), ("600 rpm", c600, f600)):
     print(f"{speed_name:>8}{cy.average:13.4f}{np.abs(cy.torque).max():14.2f}{fl.E:9.2f}{fl.I_s:13.4f}")
 
 # %% [markdown]
 # At 600 rpm the swing $E$ is less than half, but the flywheel must store it at a lower speed, so
 # the required inertia is a little *larger*.
 #
-# Now the slider. Send it to the angle where the 600-rpm torque is largest — at this speed that is
-# the first sample of the cut, 124° + ε: the jump now reaches higher than the inertia peaks — and
-# compare the one position the explorer solved, analytically (`ex.analytical`) and graphically
-# (`ex.construction`), and the marker it drew, with the independent sweep.
+# Now the slider, which moves in whole degrees. At 600 rpm the torque is largest at the first
+# sample of the cut, 124° + ε: the jump now reaches higher than the inertia peaks. The slider's first
+# whole degree after it, 125°, is inside the cut: send the slider there and compare the one position
+# the explorer solved, analytically (`ex.analytical`) and graphically (`ex.construction`), and the
+# marker it drew, with the independent sweep. (The cell sets the speed too: what it shows depends on
+# nothing done with the explorer before it.)
 
 # %%
 i_max = int(np.argmax(c600.torque))
-ex.slider.value = math.degrees(c600.q[i_max])
+print(f"largest torque at 600 rpm: {c600.torque[i_max]:.4f} N·m at {label(c600.q[i_max])}")
+theta = math.ceil(math.degrees(c600.q[i_max]))  # the slider's first whole degree after it
+i_at = int(np.argmin(abs(np.degrees(c600.q) - theta)))
+ex.speed.value = 600
+ex.slider.value = theta
 print(ex.status.value)
 marker_x, marker_y = (float(v[0]) for v in ex.marker.get_data())
-print(f"independent sweep: T12 = {c600.torque[i_max]:.4f} N·m at {label(c600.q[i_max])};"
+print(f"independent sweep: T12 = {c600.torque[i_at]:.4f} N·m at {label(c600.q[i_at])};"
       f" marker at ({marker_x:g}°, {marker_y:.4f} N·m)")
-worst = max(float(np.abs(np.subtract(route, c600.analysis[name][i_max])).max())
+worst = max(float(np.abs(np.subtract(route, c600.analysis[name][i_at])).max())
             for name in ex.analytical.names() for route in (ex.analytical[name][0], ex.construction[name]))
 print(f"the forces and T12, analytical and graphical, against the sweep: largest difference {worst:.1e} (N, N·m)")
 
@@ -721,6 +727,7 @@ print(f"the forces and T12, analytical and graphical, against the sweep: largest
 # And in the middle of the cut, where the polygons carry the 2000 N cutting forces:
 
 # %%
+ex.speed.value = 600
 ex.slider.value = 140
 i140 = int(np.argmin(abs(np.degrees(c600.q) - 140)))
 print(ex.status.value)
@@ -954,14 +961,16 @@ assert math.isclose(ex.cycle.average, c900.average, rel_tol=1e-9)
 assert f600.E < 0.5 * f900.E and f600.I_s > f900.I_s
 
 assert i_max == np.flatnonzero(mech.loads[0].active.mask(c600.q))[0]  # the first sample of the cut
-ex.slider.value = math.degrees(c600.q[i_max])
+cut = mech.loads[0].active.mask(np.radians([theta - 1, theta]))
+assert theta == 125 and math.isclose(math.degrees(c600.q[i_at]), 125) and list(cut) == [False, True]  # "125°, in the cut"
+ex.slider.value = theta
 marker_x, marker_y = (float(v[0]) for v in ex.marker.get_data())
-assert math.isclose(ex.analytical.effort[0], c600.torque[i_max], rel_tol=1e-9)
-assert math.isclose(ex.construction.effort, c600.torque[i_max], rel_tol=1e-9)
-assert math.isclose(marker_x, math.degrees(c600.q[i_max])) and math.isclose(marker_y, c600.torque[i_max], rel_tol=1e-9)
+assert math.isclose(ex.analytical.effort[0], c600.torque[i_at], rel_tol=1e-9)
+assert math.isclose(ex.construction.effort, c600.torque[i_at], rel_tol=1e-9)
+assert math.isclose(marker_x, theta) and math.isclose(marker_y, c600.torque[i_at], rel_tol=1e-9)
 for name in ex.analytical.names():  # every joint force, both routes, against the sweep
-    assert np.allclose(ex.analytical[name][0], c600.analysis[name][i_max], rtol=1e-9, atol=1e-6)
-    assert np.allclose(ex.construction[name], c600.analysis[name][i_max], rtol=1e-9, atol=1e-6)
+    assert np.allclose(ex.analytical[name][0], c600.analysis[name][i_at], rtol=1e-9, atol=1e-6)
+    assert np.allclose(ex.construction[name], c600.analysis[name][i_at], rtol=1e-9, atol=1e-6)
 
 ex.slider.value = 140
 assert math.isclose(ex.analytical.effort[0], c600.torque[i140], rel_tol=1e-9)

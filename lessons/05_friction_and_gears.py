@@ -455,6 +455,7 @@ ex
 # sweep behind the curve (`ex.cycle`).
 
 # %%
+ex.speed.value = 300  # the file's speed, whatever was typed above: this cell depends on nothing done before it
 for angle in (60.0, 150.0, 240.0, 330.0):
     ex.slider.value = angle
     mine = p.solve(at=[math.radians(angle)])

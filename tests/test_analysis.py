@@ -249,10 +249,11 @@ def test_flywheel_of_a_harmonic_torque():
     T0, A, omega, Cs, s = 10.0, 4.0, 50.0, 0.02, 0.05
     f = size_flywheel(theta, T0 + A * np.sin(theta), omega_avg=omega, Cs=Cs)
     assert f.T_avg == pytest.approx(T0, rel=1e-12)
-    # θ = 0 counts as on the positive side, so the table starts at π and closes at 2π.
-    np.testing.assert_allclose(f.crossings, [math.pi, 2 * math.pi], atol=1e-12)
-    np.testing.assert_allclose(f.areas, [-2 * A, 2 * A], rtol=1e-4)  # trapezoid error (h²/12)
-    np.testing.assert_allclose(f.accumulated, [-2 * A, 0.0], rtol=1e-4, atol=1e-12)
+    # θ = 0 counts as on the positive side, so its crossing is found on the step that closes the turn; it is
+    # reported at 0°, where it is (issue 13: it was reported at 360°), and the table starts there.
+    np.testing.assert_allclose(f.crossings, [0.0, math.pi], atol=1e-12)
+    np.testing.assert_allclose(f.areas, [2 * A, -2 * A], rtol=1e-4)  # trapezoid error (h²/12)
+    np.testing.assert_allclose(f.accumulated, [2 * A, 0.0], rtol=1e-4, atol=1e-12)
     assert f.E == pytest.approx(2 * A, rel=1e-4)
     tau = omega * f.I_s / (T0 * (1 - s) / (s * omega))
     Tm = f.smoothed_torque(slip=s)

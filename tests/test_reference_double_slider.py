@@ -91,3 +91,73 @@ a_G = { magnitude = "5.194 m/s^2", angle = "270 deg" }
     # With the book's rounded inputs the book's rounded outputs come out closer still.
     assert polar(r["F23"][0])[0] == pytest.approx(27.04, rel=5e-4)
     assert polar(r["F43"][0])[0] == pytest.approx(7.555, rel=5e-4)
+
+
+GIVEN_AS_PRINTED = """
+[given.3]
+theta = "113.578 deg"
+omega = "4.364 rad/s"
+alpha = "8.312 rad/s^2"
+a_G = { magnitude = "5.194 m/s^2", angle = "270 deg" }
+"""
+
+
+def _given(block):
+    from graphkin.problem import parse_problem
+
+    return parse_problem(catalog.path("double_slider").read_text() + block, file="given.toml")
+
+
+def test_given_angle_reproduces_the_books_moment_equation():
+    """Issue 13, item 3: the force step on kinematics as the book prints them, θ13 included.
+
+    The book's moment equation about A, with θ = 113.578°:
+    500 F43 sin(180° − 113.578°) + 250 (25.97) sin(90° − 113.578°) − 865 = 0, i.e. 458.258 F43 = 3461.981,
+    F43 = 7.555 N ∠180°, F23 = 27.04 N ∠−73.78°. With the angle given, the lever arm of F43 on link 3 is the
+    book's 458.258 mm and the answers are the book's to the digits it prints (it rounds T3i to 865 N·mm, graphkin
+    keeps I_G α13 = 865.8 N·mm: 0.03 % in F43).
+    """
+    p = _given(GIVEN_AS_PRINTED)
+    r = p.solve()
+    k = r.kinematics
+    assert math.degrees(k.theta[3][0]) == pytest.approx(113.578, abs=1e-9)
+    A, B = k.position(3, "A")[0], k.position(3, "B")[0]
+    assert (B - A)[1] * 1e3 == pytest.approx(458.258, abs=5e-4)  # the lever arm of F43 about A
+    assert polar(r["F43"][0]) == pytest.approx((7.555, 180.0), rel=5e-4)
+    size, angle = polar(r["F23"][0])
+    assert size == pytest.approx(27.04, rel=5e-4) and angle == pytest.approx(-73.78, abs=0.01)
+    assert polar(r["F12"][0])[0] == pytest.approx(7.555, rel=5e-4)
+    assert polar(r["G12"][0]) == pytest.approx((25.97, -90.0), rel=1e-12)
+
+
+def test_angle_read_to_the_degree_follows_the_books_equation():
+    """The same force step with θ13 read off a drawing as 114°: graphkin gives what the book's own moment
+    equation gives with that angle, 500 F43 sin(180° − θ) + 250 m a_G sin(90° − θ) − I_G α = 0 (each link's
+    equilibrium with its own points, as the book writes it); both routes agree."""
+    from graphkin.report import constructions
+
+    p = _given(GIVEN_AS_PRINTED.replace("113.578 deg", "114 deg"))
+    r = p.solve()
+    th = math.radians(114.0)
+    m, a_G, I_G, alpha = 5.0, 5.194, 5.0 * 0.5**2 / 12, 8.312
+    F43 = (-250 * m * a_G * math.sin(math.pi / 2 - th) + I_G * alpha * 1e3) / (500 * math.sin(math.pi - th))
+    assert polar(r["F43"][0]) == pytest.approx((F43, 180.0), rel=1e-12)
+    # Link 3's B sits where the angle puts it (y = 500 sin 114° = 456.77 mm), slider 4's B where the guide does.
+    assert r.kinematics.position(3, "B")[0, 1] * 1e3 == pytest.approx(500 * math.sin(th), rel=1e-12)
+    assert r.kinematics.position(4, "B")[0, 1] * 1e3 == pytest.approx(458.258, abs=5e-4)
+    c = constructions(r)[0]
+    assert c.valid and not c.warnings
+    for key in r.forces:
+        np.testing.assert_allclose(c.force(*key), r.force(*key)[0], rtol=0, atol=1e-12 * 30)
+    assert c.effort == pytest.approx(r.effort[0], rel=1e-12)
+
+
+def test_given_point_position():
+    """A point measured off a drawing: the load point or pin sits where the file says, on that link."""
+    p = _given(GIVEN_AS_PRINTED + 'points = { B = ["0 mm", "458 mm"] }\n')
+    r = p.solve()
+    np.testing.assert_allclose(r.kinematics.position(3, "B")[0], [0.0, 0.458], atol=1e-15)
+    # Moments about A with B at (0, 458) mm: 458 F43 = 250 m a_G sin(90° − θ)·(−1) + I_G α.
+    th = math.radians(113.578)
+    F43 = (-250 * 5.0 * 5.194 * math.sin(math.pi / 2 - th) + 5.0 * 0.25 / 12 * 8.312 * 1e3) / 458.0
+    assert polar(r["F43"][0])[0] == pytest.approx(F43, rel=1e-12)

@@ -200,3 +200,163 @@ def test_stamped_text_looks_like_drawn_text():
     assert not near(ink, stamped_ink).any() and not near(stamped_ink, ink).any()
     # and the colours are the same: the darkest pixels of the orange label match.
     assert np.abs(plain.min(axis=(0, 1)) - stamped.min(axis=(0, 1))).max() <= 8
+
+
+# -- what a browser does: echoes, bursts, the screen ---------------------------------------------------------------
+
+
+def test_a_late_echo_does_not_move_the_explorer_back():
+    """Shift+Enter in a browser: the kernel sets 60…330°, then the browser's echo of 150 arrives (issue 14)."""
+    ex = explore(catalog.load("slider_crank_friction"), n=SMALL)
+    for angle in (60.0, 150.0, 240.0, 330.0):
+        ex.slider.value = angle
+    drawn = len(ex.timings)
+    ex.slider.set_state({"value": 150.00000000000003})  # the path of a message from the browser
+    assert ex.value == 330 and ex.slider.value == 330 and ex.box.value == 330
+    assert len(ex.timings) == drawn  # nothing redrawn
+    assert ex.construction.q == pytest.approx(math.radians(330))
+    ref = ex.problem.solve(at=[math.radians(330)])
+    assert ex.analytical.effort[0] == pytest.approx(ref.effort[0], rel=1e-12)
+    assert f"{ref.effort[0]:.5g}" in ex.status.value
+
+
+def test_a_slider_drivers_echo_of_its_own_value_changes_nothing():
+    """A float slider's value comes back from the browser a rounding off; an older one is put back."""
+    ex = explore(catalog.load("double_slider"), n=SMALL)
+    for s in (200.0, -120.0, 100.0):
+        ex.slider.value = s
+    drawn = len(ex.timings)
+    assert ex.from_browser(100.00000000000001) is False  # the value drawn, after a floating-point round trip
+    ex.slider.set_state({"value": -120.00000000000003})  # an older value, late
+    assert ex.value == 100.0 and ex.slider.value == 100.0 and len(ex.timings) == drawn
+    assert ex.analytical.effort[0] == pytest.approx(ex.problem.solve(at=[0.1]).effort[0], rel=1e-12)
+
+
+def test_a_person_moving_the_slider_moves_the_explorer():
+    ex = explore(catalog.load("strip_cutter"), n=SMALL)
+    ex.slider.value = 140
+    ex.slider.set_state({"value": 141})  # an arrow key in the browser
+    assert ex.value == 141 and ex.box.value == 141
+    assert ex.construction.q == pytest.approx(math.radians(141))
+    ex.slider.set_state({"value": 140})  # back to a value the kernel set: a person may do that too
+    assert ex.value == 140 and ex.construction.q == pytest.approx(math.radians(140))
+
+
+def test_values_set_from_code_snap_to_the_step():
+    ex = explore(catalog.load("strip_cutter"), n=SMALL)
+    ex.slider.value = 139.99999999  # a whole degree: rounded, not truncated
+    assert ex.value == 140 and ex.slider.value == 140
+    ex.slider.value = math.degrees(math.radians(150.0))
+    assert ex.value == 150 and ex.construction.q == pytest.approx(math.radians(150))
+    ex.box.value = 45.6  # the box, set from code, moves the slider and redraws
+    assert ex.value == 46 and ex.slider.value == 46 and ex.construction.q == pytest.approx(math.radians(46))
+    ds = explore(catalog.load("double_slider"), n=SMALL)
+    step = ds.step
+    assert step in (1, 2, 5, 10, 20, 50) and ds.limits[0] % step == 0 and ds.limits[1] % step == 0
+    ds.slider.value = 200.0 + 0.3 * step
+    assert ds.value == 200.0 and ds.slider.value == 200.0
+
+
+def test_a_number_typed_in_the_box_stands():
+    """Typed by a person, a value stands even when it equals one the kernel set earlier."""
+    ex = explore(catalog.load("strip_cutter"), n=SMALL)
+    for angle in (100, 200):
+        ex.slider.value = angle
+    ex.box.set_state({"value": 100})
+    assert ex.value == 100 and ex.slider.value == 100 and ex.construction.q == pytest.approx(math.radians(100))
+
+
+def test_a_burst_from_the_browser_is_drawn_once_at_its_last_value():
+    """Ten key presses reach the kernel before it is free again: one drawing, of the last."""
+    import asyncio
+
+    from graphkin import widgets
+
+    ex = explore(catalog.load("strip_cutter"), n=SMALL)
+    ex.slider.value = 100
+    before = len(ex.timings)
+
+    async def burst():
+        for angle in range(101, 111):
+            ex.slider.set_state({"value": angle})
+        waiting = len(ex.timings) - before
+        await asyncio.sleep(widgets.SETTLE + 0.2)
+        return waiting
+
+    assert asyncio.run(burst()) == 0  # nothing drawn while the values came
+    assert len(ex.timings) == before + 1
+    assert ex.value == 110 and ex.construction.q == pytest.approx(math.radians(110))
+    ex.slider.value = 50  # code draws at once, loop or not
+    assert len(ex.timings) == before + 2 and ex.construction.q == pytest.approx(math.radians(50))
+
+
+def test_the_figure_is_rendered_for_the_screen_the_browser_reports():
+    import io
+    import json
+
+    from PIL import Image
+
+    from graphkin import widgets
+
+    ex = explore(catalog.load("strip_cutter"), n=SMALL)
+    assert ex.figure.dpi == widgets.CSS_DPI  # before a browser reports: 100 dpi
+    ex._screen.set_state({"value": json.dumps({"ratio": 2, "width": 1000})})
+    width_in, height_in = ex.figure.get_size_inches()
+    assert width_in == pytest.approx(10.0) and ex.figure.dpi == 200
+    assert ex.image.layout.width == "1000px"  # 100 screen pixels per inch, 200 image pixels per inch
+    png = Image.open(io.BytesIO(ex.image.value))
+    assert png.size[0] == round(width_in * 200) and png.info["dpi"] == pytest.approx((200, 200), abs=0.01)
+    ex._screen.set_state({"value": "not what the probe writes"})  # ignored
+    assert ex.figure.dpi == 200
+
+
+def test_every_text_is_at_least_11_screen_pixels():
+    """8 pt (the smallest text) at 100 screen pixels per inch is 11.1 px; subscripts are smaller glyphs of it."""
+    from matplotlib.text import Text
+
+    from graphkin import widgets
+
+    assert widgets.MIN_PT * widgets.CSS_DPI / 72 >= 11
+    ex = explore(catalog.load("strip_cutter"), n=SMALL)
+    ex.slider.value = 140  # the cut: the most labels
+    texts = [t for t in ex.figure.findobj(Text) if t.get_text().strip() and t.get_visible()]
+    assert len(texts) > 20
+    assert min(t.get_fontsize() for t in texts) >= widgets.MIN_PT
+
+
+def test_the_slider_takes_most_of_the_row_with_the_box_beside_it():
+    ex = explore(catalog.load("strip_cutter"), n=SMALL)
+    row = ex.widget.children[0]
+    assert list(row.children) == [ex.slider, ex.box]
+    assert ex.slider.layout.min_width == "60%" and ex.slider.readout is False
+
+
+def test_graphkin_explore_with_a_bad_problem_is_one_line_and_exit_2():
+    """Reported before Voilà starts (the browser test serves a real page and stops it with Ctrl-C)."""
+    r = subprocess.run([sys.executable, "-m", "graphkin.cli_explore", "no_such_problem", "--no-browser"],
+                       capture_output=True, text=True, timeout=60)
+    assert r.returncode == 2 and r.stdout == ""
+    assert r.stderr.count("\n") == 1 and r.stderr.startswith("graphkin: error:") and "no_such_problem" in r.stderr
+
+
+def test_graphkin_explore_page_holds_the_problem_and_nothing_else():
+    from graphkin.cli_explore import notebook
+
+    nb = notebook("strip_cutter", "Four-bar strip cutter")
+    code = [c["source"] for c in nb["cells"] if c["cell_type"] == "code"]
+    assert code == ["from graphkin import catalog\nfrom graphkin.widgets import explore\n\n"
+                    "explore(catalog.load('strip_cutter'))"]
+    assert nb["metadata"]["kernelspec"]["name"] == "python3" and nb["nbformat"] == 4
+
+
+@pytest.mark.parametrize("name", catalog.names())
+def test_the_torque_panel_keeps_its_labels_inside_its_cell(name):
+    """The panel's pixels are cached by cell (Explorer.png): a tick or axis label outside it would be cut off."""
+    ex = explore(catalog.load(name))  # the whole curve: the double slider's reaches ±50000 N near its dead ends
+    fig = ex.figure
+    renderer = fig.canvas.get_renderer()
+    cell = ex._torque_cell.transformed(fig.transFigure)
+    ax = ex.ax_torque
+    assert ax.yaxis.label.get_text() and ax.xaxis.label.get_text() and ax.title.get_text()
+    box = ax.get_tightbbox(renderer)  # what is drawn: labels, title, the tick labels inside the limits
+    assert cell.x0 - 0.5 <= box.x0 and box.x1 <= cell.x1 + 0.5 and cell.y0 - 0.5 <= box.y0 and box.y1 <= cell.y1 + 0.5

@@ -35,6 +35,9 @@ def build(name: str) -> list[Path]:
     handout.write(doc, path)
     pdf = pdfium.PdfDocument(path)
     written = [path]
+    # Page images are named by page: a change of layout moves them, so last build's go first.
+    for old in HERE.glob(f"{name}_page*.png"):
+        old.unlink()
     for k in sorted({0, polygon_page(pdf)}):
         png = HERE / f"{name}_page{k + 1}.png"
         pdf[k].render(scale=DPI / 72).to_pil().save(png, optimize=True)

@@ -10,12 +10,13 @@ TURN = 2 * math.pi
 """One turn of the crank [rad]."""
 
 
-def closing_step(theta) -> float | None:
-    """Step from the last angle back round to the first [rad], or None if ``theta`` is not one turn.
+def closing_step(theta, period: float = TURN) -> float | None:
+    """Step from the last angle back round to the first [rad], or None if ``theta`` is not one cycle.
 
-    ``theta`` is one turn when it is strictly monotonic, spans less than
-    2π, and the gap left to close the turn is no wider than its widest step
-    (0 when the last angle repeats the first one turn on, e.g. 0°…360°).
+    ``theta`` is one cycle when it is strictly monotonic, spans less than
+    ``period`` (one turn, 2π, unless said: a four-stroke engine's cycle is
+    4π), and the gap left to close the cycle is no wider than its widest
+    step (0 when the last angle repeats the first one cycle on, e.g. 0°…360°).
 
     Examples
     --------
@@ -30,8 +31,8 @@ def closing_step(theta) -> float | None:
     d = np.abs(np.diff(theta))
     if not (np.all(np.diff(theta) > 0) or np.all(np.diff(theta) < 0)):
         return None
-    gap = TURN - abs(theta[-1] - theta[0])
-    tol = 1e-9 * TURN
+    gap = period - abs(theta[-1] - theta[0])
+    tol = 1e-9 * period
     if gap < -tol or gap > d.max() * (1 + 1e-9) + tol:
         return None
     return max(gap, 0.0)

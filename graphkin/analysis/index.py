@@ -24,7 +24,7 @@ import numpy as np
 from ..errors import GraphkinError
 from ..model import PointForce, Torque
 from ..solve import ForceAnalysis, solve_forces
-from .cycle import Peak, check_problem, peak_of, sweep_positions
+from ._sampling import Peak, check_problem, peak_of, sweep_positions
 
 if TYPE_CHECKING:
     from ..problem import Problem

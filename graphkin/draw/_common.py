@@ -260,7 +260,7 @@ def input_text(construction) -> str:
     """``θ₁₂ = 30°`` for a crank, ``s = 200 mm`` for a slider driver."""
     d = construction.mechanism.driver
     if d.kind == "crank":
-        return f"θ{''.join(_SUB.get(ch, ch) for ch in f'1{d.link}')} = {num(math.degrees(construction.q), 6)}°"
+        return f"θ{''.join(_SUB.get(ch, ch) for ch in f'{d.frame}{d.link}')} = {num(math.degrees(construction.q), 6)}°"
     return f"s = {num(construction.q * MM, 6)} mm"
 
 

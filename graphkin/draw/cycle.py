@@ -50,6 +50,14 @@ def _x(q, crank: bool) -> np.ndarray:
     return np.degrees(q) if crank else q * 1e3
 
 
+def _theta(mechanism) -> str:
+    """The crank angle's name as the problem numbers its links: ``θ₁₂``, or ``θ₀₁`` with the frame numbered 0."""
+    from ._common import _SUB
+
+    d = mechanism.driver
+    return "θ" + "".join(_SUB.get(ch, ch) for ch in f"{d.frame}{d.link}")
+
+
 def _input_axis(ax, crank: bool, symbol: str = "θ₁₂"):
     if crank:
         ax.set_xlabel(f"crank angle {symbol} [°]")
@@ -168,7 +176,7 @@ def draw_torque_curve(cycle, *, ax=None, flywheel=None, **style) -> Drawn:
         if Tm is not None:
             d.curves["smoothed"] = d.add(line(ax, np.degrees(flywheel.theta), Tm, color=s.found, lw=1.6,
                                               label=f"motor with flywheel (Cₛ = {num(flywheel.Cs, 3)})", zorder=3))
-    _input_axis(ax, crank)
+    _input_axis(ax, crank, _theta(mech))
     ax.set_ylabel(f"driving {'torque' if crank else 'force'} {sub(name)} [{unit}]")
     ax.set_title(f"{'Driving torque' if crank else 'Driving force'} over the cycle", fontsize=s.title_size)
     ax.legend(loc="best", fontsize=s.small_size, framealpha=0.9)
@@ -304,7 +312,7 @@ def _shaking_moment(cycle, ax, **style) -> Drawn:
     d.curves["shaking moment"] = d.add(line(ax, _x(cycle.q, crank), cycle.shaking_moment(), color=s.known, lw=1.6,
                                             label="shaking moment"))
     ax.axhline(0.0, color=s.ink, lw=0.6)
-    _input_axis(ax, crank)
+    _input_axis(ax, crank, _theta(cycle.problem.mechanism))
     ax.set_ylabel("shaking moment about the origin [N·m]")
     ax.set_title("Shaking moment on the frame (CCW +)", fontsize=s.title_size)
     return d
@@ -405,7 +413,7 @@ def draw_joint_force_index(jfi, *, ax=None, **style) -> Drawn:
             d.add(ax.axvline(xv, color=s.unknown, lw=0.6, alpha=0.5, zorder=1))
     finite = jfi.index[np.isfinite(jfi.index)]
     ax.set_ylim(0, 1.1 * max(float(finite.max()) if finite.size else 0.0, jfi.limit))
-    _input_axis(ax, crank)
+    _input_axis(ax, crank, _theta(jfi.analysis.mechanism))
     ax.set_ylabel(f"joint-force index{unit}")
     ax.set_title("Joint-force index max|Fᵢⱼ| / |Fₑₓₜ| (static)", fontsize=s.title_size)
     ax.legend(loc="best", fontsize=s.small_size, framealpha=0.9)
@@ -437,7 +445,8 @@ def draw_cycle(cycle, *, Cs=None, **style) -> Figure:
     draw_torque_curve(cycle, ax=fig.add_subplot(1, ncols, 1, axes_class=PanelAxes), flywheel=flywheel, **style)
     draw_polar_forces(cycle, ax=fig.add_subplot(1, ncols, 2, projection="polar"), **style)
     if flywheel is not None:
-        draw_energy(flywheel, ax=fig.add_subplot(1, ncols, 3, axes_class=PanelAxes), **style)
+        energy = draw_energy(flywheel, ax=fig.add_subplot(1, ncols, 3, axes_class=PanelAxes), **style)
+        _input_axis(energy.ax, True, _theta(cycle.problem.mechanism))
     fig.suptitle(f"{cycle.problem.title}: {cycle.n} positions", fontsize=s.suptitle_size)
     fig.get_layout_engine().set(wspace=0.06)
     return fig

@@ -6,7 +6,7 @@ import math
 
 import numpy as np
 
-from ..model import FRAME, Prismatic, Torque
+from ..model import Prismatic, Torque
 from . import style as _style
 from ._common import (MM, Drawn, Labeler, arrow, points_per_unit, arrow_label_candidates, dimension, had_content, line,
                       moment_arrow, new_axes, nice_round, num, point_label_candidates, scale_bar, set_limits, setup_axes,
@@ -48,9 +48,9 @@ def loads_on(construction, link: int) -> dict:
             couples.append((f"T{link}i", T, G, "inertia"))
     d = mech.driver
     if d.link == link and math.isfinite(c.effort):
-        joint = mech.joint_between(FRAME, link)
+        joint = mech.joint_between(mech.frame, link)
         if d.kind == "crank":
-            couples.append((d.symbol, c.effort, c.points[FRAME][joint.point], "driver"))
+            couples.append((d.symbol, c.effort, c.points[mech.frame][joint.point], "driver"))
         else:
             vec = None
             for step in c.steps:
@@ -138,7 +138,7 @@ def draw_free_body(construction, link: int, *, ax=None, force_scale=None, title=
     drawn = Drawn(ax)
     mech = c.mechanism
     body = mech.link(link)
-    if link == FRAME or link not in mech.moving:
+    if link == mech.frame or link not in mech.moving:
         raise ValueError(f"link {link} is not a moving link of the mechanism (moving: {mech.moving})")
     if title:
         ax.set_title(f"Free body: {body.label}", fontsize=s.title_size, color=s.ink)

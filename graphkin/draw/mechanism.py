@@ -7,7 +7,7 @@ import math
 import numpy as np
 from matplotlib.patches import Circle, Polygon
 
-from ..model import FRAME, GearMesh, Prismatic, Revolute
+from ..model import GearMesh, Prismatic, Revolute
 from . import style as _style
 from ._common import (MM, Drawn, Labeler, had_content, line, markers, new_axes, perp, point_label_candidates,
                       set_limits, setup_axes, sub, unit)
@@ -56,7 +56,7 @@ class Geometry:
 
     def angle(self, n: int):
         """Angle θ of link n's frame [rad] from two of its points (0 for the frame); None with fewer than two."""
-        if n == FRAME:
+        if n == self.mech.frame:
             return 0.0
         local = self.mech.link(n).points
         names = [k for k in local if k in self.P.get(n, {})]
@@ -102,14 +102,14 @@ class Geometry:
         for j in self.mech.joints:
             if isinstance(j, Revolute):
                 a, b = j.links
-                n = b if a == FRAME else a
+                n = b if a == self.mech.frame else a
                 out[(j.point, a, b)] = self.P[n][j.point]
         return out
 
     def frame_pivots(self):
         """Frame points of revolute joints: {name: position}."""
-        return {j.point: self.P[FRAME][j.point] for j in self.mech.joints
-                if isinstance(j, Revolute) and FRAME in j.links}
+        return {j.point: self.P[self.mech.frame][j.point] for j in self.mech.joints
+                if isinstance(j, Revolute) and self.mech.frame in j.links}
 
 
 def _band(ax, pts, s, out, alpha=1.0, zorder=2.0):
@@ -230,8 +230,8 @@ def _ground_direction(geom: Geometry, name: str, X):
     """The side of a frame pivot with most room: down unless a link goes that way."""
     dirs = []
     for j in geom.mech.joints:
-        if isinstance(j, Revolute) and j.point == name and FRAME in j.links:
-            n = (set(j.links) - {FRAME}).pop()
+        if isinstance(j, Revolute) and j.point == name and geom.mech.frame in j.links:
+            n = (set(j.links) - {geom.mech.frame}).pop()
             for k, Y in geom.link_points(n).items():
                 if k != name and np.hypot(*(Y - X)) > 1e-9:
                     dirs.append(unit(Y - X))
@@ -266,7 +266,7 @@ def _rails(ax, geom: Geometry, j: Prismatic, s, out, labeler=None):
         out.append(rail)
         if labeler:
             labeler.segment(a, b)
-        if j.guide == FRAME:
+        if j.guide == geom.mech.frame:
             w = 0.55 * geom.sym
             hatch = Polygon([a, b, b + side * n * w, a + side * n * w], closed=True, fill=False, hatch=s.ground_hatch,
                             edgecolor=s.ink, lw=0, zorder=1.1)
@@ -344,7 +344,7 @@ def draw_mechanism(construction, *, ax=None, labels=True, faint=False, emphasis=
                 a.set_alpha(s.faint_alpha)
     # Frame points that are not pivots (a guide's reference point): a small dot.
     pivots = geom.frame_pivots()
-    for name, X in geom.P.get(FRAME, {}).items():
+    for name, X in geom.P.get(geom.mech.frame, {}).items():
         if name not in pivots:
             dot = markers(ax, *X, ms=3.6, color=s.ink, zorder=5, alpha=s.faint_alpha if faint else None)
             drawn.add(dot)
@@ -403,8 +403,9 @@ def _label_points(ax, geom, c, s, lab, drawn, faint, emphasis, only=None):
                     break
     for (name, x, y), links in seen.items():
         X = np.array([x, y])
-        cents = [geom.centroid(n) for n in links if n != FRAME and len(geom.link_points(n)) > 1]
-        away = X - np.mean(cents, axis=0) if cents else np.array([0.0, -1.0]) if FRAME in links else np.array([0.0, 1.0])
+        cents = [geom.centroid(n) for n in links if n != geom.mech.frame and len(geom.link_points(n)) > 1]
+        away = (X - np.mean(cents, axis=0) if cents else np.array([0.0, -1.0]) if geom.mech.frame in links
+                else np.array([0.0, 1.0]))
         if np.hypot(*away) <= tol:
             away = np.array([-1.0, 0.4])
         gs = [n for n, k in g_at.items() if k == (name, x, y)]

@@ -42,7 +42,7 @@ from ..errors import GraphkinError
 from ..kinematics import Dyad, DriverGroup, GearGroup, Kinematics
 from ..geometry import zcross as cross
 from ..geometry import zdot as dot
-from ..model import FRAME, Prismatic, Revolute
+from ..model import Prismatic, Revolute
 from .construction import Arrow, Construction, Line, Step, nice_scale
 
 CLOSE = 1e-9
@@ -137,8 +137,9 @@ class _Builder:
         kin, i, body = self.kin, self.i, self.mech.link(link)
         load = _Load()
         G = complex(kin.z_G(link)[i])
-        Fi = complex(-body.mass * kin.z_a_G(link)[i]) if body.mass else 0j
-        Ti = float(-body.I_G * kin.al(link)[i]) if body.I_G else 0.0
+        # A static analysis has no inertia loads: the links carry their weights and external loads only.
+        Fi = complex(-body.mass * kin.z_a_G(link)[i]) if body.mass and not kin.static else 0j
+        Ti = float(-body.I_G * kin.al(link)[i]) if body.I_G and not kin.static else 0.0
         load.add(Fi, G, Ti)
         parts = []
         lines = []
@@ -231,6 +232,8 @@ class _Builder:
         JL = d.J1 if L == d.j else d.J3
         RL = self.rname[L]
         M_point, M_dir, M, how = self.m_line(d, L, sigma)
+        # On L the passed force acts at L's own middle pin (the same point unless a link's angle is given).
+        on_L = self.z(L, d.J2.point) if M_point is not None and isinstance(d.J2, Revolute) else M_point
         nM, nL = self.name(M, L), self.name((set(JL.links) - {L}).pop(), L)
         steps = []
         steps.append(Step("two-force", f"Link {M} carries no load of its own here, so it is a two-force member: "
@@ -251,7 +254,7 @@ class _Builder:
             return {id(d.J1): 0j, id(d.J3): 0j, id(JL): F_out, id(d.J2): 0j}
         if isinstance(JL, Revolute):
             XL = self.z(L, JL.point)
-            arm = cross(M_point - XL, M_dir)
+            arm = cross(on_L - XL, M_dir)
             if abs(arm) <= 1e-12 * self.reach:
                 raise _DeadPoint(f"the line of {nM} passes through {JL.point}, so link {L} cannot be balanced (dead point)")
             a = -R.about(XL) / arm
@@ -261,7 +264,7 @@ class _Builder:
             if Rp is None:
                 text = (f"{RL} is a pure couple, so {nM} and {nL} form the opposite couple: {nL} is parallel to {nM}")
             else:
-                I = _meet(Rp, R.F / abs(R.F), M_point, M_dir, self.reach)
+                I = _meet(Rp, R.F / abs(R.F), on_L, M_dir, self.reach)
                 if abs(R.about(XL)) <= 1e-12 * abs(R.F) * self.reach:
                     text = (f"{RL} already passes through {JL.point}, so the three lines cannot meet elsewhere: "
                             f"{nM} is zero and {nL} = −{RL}")
@@ -275,7 +278,7 @@ class _Builder:
                     if F_out != 0 and abs(cross(I - XL, F_out)) > 1e-7 * abs(I - XL) * abs(F_out):
                         self.warnings.append(f"{nL} misses the concurrency point I{L}")
                 lines.append(Line(nL, _xy(XL), _xy(F_out / abs(F_out)) if F_out else (1.0, 0.0), "found"))
-            lines.append(Line(nM, _xy(M_point), _xy(M_dir)))
+            lines.append(Line(nM, _xy(on_L), _xy(M_dir)))
             steps.append(Step("three-force", text + ".", L, tuple(lines), points))
         else:
             wL = self.w(JL, L, sigma[JL])
@@ -283,11 +286,11 @@ class _Builder:
             F_M, F_out = a * M_dir, b * wL
             points = {}
             if Rp is not None:
-                I = _meet(Rp, R.F / abs(R.F), M_point, M_dir, self.reach)
+                I = _meet(Rp, R.F / abs(R.F), on_L, M_dir, self.reach)
                 if I is not None:
                     points[f"I{L}"] = _xy(I)
                     lines.append(Line(nL, _xy(I), _xy(wL / abs(wL)), "found"))
-            lines.append(Line(nM, _xy(M_point), _xy(M_dir)))
+            lines.append(Line(nM, _xy(on_L), _xy(M_dir)))
             steps.append(Step("three-force",
                               f"The guide force {nL} has a known direction (normal to the guide"
                               + (", tilted by the friction angle" if JL.mu else "") + f"), so the polygon of {RL}, {nM} and {nL} "
@@ -341,7 +344,7 @@ class _Builder:
         X = {id(J): self.joint_point(J, on) for J, on in ((d.J1, d.j), (d.J2, d.k), (d.J3, d.k))}
         F1, F2, F3 = total[id(d.J1)], total[id(d.J2)], total[id(d.J3)]
         # Couples of sliding pairs (where their lines act) from each link's moment balance.
-        Mj = R[d.j].M0 + cross(X[id(d.J1)], F1) - cross(X[id(d.J2)], F2)
+        Mj = R[d.j].M0 + cross(X[id(d.J1)], F1) - cross(self.joint_point(d.J2, d.j), F2)
         Mk = R[d.k].M0 + cross(X[id(d.J2)], F2) + cross(X[id(d.J3)], F3)
         C = {id(J): 0.0 for J in d.joints}
         P1, P2, P3 = (isinstance(J, Prismatic) for J in d.joints)
@@ -424,10 +427,10 @@ class _Builder:
 
     def driver(self, g: DriverGroup, R: _Load):
         link, J = g.link, g.joint
-        name = self.name(FRAME, link)
+        name = self.name(self.mech.frame, link)
         Rd = self.rname[link]
         if isinstance(J, Revolute):
-            X = self.z(FRAME, J.point)
+            X = self.z(link, J.point)
             F = -R.F
             T = float(-R.about(X))
             # Plain floats: a resultant tiny beside its moment (a pure couple in all but rounding) gives an arm
@@ -435,14 +438,14 @@ class _Builder:
             d = abs(T) / abs(complex(R.F)) if R.F else 0.0
             sense = "CCW" if T > 0 else "CW"
             arm = (f"with {Rd} it forms a couple of arm d = {d * 1e3:.4g} mm, which the driving torque balances: "
-                   f"T1{link} = ±|{Rd}|·d = {T:.4g} N·m ({sense})." if math.isfinite(d * 1e3) else
+                   f"{self.mech.driver.symbol} = ±|{Rd}|·d = {T:.4g} N·m ({sense})." if math.isfinite(d * 1e3) else
                    f"{Rd} is so small beside its moment about {J.point} that the loads are a pure couple, which the "
-                   f"driving torque balances: T1{link} = {T:.4g} N·m ({sense}).")
+                   f"driving torque balances: {self.mech.driver.symbol} = {T:.4g} N·m ({sense}).")
             self.steps.append(Step(
                 "driver",
                 f"The crank: the pivot force {name} = −{Rd} acts at {J.point}; {arm}", link,
                 (Line(name, _xy(X), _xy(F / abs(F)) if F else (1.0, 0.0), "found"),),
-                values={name: _xy(F), f"T1{link}": T, **({"d": d} if math.isfinite(d) else {})},
+                values={name: _xy(F), self.mech.driver.symbol: T, **({"d": d} if math.isfinite(d) else {})},
                 polygon=(Arrow(Rd, _xy(R.F), True), Arrow(name, _xy(F), False, _xy(X)))))
             self.store(J, link, F)
             self.effort = float(T)
@@ -455,7 +458,7 @@ class _Builder:
         b, P = _decompose(-R.F, w, u)
         G, Fd = b * w, P * u
         C = -(R.M0 + cross(X, G + Fd))
-        drive = f"F1{link}"
+        drive = self.mech.driver.symbol
         self.steps.append(Step(
             "driver",
             f"The slider: the driving force {drive} acts along the guide and the guide force {name} normal to it"
@@ -525,17 +528,17 @@ def construct_forces(kin: Kinematics, index: int = 0) -> Construction:
             elif isinstance(g, GearGroup):
                 out = b.gear(g, R_of(g.k))
                 F_W, P = out[id(g.mesh)]
-                if g.j != FRAME:
+                if g.j != mech.frame:
                     passed[g.j].append((b.name(g.k, g.j), -F_W, P, 0.0))
             else:
                 b.dyad(g, {g.j: R_of(g.j), g.k: R_of(g.k)})
                 for J, on in ((g.J1, g.j), (g.J3, g.k)):
                     other = (set(J.links) - {on}).pop()
-                    if other != FRAME:
+                    if other != mech.frame:
                         lo, hi = sorted(J.links)
                         s = 1.0 if other == hi else -1.0
                         passed[other].append((b.name(on, other), s * complex(*b.forces[(lo, hi)]),
-                                              b.joint_point(J, on), s * b.couple.get((lo, hi), 0.0)))
+                                              b.joint_point(J, other), s * b.couple.get((lo, hi), 0.0)))
     except _DeadPoint as exc:
         return Construction(mech, index, q, tuple(b.steps), valid=False, reason=str(exc))
     largest = max([abs(complex(*F)) for F in b.forces.values()] + [0.0])
@@ -555,7 +558,7 @@ def _geometry(kin: Kinematics, i: int) -> dict:
     inert, external = {}, {}
     for link in mech.moving:
         body = mech.link(link)
-        if body.mass or body.I_G:
+        if (body.mass or body.I_G) and not kin.static:
             inn = inertia(kin, link)
             h = float(inn.h[i])
             inert[link] = {"F": tuple(map(float, inn.F[i])), "T": float(inn.T[i]), "h": None if math.isnan(h) else h,

@@ -18,7 +18,8 @@ A block is a dict with a ``"kind"``:
 
 =============  ==================================================================
 ``heading``    ``level`` (1–3), ``text``
-``text``       ``runs``: a paragraph
+``text``       ``runs``: a paragraph; ``keep``: on the same page as the next block
+               (it introduces a figure or ends with a colon)
 ``list``       ``items``: each a list of runs; ``ordered``
 ``table``      ``header`` and ``rows``: cells, each a list of runs; ``align``
                (one of ``l c r`` per column); ``caption`` (str or None)
@@ -75,7 +76,10 @@ class _Doc:
         self.blocks.append({"kind": "heading", "level": level, "text": text})
 
     def text(self, *runs):
-        self.blocks.append({"kind": "text", "runs": list(runs)})
+        # A paragraph that ends with a colon introduces what follows: a page break between them would orphan it.
+        last = runs[-1] if runs else ""
+        self.blocks.append({"kind": "text", "runs": list(runs),
+                            "keep": isinstance(last, str) and last.rstrip().endswith(":")})
 
     def items(self, items, ordered=False):
         self.blocks.append({"kind": "list", "items": [_runs(r) for r in items], "ordered": ordered})
@@ -92,6 +96,16 @@ class _Doc:
         """Add a figure; returns its name (``"Figure 3"``) for the text to refer to."""
         self.figures += 1
         label = f"Figure {self.figures}"
+        # A section that opens with a figure keeps its heading and any paragraphs before the figure on the
+        # figure's page: a heading alone at the foot of a page, its figure overleaf, is what a reader trips on.
+        lead = []
+        for b in reversed(self.blocks):
+            if b["kind"] != "text":
+                break
+            lead.append(b)
+        if len(lead) < len(self.blocks) and self.blocks[-1 - len(lead)]["kind"] == "heading":
+            for b in lead:
+                b["keep"] = True
         self.blocks.append({"kind": "figure", "pictures": list(pictures), "caption": f"{label}. {caption}",
                             "label": label})
         return label
@@ -491,10 +505,15 @@ def _pick_point(s: _Subject, link: int) -> str:
 
 
 def _kinematics(doc: _Doc, s: _Subject, entry: dict, i: int):
+    from .loops import groups
+
     kin = s.result.kinematics
     doc.heading(2, "Kinematics")
-    doc.text("The position, velocity and acceleration of every link, from the loop closure of each dyad "
-             "(θ of a link is the direction of its first two points):")
+    doc.text("The solver locates the links group by group, in closed form: the driver first, then each dyad "
+             "(two links joined to each other and to links already located) or gear pair. Each group's "
+             "position, velocity and acceleration equations, with the numbers:")
+    groups(doc, kin, i)
+    doc.text("Every link at once (θ of a link is the angle of its own x-axis, the axis its points are given in):")
     rows = []
     for link, d in entry["links"].items():
         a = d["a_G"]

@@ -36,7 +36,8 @@ figure .row { display: flex; gap: 1rem; align-items: center; justify-content: ce
 figure svg { max-width: 100%; height: auto; }
 figcaption { font-size: 0.9rem; text-align: left; margin-top: 0.3rem; }
 .space { border: 1px solid #999; padding: 0.4rem; margin: 0.6rem 0; font-size: 0.9rem; }
-@media print { .pagebreak { break-after: page; } .space { break-inside: avoid; } figure { break-inside: avoid; } }
+@media print { .pagebreak { break-after: page; } .space { break-inside: avoid; } figure { break-inside: avoid; }
+               h2, h3, h4, p.keep { break-after: avoid; } }
 """
 
 
@@ -62,7 +63,7 @@ def _block(b: dict) -> str:
         level = min(b["level"] + 1, 6)  # the title is the page's h1
         return f"<h{level}>{esc(b['text'])}</h{level}>"
     if kind == "text":
-        return f"<p>{_inline(b['runs'])}</p>"
+        return f"<p class=\"keep\">{_inline(b['runs'])}</p>" if b.get("keep") else f"<p>{_inline(b['runs'])}</p>"
     if kind == "list":
         tag = "ol" if b["ordered"] else "ul"
         return f"<{tag}>" + "".join(f"<li>{_inline(item)}</li>" for item in b["items"]) + f"</{tag}>"

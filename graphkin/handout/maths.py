@@ -12,6 +12,7 @@ An equation is plain data: nested lists whose first item names the node.
 ``["frac", a, b]``     a over b
 ``["vec", a]``         a with an arrow over it (a vector)
 ``["abs", a]``         the absolute value: a between bars
+``["sqrt", a]``        the square root of a
 ``["paren", a]``       (a), the parentheses as tall as a
 ``["mat", rows, d]``   a matrix, rows of cells, delimiter ``"["`` or ``"("``
 ``["row", *items]``    items one after the other
@@ -133,6 +134,10 @@ def absval(a) -> list:
     return ["abs", _node(a)]
 
 
+def sqrt(a) -> list:
+    return ["sqrt", _node(a)]
+
+
 def paren(*items) -> list:
     return ["paren", row(*items)]
 
@@ -237,6 +242,8 @@ def to_typst(node) -> str:
         return f"arrow({to_typst(node[1])})"
     if kind == "abs":
         return f"abs({to_typst(node[1])})"
+    if kind == "sqrt":
+        return f"sqrt({to_typst(node[1])})"
     if kind == "paren":
         return f"lr(( {to_typst(node[1])} ))"
     if kind == "mat":
@@ -251,7 +258,7 @@ def to_typst(node) -> str:
 
 
 _GREEK = {"α": r"\alpha", "β": r"\beta", "γ": r"\gamma", "θ": r"\theta", "ω": r"\omega", "μ": r"\mu", "ρ": r"\rho",
-          "Σ": r"\Sigma", "Δ": r"\Delta", "τ": r"\tau", "φ": r"\varphi"}
+          "σ": r"\sigma", "Σ": r"\Sigma", "Δ": r"\Delta", "τ": r"\tau", "φ": r"\varphi"}
 _LATEX_OPS = {"·": r"\cdot", "×": r"\times", "∠": r"\;\angle\;", "°": r"^{\circ}", "−": "-", ",": r",\ ", ";": ";",
               "≈": r"\approx", "→": r"\rightarrow"}
 
@@ -286,6 +293,8 @@ def to_latex(node) -> str:
         return rf"\vec{{{to_latex(node[1])}}}"
     if kind == "abs":
         return rf"\left|{to_latex(node[1])}\right|"
+    if kind == "sqrt":
+        return rf"\sqrt{{{to_latex(node[1])}}}"
     if kind == "paren":
         return rf"\left({to_latex(node[1])}\right)"
     if kind == "mat":
@@ -316,6 +325,8 @@ def to_text(node) -> str:
         return to_text(node[1])
     if kind == "abs":
         return f"|{to_text(node[1])}|"
+    if kind == "sqrt":
+        return f"√({to_text(node[1])})"
     if kind == "paren":
         return f"({to_text(node[1])})"
     if kind == "mat":

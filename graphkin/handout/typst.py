@@ -49,7 +49,8 @@ def _block(b: dict) -> str:
     if kind == "heading":
         return f"#heading(level: {b['level']})[#{_string(b['text'])}]"
     if kind == "text":
-        return _inline(b["runs"])
+        # Headings are sticky in typst already; a paragraph that leads to the next block is made so too.
+        return f"#block(sticky: true)[{_inline(b['runs'])}]" if b.get("keep") else _inline(b["runs"])
     if kind == "list":
         mark = "+" if b["ordered"] else "-"
         return "\n".join(f"{mark} {_inline(item)}" for item in b["items"])
@@ -112,6 +113,20 @@ def source(doc: dict, *, font: str | None = None, math_font: str | None = None) 
     return head + "\n\n".join(_block(b) for b in doc["blocks"]) + "\n"
 
 
+_COMPILER: list = []
+
+
+def _compiler():
+    """One typst compiler per process, kept: typst memoises what a compilation laid out (fonts, figures, text),
+    so the next document (a student's key after their sheet, the next student's) reuses what they share. The
+    PDF is the same, byte for byte, as from a fresh compiler."""
+    import typst
+
+    if not _COMPILER:
+        _COMPILER.append(typst.Compiler(ignore_system_fonts=True))
+    return _COMPILER[0]
+
+
 def render(doc: dict, *, font: str | None = None, math_font: str | None = None) -> bytes:
     """The handout as PDF bytes.
 
@@ -127,8 +142,8 @@ def render(doc: dict, *, font: str | None = None, math_font: str | None = None) 
     text = source(doc, font=font, math_font=math_font)
     try:
         # Fixed timestamp (2000-01-01): the same handout gives the same bytes.
-        pdf, warnings = typst.compile_with_warnings(text.encode("utf-8"), format="pdf", ignore_system_fonts=True,
-                                                    timestamp=946684800)
+        pdf, warnings = _compiler().compile_with_warnings(input=text.encode("utf-8"), format="pdf",
+                                                          timestamp=946684800)
     except typst.TypstError as exc:
         raise GraphkinError(f"typst: {_one_line(exc.message)}") from None
     for w in warnings:

@@ -33,7 +33,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..errors import ModelError
-from ..model import FRAME, Mechanism, Prismatic, Revolute
+from ..model import Mechanism, Prismatic, Revolute
 from ..model.ranges import as_array
 from ..geometry import zcross as cross
 from ..geometry import zdot as dot
@@ -62,9 +62,10 @@ class _State:
         self.mech = mech
         self.n = n
         self.zero = np.zeros(n, complex)
-        self.e = {FRAME: np.ones(n, complex)}
-        self.O, self.v_O, self.a_O = {FRAME: self.zero}, {FRAME: self.zero}, {FRAME: self.zero}
-        self.theta, self.omega, self.alpha = {FRAME: np.zeros(n)}, {FRAME: np.zeros(n)}, {FRAME: np.zeros(n)}
+        frame = mech.frame
+        self.e = {frame: np.ones(n, complex)}
+        self.O, self.v_O, self.a_O = {frame: self.zero}, {frame: self.zero}, {frame: self.zero}
+        self.theta, self.omega, self.alpha = {frame: np.zeros(n)}, {frame: np.zeros(n)}, {frame: np.zeros(n)}
         self.failures: dict[str, np.ndarray] = {}
 
     def p(self, link, name) -> complex:
@@ -72,17 +73,17 @@ class _State:
         return complex(x, y)
 
     def pos(self, link, name):
-        if link == FRAME:
+        if link == self.mech.frame:
             return np.full(self.n, self.p(link, name))
         return self.O[link] + self.e[link] * self.p(link, name)
 
     def vel_at(self, link, X):
-        if link == FRAME:
+        if link == self.mech.frame:
             return self.zero
         return self.v_O[link] + 1j * self.omega[link] * (X - self.O[link])
 
     def acc_at(self, link, X):
-        if link == FRAME:
+        if link == self.mech.frame:
             return self.zero
         return self.a_O[link] + (1j * self.alpha[link] - self.omega[link] ** 2) * (X - self.O[link])
 
@@ -292,7 +293,7 @@ def _rates(st: _State, d: Dyad):
 def _driver(st: _State, g: DriverGroup, q, q_dot, q_ddot):
     link, J = g.link, g.joint
     if isinstance(J, Revolute):
-        X = st.pos(FRAME, J.point)
+        X = st.pos(st.mech.frame, J.point)
         st.place(link, np.exp(1j * q), X, J.point)
         st.theta[link], st.omega[link], st.alpha[link] = q, q_dot, q_ddot
         r = st.O[link] - X
@@ -301,7 +302,7 @@ def _driver(st: _State, g: DriverGroup, q, q_dot, q_ddot):
     else:
         u = np.exp(1j * J.direction)
         st.place(link, np.full(st.n, np.exp(1j * (J.direction - J.slider_direction))),
-                 st.pos(FRAME, J.through) + q * u, J.point)
+                 st.pos(st.mech.frame, J.through) + q * u, J.point)
         st.omega[link] = st.alpha[link] = np.zeros(st.n)
         st.v_O[link] = q_dot * u
         st.a_O[link] = q_ddot * u

@@ -53,7 +53,14 @@ class Kinematics:
         (:func:`graphkin.kinematics.decompose`).
     given : dict
         Values supplied by a problem instead of derived, keyed
-        ``(link, "omega" | "alpha" | "a_G" | "v_G")``; used by the force analysis.
+        ``(link, "omega" | "alpha" | "a_G" | "v_G" | "theta")`` and
+        ``(link, "at", point)`` (a point's global position [m], shape (n, 2));
+        used by the force analysis. Set them with :meth:`with_given`, which
+        also places a link whose angle θ is given.
+    static : bool
+        True for a static force analysis: the solvers leave out every inertia
+        load (−m a_G, −I_G α); the motion still gives the sense of sliding for
+        Coulomb friction.
     """
 
     mechanism: Mechanism
@@ -70,11 +77,70 @@ class Kinematics:
     valid: np.ndarray
     failures: Mapping[str, np.ndarray] = field(default_factory=dict)
     groups: tuple = ()
-    given: Mapping[tuple[int, str], np.ndarray] = field(default_factory=dict)
+    given: Mapping[tuple, np.ndarray] = field(default_factory=dict)
+    static: bool = False
 
     @property
     def n(self) -> int:
         return len(self.q)
+
+    def with_given(self, given: Mapping[tuple, np.ndarray]) -> "Kinematics":
+        """These kinematics with values measured off a drawing (or read from polygons) in place of the derived ones.
+
+        Parameters
+        ----------
+        given : mapping
+            ``(link, "omega")`` [rad/s], ``(link, "alpha")`` [rad/s²], ``(link, "theta")`` [rad], each shape (n,);
+            ``(link, "a_G")`` [m/s²], ``(link, "v_G")`` [m/s], ``(link, "at", point)`` [m], each shape (n, 2).
+
+        Returns
+        -------
+        Kinematics
+            A link with a given angle θ is turned, as a rigid body, about its
+            anchor: the pin that joins it to a link located before it (for a
+            coupler AB driven at A, the pin A; for a rocker B0B, the pivot
+            B0), or its origin if it has no such pin. Its other points move
+            with it, so the pin it shares with the next link may sit slightly
+            apart on the two links, as on a drawing whose angles are read to the
+            degree: each link's equilibrium uses its own points. A point given
+            by its position (``"at"``) sits there on that link only.
+        """
+        from dataclasses import replace
+
+        theta, e, O = dict(self.theta), dict(self.e), dict(self.O)
+        v_O, a_O = dict(self.v_O), dict(self.a_O)
+        for key, value in given.items():
+            if key[1] != "theta":
+                continue
+            link = key[0]
+            anchor = self.anchor(link)
+            p = self._p(link, anchor) if anchor is not None else 0j
+            X = self.z(link, anchor) if anchor is not None else self.O[link]
+            v_X = self.z_velocity(link, (p.real, p.imag))
+            a_X = self.z_acceleration(link, (p.real, p.imag))
+            w = np.asarray(given.get((link, "omega"), self.omega[link]), dtype=float)
+            al = np.asarray(given.get((link, "alpha"), self.alpha[link]), dtype=float)
+            theta[link] = np.asarray(value, dtype=float)
+            e[link] = np.exp(1j * theta[link])
+            O[link] = X - e[link] * p
+            r = O[link] - X
+            v_O[link] = v_X + 1j * w * r
+            a_O[link] = a_X + (1j * al - w**2) * r
+        return replace(self, theta=theta, e=e, O=O, v_O=v_O, a_O=a_O, given=dict(given))
+
+    def anchor(self, link: int) -> str | None:
+        """The pin link ``link`` is turned about when its angle is given: its revolute joint to a link located before it."""
+        from ..model import Revolute
+
+        located = {self.mechanism.frame}
+        for g in self.groups:
+            if link in g.links:
+                for joint in g.joints:
+                    if isinstance(joint, Revolute) and link in joint.links and (set(joint.links) - {link}) <= located:
+                        return joint.point
+                return None
+            located |= set(g.links)
+        return None
 
     # -- complex forms, used by the solvers -------------------------------
     def _p(self, link: int, point) -> complex:
@@ -83,7 +149,9 @@ class Kinematics:
         return complex(point[0], point[1])
 
     def z(self, link: int, point) -> np.ndarray:
-        """Position of a point of ``link`` as complex x + iy [m], shape (n,)."""
+        """Position of a point of ``link`` as complex x + iy [m], shape (n,) (a given position if there is one)."""
+        if isinstance(point, str) and (link, "at", point) in self.given:
+            return as_z(self.given[(link, "at", point)])
         return self.O[link] + self.e[link] * self._p(link, point)
 
     def z_velocity(self, link: int, point) -> np.ndarray:

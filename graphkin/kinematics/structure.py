@@ -15,7 +15,7 @@ import math
 from dataclasses import dataclass
 
 from ..errors import ModelError
-from ..model import FRAME, GearMesh, Joint, Mechanism, Prismatic, Revolute
+from ..model import GearMesh, Joint, Mechanism, Prismatic, Revolute
 
 
 def kind(joint: Joint) -> str:
@@ -120,10 +120,10 @@ def decompose(mech: Mechanism) -> tuple[Group, ...]:
     ModelError
         If some links cannot be located by dyads or gear pairs (not class II).
     """
-    driver_joint = mech.joint_between(FRAME, mech.driver.link)
+    driver_joint = mech.joint_between(mech.frame, mech.driver.link)
     groups: list[Group] = [DriverGroup(mech.driver.link, driver_joint)]
-    known = {FRAME, mech.driver.link}
-    located = [FRAME, mech.driver.link]
+    known = {mech.frame, mech.driver.link}
+    located = [mech.frame, mech.driver.link]
     used = {id(driver_joint)}
 
     def joints_to_known(n):

@@ -21,10 +21,14 @@ class Driver:
         prismatic joint (``kind="slider"``: input s, v, a along the guide;
         unknown force ``F1j`` along the guide).
     kind : {"crank", "slider"}
+    frame : int
+        The frame's number, 1 or 0; it only names the unknown (``T12`` or
+        ``T01``). A :class:`Mechanism` sets it to its own ``frame``.
     """
 
     link: int
     kind: Literal["crank", "slider"] = "crank"
+    frame: int = 1
 
     def __post_init__(self):
         # int("2") or int(2.5) would quietly turn a slip into another link.
@@ -36,5 +40,5 @@ class Driver:
 
     @property
     def symbol(self) -> str:
-        """Name of the unknown driving effort: ``T12`` or ``F12``."""
-        return f"{'T' if self.kind == 'crank' else 'F'}1{self.link}"
+        """Name of the unknown driving effort: ``T12`` or ``F12`` (``T01`` with the frame numbered 0)."""
+        return f"{'T' if self.kind == 'crank' else 'F'}{self.frame}{self.link}"

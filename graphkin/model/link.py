@@ -13,7 +13,11 @@ from ..errors import ModelError
 from .ranges import check
 
 FRAME = 1
-"""Link number of the frame (ground), as in the textbooks."""
+"""Link number of the frame (ground) unless a mechanism says otherwise: many books number it 1, others 0
+(:attr:`graphkin.model.Mechanism.frame`)."""
+
+FRAME_NUMBERS = (0, 1)
+"""The numbers a frame may carry: 1 (Norton, Söylemez) or 0 (books that write F01, M01)."""
 
 
 def _ndim(value) -> int:
@@ -65,7 +69,7 @@ class Link:
     Parameters
     ----------
     number : int
-        Link number; 1 is the frame.
+        Link number, ≥ 0; the frame is 1 (or 0, see :attr:`Mechanism.frame`).
     points : mapping of str to (float, float)
         Named points in the link frame [m], e.g. ``{"A": (0, 0), "B": (0.5, 0)}``.
     mass : float
@@ -86,8 +90,8 @@ class Link:
     name: str = ""
 
     def __post_init__(self):
-        if isinstance(self.number, bool) or not isinstance(self.number, int) or self.number < 1:
-            raise ModelError(f"link number must be a whole number ≥ 1, got {self.number!r}")
+        if isinstance(self.number, bool) or not isinstance(self.number, int) or self.number < 0:
+            raise ModelError(f"link number must be a whole number ≥ 0, got {self.number!r}")
         label = f"link {self.number}"
         if not isinstance(self.points, Mapping):
             raise ModelError(f"{label} points must map names to (x, y) in metres, e.g. {{'A': (0, 0)}}, "

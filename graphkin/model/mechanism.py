@@ -4,14 +4,14 @@ from __future__ import annotations
 
 import itertools
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from types import MappingProxyType
 from typing import Mapping
 
 from ..errors import ModelError
 from .driver import Driver
 from .joints import GearMesh, Joint, Prismatic, Revolute
-from .link import FRAME, Link
+from .link import FRAME, FRAME_NUMBERS, Link
 from .loads import Load, PointForce, Torque, standard_gravity
 from .ranges import complaint
 
@@ -35,6 +35,11 @@ class Mechanism:
         point (see :mod:`graphkin.kinematics.dyads`); +1 where not given.
     title, source : str
         What the problem is and where it comes from (book, example).
+    frame : int
+        The frame's link number: 1 (the default, Norton and Söylemez) or 0
+        (books that write F01, T01). Every name follows the numbers as given:
+        with the frame 0 and the crank 1, the driving torque is ``T01`` and the
+        crank's pivot force ``F01``.
     """
 
     links: tuple[Link, ...]
@@ -45,6 +50,7 @@ class Mechanism:
     assembly: Mapping[str, int] = field(default_factory=dict)
     title: str = ""
     source: str = ""
+    frame: int = FRAME
 
     def __post_init__(self):
         for name in ("links", "joints", "loads"):
@@ -58,7 +64,12 @@ class Mechanism:
             raise ModelError(f"assembly must map joint points to +1 or -1, e.g. {{'B': 1}}, got {self.assembly!r}",
                              at=("assembly",))
         object.__setattr__(self, "assembly", MappingProxyType(dict(self.assembly)))
+        if isinstance(self.frame, bool) or self.frame not in FRAME_NUMBERS:
+            raise ModelError(f"the frame's number must be 1 or 0, got {self.frame!r}", at=("frame", "number"))
+        object.__setattr__(self, "frame", int(self.frame))
         self._check()
+        if self.driver.frame != self.frame:
+            object.__setattr__(self, "driver", replace(self.driver, frame=self.frame))
 
     # -- look-ups ---------------------------------------------------------
     def link(self, number: int) -> Link:
@@ -72,7 +83,7 @@ class Mechanism:
     @property
     def moving(self) -> tuple[int, ...]:
         """Numbers of the moving links, in ascending order."""
-        return tuple(sorted(l.number for l in self.links if l.number != FRAME))
+        return tuple(sorted(l.number for l in self.links if l.number != self.frame))
 
     def joints_of(self, number: int) -> tuple[Joint, ...]:
         return tuple(j for j in self.joints if number in j.links)
@@ -91,8 +102,12 @@ class Mechanism:
         for k, n in enumerate(numbers):
             if n in numbers[:k]:
                 raise ModelError(f"link {n} is defined twice; give each link its own number", at=("links", k, "number"))
-        if FRAME not in numbers:
-            raise ModelError("the mechanism needs a frame: link 1")
+        if self.frame not in numbers:
+            raise ModelError(f"the mechanism needs a frame: link {self.frame}")
+        for k, n in enumerate(numbers):
+            if n < self.frame:
+                raise ModelError(f"link {n}: with the frame numbered {self.frame}, the moving links are numbered from "
+                                 f"{self.frame + 1} up", at=("links", k, "number"))
         known = ", ".join(map(str, sorted(numbers)))
         for k, joint in enumerate(self.joints):
             fields = ("guide", "slider") if isinstance(joint, Prismatic) else ("links[0]", "links[1]")
@@ -131,7 +146,7 @@ class Mechanism:
                                      at=("links", k, "points"))
         self._check_driver()
         for k, load in enumerate(self.loads):
-            if load.link == FRAME or load.link not in numbers:
+            if load.link == self.frame or load.link not in numbers:
                 raise ModelError(f"load {load.name or ''} names link {load.link}, which is not a moving link "
                                  f"(moving links are {', '.join(map(str, self.moving))})".replace("  ", " "),
                                  at=("loads", k, "link"))
@@ -169,18 +184,18 @@ class Mechanism:
     def _check_driver(self):
         d = self.driver
         at = ("driver", "link")
-        if d.link == FRAME:
-            raise ModelError("the driver cannot be the frame (link 1)", at=at)
+        if d.link == self.frame:
+            raise ModelError(f"the driver cannot be the frame (link {self.frame})", at=at)
         try:
             self.link(d.link)
-            joint = self.joint_between(FRAME, d.link)
+            joint = self.joint_between(self.frame, d.link)
         except ModelError as exc:
             if d.link not in [l.number for l in self.links]:
                 raise ModelError(f"driver: {exc}", at=at) from None
-            raise ModelError(f"driver link {d.link} must be joined to the frame (link 1)", at=at) from None
+            raise ModelError(f"driver link {d.link} must be joined to the frame (link {self.frame})", at=at) from None
         wanted = Revolute if d.kind == "crank" else Prismatic
         if not isinstance(joint, wanted):
             raise ModelError(f"a {d.kind} driver needs a {wanted.__name__.lower()} joint to the frame; "
                              f"link {d.link} has a {joint.label}", at=("driver", "type"))
-        if isinstance(joint, Prismatic) and joint.guide != FRAME:
-            raise ModelError(f"slider driver {d.link}: the guide must be the frame (link 1)", at=at)
+        if isinstance(joint, Prismatic) and joint.guide != self.frame:
+            raise ModelError(f"slider driver {d.link}: the guide must be the frame (link {self.frame})", at=at)

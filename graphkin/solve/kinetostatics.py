@@ -28,7 +28,7 @@ from ..kinematics.dyads import solve_columns
 from ..geometry import as_xy
 from ..geometry import zcross as cross
 from ..geometry import zdot as dot
-from ..model import FRAME, Mechanism, Prismatic, Revolute
+from ..model import Mechanism, Prismatic, Revolute
 from .loads import _known
 from .result import ForceAnalysis
 
@@ -63,16 +63,23 @@ def _point(kin: Kinematics, joint, link: int):
 
 
 def _dyad(kin: Kinematics, d: Dyad, L, M, sig) -> list[_Reactions]:
-    """Reactions at J1 (on j), J2 (of j on k) and J3 (on k) of one dyad."""
+    """Reactions at J1 (on j), J2 (of j on k) and J3 (on k) of one dyad.
+
+    Each link's moments are taken at its own points: X2 is the middle pin on
+    k and X2j the same pin on j. They coincide unless the problem gives a
+    link's angle (:meth:`Kinematics.with_given`), as a drawing read to the
+    degree does.
+    """
     X1, X2, X3 = _point(kin, d.J1, d.j), _point(kin, d.J2, d.k), _point(kin, d.J3, d.k)
+    X2j = _point(kin, d.J2, d.j)
     Lj, Mj, Lk, Mk = L[d.j], M[d.j], L[d.k], M[d.k]
     S = -(Lj + Lk)
     t = d.type
     C1 = C2 = C3 = N1 = N2 = N3 = None
     if t == "RRR":
         # Moments of j and of k about the middle pin, and the dyad's force sum.
-        r1, r3 = X1 - X2, X3 - X2
-        b1 = -(Mj - cross(X2, Lj))
+        r1, r3 = X1 - X2j, X3 - X2
+        b1 = -(Mj - cross(X2j, Lj))
         b3 = cross(r3, S) + Mk - cross(X2, Lk)
         # cross(r1, F1) = b1 and cross(r3, F1) = b3, by Cramer's rule.
         with np.errstate(divide="ignore", invalid="ignore"):
@@ -81,9 +88,9 @@ def _dyad(kin: Kinematics, d: Dyad, L, M, sig) -> list[_Reactions]:
         F2 = F1 + Lj
     elif t == "RRP":
         w3 = _w(kin, d.J3, d.k, sig[2])
-        r1 = X1 - X2
+        r1 = X1 - X2j
         with np.errstate(divide="ignore", invalid="ignore"):
-            N3 = (cross(r1, S) + Mj - cross(X2, Lj)) / cross(r1, w3)
+            N3 = (cross(r1, S) + Mj - cross(X2j, Lj)) / cross(r1, w3)
         F3 = N3 * w3
         F1 = S - F3
         F2 = F1 + Lj
@@ -108,7 +115,7 @@ def _dyad(kin: Kinematics, d: Dyad, L, M, sig) -> list[_Reactions]:
         N1, N3 = solve_columns(w1, w3, S)
         F1, F3 = N1 * w1, N3 * w3
         F2 = F1 + Lj
-        C1 = cross(X2, F2) - cross(X1, F1) - Mj
+        C1 = cross(X2j, F2) - cross(X1, F1) - Mj
         C3 = -(cross(X2, F2) + cross(X3, F3) + Mk)
     return [
         _Reactions(d.J1, d.j, F1, X1, C1, N1),
@@ -120,7 +127,7 @@ def _dyad(kin: Kinematics, d: Dyad, L, M, sig) -> list[_Reactions]:
 def _driver(kin: Kinematics, g: DriverGroup, L, M):
     link, J = g.link, g.joint
     if isinstance(J, Revolute):
-        X = kin.z(FRAME, J.point)
+        X = kin.z(link, J.point)
         F = -L[link]
         T = -(M[link] + cross(X, F))
         return [_Reactions(J, link, F, X)], T
@@ -189,9 +196,11 @@ def solve_forces(kin: Kinematics) -> ForceAnalysis:
             if r.N is not None:
                 normal[key] = sign * r.N
                 couple[key] = sign * r.C
-            if other != FRAME:
+            if other != mech.frame:
+                # On the other link the reaction acts at that link's own pin (the same point, unless an angle is given).
+                X = kin.z(other, r.joint.point) if isinstance(r.joint, Revolute) else r.X
                 L[other] = L[other] - r.F
-                M[other] = M[other] - cross(r.X, r.F) - (r.C if r.C is not None else 0.0)
+                M[other] = M[other] - cross(X, r.F) - (r.C if r.C is not None else 0.0)
 
     # Invalid positions carry nan through the arithmetic, by design.
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
@@ -251,7 +260,7 @@ def _solve_dyad_with_friction(kin, d, L, M, failures):
     return chosen
 
 
-def solve(mech: Mechanism, q, q_dot=0.0, q_ddot=0.0) -> ForceAnalysis:
+def solve(mech: Mechanism, q, q_dot=0.0, q_ddot=0.0, *, static: bool = False) -> ForceAnalysis:
     """Kinematics and kinetostatics in one call.
 
     Parameters
@@ -259,9 +268,15 @@ def solve(mech: Mechanism, q, q_dot=0.0, q_ddot=0.0) -> ForceAnalysis:
     mech : Mechanism
     q, q_dot, q_ddot : array_like
         Input coordinate and rates (see :func:`graphkin.kinematics.solve_kinematics`).
+    static : bool, optional
+        A static force analysis: no inertia loads (the rates then only give
+        the sense of sliding for friction).
 
     Returns
     -------
     ForceAnalysis
     """
-    return solve_forces(solve_kinematics(mech, q, q_dot, q_ddot))
+    from dataclasses import replace
+
+    kin = solve_kinematics(mech, q, q_dot, q_ddot)
+    return solve_forces(replace(kin, static=True) if static else kin)

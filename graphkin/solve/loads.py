@@ -36,10 +36,11 @@ class Inertia:
 
 
 def inertia(kin: Kinematics, link: int) -> Inertia:
-    """Inertia force and torque of a link and their single equivalent resultant."""
+    """Inertia force and torque of a link and their single equivalent resultant (zero in a static analysis)."""
     body = kin.mechanism.link(link)
-    F = -body.mass * kin.z_a_G(link)
-    T = -body.I_G * kin.al(link)
+    m, I_G = (0.0, 0.0) if kin.static else (body.mass, body.I_G)
+    F = -m * kin.z_a_G(link) + 0.0
+    T = -I_G * kin.al(link) + 0.0
     size = np.abs(F)
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         # r × F = T with r ⟂ F gives r = −i T F / |F|² = −i T / conj(F) (no |F|² to underflow or overflow).
@@ -80,6 +81,8 @@ def _known(kin: Kinematics, link: int):
     """External plus inertia loads: complex force (n,) and moment about the origin (n,)."""
     F, M = _external(kin, link)
     body = kin.mechanism.link(link)
+    if kin.static:
+        return F, M
     if body.mass:
         Fi = -body.mass * kin.z_a_G(link)
         F = F + Fi

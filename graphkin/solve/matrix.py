@@ -22,7 +22,7 @@ import numpy as np
 
 from ..geometry import cross, perp
 from ..geometry import as_xy
-from ..model import FRAME, GearMesh, Prismatic, Revolute
+from ..model import GearMesh, Prismatic, Revolute
 from .kinetostatics import _w
 from .loads import known_loads
 from .result import ForceAnalysis
@@ -98,7 +98,7 @@ def assemble(result: ForceAnalysis) -> System:
 
     def put(link, col, F, X=None, C=None):
         """Column ``col`` loads ``link`` with force F at X (per unit unknown) and couple C."""
-        if link == FRAME:
+        if link == mech.frame:
             return
         r = row[link]
         if F is not None:
@@ -116,10 +116,12 @@ def assemble(result: ForceAnalysis) -> System:
         name = result.name_of(lo, hi)[1:]
         c = len(unknowns)
         if isinstance(joint, Revolute):
-            X = kin.position(hi, joint.point)
+            # Each link at its own pin: the same point unless a link's angle is given (Kinematics.with_given).
+            X_hi = kin.position(hi, joint.point)
+            X_lo = X_hi if lo == mech.frame else kin.position(lo, joint.point)
             for k, e in enumerate((ex, ey)):
-                put(hi, c + k, e, X)
-                put(lo, c + k, -e, X)
+                put(hi, c + k, e, X_hi)
+                put(lo, c + k, -e, X_lo)
             unknowns += [f"F{name}x", f"F{name}y"]
         elif isinstance(joint, Prismatic):
             X = kin.position(joint.slider, joint.point)
@@ -146,7 +148,7 @@ def assemble(result: ForceAnalysis) -> System:
     if d.kind == "crank":
         put(d.link, c, None, C=ones)
     else:
-        joint = mech.joint_between(FRAME, d.link)
+        joint = mech.joint_between(mech.frame, d.link)
         put(d.link, c, kin.guide_direction(joint), kin.position(d.link, joint.point))
     unknowns.append(d.symbol)
     for link in moving:

@@ -10,7 +10,7 @@ import numpy as np
 
 from ..errors import GraphkinError
 from ..kinematics import Kinematics
-from ..model import FRAME, GearMesh, Prismatic
+from ..model import GearMesh, Prismatic
 from .loads import Inertia, inertia
 
 _NAME = re.compile(r"^([FGT])(\d)(\d)$|^([FGT])_?(\d+),(\d+)$")
@@ -93,7 +93,7 @@ class ForceAnalysis:
         """The driving effort as a vector: F1j along the guide (slider) [N], shape (n, 2)."""
         if self.mechanism.driver.kind != "slider":
             raise GraphkinError(f"the driver is a crank: its effort is the torque {self.driver_name}")
-        joint = self.mechanism.joint_between(FRAME, self.mechanism.driver.link)
+        joint = self.mechanism.joint_between(self.mechanism.frame, self.mechanism.driver.link)
         return self.effort[:, None] * self.kinematics.guide_direction(joint)
 
     def offset(self, i: int, j: int) -> np.ndarray:

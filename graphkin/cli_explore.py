@@ -1,0 +1,209 @@
+"""``graphkin explore``: a problem's interactive explorer as a web page, for a teacher at a projector.
+
+::
+
+    graphkin explore PROBLEM [--port N] [--no-browser]
+
+`Voilà <https://voila.readthedocs.io>`_ serves one notebook on 127.0.0.1 that
+holds the problem's explorer (:func:`graphkin.widgets.explore`) and nothing
+else: no code, no cells to run. The command prints the page's address, opens
+it in the desktop's browser where there is one, and serves until Ctrl-C, which
+stops Voilà and its kernels and prints one line (exit code 130).
+
+A problem that is neither in the catalog nor a readable problem file is a
+:class:`graphkin.errors.GraphkinError` (one line, exit code 2), reported
+before anything is started; so is a missing Voilà.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import importlib.util
+import json
+import os
+import signal
+import socket
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+from .errors import GraphkinError
+
+READY = 60.0
+"""Seconds Voilà is given to start listening."""
+
+CULL = ("--MappingKernelManager.cull_idle_timeout=120", "--MappingKernelManager.cull_interval=30")
+"""Each page has its own kernel, and Voilà's request to shut it down when the page closes is refused
+(no XSRF token): a kernel that no page is connected to is shut down after two idle minutes instead
+(a page left open keeps its kernel)."""
+
+
+def add_parser(sub) -> None:
+    """Add ``explore`` to the ``graphkin`` subcommands."""
+    e = sub.add_parser("explore", help="a problem's interactive explorer as a web page (Voilà on 127.0.0.1), "
+                       "for a projector; Ctrl-C stops it")
+    e.add_argument("problem", metavar="PROBLEM", help="a catalog problem (graphkin list) or a problem file")
+    e.add_argument("--port", type=int, default=0, help="the port on 127.0.0.1 (default: a free one)")
+    e.add_argument("--no-browser", action="store_true", help="print the address only; do not open a browser")
+
+
+def notebook(source: str, title: str) -> dict:
+    """The notebook Voilà shows: the problem's title and its explorer.
+
+    Parameters
+    ----------
+    source : str
+        A catalog name, or a problem file's absolute path.
+    title : str
+        The problem's title, as the page's heading.
+
+    Returns
+    -------
+    dict
+        The notebook (nbformat 4) as plain data.
+    """
+    code = ("from graphkin import catalog\n"
+            "from graphkin.widgets import explore\n\n"
+            f"explore(catalog.load({source!r}))")
+    return {
+        "cells": [
+            {"cell_type": "markdown", "id": "title", "metadata": {}, "source": f"## {title}"},
+            {"cell_type": "code", "id": "explorer", "metadata": {}, "execution_count": None, "outputs": [],
+             "source": code},
+        ],
+        "metadata": {"kernelspec": {"display_name": "Python 3 (ipykernel)", "language": "python", "name": "python3"},
+                     "language_info": {"name": "python"}},
+        "nbformat": 4,
+        "nbformat_minor": 5,
+    }
+
+
+def run(args) -> int:
+    """Carry out ``graphkin explore``; returns the exit code (130 after Ctrl-C)."""
+    from . import catalog
+
+    problem = catalog.load(args.problem)  # a bad name or file: GraphkinError, before anything starts
+    source = args.problem if args.problem in catalog.names() else str(Path(args.problem).resolve())
+    if importlib.util.find_spec("voila") is None:
+        raise GraphkinError("graphkin explore needs Voilà: pip install voila (or pip install 'graphkin[e2e]')")
+    if not 0 <= args.port < 65536:
+        raise GraphkinError(f"--port must be 0–65535, got {args.port}")
+    port = args.port or _free_port()
+    url = f"http://127.0.0.1:{port}/"
+    with tempfile.TemporaryDirectory(prefix="graphkin-explore-") as folder:
+        page = Path(folder) / f"{Path(source).stem}.ipynb"
+        page.write_text(json.dumps(notebook(source, problem.title), ensure_ascii=False, indent=1), encoding="utf-8")
+        log_path = Path(folder) / "voila.log"
+        with open(log_path, "w", encoding="utf-8") as log:
+            # A session of its own: Ctrl-C reaches graphkin only, which stops Voilà in order (no second
+            # shutdown report from Voilà), and Voilà's log stays in the file, out of the teacher's way.
+            voila = subprocess.Popen([sys.executable, "-m", "voila", str(page), "--no-browser", f"--port={port}",
+                                      "--Voila.ip=127.0.0.1", "--theme=light", "--show_tracebacks=True", *CULL],
+                                     cwd=folder, stdin=subprocess.DEVNULL, stdout=log, stderr=subprocess.STDOUT,
+                                     start_new_session=True)
+            stop_on = _stop_on_sigterm()
+            try:
+                _wait_listening(voila, port, log_path)
+                print(f"graphkin: the explorer of {problem.title} is at {url} (Ctrl-C stops it)", flush=True)
+                if not args.no_browser and _has_desktop():
+                    import webbrowser
+
+                    webbrowser.open(url)
+                voila.wait()
+                raise GraphkinError(f"Voilà stopped: {_last_line(log_path)}")
+            except KeyboardInterrupt:
+                print("graphkin: explorer stopped", file=sys.stderr)
+                return 130
+            finally:
+                _stop(voila)
+                stop_on()
+
+
+def _stop_on_sigterm():
+    """Let SIGTERM and SIGHUP (a closed terminal, a process manager) stop the page as Ctrl-C does; returns the undo."""
+    if not _main_thread():
+        return lambda: None
+
+    def interrupt(signum, frame):
+        raise KeyboardInterrupt
+
+    names = [n for n in ("SIGTERM", "SIGHUP") if hasattr(signal, n)]
+    before = {n: signal.signal(getattr(signal, n), interrupt) for n in names}
+    return lambda: [signal.signal(getattr(signal, n), h) for n, h in before.items()]
+
+
+def _free_port() -> int:
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+def _wait_listening(voila, port: int, log_path: Path):
+    """Until Voilà accepts connections (a request for the page itself would run the notebook once for nothing)."""
+    end = time.monotonic() + READY
+    while time.monotonic() < end:
+        if voila.poll() is not None:
+            raise GraphkinError(f"Voilà did not start: {_last_line(log_path)}")
+        with contextlib.suppress(OSError), socket.create_connection(("127.0.0.1", port), timeout=0.5):
+            return
+        time.sleep(0.1)
+    raise GraphkinError(f"Voilà did not listen on 127.0.0.1:{port} within {READY:.0f} s: {_last_line(log_path)}")
+
+
+def _last_line(log_path: Path) -> str:
+    lines = [x.strip() for x in log_path.read_text(encoding="utf-8", errors="replace").splitlines() if x.strip()]
+    return lines[-1] if lines else "no message"
+
+
+def _has_desktop() -> bool:
+    """Whether a graphical browser can open: a console browser (lynx, w3m) would take over the terminal."""
+    if sys.platform in ("darwin", "win32"):
+        return True
+    return bool(os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY")) and sys.stdout.isatty()
+
+
+def _stop(voila):
+    """Stop Voilà and its kernels; a second Ctrl-C meanwhile is not a traceback."""
+    previous = signal.signal(signal.SIGINT, signal.SIG_IGN) if _main_thread() else None
+    try:
+        if voila.poll() is None:
+            voila.terminate()  # Voilà shuts its kernels down on SIGTERM
+            try:
+                voila.wait(timeout=15)
+            except subprocess.TimeoutExpired:
+                os.killpg(voila.pid, signal.SIGKILL)
+                voila.wait()
+    finally:
+        if previous is not None:
+            signal.signal(signal.SIGINT, previous)
+
+
+def _main_thread() -> bool:
+    import threading
+
+    return threading.current_thread() is threading.main_thread()
+
+
+def main(argv=None) -> int:
+    """``python -m graphkin.cli_explore PROBLEM``: the subcommand on its own (``graphkin explore`` is the same)."""
+    import argparse
+
+    parser = argparse.ArgumentParser(prog="graphkin")
+    add_parser(parser.add_subparsers(dest="command", required=True))
+    try:
+        args = parser.parse_args(["explore", *(sys.argv[1:] if argv is None else argv)])
+        return run(args)
+    except SystemExit as exc:
+        return exc.code if isinstance(exc.code, int) else 2
+    except GraphkinError as exc:
+        print(f"graphkin: error: {exc}", file=sys.stderr)
+        return 2
+    except KeyboardInterrupt:
+        print("graphkin: interrupted", file=sys.stderr)
+        return 130
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main())
