@@ -93,6 +93,8 @@ def run(args) -> int:
     port = args.port or _free_port()
     url = f"http://127.0.0.1:{port}/"
     with tempfile.TemporaryDirectory(prefix="graphkin-explore-") as folder:
+        # The page Voilà serves and its log live in this private folder, deleted on the way out: no user file,
+        # so no temporary-then-rename dance.
         page = Path(folder) / f"{Path(source).stem}.ipynb"
         page.write_text(json.dumps(notebook(source, problem.title), ensure_ascii=False, indent=1), encoding="utf-8")
         log_path = Path(folder) / "voila.log"

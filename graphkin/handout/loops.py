@@ -411,34 +411,15 @@ _POSITION = {"RRR": _position_rrr, "RRP": _position_rrp, "RPR": _position_rpr, "
 
 def _rates(doc, st, kin, i: int, d: Dyad):
     """The loop J1 → J3 for velocities and accelerations, as the solver writes it (dyads._rates)."""
-    X1, X2, X3 = (_z(x) for x in solver._joint_points(st, d))
-    r12, r23 = X2 - X1, X3 - X2
+    # The solver's own loop (its arms, guides, tied angular velocities and unknowns), at this position.
+    L = solver.loop(st, d)
+    X1, X2, X3, r12, r23, A, B = (_z(x) for x in (L.X1, L.X2, L.X3, L.r12, L.r23, L.A, L.B))
+    u = {n: _z(x) for n, x in L.u.items()}
+    col = {side: _z(x) for side, x in L.col.items()}
+    known_w, names = L.known_w, L.names
     J = {1: d.J1, 2: d.J2, 3: d.J3}
-    u = {n: _z(st.e[Jn.guide] * np.exp(1j * Jn.direction)) for n, Jn in J.items() if isinstance(Jn, Prismatic)}
     scale = max(abs(r12), abs(r23))
-    # The angular velocities a sliding pair ties to a located link, and the unknowns left (as the solver picks them).
-    known_w = {}
-    if 1 in u:
-        known_w["j"] = d.a
-    if 3 in u:
-        known_w["k"] = d.b
-    if 2 in u and "j" in known_w:
-        known_w["k"] = d.a
-    if 2 in u and "k" in known_w:
-        known_w["j"] = known_w["k"]
-    col = {"j": 1j * r12, "k": 1j * r23}
     link_of = {"j": d.j, "k": d.k}
-    columns, names = [], []
-    if 2 in u and not known_w:
-        columns.append(col["j"] + col["k"]), names.append("w")
-    else:
-        for side in ("j", "k"):
-            if side not in known_w:
-                columns.append(col[side]), names.append(side)
-    for n in (1, 2, 3):
-        if n in u:
-            columns.append(-u[n] if n == 3 else u[n]), names.append(f"s{n}")
-    A, B = columns
     # Who slides on whom at each sliding pair of the loop: J1 carries j over a, J2 k over j, J3 k over b.
     rel = {1: (d.j, d.a), 2: (d.k, d.j), 3: (d.k, d.b)}
     P = {1: d.J1.point, 2: d.J2.point, 3: d.J3.point}

@@ -30,6 +30,8 @@ with centripetal and Coriolis terms on the right.
 
 from __future__ import annotations
 
+from typing import NamedTuple
+
 import numpy as np
 
 from ..errors import ModelError
@@ -212,8 +214,42 @@ def _joint_points(st: _State, d: Dyad):
             for J, link in ((d.J1, d.j), (d.J2, d.k), (d.J3, d.k))]
 
 
-def _rates(st: _State, d: Dyad):
-    """ω, α of j and k, and the velocity and acceleration of their origins."""
+class Loop(NamedTuple):
+    """The loop J1 → J2 → J3 of a dyad's rate equations, set up once for the solver and the handouts.
+
+    Attributes
+    ----------
+    X1, X2, X3 : ndarray of complex
+        The joints' points [m].
+    r12, r23 : ndarray of complex
+        The arms J1 → J2 (on link j) and J2 → J3 (on link k) [m].
+    u : dict of int to ndarray of complex
+        The guide's unit direction at each sliding joint (1, 2 or 3).
+    known_w : dict of str to int
+        ``"j"``/``"k"`` → the located link whose angular velocity that side shares (a sliding pair).
+    col : dict of str to ndarray of complex
+        The column ``i r`` of each side's angular velocity.
+    names : list of str
+        The two unknowns: ``"j"``, ``"k"``, ``"w"`` (both links as one), ``"s1"``… (sliding speeds).
+    A, B : ndarray of complex
+        Their columns in ``A x + B y = rhs``.
+    """
+
+    X1: np.ndarray
+    X2: np.ndarray
+    X3: np.ndarray
+    r12: np.ndarray
+    r23: np.ndarray
+    u: dict
+    known_w: dict
+    col: dict
+    names: list
+    A: np.ndarray
+    B: np.ndarray
+
+
+def loop(st: _State, d: Dyad) -> Loop:
+    """The dyad's loop: its arms, guides, the angular velocities a sliding pair ties, the two unknowns' columns."""
     X1, X2, X3 = _joint_points(st, d)
     r12, r23 = X2 - X1, X3 - X2
     u = {i: st.e[J.guide] * np.exp(1j * J.direction) for i, J in ((1, d.J1), (2, d.J2), (3, d.J3)) if isinstance(J, Prismatic)}
@@ -239,7 +275,12 @@ def _rates(st: _State, d: Dyad):
     for i in (1, 2, 3):
         if i in u:
             columns.append(-u[i] if i == 3 else u[i]), names.append(f"s{i}")
-    A, B = columns
+    return Loop(X1, X2, X3, r12, r23, u, known_w, col, names, *columns)
+
+
+def _rates(st: _State, d: Dyad):
+    """ω, α of j and k, and the velocity and acceleration of their origins."""
+    X1, X2, X3, r12, r23, u, known_w, col, names, A, B = loop(st, d)
 
     def pick(side, z, known):
         if side in known_w:
