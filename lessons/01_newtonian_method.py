@@ -451,6 +451,21 @@ print(f"F12 = {mine_result.effort[0]:.4f} N   (v = 2 m/s gave {result.effort[0]:
 print(f"ratio: {mine_result.effort[0] / result.effort[0]:.3f}")
 
 # %% [markdown]
+# ### The worked solutions, to keep
+#
+# Everything above, written out as a textbook solution — the given data, the sign convention, each
+# link's kinematics with the numbers substituted, the inertia loads, the matrix [A]{x} = {b} and its
+# solution, the graphical route step by step, and both routes side by side — is in the handouts
+# [`single_link.pdf`](../figures/handouts/single_link.pdf) and
+# [`double_slider.pdf`](../figures/handouts/double_slider.pdf) (rebuilt by `make figures`). Make your
+# own, as PDF, HTML or Markdown, from a terminal:
+#
+# ```sh
+# graphkin handout double_slider -o double_slider.pdf
+# graphkin handout double_slider_forces --student YOUR_ID -o my_sheet.pdf   # your own data, no answers
+# ```
+
+# %% [markdown]
 # ## 6. Your turn
 #
 # Now the two problems of this lesson with **your own data**. Every student gets different

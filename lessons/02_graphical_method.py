@@ -524,6 +524,20 @@ for label, ck in (("k3 = 268 mm", c2), ("k3 = 150 mm", cc)):
           f"  T12 = {ck.effort:.2f} N·m")
 
 # %% [markdown]
+# ### The worked solutions, to keep
+#
+# Both constructions of this lesson, each step's figure with its caption and its force polygon to
+# scale, are in the handouts [`double_slider.pdf`](../figures/handouts/double_slider.pdf) and
+# [`strip_cutter.pdf`](../figures/handouts/strip_cutter.pdf) (the strip cutter's at the crank angle
+# where its driving torque peaks; `--at '140 deg'` gives the position of section 3). To draw the
+# polygons yourself, `--blank` gives the free bodies to scale with room for each polygon:
+#
+# ```sh
+# graphkin handout strip_cutter --at '140 deg' -o strip_cutter.pdf
+# graphkin handout double_slider --blank -o double_slider_worksheet.pdf
+# ```
+
+# %% [markdown]
 # ## 5. Your turn
 #
 # Two exercises with **your own data**. Every student gets different numbers, drawn from their id,

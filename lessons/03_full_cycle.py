@@ -580,6 +580,18 @@ ex.slider.value = 140.0
 print(f"{len(ex.timings)} redraws, the last in {ex.timings[-1] * 1e3:.0f} ms")
 
 # %% [markdown]
+# ### The worked solution, to keep
+#
+# The handout [`strip_cutter.pdf`](../figures/handouts/strip_cutter.pdf) works out the strip cutter
+# in full at the crank angle where the driving torque peaks, then gives the whole cycle of this
+# lesson: the torque curve with its extremes and average, the peak joint forces, the flywheel's
+# energy table and the joint-force index. Make it (or an HTML or Markdown one) with
+#
+# ```sh
+# graphkin handout strip_cutter -o strip_cutter.pdf
+# ```
+
+# %% [markdown]
 # ## 9. Your turn
 #
 # Two exercises on the strip cutter, with **your own numbers**: every student id gets its own

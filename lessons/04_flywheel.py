@@ -734,6 +734,18 @@ print(ex.status.value)
 Image(data=ex.image.value)  # exactly what the widget shows now
 
 # %% [markdown]
+# ### The worked solution, to keep
+#
+# The last pages of the handout [`strip_cutter.pdf`](../figures/handouts/strip_cutter.pdf) are this
+# lesson on paper: the torque curve with the pulses of T − T_avg, the energy table after Norton's
+# Table 11-1, E and I_s with the disk that gives it, and the joint-force index. `--cs` sets the
+# coefficient of speed fluctuation:
+#
+# ```sh
+# graphkin handout strip_cutter --cs 0.02 -o strip_cutter.pdf
+# ```
+
+# %% [markdown]
 # ## 10. Your turn
 #
 # Two exercises on the strip cutter, with **your own numbers**: every student id gets its own

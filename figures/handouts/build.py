@@ -1,7 +1,8 @@
-"""Rebuild figures/handouts/: the double slider's and the strip cutter's worked-solution handouts.
+"""Rebuild figures/handouts/: the worked-solution handouts of the lessons' examples.
 
-Writes each key as PDF (what ``graphkin handout NAME -o NAME.pdf`` writes) and, as PNG, its first
-page and the page with the first force polygon, for the README and the lessons to show.
+Writes each key as PDF (what ``graphkin handout NAME -o NAME.pdf`` writes), the handout each lesson
+links to; for the double slider and the strip cutter also, as PNG, the first page and the page with
+the first force polygon, for the README to show.
 
     .venv/bin/python figures/handouts/build.py
 
@@ -17,7 +18,10 @@ import pypdfium2 as pdfium
 from graphkin import handout
 
 HERE = Path(__file__).resolve().parent
-PROBLEMS = ("double_slider", "strip_cutter")
+PROBLEMS = ("single_link", "double_slider", "strip_cutter", "slider_crank_friction", "gearset")
+"""The examples of lessons 01–05."""
+PAGE_IMAGES = ("double_slider", "strip_cutter")
+"""The handouts shown as page images."""
 DPI = 110
 
 
@@ -38,7 +42,7 @@ def build(name: str) -> list[Path]:
     # Page images are named by page: a change of layout moves them, so last build's go first.
     for old in HERE.glob(f"{name}_page*.png"):
         old.unlink()
-    for k in sorted({0, polygon_page(pdf)}):
+    for k in sorted({0, polygon_page(pdf)}) if name in PAGE_IMAGES else ():
         png = HERE / f"{name}_page{k + 1}.png"
         pdf[k].render(scale=DPI / 72).to_pil().save(png, optimize=True)
         written.append(png)

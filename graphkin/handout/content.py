@@ -127,6 +127,7 @@ class _Subject:
         self.variant = variant
         self.mech = problem.mechanism
         self.crank = self.mech.driver.kind == "crank"
+        self.static = bool(getattr(problem, "static", False))
         self.result = problem.solve(at)
         self.n = self.result.n
         self.whole_cycle = at is None and self.n > 1
@@ -178,7 +179,7 @@ class _Subject:
         """``θ12 = 342°`` or ``s = 200 mm``: the input at position ``i``."""
         q = float(self.result.kinematics.q[i])
         d = self.mech.driver
-        return f"θ1{d.link} = {M.fmt(math.degrees(q), 6)}°" if self.crank else f"s = {M.fmt(q * 1e3, 6)} mm"
+        return f"θ{d.frame}{d.link} = {M.fmt(math.degrees(q), 6)}°" if self.crank else f"s = {M.fmt(q * 1e3, 6)} mm"
 
 
 def _read_raw(name: str) -> dict:
@@ -305,7 +306,8 @@ def _build(s: _Subject, version: str) -> dict:
             _mechanism(doc, s, c, i)
         if key:
             _kinematics(doc, s, entry, i)
-            _inertia(doc, s, entry, c, i)
+            if not s.static:
+                _inertia(doc, s, entry, c, i)
             _matrix(doc, s, entry, i)
             _forces(doc, s, entry)
             _graphical(doc, s, entry, c)
@@ -334,8 +336,9 @@ def _statement(doc: _Doc, s: _Subject, version: str):
             doc.text(para)
     else:
         doc.heading(1, "The problem")
+        how = ("a static force analysis: no inertia loads" if s.static else "inertia included (d'Alembert)")
         doc.text(f"Find every joint force and the driving {'torque' if s.crank else 'force'} "
-                 f"{s.mech.driver.symbol}, inertia included (d'Alembert), both analytically and graphically.")
+                 f"{s.mech.driver.symbol}, {how}, both analytically and graphically.")
 
 
 def _paragraphs(text: str) -> list[str]:
@@ -370,14 +373,14 @@ def _pretty(value) -> str:
     return str(value)
 
 
-def _given_rows(raw: dict) -> list[list[str]]:
+def _given_rows(raw: dict, frame_number: int) -> list[list[str]]:
     """The problem file's data, one row per frame, link, joint, driver and load, in the file's units."""
     rows = []
     if raw.get("gravity") is not None:
         rows.append(["gravity", _pretty(raw["gravity"])])
     frame = raw.get("frame", {})
     if frame.get("points"):
-        rows.append(["frame (link 1)", "; ".join(f"{k} = {_pretty(p)}" for k, p in frame["points"].items())])
+        rows.append([f"frame (link {frame_number})", "; ".join(f"{k} = {_pretty(p)}" for k, p in frame["points"].items())])
     for link in raw.get("links", []):
         parts = [f"{k} = {_pretty(p)}" for k, p in link.get("points", {}).items()]
         for key, label in (("mass", "m"), ("G", "G"), ("I_G", "I_G"), ("k", "k")):
@@ -404,7 +407,8 @@ def _given_rows(raw: dict) -> list[list[str]]:
     d = raw.get("driver", {})
     if d:
         text = "; ".join(f"{k} = {_pretty(x)}" for k, x in d.items() if k not in ("type", "link"))
-        rows.append([f"driver: {d.get('type', '')} {d.get('link', '')}".strip(), text])
+        kind = f" ({d['type']})" if d.get("type") else ""
+        rows.append([f"driver, link {d.get('link', '?')}{kind}", text])
     for ld in raw.get("loads", []):
         where = f"on link {ld.get('link')}" + (f" at {ld['point']}" if "point" in ld else "")
         value = _pretty(ld.get("force", ld.get("torque", "")))
@@ -422,9 +426,12 @@ def _given(doc: _Doc, s: _Subject):
         doc.table(["your data", "value"], [[f"{g.label} {g.symbol}".strip() if g.label else g.symbol,
                                              g.shown.split(" = ", 1)[1]] for g in v.data], "lr",
                   caption="Your own values (the rest of the data below is the same for everyone)")
-    rows = _given_rows(s.raw)
+    rows = _given_rows(s.raw, s.mech.frame)
     if rows:
         doc.table(["item", "data (units as in the problem file)"], rows, "ll")
+    if s.static:
+        doc.text("A static analysis: the links' masses play no part (no inertia loads), so none are needed.")
+        return
     moving = [s.mech.link(k) for k in s.mech.moving]
     rows = [[f"link {b.number}", M.qty(b.mass, "kg"), M.qty(b.I_G, "kg·m²"),
              M.pair(np.asarray(b.G) * 1e3, "mm")] for b in moving]
@@ -470,18 +477,21 @@ def _convention_picture() -> Picture:
 def _convention(doc: _Doc, s: _Subject):
     doc.heading(1, "Sign convention")
     label = doc.figure([_convention_picture()], "The sign convention used throughout.")
-    doc.items([
+    items = [
         ("Global x to the right, y up; angles, ω, α and torques are positive counter-clockwise (", label, ")."),
         (M.sym("F", "ij"), " is the force of link i on link j, and ",
          M.row(M.sym("F", "ji"), M.op("="), M.op("−"), M.sym("F", "ij")),
-         ". Link 1 is the frame. A sliding pair's reaction is written ", M.sym("G", "ij"), "."),
+         f". Link {s.mech.frame} is the frame. A sliding pair's reaction is written ", M.sym("G", "ij"), "."),
         ("Inertia force ", M.row(M.op("−"), M.i("m"), M.sym("a", "G")), " at G, inertia torque ",
          M.row(M.op("−"), M.sym("I", "G"), M.i("α")), "; their single resultant is offset from G by ",
          M.row(M.i("h"), M.op("="), M.frac(M.absval(M.i("T")), M.absval(M.i("F")))),
          " to the side that reproduces the torque's sense."),
         ("Forces in polar form, as the books print them: magnitude ∠ direction in degrees from +x, "
          "counter-clockwise positive.",),
-    ])
+    ]
+    if s.static:
+        del items[2]  # no inertia loads in a static analysis
+    doc.items(items)
 
 
 def _mechanism(doc: _Doc, s: _Subject, c, i: int):
@@ -495,10 +505,10 @@ def _mechanism(doc: _Doc, s: _Subject, c, i: int):
 
 def _pick_point(s: _Subject, link: int) -> str:
     """The point the acceleration of G is taken from: a frame pivot if the link has one, else a shared pin."""
-    from ..model import FRAME, Revolute
+    from ..model import Revolute
 
     joints = [j for j in s.mech.joints_of(link) if isinstance(j, Revolute)]
-    joints.sort(key=lambda j: (FRAME not in j.links, min(set(j.links) - {link})))
+    joints.sort(key=lambda j: (s.mech.frame not in j.links, min(set(j.links) - {link})))
     if joints:
         return joints[0].point
     return next(iter(s.mech.link(link).points))
@@ -508,12 +518,17 @@ def _kinematics(doc: _Doc, s: _Subject, entry: dict, i: int):
     from .loops import groups
 
     kin = s.result.kinematics
-    doc.heading(2, "Kinematics")
+    doc.heading(2, "Position of every link" if s.static else "Kinematics")
+    what = "position equations" if s.static else "position, velocity and acceleration equations"
     doc.text("The solver locates the links group by group, in closed form: the driver first, then each dyad "
-             "(two links joined to each other and to links already located) or gear pair. Each group's "
-             "position, velocity and acceleration equations, with the numbers:")
-    groups(doc, kin, i)
+             f"(two links joined to each other and to links already located) or gear pair. Each group's {what}, "
+             "with the numbers:")
+    groups(doc, kin, i, rates=not s.static)
     doc.text("Every link at once (θ of a link is the angle of its own x-axis, the axis its points are given in):")
+    if s.static:
+        doc.table(["link", "θ [°]"], [[f"link {link}", M.n(M.fmt_fixed(math.degrees(d["theta"])))]
+                                      for link, d in entry["links"].items()], "lr")
+        return
     rows = []
     for link, d in entry["links"].items():
         a = d["a_G"]
@@ -615,8 +630,8 @@ def _matrix(doc: _Doc, s: _Subject, entry: dict, i: int):
     doc.heading(2, "Equilibrium equations: the matrix method")
     doc.text(f"Three equations per moving link (ΣFx = 0, ΣFy = 0, ΣM about G = 0), links "
              f"{', '.join(map(str, s.mech.moving))} in turn; one column per unknown. Force columns in N, "
-             "moment rows in N·m (lever arms in m); {b} holds the known loads moved across (m a_G − ΣF_ext, "
-             "I_G α − ΣM_ext).")
+             "moment rows in N·m (lever arms in m); {b} holds the known loads moved across "
+             + ("(−ΣF_ext, −ΣM_ext; static: no inertia terms)." if s.static else "(m a_G − ΣF_ext, I_G α − ΣM_ext)."))
     cells = [[M.n(v) for v in r] for r in A]
     unknowns = [_unknown(u) for u in system.unknowns]
     doc.equation(M.row(M.mat(cells), M.column(unknowns), M.op("="), M.column([M.n(v) for v in b])), small=True)
@@ -682,7 +697,8 @@ def _graphical(doc: _Doc, s: _Subject, entry: dict, c):
         return
     scale = c.force_scale
     doc.text("Force polygons are drawn to the scale 1 mm = ", M.qty(scale, "N"), ". The free bodies first, "
-             "every force on each link, with the inertia resultant on its offset line:")
+             "every force on each link" + ("" if s.static else ", with the inertia resultant on its offset line")
+             + ":")
     pics = [s.picture(f"fbd-{link}", lambda link=link: draw.draw_free_body(c, link), 1 / 3,
                     f"free body of link {link}", 70) for link in s.mech.moving]
     for k in range(0, len(pics), 3):
@@ -744,8 +760,9 @@ def _blank(doc: _Doc, s: _Subject, c, drawn: bool):
         doc.heading(2, "Free bodies")
         label = doc.figure([s.picture("given", lambda: draw.draw_given(c), 1.0,
                                     "the mechanism and the free bodies with their known loads", 85)],
-                           "The free bodies to scale with the known loads (the inertia resultant on its offset "
-                           "line, external loads) and the force scale; the joint forces are yours to find.")
+                           "The free bodies to scale with the known loads ("
+                           + ("" if s.static else "the inertia resultant on its offset line, ")
+                           + "external loads) and the force scale; the joint forces are yours to find.")
         doc.text(f"Draw the polygons at 1 mm = ", M.qty(scale, "N"), f" ({label}); step by step:")
         for k, step in enumerate(c.steps, start=1):
             if step.polygon:
@@ -759,7 +776,7 @@ def _cycle(doc: _Doc, s: _Subject):
     from ..cli import cycle_data
 
     cycle = sweep(s.problem, s.cycle_positions)
-    Cs = s.Cs if cycle.closed else None
+    Cs = s.Cs if cycle.closed and not s.static else None  # a static analysis has no speed to keep steady
     data = cycle_data(cycle, Cs)
     deg = math.degrees
     doc.heading(1, "Over the whole cycle")
@@ -771,7 +788,8 @@ def _cycle(doc: _Doc, s: _Subject):
                                 "the driving torque over the cycle", 85)],
                        "The driving torque over one turn with its average" +
                        (" and the pulses of T − T_avg with their energies." if f is not None else "."))
-    where = lambda p: "—" if p["at"] is None else f"θ12 = {M.fmt(deg(p['at']), 5)}°"
+    theta = f"θ{s.mech.driver.frame}{s.mech.driver.link}"
+    where = lambda p: "—" if p["at"] is None else f"{theta} = {M.fmt(deg(p['at']), 5)}°"
     doc.table(["", "value", "at"], [
         ["peak", M.qty(e["max"]["value"], "N·m"), where(e["max"])],
         ["lowest", M.qty(e["min"]["value"], "N·m"), where(e["min"])],

@@ -164,7 +164,7 @@ def _tied_angle(J: Prismatic, link: int, other: int, value: float) -> list:
 
 
 # -- the groups ---------------------------------------------------------------------------------------------
-def groups(doc, kin, i: int) -> None:
+def groups(doc, kin, i: int, rates: bool = True) -> None:
     """Write each group's position, velocity and acceleration equations at position ``i``, in solution order.
 
     Parameters
@@ -176,18 +176,21 @@ def groups(doc, kin, i: int) -> None:
         The solver's result; its ``groups`` give the order.
     i : int
         The position, where the linkage is assembled (``kin.valid[i]``).
+    rates : bool
+        False for a static analysis: positions only (no velocity or
+        acceleration enters a static force analysis).
     """
     mech = kin.mechanism
     st = _state(kin)
     for g in kin.groups:
         if isinstance(g, DriverGroup):
-            _driver(doc, kin, i, g)
+            _driver(doc, kin, i, g, rates)
         elif isinstance(g, GearGroup):
-            _gear(doc, st, g)
+            _gear(doc, st, g, rates)
         else:
-            _dyad(doc, st, kin, i, g, mech.assembly.get(g.key, 1))
+            _dyad(doc, st, kin, i, g, mech.assembly.get(g.key, 1), rates)
         _locate(st, kin, i, g.links)
-        for link in g.links:
+        for link in g.links if rates else ():
             given = [q for q in ("omega", "alpha") if (link, q) in kin.given]
             if given:
                 names = " and ".join("ω" if q == "omega" else "α" for q in given)
@@ -195,28 +198,36 @@ def groups(doc, kin, i: int) -> None:
                          "the given value.")
 
 
-def _driver(doc, kin, i: int, g: DriverGroup):
+def _driver(doc, kin, i: int, g: DriverGroup, rates: bool = True):
     link = g.link
     doc.heading(3, f"Link {link}: the driver")
     q, qd, qdd = float(kin.q[i]), float(kin.q_dot[i]), float(kin.q_ddot[i])
+    what = "its angle and rates are" if rates else "its angle is"
     if isinstance(g.joint, Revolute):
-        doc.text(f"The crank turns about {g.joint.point}; its angle and rates are the input:")
-        doc.equation(M.row(_th(link), M.op("="), _deg(q), M.op(";"), M.SP, _w(link), M.op("="), M.qty(qd, "rad/s"),
-                           M.op(";"), M.SP, _al(link), M.op("="), M.qty(qdd, "rad/s²")))
+        doc.text(f"The crank turns about {g.joint.point}; {what} the input:")
+        line = [_th(link), M.op("="), _deg(q)]
+        if rates:
+            line += [M.op(";"), M.SP, _w(link), M.op("="), M.qty(qd, "rad/s"), M.op(";"), M.SP, _al(link), M.op("="),
+                     M.qty(qdd, "rad/s²")]
+        doc.equation(M.row(*line))
         return
     J = g.joint
+    what = "and its rates are" if rates else "is"
     doc.text(f"Slider {link} moves along the guide of link {J.guide} through {J.through}: its position s from "
-             f"{J.through} and its rates are the input, and it keeps its angle to the guide:")
+             f"{J.through} {what} the input, and it keeps its angle to the guide:")
     s = M.i("s")
-    doc.equation(
-        M.row(s, M.op("="), M.qty(q * 1e3, "mm"), M.op(";"), M.SP, M.sym("v", str(link)), M.op("="), M.qty(qd, "m/s"),
-              M.op(";"), M.SP, M.sym("a", str(link)), M.op("="), M.qty(qdd, "m/s²")),
-        _tied_angle(J, link, J.guide if link == J.slider else J.slider, float(kin.theta[link][i])),
-        M.row(_w(link), M.op("="), M.qty(float(kin.omega[link][i]), "rad/s"), M.op(";"), M.SP, _al(link),
-              M.op("="), M.qty(float(kin.alpha[link][i]), "rad/s²")))
+    line = [s, M.op("="), M.qty(q * 1e3, "mm")]
+    if rates:
+        line += [M.op(";"), M.SP, M.sym("v", str(link)), M.op("="), M.qty(qd, "m/s"), M.op(";"), M.SP,
+                 M.sym("a", str(link)), M.op("="), M.qty(qdd, "m/s²")]
+    lines = [M.row(*line), _tied_angle(J, link, J.guide if link == J.slider else J.slider, float(kin.theta[link][i]))]
+    if rates:
+        lines.append(M.row(_w(link), M.op("="), M.qty(float(kin.omega[link][i]), "rad/s"), M.op(";"), M.SP,
+                           _al(link), M.op("="), M.qty(float(kin.alpha[link][i]), "rad/s²")))
+    doc.equation(*lines)
 
 
-def _gear(doc, st, g: GearGroup):
+def _gear(doc, st, g: GearGroup, rates: bool = True):
     rj, rk = g.mesh.radii if g.mesh.links[0] == g.j else g.mesh.radii[::-1]
     rho = rj / rk
     b, j, k = g.b, g.j, g.k
@@ -230,7 +241,7 @@ def _gear(doc, st, g: GearGroup):
     for sym, values, result, unit in (
             (_th, (st.angle(b), st.angle(j)), theta_k, "°"),
             (_w, (st.omega[b], st.omega[j]), w_k, "rad/s"),
-            (_al, (st.alpha[b], st.alpha[j]), a_k, "rad/s²")):
+            (_al, (st.alpha[b], st.alpha[j]), a_k, "rad/s²"))[:3 if rates else 1]:
         vb, vj = (_f(v) for v in values)
         show = _deg if unit == "°" else M.n
         tail = _deg(result) if unit == "°" else M.qty(result, unit)
@@ -241,14 +252,15 @@ def _gear(doc, st, g: GearGroup):
 
 
 # -- dyads ------------------------------------------------------------------------------------------------
-def _dyad(doc, st, kin, i: int, d: Dyad, sigma: int):
+def _dyad(doc, st, kin, i: int, d: Dyad, sigma: int, rates: bool = True):
     doc.heading(3, f"Links {d.j} and {d.k}: {'an' if d.type[0] == 'R' else 'a'} {d.type} dyad")
     doc.text(f"Links {d.j} and {d.k} are joined to each other by the {_joint_text(d.J2)}; the "
              f"{_joint_text(d.J1)} joins link {d.j} to link {d.a}, the {_joint_text(d.J3)} joins link {d.k} "
              f"to link {d.b}, both located already.")
     _POSITION[d.type](doc, st, d, sigma)
     _locate(st, kin, i, d.links, ("e", "O", "theta"))
-    _rates(doc, st, kin, i, d)
+    if rates:
+        _rates(doc, st, kin, i, d)
 
 
 def _position_rrr(doc, st, d: Dyad, sigma: int):
