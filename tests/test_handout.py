@@ -526,6 +526,12 @@ def test_html_ids_are_unique_across_figures(built):
     assert len(ids) == len(set(ids)) > 0
 
 
+def test_the_same_handout_gives_the_same_bytes(built):
+    """Drawn afresh (every figure again), the HTML is byte for byte the same: no date, no random SVG ids."""
+    again = handout.render(handout.build("double_slider"), "html")[0]
+    assert again == built["double_slider"]["paths"]["html"].read_bytes()
+
+
 # -- Markdown ----------------------------------------------------------------------------------------------------
 @pytest.mark.parametrize("name", PROBLEMS)
 def test_markdown_has_the_numbers_and_its_figures(built, name):

@@ -54,8 +54,12 @@ class Picture:
             # would find the same box by drawing the whole figure once more, a third of the cost of a figure.
             box = fig.get_tightbbox(renderer_of(fig)).padded(0.04)
             out = io.BytesIO()
-            # No date in the file: the same handout gives the same bytes.
-            fig.savefig(out, format="svg", bbox_inches=box, facecolor="white", metadata={"Date": None})
+            # No date in the file and ids from a fixed salt (matplotlib draws them at random otherwise): the same
+            # handout gives the same bytes, so a teacher can diff this year's HTML against last year's.
+            from matplotlib import rc_context
+
+            with rc_context({"svg.hashsalt": f"graphkin-{self.key}"}):
+                fig.savefig(out, format="svg", bbox_inches=box, facecolor="white", metadata={"Date": None})
             self._svg = out.getvalue().decode("utf-8")
             self.draw = None  # the figure and its data can go
         return self._svg
