@@ -322,6 +322,7 @@ def cycle_data(cycle, Cs=None) -> dict:
         "input": {"name": "theta" if crank else "s", "values": _floats(cycle.q), "rate": _floats(cycle.q_dot)},
         "valid": [bool(v) for v in cycle.valid],
         "invalid": [{"index": int(i), "reason": r.reason(int(i))} for i in np.flatnonzero(~cycle.valid)],
+        "links": __import__("graphkin.report", fromlist=["cycle_links"]).cycle_links(r),
         "effort": {"name": mech.driver.symbol, "values": _floats(cycle.torque), "average": _float(cycle.average),
                    "max": _peak(peaks.effort_max), "min": _peak(peaks.effort_min)},
         "power": {"values": _floats(power),

@@ -11,6 +11,7 @@ import math
 
 import numpy as np
 
+from .kinematics.points import link_points
 from .model import GearMesh, Prismatic
 from .solve import ForceAnalysis
 
@@ -60,7 +61,18 @@ def _graphical(result: ForceAnalysis, c, i) -> dict:
         diff[result.name_of(a, b)] = float(np.hypot(*(G - A)) / max(float(np.hypot(*A)), 1e-12 * scale))
     eff = result.effort[i]
     diff[result.driver_name] = float(abs(c.effort - eff) / max(abs(eff), 1e-300)) if eff else float(abs(c.effort))
-    steps = [{"kind": s.kind, "caption": s.caption, "link": s.link,
+    subproblems = []
+    for sp in c.subproblems:
+        sub_forces = {}
+        for a, b in result.forces:
+            F = sp.force(a, b)
+            sub_forces[result.name_of(a, b)] = _vec(F)
+            sub_forces[result.name_of(b, a)] = _vec(-F)
+        driver = {"name": c.driver_name, "value": float(sp.effort)}
+        if sp.driver_vector is not None:
+            driver["vector"] = _vec(sp.driver_vector)
+        subproblems.append({"label": sp.label, "link": sp.link, "mark": sp.mark, "forces": sub_forces, "driver": driver})
+    steps = [{"kind": s.kind, "caption": s.caption, "link": s.link, "sub": s.sub,
               "points": {k: list(v) for k, v in s.points.items()},
               "lines": [{"name": l.name, "point": list(l.point), "direction": list(l.direction), "role": l.role} for l in s.lines],
               "polygon": [{"name": a.name, "vector": list(a.vector), "known": a.known} for a in s.polygon],
@@ -68,7 +80,7 @@ def _graphical(result: ForceAnalysis, c, i) -> dict:
              for s in c.steps]
     return {"valid": True, "forces": forces, "driver": {"name": c.driver_name, "value": float(c.effort)},
             "relative_difference": diff, "force_scale_N_per_mm": c.force_scale, "steps": steps,
-            "warnings": list(c.warnings)}
+            "subproblems": subproblems, "warnings": list(c.warnings)}
 
 
 def solution(problem, result: ForceAnalysis, graphical: list | None = None) -> dict:
@@ -94,6 +106,8 @@ def solution(problem, result: ForceAnalysis, graphical: list | None = None) -> d
     positions = []
     pairs = list(result.forces)
     inertia = {link: result.inertia(link) for link in mech.moving}
+    points = {link: link_points(kin, link) for link in mech.moving}
+    v_G = {link: np.asarray(kin.v_G(link), dtype=float) for link in mech.moving}
     for i in range(result.n):
         entry = {
             "index": i,
@@ -108,9 +122,11 @@ def solution(problem, result: ForceAnalysis, graphical: list | None = None) -> d
                 inn = inertia[link]
                 links[str(link)] = {
                     "theta": float(kin.theta[link][i]), "omega": float(kin.w(link)[i]), "alpha": float(kin.al(link)[i]),
-                    "G": _vec(kin.G(link)[i]), "a_G": _vec(kin.a_G(link)[i]),
+                    "G": _vec(kin.G(link)[i]), "v_G": _vec(v_G[link][i]), "a_G": _vec(kin.a_G(link)[i]),
                     "inertia_force": _vec(inn.F[i]), "inertia_torque": float(inn.T[i]),
                     "h": None if not np.isfinite(inn.h[i]) else float(inn.h[i]),
+                    "points": {name: {"position": _vec(m.position[i]), "velocity": _vec(m.velocity[i]),
+                                      "acceleration": _vec(m.acceleration[i])} for name, m in points[link].items()},
                 }
             forces, prismatic = {}, {}
             for a, b in pairs:
@@ -148,6 +164,49 @@ def solution(problem, result: ForceAnalysis, graphical: list | None = None) -> d
         "given": _given(kin),
         "positions": positions,
     }
+
+
+def _series(a, valid) -> list:
+    """One value per position as a JSON list: null where the position is invalid or the value not finite."""
+    a = np.where(valid, np.asarray(a, dtype=float), np.nan)
+    return [float(x) if math.isfinite(x) else None for x in a]
+
+
+def _motion_series(position, velocity, acceleration, valid) -> dict:
+    return {key: {"x": _series(v[:, 0], valid), "y": _series(v[:, 1], valid)}
+            for key, v in (("position", position), ("velocity", velocity), ("acceleration", acceleration))}
+
+
+def cycle_links(result: ForceAnalysis) -> dict:
+    """The motion of every moving link and of its points over a sweep, as plain data in SI units.
+
+    The ``"links"`` entry of ``graphkin cycle --json`` (schema: ``docs/json.md``): per moving link, θ, ω, α
+    and the position, velocity and acceleration of G and of every named point, one value per position
+    (null where the position is invalid).
+
+    Parameters
+    ----------
+    result : ForceAnalysis
+        The sweep's force analysis (``cycle.analysis``); its kinematics are used.
+
+    Returns
+    -------
+    dict
+        ``{"3": {"theta": [n], "omega": [n], "alpha": [n], "G": MOTION, "points": {"A": MOTION, ...}}, ...}``
+        with ``MOTION = {"position" | "velocity" | "acceleration": {"x": [n], "y": [n]}}``.
+    """
+    kin = result.kinematics
+    valid = np.asarray(result.valid, dtype=bool)
+    out = {}
+    for link in kin.mechanism.moving:
+        out[str(link)] = {
+            "theta": _series(kin.theta[link], valid), "omega": _series(kin.w(link), valid),
+            "alpha": _series(kin.al(link), valid),
+            "G": _motion_series(kin.G(link), np.asarray(kin.v_G(link), dtype=float), kin.a_G(link), valid),
+            "points": {name: _motion_series(m.position, m.velocity, m.acceleration, valid)
+                       for name, m in link_points(kin, link).items()},
+        }
+    return out
 
 
 def _given(kin) -> list:
@@ -257,6 +316,27 @@ def format_solution(problem, result: ForceAnalysis, graphical: list | None = Non
     return "\n".join(out)
 
 
+def _format_subproblems(entry, crank) -> list[str]:
+    """The superposition as a table: each sub-problem's readings and driving effort, then their sum."""
+    g = entry["graphical"]
+    subs = g.get("subproblems") or []
+    if not subs:
+        return []
+    width = 26
+    out = ["    Superposition: each sub-problem's readings and driving " + ("torque" if crank else "force")
+           + ", then their sum (the whole problem)"]
+    head = "".join(f"{sp['label'] + ' (link ' + str(sp['link']) + ')':>{width}}" for sp in subs)
+    out.append(f"    {'force':<7}{head}{'sum':>{width}}")
+    names = [name for name in g["relative_difference"] if name != g["driver"]["name"]]
+    for name in names:
+        cells = "".join(f"{polar_text(sp['forces'][name]):>{width}}" for sp in subs)
+        out.append(f"    {name:<7}{cells}{polar_text(g['forces'][name]):>{width}}")
+    name, unit = g["driver"]["name"], "N·m" if crank else "N"
+    cells = "".join(f"{sp['driver']['value']:>{width - 4}.4f} {unit:<3}" for sp in subs)
+    out.append(f"    {name:<7}{cells}{g['driver']['value']:>{width - 4}.4f} {unit:<3}")
+    return out
+
+
 def _format_graphical(entry, crank) -> list[str]:
     g = entry["graphical"]
     out = ["  Graphical route (force polygons)"]
@@ -264,6 +344,7 @@ def _format_graphical(entry, crank) -> list[str]:
         return out + [f"    cannot close: {g['reason']}"]
     out += [f"    {k + 1}. {s['caption']}" for k, s in enumerate(g["steps"])]
     out.append(f"    polygon scale: {g['force_scale_N_per_mm']:g} N per mm")
+    out += _format_subproblems(entry, crank)
     out.append(f"    {'force':<6}{'analytical':>26}{'graphical':>26}{'rel. diff':>11}")
     for name, rel in g["relative_difference"].items():
         if name == g["driver"]["name"]:

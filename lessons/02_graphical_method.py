@@ -361,7 +361,7 @@ for loaded, other in ((3, 4), (4, 3)):
     print(f"case {loaded} (link {other} a two-force member): I{loaded} = {I * 1e3} mm,  closure {poly.closure():.1e}")
     for arrow in poly.polygon:
         print(f"    {arrow.name:>3} = {show(arrow.vector)}")
-    part[loaded] = {arrow.name: np.array(arrow.vector) for arrow in poly.polygon}
+    part[loaded] = {arrow.name.rstrip("′″"): np.array(arrow.vector) for arrow in poly.polygon}
 
 # %% [markdown]
 # ### Adding the cases
@@ -412,7 +412,7 @@ draw.draw_step_grid(c2)
 # line of $\vec R_2$). The motor's torque must cancel it: $|T_{12}| = |\vec R_2|\, d$.
 
 # %%
-(drive2,) = steps_of(c2, "driver")
+drive2 = steps_of(c2, "driver")[-1]  # the whole problem's crank, after sub-problems I and II
 d, T12 = drive2.values["d"], drive2.values["T12"]
 R2_step = [s for s in steps_of(c2, "resultant", 2) if "R2" in s.values][-1]
 R2 = np.array(R2_step.values["R2"])
@@ -458,7 +458,7 @@ draw.draw_solution(c2, r2)
 p3 = catalog.load("slider_crank_friction")
 r3 = p3.solve(at=[np.radians(60)])
 c3 = construct_forces(r3.kinematics, 0)
-(note,) = steps_of(c3, "note")
+note = next(s for s in steps_of(c3, "note") if s.caption.startswith("Friction"))
 print(note.caption)
 print()
 (guide,) = [j for j in p3.mechanism.joints if getattr(j, "mu", 0)]

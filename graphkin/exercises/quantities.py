@@ -222,6 +222,8 @@ _KIND_WORDS = {
     "driver": "the driver's equilibrium (the driving torque or force)",
     "line": "the line of action of the tooth force",
     "couple": "link {k} loaded by a couple",
+    "sub-problem": "a sub-problem of the superposition: only one link's loads at a time",
+    "readings": "the forces and driving torque read off a sub-problem's polygons",
 }
 
 
@@ -246,7 +248,8 @@ def _hint(solved, q: Question) -> str:
     c = solved.construction
     want = {"force": q.find, "driver_torque": q.find, "driver_force": q.find}.get(kind)
     for n, step in enumerate(c.steps, 1):
-        if want and step.kind in ("driver",) and kind.startswith("driver"):
+        # The whole problem's driver step: a sub-problem's (superposition) gives only its own part of the torque.
+        if want and step.kind in ("driver",) and kind.startswith("driver") and not getattr(step, "sub", ""):
             return _step_hint(n, step)
         if want and (want in step.values or any(a.name == want and not a.known for a in step.polygon)):
             return _step_hint(n, step)

@@ -70,7 +70,10 @@ class Step:
         share one line), ``"three-force"``, ``"couple"`` (a member loaded by a
         couple alone: its two forces are an opposite couple), ``"line"`` (a
         force whose line of action is known, e.g. a gear's pressure line),
-        ``"polygon"``, ``"superpose"``, ``"driver"`` or ``"note"``.
+        ``"polygon"``, ``"superpose"`` (a force as the sum of its parts from
+        the sub-problems), ``"sub-problem"`` (announces a sub-problem of a
+        superposition), ``"readings"`` (what a sub-problem found), ``"driver"``
+        or ``"note"``.
     caption : str
         What a student does in this step, in words.
     link : int or None
@@ -82,6 +85,11 @@ class Step:
         A force polygon, tip to tail; it closes when the link is in equilibrium.
     values : dict of str to float or (float, float)
         Values read off the step (forces [N], torques [N·m], distances [m]).
+    sub : str
+        The sub-problem of a superposition the step belongs to (``"I"``,
+        ``"II"``, …; a part of a sub-problem split once more is ``"I.a"``),
+        ``""`` for a step of the whole problem. Forces found in sub-problem k
+        carry its marks (:attr:`SubProblem.mark`): ``F23′`` in I, ``F23″`` in II.
     """
 
     kind: str
@@ -91,6 +99,7 @@ class Step:
     points: dict = field(default_factory=dict)
     polygon: tuple[Arrow, ...] = ()
     values: dict = field(default_factory=dict)
+    sub: str = ""
 
     def closure(self) -> float:
         """|Σ polygon| / max |arrow|: 0 for a polygon that closes."""
@@ -99,6 +108,51 @@ class Step:
         total = np.sum([a.vector for a in self.polygon], axis=0)
         size = max(math.hypot(*a.vector) for a in self.polygon)
         return float(math.hypot(*total) / size) if size else 0.0
+
+
+@dataclass(frozen=True)
+class SubProblem:
+    """One sub-problem of a superposition: the loads of one link alone, every other link unloaded.
+
+    At a fixed position the equilibrium equations are linear in the loads
+    (with the side of each guide's friction and each tooth's flank fixed by
+    the whole problem), so the forces and driving efforts of the
+    sub-problems add up to those of the whole problem.
+
+    Attributes
+    ----------
+    label : str
+        ``"I"``, ``"II"``, … in the order of the loaded links' numbers.
+    link : int
+        The one link whose own loads (inertia, weight, external) act.
+    mark : str
+        How the steps mark its forces: ``"′"`` (F23′), ``"″"``, ``"‴"``, …
+    forces : dict of (int, int) to (float, float)
+        Force of the lower-numbered link on the higher, per joint [N].
+    normal, couple : dict of (int, int) to float
+        For prismatic pairs: normal force [N] and couple [N·m].
+    effort : float
+        This sub-problem's driving torque [N·m] or force along the guide [N].
+    driver_vector : (float, float) or None
+        A slider driver's force as a vector [N] (None for a crank).
+    """
+
+    label: str
+    link: int
+    mark: str
+    forces: dict = field(default_factory=dict)
+    normal: dict = field(default_factory=dict)
+    couple: dict = field(default_factory=dict)
+    effort: float = math.nan
+    driver_vector: tuple[float, float] | None = None
+
+    def force(self, i: int, j: int) -> np.ndarray:
+        """Force of link i on link j in this sub-problem [N], shape (2,)."""
+        key = (min(i, j), max(i, j))
+        if key not in self.forces:
+            raise GraphkinError(f"links {i} and {j} share no joint")
+        F = np.asarray(self.forces[key], dtype=float)
+        return F if i < j else -F
 
 
 def nice_scale(largest: float, length: float = 80.0) -> float:
@@ -162,6 +216,10 @@ class Construction:
         Angle θ of each link's frame [rad].
     driver_vector : (float, float) or None
         A slider driver's force F1j as a vector [N] (None for a crank).
+    subproblems : tuple of SubProblem
+        The sub-problems of a superposition, one per loaded link, whose forces
+        and efforts add up to :attr:`forces` and :attr:`effort`; empty when
+        the construction needs none (no dyad with both links loaded).
     valid : bool
     reason : str
         Why the construction cannot close, when not valid.
@@ -223,6 +281,7 @@ class Construction:
     guides: dict = field(default_factory=dict)
     angles: dict = field(default_factory=dict)
     driver_vector: tuple[float, float] | None = None
+    subproblems: tuple[SubProblem, ...] = ()
 
     @property
     def driver_name(self) -> str:

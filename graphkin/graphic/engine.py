@@ -6,19 +6,26 @@ drawn:
 
 1. each loaded link's known loads are combined into one resultant R — for
    inertia alone, −m a_G on a line offset from G by h = |T|/|F|;
-2. in a dyad with both links loaded, the loads are superposed: one
-   sub-construction per loaded link, the other link unloaded;
-3. the unloaded link is a two-force member, which fixes the line of the force
-   it passes on (along its two pins; through its pin, normal to its guide; or
-   through its pin, normal to a slot in the loaded link);
-4. the loaded link is then a three-force member: its resultant, that line and
+2. in a dyad with one link loaded, the unloaded link is a two-force member,
+   which fixes the line of the force it passes on (along its two pins;
+   through its pin, normal to its guide; or through its pin, normal to a slot
+   in the loaded link);
+3. the loaded link is then a three-force member: its resultant, that line and
    the reaction at its other joint meet in one point, found with shapely; the
    force polygon closes tip to tail (a guide reaction has a known direction
-   instead, so the polygon alone gives both sizes);
-5. the sub-results are added (a polygon of the sum); reactions found are
-   loads on the links of the groups before;
-6. the driver: the crank's pivot force and the resultant on the crank form a
+   instead, so the polygon alone gives both sizes); reactions found are loads
+   on the links of the groups before;
+4. the driver: the crank's pivot force and the resultant on the crank form a
    couple T = F·d, or the slider's polygon gives the driving force.
+
+When a dyad has both links loaded, the steps are a superposition as books
+write it (docs/graphical.md): one sub-problem per loaded link, with every
+other link unloaded, each announced, solved through to its own driving
+effort and read off; then the sum of every joint force and the driver with
+the summed reactions. The whole problem is solved first, unshown, for the
+side of each guide's friction and each tooth's flank, which the
+sub-problems keep so that they add up; a sub-problem that loads both links
+of a dyad again is split once more into parts.
 
 Magnitudes are read off exactly: a force along a known line is found from
 moments about the other joint (the polygon's closing side, computed rather
@@ -43,7 +50,7 @@ from ..kinematics import Dyad, DriverGroup, GearGroup, Kinematics
 from ..geometry import zcross as cross
 from ..geometry import zdot as dot
 from ..model import Prismatic, Revolute
-from .construction import Arrow, Construction, Line, Step, nice_scale
+from .construction import Arrow, Construction, Line, Step, SubProblem, nice_scale
 
 CLOSE = 1e-9
 """Relative tolerance of the closure check of a polygon."""
@@ -97,24 +104,112 @@ def _meet(p, u, q, w, reach):
     return complex(hit.x, hit.y)
 
 
-class _Builder:
-    """Builds the construction of one position."""
+_MARKS = ("′", "″", "‴", "⁗")
+_SUPERSCRIPT = str.maketrans("0123456789", "⁰¹²³⁴⁵⁶⁷⁸⁹")
 
-    def __init__(self, kin: Kinematics, i: int):
+
+def _mark(k: int) -> str:
+    """How sub-problem k (from 1) marks its forces: ′, ″, ‴, ⁗, then ⁽⁵⁾, ⁽⁶⁾, …"""
+    return _MARKS[k - 1] if k <= len(_MARKS) else f"⁽{str(k).translate(_SUPERSCRIPT)}⁾"
+
+
+def _roman(k: int) -> str:
+    """Sub-problem k's label: I, II, III, IV, …
+
+    Examples
+    --------
+    >>> [_roman(k) for k in (1, 4, 9, 14)]
+    ['I', 'IV', 'IX', 'XIV']
+    """
+    out = ""
+    for value, letters in ((1000, "M"), (900, "CM"), (500, "D"), (400, "CD"), (100, "C"), (90, "XC"), (50, "L"),
+                           (40, "XL"), (10, "X"), (9, "IX"), (5, "V"), (4, "IV"), (1, "I")):
+        while k >= value:
+            out, k = out + letters, k - value
+    return out
+
+
+def _and(items) -> str:
+    """``"a"``, ``"a and b"``, ``"a, b and c"``."""
+    items = list(items)
+    return items[0] if len(items) == 1 else ", ".join(items[:-1]) + " and " + items[-1]
+
+
+def _polar(z) -> str:
+    """A force as the books print it: ``1290 N ∠ -123.45°`` (``0 N`` for none)."""
+    z = complex(z)
+    if z == 0:
+        return "0 N"
+    tiny = 1e-12 * abs(z)
+    x, y = (0.0 if abs(z.real) <= tiny else z.real), (0.0 if abs(z.imag) <= tiny else z.imag)
+    angle = math.degrees(math.atan2(y, x))
+    return f"{abs(z):.4g} N ∠ {180.0 if angle == -180.0 else angle:.2f}°"
+
+
+def _sense(T: float) -> str:
+    return " (CCW)" if T > 0 else " (CW)" if T < 0 else ""
+
+
+class _Builder:
+    """Builds the construction of one position: the whole problem, or one sub-problem of a superposition.
+
+    A sub-problem's builder shares the list of steps and warnings of the
+    presentation, marks its forces (``F23′``), says which sub-problem it is
+    in (``scope``), and takes the side of each guide's friction and the flank
+    of each tooth force from the whole problem (``fixed``) instead of
+    finding them, so that the sub-problems add up.
+    """
+
+    def __init__(self, kin: Kinematics, i: int, *, sub: str = "", mark: str = "", scope: str = "",
+                 fixed: dict | None = None, steps: list | None = None, warnings: list | None = None,
+                 like: "_Builder | None" = None):
         self.kin, self.i = kin, i
         self.mech = kin.mechanism
-        self.steps: list[Step] = []
-        self.warnings: list[str] = []
+        self.steps: list[Step] = [] if steps is None else steps
+        self.warnings: list[str] = [] if warnings is None else warnings
         self.forces, self.normal, self.couple = {}, {}, {}
         self.effort = math.nan
         self.rname: dict[int, str] = {}
         self.driver_vector = None
-        pts = [self.z(link, p) for link in self.mech.moving for p in self.mech.link(link).points]
-        self.reach = max((abs(a - b) for a in pts for b in pts), default=1.0) or 1.0
+        self.sub, self.mark, self.scope = sub, mark, scope
+        self.fixed = fixed
+        # The side each friction guide's reaction tilts to, the sense of a slider driver's normal force, the flank
+        # of each tooth force, by id of the joint: what the sub-problems must share with the whole problem.
+        self.sides: dict[int, float] = {}
+        # Every joint, in the order its force is found, with the link the force's name puts it on (F23: on 3).
+        self.order: dict[int, tuple] = {}
+        # Reactions passed on to the links of the groups still to solve: link -> [(name unmarked, name, F, X, couple)].
+        self.passed: dict[int, list] = {}
+        self.superposed: list[str] = []  # the dyads found with both links loaded
+        # Positions of points are the same in every sub-problem: ``like`` (another builder of this position) shares them.
+        self._z: dict = like._z if like is not None else {}
+        if like is not None:
+            self.reach = like.reach
+        else:
+            pts = [self.z(link, p) for link in self.mech.moving for p in self.mech.link(link).points]
+            self.reach = max((abs(a - b) for a in pts for b in pts), default=1.0) or 1.0
+
+    def step(self, kind, caption, link=None, lines=(), points=None, polygon=(), values=None) -> Step:
+        return Step(kind, caption, link, tuple(lines), points or {}, tuple(polygon), values or {}, self.sub)
+
+    def add(self, *args, **kwargs) -> Step:
+        self.steps.append(self.step(*args, **kwargs))
+        return self.steps[-1]
+
+    def lead(self, text: str) -> str:
+        """``"In sub-problem I, link 4 …"`` in a sub-problem, ``"Link 4 …"`` in the whole problem."""
+        return f"In {self.scope}, {text}" if self.scope else text[0].upper() + text[1:]
+
+    def within(self) -> str:
+        """``" in sub-problem I"`` or ``""``."""
+        return f" in {self.scope}" if self.scope else ""
 
     # -- geometry at this position -----------------------------------------
     def z(self, link, point):
-        return complex(self.kin.z(link, point)[self.i])
+        key = (link, point if isinstance(point, str) else tuple(point))
+        if key not in self._z:
+            self._z[key] = complex(self.kin.z(link, point)[self.i])
+        return self._z[key]
 
     def joint_point(self, joint, link):
         return self.z(joint.slider, joint.point) if isinstance(joint, Prismatic) else self.z(link, joint.point)
@@ -127,9 +222,12 @@ class _Builder:
             w -= joint.mu * sigma * self.kin.slide_sense(joint, on)[self.i] * u
         return w
 
-    def name(self, i, j):
+    def base_name(self, i, j):
         letter = self.mech.joint_between(i, j).force_letter
         return f"{letter}{i}{j}" if i < 10 and j < 10 else f"{letter}{i},{j}"
+
+    def name(self, i, j):
+        return self.base_name(i, j) + self.mark
 
     # -- loads ---------------------------------------------------------------
     def own_loads(self, link) -> _Load:
@@ -169,11 +267,12 @@ class _Builder:
         for ld in self.mech.loads:
             if ld.link != link or (ld.active is not None and not ld.active.mask(kin.q[i : i + 1])[0]):
                 continue
-            if isinstance(ld, PointForce):
+            # A load of zero size is no load: listing it would contradict "link 3 carries no load" further on.
+            if isinstance(ld, PointForce) and any(ld.force):
                 F = complex(*ld.force)
                 load.add(F, self.z(link, ld.point))
                 parts.append(f"the external force {ld.name or 'P'} = {abs(F):.4g} N acts at {ld.point}")
-            elif isinstance(ld, Torque):
+            elif isinstance(ld, Torque) and ld.torque:
                 load.add(0j, None, ld.torque)
                 parts.append(f"the external torque {ld.name or 'T'} = {ld.torque:.4g} N·m acts on it")
         only_inertia = len(parts) == 1 and bool(Fi or Ti)
@@ -183,24 +282,30 @@ class _Builder:
             values[f"R{link}"] = _xy(load.F)
             parts.append(f"together they make one resultant R{link} = {abs(load.F):.4g} N")
         if parts:
-            caption = f"Link {link}: " + "; ".join(parts) + "."
-            self.steps.append(Step("resultant", caption, link, tuple(lines), values=values))
+            self.add("resultant", f"Link {link}: " + "; ".join(parts) + ".", link, lines, values=values)
         return load
 
     def combine(self, link, load: _Load, extra: list):
         """Add reactions (name, force, point, couple) from groups solved before; one resultant R for the link."""
+        own, own_name = bool(load.F or load.M0), self.rname.get(link, f"R{link}")
         for _, F, X, C in extra:
             load.add(F, X, C)
         if extra:
-            self.rname[link] = f"R{link}"
-            names = ", ".join(n for n, _, _, _ in extra)
+            R = self.rname[link] = f"R{link}{self.mark}"
+            names = [n for n, _, _, _ in extra]
             P = load.point()
-            lines = (Line(f"R{link}", _xy(P), _xy(load.F / abs(load.F)), "resultant"),) if P is not None else ()
-            self.steps.append(Step(
-                "resultant",
-                f"Link {link} also carries {names}, found before; with its own loads they add up to one resultant "
-                f"R{link} = {abs(load.F):.4g} N" + ("." if P is not None else f" (a pure couple of {load.M0:.4g} N·m)."),
-                link, lines, values={f"R{link}": _xy(load.F)}))
+            lines = (Line(R, _xy(P), _xy(load.F / abs(load.F)), "resultant"),) if P is not None else ()
+            res = f"{R} = {abs(load.F):.4g} N" if P is not None else f"{R}, a pure couple of {load.M0:.4g} N·m"
+            if own:
+                # The own loads' name only when it differs from the new one (a crank's weight alone is R2 too).
+                mine = f" ({own_name})" if own_name != R else ""
+                text = (f"link {link} also carries {_and(names)}, found before; with its own loads{mine} they add up "
+                        f"to one resultant {res}.")
+            elif len(names) == 1:
+                text = f"link {link} carries only {names[0]}, found before, so its resultant is {names[0]} itself: {res}."
+            else:
+                text = f"link {link} carries only {_and(names)}, found before; they add up to one resultant {res}."
+            self.add("resultant", self.lead(text), link, lines, values={R: _xy(load.F)})
         return load
 
     # -- dyads -----------------------------------------------------------------
@@ -236,9 +341,9 @@ class _Builder:
         on_L = self.z(L, d.J2.point) if M_point is not None and isinstance(d.J2, Revolute) else M_point
         nM, nL = self.name(M, L), self.name((set(JL.links) - {L}).pop(), L)
         steps = []
-        steps.append(Step("two-force", f"Link {M} carries no load of its own here, so it is a two-force member: "
-                          f"{nM} acts {how}.", M,
-                          (Line(nM, _xy(M_point), _xy(M_dir)),) if M_point is not None else ()))
+        steps.append(self.step("two-force", self.lead(f"link {M} carries no load, so it is a two-force member: {nM} acts "
+                                                      f"{how}."), M,
+                               (Line(nM, _xy(M_point), _xy(M_dir)),) if M_point is not None else ()))
         Rp = R.point()
         lines = []
         if Rp is not None:
@@ -247,9 +352,10 @@ class _Builder:
             # The partner passes a couple only: the outer pin force balances R alone.
             XL = self.z(L, JL.point)
             F_out = -R.F
-            steps.append(Step("polygon", f"{nL} = −{RL} acts at {JL.point}; the couple they form is taken by the sliding pairs.",
-                              L, tuple(lines), polygon=(Arrow(RL, _xy(R.F), True), Arrow(nL, _xy(F_out), False, _xy(XL))),
-                              values={nL: _xy(F_out)}))
+            steps.append(self.step("polygon", self.lead(f"{nL} = −{RL} acts at {JL.point}; the couple they form is taken by "
+                                                        "the sliding pairs."),
+                                   L, lines, polygon=(Arrow(RL, _xy(R.F), True), Arrow(nL, _xy(F_out), False, _xy(XL))),
+                                   values={nL: _xy(F_out)}))
             self.steps.extend(steps)
             return {id(d.J1): 0j, id(d.J3): 0j, id(JL): F_out, id(d.J2): 0j}
         if isinstance(JL, Revolute):
@@ -262,7 +368,7 @@ class _Builder:
             F_out = -R.F - F_M
             points = {}
             if Rp is None:
-                text = (f"{RL} is a pure couple, so {nM} and {nL} form the opposite couple: {nL} is parallel to {nM}")
+                text = f"{RL} is a pure couple, so {nM} and {nL} form the opposite couple: {nL} is parallel to {nM}"
             else:
                 I = _meet(Rp, R.F / abs(R.F), on_L, M_dir, self.reach)
                 if abs(R.about(XL)) <= 1e-12 * abs(R.F) * self.reach:
@@ -273,13 +379,13 @@ class _Builder:
                             f"moments about {JL.point} give its size")
                 else:
                     points[f"I{L}"] = _xy(I)
-                    text = (f"Link {L} is a three-force member: {RL}, {nM} and {nL} meet in one point I{L} "
+                    text = (f"link {L} is a three-force member: {RL}, {nM} and {nL} meet in one point I{L} "
                             f"(where {RL} crosses the line of {nM}); {nL} passes through {JL.point} and I{L}")
                     if F_out != 0 and abs(cross(I - XL, F_out)) > 1e-7 * abs(I - XL) * abs(F_out):
                         self.warnings.append(f"{nL} misses the concurrency point I{L}")
                 lines.append(Line(nL, _xy(XL), _xy(F_out / abs(F_out)) if F_out else (1.0, 0.0), "found"))
             lines.append(Line(nM, _xy(on_L), _xy(M_dir)))
-            steps.append(Step("three-force", text + ".", L, tuple(lines), points))
+            steps.append(self.step("three-force", self.lead(text) + ".", L, lines, points))
         else:
             wL = self.w(JL, L, sigma[JL])
             a, b = _decompose(-R.F, M_dir, wL)
@@ -291,14 +397,13 @@ class _Builder:
                     points[f"I{L}"] = _xy(I)
                     lines.append(Line(nL, _xy(I), _xy(wL / abs(wL)), "found"))
             lines.append(Line(nM, _xy(on_L), _xy(M_dir)))
-            steps.append(Step("three-force",
-                              f"The guide force {nL} has a known direction (normal to the guide"
-                              + (", tilted by the friction angle" if JL.mu else "") + f"), so the polygon of {RL}, {nM} and {nL} "
-                              f"gives both sizes; its line passes through the point where {RL} crosses {nM}.",
-                              L, tuple(lines), points))
+            steps.append(self.step("three-force", self.lead(
+                f"the guide force {nL} has a known direction (normal to the guide"
+                + (", tilted by the friction angle" if JL.mu else "") + f"), so the polygon of {RL}, {nM} and {nL} "
+                f"gives both sizes; its line passes through the point where {RL} crosses {nM}."), L, lines, points))
         poly = (Arrow(RL, _xy(R.F), True), Arrow(nM, _xy(F_M), False), Arrow(nL, _xy(F_out), False))
-        steps.append(Step("polygon", f"Force polygon of link {L}: {RL} + {nM} + {nL} = 0, tip to tail.", L,
-                          polygon=poly, values={nM: _xy(F_M), nL: _xy(F_out)}))
+        steps.append(self.step("polygon", f"Force polygon of link {L}{self.within()}: {RL} + {nM} + {nL} = 0, tip to tail.",
+                               L, polygon=poly, values={nM: _xy(F_M), nL: _xy(F_out)}))
         self._check(steps[-1])
         self.steps.extend(steps)
         # The unloaded partner M passes F_M straight on: its outer joint pushes on it with F_M too.
@@ -306,6 +411,11 @@ class _Builder:
 
     def dyad(self, d: Dyad, R: dict):
         friction = [J for J in d.joints if isinstance(J, Prismatic) and J.mu > 0]
+        if self.fixed is not None:
+            # A sub-problem: the sides are the whole problem's, right or not for these loads alone.
+            sigma = {J: 1.0 for J in d.joints if isinstance(J, Prismatic)}
+            sigma.update({J: self.fixed[id(J)] for J in friction})
+            return self._superpose(d, R, sigma)
         mark = len(self.steps)
         for signs in itertools.product((1.0, -1.0), repeat=len(friction)):
             del self.steps[mark:]
@@ -316,32 +426,62 @@ class _Builder:
                 return None
             bad = [J for J in friction if F["N"][id(J)] * sigma[J] < 0]
             if not bad:
+                self.sides.update({id(J): sigma[J] for J in friction})
                 if friction:
-                    self.steps.insert(mark, Step("note", "Friction: the guide reaction is tilted by atan μ against the "
-                                                 "sliding; its sense depends on the side the normal force pushes. "
-                                                 "The side assumed below is confirmed by the result.", d.j))
+                    self.steps.insert(mark, self.step("note", "Friction: the guide reaction is tilted by atan μ against the "
+                                                      "sliding; its sense depends on the side the normal force pushes. "
+                                                      "The side assumed below is confirmed by the result.", d.j))
                 return F
         raise _DeadPoint(f"friction locks the {d.label}: no side of the normal force is consistent")
+
+    def _parts(self, d: Dyad, loaded: list, R: dict, sigma) -> list:
+        """Both links of the dyad loaded: one part per link, the other unloaded, each announced, then added."""
+        sub, mark, scope = self.sub, self.mark, self.scope
+        letters = "abcdefgh"[: len(loaded)]
+        self.add("note", self.lead(
+            f"links {d.j} and {d.k} both carry loads ({_and([self.rname[L] for L in loaded])}), so neither is a "
+            f"two-force member: the dyad is split once more, " + ", ".join(
+                f"part ({x}) with only the loads on link {L}" for x, L in zip(letters, loaded))
+            + ", and the parts are added."), d.j)
+        parts = []
+        for x, L in zip(letters, loaded):
+            self.sub = f"{sub}.{x}" if sub else x
+            self.mark = mark + x
+            self.scope = f"part ({x}) of {scope}" if scope else f"part ({x})"
+            other = d.k if L == d.j else d.j
+            self.add("sub-problem", f"{self.scope[0].upper()}{self.scope[1:]}: only the loads on link {L} "
+                     f"({self.rname[L]}); link {other} is unloaded. Its forces are marked {self.mark}.", L)
+            parts.append((x, self.sub_construction(d, L, R[L], sigma)))
+        self.sub, self.mark, self.scope = sub, mark, scope
+        return parts
 
     def _superpose(self, d: Dyad, R: dict, sigma):
         loaded = [L for L in (d.j, d.k) if abs(R[L].F) > 0 or R[L].M0 != 0]
         total = {id(J): 0j for J in d.joints}
-        subs = []
-        for L in loaded:
-            part = self.sub_construction(d, L, R[L], sigma)
-            subs.append((L, part))
-            for key, F in part.items():
-                total[key] += F
-        if len(subs) > 1:
-            for J, on in ((d.J1, d.j), (d.J2, d.k), (d.J3, d.k)):
+        joints = ((d.J1, d.j), (d.J2, d.k), (d.J3, d.k))
+        for J, on in joints:
+            self.order.setdefault(id(J), (J, on))
+        if not loaded:
+            self.add("note", self.lead(f"links {d.j} and {d.k} carry no load, so their joint forces are zero."), d.j)
+        if len(loaded) > 1:
+            self.superposed.append(d.label)
+            parts = self._parts(d, loaded, R, sigma)
+            for _, part in parts:
+                for key, F in part.items():
+                    total[key] += F
+            for J, on in joints:
                 other = (set(J.links) - {on}).pop()
                 n = self.name(other, on)
-                arrows = [Arrow(f"{n} ({L} loaded)", _xy(p[id(J)]), True) for L, p in subs]
+                arrows = [Arrow(f"{n}{x}", _xy(p[id(J)]), True) for x, p in parts]
                 # The closing side runs back to the start: it is −(the sum).
-                self.steps.append(Step("superpose", f"Superposition: {n} is the sum of its parts from each loaded link.",
-                                       on, polygon=tuple(arrows) + (Arrow(f"−{n}", _xy(-total[id(J)]), False),),
-                                       values={n: _xy(total[id(J)])}))
-        X = {id(J): self.joint_point(J, on) for J, on in ((d.J1, d.j), (d.J2, d.k), (d.J3, d.k))}
+                self.add("superpose", self.lead(f"{n} is the sum of its parts: {n} = "
+                                                + " + ".join(a.name for a in arrows) + f" = {_polar(total[id(J)])}."),
+                         on, polygon=tuple(arrows) + (Arrow(f"−{n}", _xy(-total[id(J)]), False),),
+                         values={n: _xy(total[id(J)])})
+        elif loaded:
+            for key, F in self.sub_construction(d, loaded[0], R[loaded[0]], sigma).items():
+                total[key] += F
+        X = {id(J): self.joint_point(J, on) for J, on in joints}
         F1, F2, F3 = total[id(d.J1)], total[id(d.J2)], total[id(d.J3)]
         # Couples of sliding pairs (where their lines act) from each link's moment balance.
         Mj = R[d.j].M0 + cross(X[id(d.J1)], F1) - cross(self.joint_point(d.J2, d.j), F2)
@@ -385,15 +525,24 @@ class _Builder:
         Ck, Cj = self.z(g.b, g.pivot.point), self.z(g.b, g.j_pivot.point)
         e = (Cj - Ck) / abs(Cj - Ck)
         P = Ck + rk * e
+        self.order.setdefault(id(mesh), (mesh, g.k))
+        self.order.setdefault(id(g.pivot), (g.pivot, g.k))
+        if R.F == 0 and R.M0 == 0:
+            self.add("note", self.lead(f"gear {g.k} carries no load, so its tooth and pivot forces are zero."), g.k)
+            self.store(g.mesh, g.k, 0j)
+            self.store(g.pivot, g.k, 0j)
+            return {id(g.mesh): (0j, P), id(g.pivot): (0j, Ck)}
         W_t = -R.about(Ck) / rk
-        d = 1j * e - np.sign(W_t) * math.tan(mesh.pressure_angle) * e
+        # The flank the tooth force presses on follows the tangential load; a sub-problem keeps the whole problem's.
+        flank = float(np.sign(W_t)) if self.fixed is None else self.fixed.get(id(mesh), 0.0)
+        self.sides[id(mesh)] = flank
+        d = 1j * e - flank * math.tan(mesh.pressure_angle) * e
         d /= abs(d)
         nW, nF = self.name(g.j, g.k), self.name(g.b, g.k)
         Rk = self.rname[g.k]
-        self.steps.append(Step("line",
-                               f"The tooth force {nW} lies on the pressure line through the pitch point P, inclined "
-                               f"{math.degrees(mesh.pressure_angle):.4g}° to the common tangent, on the flank that "
-                               f"opposes the load on gear {g.k}.", g.k, (Line(nW, _xy(P), _xy(d)),), {"P": _xy(P)}))
+        self.add("line", self.lead(f"the tooth force {nW} lies on the pressure line through the pitch point P, inclined "
+                                   f"{math.degrees(mesh.pressure_angle):.4g}° to the common tangent, on the flank that "
+                                   f"opposes the load on gear {g.k}."), g.k, (Line(nW, _xy(P), _xy(d)),), {"P": _xy(P)})
         arm = cross(P - Ck, d)
         F_W = (-R.about(Ck) / arm) * d
         F_piv = -R.F - F_W
@@ -408,27 +557,36 @@ class _Builder:
         # nil, e.g. an input torque) is no three-force member: the tooth and
         # pivot forces are then the opposite couple, equal and opposite.
         if abs(R.F) <= 1e-9 * abs(F_W):
-            self.steps.append(Step("couple", f"Gear {g.k} carries only a couple ({R.M0:.4g} N·m): {nW} and the pivot "
-                                   f"force {nF} form the opposite couple, so {nF} = −{nW}, through the centre "
-                                   f"{g.pivot.point}.", g.k, pivot_line, points))
+            self.add("couple", f"Gear {g.k} carries only a couple ({R.M0:.4g} N·m){self.within()}: {nW} and the pivot "
+                     f"force {nF} form the opposite couple, so {nF} = −{nW}, through the centre {g.pivot.point}.",
+                     g.k, pivot_line, points)
             poly = (Arrow(nW, _xy(F_W), False), Arrow(nF, _xy(F_piv), False))
-            caption = f"Force polygon of gear {g.k}: {nW} + {nF} = 0."
+            caption = f"Force polygon of gear {g.k}{self.within()}: {nW} + {nF} = 0."
         else:
-            self.steps.append(Step("three-force", f"Gear {g.k} is a three-force member: {Rk}, {nW} and the pivot force "
-                                   f"{nF} meet in one point; {nF} passes through the centre {g.pivot.point}.", g.k,
-                                   pivot_line, points))
+            self.add("three-force", f"Gear {g.k} is a three-force member{self.within()}: {Rk}, {nW} and the pivot force "
+                     f"{nF} meet in one point; {nF} passes through the centre {g.pivot.point}.", g.k, pivot_line, points)
             poly = (Arrow(Rk, _xy(R.F), True), Arrow(nW, _xy(F_W), False), Arrow(nF, _xy(F_piv), False))
-            caption = f"Force polygon of gear {g.k}: {Rk} + {nW} + {nF} = 0."
-        self.steps.append(Step("polygon", caption, g.k, polygon=poly, values={nW: _xy(F_W), nF: _xy(F_piv)}))
-        self._check(self.steps[-1])
+            caption = f"Force polygon of gear {g.k}{self.within()}: {Rk} + {nW} + {nF} = 0."
+        self._check(self.add("polygon", caption, g.k, polygon=poly, values={nW: _xy(F_W), nF: _xy(F_piv)}))
         self.store(g.mesh, g.k, F_W)
         self.store(g.pivot, g.k, F_piv)
         return {id(g.mesh): (F_W, P), id(g.pivot): (F_piv, Ck)}
 
-    def driver(self, g: DriverGroup, R: _Load):
+    def driver(self, g: DriverGroup, R: _Load, total: str = ""):
+        """The input link's equilibrium; ``total`` is added to the caption (the sum of the sub-problems' efforts)."""
         link, J = g.link, g.joint
         name = self.name(self.mech.frame, link)
+        drive = self.mech.driver.symbol + self.mark
         Rd = self.rname[link]
+        self.order.setdefault(id(J), (J, link))
+        what = "crank" if isinstance(J, Revolute) else "slider"
+        if R.F == 0 and R.M0 == 0:
+            self.add("driver", f"The {what}{self.within()} carries no load: {name} = 0 and {drive} = 0.", link,
+                     values={name: (0.0, 0.0), drive: 0.0 if what == "crank" else (0.0, 0.0)})
+            self.store(J, link, 0j)
+            self.effort = 0.0
+            self.driver_vector = None if what == "crank" else (0.0, 0.0)
+            return
         if isinstance(J, Revolute):
             X = self.z(link, J.point)
             F = -R.F
@@ -436,17 +594,16 @@ class _Builder:
             # Plain floats: a resultant tiny beside its moment (a pure couple in all but rounding) gives an arm
             # too long for a float, which is said in words rather than as a numpy overflow.
             d = abs(T) / abs(complex(R.F)) if R.F else 0.0
-            sense = "CCW" if T > 0 else "CW"
-            arm = (f"with {Rd} it forms a couple of arm d = {d * 1e3:.4g} mm, which the driving torque balances: "
-                   f"{self.mech.driver.symbol} = ±|{Rd}|·d = {T:.4g} N·m ({sense})." if math.isfinite(d * 1e3) else
+            dn = "d" + self.mark
+            arm = (f"with {Rd} it forms a couple of arm {dn} = {d * 1e3:.4g} mm, which the driving torque balances: "
+                   f"{drive} = ±|{Rd}|·{dn} = {T:.4g} N·m{_sense(T)}" if math.isfinite(d * 1e3) else
                    f"{Rd} is so small beside its moment about {J.point} that the loads are a pure couple, which the "
-                   f"driving torque balances: {self.mech.driver.symbol} = {T:.4g} N·m ({sense}).")
-            self.steps.append(Step(
-                "driver",
-                f"The crank: the pivot force {name} = −{Rd} acts at {J.point}; {arm}", link,
-                (Line(name, _xy(X), _xy(F / abs(F)) if F else (1.0, 0.0), "found"),),
-                values={name: _xy(F), self.mech.driver.symbol: T, **({"d": d} if math.isfinite(d) else {})},
-                polygon=(Arrow(Rd, _xy(R.F), True), Arrow(name, _xy(F), False, _xy(X)))))
+                   f"driving torque balances: {drive} = {T:.4g} N·m{_sense(T)}")
+            self.add("driver", f"The crank{self.within()}: the pivot force {name} = −{Rd} acts at {J.point}; {arm}"
+                     + (f"; {total}." if total else "."), link,
+                     (Line(name, _xy(X), _xy(F / abs(F)) if F else (1.0, 0.0), "found"),),
+                     values={name: _xy(F), drive: T, **({"d": d} if math.isfinite(d) else {})},
+                     polygon=(Arrow(Rd, _xy(R.F), True), Arrow(name, _xy(F), False, _xy(X))))
             self.store(J, link, F)
             self.effort = float(T)
             self.driver_vector = None
@@ -454,19 +611,21 @@ class _Builder:
         u = complex(self.kin.z_guide(J)[self.i])
         X = self.z(link, J.point)
         N = -dot(R.F, 1j * u)
-        w = self.w(J, link, np.sign(N))
+        # The side of the guide's friction follows the normal force; a sub-problem keeps the whole problem's.
+        side = float(np.sign(N)) if self.fixed is None else self.fixed.get(id(J), 0.0)
+        self.sides[id(J)] = side
+        w = self.w(J, link, side)
         b, P = _decompose(-R.F, w, u)
         G, Fd = b * w, P * u
         C = -(R.M0 + cross(X, G + Fd))
-        drive = self.mech.driver.symbol
-        self.steps.append(Step(
+        self._check(self.add(
             "driver",
-            f"The slider: the driving force {drive} acts along the guide and the guide force {name} normal to it"
-            + (" (tilted by the friction angle)" if J.mu else "") + f"; the polygon {Rd} + {name} + {drive} = 0 gives both.",
+            f"The slider{self.within()}: the driving force {drive} acts along the guide and the guide force {name} "
+            "normal to it" + (" (tilted by the friction angle)" if J.mu else "")
+            + f"; the polygon {Rd} + {name} + {drive} = 0 gives both" + (f"; {total}." if total else "."),
             link, (Line(drive, _xy(X), _xy(u), "found"),),
             polygon=(Arrow(Rd, _xy(R.F), True), Arrow(name, _xy(G), False), Arrow(drive, _xy(Fd), False, _xy(X))),
             values={name: _xy(G), drive: _xy(Fd)}))
-        self._check(self.steps[-1])
         self.store(J, link, G, C)
         self.effort = float(P)
         self.driver_vector = _xy(Fd)
@@ -474,6 +633,45 @@ class _Builder:
     def _check(self, step: Step):
         if step.closure() > CLOSE:
             self.warnings.append(f"{step.caption.split(':')[0]}: the polygon fails to close by {step.closure():.2g} of its largest side")
+        return step
+
+    # -- the groups in turn ------------------------------------------------------
+    def run(self, own) -> None:
+        """Solve the groups from the last located back to the driver; ``own(link)`` gives a link's own loads."""
+        mech = self.mech
+        R: dict[int, _Load] = {}
+        self.passed = {link: [] for link in mech.moving}
+
+        def R_of(link):
+            if link not in R:
+                R[link] = self.combine(link, own(link), [p[1:] for p in self.passed[link]])
+            return R[link]
+
+        def pass_on(other, base, F, X, C=0.0):
+            # A group with no load passes nothing: "also carries F54′ = 0" would say nothing.
+            if other != mech.frame and (F != 0 or C != 0):
+                self.passed[other].append((base, base + self.mark, F, X, C))
+
+        for g in reversed(self.kin.groups):
+            if isinstance(g, DriverGroup):
+                self.driver(g, R_of(g.link))
+            elif isinstance(g, GearGroup):
+                F_W, P = self.gear(g, R_of(g.k))[id(g.mesh)]
+                pass_on(g.j, self.base_name(g.k, g.j), -F_W, P)
+            else:
+                self.dyad(g, {g.j: R_of(g.j), g.k: R_of(g.k)})
+                for J, on in ((g.J1, g.j), (g.J3, g.k)):
+                    other = (set(J.links) - {on}).pop()
+                    lo, hi = sorted(J.links)
+                    s = 1.0 if other == hi else -1.0
+                    pass_on(other, self.base_name(on, other), s * complex(*self.forces[(lo, hi)]),
+                            self.joint_point(J, other), s * self.couple.get((lo, hi), 0.0))
+
+    def on(self, joint, link) -> complex:
+        """The force this builder found at ``joint`` on ``link``, complex [N]."""
+        lo, hi = sorted(joint.links)
+        F = complex(*self.forces[(lo, hi)])
+        return F if link == hi else -F
 
 
 class _DeadPoint(Exception):
@@ -484,6 +682,110 @@ def _decompose(v, a, b):
     """Real x, y with v = x a + y b (a, b complex directions)."""
     det = cross(a, b)
     return cross(v, b) / det, cross(a, v) / det
+
+
+def _superposition(kin: Kinematics, index: int, whole: _Builder):
+    """The steps of a superposition, as books write it, and its sub-problems.
+
+    Every link's own loads first; then one sub-problem per loaded link, each
+    announced, solved with every other link unloaded, and its readings and
+    driving effort given; then the sum of every joint force, and the input
+    link with the summed reactions, whose effort is the sum of the
+    sub-problems' efforts.
+    """
+    mech = kin.mechanism
+    p = _Builder(kin, index, like=whole)
+    own = {link: p.own_loads(link) for link in mech.moving}
+    loaded = [link for link in mech.moving if own[link].F != 0 or own[link].M0 != 0]
+    crank = mech.driver.kind == "crank"
+    effort = "driving torque" if crank else "driving force"
+    labels = [_roman(k) for k in range(1, len(loaded) + 1)]
+    marks = [_mark(k) for k in range(1, len(loaded) + 1)]
+    if any(isinstance(J, Prismatic) and J.mu > 0 for J in mech.joints):
+        p.add("note", "Friction: each guide reaction is tilted by atan μ against the sliding, to the side the normal "
+              "force pushes. That side is taken from the whole problem (solved first) and kept in every sub-problem, "
+              "so the equations stay linear in the loads and the sub-problems add up.", mech.driver.link)
+    why = _and([f"the {label}" for label in dict.fromkeys(whole.superposed)])
+    p.add("note", f"Superposition: in {why} both links carry loads, so neither is a two-force member. At a fixed "
+          "position the equilibrium equations are linear in the loads, so the problem is solved once per loaded link, "
+          "with every other link unloaded — " + "; ".join(
+              f"sub-problem {x}: only the loads on link {L}" for x, L in zip(labels, loaded))
+          + f" — and the joint forces and {effort}s of the sub-problems are added.")
+    subs = []
+    fixed = whole.sides
+    for x, m, L in zip(labels, marks, loaded):
+        b = _Builder(kin, index, sub=x, mark=m, scope=f"sub-problem {x}", fixed=fixed, steps=p.steps,
+                     warnings=p.warnings, like=whole)
+        b.rname = dict(p.rname)
+        others = [n for n in mech.moving if n != L]
+        size = (f"{p.rname[L]} = {abs(own[L].F):.4g} N" if own[L].point() is not None
+                else f"a couple of {own[L].M0:.4g} N·m")
+        b.add("sub-problem", f"Sub-problem {x}: only the loads on link {L} ({size}); "
+              + (f"link{'s' * (len(others) > 1)} {_and([str(n) for n in others])} "
+                 f"{'are' if len(others) > 1 else 'is'} unloaded. " if others else "")
+              + f"Its forces are marked {m} ({b.name(*_first_pair(mech))}).", L)
+        b.run(lambda link, L=L: _Load(own[link].F, own[link].M0) if link == L else _Load())
+        readings = {}
+        for J, on in b.order.values():
+            other = (set(J.links) - {on}).pop()
+            readings[b.name(other, on)] = _xy(b.on(J, on))
+        drive = mech.driver.symbol + m
+        readings[drive] = b.effort if crank else b.driver_vector
+        effort_text = (f"{b.effort + 0.0:.4g} N·m{_sense(b.effort)}" if crank
+                       else f"{b.effort + 0.0:.4g} N along the guide")
+        b.add("readings", f"Sub-problem {x} gives " + ", ".join(
+            f"{n} = {_polar(complex(*v))}" for n, v in readings.items() if n != drive)
+            + f"; its {effort} {drive} = {effort_text}.", L, values=readings)
+        subs.append((x, m, L, b))
+    # The sums: every joint force of the groups, then the input link with the summed reactions.
+    first = subs[0][3]
+    zero = []
+    driver_group = next(g for g in kin.groups if isinstance(g, DriverGroup))
+    for J, on in first.order.values():
+        if J is driver_group.joint:
+            continue
+        other = (set(J.links) - {on}).pop()
+        n = p.base_name(other, on)
+        parts = [(n + m, b.on(J, on)) for _, m, _, b in subs]
+        total = sum((F for _, F in parts), 0j)
+        shown = [(name, F) for name, F in parts if F != 0]
+        if not shown:
+            zero.append(n)
+            continue
+        rest = " (it is zero in the other sub-problems)" if len(shown) < len(parts) and len(shown) == 1 else ""
+        p.add("superpose", f"Sum of the sub-problems: {n} = " + " + ".join(name for name, _ in shown)
+              + f" = {_polar(total)}{rest}.", on,
+              polygon=tuple(Arrow(name, _xy(F), True) for name, F in shown) + (Arrow(f"−{n}", _xy(-total), False),),
+              values={n: _xy(total)})
+    if zero:
+        p.add("note", f"{_and(zero)} {'is' if len(zero) == 1 else 'are'} zero in every sub-problem, so zero in the "
+              "whole problem.")
+    link = driver_group.link
+    extra = {}
+    for _, _, _, b in subs:
+        for base, _, F, X, C in b.passed[link]:
+            if base in extra:
+                extra[base][1] += F
+                extra[base][3] += C
+            else:
+                extra[base] = [base, F, X, C]
+    p.scope = "the whole problem"
+    R = p.combine(link, _Load(own[link].F, own[link].M0), [tuple(v) for v in extra.values()])
+    drive = mech.driver.symbol
+    total = (f"it is the sum of the sub-problems' {effort}s, {drive} = "
+             + " + ".join(drive + m for _, m, _, _ in subs) + " = "
+             + " + ".join(f"({b.effort:.4g})" if b.effort < 0 else f"{b.effort + 0.0:.4g}" for _, _, _, b in subs)
+             + (" N·m" if crank else " N"))
+    p.driver(driver_group, R, total)
+    out = tuple(SubProblem(x, L, m, dict(b.forces), dict(b.normal), dict(b.couple), b.effort, b.driver_vector)
+                for x, m, L, b in subs)
+    return p.steps, out, p.warnings
+
+
+def _first_pair(mech):
+    """A joint's two links, for an example of a marked name (F23′): a joint between moving links if there is one."""
+    joints = [j for j in mech.joints if mech.frame not in j.links] or list(mech.joints)
+    return tuple(sorted(joints[0].links))
 
 
 def construct_forces(kin: Kinematics, index: int = 0) -> Construction:
@@ -513,38 +815,23 @@ def construct_forces(kin: Kinematics, index: int = 0) -> Construction:
     if not kin.valid[index]:
         return Construction(mech, index, q, valid=False, reason=kin.reason(index))
     b = _Builder(kin, index)
-    own = {link: None for link in mech.moving}
-    passed: dict[int, list] = {link: [] for link in mech.moving}
-
-    def R_of(link):
-        if own[link] is None:
-            own[link] = b.combine(link, b.own_loads(link), passed[link])
-        return own[link]
-
     try:
-        for g in reversed(kin.groups):
-            if isinstance(g, DriverGroup):
-                b.driver(g, R_of(g.link))
-            elif isinstance(g, GearGroup):
-                out = b.gear(g, R_of(g.k))
-                F_W, P = out[id(g.mesh)]
-                if g.j != mech.frame:
-                    passed[g.j].append((b.name(g.k, g.j), -F_W, P, 0.0))
-            else:
-                b.dyad(g, {g.j: R_of(g.j), g.k: R_of(g.k)})
-                for J, on in ((g.J1, g.j), (g.J3, g.k)):
-                    other = (set(J.links) - {on}).pop()
-                    if other != mech.frame:
-                        lo, hi = sorted(J.links)
-                        s = 1.0 if other == hi else -1.0
-                        passed[other].append((b.name(on, other), s * complex(*b.forces[(lo, hi)]),
-                                              b.joint_point(J, other), s * b.couple.get((lo, hi), 0.0)))
+        b.run(b.own_loads)
     except _DeadPoint as exc:
         return Construction(mech, index, q, tuple(b.steps), valid=False, reason=str(exc))
+    steps, warnings, subproblems = b.steps, b.warnings, ()
+    if b.superposed:
+        # The whole problem, solved first, gives every force and the sides of friction; the steps shown are the
+        # books' superposition, one sub-problem per loaded link.
+        try:
+            steps, subproblems, more = _superposition(kin, index, b)
+        except _DeadPoint as exc:
+            return Construction(mech, index, q, tuple(b.steps), valid=False, reason=str(exc))
+        warnings = list(dict.fromkeys(warnings + more))
     largest = max([abs(complex(*F)) for F in b.forces.values()] + [0.0])
-    return Construction(mech, index, q, tuple(b.steps), b.forces, b.normal, b.couple, b.effort,
-                        nice_scale(largest), True, "", tuple(b.warnings), driver_vector=b.driver_vector,
-                        **_geometry(kin, index))
+    return Construction(mech, index, q, tuple(steps), b.forces, b.normal, b.couple, b.effort,
+                        nice_scale(largest), True, "", tuple(warnings), driver_vector=b.driver_vector,
+                        subproblems=subproblems, **_geometry(kin, index))
 
 
 def _geometry(kin: Kinematics, i: int) -> dict:

@@ -706,22 +706,79 @@ def _graphical(doc: _Doc, s: _Subject, entry: dict, c):
         links = s.mech.moving[k:k + 3]
         doc.figure(part, "Free bodies of " + ", ".join(f"link {n}" for n in links) + ", with every force found.")
     for k, step in enumerate(c.steps, start=1):
+        sub = getattr(step, "sub", "")
+        if step.kind == "sub-problem":
+            # A book announces each sub-problem before its steps: a heading of its own.
+            doc.heading(3, f"Sub-problem {sub}: only the loads on link {step.link}")
+            doc.text(f"Step {k}. {step.caption}")
+            continue
+        if step.kind in _TEXT_ONLY:
+            doc.text(f"Step {k}. {step.caption}")
+            continue
         where = f"link {step.link}: " if step.link is not None else ""
-        doc.heading(3, f"Step {k}. {where}{KIND_TITLE.get(step.kind, step.kind)}")
+        title = KIND_TITLE.get(step.kind, step.kind)
+        doc.heading(3, f"Step {k}. {where}{title}" + (f" (sub-problem {sub})" if sub else ""))
+        pics = []
+        if _draws_geometry(step, s.mech.driver.link):
+            def geometry(step=step):
+                d = draw.draw_mechanism(c, faint=True, emphasis=step.link)
+                draw_step_geometry(c, step, ax=d.ax)
+                return d
 
-        def geometry(step=step):
-            d = draw.draw_mechanism(c, faint=True, emphasis=step.link)
-            draw_step_geometry(c, step, ax=d.ax)
-            return d
-
-        pics = [s.picture(f"step-{k}", geometry, 0.58 if step.polygon else 0.7, f"step {k}: the lines of action", 75)]
+            pics.append(s.picture(f"step-{k}", geometry, 0.58 if step.polygon else 0.7,
+                                  f"step {k}: the lines of action", 75))
         if step.polygon:
             pics.append(s.picture(f"polygon-{k}", lambda step=step: draw.draw_force_polygon(
-                step, scale=scale, title=False, driver_name=c.driver_name), 0.4, f"step {k}: the force polygon", 75))
-        doc.figure(pics, step.caption)
+                step, scale=scale, title=False, driver_name=c.driver_name), 0.4 if pics else 0.5,
+                f"step {k}: the force polygon", 75))
+        if pics:
+            doc.figure(pics, step.caption)
+        else:
+            doc.text(step.caption)
         if step.polygon:
             doc.equation(_polygon_equation(step))
+    _subproblems(doc, s, entry)
     _both_routes(doc, s, entry)
+
+
+_TEXT_ONLY = {"note", "readings"}
+"""Steps that say something and draw nothing new: a paragraph each, no figure."""
+
+
+def _draws_geometry(step, driver: int) -> bool:
+    """Whether a step's lines of action are worth a mechanism figure of their own.
+
+    A polygon's lines were drawn at the step that found them (the two- or
+    three-force member before it), a sum of sub-problems adds vectors
+    already drawn, and a sub-problem's crank is the whole problem's crank
+    with another load: their polygons alone say what is new.
+    """
+    if step.kind in ("polygon", "superpose"):
+        return False
+    if getattr(step, "sub", "") and step.link == driver and step.kind in ("resultant", "driver"):
+        return False
+    return True
+
+
+def _subproblems(doc: _Doc, s: _Subject, entry: dict):
+    """The superposition at a glance: each sub-problem's joint forces and driving effort, and their sum."""
+    g = entry.get("graphical") or {}
+    subs = g.get("subproblems") or []
+    if not subs:
+        return
+    r = s.result
+    names = [r.name_of(a, b) for a, b in r.forces]
+    header = ["force"] + [f"sub-problem {sp['label']} (link {sp['link']})" for sp in subs] + ["sum"]
+    rows = []
+    for name in names:
+        rows.append([M.name(name)] + [M.polar(M.size_of(sp["forces"][name]), M.angle_of(sp["forces"][name]), "N")
+                                      for sp in subs]
+                    + [M.polar(M.size_of(g["forces"][name]), M.angle_of(g["forces"][name]), "N")])
+    unit = "N·m" if s.crank else "N"
+    d = g["driver"]
+    rows.append([M.name(d["name"])] + [M.qty(sp["driver"]["value"], unit) for sp in subs] + [M.qty(d["value"], unit)])
+    doc.table(header, rows, "l" + "r" * (len(subs) + 1),
+              caption="Superposition: each sub-problem's forces and driving effort, and their sum")
 
 
 def _reldiff(d: float) -> str:

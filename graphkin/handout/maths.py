@@ -166,7 +166,7 @@ def sym(letter: str, subscript: str | None = None) -> list:
     return i(letter) if not subscript else sub(i(letter), t(subscript))
 
 
-_NAME = re.compile(r"^([A-Za-z])_?([0-9][0-9A-Za-z,]*|[A-Z][0-9A-Za-z]*)$")
+_NAME = re.compile(r"^([A-Za-z])_?([0-9][0-9A-Za-z,]*|[A-Z][0-9A-Za-z]*)([′″‴]?)$")
 
 
 def name(text: str) -> list:
@@ -174,8 +174,13 @@ def name(text: str) -> list:
 
     Names that do not look like a letter and a subscript are kept upright.
     """
+    if text[:1] in "−-" and len(text) > 1:
+        return row(op("−"), name(text[1:]))  # a reversed force in a polygon: −F23
     m = _NAME.match(text)
-    return sym(m[1], m[2]) if m else t(text)
+    if not m:
+        return t(text)
+    # A superposition's part keeps its mark after the subscript: F23′ is F₂₃′.
+    return row(sym(m[1], m[2]), t(m[3])) if m[3] else sym(m[1], m[2])
 
 
 def qty(value: float | str, unit: str, digits: int = 4) -> list:
