@@ -11,6 +11,26 @@ DEFAULT = "double_slider"
 """The example ``make demo`` solves."""
 
 
+FAMILIES = {
+    "double_slider": "double slider (PRRP), driven by a slider",
+    "engine_gas_force": "slider-crank engine with a gas force",
+    "gearset": "spur gear pair",
+    "single_link": "single link (a crank alone)",
+    "slider_crank_friction": "offset slider-crank with slider friction",
+    "strip_cutter": "four-bar with a cutting load",
+}
+"""Each catalog problem's family of mechanism, as ``graphkin list`` shows it."""
+
+
+def family(name: str) -> str:
+    """The family of a catalog problem (:data:`FAMILIES`), e.g. ``"spur gear pair"``."""
+    if name not in names():
+        raise GraphkinError(f"no catalog problem {name!r} (the catalog has: {', '.join(names())})")
+    if name not in FAMILIES:
+        raise GraphkinError(f"catalog problem {name!r} has no family: add it to graphkin.catalog.FAMILIES")
+    return FAMILIES[name]
+
+
 def names() -> list[str]:
     """Names of the catalog problems, sorted."""
     return sorted(p.name[:-5] for p in resources.files(__name__).iterdir() if p.name.endswith(".toml"))
