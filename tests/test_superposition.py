@@ -96,6 +96,8 @@ def check_steps(c) -> None:
         return
     last = max(k for k, s in enumerate(steps) if s.sub)
     sums = [k for k, s in enumerate(steps) if s.kind == "superpose" and not s.sub]
+    # Parts that are zero in every sub-problem need no polygon: a note says so, after the sub-problems too.
+    sums += [k for k, s in enumerate(steps) if s.kind == "note" and not s.sub and "zero in every sub-problem" in s.caption]
     drivers = [k for k, s in enumerate(steps) if s.kind == "driver" and not s.sub]
     assert sums and min(sums) > last, "the sums come after every sub-problem"
     assert len(drivers) == 1 and drivers[0] > last and drivers[0] == len(steps) - 1
