@@ -248,8 +248,15 @@ for name in r.names():
         g_text, a_text = show(g), show(a)
     print(f"{name:5}{g_text:>24}{a_text:>24}{rel(g, a):>11.1e}")
 
+# %% [markdown]
+# The whole solution on one sheet. On the slider's free body (link 4) the dashed line through $B$ is the
+# guide's **normal**, and the arc between it and $\vec G_{14}$ is the friction angle $\rho$: the guide's force
+# leans away from the normal by exactly $\rho = \arctan\mu$ = 11.31°, against the sliding. Each polygon's scale
+# bar also gives the drawing scale (1 mm = … N), to redraw it by hand.
+
 # %%
-draw.draw_solution(c, r)
+sheet = draw.draw_solution(c, r)
+sheet
 
 # %% [markdown]
 # The graphical route agrees at other positions too, including those where the normal force pushes
@@ -734,8 +741,9 @@ print(f"per turn of the gear: motor work {W_motor:.4f} J, work against the load 
 # %% [markdown]
 # ### The explorer for the gearset
 #
-# Turn the gear with the slider: the teeth move, the forces do not (the torque curve is flat). Then we drive it
-# from code and compare with our own solve.
+# Turn the gear with the slider: the teeth move (a spoke on each gear marks its x-axis, and the pinion turns 2.5
+# times as far the other way), the forces do not (the torque curve is flat). Then we drive it from code and compare
+# with our own solve.
 
 # %%
 ex_g = explore(g)
@@ -891,6 +899,8 @@ assert math.isclose(tilt(G14g, normal), rho)
 assert np.sign(G14g[0]) == -np.sign(vB[0])
 assert math.isclose(tilt(F43_line.direction, normal), rho)
 assert np.allclose(F43_line.point, k.position(4, "B")[0])
+slider_fbd = next(ax for ax in sheet.axes if ax.get_title().startswith("Free body: link 4"))
+assert f"ρ = {rho:.2f}°" in [t.get_text() for t in slider_fbd.texts] and f"{rho:.2f}" == "11.31"  # the sheet shows ρ
 for name in r.names():  # both routes, force by force
     gv, av = c[name], r[name][0]
     assert rel(gv, av) < 1e-9, name
@@ -1022,6 +1032,13 @@ for angle in (0.0, 90.0, 200.0):
     assert math.isclose(ex_g.construction.effort, mine["T12"][0], rel_tol=1e-9)
     assert rel(ex_g.construction["F23"], mine["F23"][0]) < 1e-9
     assert np.allclose(ex_g.construction.pitch_points[(2, 3)], P)
+    # "The teeth move": the spokes drawn on gear 2 and the pinion point along their links' x-axes, θ12 and
+    # −2.5 θ12 (the mechanism starts at θ12 = 0 with both axes along x).
+    spokes = [ln.get_data() for ln in ex_g.ax_mechanism.lines if ln.get_linewidth() == 2.4]
+    turned = [math.degrees(math.atan2(y[1] - y[0], x[1] - x[0])) for x, y in spokes]
+    assert len(turned) == 2
+    for got, want in zip(turned, (angle, -r2 / r3 * angle)):
+        assert abs((got - want + 180) % 360 - 180) < 1e-6, (angle, got, want)
 
 # %% [markdown]
 # ### 4. Your turn

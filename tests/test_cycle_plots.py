@@ -132,7 +132,7 @@ def _shows(ax, y):
 
 
 def test_every_cycle_plot_shows_its_whole_curve(cycle, flywheel, cutter):
-    """A regression: curves drawn by draw._common.line left the view at 0–1 where no limits were set."""
+    """A regression: curves drawn by draw.axes.line left the view at 0–1 where no limits were set."""
     from matplotlib.backends.backend_agg import FigureCanvasAgg
 
     d = draw.draw_torque_curve(cycle, flywheel=flywheel)
@@ -221,7 +221,7 @@ def test_shaking_suptitle_is_above_both_titles(cycle):
 
 def test_radial_tick_labels_keep_off_the_curves(cycle):
     """They used to sit on the 112.5° ray whatever the curves: on the strip cutter, 8 label–curve crossings."""
-    from graphkin.draw._common import _seg_hits_box
+    from graphkin.draw.labels import segment_hits_box as _seg_hits_box
 
     for d in (draw.draw_polar_forces(cycle), draw.draw_shaking(cycle, ax=Figure().add_subplot(projection="polar"))):
         fig, r = _rendered(d.figure)
@@ -245,3 +245,27 @@ def test_energy_of_a_steady_torque():
     d = draw.draw_energy(fw)
     assert "E" not in d.curves and fw.E == 0.0
     assert overlapping_texts(d) == []
+
+
+def test_a_flat_torque_curve_keeps_off_the_plot_edge():
+    """The gear pair's steady torque sat on the plot's top edge, its line and marker cut in half."""
+    from graphkin.draw.cycle import value_limits
+
+    c = sweep(catalog.load("gearset"), 36)
+    d = draw.draw_torque_curve(c)
+    lo, hi = d.ax.get_ylim()
+    T = float(c.torque[0])
+    assert np.ptp(c.torque) < 1e-9 * abs(T)
+    assert lo < 0 < T < hi and (hi - T) >= 0.05 * (hi - lo)
+    assert value_limits([T, T]) == (lo, hi)
+    assert value_limits([]) == (-1.0, 1.0) and value_limits([0.0, 0.0]) == (-1.0, 1.0)
+
+
+def test_forces_that_coincide_are_both_seen_on_the_polar_plot(cycle):
+    """The strip cutter's crank has no inertia: F₁₂ = F₂₃ all round, and the second curve hid under the first.
+    It is drawn as a wide pale band under it, and the legend says so."""
+    d = draw.draw_polar_forces(cycle)
+    band, line = d.curves["F12"], d.curves["F23"]
+    assert band.get_linewidth() > 2 * line.get_linewidth() and band.get_zorder() < line.get_zorder()
+    assert "≈ F₂₃" in band.get_label()
+    assert d.curves["F34"].get_linewidth() == line.get_linewidth()  # a force of its own is a line of its own

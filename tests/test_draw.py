@@ -136,6 +136,13 @@ def test_every_fbd_arrow_starts_or_ends_at_its_point_of_application(case):
             tail, tip = tail_tip(d.arrows[name])
             length = math.hypot(*(tip - tail))
             tol = 0.02 * length + slack
+            if name.endswith("i") and "not to scale" in d.labels["h"].get_text():
+                # A far line of action drawn nearer G (a broken dimension): on the way from G to the true line.
+                G = np.array(c.G[link]) * MM
+                ends = (tail, tip) if math.hypot(*(tail - X)) < math.hypot(*(tip - X)) else (tip, tail)
+                t = float(np.dot(ends[0] - G, X - G) / np.dot(X - G, X - G))
+                assert 0 < t < 1 and math.hypot(*(G + t * (X - G) - ends[0])) < tol, (case.name, link, name)
+                X = G + t * (X - G)
             assert min(math.hypot(*(tail - X)), math.hypot(*(tip - X))) < tol, (case.name, link, name)
             if size / d.scale < 2 * slack:
                 continue  # a few points long: its head is all there is to see
@@ -160,7 +167,7 @@ def test_every_force_and_couple_on_each_link_is_labelled(case):
 
 
 def test_labels_keep_clear_of_their_own_arrows(case):
-    from graphkin.draw._common import _seg_hits_box, renderer_of
+    from graphkin.draw.labels import measuring_renderer as renderer_of, segment_hits_box as _seg_hits_box
 
     for link, d in case.fbd.items():
         r = renderer_of(d.ax.figure)
@@ -184,7 +191,7 @@ def test_h_is_dimensioned_where_the_inertia_force_is_offset(case):
         h_texts = [t for t in texts_of(d.ax) if "h =" in t]
         assert h_texts, (case.name, link)
         if inert["h"] > 0:
-            assert f"h = {inert['h'] * MM:.4g} mm".replace("-", "−") in h_texts, h_texts
+            assert any(t.startswith(f"h = {inert['h'] * MM:.4g} mm".replace("-", "−")) for t in h_texts), h_texts
 
 
 def test_double_slider_fbd_shows_the_books_offset():
@@ -261,7 +268,7 @@ def _overlap_px(a, b) -> float:
 def _panel(size, dpi):
     from matplotlib.backends.backend_agg import FigureCanvasAgg
 
-    from graphkin.draw._common import PanelAxes
+    from graphkin.draw.axes import PanelAxes
 
     fig = Figure(figsize=size, dpi=dpi)
     FigureCanvasAgg(fig)
@@ -284,7 +291,7 @@ _BAR_CASES = {
 
 @pytest.mark.parametrize("key", sorted(_BAR_CASES))
 def test_labels_keep_off_the_scale_bar(key):
-    from graphkin.draw._common import renderer_of
+    from graphkin.draw.labels import measuring_renderer as renderer_of
 
     name, at, panel, size, dpi, values = _BAR_CASES[key]
     p = catalog.load(name)
@@ -305,7 +312,8 @@ def test_labels_keep_off_the_scale_bar(key):
 
 def test_scale_bar_is_a_box_the_labeler_keeps_off():
     """The bar's numbers are measured by arithmetic (no text layout per draw): the box is where the text is drawn."""
-    from graphkin.draw._common import Labeler, _text_box, renderer_of, scale_bar
+    from graphkin.draw.labels import Labeler, measuring_renderer as renderer_of, text_box as _text_box
+    from graphkin.draw.scales import scale_bar
     from graphkin.draw.style import resolve
 
     ax = _panel((3, 3), 100)
@@ -328,7 +336,7 @@ def test_scale_bar_is_a_box_the_labeler_keeps_off():
 
 
 def test_negated_names_are_subscripted_like_the_names():
-    from graphkin.draw._common import sub
+    from graphkin.draw.text import sub
 
     assert sub("F23") == "F₂₃"
     assert sub("−F23") == "−F₂₃"
@@ -355,8 +363,8 @@ def test_superposition_polygon_shows_the_negated_total_subscripted():
 def test_named_loads_with_a_note_subscript_the_name_and_keep_the_note():
     from matplotlib import cbook
 
-    from graphkin.draw._common import plain as unsub
-    from graphkin.draw._common import sub
+    from graphkin.draw.text import plain as unsub
+    from graphkin.draw.text import sub
 
     # There is no Unicode subscript c: the name alone goes to upright mathtext, the note stays text.
     assert sub("Fc3 (cutting)") == r"$\mathregular{F_{c3}}$ (cutting)"
@@ -372,7 +380,7 @@ def test_named_loads_with_a_note_subscript_the_name_and_keep_the_note():
         assert cbook.is_math_text(t.get_text()) and t.get_text().endswith("$ (cutting)"), t.get_text()
         assert shows(d.ax, name)
         # It renders: the subscript sits below the F's baseline, so the label is taller than plain "Fc3".
-        from graphkin.draw._common import renderer_of
+        from graphkin.draw.labels import measuring_renderer as renderer_of
 
         r = renderer_of(d.ax.figure)
         flat = d.ax.text(0, 0, name, fontsize=t.get_fontsize())
@@ -490,11 +498,15 @@ def test_style_overrides_are_checked():
 def _baseline_drawings():
     c = construct_forces(catalog.load("double_slider").kinematics(), 0)
     polygon = next(s for s in c.steps if s.kind == "polygon" and s.link == 3)
+    gears = construct_forces(catalog.load("gearset").kinematics(at=[math.radians(30)]), 0)
+    friction = construct_forces(catalog.load("slider_crank_friction").kinematics(at=[math.radians(60)]), 0)
     return {
         "double_slider_fbd3": lambda: draw.draw_free_body(c, 3),
         "double_slider_polygon3": lambda: draw.draw_force_polygon(polygon, scale=c.force_scale),
         "double_slider_mechanism": lambda: draw.draw_mechanism(c),
         "sign_convention": lambda: draw.draw_sign_convention(),
+        "gearset_mechanism": lambda: draw.draw_mechanism(gears),  # teeth and marks that turn
+        "slider_crank_friction_fbd4": lambda: draw.draw_free_body(friction, 4),  # the normal and ρ
     }
 
 
@@ -515,9 +527,140 @@ def test_figures_users_see_most_look_as_before(tmp_path, name):
 
 
 def test_a_name_two_links_use_for_different_points_is_told_apart():
-    """The strip cutter's blades are both called C (on links 3 and 4), a few mm apart: C₃ and C₄."""
+    """The strip cutter's blades are both called C (on links 3 and 4), a few mm apart: C₃ and C₄, in one label
+    (two would sit on top of each other), as G₃ a few mm from B shares B's."""
     problem = catalog.load("strip_cutter")
     c = construct_forces(problem.kinematics(at=[math.radians(140.0)]), 0)
-    texts = sorted(t.get_text() for t in draw.draw_mechanism(c).labels.values())
-    assert "C₃" in texts and "C₄" in texts and "C" not in texts
-    assert "B" in texts  # B joins links 3 and 4 at one point: one plain label
+    d = draw.draw_mechanism(c)
+    assert d.labels["C"] is d.labels["C@4"] and d.labels["C"].get_text() == "C₃, C₄"
+    assert d.labels["G3"] is d.labels["B"] and d.labels["B"].get_text() == "B, G₃"
+    assert "C" not in [t.get_text() for t in d.ax.texts]
+    # Each free body names its own C alone, plainly.
+    for link in (3, 4):
+        assert "C" in texts_of(draw.draw_free_body(c, link).ax)
+
+
+# -- figures that show what they say (issue 14) ----------------------------------------------------
+
+
+def _gear_bodies(d):
+    """The toothed outlines on a drawing, largest first: (N×2 vertices [mm]) per gear."""
+    from matplotlib.patches import Polygon
+
+    bodies = [p.get_xy()[:-1] for p in d.ax.patches if isinstance(p, Polygon) and len(p.get_xy()) > 40]
+    return sorted(bodies, key=lambda v: -np.ptp(v[:, 0]))
+
+
+def test_gear_teeth_and_mark_turn_with_the_gear_and_mesh():
+    """Lesson 05 says "turn the gear with the slider: the teeth move". They do, by θ₂ on the gear and by
+    −(r₂/r₃)θ₂ on the pinion, with a mark on each gear's x-axis, and the teeth never run into each other."""
+    shapely = pytest.importorskip("shapely")
+    p = catalog.load("gearset")
+    at = np.radians([0.0, 7.0, 30.0, 200.0])
+    kin = p.kinematics(at=at)
+    drawn = [draw.draw_mechanism(construct_forces(kin, i), labels=False) for i in range(len(at))]
+    (gear0, pinion0), centres = _gear_bodies(drawn[0]), (np.array([0.0, 0.0]), np.array([140.0, 0.0]))
+    r2, r3 = p.mechanism.joints[-1].radii
+    for i, d in enumerate(drawn):
+        gear, pinion = _gear_bodies(d)
+        c = construct_forces(kin, i)
+        for body, body0, centre, turn, teeth in ((gear, gear0, centres[0], at[i], 40),
+                                                  (pinion, pinion0, centres[1], -r2 / r3 * at[i], 16)):
+            assert len(body) % teeth == 0
+            a = np.angle(complex(*(body[0] - centre))) - np.angle(complex(*(body0[0] - centre)))
+            pitch = 2 * np.pi / teeth  # a turn by a whole tooth looks the same
+            assert abs((a - turn + pitch / 2) % pitch - pitch / 2) < 1e-6, (i, teeth)
+        assert shapely.Polygon(gear).intersection(shapely.Polygon(pinion)).area < 1e-9  # in mesh, clear
+        # The reference marks: a spoke from each centre along its link's x-axis.
+        spokes = [ln for ln in d.ax.lines if ln.get_linewidth() == 2.4]
+        assert len(spokes) == 2
+        for spoke, link, centre, r in zip(spokes, (2, 3), centres, (r2, r3)):
+            x, y = spoke.get_data()
+            direction = np.arctan2(y[1] - y[0], x[1] - x[0])
+            assert abs((direction - c.angles[link] + np.pi) % (2 * np.pi) - np.pi) < 1e-9
+            assert math.hypot(x[0] - centre[0], y[0] - centre[1]) < 0.2 * r * MM
+
+
+def test_friction_angle_is_drawn_on_the_slider():
+    """The friction lesson's main idea on the slider's free body: the guide's normal, dashed, and ρ between it and
+    G14, with tan ρ = μ while the slider slides; at a dead centre, the normal alone."""
+    p = catalog.load("slider_crank_friction")
+    mu = next(j.mu for j in p.mechanism.joints if getattr(j, "mu", 0) > 0)
+    c = construct_forces(p.kinematics(at=[math.radians(60)]), 0)
+    d = draw.draw_free_body(c, 4)
+    assert d.labels["rho"].get_text() == f"ρ = {math.degrees(math.atan(mu)):.2f}°"
+    assert d.labels["normal"].get_text() == "normal"
+    normal = next(ln for ln in d.ax.lines if ln.get_linestyle() == "--" and ln.get_color() == draw.style.STYLE.ink)
+    x, y = normal.get_data()
+    assert abs(x[1] - x[0]) < 1e-9 * abs(y[1] - y[0])  # the guide runs along x: its normal is vertical
+    assert abs(x[0] - c.points[4]["B"][0] * MM) < 1e-9  # through the slider's point
+    # The arc between the normal and G14, as wide as ρ.
+    arc = next(ln for ln in d.ax.lines if len(ln.get_xdata()) == 24)
+    ax_, ay_ = arc.get_data()
+    ends = np.arctan2(ay_[[0, -1]] - c.points[4]["B"][1] * MM, ax_[[0, -1]] - c.points[4]["B"][0] * MM)
+    assert abs(abs(ends[1] - ends[0]) - math.atan(mu)) < 1e-9
+    # A frictionless slider (the double slider's) has neither.
+    d = draw.draw_free_body(construct_forces(catalog.load("double_slider").kinematics(), 0), 4)
+    assert "rho" not in d.labels and "normal" not in d.labels
+
+
+def test_far_inertia_line_is_drawn_nearer_with_a_broken_dimension():
+    """The strip cutter's coupler at 140°: its resultant acts 1228 mm from G₃, eight times the link's size. Drawn
+    true, the link was a speck beside it; now the line is drawn nearer and the dimension says so."""
+    c = construct_forces(catalog.load("strip_cutter").kinematics(at=[math.radians(140)]), 0)
+    d = draw.draw_free_body(c, 3)
+    h = c.inertia[3]["h"] * MM
+    assert d.labels["h"].get_text() == f"h = {h:.4g} mm (not to scale)"
+    G = np.array(c.G[3]) * MM
+    tail, tip = tail_tip(d.arrows["R3i"])
+    F = np.array(c.inertia[3]["F"])
+    e = F / np.hypot(*F)
+    drawn_h = abs(float(e[0] * (tail - G)[1] - e[1] * (tail - G)[0]))
+    size = max(math.dist(a, b) for a in c.points[3].values() for b in c.points[3].values()) * MM
+    assert drawn_h < 0.8 * size < h
+    zigzag = [ln for ln in d.ax.lines if len(ln.get_xdata()) == 4]
+    assert zigzag  # the break mark
+    # A near line is drawn true: the double slider's h = 33.33 mm.
+    d = draw.draw_free_body(construct_forces(catalog.load("double_slider").kinematics(), 0), 3)
+    assert d.labels["h"].get_text() == "h = 33.33 mm"
+
+
+def test_a_polygon_on_one_line_is_drawn_in_two_lanes():
+    """The pinion's two-force polygon F₂₃ + F₁₃ = 0 used to be one line with both labels on it."""
+    from graphkin.draw.polygon import LANE
+
+    c = construct_forces(catalog.load("gearset").kinematics(), 0)
+    step = next(s for s in c.steps if s.polygon and [a.name for a in s.polygon] == ["F23", "F13"])
+    d = draw.draw_force_polygon(step, scale=c.force_scale)
+    (t1, h1), (t2, h2) = (np.array(d.ends[n]) for n in ("F23", "F13"))
+    u = (h1 - t1) / np.hypot(*(h1 - t1))
+    gap = abs(float(u[0] * (t2 - t1)[1] - u[1] * (t2 - t1)[0]))  # [mm of drawing] between the two arrows
+    assert gap == pytest.approx(2 * LANE * data_per_point(d.ax), rel=0.2)
+    r = draw.measuring_renderer(d.ax.figure)
+    b1, b2 = (d.labels[n].get_window_extent(r) for n in ("F23", "F13"))
+    assert not b1.overlaps(b2)
+
+
+def test_mechanism_has_a_length_scale_and_polygons_their_drawing_scale():
+    c = construct_forces(catalog.load("double_slider").kinematics(), 0)
+    assert any(re.fullmatch(r"\d+ mm", t) for t in texts_of(draw.draw_mechanism(c).ax))
+    fig = draw.draw_solution(c)
+    polygons = [ax for ax in fig.axes if any((p.get_gid() or "").startswith("polygon:") for p in ax.patches)]
+    assert polygons
+    for ax in polygons:
+        assert any(t.endswith(f"(1 mm = {c.force_scale:g} N)") for t in texts_of(ax)), texts_of(ax)
+    table = next(ax for ax in fig.axes if ax.tables)
+    assert not any("force scale" in t for t in texts_of(table))  # with the polygons now, not under the table
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_solution_figure_has_no_empty_row(name):
+    """single_link.png was half blank: a row for one free body, another for one polygon."""
+    c = construct_forces(catalog.load(name).kinematics(), 0)
+    fig = draw.draw_solution(c)
+    panels = [ax for ax in fig.axes if ax.get_subplotspec() is not None]
+    rows = {ax.get_subplotspec().rowspan.start for ax in panels}
+    nrows = panels[0].get_subplotspec().get_gridspec().nrows
+    assert rows == set(range(nrows))
+    cells = len(c.mechanism.moving) + 1 + sum(1 for s in c.steps if s.polygon)
+    assert nrows == 1 + math.ceil(cells / 4)

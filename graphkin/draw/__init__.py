@@ -27,11 +27,12 @@ from pathlib import Path
 
 from ..files import file_mode
 from . import style
-from ._common import Drawn
+from .axes import Drawn
 from .convention import draw_sign_convention
 from .cycle import draw_cycle, draw_energy, draw_joint_force_index, draw_polar_forces, draw_shaking, draw_torque_curve
 from .fbd import draw_free_body, loads_on
 from .given import draw_given
+from .labels import measuring_renderer
 from .mechanism import draw_mechanism
 from .polygon import draw_force_polygon
 from .solution import comparison_rows, draw_solution
@@ -95,5 +96,6 @@ def save(fig, path, *, dpi=None, **kwargs) -> Path:
 __all__ = [
     "Drawn", "FORMATS", "comparison_rows", "draw_cycle", "draw_energy", "draw_force_polygon", "draw_free_body",
     "draw_given", "draw_joint_force_index", "draw_mechanism", "draw_polar_forces", "draw_shaking", "draw_sign_convention",
-    "draw_solution", "draw_step_grid", "draw_steps", "draw_torque_curve", "loads_on", "save", "style",
+    "draw_solution", "draw_step_grid", "draw_steps", "draw_torque_curve", "loads_on", "measuring_renderer", "save",
+    "style",
 ]

@@ -7,7 +7,8 @@ import math
 import numpy as np
 
 from . import style as _style
-from ._common import Drawn, arrow, line, markers, moment_arrow, new_axes, setup_axes
+from .arrows import arrow, moment_arrow
+from .axes import Drawn, line, markers, new_axes, setup_axes
 
 
 def draw_sign_convention(*, ax=None, title=True, **style) -> Drawn:

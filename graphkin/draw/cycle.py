@@ -25,17 +25,23 @@ from __future__ import annotations
 import math
 
 import numpy as np
+from matplotlib.artist import Artist
 from matplotlib.figure import Figure
+from matplotlib.ticker import Formatter, MaxNLocator
 
 from ..analysis._turn import TURN
 from ..errors import GraphkinError
 from . import style as _style
-from ._common import Drawn, PanelAxes, halo, line, markers, new_axes, num, sub
+from .axes import Drawn, PanelAxes, line, markers, new_axes
+from .text import halo, num, sub, subscript
 
 SERIES = (_style.BLUE, _style.VERMILLION, _style.GREEN, _style.PURPLE, _style.ORANGE, _style.SKY_BLUE, _style.BLACK)
 """Colours of successive curves (Okabe–Ito, yellow left out: too faint on white)."""
 DASHES = ("-", (0, (6, 2)), (0, (1.5, 1.5)), (0, (8, 2, 2, 2)))
 """Dash patterns of successive curves: colour is never the only cue (forces that coincide stay visible)."""
+COINCIDE = 0.03
+"""Two polar curves closer than this fraction of the plot's radius everywhere (within a band's half width) are
+drawn as one line on a wide pale band."""
 
 
 # -- helpers ---------------------------------------------------------------------------------------
@@ -52,10 +58,8 @@ def _x(q, crank: bool) -> np.ndarray:
 
 def _theta(mechanism) -> str:
     """The crank angle's name as the problem numbers its links: ``θ₁₂``, or ``θ₀₁`` with the frame numbered 0."""
-    from ._common import _SUB
-
     d = mechanism.driver
-    return "θ" + "".join(_SUB.get(ch, ch) for ch in f"{d.frame}{d.link}")
+    return "θ" + subscript(f"{d.frame}{d.link}")
 
 
 def _input_axis(ax, crank: bool, symbol: str = "θ₁₂"):
@@ -83,25 +87,125 @@ def _polar_axes(ax, figsize=(5.0, 5.0)):
 
 
 def _radial_labels(ax, curves, s):
-    """Put the radial tick labels of a polar plot along the emptiest of 8 rays between the 45° grid lines.
+    """Put the radial tick labels of a polar plot on the ray where they cross the fewest curves.
 
-    A fixed ray (matplotlib's 22.5°, or 112.5°) runs through the curves of
-    one mechanism or another, and their numbers are then hard to read. The
-    ray with the fewest curve points within 15° of it is chosen (112.5° on
-    a tie), and the labels get a white halo for whatever still crosses them.
-    ``curves`` is a list of (angle [rad], radius) arrays.
+    Where the labels go is decided when the plot is drawn, once its layout
+    is final (:class:`_RadialLabels`). ``curves`` is a list of (angle [rad],
+    radius) arrays; a single point stands for a marker.
     """
-    rays = 112.5 + 45.0 * np.arange(8)
-    angles = np.concatenate([np.ravel(a) for a, r in curves] + [np.zeros(0)])
-    radii = np.concatenate([np.ravel(r) for a, r in curves] + [np.zeros(0)])
-    angles = np.degrees(angles[np.isfinite(angles) & np.isfinite(radii)])
-    off = np.abs((angles[None, :] - rays[:, None] + 180.0) % 360.0 - 180.0)
-    crowd = np.count_nonzero(off < 15.0, axis=1)
-    ax.set_rlabel_position(float(rays[int(np.argmin(crowd))] % 360.0))
+    ax.tick_params(labelsize=s.small_size)
+    ax.yaxis.set_major_locator(MaxNLocator(5))
     # Tick labels made later copy the first tick's properties, path effects included.
     for tick in ax.yaxis.get_major_ticks():
         tick.label1.set_path_effects([halo(2.2)])
-    ax.tick_params(labelsize=s.small_size)
+    ax.add_artist(_RadialLabels(curves))
+
+
+class _RadialLabels(Artist):
+    """Chooses the ray of a polar plot's radial tick labels as the plot is drawn (an artist that draws nothing).
+
+    Each of 36 rays (every 10°) is tried: the tick labels are laid out along
+    it as matplotlib lays them out, and the curves' segments and markers
+    that run through their boxes, and labels that cover each other, are
+    counted. The ray with the fewest wins, the one nearest 112.5° (upper
+    left, clear of the angle labels) among equals. A label that still
+    crosses a curve there is left blank, while two others remain: its ring
+    is read from its neighbours. Drawn first (lowest zorder), so the tick
+    labels are drawn where it put them.
+    """
+
+    zorder = -100
+
+    def __init__(self, curves):
+        super().__init__()
+        self.curves = [(np.ravel(a), np.ravel(r)) for a, r in curves]
+
+    def draw(self, renderer):
+        from .labels import _hits_many
+
+        ax = self.axes
+        axis = ax.yaxis
+        if not isinstance(axis.get_major_formatter(), _Hide):
+            axis.set_major_formatter(_Hide(axis.get_major_formatter(), ()))
+        formatter = axis.get_major_formatter()
+        formatter.hidden = set()
+        P, Q, W = [], [], []
+        for a, r in self.curves:
+            xy = ax.transData.transform(np.column_stack([a, r]))
+            xy = xy[np.isfinite(xy).all(axis=1)]
+            if len(xy) == 1:  # a marker
+                P.append(xy), Q.append(xy), W.append([4.0])
+            elif len(xy) > 1:
+                P.append(xy[:-1]), Q.append(xy[1:]), W.append(np.full(len(xy) - 1, 2.0))
+        if not P:
+            return
+        P, Q, W = np.concatenate(P), np.concatenate(Q), np.concatenate(W)
+        r0, r1 = ax.get_ylim()
+        rays = np.arange(0.0, 360.0, 10.0)
+        results = []
+        for ray in rays:
+            ax.set_rlabel_position(float(ray))
+            labels = [(tick.get_loc(), tick.label1) for tick in axis._update_ticks()
+                      if r0 < tick.get_loc() <= r1 and tick.label1.get_text()]
+            boxes = np.array([t.get_window_extent(renderer).extents for _, t in labels]).reshape(-1, 4)
+            boxes = boxes + [-2.0, -2.0, 2.0, 2.0]
+            hits = _hits_many(P, Q, W, np.ones(len(P)), boxes)
+            a, b = boxes[:-1], boxes[1:]
+            stacked = int(np.sum((np.minimum(a[:, 2], b[:, 2]) > np.maximum(a[:, 0], b[:, 0]))
+                                 & (np.minimum(a[:, 3], b[:, 3]) > np.maximum(a[:, 1], b[:, 1]))))
+            results.append((int(np.count_nonzero(hits)) + 10 * stacked, [v for (v, _), n in zip(labels, hits) if n],
+                            len(labels)))
+        crossed = np.array([c for c, _, _ in results])
+        off = np.abs((rays - 112.5 + 180.0) % 360.0 - 180.0)
+        k = int(np.lexsort((off, crossed))[0])
+        ax.set_rlabel_position(float(rays[k]))
+        _, hidden, count = results[k]
+        if hidden and count - len(hidden) >= 2:
+            formatter.hidden = set(hidden)
+        self.stale = False
+
+
+class _Hide(Formatter):
+    """A tick formatter that leaves some ticks unlabelled and formats the others as ``base`` does."""
+
+    def __init__(self, base, hidden):
+        super().__init__()
+        self.base, self.hidden = base, set(hidden)
+
+    def set_axis(self, axis):
+        super().set_axis(axis)
+        self.base.set_axis(axis)
+
+    def set_locs(self, locs):
+        self.base.set_locs(locs)
+
+    def __call__(self, x, pos=None):
+        return "" if x in self.hidden else self.base(x, pos)
+
+
+def value_limits(*values, include=(0.0,), margin=0.08) -> tuple[float, float]:
+    """Limits of a value axis that show every finite value of ``values`` and ``include`` with room around them.
+
+    The margin is ``margin`` of the span, and never less than ``margin`` of
+    the largest magnitude: a flat curve (a gear pair's steady torque) then
+    sits well inside the plot instead of on its edge, where its line and a
+    marker on it would be cut in half. (−1, 1) when there is nothing to show.
+
+    Examples
+    --------
+    >>> value_limits([20.91, 20.91])
+    (-1.6728, 22.5828)
+    """
+    finite = [np.asarray(v, float).ravel() for v in values] + [np.asarray(include, float).ravel()]
+    finite = np.concatenate(finite)
+    finite = finite[np.isfinite(finite)]
+    if not finite.size:
+        return -1.0, 1.0
+    lo, hi = float(finite.min()), float(finite.max())
+    pad = margin * max(hi - lo, float(np.max(np.abs(finite))))
+    if pad == 0:
+        return -1.0, 1.0
+    return round(lo - pad, 12), round(hi + pad, 12)
 
 
 def _drawn(ax) -> Drawn:
@@ -177,6 +281,7 @@ def draw_torque_curve(cycle, *, ax=None, flywheel=None, **style) -> Drawn:
             d.curves["smoothed"] = d.add(line(ax, np.degrees(flywheel.theta), Tm, color=s.found, lw=1.6,
                                               label=f"motor with flywheel (Cₛ = {num(flywheel.Cs, 3)})", zorder=3))
     _input_axis(ax, crank, _theta(mech))
+    ax.set_ylim(*value_limits(*[c.get_ydata() for c in d.curves.values()]))
     ax.set_ylabel(f"driving {'torque' if crank else 'force'} {sub(name)} [{unit}]")
     ax.set_title(f"{'Driving torque' if crank else 'Driving force'} over the cycle", fontsize=s.title_size)
     ax.legend(loc="best", fontsize=s.small_size, framealpha=0.9)
@@ -237,22 +342,37 @@ def draw_polar_forces(cycle, names=None, *, ax=None, **style) -> Drawn:
     if names is None:
         names = [r.name_of(i, j) for i, j in r.forces]
     crank = _is_crank(cycle.problem.mechanism)
-    top = 0.0
+    polar = {name: cycle.polar(name) for name in names}
+    tops = [float(np.nanmax(size)) for size, _ in polar.values() if np.isfinite(size).any()]
+    top = max(tops + [0.0])
+    tips = {name: size * np.exp(1j * angle) for name, (size, angle) in polar.items()}
+    bands: dict = {}
     for k, name in enumerate(names):
-        size, angle = cycle.polar(name)
+        size, angle = polar[name]
         color = SERIES[k % len(SERIES)]
-        label = sub(name)
+        # A force that stays within a line's width of one drawn before (F₁₂ of a light crank and F₂₃) is drawn as
+        # a wide pale band under that one: otherwise the curve on top hides it.
+        same = next((other for other in names[:k] if top > 0
+                     and np.nanmax(np.abs(tips[name] - tips[other]), initial=0.0) < COINCIDE * top), None)
+        label = sub(name) + (f" ≈ {sub(same)} (wide band)" if same else "")
         if np.isfinite(size).any():
             i = int(np.nanargmax(size))
             where = f"{num(math.degrees(cycle.q[i]), 4)}°" if crank else f"s = {num(cycle.q[i] * 1e3, 4)} mm"
-            label = f"{sub(name)}: max {num(size[i])} N at {where}"
-            top = max(top, float(size[i]))
-        d.curves[name] = d.add(line(ax, angle, size, color=color, lw=1.5, linestyle=DASHES[k % len(DASHES)],
-                                    label=label, zorder=3))
+            label += f": max {num(size[i])} N at {where}"
+        if same:
+            k_band = bands[same] = bands.get(same, 0) + 1  # a second band under the same curve is wider, beneath
+            curve = line(ax, angle, size, color=color, lw=2.0 + 4.0 * k_band, alpha=0.35, solid_capstyle="round",
+                         label=label, zorder=2 - 0.01 * k_band)
+        else:
+            curve = line(ax, angle, size, color=color, lw=1.5, linestyle=DASHES[k % len(DASHES)], label=label,
+                         zorder=3)
+        d.curves[name] = d.add(curve)
         if np.isfinite(size).any():
             d.add(markers(ax, [angle[i]], [size[i]], color=color, ms=5, zorder=4))
     ax.set_ylim(0, 1.05 * top if top > 0 else 1.0)
-    _radial_labels(ax, [(c.get_xdata(), c.get_ydata()) for c in d.curves.values()], s)
+    _radial_labels(ax, [(c.get_xdata(), c.get_ydata()) for c in d.curves.values()]
+                   + [(m.get_xdata(), m.get_ydata()) for m in d if m.get_marker() not in (None, "None", "")
+                      and m not in d.curves.values()], s)
     ax.set_title("Joint forces |F| [N] against direction", fontsize=s.title_size, pad=14)
     ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.08), ncols=2, fontsize=s.small_size, framealpha=0.9)
     return d
@@ -453,4 +573,4 @@ def draw_cycle(cycle, *, Cs=None, **style) -> Figure:
 
 
 __all__ = ["crossing_energy", "draw_cycle", "draw_energy", "draw_joint_force_index", "draw_polar_forces",
-           "draw_shaking", "draw_torque_curve"]
+           "draw_shaking", "draw_torque_curve", "value_limits"]

@@ -8,10 +8,15 @@ import numpy as np
 
 from ..model import Prismatic, Torque
 from . import style as _style
-from ._common import (MM, Drawn, Labeler, arrow, points_per_unit, arrow_label_candidates, dimension, had_content, line,
-                      moment_arrow, new_axes, nice_round, num, point_label_candidates, scale_bar, set_limits, setup_axes,
-                      sub, unit)
-from .mechanism import Geometry, _label_points, centre_of_mass, draw_link_body
+from .arrows import arc_points, arrow, moment_arrow, perp, unit
+from .axes import MM, Drawn, had_content, line, new_axes, points_per_unit, set_limits, setup_axes
+from .labels import Labeler, arrow_label_candidates, point_label_candidates
+from .mechanism import NEAR, Geometry, _label_points, centre_of_mass, draw_link_body
+from .scales import dimension, nice_round, scale_bar
+from .text import num, sub
+
+FAR_OFFSET = 1.2
+"""An inertia resultant's line further from G than this many link sizes is drawn nearer, with a broken dimension."""
 
 
 def loads_on(construction, link: int) -> dict:
@@ -104,6 +109,15 @@ def draw_free_body(construction, link: int, *, ax=None, force_scale=None, title=
     resultant on its line offset from G by h, with h dimensioned. An arrow
     that pushes on the link ends at its point, one that pulls starts there.
 
+    Where h is more than :data:`FAR_OFFSET` times the link's size, the
+    resultant's line is drawn nearer G (at 0.75 of the link's size) and the
+    dimension carries a break mark and reads "h = … mm (not to scale)":
+    drawn true, the link would shrink to a speck beside it.
+
+    At a sliding pair with friction, the guide's normal is drawn (dashed)
+    through the slider's point, with the friction angle ρ (tan ρ = μ) marked
+    between it and the guide's force.
+
     Parameters
     ----------
     construction : graphkin.graphic.Construction
@@ -128,7 +142,8 @@ def draw_free_body(construction, link: int, *, ax=None, force_scale=None, title=
     -------
     Drawn
         ``.arrows`` and ``.ends`` (tail, tip [mm]) by force name, ``.labels``
-        by name (forces, couples, points, and ``"h"``), ``.scale`` [N per mm].
+        by name (forces, couples, points, ``"h"``, and ``"rho"`` and
+        ``"normal"`` at a sliding pair with friction), ``.scale`` [N per mm].
     """
     s = _style.resolve(**style)
     c = construction
@@ -152,6 +167,7 @@ def draw_free_body(construction, link: int, *, ax=None, force_scale=None, title=
     G = geom.G[link]
     if body.mass > 0:
         drawn += centre_of_mass(ax, G, s)
+        lab.dot(G, 8.0)
     loads = loads_on(c, link)
     if not unknowns:
         loads = {**loads, "forces": [f for f in loads["forces"] if f[3] not in ("unknown", "driver")],
@@ -159,15 +175,27 @@ def draw_free_body(construction, link: int, *, ax=None, force_scale=None, title=
     pts = list(geom.link_points(link).values())
     centroid = np.mean(pts, axis=0) if pts else G
     extent = list(pts) + [G]
-    inert = loads["inertia"]
-    if inert is not None and inert["line_point"] is not None:
-        extent.append(np.asarray(inert["line_point"]) * MM)
     for mesh in geom.gears:
         for n, centre, r in geom.gear_circles(mesh):
             if n == link:
                 extent += [centre - 1.1 * r, centre + 1.1 * r]
     if len(pts) == 1:
         extent += [pts[0] - 2.5 * geom.sym, pts[0] + 2.5 * geom.sym]
+    own = float(np.max(np.ptp(np.asarray(extent, float), axis=0)))
+    # The inertia resultant's line, drawn nearer G when it is far off (see above).
+    inert = loads["inertia"]
+    line_point = None
+    broken = False
+    if inert is not None and inert["line_point"] is not None:
+        line_point = np.asarray(inert["line_point"], float) * MM
+        size = max(own, 6 * geom.sym)
+        far = float(np.hypot(*(line_point - G)))
+        if far > FAR_OFFSET * size:
+            line_point = G + (line_point - G) * (0.75 * size / far)
+            broken = True
+        extent.append(line_point)
+        loads = {**loads, "forces": [(n, F, tuple(line_point / MM) if kind == "inertia" else at, kind)
+                                     for n, F, at, kind in loads["forces"]]}
     ext = np.ptp(np.asarray(extent, float), axis=0)
     L = max(float(np.max(ext)), 14 * geom.sym)
     largest = max([math.hypot(*f[1]) for f in loads["forces"]] + [0.0])
@@ -185,7 +213,7 @@ def draw_free_body(construction, link: int, *, ax=None, force_scale=None, title=
         size = math.hypot(*F)
         color = _color(kind, s)
         if size <= 1e-9 * max(largest, 1e-300):
-            t = lab.label(f"{sub(name)} = 0", point_label_candidates(X, X - centroid, 8.0), color=color)
+            t = lab.label(f"{sub(name)} = 0", _around(X, X - centroid, (8.0, 15.0, 24.0)), color=color)
             drawn.labels[name] = t
             drawn.add(t)
             continue
@@ -200,25 +228,28 @@ def draw_free_body(construction, link: int, *, ax=None, force_scale=None, title=
         drawn.arrows[name] = a
         drawn.ends[name] = (tuple(tail), tuple(tip))
         drawn.add(a)
-        lab.segment(tail, tip)
+        lab.arrow(tail, tip, a.get_linewidth(), a.get_mutation_scale())
         ends += [tail, tip]
-    if inert is not None and inert["line_point"] is not None and math.hypot(*inert["F"]) > 0:
-        P = np.asarray(inert["line_point"], float) * MM
+    if line_point is not None and math.hypot(*inert["F"]) > 0:
+        P = line_point
         e = unit(inert["F"])
         ell = math.hypot(*inert["F"]) / force_scale
         ln = np.array([P - e * max(0.45 * ell, 0.2 * L), P + e * max(1.4 * ell, ell + 0.2 * L)])
         drawn.add(line(ax, *ln.T, color=s.known, lw=s.thin_lw, linestyle=(0, (6, 3)), zorder=3.0))
-        lab.segment(*ln)
+        lab.segment(*ln, soft=True)
         h = inert["h"] or 0.0
         if h * MM > 1e-6 * L:
+            text = f"h = {num(h * MM)} mm" + (" (not to scale)" if broken else "")
             # Points per mm of drawing, roughly (the view spans about 1.3 L): arrows go outside below ~16 pt.
-            drawn += dimension(ax, lab, G, P, f"h = {num(h * MM)} mm", s=s, small=16 / ppu, color=s.ink)
+            drawn += dimension(ax, lab, G, P, text, s=s, small=16 / ppu, color=s.ink, broken=broken)
             drawn.labels["h"] = drawn[-1]
         else:
-            t = lab.label("h = 0", point_label_candidates(G, G - centroid if np.hypot(*(G - centroid)) else (1, -1), 9.0),
-                          size=s.small_size)
+            away = G - centroid if np.hypot(*(G - centroid)) else (1, -1)
+            t = lab.label("h = 0", _around(G, away, (9.0, 16.0, 26.0)), size=s.small_size)
             drawn.labels["h"] = t
             drawn.add(t)
+    if unknowns:
+        ends += _friction_angle(ax, c, geom, link, drawn, lab, s, ppu)
     # Couples, on rings of growing radius around each centre (outside a gear's hub).
     gear_r = max([r for mesh in geom.gears for n, _, r in geom.gear_circles(mesh) if n == link] + [0.0])
     rings: dict = {}
@@ -227,18 +258,21 @@ def draw_free_body(construction, link: int, *, ax=None, force_scale=None, title=
         key = (round(float(X[0]), 6), round(float(X[1]), 6))
         k = rings.get(key, 0)
         rings[key] = k + 1
-        r = max(0.09 * L, 0.32 * gear_r) + 0.05 * k * L
+        r = max(0.09 * L, 0.3 * gear_r) + 0.05 * k * L
         color = _color(kind, s)
         a, arc, mid = moment_arrow(ax, X, r, T > 0, color=color, lw=s.known_lw if kind != "unknown" else s.unknown_lw,
                                    s=s, start=-0.7 * math.pi + 0.35 * k, zorder=4.1, gid=f"fbd{link}:{name}")
         drawn.arrows[name] = a
         drawn.add(a)
-        lab.polyline(arc)
+        lab.curve(arc, a.get_linewidth(), a.get_mutation_scale())
         extent += [X - 1.15 * r, X + 1.15 * r]
-        unit_text = "N·m"
-        text = f"{sub(name)} = {num(abs(T))} {unit_text} {'CCW' if T > 0 else 'CW'}"
-        cands = [(p, p - X, pad) for pad in (s.label_pad, 3 * s.label_pad, 7 * s.label_pad)
-                 for p in [mid] + list(arc[::6])]
+        text = f"{sub(name)} = {num(abs(T))} N·m {'CCW' if T > 0 else 'CW'}"
+        pads = [s.label_pad, 3 * s.label_pad, 7 * s.label_pad, 12 * s.label_pad]
+        if gear_r:
+            # Just outside the teeth, where the gear's face is too busy.
+            rim = (1.08 * gear_r - r) * ppu
+            pads += [rim + s.label_pad, rim + 3 * s.label_pad, rim + 7 * s.label_pad]
+        cands = [(p, p - X, pad) for pad in pads for p in [mid] + list(arc[::4])]
         t = lab.label(text, cands, color=color)
         drawn.labels[name] = t
         drawn.add(t)
@@ -251,7 +285,6 @@ def draw_free_body(construction, link: int, *, ax=None, force_scale=None, title=
         t = lab.label(sub(name), arrow_label_candidates(tail, tip, mid - centroid, s.label_pad), color=_color(kind, s))
         drawn.labels[name] = t
         drawn.add(t)
-    _label_points(ax, geom, c, s, lab, drawn, False, None, only=link)
     extent += ends
     arr = np.asarray(extent, float)
     lo, hi = arr.min(axis=0), arr.max(axis=0)
@@ -261,5 +294,76 @@ def draw_free_body(construction, link: int, *, ax=None, force_scale=None, title=
     drawn += scale_bar(ax, bar_at, value / force_scale, value, s=s, tick=0.012 * span, labeler=lab)
     extent += [bar_at, bar_at + [value / force_scale, 0]]
     set_limits(ax, extent, margin=0.1, existing=existing)
+    _label_points(ax, geom, c, s, lab, drawn, False, None, only=link, near=NEAR / points_per_unit(ax, 1.2 * span))
     lab.place()
+    drawn += lab.leaders
     return drawn
+
+
+def _around(X, away, pads):
+    return [spot for pad in pads for spot in point_label_candidates(X, away, pad)]
+
+
+def _friction_angle(ax, c, geom, link, drawn, lab, s, ppu) -> list:
+    """At each sliding pair of ``link`` with friction: the guide's normal through the slider's point (dashed), and
+    the friction angle ρ between it and the guide's force on the link (tan ρ = μ while it slides).
+
+    Returns points of what was drawn (for the view's extent).
+    """
+    mech = c.mechanism
+    extent = []
+    for joint in mech.joints_of(link):
+        if not isinstance(joint, Prismatic) or not joint.mu > 0:
+            continue
+        other = (set(joint.links) - {link}).pop()
+        name = f"{joint.force_letter}{other}{link}"
+        if name not in drawn.ends:
+            continue
+        X = np.asarray(c.points[joint.slider][joint.point], float) * MM
+        tail, tip = (np.asarray(p, float) for p in drawn.ends[name])
+        body = tail - X if np.hypot(*(tail - X)) > np.hypot(*(tip - X)) else tip - X
+        ell = float(np.hypot(*body))
+        if ell == 0:
+            continue
+        _, u = geom.guide(joint)
+        n = perp(u)
+        n = n if float(np.dot(n, body)) >= 0 else -n
+        b = body / ell
+        rho = math.atan2(abs(float(n[0] * b[1] - n[1] * b[0])), float(np.dot(n, b)))
+        # Clear of the block (and legible) however short the arrow: ρ is an angle between directions.
+        radius = max(0.62 * ell, 3.4 * geom.sym, 24.0 / ppu)
+        reach = max(1.2 * ell, 1.35 * radius)
+        normal = np.array([X - n * 0.25 * reach, X + n * reach])
+        drawn.add(line(ax, *normal.T, color=s.ink, lw=s.thin_lw, linestyle=(0, (4, 2.5)), zorder=3.2))
+        lab.segment(*normal, soft=True)
+        extent += list(normal)
+        t = lab.label("normal", [(normal[1], n, 2.0), (normal[1], -perp(n), 3.0), (normal[1], perp(n), 3.0),
+                                 (normal[0], -n, 2.0)] + _around(normal[1], n, (6.0, 12.0)),
+                      color=s.ink, size=s.small_size)
+        drawn.labels["normal"] = t
+        drawn.add(t)
+        if math.degrees(rho) < 0.05:
+            continue  # no sliding here (a dead centre): the guide pushes along its normal
+        if radius > 0.8 * ell:
+            # The arrow is shorter than the arc's radius: its line carries on, dashed, to meet the arc.
+            more = np.array([X + b * ell, X + b * 1.2 * radius])
+            drawn.add(line(ax, *more.T, color=s.unknown, lw=s.thin_lw, linestyle=(0, (4, 2.5)), zorder=3.2))
+            lab.segment(*more, soft=True)
+        a0 = math.atan2(n[1], n[0])
+        a1 = math.atan2(b[1], b[0])
+        a1 = a0 + (a1 - a0 + math.pi) % (2 * math.pi) - math.pi
+        arc = arc_points(X, radius, a0, a1, 24)
+        drawn.add(line(ax, *arc.T, color=s.ink, lw=s.thin_lw * 1.4, zorder=3.4))
+        lab.polyline(arc)
+        extent += [arc[0], arc[-1]]
+        # Beside the wedge first (a small angle leaves no room inside it), then around the arc.
+        aside = unit(b - n * float(np.dot(b, n)))
+        cands = [(arc[-1], aside, pad) for pad in (3.0, 8.0)] + [(arc[0], -aside, pad) for pad in (3.0, 8.0)]
+        for pad in (2.0, 5.0, 10.0, 18.0, 30.0):
+            for P in arc[[12, 6, 18, 0, 23]]:
+                cands.append((P, unit(P - X), pad))
+        cands += [(P, -unit(P - X), pad) for pad in (3.0, 8.0) for P in arc[[12, 0, 23]]]
+        t = lab.label(f"ρ = {math.degrees(rho):.2f}°", cands, color=s.ink, size=s.small_size)
+        drawn.labels["rho"] = t
+        drawn.add(t)
+    return extent

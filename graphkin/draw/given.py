@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from matplotlib.figure import Figure
 
+from .axes import PanelAxes
 from .fbd import draw_free_body
 from .mechanism import draw_mechanism
 
@@ -36,8 +37,10 @@ def draw_given(construction, links=None, *, figsize=None, **style) -> Figure:
         links = [k for k in c.mechanism.moving
                  if (k in c.inertia and any(c.inertia[k]["F"])) or c.external.get(k)] or list(c.mechanism.moving)
     n = 1 + len(links)
-    fig = Figure(figsize=figsize or (4.5 * n, 4.5), layout="constrained")
-    axes = fig.subplots(1, n, squeeze=False)[0]
+    # Fixed margins, not a layout engine: the labels are placed for the axes as they are drawn.
+    fig = Figure(figsize=figsize or (4.5 * n, 4.5))
+    axes = fig.subplots(1, n, squeeze=False, subplot_kw={"axes_class": PanelAxes},
+                        gridspec_kw={"left": 0.02, "right": 0.98, "bottom": 0.03, "top": 0.9, "wspace": 0.1})[0]
     draw_mechanism(c, ax=axes[0], **style)
     for ax, link in zip(axes[1:], links):
         draw_free_body(c, link, ax=ax, unknowns=False, **style)

@@ -9,8 +9,14 @@ from matplotlib.patches import Circle, Polygon
 
 from ..model import GearMesh, Prismatic, Revolute
 from . import style as _style
-from ._common import (MM, Drawn, Labeler, had_content, line, markers, new_axes, perp, point_label_candidates,
-                      set_limits, setup_axes, sub, unit)
+from .arrows import arc_points, perp, unit
+from .axes import MM, Drawn, had_content, line, markers, new_axes, points_per_unit, set_limits, setup_axes
+from .labels import Labeler, point_label_candidates
+from .scales import nice_round, scale_bar
+from .text import sub
+
+PINION_TEETH = 16
+"""Teeth on the smallest gear of a train (the others have as many more as their radius is larger)."""
 
 
 class Geometry:
@@ -41,6 +47,7 @@ class Geometry:
         ext = pts.max(axis=0) - pts.min(axis=0) if len(pts) else np.zeros(2)
         self.size = max(float(np.max(ext)) if len(pts) else 0.0, 1.0)
         self.sym = 0.032 * self.size
+        self.teeth = self._teeth()
 
     @property
     def gears(self):
@@ -53,6 +60,67 @@ class Geometry:
     def gear_circles(self, mesh):
         """(link, centre [mm], pitch radius [mm]) of both gears of a mesh."""
         return [(n, self.P[n][cname], r * MM) for n, cname, r in zip(mesh.links, mesh.centers, mesh.radii)]
+
+    def link_angle(self, n: int) -> float:
+        """Angle θ of link n's frame [rad]: the construction's, else from two of its points, else 0."""
+        th = getattr(self.c, "angles", {}).get(n)
+        if th is None:
+            th = self.angle(n)
+        return float(th or 0.0)
+
+    def _teeth(self) -> dict:
+        """Teeth of every gear: {link: (number of teeth, angle of a tooth's middle [rad], module [mm])}.
+
+        Gears in mesh share a module, chosen so that the smallest of them has
+        :data:`PINION_TEETH` teeth. The first gear of a train has a tooth on
+        its frame's x-axis; each gear meshing with a gear already placed is
+        turned so that its teeth fit that gear's at the pitch point. The
+        teeth roll as the pitch circles do (r₂ dθ₂ = −r₃ dθ₃), so the fit
+        worked out at one position is the same turn of the gear at every
+        other: the teeth move with the gear.
+        """
+        meshes = self.gears
+        out: dict = {}
+        radius = {}
+        for mesh in meshes:
+            for n, r in zip(mesh.links, mesh.radii):
+                radius[n] = r * MM
+        todo = list(radius)
+        while todo:
+            # One train: the gears linked to the first one left by meshes.
+            train, grow = {todo[0]}, True
+            while grow:
+                grow = False
+                for mesh in meshes:
+                    a, b = mesh.links
+                    if (a in train) != (b in train):
+                        train |= {a, b}
+                        grow = True
+            m = 2.0 * min(radius[n] for n in train) / PINION_TEETH
+            first = todo[0]
+            out[first] = (max(6, round(2 * radius[first] / m)), self.link_angle(first), m)
+            placed = True
+            while placed:
+                placed = False
+                for mesh in meshes:
+                    a, b = mesh.links
+                    if (a in out) == (b in out) or a not in train:
+                        continue
+                    if b in out:
+                        a, b = b, a
+                    ca = self.P[a][mesh.centers[mesh.links.index(a)]]
+                    cb = self.P[b][mesh.centers[mesh.links.index(b)]]
+                    za, phase_a, _ = out[a]
+                    zb = max(6, round(2 * radius[b] / m))
+                    psi = math.atan2(*(cb - ca)[::-1])  # from a's centre towards the pitch point
+                    ra, rb = radius[a], radius[b]
+                    # Arc from a's nearest tooth back to the pitch point, and b's gap there (see above).
+                    sa = ra * ((psi - phase_a) % (2 * math.pi / za))
+                    pb = 2 * math.pi * rb / zb
+                    out[b] = (zb, psi + math.pi - (pb / 2 - sa) / rb, m)
+                    placed = True
+            todo = [n for n in todo if n not in out]
+        return out
 
     def angle(self, n: int):
         """Angle θ of link n's frame [rad] from two of its points (0 for the frame); None with fewer than two."""
@@ -162,17 +230,7 @@ def draw_link_body(ax, geom: Geometry, n: int, s, labeler: Labeler | None = None
         else:
             _band(ax, hull, s, out)
     for mesh, k in gears:
-        centre = pts[mesh.centers[k]]
-        r = mesh.radii[k] * MM
-        add = max(0.05 * r, 0.004 * geom.size)
-        body = Circle(centre, r + add, facecolor=s.plate_fill, edgecolor=s.ink, lw=s.outline_lw, zorder=1.6)
-        pitch = Circle(centre, r, fill=False, edgecolor=s.ink, lw=s.thin_lw, linestyle=(0, (10, 3, 2, 3)), zorder=1.7)
-        hub = Circle(centre, 0.22 * r, facecolor="white", edgecolor=s.ink, lw=s.thin_lw, zorder=1.8)
-        for p in (body, pitch, hub):
-            ax.add_patch(p)
-        out += [body, pitch, hub]
-        if labeler:
-            labeler.polyline(np.asarray(pitch.get_path().vertices) * r + centre)
+        out += _gear(ax, geom, n, pts[mesh.centers[k]], mesh.radii[k] * MM, s, labeler)
     for j in sliders:
         X, u = geom.guide(j)
         block = Polygon(_rect(X, u, 3.4 * geom.sym, 2.0 * geom.sym), closed=True, facecolor=s.link_fill,
@@ -180,7 +238,10 @@ def draw_link_body(ax, geom: Geometry, n: int, s, labeler: Labeler | None = None
         ax.add_patch(block)
         out.append(block)
         if labeler:
-            labeler.polyline(block.get_xy(), closed=True)
+            corners = np.asarray(block.get_xy(), float)
+            labeler.polyline(corners, closed=True)
+            # A label inside a block would hide it: the block is a mark, not only an outline.
+            labeler.box(*corners.min(axis=0), *corners.max(axis=0))
     if len(coords) == 1 and not sliders and not gears:
         dot = markers(ax, *coords[0], color=s.ink, ms=4, zorder=3)
         out.append(dot)
@@ -189,10 +250,59 @@ def draw_link_body(ax, geom: Geometry, n: int, s, labeler: Labeler | None = None
     for name, X in pts.items():
         if name in joint_points:
             pin = markers(ax, *X, ms=s.pin_size, mfc="white", mec=s.ink, mew=s.outline_lw * 1.2, zorder=5)
+            size = s.pin_size + s.outline_lw * 1.2
         else:
             pin = markers(ax, *X, ms=3.6, color=s.ink, zorder=5)
+            size = 3.6
         out.append(pin)
+        if labeler:
+            labeler.dot(X, size)
     return out
+
+
+def gear_outline(centre, r, teeth: int, phase: float, module: float, n_root: int = 3) -> np.ndarray:
+    """The outline of a spur gear of pitch radius ``r`` [mm]: ``teeth`` trapezoids, one centred at ``phase`` [rad].
+
+    Addendum one module, dedendum 1.25 modules; straight flanks, each tooth
+    about 0.4 of the circular pitch thick at the pitch circle (a sketch, not
+    an involute: the thin teeth keep clear of each other in mesh). Returns
+    the closed polygon's vertices (not repeated at the end).
+    """
+    tau = 2 * math.pi / teeth
+    ra, rr = r + module, max(r - 1.25 * module, 0.3 * r)
+    pts = []
+    for k in range(teeth):
+        c = phase + k * tau
+        pts.append((rr, c - 0.28 * tau))
+        pts.append((ra, c - 0.12 * tau))
+        pts.append((ra, c + 0.12 * tau))
+        for t in np.linspace(0.28, 0.72, n_root):
+            pts.append((rr, c + t * tau))
+    rho, ang = np.asarray(pts).T
+    return np.column_stack([centre[0] + rho * np.cos(ang), centre[1] + rho * np.sin(ang)])
+
+
+def _gear(ax, geom: Geometry, n: int, centre, r, s, labeler):
+    """A gear: its teeth, its dashed pitch circle, a white hub and a spoke on the link's x-axis, all turning with it."""
+    teeth, phase, module = geom.teeth[n]
+    outline = gear_outline(centre, r, teeth, phase, module)
+    body = Polygon(outline, closed=True, facecolor=s.plate_fill, edgecolor=s.ink, lw=s.outline_lw, joinstyle="miter",
+                   zorder=1.6)
+    pitch = Circle(centre, r, fill=False, edgecolor=s.ink, lw=s.thin_lw, linestyle=(0, (10, 3, 2, 3)), zorder=1.7)
+    hub_r = 0.16 * r
+    hub = Circle(centre, hub_r, facecolor="white", edgecolor=s.ink, lw=s.thin_lw, zorder=1.8)
+    for p in (body, pitch, hub):
+        ax.add_patch(p)
+    # The reference mark: a spoke along the link's x-axis, from the hub to the roots of the teeth.
+    th = geom.link_angle(n)
+    e = np.array([math.cos(th), math.sin(th)])
+    spoke = np.array([centre + e * hub_r, centre + e * (r - 1.6 * module)])
+    mark = line(ax, *spoke.T, color=s.ink, lw=2.4, solid_capstyle="round", zorder=1.75)
+    if labeler:
+        labeler.polyline(outline, closed=True)
+        labeler.polyline(arc_points(centre, hub_r, 0.0, 2 * math.pi, 25))
+        labeler.segment(*spoke, 2.4)
+    return [body, pitch, hub, mark]
 
 
 def centre_of_mass(ax, X, s, zorder=5.2):
@@ -224,6 +334,7 @@ def _ground(ax, X, size, s, direction, out, labeler=None):
     if labeler:
         labeler.polyline([top, base + n * 0.85 * size, base - n * 0.85 * size], closed=True)
         labeler.segment(*line_pts)
+        labeler.polyline(hatch.get_xy(), closed=True)  # the hatching: a label on it is hard to read
 
 
 def _ground_direction(geom: Geometry, name: str, X):
@@ -272,6 +383,8 @@ def _rails(ax, geom: Geometry, j: Prismatic, s, out, labeler=None):
                             edgecolor=s.ink, lw=0, zorder=1.1)
             ax.add_patch(hatch)
             out.append(hatch)
+            if labeler:
+                labeler.polyline(hatch.get_xy(), closed=True)  # the hatching: a label on it is hard to read
     return cl
 
 
@@ -280,8 +393,10 @@ def draw_mechanism(construction, *, ax=None, labels=True, faint=False, emphasis=
 
     Links are bars between their points (plates for ternary links), pins
     small circles, frame pivots carry hatched ground symbols, sliders are
-    blocks on hatched rails aligned with their guide, gears show their pitch
-    circles, and points and centres of mass are labelled.
+    blocks on hatched rails aligned with their guide, gears show their teeth,
+    their pitch circles and a spoke along their x-axis (all turning with
+    them), points and centres of mass are labelled (points too close for a
+    label each share one), and a scale bar gives the length in mm.
 
     Parameters
     ----------
@@ -348,27 +463,46 @@ def draw_mechanism(construction, *, ax=None, labels=True, faint=False, emphasis=
         if name not in pivots:
             dot = markers(ax, *X, ms=3.6, color=s.ink, zorder=5, alpha=s.faint_alpha if faint else None)
             drawn.add(dot)
+            lab.dot(X, 3.6)
     for n, X in geom.G.items():
         if geom.mech.link(n).mass > 0:
             for a in centre_of_mass(ax, X, s):
                 if faint and n != emphasis:
                     a.set_alpha(s.faint_alpha)
                 drawn.add(a)
+            lab.dot(X, 8.0)
     for key, P in c.pitch_points.items():
         X = np.asarray(P, float) * MM
         dot = markers(ax, *X, ms=3.6, color=s.ink, zorder=5.1, alpha=s.faint_alpha if faint else None)
         drawn.add(dot)
-    if labels:
-        _label_points(ax, geom, c, s, lab, drawn, faint, emphasis)
+        lab.dot(X, 3.6)
+    # A length scale: the drawing is to scale, in mm.
+    arr = np.asarray(extent, float)
+    lo, hi = arr.min(axis=0), arr.max(axis=0)
+    value = nice_round(0.2 * geom.size)
+    bar_at = np.array([lo[0], lo[1] - 0.1 * geom.size])
+    drawn += scale_bar(ax, bar_at, value, value, s=s, unit_text="mm", tick=0.012 * geom.size, labeler=lab,
+                       alpha=s.faint_alpha if faint else None)
+    extent += [bar_at, bar_at + [value, 0.0]]
     set_limits(ax, extent, margin=0.09, existing=existing)
+    if labels:
+        view = float(np.max(np.ptp(np.asarray(extent, float), axis=0))) * 1.18
+        _label_points(ax, geom, c, s, lab, drawn, faint, emphasis, near=NEAR / points_per_unit(ax, view))
     lab.place()
+    drawn += lab.leaders
+    ax._graphkin_labeler = lab  # what a drawing on top (a construction step) keeps off
     return drawn
 
 
-def _candidates(X, away):
+NEAR = 9.0
+"""Points closer than this [pt] on the drawing share one label (``C₃, C₄``; ``B, G₃``)."""
+
+
+def _candidates(X, away, spread=0.0):
+    """Label spots around a point (or a cluster of points ``spread`` points across): near ones first."""
     out = []
-    for pad in (6.0, 13.0, 22.0):
-        out += point_label_candidates(X, away, pad)
+    for pad in (6.0, 13.0, 22.0, 34.0, 48.0, 64.0):
+        out += point_label_candidates(X, away, pad + spread)
     return out
 
 
@@ -379,7 +513,13 @@ def _point_name(name: str, links, shared) -> str:
     return sub(f"{name}{links[0]}") if name.isalpha() and len(name) == 1 else f"{sub(name)} (link {links[0]})"
 
 
-def _label_points(ax, geom, c, s, lab, drawn, faint, emphasis, only=None):
+def _label_points(ax, geom, c, s, lab, drawn, faint, emphasis, only=None, near=0.0):
+    """Label the points, centres of mass and pitch points (of link ``only``, or all).
+
+    A centre of mass on a named point is named with it (``B (G₄)``); points
+    within ``near`` [mm] of each other, too close for a label each, share
+    one (``C₃, C₄``).
+    """
     seen = {}
     for n, pts in geom.P.items():
         if only is not None and n != only:
@@ -392,7 +532,6 @@ def _label_points(ax, geom, c, s, lab, drawn, faint, emphasis, only=None):
     for name, _, _ in seen:
         places[name] = places.get(name, 0) + 1
     shared = {name for name, count in places.items() if count > 1}
-    # A centre of mass on a named point is named with it: "B (G4)".
     tol = 1e-6 * geom.size
     g_at = {}
     for n, X in geom.G.items():
@@ -401,6 +540,8 @@ def _label_points(ax, geom, c, s, lab, drawn, faint, emphasis, only=None):
                 if n in links and math.hypot(X[0] - x, X[1] - y) <= tol:
                     g_at[n] = (name, x, y)
                     break
+    # (text, position, direction away from the links, keys, links it belongs to)
+    entries = []
     for (name, x, y), links in seen.items():
         X = np.array([x, y])
         cents = [geom.centroid(n) for n in links if n != geom.mech.frame and len(geom.link_points(n)) > 1]
@@ -410,27 +551,36 @@ def _label_points(ax, geom, c, s, lab, drawn, faint, emphasis, only=None):
             away = np.array([-1.0, 0.4])
         gs = [n for n, k in g_at.items() if k == (name, x, y)]
         text = _point_name(name, links, shared) + "".join(f" ({sub(f'G{n}')})" for n in gs)
-        t = lab.label(text, _candidates(X, away), size=s.label_size)
-        if faint and emphasis not in links:
-            t.set_alpha(s.faint_alpha + 0.2)
-        key = name if name not in drawn.labels else f"{name}@{'/'.join(map(str, links))}"
-        drawn.labels[key] = t
-        for n in gs:
-            drawn.labels[f"G{n}"] = t
-        drawn.add(t)
+        taken = name in drawn.labels or any(e[3][0] == name for e in entries)
+        key = f"{name}@{'/'.join(map(str, links))}" if taken else name
+        entries.append((text, X, away, [key] + [f"G{n}" for n in gs], set(links)))
     for n, X in geom.G.items():
         if geom.mech.link(n).mass > 0 and n not in g_at and (only is None or n == only):
             cent = geom.centroid(n)
             away = X - cent if cent is not None and np.hypot(*(X - cent)) > tol else np.array([1.0, -1.0])
-            t = lab.label(sub(f"G{n}"), _candidates(X, away), size=s.label_size)
-            if faint and n != emphasis:
-                t.set_alpha(s.faint_alpha + 0.2)
-            drawn.labels[f"G{n}"] = t
-            drawn.add(t)
+            entries.append((sub(f"G{n}"), X, away, [f"G{n}"], {n}))
     for key, P in c.pitch_points.items():
         if only is not None and only not in key:
             continue
-        X = np.asarray(P, float) * MM
-        t = lab.label("P", _candidates(X, np.array([0.0, 1.0])), size=s.label_size)
-        drawn.labels[f"P{key[0]}{key[1]}"] = t
+        entries.append(("P", np.asarray(P, float) * MM, np.array([0.0, 1.0]), [f"P{key[0]}{key[1]}"], set(key)))
+    # Points nearer each other than ``near`` share a label, in the order they were named.
+    groups = []
+    for e in entries:
+        for g in groups:
+            if any(math.dist(e[1], f[1]) < near for f in g):
+                g.append(e)
+                break
+        else:
+            groups.append([e])
+    for g in groups:
+        X = np.mean([e[1] for e in g], axis=0)
+        away = np.sum([unit(e[2]) for e in g], axis=0)
+        spread = max(math.dist(e[1], X) for e in g) / max(near, 1e-300) * NEAR
+        t = lab.label(", ".join(e[0] for e in g), _candidates(X, away, spread), size=s.label_size)
+        links = set().union(*(e[4] for e in g))
+        if faint and emphasis not in links:
+            t.set_alpha(s.faint_alpha + 0.2)
+        for e in g:
+            for key in e[3]:
+                drawn.labels[key] = t
         drawn.add(t)

@@ -7,8 +7,14 @@ import math
 import numpy as np
 
 from . import style as _style
-from ._common import (Drawn, Labeler, arrow, points_per_unit, arrow_label_candidates, had_content, line, markers, new_axes,
-                      nice_round, num, point_label_candidates, scale_bar, set_limits, setup_axes, sub)
+from .arrows import arrow, perp, unit
+from .axes import Drawn, had_content, line, markers, new_axes, points_per_unit, set_limits, setup_axes
+from .labels import Labeler, arrow_label_candidates, point_label_candidates
+from .scales import nice_round, scale_bar
+from .text import num, sub
+
+LANE = 1.8
+"""Half the gap [pt] between the two lanes of a polygon that lies on one line (a two-force member)."""
 
 
 def step_title(step, driver_name: str | None = None) -> str:
@@ -23,13 +29,18 @@ def step_title(step, driver_name: str | None = None) -> str:
 
 
 def draw_force_polygon(step, *, scale: float, ax=None, origin=(0.0, 0.0), values=True, title=None,
-                       driver_name: str | None = None, **style) -> Drawn:
+                       driver_name: str | None = None, scale_note=False, **style) -> Drawn:
     """Draw a step's force polygon, arrows tip to tail.
 
     Known loads are heavy with solid heads, the unknowns the step finds are
     lighter with open heads; each arrow is labelled with its name (and size);
     a ring marks the start, where the last arrow's tip closes the polygon;
     a scale bar reads ``0 — 10 N``.
+
+    A polygon whose sides all lie on one line (two equal and opposite forces,
+    or a superposition of parallel ones) is drawn in two lanes a few points
+    apart: the arrows that go one way on one side of the line, those that
+    come back on the other, so that no arrow hides another.
 
     Parameters
     ----------
@@ -46,13 +57,16 @@ def draw_force_polygon(step, *, scale: float, ax=None, origin=(0.0, 0.0), values
         The axes title; by default the polygon's equation.
     driver_name : str, optional
         The driving effort's name (``"F12"``), drawn in the driver's colour.
+    scale_note : bool
+        Add the drawing scale to the scale bar's reading (``1 mm = 10 N``).
     **style
         Overrides of :class:`graphkin.draw.style.Style` fields.
 
     Returns
     -------
     Drawn
-        ``.arrows``, ``.ends`` (tail, tip [mm]) and ``.labels`` by force name;
+        ``.arrows``, ``.ends`` (tail, tip [mm], as drawn: in a lane, a few
+        points off the polygon's line) and ``.labels`` by force name;
         ``.scale`` [N per mm].
     """
     s = _style.resolve(**style)
@@ -68,19 +82,23 @@ def draw_force_polygon(step, *, scale: float, ax=None, origin=(0.0, 0.0), values
     lab = Labeler(ax, s)
     sizes = [math.hypot(*a.vector) for a in step.polygon]
     largest = max(sizes + [0.0])
-    cur = np.asarray(origin, float)
-    start = cur.copy()
-    # The polygon's extent sets the view: estimate it for the arrowheads of short sides.
-    pts = np.cumsum([[0.0, 0.0]] + [list(np.asarray(a.vector, float) / scale) for a in step.polygon], axis=0)
-    ppu = points_per_unit(ax, 1.5 * max(float(np.max(np.ptp(pts, axis=0))), 1e-9))
-    verts = [cur.copy()]
-    zero = []
-    for a, size in zip(step.polygon, sizes):
-        if size <= 1e-12 * max(largest, 1e-300):
-            zero.append(a.name)
-            continue
-        v = np.asarray(a.vector, float) / scale
-        tail, tip = cur.copy(), cur + v
+    start = np.asarray(origin, float)
+    # The polygon's vertices (zero forces left out), and its extent, which sets the view.
+    shown = [(a, size) for a, size in zip(step.polygon, sizes) if size > 1e-12 * max(largest, 1e-300)]
+    zero = [a.name for a, size in zip(step.polygon, sizes) if size <= 1e-12 * max(largest, 1e-300)]
+    verts = np.cumsum([start] + [np.asarray(a.vector, float) / scale for a, _ in shown], axis=0)
+    span = float(np.max(np.ptp(verts, axis=0))) if len(verts) > 1 else 0.0
+    span = span or 10.0
+    ppu = points_per_unit(ax, 1.5 * span)
+    # One line? Then two lanes, LANE points either side of it.
+    far = verts[int(np.argmax(np.hypot(*(verts - start).T)))]
+    along = unit(far - start)
+    side = perp(along)
+    flat = len(shown) >= 2 and float(np.max(np.abs((verts - start) @ side))) < 0.02 * span
+    centre = verts.mean(axis=0)
+    for (a, size), tail0, tip0 in zip(shown, verts[:-1], verts[1:]):
+        shift = side * (LANE / ppu) * (1 if float(np.dot(tip0 - tail0, along)) > 0 else -1) if flat else np.zeros(2)
+        tail, tip = tail0 + shift, tip0 + shift
         if driver_name and a.name == driver_name:
             color = s.driver
         else:
@@ -96,24 +114,21 @@ def draw_force_polygon(step, *, scale: float, ax=None, origin=(0.0, 0.0), values
                         solid_capstyle="butt", zorder=4.0)
             drawn.add(band)
             lab.segment(tail, tip, 7.5)
-        lab.segment(tail, tip)
-        verts.append(tip.copy())
-        cur = tip
-    verts = np.asarray(verts)
-    centre = verts.mean(axis=0)
-    span = float(np.max(np.ptp(verts, axis=0))) if len(verts) > 1 else 10.0
-    span = span or 10.0
+        lab.arrow(tail, tip, art.get_linewidth(), art.get_mutation_scale())
     # The start, where the polygon closes.
     ring = markers(ax, *start, ms=8, mfc="none", mec=s.ink, mew=1.0, zorder=5)
     dots = markers(ax, *verts[1:-1].T, ms=3, color=s.ink, zorder=5)
     drawn += [ring, dots]
-    for a in step.polygon:
-        if a.name not in drawn.ends:
-            continue
+    lab.dot(start, 9.0)
+    for v in verts[1:-1]:
+        lab.dot(v, 3.0)
+    for a, _ in shown:
         tail, tip = (np.asarray(p) for p in drawn.ends[a.name])
         mid = 0.5 * (tail + tip)
         away = mid - centre
-        if np.hypot(*away) < 1e-9 * span:
+        if flat:
+            away = side * (1 if float(np.dot(tip - tail, along)) > 0 else -1)
+        elif np.hypot(*away) < 1e-9 * span:
             away = np.array([-(tip - tail)[1], (tip - tail)[0]]) * (1 if a.known else -1)
         text = sub(a.name) + (f" = {num(math.hypot(*a.vector))} N" if values else "")
         color = s.driver if driver_name and a.name == driver_name else s.known if a.known else s.unknown
@@ -121,13 +136,17 @@ def draw_force_polygon(step, *, scale: float, ax=None, origin=(0.0, 0.0), values
         drawn.labels[a.name] = t
         drawn.add(t)
     for name in zero:
-        t = lab.label(f"{sub(name)} = 0", point_label_candidates(start, np.array([-1.0, 1.0]), 9.0), color=s.known)
+        t = lab.label(f"{sub(name)} = 0", [spot for pad in (9.0, 16.0, 26.0)
+                                           for spot in point_label_candidates(start, np.array([-1.0, 1.0]), pad)],
+                      color=s.known)
         drawn.labels[name] = t
         drawn.add(t)
-    lo, hi = verts.min(axis=0), verts.max(axis=0)
+    lo = verts.min(axis=0)
     value = nice_round(0.3 * span * scale)
     bar_at = np.array([lo[0], lo[1] - 0.16 * span])
-    drawn += scale_bar(ax, bar_at, value / scale, value, s=s, tick=0.015 * span, labeler=lab)
+    note = f"1 mm = {num(scale)} N" if scale_note else None
+    drawn += scale_bar(ax, bar_at, value / scale, value, s=s, tick=0.015 * span, labeler=lab, note=note)
     set_limits(ax, list(verts) + [bar_at, bar_at + [value / scale, 0]], margin=0.2, existing=existing)
     lab.place()
+    drawn += lab.leaders
     return drawn

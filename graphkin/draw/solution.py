@@ -8,7 +8,8 @@ import numpy as np
 from matplotlib.figure import Figure
 
 from . import style as _style
-from ._common import PanelAxes, input_text, num, polar_text, sub
+from .axes import PanelAxes
+from .text import input_text, num, polar_text, sub
 from .convention import draw_sign_convention
 from .fbd import draw_free_body
 from .mechanism import draw_mechanism
@@ -90,10 +91,9 @@ def draw_table(construction, analytical=None, *, ax, **style):
             cell.set_facecolor("#F7EEF4")  # the driver's row
     ax.set_title("Both routes", fontsize=s.title_size, color=s.ink)
     c = construction
-    note = f"force scale of the polygons: 1 mm = {num(c.force_scale)} N"
     if c.warnings:
-        note += "\n" + "\n".join(f"warning: {w}" for w in c.warnings)
-    ax.text(0.5, 0.02, note, transform=ax.transAxes, ha="center", va="bottom", fontsize=s.small_size, color=s.ink)
+        ax.text(0.5, 0.02, "\n".join(f"warning: {w}" for w in c.warnings), transform=ax.transAxes, ha="center",
+                va="bottom", fontsize=s.small_size, color=s.unknown, wrap=True)
     return table
 
 
@@ -102,8 +102,10 @@ def draw_solution(construction, analytical=None, *, figsize=None, **style) -> Fi
 
     Top row: the mechanism at the position and a table of every joint force
     and the driving effort by both routes with their relative difference.
-    Then the free-body diagram of each moving link (and the sign convention),
-    then every force polygon of the construction, in the order it is built.
+    Then, four to a row in reading order, the free-body diagram of each
+    moving link, the sign convention, and every force polygon of the
+    construction in the order it is built (its scale bar also gives the
+    drawing scale, 1 mm = … N).
 
     Parameters
     ----------
@@ -131,9 +133,9 @@ def draw_solution(construction, analytical=None, *, figsize=None, **style) -> Fi
         return fig
     polys = [st for st in c.steps if st.polygon]
     moving = list(mech.moving)
-    fbd_rows = math.ceil((len(moving) + 1) / NCOLS)
-    poly_rows = math.ceil(len(polys) / NCOLS)
-    nrows = 1 + fbd_rows + poly_rows
+    # Free bodies, the sign convention and the polygons in reading order, four to a row: no half-empty rows.
+    cells = len(moving) + 1 + len(polys)
+    nrows = 1 + math.ceil(cells / NCOLS)
     if figsize is None:
         figsize = (4.3 * NCOLS, 4.1 * nrows + 0.9)
     fig = Figure(figsize=figsize, dpi=100)
@@ -149,15 +151,15 @@ def draw_solution(construction, analytical=None, *, figsize=None, **style) -> Fi
     ax.set_title(f"Mechanism at {input_text(c)} (lengths in mm)", fontsize=s.title_size, color=s.ink)
     ax = fig.add_subplot(gs[0, 2:4], axes_class=PanelAxes)
     draw_table(c, analytical, ax=ax, **style)
+
+    def cell(k):
+        r, col = divmod(k, NCOLS)
+        return fig.add_subplot(gs[1 + r, col], axes_class=PanelAxes)
+
     for k, link in enumerate(moving):
-        r, col = divmod(k, NCOLS)
-        ax = fig.add_subplot(gs[1 + r, col], axes_class=PanelAxes)
-        draw_free_body(c, link, ax=ax, **style)
-    r, col = divmod(len(moving), NCOLS)
-    ax = fig.add_subplot(gs[1 + r, col], axes_class=PanelAxes)
-    draw_sign_convention(ax=ax, **style)
-    for k, step in enumerate(polys):
-        r, col = divmod(k, NCOLS)
-        ax = fig.add_subplot(gs[1 + fbd_rows + r, col], axes_class=PanelAxes)
-        draw_force_polygon(step, scale=c.force_scale, ax=ax, title=step_title(step), driver_name=c.driver_name, **style)
+        draw_free_body(c, link, ax=cell(k), **style)
+    draw_sign_convention(ax=cell(len(moving)), **style)
+    for k, step in enumerate(polys, start=len(moving) + 1):
+        draw_force_polygon(step, scale=c.force_scale, ax=cell(k), title=step_title(step), driver_name=c.driver_name,
+                           scale_note=True, **style)
     return fig

@@ -9,7 +9,10 @@ import numpy as np
 from matplotlib.figure import Figure
 
 from . import style as _style
-from ._common import MM, Labeler, PanelAxes, markers, arrow, input_text, num, point_label_candidates, set_limits, sub, unit, perp
+from .arrows import arrow, perp, unit
+from .axes import MM, PanelAxes, markers, set_limits
+from .labels import Labeler, point_label_candidates
+from .text import input_text, num, sub
 from .mechanism import Geometry, draw_mechanism
 from .polygon import draw_force_polygon, step_title
 
@@ -21,6 +24,8 @@ KIND_TITLE = {
     "couple": "a couple balanced by a couple",
     "polygon": "force polygon",
     "superpose": "superposition",
+    "sub-problem": "a sub-problem of the superposition",
+    "readings": "what the sub-problem found",
     "driver": "the input link",
     "note": "note",
 }
@@ -45,12 +50,16 @@ def draw_step_geometry(construction, step, *, ax, **style) -> list:
     s = _style.resolve(**style)
     c = construction
     geom = Geometry(c)
-    lab = Labeler(ax, s)
-    lab.avoid(ax.texts)  # the mechanism's point labels
-    for n in geom.mech.moving:
-        pts = list(geom.link_points(n).values())
-        if len(pts) >= 2:
-            lab.polyline(pts, closed=len(pts) > 2, width=s.link_lw)
+    # The mechanism drawn underneath: its labels are placed again with the step's, so that they keep off the
+    # step's lines and arrows as well as the step's labels keep off the links.
+    lab = getattr(ax, "_graphkin_labeler", None)
+    if lab is None:
+        lab = Labeler(ax, s)
+        lab.avoid(ax.texts)
+        for n in geom.mech.moving:
+            pts = list(geom.link_points(n).values())
+            if len(pts) >= 2:
+                lab.polyline(pts, closed=len(pts) > 2, width=s.link_lw)
     out = []
     mech_pts = np.asarray([p for d in geom.P.values() for p in d.values()], float)
     centre = mech_pts.mean(axis=0)
@@ -74,9 +83,11 @@ def draw_step_geometry(construction, step, *, ax, **style) -> list:
             out.append(a)
             lab.segment(P - d * 0.09 * geom.size, P + d * 0.09 * geom.size)
         n = perp(d)
-        t = lab.label(sub(line.name), [(P + d * 0.12 * geom.size, n, 4.0), (P + d * 0.12 * geom.size, -n, 4.0),
-                                       (P - d * 0.12 * geom.size, n, 4.0), (P - d * 0.12 * geom.size, -n, 4.0)],
-                      color=color)
+        # The line itself: a label may cross it, at a price (the axline is drawn across the whole view).
+        lab.segment(P - d * 3 * geom.size, P + d * 3 * geom.size, soft=True)
+        spots = [(P + d * k * geom.size, side, pad) for pad in (4.0, 10.0)
+                 for k in (0.12, -0.12, 0.25, -0.25, 0.4, -0.4) for side in (n, -n)]
+        t = lab.label(sub(line.name), spots, color=color)
         out.append(t)
     for name, X in step.points.items():
         X = np.asarray(X, float) * MM
@@ -86,7 +97,9 @@ def draw_step_geometry(construction, step, *, ax, **style) -> list:
         m = markers(ax, *X, ms=6.5, mfc=s.found, mec="white", mew=0.8, zorder=6)
         out.append(m)
         extent.append(X)
-        t = lab.label(sub(name), point_label_candidates(X, np.array([1.0, 1.0]), 6.0), color=s.found)
+        lab.dot(X, 7.3)
+        t = lab.label(sub(name), [spot for pad in (6.0, 12.0, 20.0)
+                                  for spot in point_label_candidates(X, np.array([1.0, 1.0]), pad)], color=s.found)
         out.append(t)
     if far:
         t = ax.text(0.01, 0.01, "\n".join(far), transform=ax.transAxes, ha="left", va="bottom", fontsize=s.small_size,
@@ -94,7 +107,7 @@ def draw_step_geometry(construction, step, *, ax, **style) -> list:
         out.append(t)
     set_limits(ax, extent, margin=0.1, existing=True)  # keeps the mechanism's own view (gears, ground)
     lab.place()
-    return out
+    return out + lab.leaders
 
 
 def _frame(target, construction, step, number, *, s, style, header=True, caption_size=None):

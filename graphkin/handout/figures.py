@@ -48,7 +48,7 @@ class Picture:
             fig = getattr(fig, "figure", fig) if not hasattr(fig, "savefig") else fig
             if hasattr(fig, "get_figure"):
                 fig = fig.get_figure(root=True)
-            from ..draw._common import renderer_of
+            from ..draw import measuring_renderer as renderer_of
 
             # The drawing's own extent, measured with the drawing layer's shared renderer: bbox_inches="tight"
             # would find the same box by drawing the whole figure once more, a third of the cost of a figure.

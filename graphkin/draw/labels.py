@@ -1,0 +1,451 @@
+"""Labels that keep clear: text offset from an anchor, its measured box, and the Labeler that picks each spot.
+
+The Labeler knows what a label must not cover (outlines and arrows, marks,
+other texts) and what it may cross at a small price (dashed lines of
+action), tries each label's candidate spots in order of preference and keeps
+the first that covers nothing. Sizes are measured once per string with a
+shared renderer (:func:`measuring_renderer`).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from matplotlib.transforms import ScaledTranslation, TransformedBbox
+
+from .arrows import perp, unit
+from .axes import clip_path, line
+from .text import halo
+
+TEXT_COST = 400.0
+"""Price of a label's box on another text's box: never, unless every spot does."""
+HARD_COST = 100.0
+"""Price of a label on an outline, an arrow or a mark (pins, scale bars)."""
+SOFT_COST = 4.0
+"""Price of a label across a dashed line (a line of action, a centre line): its halo keeps it legible."""
+OUTSIDE_COST = 3.0
+"""Price per pixel of a label outside the room its axes were given."""
+OFF_PAGE_COST = 60.0
+"""Price per pixel of a label outside the figure (cut off in the explorer's image)."""
+LEADER_COST = 40.0
+"""Price of a label put away from its anchor, with a leader line: worth it rather than covering an outline."""
+GROW = 1.5
+"""Margin [px] around each label's box while placing it."""
+
+
+def _offset(ax, shift_pt):
+    """Data coordinates, then a shift of ``shift_pt`` (x, y) typographic points."""
+    return ax.transData + ScaledTranslation(float(shift_pt[0]) / 72.0, float(shift_pt[1]) / 72.0,
+                                            ax.figure.dpi_scale_trans)
+
+
+def offset_text(ax, text, anchor, shift_pt, **props):
+    """A text ``shift_pt`` points from ``anchor`` (data coordinates), drawn even outside the axes.
+
+    What ``ax.annotate(text, anchor, xytext=shift_pt, textcoords="offset points")``
+    shows, as a plain Text: an Annotation recomputes its offset transform on
+    every draw, a cost the explorer pays for each of its labels.
+    """
+    return ax.text(float(anchor[0]), float(anchor[1]), text, transform=_offset(ax, shift_pt), clip_on=False,
+                   clip_path=clip_path(ax), **props)
+
+
+def _align(d):
+    ha = "left" if d[0] > 0.2 else "right" if d[0] < -0.2 else "center"
+    va = "bottom" if d[1] > 0.2 else "top" if d[1] < -0.2 else "center"
+    return ha, va
+
+
+def segment_hits_box(p, q, box) -> bool:
+    """Does the segment p–q (display coordinates) cross the box (x0, y0, x1, y1)? Liang–Barsky clipping."""
+    x0, y0, x1, y1 = box
+    dx, dy = q[0] - p[0], q[1] - p[1]
+    t0, t1 = 0.0, 1.0
+    for pp, qq in ((-dx, p[0] - x0), (dx, x1 - p[0]), (-dy, p[1] - y0), (dy, y1 - p[1])):
+        if pp == 0:
+            if qq < 0:
+                return False
+        else:
+            r = qq / pp
+            if pp < 0:
+                t0 = max(t0, r)
+            else:
+                t1 = min(t1, r)
+            if t0 > t1:
+                return False
+    return True
+
+
+_MEASURING: dict = {}
+
+
+def measuring_renderer(fig):
+    """A renderer for measuring text on ``fig``: its canvas's own, or (a headless Figure) a shared Agg one.
+
+    Text extents depend on the resolution only, not on the size of the
+    canvas, so one small Agg renderer per dpi serves every figure; and
+    matplotlib caches text metrics per renderer, so a label measured once
+    (``A``, ``F₂₃``, ``0``) is not laid out again on the next figure.
+    """
+    root = fig.get_figure(root=True) if hasattr(fig, "get_figure") else fig
+    get = getattr(root.canvas, "get_renderer", None)
+    if get is not None:
+        return get()
+    r = _MEASURING.get(root.dpi)
+    if r is None:
+        from matplotlib.backends.backend_agg import RendererAgg
+
+        r = _MEASURING[root.dpi] = RendererAgg(1, 1, root.dpi)
+    return r
+
+
+_SIZES: dict = {}
+
+
+def text_size(t, renderer) -> tuple[float, float]:
+    """Width and height [px] of a text's box, measured once per string, font, angle and resolution.
+
+    A label's size does not depend on where it is placed, and the same names
+    (``A``, ``F₂₃``, ``0``) come back on every drawing; measuring through
+    ``get_window_extent`` each time was the larger part of placing them.
+    """
+    key = (t.get_text(), hash(t.get_fontproperties()), t.get_rotation(), t.get_linespacing(), renderer.dpi)
+    size = _SIZES.get(key)
+    if size is None:
+        if len(_SIZES) > 8192:
+            _SIZES.clear()
+        bb = t.get_window_extent(renderer)
+        size = _SIZES[key] = (bb.width, bb.height)
+    return size
+
+
+_HA = {"left": 0.0, "center": 0.5, "right": 1.0}
+_VA = {"bottom": 0.0, "baseline": 0.0, "center": 0.5, "center_baseline": 0.5, "top": 1.0}
+
+
+def text_box(t, renderer) -> tuple[float, float, float, float]:
+    """Display box (x0, y0, x1, y1) of an unrotated text, from its cached size, anchor and alignment.
+
+    ``get_window_extent`` lays the text out again; this is arithmetic once
+    :func:`text_size` has seen the string (the axes' transforms must be final).
+    """
+    w, h = text_size(t, renderer)
+    x, y = t.get_transform().transform(t.get_unitless_position())
+    x0 = x - w * _HA.get(t.get_ha(), 0.0)
+    y0 = y - h * _VA.get(t.get_va(), 0.0)
+    return float(x0), float(y0), float(x0 + w), float(y0 + h)
+
+
+def _hits_many(P, Q, W, C, boxes):
+    """For each box (x0, y0, x1, y1) in ``boxes`` (n×4), the summed price C[k] of the segments P[k]–Q[k] it meets.
+
+    Display coordinates; segment k is W[k] wide on either side. Liang–Barsky
+    clipping (as :func:`segment_hits_box`), vectorised over boxes × segments.
+    """
+    n = len(boxes)
+    if not len(P) or not n:
+        return np.zeros(n)
+    lo, hi = np.minimum(P, Q) - W[:, None], np.maximum(P, Q) + W[:, None]
+    bx0, by0, bx1, by1 = (boxes[:, k, None] for k in range(4))
+    near = (lo[None, :, 0] <= bx1) & (hi[None, :, 0] >= bx0) & (lo[None, :, 1] <= by1) & (hi[None, :, 1] >= by0)
+    if not near.any():
+        return np.zeros(n)
+    x0, y0, x1, y1 = bx0 - W, by0 - W, bx1 + W, by1 + W
+    px, py = P[:, 0], P[:, 1]
+    dx, dy = Q[:, 0] - px, Q[:, 1] - py
+    t0 = np.zeros(near.shape)
+    t1 = np.ones(near.shape)
+    out = np.zeros(near.shape, bool)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        for pp, qq in ((-dx, px - x0), (dx, x1 - px), (-dy, py - y0), (dy, y1 - py)):
+            zero = pp == 0
+            qq = np.broadcast_to(qq, near.shape)
+            out |= zero & (qq < 0)
+            r = qq / pp
+            t0 = np.where(~zero & (pp < 0), np.maximum(t0, r), t0)
+            t1 = np.where(~zero & (pp > 0), np.minimum(t1, r), t1)
+    return (near & ~out & (t0 <= t1)) @ C
+
+
+def _box_overlaps(boxes, others, costs):
+    """For each candidate box, the summed price of the ``others`` boxes it overlaps."""
+    if not len(others):
+        return np.zeros(len(boxes))
+    o = np.asarray(others, float)
+    hit = ~((boxes[:, None, 2] < o[None, :, 0]) | (boxes[:, None, 0] > o[None, :, 2])
+            | (boxes[:, None, 3] < o[None, :, 1]) | (boxes[:, None, 1] > o[None, :, 3]))
+    return hit @ np.asarray(costs, float)
+
+
+class Labeler:
+    """Places labels next to their anchors on the side where they cover nothing.
+
+    Each label has candidate positions ``(anchor, direction, pad)``: the text
+    sits ``pad`` points from ``anchor`` (data coordinates) towards
+    ``direction``, aligned so that it lies wholly on that side. What a label
+    must not cover: other texts (labels placed before it, texts drawn
+    elsewhere, the axes' title), outlines and arrows (:meth:`segment`,
+    :meth:`polyline`), marks (:meth:`dot`, :meth:`box`). What it may cross at
+    a small price: dashed lines (``soft=True``). Each label takes the first
+    of its spots that covers nothing, or the cheapest one (:data:`TEXT_COST`,
+    :data:`HARD_COST`, :data:`SOFT_COST`, :data:`OUTSIDE_COST`,
+    :data:`OFF_PAGE_COST`). A label whose best spot would still cover
+    something goes where its panel has room, joined to its anchor by a thin
+    leader line (:attr:`leaders`), when that costs less (:data:`LEADER_COST`).
+    :meth:`place` runs once the axes limits are final.
+    """
+
+    def __init__(self, ax, s):
+        self.ax, self.s = ax, s
+        self.items = []
+        self.segments = []
+        self.boxes = []
+        self.texts = []
+        self.fixed = []
+        self.heads = []
+        self.leaders = []
+        """Leader lines drawn by :meth:`place` from a label put away from its anchor to the anchor."""
+
+    def segment(self, p, q, width=0.0, *, soft=False):
+        """An obstacle segment (data coordinates), ``width`` points wide; ``soft`` for a dashed line."""
+        self.segments.append((np.asarray(p, float), np.asarray(q, float), float(width),
+                              SOFT_COST if soft else HARD_COST))
+
+    def polyline(self, pts, closed=False, width=0.0, *, soft=False):
+        pts = np.asarray(pts, float)
+        for a, b in zip(pts[:-1], pts[1:]):
+            self.segment(a, b, width, soft=soft)
+        if closed and len(pts) > 2:
+            self.segment(pts[-1], pts[0], width, soft=soft)
+
+    def arrow(self, tail, tip, lw=0.0, head=0.0):
+        """An arrow as an obstacle: its shaft ``lw`` points wide, and its head (matplotlib's mutation scale
+        ``head`` [pt], as :func:`graphkin.draw.arrows.arrow` draws it) as wide as the head is."""
+        self.segment(tail, tip, lw)
+        if head > 0:
+            self.heads.append((np.asarray(tail, float), np.asarray(tip, float), float(head)))
+
+    def curve(self, pts, lw=0.0, head=0.0):
+        """A curved arrow (a couple's arc) as an obstacle: the polyline, and a head at its last point."""
+        pts = np.asarray(pts, float)
+        self.polyline(pts, width=lw)
+        if head > 0 and len(pts) > 1:
+            self.heads.append((pts[-2], pts[-1], float(head)))
+
+    def dot(self, P, size):
+        """A mark ``size`` points across centred on ``P`` (a pin, a centre of mass)."""
+        self.box(P[0], P[1], P[0], P[1], pad=size / 2.0)
+
+    def label(self, text, candidates, *, color=None, size=None, zorder=6.0, **kw):
+        """Add a label; ``candidates`` is a list of (anchor, direction, pad [pt]), best first."""
+        anchor, d, pad = candidates[0]
+        d = unit(d)
+        ha, va = _align(d)
+        t = offset_text(self.ax, text, anchor, d * pad, ha=ha, va=va, color=color or self.s.ink,
+                        fontsize=size or self.s.label_size, zorder=zorder, **kw)
+        t.set_path_effects([halo()])
+        self.items.append((t, candidates))
+        return t
+
+    def avoid(self, texts):
+        """Texts already on the axes that the labels must not cover."""
+        self.texts += list(texts)
+
+    def box(self, x0, y0, x1, y1, pad=0.0):
+        """An obstacle box in data coordinates (a mark, a block), grown by ``pad`` points all round."""
+        self.boxes.append(((x0, y0, x1, y1), float(pad)))
+
+    def keep_off(self, texts):
+        """Unrotated one-line texts the labels must not cover, measured by arithmetic when the labels are placed.
+
+        As :meth:`avoid`, without laying each text out again: its size is
+        cached by string (:func:`text_size`) and its box follows from its
+        anchor and alignment. For texts this module draws (scale bars).
+        """
+        self.fixed += list(texts)
+
+    def place(self):
+        ax = self.ax
+        for leader in self.leaders:  # placed again: the leaders of last time go
+            leader.remove()
+        self.leaders = []
+        ax.apply_aspect()
+        to = ax.transData.transform
+        dpi = ax.figure.dpi
+        if self.segments:
+            P = to(np.array([p for p, _, _, _ in self.segments]))
+            Q = to(np.array([q for _, q, _, _ in self.segments]))
+            W = np.array([w for _, _, w, _ in self.segments]) * dpi / 72 / 2
+            C = np.array([c for _, _, _, c in self.segments])
+        else:
+            P = Q = np.zeros((0, 2))
+            W = C = np.zeros(0)
+        if self.heads:
+            # A head (ArrowStyle "-|>", head_length 0.75, head_width 0.3 of the mutation scale) back from the tip.
+            B = to(np.array([b for b, _, _ in self.heads]))
+            T = to(np.array([t for _, t, _ in self.heads]))
+            size = np.array([h for _, _, h in self.heads]) * dpi / 72
+            d = T - B
+            u = d / np.maximum(np.hypot(d[:, 0], d[:, 1]), 1e-300)[:, None]
+            P = np.vstack([P, T - u * (0.75 * size)[:, None]])
+            Q = np.vstack([Q, T])
+            W = np.concatenate([W, 0.3 * size])
+            C = np.concatenate([C, np.full(len(size), HARD_COST)])
+        # The room the axes were given (an equal-scale axes may have shrunk inside it), and the figure's edges.
+        axbox = TransformedBbox(ax.get_position(original=True), ax.figure.transSubfigure)
+        room = np.array([axbox.x0, axbox.y0, axbox.x1, axbox.y1])
+        page = np.asarray(ax.figure.bbox.extents, float)
+        marks = []
+        for b, pad in self.boxes:
+            (x0, y0), (x1, y1) = to((b[0], b[1])), to((b[2], b[3]))
+            g = pad * dpi / 72
+            marks.append((min(x0, x1) - g, min(y0, y1) - g, max(x0, x1) + g, max(y0, y1) + g))
+        scale = dpi / 72.0
+        renderer = measuring_renderer(ax.figure)
+        placed = []
+        title = [t for t in (ax.title, ax._left_title, ax._right_title) if t.get_text().strip()]
+        for t in self.texts + title:
+            bb = t.get_window_extent(renderer)
+            placed.append((bb.x0, bb.y0, bb.x1, bb.y1))
+        placed += [text_box(t, renderer) for t in self.fixed]
+
+        def outside(b, box, top=1.0):
+            return (np.maximum(0.0, box[0] - b[:, 0]) + np.maximum(0.0, b[:, 2] - box[2])
+                    + np.maximum(0.0, box[1] - b[:, 1]) + top * np.maximum(0.0, b[:, 3] - box[3]))
+
+        def cost(b):
+            """What a box covers that does not depend on the other labels."""
+            # Above the room is the title's row: a label there reads as part of the title.
+            return (_hits_many(P, Q, W, C, b) + _box_overlaps(b, marks, [HARD_COST] * len(marks))
+                    + OUTSIDE_COST * outside(b, room, top=3.0) + OFF_PAGE_COST * outside(b, page))
+
+        # Every label's candidate boxes first: a label's size does not depend on where it goes, and
+        # the obstacles other than labels do not depend on the other labels, so one vectorised test
+        # serves them all; only the overlaps with labels placed before need the loop.
+        spots = []
+        for t, candidates in self.items:
+            w, h = text_size(t, renderer)
+            n = len(candidates)
+            A = to(np.array([a for a, _, _ in candidates], float).reshape(n, 2))
+            D = np.array([d for _, d, _ in candidates], float).reshape(n, 2)
+            norm = np.hypot(D[:, 0], D[:, 1])
+            D = np.where(norm[:, None] > 0, D / np.where(norm > 0, norm, 1.0)[:, None], [1.0, 0.0])
+            pads = np.array([pad for _, _, pad in candidates], float)
+            XY = A + D * pads[:, None] * scale
+            # _align, for every candidate: where the text's box starts relative to its anchor point.
+            fx = np.where(D[:, 0] > 0.2, 0.0, np.where(D[:, 0] < -0.2, 1.0, 0.5))
+            fy = np.where(D[:, 1] > 0.2, 0.0, np.where(D[:, 1] < -0.2, 1.0, 0.5))
+            x0 = XY[:, 0] - w * fx
+            y0 = XY[:, 1] - h * fy
+            spots.append((D, pads, np.column_stack([x0 - GROW, y0 - GROW, x0 + w + GROW, y0 + h + GROW]), A[0], w, h))
+        if not spots:
+            return
+        every = np.concatenate([s[2] for s in spots])
+        cuts = np.cumsum([len(s[2]) for s in spots])[:-1]
+        fixed = cost(every)
+        leaders = []  # display segments of the leaders drawn so far: later labels keep off them
+        for (t, candidates), (D, pads, boxes, A0, w, h), score in zip(self.items, spots, np.split(fixed, cuts)):
+            score = score + _box_overlaps(boxes, placed, [TEXT_COST] * len(placed)) + self._on_leaders(boxes, leaders)
+            # The first spot, in order of preference, that covers nothing ends the search; the best so far wins.
+            n = len(score)
+            clean = np.flatnonzero(score == 0)
+            last = int(clean[0]) + 1 if len(clean) else n
+            k = int(np.argmin(score[:last] + 0.3 * np.arange(last)))
+            if score[k] >= LEADER_COST:
+                far = self._with_leader(t, A0, w, h, room, page, cost, placed, leaders, score[k])
+                if far is not None:
+                    placed.append(far)
+                    continue
+            anchor, d = candidates[k][0], D[k]
+            ha, va = _align(d)
+            t.set_position(tuple(map(float, anchor)))
+            t.set_transform(_offset(ax, d * pads[k]))
+            t.set_ha(ha)
+            t.set_va(va)
+            placed.append(tuple(boxes[k]))
+
+    @staticmethod
+    def _on_leaders(boxes, leaders):
+        if not leaders:
+            return np.zeros(len(boxes))
+        P = np.array([p for p, _ in leaders])
+        Q = np.array([q for _, q in leaders])
+        return _hits_many(P, Q, np.zeros(len(leaders)), np.full(len(leaders), HARD_COST), boxes)
+
+    def _with_leader(self, t, A, w, h, room, page, cost, placed, leaders, worst):
+        """Put a label that has no clean spot beside its anchor where there is room in its panel, joined to the
+        anchor ``A`` (display) by a thin leader line; None when that is no better. Returns the box taken."""
+        x0, y0 = max(room[0], page[0]), max(room[1], page[1])
+        x1, y1 = min(room[2], page[2]), min(room[3], page[3])
+        if x1 - x0 < w or y1 - y0 < h:
+            return None
+        cx, cy = np.meshgrid(np.linspace(x0 + w / 2 + GROW, x1 - w / 2 - GROW, 14),
+                             np.linspace(y0 + h / 2 + GROW, y1 - h / 2 - GROW, 12))
+        cx, cy = cx.ravel(), cy.ravel()
+        boxes = np.column_stack([cx - w / 2 - GROW, cy - h / 2 - GROW, cx + w / 2 + GROW, cy + h / 2 + GROW])
+        # Where the leader meets each box: the box's point nearest the anchor.
+        ends = np.column_stack([np.clip(A[0], boxes[:, 0], boxes[:, 2]), np.clip(A[1], boxes[:, 1], boxes[:, 3])])
+        reach = np.hypot(*(ends - A).T)
+        score = cost(boxes) + _box_overlaps(boxes, placed, [TEXT_COST] * len(placed)) + self._on_leaders(boxes, leaders)
+        # The leader itself should not run through a text.
+        if placed:
+            o = np.asarray(placed, float)
+            for j in range(len(boxes)):
+                score[j] += TEXT_COST * sum(segment_hits_box(A, ends[j], b) for b in o)
+        score = score + LEADER_COST + 0.05 * reach
+        j = int(np.argmin(score))
+        if not score[j] < worst:
+            return None
+        ax = self.ax
+        back = ax.transData.inverted().transform
+        t.set_position(tuple(map(float, back((cx[j], cy[j])))))
+        t.set_transform(ax.transData)
+        t.set_ha("center")
+        t.set_va("center")
+        if reach[j] > 0:
+            a, b = back(A), back(ends[j])
+            self.leaders.append(line(ax, [a[0], b[0]], [a[1], b[1]], color=t.get_color(), lw=0.7,
+                                     solid_capstyle="butt", zorder=t.get_zorder() - 0.1))
+            leaders.append((np.asarray(A, float), ends[j]))
+        return tuple(boxes[j])
+
+
+def arrow_label_candidates(tail, tip, away, pad):
+    """Candidate label spots for an arrow: beside its middle (the ``away`` side first), then beside the ends,
+    then further out."""
+    tail, tip = np.asarray(tail, float), np.asarray(tip, float)
+    u = unit(tip - tail)
+    n = perp(u)
+    if np.dot(n, away) < 0:
+        n = -n
+    out = []
+    for k in (1.0, 2.6):
+        for t in (0.5, 0.7, 0.3, 0.85, 0.15):
+            P = tail + t * (tip - tail)
+            out.append((P, n, k * pad))
+            out.append((P, -n, k * pad))
+        out.append((tip, u, k * pad))
+        out.append((tail, -u, k * pad))
+        for e in (tip, tail):
+            out.append((e, n, k * pad))
+            out.append((e, -n, k * pad))
+    for k in (5.0, 8.0, 12.0):
+        for t in (0.5, 0.8, 0.2, 1.0, 0.0):
+            P = tail + t * (tip - tail)
+            out.append((P, n, k * pad))
+            out.append((P, -n, k * pad))
+        out.append((tip, u, k * pad))
+        out.append((tail, -u, k * pad))
+    return out
+
+
+def point_label_candidates(P, away, pad):
+    """Candidate spots around a point, the ``away`` direction first, then 16 directions nearest it first."""
+    away = unit(away) if np.hypot(*away) > 0 else np.array([0.0, 1.0])
+    dirs = [away]
+    for k in range(16):
+        a = math.pi / 8 * k
+        dirs.append(np.array([math.cos(a), math.sin(a)]))
+    dirs.sort(key=lambda d: -float(np.dot(d, away)))
+    return [(P, d, pad) for d in dirs]
