@@ -22,7 +22,6 @@ import sys
 from pathlib import Path
 
 from .errors import GraphkinError
-from .exercises.batch import run_roster
 from .files import check_destination, read_text, write_text
 
 MAX_ROSTER = 100_000
@@ -80,7 +79,10 @@ def _secret(args) -> str:
 
 
 def _run(args) -> int:
+    # Imported here, not at the top: `graphkin` builds every subcommand's parser, and the exercise machinery
+    # (numpy, shapely, the problem reader) is ~0.1 s that `graphkin solve` and `graphkin list` never use.
     from . import exercises
+    from .exercises.batch import run_roster
 
     if args.action == "list":
         for name in exercises.names():
@@ -226,6 +228,7 @@ def _answers_json(path) -> dict:
 
 
 def _grade(ex, args, secret) -> int:
+    from .exercises.batch import run_roster
     from .exercises.grading import grade_variant
 
     reveal = True if args.reveal else None

@@ -17,16 +17,11 @@ before anything is started; so is a missing Voilà.
 
 from __future__ import annotations
 
-import contextlib
-import importlib.util
+# Only what building the parser needs is imported here: `graphkin` builds every subcommand's parser, and
+# `graphkin solve` should not pay for sockets and subprocesses (each function imports what it runs).
 import json
 import os
-import signal
-import socket
-import subprocess
 import sys
-import tempfile
-import time
 from pathlib import Path
 
 from .errors import GraphkinError
@@ -82,6 +77,10 @@ def notebook(source: str, title: str) -> dict:
 
 def run(args) -> int:
     """Carry out ``graphkin explore``; returns the exit code (130 after Ctrl-C)."""
+    import importlib.util
+    import subprocess
+    import tempfile
+
     from . import catalog
 
     problem = catalog.load(args.problem)  # a bad name or file: GraphkinError, before anything starts
@@ -125,6 +124,8 @@ def run(args) -> int:
 
 def _stop_on_sigterm():
     """Let SIGTERM and SIGHUP (a closed terminal, a process manager) stop the page as Ctrl-C does; returns the undo."""
+    import signal
+
     if not _main_thread():
         return lambda: None
 
@@ -137,6 +138,8 @@ def _stop_on_sigterm():
 
 
 def _free_port() -> int:
+    import socket
+
     with socket.socket() as s:
         s.bind(("127.0.0.1", 0))
         return s.getsockname()[1]
@@ -144,6 +147,10 @@ def _free_port() -> int:
 
 def _wait_listening(voila, port: int, log_path: Path):
     """Until Voilà accepts connections (a request for the page itself would run the notebook once for nothing)."""
+    import contextlib
+    import socket
+    import time
+
     end = time.monotonic() + READY
     while time.monotonic() < end:
         if voila.poll() is not None:
@@ -168,6 +175,9 @@ def _has_desktop() -> bool:
 
 def _stop(voila):
     """Stop Voilà and its kernels; a second Ctrl-C meanwhile is not a traceback."""
+    import signal
+    import subprocess
+
     previous = signal.signal(signal.SIGINT, signal.SIG_IGN) if _main_thread() else None
     try:
         if voila.poll() is None:

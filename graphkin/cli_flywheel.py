@@ -15,8 +15,6 @@ from __future__ import annotations
 import json
 import math
 
-import numpy as np
-
 
 def add_parser(sub) -> None:
     """Add ``flywheel`` to the ``graphkin`` subcommands."""
@@ -41,6 +39,8 @@ def run(args) -> int:
 
 
 def _floats(a) -> list:
+    import numpy as np  # here, not at the top: `graphkin` imports this module to build its parser
+
     return [float(x) for x in np.asarray(a, dtype=float).ravel()]
 
 

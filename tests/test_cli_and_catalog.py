@@ -107,6 +107,7 @@ def test_list(capsys):
     out = capsys.readouterr().out
     for name in catalog.names():
         assert name in out
+        assert f"family: {catalog.family(name)}" in out  # each problem's family of mechanism (issue 13)
 
 
 def test_console_script_runs_the_default_example():

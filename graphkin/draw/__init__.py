@@ -22,7 +22,6 @@ Examples
 from __future__ import annotations
 
 import os
-import tempfile
 from pathlib import Path
 
 from ..files import file_mode
@@ -44,6 +43,10 @@ FORMATS = ("png", "svg", "pdf")
 def save(fig, path, *, dpi=None, **kwargs) -> Path:
     """Save a figure as PNG, SVG or PDF, chosen by the file's suffix.
 
+    The figure is cropped to what is drawn (``bbox_inches="tight"``, with a
+    0.08 in margin) on a white background. The file is written whole or not
+    at all: a temporary file in the same folder, then :func:`os.replace`.
+
     Parameters
     ----------
     fig : Figure, Axes or Drawn
@@ -58,6 +61,17 @@ def save(fig, path, *, dpi=None, **kwargs) -> Path:
     Returns
     -------
     Path
+
+    Notes
+    -----
+    matplotlib's ``bbox_inches="tight"`` draws the whole figure once to find
+    its extent and then again to save it. Here the extent is measured
+    without drawing (``Figure.get_tightbbox`` at the saving resolution,
+    which lays out the same texts and applies the same aspect ratios), so
+    a figure without a layout engine is drawn once, with the same pixels.
+    A PNG is compressed at zlib level :data:`PNG_LEVEL` (Pillow, through
+    matplotlib): a line drawing is mostly runs of one colour, which a light
+    level finds nearly as well as the default, in less time.
     """
     path = Path(path)
     fmt = path.suffix.lower().lstrip(".")
@@ -69,28 +83,68 @@ def save(fig, path, *, dpi=None, **kwargs) -> Path:
         fig = fig.figure
     if hasattr(fig, "get_figure"):
         fig = fig.get_figure(root=True)
+    dpi = dpi or style.STYLE.dpi
+    kwargs.setdefault("facecolor", "white")
+    # A layout engine must draw to place the axes, and matplotlib's own "tight" then costs nothing more;
+    # SVG and PDF measure text with their own renderers, so they keep matplotlib's way too; and any
+    # other savefig option goes to matplotlib whole.
+    own = (fmt == "png" and kwargs.get("bbox_inches", "tight") == "tight" and fig.get_layout_engine() is None
+           and set(kwargs) <= _OWN_PNG)
+    if own:
+        kwargs["bbox_inches"] = _tight_box(fig, dpi, kwargs.pop("pad_inches", 0.08))
     kwargs.setdefault("bbox_inches", "tight")
     kwargs.setdefault("pad_inches", 0.08)
-    kwargs.setdefault("facecolor", "white")
     if fmt in ("svg", "pdf"):
         # No creation date: the same figure gives the same file.
         kwargs.setdefault("metadata", {"Date": None} if fmt == "svg" else {"CreationDate": None})
     # A temporary file in the same folder, then a rename: a reader never sees half a figure, and an
-    # interrupted or failed save leaves the old file (or none).
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
-    os.close(fd)
+    # interrupted or failed save leaves the old file (or none). The name is chosen before the file is made,
+    # inside the try that removes it: a Ctrl-C the moment it appears (inside tempfile.mkstemp) would leave it.
+    tmp = None
     try:
-        fig.savefig(tmp, format=fmt, dpi=dpi or style.STYLE.dpi, **kwargs)
-        # mkstemp's file is owner-only: the figure gets the permissions a plain open() would give it.
+        for _ in range(100):
+            tmp = path.parent / f".{path.name}.{os.urandom(6).hex()}.tmp"
+            try:
+                os.close(os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o600))
+                break
+            except FileExistsError:
+                tmp = None
+        else:  # pragma: no cover - 100 random names all taken
+            raise FileExistsError(f"no free temporary name beside {path}")
+        if fmt == "png":
+            kwargs.setdefault("pil_kwargs", {"compress_level": PNG_LEVEL})
+        fig.savefig(tmp, format=fmt, dpi=dpi, **kwargs)
+        # The file was made owner-only: the figure gets the permissions a plain open() would give it.
         os.chmod(tmp, file_mode())
         os.replace(tmp, path)
     except BaseException:
-        try:
-            os.unlink(tmp)
-        except OSError:
-            pass
+        if tmp is not None:
+            try:
+                os.unlink(tmp)
+            except OSError:
+                pass
         raise
     return path
+
+
+# savefig arguments for which :func:`save` measures the tight box itself; with any other, matplotlib does.
+_OWN_PNG = {"bbox_inches", "pad_inches", "facecolor"}
+PNG_LEVEL = 3
+"""zlib level of :func:`save`'s PNGs: the double slider's solution at 200 dpi is ~445 kB at level 3 against
+~350 kB at Pillow's default 6, in four fifths of the time."""
+
+
+def _tight_box(fig, dpi: float, pad: float):
+    """The figure's drawn extent in inches, plus ``pad``, measured at ``dpi`` as ``savefig`` would."""
+    from matplotlib.backends.backend_agg import RendererAgg
+
+    old = fig.dpi
+    fig.dpi = dpi  # text extents depend on the resolution: measure at the one the file is drawn at
+    try:
+        box = fig.get_tightbbox(RendererAgg(1, 1, dpi))
+    finally:
+        fig.dpi = old
+    return box.padded(pad)
 
 
 __all__ = [
