@@ -552,7 +552,7 @@ class Explorer:
         """(Re)create the persistent axes: mechanism and torque curve, free bodies, polygon slots."""
         from matplotlib.gridspec import GridSpec
 
-        from .draw._common import PanelAxes
+        from .draw.axes import PanelAxes
 
         fig = self.figure
         fig.clear()
@@ -617,7 +617,7 @@ class Explorer:
         x = np.degrees(self.cycle.q) if self.crank else self.cycle.q * 1e3
         y = np.where(self.cycle.valid, self.cycle.torque, np.nan)
         effort = self.problem.mechanism.driver
-        name = f"T1{effort.link}" if self.crank else f"F1{effort.link}"
+        name = effort.symbol  # T12, or T01 in a book that numbers the frame 0
         unit = "N·m" if self.crank else "N"
         speed = f"{self.speed.value:g} {'rpm' if self.crank else 'm/s'}"
         (self.curve,) = ax.plot(x, y, color="#0072B2", lw=1.4)
@@ -626,9 +626,12 @@ class Explorer:
         ax.set_xlim(*self.limits)
         finite = y[np.isfinite(y)]
         if finite.size:
+            from .draw.cycle import value_limits
+
             lo, hi = np.percentile(finite, [0.5, 99.5]) if finite.size > 20 else (finite.min(), finite.max())
-            pad = 0.08 * max(hi - lo, 1e-9)
-            ax.set_ylim(min(lo, 0.0) - pad, max(hi, 0.0) + pad)
+            # A flat curve (a gear pair's steady torque) keeps a margin: not on the plot's edge, its marker whole.
+            ylim = value_limits([lo, hi])
+            ax.set_ylim(*ylim)
         ax.set_xlabel("θ (deg)" if self.crank else "s (mm)", fontsize=MIN_PT + 1, labelpad=1)
         ax.set_ylabel(f"{name} ({unit})", fontsize=MIN_PT + 1, labelpad=1)
         ax.tick_params(labelsize=MIN_PT, pad=1.5)
@@ -638,7 +641,7 @@ class Explorer:
         ax.set_yticks(ax.get_yticks())
         ax.set_xlim(*self.limits)
         if finite.size:
-            ax.set_ylim(min(lo, 0.0) - pad, max(hi, 0.0) + pad)
+            ax.set_ylim(*ylim)
 
     # -- the speed ------------------------------------------------------------------
     def _on_speed(self, change):

@@ -360,3 +360,17 @@ def test_the_torque_panel_keeps_its_labels_inside_its_cell(name):
     assert ax.yaxis.label.get_text() and ax.xaxis.label.get_text() and ax.title.get_text()
     box = ax.get_tightbbox(renderer)  # what is drawn: labels, title, the tick labels inside the limits
     assert cell.x0 - 0.5 <= box.x0 and box.x1 <= cell.x1 + 0.5 and cell.y0 - 0.5 <= box.y0 and box.y1 <= cell.y1 + 0.5
+
+
+def test_the_torque_curve_follows_the_frame_number_and_keeps_a_flat_curve_inside():
+    """A book that numbers the frame 0 reads T01 on the curve; a gear pair's constant torque sits off the edge."""
+    from graphkin.problem import parse_problem
+    from tests.test_handout_numbering import DYNAMIC_CYCLE
+
+    ex = Explorer(parse_problem(DYNAMIC_CYCLE, file="frame0.toml"))
+    assert ex.ax_torque.get_ylabel().startswith("T01") and "T01" in ex.ax_torque.get_title()
+    gears = Explorer(catalog.load("gearset"))
+    T = gears.cycle.torque[np.isfinite(gears.cycle.torque)]
+    lo, hi = gears.ax_torque.get_ylim()
+    span = hi - lo
+    assert lo + 0.05 * span < T.min() and T.max() < hi - 0.05 * span
