@@ -24,19 +24,31 @@ cutter's masses on links 2, 3 and 4, is analysed at n = 360, 3600 and
      accelerations only; no forces): ``pylinkage_side.time_pylinkage(n)``,
      the public ``Linkage.step_fast_with_kinematics``; 5b is the bare
      numba kernel (pylinkage's floor), for information
+  6  the whole force analysis of row 2 as one hand-written numba loop
+     (``numba_floor.py``): the floor for row 2, for information
 
 Every time is the best of k runs with ``time.perf_counter`` after a warm-up
 (garbage collector off while timing, as ``timeit`` does); k is chosen per
 row so the whole script takes well under 60 s.
 
+Then row 2 alone at n = 10^4, 10^5 and 10^6: time per position, minor page
+faults and kernel (system) time per call (``getrusage``), and at n = 10^6
+the bytes a result keeps per position (``tracemalloc``: what is still
+allocated while the result is held) and the peak on the way.
+
 Before timing it checks that graphkin and pylinkage both reproduce the
 closed-form ``pylinkage_side.reference_kinematics`` (so both sides analyse
 the same linkage), that graphkin's force answers agree between rows 2, 3
-and 4, and that B is above the ground line.
+and 4 and with row 6, and that B is above the ground line.
 
-The aims (from the issue) are printed with MET / NOT MET:
-  * whole force analysis (row 2) <= pylinkage kinematics (row 5) at n = 3600 and 100 000
-  * whole force analysis (row 2) <= 0.5 ms at n = 360
+The aims (issue 15) are printed with MET / NOT MET:
+  * whole force analysis (row 2) <= pylinkage kinematics (row 5) at each n timed (360, 3600, 100 000)
+  * whole force analysis (row 2) <= 0.15 ms at n = 360
+  * whole force analysis (row 2) <= 0.5 x pylinkage kinematics at n = 3600 and 100 000
+  * row 2's time per position does not grow from n = 10^4 to 10^6 (within 10 %), beyond the time to
+    allocate and write arrays as large as its result (at 10^6 that memory is new to the process on every
+    call, for any solver that returns new arrays; at 10^4 the allocator hands back the last call's)
+  * a result keeps <= 150 bytes per position at n = 10^6
 
 It measures, it does not judge: the exit code is always 0.
 """
@@ -48,8 +60,10 @@ import gc
 import math
 import os
 import platform
+import resource
 import sys
 import time
+import tracemalloc
 from pathlib import Path
 
 import numpy as np
@@ -66,7 +80,11 @@ from graphkin.solve.matrix import solve_matrix  # noqa: E402
 
 N_SIZES = ps.N_SIZES  # (360, 3600, 100_000)
 LOOP_SIZES = (360, 3600)  # the Python loop is extrapolated beyond these
-AIM_360_S = 0.5e-3
+SCALING_SIZES = (10_000, 100_000, 1_000_000)
+AIM_360_S = 0.15e-3
+AIM_RATIO = 0.5  # of pylinkage's kinematics, at n = 3600 and 100 000
+AIM_GROWTH = 1.10  # ns per position at 10^6 over that at 10^4
+AIM_BYTES = 150  # kept per position at 10^6
 BUDGET_S = 1.5  # wall time allowed per (row, n) measurement, beyond warm-up
 K_MIN, K_MAX = 3, 200
 
@@ -153,6 +171,64 @@ def time_pylinkage(n: int, api: str = "linkage"):
     one = ps.time_pylinkage(n, repeat=1, api=api)  # second warm-up, and an estimate
     k = int(min(K_MAX, max(K_MIN, BUDGET_S / max(one, 1e-9))))
     return ps.time_pylinkage(n, repeat=k, api=api), k
+
+
+def time_floor(n: int):
+    """(best time [s], k) of the hand-written numba loop (numba_floor.py), k sized to the budget."""
+    import numba_floor
+
+    theta = ps.crank_angles(n)
+    return best_of(numba_floor.floor, theta)
+
+
+def scaling(n: int) -> dict:
+    """Row 2 at n positions: best time, and minor page faults and kernel time per call."""
+    theta = ps.crank_angles(n)
+    best, k = best_of(graphkin_full, theta, budget=BUDGET_S, k_max=50)
+    before = resource.getrusage(resource.RUSAGE_SELF)
+    for _ in range(k):
+        graphkin_full(theta)
+    after = resource.getrusage(resource.RUSAGE_SELF)
+    return {"time": best, "k": k, "faults": (after.ru_minflt - before.ru_minflt) / k,
+            "kernel": (after.ru_stime - before.ru_stime) / k}
+
+
+def _owned_dtypes() -> list:
+    """The dtypes of the arrays of n values a result of row 2 keeps (its forces, effort, masks and inputs)."""
+    r = graphkin_full(ps.crank_angles(10))
+    kin = r.kinematics
+    arrays = [F.base if F.base is not None else F for F in r.forces.values()]
+    arrays += [r.effort, r.valid, kin.valid, kin.q, kin.q_dot, kin.q_ddot]
+    return [a.dtype for a in arrays]
+
+
+def fresh_result(n: int, dtypes) -> float:
+    """Best time [s] to allocate and write arrays as large as a result of row 2 (a lower bound for any
+    solver that returns new arrays: at large n this memory is new to the process every time)."""
+
+    def write():
+        out = [np.empty(n, dt) for dt in dtypes]
+        for a in out:
+            a.fill(1)
+
+    return best_of(write, budget=0.5, k_max=50)[0]
+
+
+def kept_bytes(n: int) -> tuple[float, float]:
+    """(bytes still allocated per position while the result is held, peak per position on the way)."""
+    theta = ps.crank_angles(n)
+    graphkin_full(theta[:10])
+    gc.collect()
+    tracemalloc.start()
+    try:
+        start = tracemalloc.get_traced_memory()[0]
+        result = graphkin_full(theta)
+        gc.collect()
+        kept, peak = tracemalloc.get_traced_memory()
+    finally:
+        tracemalloc.stop()
+    del result
+    return (kept - start) / n, (peak - start) / n
 
 
 # ---------------------------------------------------------------------------
@@ -293,6 +369,17 @@ def main() -> int:
         )
     )  # fmt: skip
 
+    try:
+        import numba_floor
+
+        numba_floor.prepare()
+        have_floor = True
+        print(f"same as the numba floor (row 6)? max |numba - graphkin| / max |graphkin| over T12 and every joint "
+              f"force, n=3600: {numba_floor.max_difference(3600):.1e}")
+    except Exception as exc:  # no numba: no floor
+        have_floor = False
+        print(f"numba floor (row 6) not available: {type(exc).__name__}: {exc}")
+
     # -- timings ------------------------------------------------------------
     rows = [
         ("1", "graphkin solve_kinematics (pos, vel, acc)"),
@@ -301,6 +388,7 @@ def main() -> int:
         ("4", "solve_matrix(result): assemble + np.linalg.solve"),
         ("5", "pylinkage numba kinematics (public API)"),
         ("5b", "pylinkage bare numba kernel (floor)"),
+        ("6", "row 2 as a hand-written numba loop (floor)"),
     ]
     T: dict[tuple[str, int], float | None] = {}
     K: dict[tuple[str, int], str] = {}
@@ -317,6 +405,7 @@ def main() -> int:
             extrapolated.add(n)
         result = graphkin_full(theta)
         T["4", n], k4 = best_of(solve_matrix, result)
+        del result
         K.update({("1", n): k1, ("2", n): k2, ("3", n): k3, ("4", n): k4})
         if have_pylinkage:
             T["5", n], K["5", n] = time_pylinkage(n)
@@ -324,6 +413,10 @@ def main() -> int:
         else:
             T["5", n] = T["5b", n] = None
             K["5", n] = K["5b", n] = 0
+        if have_floor:
+            T["6", n], K["6", n] = time_floor(n)
+        else:
+            T["6", n], K["6", n] = None, 0
 
     w = 50
     print("\ntimes: best of k runs, milliseconds (k in brackets; ~ = extrapolated, not run)")
@@ -341,38 +434,67 @@ def main() -> int:
             else:
                 cells.append(f"{_fmt_ms(t):>12}{'[' + str(K[key, n]) + ']':>7}")
         print(f"{key:<3}{label:<{w}}" + "".join(cells))
-    print("\nper position, microseconds")
+    print("\nper position, nanoseconds")
     for key, label in rows:
         cells = []
         for n in N_SIZES:
             t = T[key, n]
-            cells.append(f"{'n/a' if t is None else ('~' if key == '3' and n in extrapolated else '') + format(t / n * 1e6, '.3f'):>19}")
+            cells.append(f"{'n/a' if t is None else ('~' if key == '3' and n in extrapolated else '') + format(t / n * 1e9, ',.1f'):>19}")
         print(f"{key:<3}{label:<{w}}" + "".join(cells))
     print("\nratios")
     for n in N_SIZES:
         parts = [f"full/kinematics {T['2', n] / T['1', n]:.2f}", f"loop/vectorised {T['3', n] / T['2', n]:,.0f}x",
-                 f"matrix/closed-form forces {T['4', n] / max(T['2', n] - T['1', n], 1e-12):.1f}x"]  # fmt: skip
+                 f"matrix/closed-form forces {T['4', n] / T['2', n]:.1f}x"]  # fmt: skip
         if T["5", n] is not None:
             parts.append(f"graphkin full/pylinkage kinematics {T['2', n] / T['5', n]:.2f}")
             parts.append(f"graphkin kinematics/pylinkage kinematics {T['1', n] / T['5', n]:.2f}")
+        if T["6", n] is not None:
+            parts.append(f"graphkin full/numba floor {T['2', n] / T['6', n]:.1f}x")
         print(f"  n={n:>6}: " + ", ".join(parts))
     if extrapolated:
         print(f"  row 3 at n={', '.join(format(n, ',') for n in sorted(extrapolated))}: extrapolated linearly from the "
               f"n={max(LOOP_SIZES)} per-position time (not run: it would take that long)")  # fmt: skip
 
+    # -- row 2 at large n: time per position, page faults, memory -----------
+    print("\nrow 2 at large n: best time, per position, and per call: minor page faults, kernel time; then the time")
+    print("to allocate and write arrays as large as its result (new memory at 10^6, whoever computes it)")
+    S = {n: scaling(n) for n in SCALING_SIZES}
+    dtypes = _owned_dtypes()
+    for n, x in S.items():
+        x["fresh"] = fresh_result(n, dtypes)
+        print(f"  n={n:>9,}: {_fmt_ms(x['time']):>9} ms [{x['k']}]  {x['time'] / n * 1e9:6.1f} ns/position  "
+              f"{x['faults']:8,.0f} faults  {x['kernel'] * 1e3:6.2f} ms kernel   result's memory "
+              f"{x['fresh'] / n * 1e9:5.1f} ns/position")
+    kept, peak = kept_bytes(max(SCALING_SIZES))
+    print(f"  n={max(SCALING_SIZES):>9,}: a result keeps {kept:.0f} bytes per position (outputs: 72), "
+          f"peak {peak:.0f} bytes per position on the way; max resident {_max_rss_mb():.0f} MB")
+
     # -- aims ---------------------------------------------------------------
-    print("\naims (from the issue)")
+    print("\naims (issue 15)")
+
+    def verdict(ok):
+        return "MET" if ok else "NOT MET"
+
     t = T["2", 360]
-    print(f"  whole force analysis ≤ 0.5 ms at n=360: {t * 1e3:.3f} ms ≤ 0.500 ms -> {'MET' if t <= AIM_360_S else 'NOT MET'}")
-    for n in (3600, 100_000):
+    print(f"  whole force analysis ≤ 0.15 ms at n=360: {t * 1e3:.3f} ms -> {verdict(t <= AIM_360_S)}")
+    for n in N_SIZES:
         if T["5", n] is None:
             print(f"  whole force analysis ≤ pylinkage kinematics at n={n:,}: n/a (pylinkage not available)")
             continue
         a, b = T["2", n], T["5", n]
-        verdict = "MET" if a <= b else "NOT MET"
-        print(f"  whole force analysis ≤ pylinkage kinematics at n={n:,}: {a * 1e3:.3f} ms vs {b * 1e3:.3f} ms -> {verdict}")
+        aim = 1.0 if n == 360 else AIM_RATIO
+        print(f"  whole force analysis ≤ {aim:g} × pylinkage kinematics at n={n:,}: {a * 1e3:.3f} ms vs "
+              f"{b * 1e3:.3f} ms ({a / b:.2f}) -> {verdict(a <= aim * b)}")
+    lo, hi = ((S[n]["time"] - S[n]["fresh"]) / n for n in (min(SCALING_SIZES), max(SCALING_SIZES)))
+    print(f"  no growth in time per position from n=10^4 to 10^6, beyond writing the result's own memory: "
+          f"{lo * 1e9:.1f} -> {hi * 1e9:.1f} ns ({hi / lo:.2f}) -> {verdict(hi <= AIM_GROWTH * lo)}")
+    print(f"  ≤ {AIM_BYTES} bytes kept per position at n=10^6: {kept:.0f} -> {verdict(kept <= AIM_BYTES)}")
     print(f"\n(total benchmark time {time.perf_counter() - t_start:.1f} s)")
     return 0
+
+
+def _max_rss_mb() -> float:
+    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
 
 
 if __name__ == "__main__":

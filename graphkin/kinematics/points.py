@@ -69,7 +69,9 @@ def rigid_body(r_A, v_A, a_A, omega, alpha, r_P) -> tuple[np.ndarray, np.ndarray
     """
     r = as_z(r_P) - as_z(r_A)
     w, al = np.asarray(omega, dtype=float), np.asarray(alpha, dtype=float)
-    return as_xy(as_z(v_A) + 1j * w * r), as_xy(as_z(a_A) + (1j * al - w**2) * r)
+    # At a dead point ω and α are infinite: nan there, by design (the position is not valid), not a warning.
+    with np.errstate(invalid="ignore", over="ignore"):
+        return as_xy(as_z(v_A) + 1j * w * r), as_xy(as_z(a_A) + (1j * al - w**2) * r)
 
 
 def point_motion(kin, link: int, point) -> PointMotion:

@@ -61,6 +61,13 @@ class Kinematics:
         True for a static force analysis: the solvers leave out every inertia
         load (−m a_G, −I_G α); the motion still gives the sense of sliding for
         Coulomb friction.
+    loops : dict of int to tuple
+        For each RRR dyad (by its index in ``groups``), the loop the kinematic
+        pass solved: the joints' points, the arms, the size of the
+        determinant. The force analysis reuses them, so that it gives the same
+        numbers to the last digit whether it is called on these kinematics or
+        through :func:`graphkin.solve.solve`. Empty once values are given
+        (:meth:`with_given`).
     """
 
     mechanism: Mechanism
@@ -79,6 +86,7 @@ class Kinematics:
     groups: tuple = ()
     given: Mapping[tuple, np.ndarray] = field(default_factory=dict)
     static: bool = False
+    loops: Mapping[int, tuple] = field(default_factory=dict, repr=False, compare=False)
 
     @property
     def n(self) -> int:
@@ -126,7 +134,7 @@ class Kinematics:
             r = O[link] - X
             v_O[link] = v_X + 1j * w * r
             a_O[link] = a_X + (1j * al - w**2) * r
-        return replace(self, theta=theta, e=e, O=O, v_O=v_O, a_O=a_O, given=dict(given))
+        return replace(self, theta=theta, e=e, O=O, v_O=v_O, a_O=a_O, given=dict(given), loops={})
 
     def anchor(self, link: int) -> str | None:
         """The pin link ``link`` is turned about when its angle is given: its revolute joint to a link located before it."""
@@ -154,12 +162,16 @@ class Kinematics:
             return as_z(self.given[(link, "at", point)])
         return self.O[link] + self.e[link] * self._p(link, point)
 
+    # At a dead point ω and α are infinite and a position that cannot be assembled is nan: their
+    # products are nan there, by design (``valid`` says so), not a floating-point warning.
     def z_velocity(self, link: int, point) -> np.ndarray:
-        return self.v_O[link] + 1j * self.omega[link] * (self.e[link] * self._p(link, point))
+        with np.errstate(invalid="ignore", over="ignore"):
+            return self.v_O[link] + 1j * self.omega[link] * (self.e[link] * self._p(link, point))
 
     def z_acceleration(self, link: int, point) -> np.ndarray:
         r = self.e[link] * self._p(link, point)
-        return self.a_O[link] + (1j * self.alpha[link] - self.omega[link] ** 2) * r
+        with np.errstate(invalid="ignore", over="ignore"):
+            return self.a_O[link] + (1j * self.alpha[link] - self.omega[link] ** 2) * r
 
     def z_G(self, link: int) -> np.ndarray:
         return self.z(link, self.mechanism.link(link).G)

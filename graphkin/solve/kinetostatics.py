@@ -14,22 +14,28 @@ the sign of the normal force N. Each group is solved for every sign
 assumption of its friction pairs, and at each position the assumption that
 the solution confirms is kept (a position where none does is self-locking
 and reported invalid).
+
+The revolute crank and the RRR dyad have compiled steps (built once per
+mechanism, :mod:`graphkin.kinematics.plan`) that reuse the loop the kinematic
+pass solved; the other groups run the general code. A large batch is solved
+:data:`~graphkin.kinematics.dyads.CHUNK` positions at a time.
 """
 
 from __future__ import annotations
 
 import itertools
+from dataclasses import replace
 
 import numpy as np
 
 from ..errors import GraphkinError
-from ..kinematics import Dyad, DriverGroup, GearGroup, Kinematics, solve_kinematics
-from ..kinematics.dyads import solve_columns
-from ..geometry import as_xy
+from ..kinematics import Dyad, DriverGroup, GearGroup, Kinematics
+from ..kinematics.dyads import CHUNK, _run, deferred_kinematics, prepare, solve_columns
+from ..kinematics.plan import Plan, plan_of
 from ..geometry import zcross as cross
 from ..geometry import zdot as dot
 from ..model import Mechanism, Prismatic, Revolute
-from .loads import _known
+from .loads import _external_fast, _inertia_fast, _known, load_specs
 from .result import ForceAnalysis
 
 
@@ -162,68 +168,6 @@ def _friction_joints(d: Dyad):
     return [i for i, J in enumerate(d.joints) if isinstance(J, Prismatic) and J.mu > 0]
 
 
-def solve_forces(kin: Kinematics) -> ForceAnalysis:
-    """Joint forces and driving effort for known kinematics (all positions at once).
-
-    Parameters
-    ----------
-    kin : Kinematics
-        From :func:`graphkin.kinematics.solve_kinematics`, possibly with given values.
-
-    Returns
-    -------
-    ForceAnalysis
-    """
-    if not isinstance(kin, Kinematics):
-        raise GraphkinError(f"solve_forces takes the Kinematics of a mechanism (solve_kinematics(...) or "
-                            f"problem.kinematics()), got {type(kin).__name__}")
-    mech = kin.mechanism
-    n = kin.n
-    L, M = {}, {}
-    for link in mech.moving:
-        L[link], M[link] = _known(kin, link)
-    forces, normal, couple = {}, {}, {}
-    failures: dict[str, np.ndarray] = {}
-    effort = None
-
-    def apply(reactions):
-        for r in reactions:
-            i, j = r.joint.links
-            other = i if r.on == j else j
-            key = (min(i, j), max(i, j))
-            sign = 1.0 if r.on == key[1] else -1.0
-            forces[key] = as_xy(sign * r.F)
-            if r.N is not None:
-                normal[key] = sign * r.N
-                couple[key] = sign * r.C
-            if other != mech.frame:
-                # On the other link the reaction acts at that link's own pin (the same point, unless an angle is given).
-                X = kin.z(other, r.joint.point) if isinstance(r.joint, Revolute) else r.X
-                L[other] = L[other] - r.F
-                M[other] = M[other] - cross(X, r.F) - (r.C if r.C is not None else 0.0)
-
-    # Invalid positions carry nan through the arithmetic, by design.
-    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        for g in reversed(kin.groups):
-            if isinstance(g, DriverGroup):
-                reactions, effort = _driver(kin, g, L, M)
-            elif isinstance(g, GearGroup):
-                reactions = _gear(kin, g, L, M)
-            else:
-                reactions = _solve_dyad_with_friction(kin, g, L, M, failures)
-            apply(reactions)
-
-    valid = kin.valid & np.isfinite(effort)
-    for F in forces.values():
-        valid &= np.isfinite(F[:, 0]) & np.isfinite(F[:, 1])
-    for where in failures.values():
-        valid &= ~where
-    dead = kin.valid & ~valid & ~np.logical_or.reduce([w for w in failures.values()] or [np.zeros(n, bool)])
-    if dead.any():
-        failures["the force equations are singular (dead point)"] = dead
-    return ForceAnalysis(kin, forces, normal, couple, effort, valid, failures)
-
-
 def _solve_dyad_with_friction(kin, d, L, M, failures):
     fj = _friction_joints(d)
     if not fj:
@@ -260,6 +204,332 @@ def _solve_dyad_with_friction(kin, d, L, M, failures):
     return chosen
 
 
+# -- the compiled force analysis ---------------------------------------------------------------------------
+# Without values given in place of the derived ones (Kinematics.with_given), the revolute crank and the RRR
+# dyad -- the four-bar's groups -- are solved by compiled steps that take their links' inertia loads into
+# account themselves, as moments about the dyad's middle pin or the crank's pivot, from the arms and rates of
+# the kinematic pass (or from the Kinematics, worked out once). Loads from elsewhere (external loads, weight,
+# the reactions of groups solved before) arrive in L (force) and M (moment about the origin); a link with none
+# has no entry, and costs nothing.
+
+
+def _add(d, key, x):
+    """d[key] += x, an absent entry being 0."""
+    d[key] = x if key not in d else d[key] + x
+
+
+def _sub(d, key, x):
+    """d[key] −= x, an absent entry being 0."""
+    d[key] = -x if key not in d else d[key] - x
+
+
+def _rrr(plan: Plan, mech: Mechanism, d: Dyad):
+    """The RRR dyad's reactions F1 (a on j), F2 (j on k), F3 (b on k), in closed form, inertia included."""
+    P, frame = plan.points, plan.frame
+    a, b, j, k = d.a, d.b, d.j, d.k
+    pa, pb, pk2 = P[a, d.J1.point], P[b, d.J3.point], P[k, d.J2.point]
+    bj, bk = mech.link(j), mech.link(k)
+    # Rows j and k: G from the outer pin (J1 on j, J3 on k) in the link's frame, −m, I_G.
+    G_out = np.array([[complex(*bj.G) - P[j, d.J1.point]], [complex(*bk.G) - P[k, d.J3.point]]])
+    minus_m = np.array([[-bj.mass], [-bk.mass]])
+    I_G = np.array([[bj.I_G], [bk.I_G]])
+    heavy = bool(bj.mass or bk.mass or bj.I_G or bk.I_G)
+    sigma = mech.assembly.get(d.key, 1)  # det = r12 × r23 = −σ |det|; the force equations' is −det
+    sign1 = 1.0 if j > a else -1.0  # stored as the force of the lower-numbered link on the higher
+    sign2 = 1.0 if k > j else -1.0
+    sign3 = 1.0 if k > b else -1.0
+    keys = ((min(a, j), max(a, j)), (min(j, k), max(j, k)), (min(b, k), max(b, k)))
+
+    def from_kinematics(kin):
+        """The loop (see :func:`graphkin.kinematics.dyads._rrr_step`) from kinematics that do not have it."""
+        X1 = pa if a == frame else kin.O[a] + kin.e[a] * pa
+        X3 = pb if b == frame else kin.O[b] + kin.e[b] * pb
+        X2 = kin.O[k] + kin.e[k] * pk2
+        R = np.stack([X2 - X1, X3 - X2])
+        a1 = None if a == frame else _acceleration(kin, a, pa)
+        a3 = None if b == frame else _acceleration(kin, b, pb)
+        return X1, X2, X3, R, cross(R[0], R[1]) * -sigma, a1, a3  # "size" σ·(−det), the kinematic pass's |det|
+
+    def forces(kin, L, M, out, loop):
+        X1, X2, X3, R, size, a1, a3, *rows = from_kinematics(kin) if loop is None else loop
+        E, W, AL = rows or (np.stack([kin.e[j], kin.e[k]]), np.stack([kin.omega[j], kin.omega[k]]),
+                            np.stack([kin.alpha[j], kin.alpha[k]]))
+        W2 = W * W
+        r12, r23 = R
+        if heavy and not kin.static:
+            # a_G = a(outer pin) + (iα − ω²) ρ with ρ from the pin to G; F = −m a_G.
+            rho = E * G_out
+            A = (1j * AL - W2) * rho
+            if a1 is not None:
+                A[0] += a1
+            if a3 is not None:
+                A[1] += a3
+            F = A * minus_m
+            # Moments about the middle pin: G − X2 = ρ − r12 on j, ρ + r23 on k.
+            rho[0] -= r12
+            rho[1] += r23
+            Mg = cross(rho, F)
+            Mg -= AL * I_G
+            Fj, Fk, Mj, Mk = F[0], F[1], Mg[0], Mg[1]
+        else:
+            Fj = Fk = Mj = Mk = 0.0
+        # Loads from elsewhere: moments about the origin shifted to the middle pin.
+        if j in L:
+            Fj = Fj + L[j]
+            Mj = Mj - cross(X2, L[j])
+        if j in M:
+            Mj = Mj + M[j]
+        if k in L:
+            Fk = Fk + L[k]
+            Mk = Mk - cross(X2, L[k])
+        if k in M:
+            Mk = Mk + M[k]
+        # Moments of j and of k about the middle pin and the dyad's force sum, by Cramer's rule:
+        # cross(r12, F1) = Mj and cross(r23, F1) = Mk + cross(r23, S), S = −(Fj + Fk) = F1 + F3.
+        T = Fj + Fk
+        ndet = size if sigma > 0 else -size
+        b3 = Mk - cross(r23, T)
+        F1 = (b3 * r12 - Mj * r23) / ndet
+        F3 = -(T + F1)
+        F2 = F1 + Fj
+        for key, sign, F in zip(keys, (sign1, sign2, sign3), (F1, F2, F3)):
+            out[key] = F if sign > 0 else -F
+        if a != frame:
+            _sub(L, a, F1)
+            _add(M, a, cross(F1, X1))
+        if b != frame:
+            _sub(L, b, F3)
+            _add(M, b, cross(F3, X3))
+
+    return forces
+
+
+def _acceleration(kin, link, p):
+    """Acceleration of the point p (local, complex) of a moving link."""
+    w = kin.omega[link]
+    return kin.a_O[link] + (1j * kin.alpha[link] - w * w) * (kin.e[link] * p)
+
+
+def _crank(plan: Plan, mech: Mechanism, g: DriverGroup):
+    """The crank's pivot force (frame on crank) and the driving torque, its inertia included."""
+    link, name = g.link, g.joint.point
+    X = plan.points[plan.frame, name]
+    p0 = plan.points[link, name]
+    body = mech.link(link)
+    m, I_G, G = body.mass, body.I_G, complex(*body.G) - p0  # G from the pivot, in the crank's frame
+    key = (min(plan.frame, link), max(plan.frame, link))
+
+    def forces(kin, L, M, out, loop):
+        F, T = L.get(link, 0.0), M.get(link, 0.0)  # loads from elsewhere; T about the origin
+        if not kin.static:
+            if m and G:
+                w, al = kin.omega[link], kin.alpha[link]
+                rho = kin.e[link] * G
+                Fi = (1j * al - w * w) * rho * -m
+                F = F + Fi
+                T = T + cross(X + rho, Fi)
+            if I_G:
+                al0 = getattr(kin, "al0", None)  # the solver's state knows a constant input acceleration
+                T = T - (kin.alpha[link] if al0 is None else al0) * I_G
+        # The pivot's force balances the rest; the driving torque balances the moments about the origin.
+        F = -F
+        out[key] = F if link > plan.frame else -F
+        return -(T + cross(X, F)) if X else -T
+
+    return forces
+
+
+def _program(plan: Plan, mech: Mechanism) -> list:
+    """Per group, in reverse order: a compiled force step, or None for the general code."""
+    steps = plan.compiled.get("forces")
+    if steps is None:
+        steps = []
+        for g in reversed(plan.groups):
+            if isinstance(g, DriverGroup) and isinstance(g.joint, Revolute):
+                steps.append(_crank(plan, mech, g))
+            elif isinstance(g, Dyad) and g.type == "RRR":
+                steps.append(_rrr(plan, mech, g))
+            else:
+                steps.append(None)
+        plan.compiled["forces"] = steps
+        plan.compiled["general"] = None in steps
+    return steps
+
+
+def _apply(kin, mech, reactions, L, M, forces, normal, couple):
+    """Store a group's reactions and pass them on, as loads, to the links located before it."""
+    for r in reactions:
+        i, j = r.joint.links
+        other = i if r.on == j else j
+        key = (min(i, j), max(i, j))
+        sign = 1.0 if r.on == key[1] else -1.0
+        forces[key] = sign * r.F
+        if r.N is not None:
+            normal[key] = sign * r.N
+            couple[key] = sign * r.C
+        if other != mech.frame:
+            # On the other link the reaction acts at that link's own pin (the same point, unless an angle is given).
+            X = kin.z(other, r.joint.point) if isinstance(r.joint, Revolute) else r.X
+            _sub(L, other, r.F)
+            _sub(M, other, cross(X, r.F) + (r.C if r.C is not None else 0.0))
+
+
+def _pass(kin, plan: Plan, kin_valid, loops):
+    """Every joint force (complex), normal and couple, the effort, where it is valid and why not, for one batch.
+
+    ``kin`` is a Kinematics, or (inside :func:`solve`, when every group has a compiled step) the kinematic
+    pass's own state, which has the same per-link fields; ``loops`` is what that pass kept for the RRR dyads
+    (:attr:`Kinematics.loops`), by group index.
+    """
+    mech = kin.mechanism
+    n = kin.n
+    L, M = {}, {}
+    forces, normal, couple = {}, {}, {}
+    failures: dict[str, np.ndarray] = {}
+    effort = None
+    steps = _program(plan, mech)
+    if kin.given:  # values read off a drawing: the general code, point by point
+        loops = {}
+        for link in plan.moving:
+            L[link], M[link] = _known(kin, link)
+        steps = [None] * len(steps)
+    else:
+        specs = load_specs(plan, mech)
+        for link in plan.moving:
+            _external_fast(kin, link, specs[link], L, M)
+    last = len(plan.groups) - 1
+    for index, (g, step) in enumerate(zip(reversed(plan.groups), steps)):
+        if step is not None:
+            done = step(kin, L, M, forces, loops.get(last - index))
+            if isinstance(g, DriverGroup):
+                effort = done
+            continue
+        if not kin.given:
+            for link in g.links:
+                _inertia_fast(kin, link, specs[link], L, M)
+                if link not in L:
+                    L[link] = np.zeros(n, complex)
+                if link not in M:
+                    M[link] = np.zeros(n)
+        if isinstance(g, DriverGroup):
+            reactions, effort = _driver(kin, g, L, M)
+        elif isinstance(g, GearGroup):
+            reactions = _gear(kin, g, L, M)
+        else:
+            reactions = _solve_dyad_with_friction(kin, g, L, M, failures)
+        _apply(kin, mech, reactions, L, M, forces, normal, couple)
+
+    effort = _full(effort, n, float)
+    for key, F in forces.items():
+        forces[key] = _full(F, n, complex)
+    # One sum is non-finite wherever a force or the effort is (where it is not finite, or in theory
+    # overflows, each is checked on its own).
+    total = effort
+    for F in forces.values():
+        if total is effort:
+            total = effort + F
+        else:
+            total += F
+    ok = np.isfinite(total)
+    if failures or not ok.all():
+        valid = np.isfinite(effort)
+        for F in forces.values():
+            valid &= np.isfinite(F)
+        valid &= kin_valid
+        for where in failures.values():
+            valid &= ~where
+        dead = kin_valid & ~valid & ~np.logical_or.reduce([w for w in failures.values()] or [np.zeros(n, bool)])
+        if dead.any():
+            failures["the force equations are singular (dead point)"] = dead
+    else:
+        valid = kin_valid.copy()
+    return forces, normal, couple, effort, valid, failures
+
+
+def _full(x, n, dtype):
+    """x as an array of shape (n,): a constant (a link with no load at all) repeated."""
+    if type(x) is np.ndarray and x.shape == (n,):
+        return x
+    x = np.asarray(x)
+    return np.full(n, x, dtype=np.result_type(x, dtype))
+
+
+class _Merged:
+    """The results of a force analysis done CHUNK positions at a time, put together."""
+
+    def __init__(self, n):
+        self.n = n
+        self.parts = None
+
+    def add(self, s, t, part):
+        forces, normal, couple, effort, valid, failures = part
+        n = self.n
+        if self.parts is None:
+            def alloc(d, dtype):
+                return {key: np.empty(n, dtype) for key in d}
+            self.parts = (alloc(forces, complex), alloc(normal, float), alloc(couple, float), np.empty(n),
+                          np.empty(n, bool), {})
+        out = self.parts
+        for dst, src in zip(out[:3], (forces, normal, couple)):
+            for key, x in src.items():
+                dst[key][s:t] = x
+        out[3][s:t] = effort
+        out[4][s:t] = valid
+        for why, where in failures.items():
+            out[5].setdefault(why, np.zeros(n, bool))[s:t] = where
+
+
+_XY = np.dtype((np.float64, (2,)))
+"""A complex number seen as its (x, y): a complex array of shape (n,) is the same memory as an (n, 2) array."""
+
+
+def _result(kin: Kinematics, parts) -> ForceAnalysis:
+    forces, normal, couple, effort, valid, failures = parts
+    return ForceAnalysis(kin, {key: F.view(_XY) for key, F in forces.items()}, normal, couple, effort, valid, failures)
+
+
+def _slice(kin: Kinematics, s: int, t: int) -> Kinematics:
+    def cut(d):
+        return {key: x[s:t] for key, x in d.items()}
+
+    loops = {index: tuple(x[..., s:t] if isinstance(x, np.ndarray) else x for x in loop)
+             for index, loop in kin.loops.items()}
+    return Kinematics(kin.mechanism, kin.q[s:t], kin.q_dot[s:t], kin.q_ddot[s:t], cut(kin.theta), cut(kin.omega),
+                      cut(kin.alpha), cut(kin.e), cut(kin.O), cut(kin.v_O), cut(kin.a_O), kin.valid[s:t], {},
+                      kin.groups, cut(kin.given), kin.static, loops)
+
+
+def solve_forces(kin: Kinematics) -> ForceAnalysis:
+    """Joint forces and driving effort for known kinematics (all positions at once).
+
+    Parameters
+    ----------
+    kin : Kinematics
+        From :func:`graphkin.kinematics.solve_kinematics`, possibly with given values.
+
+    Returns
+    -------
+    ForceAnalysis
+    """
+    if not isinstance(kin, Kinematics):
+        raise GraphkinError(f"solve_forces takes the Kinematics of a mechanism (solve_kinematics(...) or "
+                            f"problem.kinematics()), got {type(kin).__name__}")
+    plan = plan_of(kin.mechanism)
+    n = kin.n
+    if kin.loops and kin.groups != plan.groups:  # kinematics of another mechanism's structure: no reuse
+        kin = replace(kin, loops={})
+    # Invalid positions carry nan through the arithmetic, by design.
+    with np.errstate(all="ignore"):
+        if n <= CHUNK:
+            return _result(kin, _pass(kin, plan, kin.valid, kin.loops))
+        merged = _Merged(n)
+        for s in range(0, n, CHUNK):
+            t = min(n, s + CHUNK)
+            part = _slice(kin, s, t)
+            merged.add(s, t, _pass(part, plan, part.valid, part.loops))
+    return _result(kin, merged.parts)
+
+
 def solve(mech: Mechanism, q, q_dot=0.0, q_ddot=0.0, *, static: bool = False) -> ForceAnalysis:
     """Kinematics and kinetostatics in one call.
 
@@ -275,8 +545,33 @@ def solve(mech: Mechanism, q, q_dot=0.0, q_ddot=0.0, *, static: bool = False) ->
     Returns
     -------
     ForceAnalysis
+        Its ``kinematics`` are worked out again, the same, when first read: the result keeps only the
+        forces, the effort and where they are valid (about 100 bytes a position).
     """
-    from dataclasses import replace
-
-    kin = solve_kinematics(mech, q, q_dot, q_ddot)
-    return solve_forces(replace(kin, static=True) if static else kin)
+    plan, q, q_dot, q_ddot, rates = prepare(mech, q, q_dot, q_ddot)
+    n = len(q)
+    _program(plan, mech)
+    general = plan.compiled["general"]
+    merged = _Merged(n) if n > CHUNK else None
+    kin_valid = np.empty(n, bool) if merged else None
+    kin_failures: dict[str, np.ndarray] = {}
+    with np.errstate(all="ignore"):
+        for s in range(0, n, CHUNK):
+            t = min(n, s + CHUNK)
+            st, valid = _run(plan, mech, q[s:t], q_dot[s:t], q_ddot[s:t], rates, angles=False)
+            st.static = static
+            # The state has the per-link fields the compiled steps read; the general code wants Kinematics.
+            kin = Kinematics(mech, st.q, st.q_dot, st.q_ddot, st.theta, st.omega, st.alpha, st.e, st.O, st.v_O,
+                             st.a_O, valid, st.failures, plan.groups, static=static) if general else st
+            part = _pass(kin, plan, valid, st.loops)
+            if merged is None:
+                kin_valid, kin_failures, parts = valid, st.failures, part
+            else:
+                merged.add(s, t, part)
+                kin_valid[s:t] = valid
+                for why, where in st.failures.items():
+                    kin_failures.setdefault(why, np.zeros(n, bool))[s:t] = where
+    if merged is not None:
+        parts = merged.parts
+    return _result(deferred_kinematics(plan, mech, q, q_dot, q_ddot, rates, kin_valid, kin_failures,
+                                       static=static), parts)

@@ -110,3 +110,62 @@ def known_loads(kin: Kinematics, link: int):
     """External loads plus inertia loads: force (n, 2) [N] and moment about the origin (n,) [N·m]."""
     F, M = _known(kin, link)
     return as_xy(np.broadcast_to(F, (kin.n,))), np.broadcast_to(M, (kin.n,)).astype(float)
+
+
+def load_specs(plan, mech) -> dict:
+    """Per moving link, what its known loads are made of, as constants (compiled once per plan).
+
+    ``(m, I_G, G, W, forces, torques)``: mass, moment of inertia, G in the link's frame (complex), the
+    weight (complex, 0 without gravity), the point forces ``(point, force, active)`` and the torques
+    ``(torque, active)`` on the link (local point and force as complex numbers).
+    """
+    specs = plan.compiled.get("loads")
+    if specs is None:
+        specs = {}
+        for link in plan.moving:
+            body = mech.link(link)
+            W = -1j * body.mass * mech.gravity if mech.gravity and body.mass else 0j
+            forces = [(plan.points[link, load.point], complex(*load.force), load.active)
+                      for load in mech.loads if load.link == link and isinstance(load, PointForce)]
+            torques = [(load.torque, load.active)
+                       for load in mech.loads if load.link == link and isinstance(load, Torque)]
+            specs[link] = (body.mass, body.I_G, complex(*body.G), W, forces, torques)
+        plan.compiled["loads"] = specs
+    return specs
+
+
+def _external_fast(kin, link: int, spec, L, M) -> None:
+    """Add a link's external loads and weight to ``L`` (force) and ``M`` (moment about the origin).
+
+    For kinematics without given values (``kin`` a Kinematics or the solver's own state), from a compiled
+    spec (:func:`load_specs`); a link with no external load gets no entry.
+    """
+    m, I_G, pG, W, forces, torques = spec
+    if W:
+        zG = kin.O[link] + kin.e[link] * pG
+        _accumulate(L, M, link, W, cross(zG, W))
+    for p, f, active in forces:
+        f = f if active is None else active.mask(kin.q) * f
+        _accumulate(L, M, link, f, cross(kin.O[link] + kin.e[link] * p, f))
+    for T, active in torques:
+        _accumulate(L, M, link, None, T if active is None else active.mask(kin.q) * T)
+
+
+def _inertia_fast(kin, link: int, spec, L, M) -> None:
+    """Add a link's inertia force −m a_G and torque −I_G α to ``L`` and ``M`` (about the origin), unless static."""
+    m, I_G, pG, W, forces, torques = spec
+    if kin.static:
+        return
+    if m:
+        r = kin.e[link] * pG
+        w = kin.omega[link]
+        F = (kin.a_O[link] + (1j * kin.alpha[link] - w * w) * r) * -m
+        _accumulate(L, M, link, F, cross(kin.O[link] + r, F))
+    if I_G:
+        _accumulate(L, M, link, None, kin.alpha[link] * -I_G)
+
+
+def _accumulate(L, M, link, F, T):
+    if F is not None:
+        L[link] = F if link not in L else L[link] + F
+    M[link] = T if link not in M else M[link] + T

@@ -46,6 +46,8 @@ class ForceAnalysis:
     Attributes
     ----------
     kinematics : Kinematics
+        The motion the forces were found from. From :func:`graphkin.solve.solve`, its per-link arrays
+        are worked out again, to the same digits, the first time one is read, rather than kept.
     forces : dict of (int, int) to ndarray, shape (n, 2)
         Force of the lower-numbered link on the higher, per joint.
     normal, couple : dict of (int, int) to ndarray, shape (n,)

@@ -1,0 +1,107 @@
+"""A mechanism's plan: its decomposition and constants, worked out once and reused by every solve.
+
+The structure of a mechanism -- which links form which dyad, in what order,
+each point's local coordinates as a complex number, each bar's length -- does
+not change from one call to the next; only the input positions do. Working it
+out again on every call was most of the cost of a solve at a few hundred
+positions. :func:`plan_of` builds it on the first call and keeps it for as long
+as the mechanism lives.
+
+A cached plan must never answer for a mechanism that has changed. A
+:class:`~graphkin.model.Mechanism` is frozen (``dataclasses.replace`` makes a
+new one, which gets its own plan), but ``object.__setattr__`` can still change
+a field in place; so the plan keeps a snapshot of the attributes of the
+mechanism and of every part it is built from (links, joints, loads, the
+driver), and is rebuilt whenever one of them no longer equals its snapshot.
+The check compares a dozen small dicts, about a microsecond.
+
+The plan holds no reference to the mechanism itself (only a weak one): the
+cache entry goes when the mechanism goes.
+"""
+
+from __future__ import annotations
+
+import weakref
+from functools import partial
+
+from ..model import Mechanism
+from .structure import decompose
+
+
+def _parts(mech: Mechanism) -> list:
+    """The objects besides the mechanism whose attributes decide the plan: every part of it."""
+    parts = [mech.driver, *mech.links, *mech.joints, *mech.loads]
+    parts += [load.active for load in mech.loads if getattr(load, "active", None) is not None]
+    return parts
+
+
+class Plan:
+    """What :func:`graphkin.kinematics.solve_kinematics` and :func:`graphkin.solve.solve_forces` reuse.
+
+    Attributes
+    ----------
+    groups : tuple
+        :func:`graphkin.kinematics.decompose` of the mechanism.
+    points : dict of (int, str) to complex
+        Every named point of every link, in the link's frame [m].
+    compiled : dict
+        Per-solver compiled steps (filled in by the solvers on first use).
+    """
+
+    __slots__ = ("ref", "own", "snapshot", "groups", "points", "frame", "moving", "compiled")
+
+    def __init__(self, mech: Mechanism):
+        # The weak reference's callback drops the cache entry when the mechanism is collected.
+        self.ref = weakref.ref(mech, partial(_forget, id(mech)))
+        # Copies of the attribute dicts: a field set in place later makes them differ. The parts are held
+        # (they are small and frozen); the mechanism is not, so that its plan goes when it goes.
+        self.own = dict(vars(mech))
+        self.snapshot = [(part, dict(vars(part))) for part in _parts(mech)]
+        self.groups = decompose(mech)
+        self.points = {(link.number, name): complex(x, y)
+                       for link in mech.links for name, (x, y) in link.points.items()}
+        self.frame = mech.frame
+        self.moving = mech.moving
+        self.compiled: dict = {}
+
+    def current(self, mech: Mechanism) -> bool:
+        """Whether this plan still describes ``mech`` (the same object, no attribute changed since)."""
+        if self.ref() is not mech or vars(mech) != self.own:
+            return False
+        for part, state in self.snapshot:
+            if vars(part) != state:
+                return False
+        return True
+
+
+_PLANS: dict[int, Plan] = {}
+"""Plans by the id of their mechanism. No lock: a dict's get, set and pop are atomic, and the worst a race
+can do is drop a plan that is then built again."""
+
+
+def _forget(key: int, ref: weakref.ref, plans=_PLANS) -> None:
+    # ``plans`` is bound here: at interpreter exit the module's globals may be gone before the last callbacks.
+    plan = plans.get(key)
+    if plan is not None and plan.ref is ref:
+        plans.pop(key, None)
+
+
+def plan_of(mech: Mechanism) -> Plan:
+    """The plan of ``mech``: cached while the mechanism lives and is unchanged, else built now.
+
+    Raises
+    ------
+    ModelError
+        If the mechanism cannot be decomposed into a driver, dyads and gear pairs.
+    """
+    key = id(mech)
+    plan = _PLANS.get(key)
+    if plan is not None and plan.current(mech):
+        return plan
+    plan = _PLANS[key] = Plan(mech)
+    return plan
+
+
+def cached_plans() -> int:
+    """How many plans are cached (for tests)."""
+    return len(_PLANS)
