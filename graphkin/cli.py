@@ -472,7 +472,9 @@ def format_cycle(cycle, data: dict) -> str:
     ends = switching_angles(cycle.problem)
     if ends:
         where = ", ".join(_where(cycle, b).split(" = ")[1] for b in ends)
-        lines.append(f"loads switch on or off at {where}: each sampled just before and just after")
+        how = ("jump (switch on or off, step in a table, or reverse with the motion)"
+               if any(ld.varies for ld in cycle.problem.mechanism.loads) else "switch on or off")
+        lines.append(f"loads {how} at {where}: each sampled just before and just after")
     e = data["effort"]
     lines += ["", f"Driving {'torque' if crank else 'force'} {name}",
               f"  peak     {val(e['max']['value'])} {unit} at {at(e['max'])}",

@@ -17,7 +17,7 @@ from typing import Any, Mapping
 import numpy as np
 
 from .errors import GraphkinError, ModelError, ProblemFileError
-from .model import Active, Driver, GearMesh, Link, Mechanism, PointForce, Prismatic, Revolute, Torque
+from .model import SENSES, Active, Driver, GearMesh, Link, Mechanism, PointForce, Prismatic, Revolute, Table, Torque
 from .model import mass as massprops
 from .model.ranges import complaint
 
@@ -34,7 +34,8 @@ _DRIVER = {
     "crank": {"type", "link", "theta", "omega", "alpha"},
     "slider": {"type", "link", "s", "v", "a"},
 }
-_LOAD = {"force": {"type", "link", "point", "force", "active", "name"}, "torque": {"type", "link", "torque", "active", "name"}}
+_LOAD = {"force": {"type", "link", "point", "force", "direction", "table", "csv", "sense", "active", "name"},
+         "torque": {"type", "link", "torque", "table", "csv", "sense", "active", "name"}}
 _GIVEN = {"omega", "alpha", "a_G", "v_G", "theta", "points"}
 _SHAPES = {
     "rod": {"type", "from", "to"},
@@ -199,6 +200,9 @@ class Problem:
 class _Reader:
     """Reads one file, keeping the file name for error messages."""
 
+    base: str | Path | None = None
+    """The file's path, where a CSV named in it is read from (None for text with no file)."""
+
     def __init__(self, file: str):
         self.file = file
 
@@ -338,10 +342,10 @@ def load_problem(source: str | Path, *, name: str | None = None) -> Problem:
         raise GraphkinError(f"load_problem: name must be a str, got {type(name).__name__} {name!r}")
     path = Path(source)
     file = name or str(path)
-    return parse_problem(read_text(path, "problem", shown=file), file=file)
+    return parse_problem(read_text(path, "problem", shown=file), file=file, base=path)
 
 
-def parse_problem(text: str, *, file: str = "<problem>") -> Problem:
+def parse_problem(text: str, *, file: str = "<problem>", base: str | Path | None = None) -> Problem:
     """Build a :class:`Problem` from TOML text.
 
     Parameters
@@ -350,6 +354,8 @@ def parse_problem(text: str, *, file: str = "<problem>") -> Problem:
         The file's text (not bytes: decode them first, or use :func:`load_problem` on the path).
     file : str, optional
         The name shown in messages.
+    base : str or Path, optional
+        The problem file's path: a load's ``csv`` table is read from its folder.
 
     Raises
     ------
@@ -369,16 +375,17 @@ def parse_problem(text: str, *, file: str = "<problem>") -> Problem:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise ProblemFileError(file, "", f"is not valid TOML ({exc})") from None
-    return build_problem(data, file=file)
+    return build_problem(data, file=file, base=base)
 
 
-def build_problem(data: Mapping[str, Any], *, file: str = "<problem>") -> Problem:
+def build_problem(data: Mapping[str, Any], *, file: str = "<problem>", base: str | Path | None = None) -> Problem:
     """Build a :class:`Problem` from a problem file's TOML already read into a dict.
 
     Exercises use it to solve a variant: the base file's data with some
     values replaced by the strings the student is shown.
     """
     rd = _Reader(file)
+    rd.base = base
     if not isinstance(data, Mapping):
         raise GraphkinError(f"build_problem takes a problem file's tables as a dict, got {type(data).__name__}")
     rd.table(dict(data), "", _TOP)
@@ -422,6 +429,10 @@ def build_problem(data: Mapping[str, Any], *, file: str = "<problem>") -> Proble
         raise rd.fail(f"driver.{speed}", f"is missing: a dynamic analysis needs the input speed, e.g. {speed} = "
                       + ('"900 rpm"' if kind == "crank" else '"2 m/s"')
                       + ' (for a linkage at rest or at negligible speed write analysis = "static")')
+    for k, load in enumerate(loads):
+        if load.sense != "fixed" and not np.any(q_dot):
+            raise rd.fail(f"loads[{k}].sense", f"{load.sense!r} follows the motion, but the input does not move: give "
+                          f"driver.{speed} (a static analysis uses it only to set such senses)")
     given = _given(rd, data.get("given", {}), mech, len(q), static)
     try:
         from .kinematics import decompose
@@ -633,10 +644,60 @@ def _load(rd, t, where, driver_kind):
                                                "; 'to' must lie above 'from'") +
                           "; leave out 'active' for a load that always acts")
     name = str(t.get("name", ""))
+    sense = t.get("sense", "fixed")
+    if sense not in SENSES:
+        raise rd.fail(f"{where}.sense", f"must be one of {', '.join(repr(x) for x in SENSES)}, got {sense!r}")
+    table = _load_table(rd, t, where, kind, driver_kind)
     if kind == "force":
-        return PointForce(link, rd.text(rd.need(t, "point", where), f"{where}.point"),
-                          rd.vec(rd.need(t, "force", where), "force", f"{where}.force"), active, name)
-    return Torque(link, rd.si(rd.need(t, "torque", where), "torque", f"{where}.torque"), active, name)
+        point = rd.text(rd.need(t, "point", where), f"{where}.point")
+        if table is None:
+            if "direction" in t:
+                raise rd.fail(f"{where}.direction", "is for a force given by a table; a constant force is "
+                              'force = ["Fx", "Fy"] (or {magnitude = "…", angle = "…"})')
+            force = rd.vec(rd.need(t, "force", where), "force", f"{where}.force")
+        else:
+            if "force" in t:
+                raise rd.fail(f"{where}.force", "a force given by a table takes its size from the table: give its line "
+                              'and positive sense with direction = "180 deg" instead')
+            a = rd.si(rd.need(t, "direction", where), "angle", f"{where}.direction")
+            force = (math.cos(a), math.sin(a))
+        return PointForce(link, point, force, active, name, table, sense)
+    if table is None:
+        return Torque(link, rd.si(rd.need(t, "torque", where), "torque", f"{where}.torque"), active, name, None, sense)
+    if "torque" in t:
+        raise rd.fail(f"{where}.torque", "a torque given by a table takes its values from the table: leave torque out")
+    return Torque(link, 1.0, active, name, table, sense)
+
+
+def _load_table(rd, t, where, kind, driver_kind):
+    """A load's ``table`` (CSV text inline) or ``csv`` (a file beside the problem file), as a :class:`Table`."""
+    from .tables import parse_table, read_csv_beside
+
+    given = [k for k in ("table", "csv") if k in t]
+    if not given:
+        return None
+    if len(given) == 2:
+        raise rd.fail(f"{where}.csv", "give the table inline (table) or in a file (csv), not both")
+    field = f"{where}.{given[0]}"
+    x = "angle" if driver_kind == "crank" else "position"
+    columns = {x: "angle" if driver_kind == "crank" else "length", kind: kind}
+    if given[0] == "table":
+        if not isinstance(t["table"], str):
+            unit = "deg" if x == "angle" else "mm"
+            raise rd.fail(field, f"must be CSV text in a TOML multi-line string: a header line such as "
+                          f"'{x} [{unit}], {kind} [{'N' if kind == 'force' else 'N*m'}]' and one row per line; "
+                          f"got {t['table']!r:.40}")
+        text, shown = t["table"], None
+    else:
+        if rd.base is None:
+            raise rd.fail(field, "a CSV table is read from the problem file's folder: load the problem from its file "
+                          "(load_problem), or give the table inline with table = \"\"\"…\"\"\"")
+        text, shown = read_csv_beside(t["csv"], rd.base, file=rd.file, field=field)
+    cols = parse_table(text, columns, file=rd.file, field=field, shown=shown)
+    try:
+        return Table(cols[x], cols[kind], periodic=driver_kind == "crank", source=shown or "")
+    except ModelError as exc:
+        raise rd.fail(field, str(exc).split(": ", 1)[-1]) from None
 
 
 def _given(rd, value, mech, n, static=False):

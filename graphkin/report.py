@@ -108,6 +108,7 @@ def solution(problem, result: ForceAnalysis, graphical: list | None = None) -> d
     inertia = {link: result.inertia(link) for link in mech.moving}
     points = {link: link_points(kin, link) for link in mech.moving}
     v_G = {link: np.asarray(kin.v_G(link), dtype=float) for link in mech.moving}
+    applied = _applied(kin)
     for i in range(result.n):
         entry = {
             "index": i,
@@ -149,7 +150,8 @@ def solution(problem, result: ForceAnalysis, graphical: list | None = None) -> d
             driver = {"name": result.driver_name, "value": float(result.effort[i])}
             if not crank:
                 driver["vector"] = _vec(result.driver_force()[i])
-            entry.update(links=links, forces=forces, prismatic=prismatic, driver=driver)
+            entry.update(links=links, forces=forces, prismatic=prismatic, driver=driver,
+                         loads=[_load_entry(ld, value[i]) for ld, value in applied])
         if graphical is not None:
             entry["graphical"] = _graphical(result, graphical[i], i)
         positions.append(entry)
@@ -253,6 +255,40 @@ def _input_text(entry, crank, static=False):
     return f"s = {q['value'] * 1e3:.6g} mm, v = {q['rate']:.6g} m/s, a = {q['rate2']:.6g} m/s²"
 
 
+def _applied(kin) -> list:
+    """Each external load with what it applies at every position (table, window and sense included)."""
+    from .solve.loads import applied
+
+    return [(ld, applied(kin, ld)) for ld in kin.mechanism.loads]
+
+
+def _load_entry(load, value) -> dict:
+    """One external load at one position, as plain data: a force's vector [N] or a torque [N·m]."""
+    from .model import PointForce
+
+    out = {"name": load.name, "link": load.link}
+    if isinstance(load, PointForce):
+        out.update(point=load.point, force=[float(value.real) + 0.0, float(value.imag) + 0.0])
+    else:
+        out["torque"] = float(value) + 0.0
+    out["acting"] = bool(value != 0)
+    return out
+
+
+def _loads_text(entry) -> list[str]:
+    """The external loads at one position, as the text report prints them."""
+    lines = []
+    for ld in entry.get("loads", []):
+        name = ld["name"] or ("P" if "force" in ld else "T")
+        if "force" in ld:
+            value = polar_text(ld["force"]) if ld["acting"] else "0 N (not acting here)"
+            lines.append(f"    {name:<5} on link {ld['link']} at {ld['point']}: {value}")
+        else:
+            value = f"{ld['torque']:.4g} N·m" if ld["acting"] else "0 N·m (not acting here)"
+            lines.append(f"    {name:<5} on link {ld['link']}: {value}")
+    return (["  External loads"] + lines) if lines else []
+
+
 def format_solution(problem, result: ForceAnalysis, graphical: list | None = None) -> str:
     """The solution as text with textbook units (mm, degrees, N, N·m); both routes when ``graphical`` is given."""
     data = solution(problem, result, graphical)
@@ -296,6 +332,7 @@ def format_solution(problem, result: ForceAnalysis, graphical: list | None = Non
             T = s["inertia_torque"]
             sense = "CCW" if T > 0 else "CW" if T < 0 else ""
             out.append(f"    link {link}: F_i = {polar_text(s['inertia_force'])}   T_i = {T:.4g} N·m {sense}   h = {h}")
+        out.extend(_loads_text(entry))
         out.append("  Joint forces")
         for a, b in result.forces:
             name, back = result.name_of(a, b), result.name_of(b, a)

@@ -29,6 +29,7 @@ moment is an O(1) error).
 from __future__ import annotations
 
 import dataclasses
+import math
 import os
 
 import numpy as np
@@ -99,6 +100,57 @@ def active(kin, load):
     return np.ones(kin.n) if load.active is None else load.active.mask(kin.q).astype(float)
 
 
+def table_value(table, q):
+    """A load table's value at each q, from its rows by the straight line between them (written here, not np.interp).
+
+    At a jump (two rows at one input) the second row's value holds from the jump on.
+    """
+    xp, fp = list(table.q), list(table.value)
+    if table.periodic:
+        xp.append(xp[0] + 2 * math.pi)
+        fp.append(fp[0])
+    out = []
+    for x in np.atleast_1d(q):
+        if table.periodic:
+            x = xp[0] + math.fmod(math.fmod(x - xp[0], 2 * math.pi) + 2 * math.pi, 2 * math.pi)
+        k = max(j for j in range(len(xp)) if xp[j] <= x) if x >= xp[0] else 0
+        if k == len(xp) - 1:
+            out.append(fp[-1])
+        else:
+            t = (x - xp[k]) / (xp[k + 1] - xp[k])
+            out.append(fp[k] + t * (fp[k + 1] - fp[k]))
+    return np.array(out)
+
+
+def load_value(kin, load):
+    """What an external load applies at each position: force (n, 2) [N] or torque (n,) [N·m].
+
+    From the load's own definition (window, table, sense), independently of
+    :func:`graphkin.solve.loads.applied`: a table along the unit vector of
+    ``force``; "opposes motion" reverses the load where it would help the
+    motion (F·v > 0, a torque's T ω > 0) and drops it at a standstill;
+    "working stroke" keeps it only where it resists (F·v < 0).
+    """
+    on = active(kin, load)
+    if isinstance(load, PointForce):
+        u = np.asarray(load.force, dtype=float)
+        if load.table is not None:
+            f = table_value(load.table, kin.q)[:, None] * (u / np.hypot(*u))
+        else:
+            f = np.tile(u, (kin.n, 1))
+        power = dot(f, kin.velocity(load.link, load.point))
+    else:
+        f = table_value(load.table, kin.q) if load.table is not None else np.full(kin.n, load.torque)
+        power = f * kin.omega[load.link]
+    if load.sense == "opposes motion":
+        keep = np.where(power < 0, 1.0, np.where(power > 0, -1.0, 0.0))
+    elif load.sense == "working stroke":
+        keep = (power < 0).astype(float)
+    else:
+        keep = np.ones(kin.n)
+    return (on * keep)[:, None] * f if isinstance(load, PointForce) else on * keep * f
+
+
 def loads_on(kin, r, link):
     """Every load on ``link`` as (force (n,2) or None, point (n,2) or None, couple (n,) or None, what)."""
     mech = kin.mechanism
@@ -121,11 +173,10 @@ def loads_on(kin, r, link):
     for load in mech.loads:
         if load.link != link:
             continue
-        on = active(kin, load)
         if isinstance(load, PointForce):
-            out.append((on[:, None] * np.asarray(load.force), kin.position(link, load.point), None, load.name))
+            out.append((load_value(kin, load), kin.position(link, load.point), None, load.name))
         else:
-            out.append((None, None, on * load.torque, load.name))
+            out.append((None, None, load_value(kin, load), load.name))
     G = kin.G(link)
     if mech.gravity:
         out.append((np.broadcast_to([0.0, -body.mass * mech.gravity], (kin.n, 2)), G, None, "weight"))
@@ -166,11 +217,10 @@ def power_terms(kin, r):
     P = r.effort * kin.q_dot
     scale = np.abs(P)
     for load in mech.loads:
-        on = active(kin, load)
         if isinstance(load, PointForce):
-            p = on * dot(np.asarray(load.force), kin.velocity(load.link, load.point))
+            p = dot(load_value(kin, load), kin.velocity(load.link, load.point))
         else:
-            p = on * load.torque * kin.omega[load.link]
+            p = load_value(kin, load) * kin.omega[load.link]
         P, scale = P + p, scale + np.abs(p)
     dT = np.zeros(n)
     for link in mech.moving:

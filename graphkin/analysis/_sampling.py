@@ -55,9 +55,68 @@ SWITCH = 1e-9
 
 
 def switching_angles(problem: "Problem") -> list[float]:
-    """Where a load that acts over part of the cycle switches on or off (input units, ascending, no repeats)."""
-    return sorted({b for load in problem.mechanism.loads if load.active is not None
-                   for b in (load.active.start, load.active.stop)})
+    """Where a load jumps: it switches on or off, its table jumps, or its sense follows a reversal of the motion.
+
+    Input units (rad or m), ascending, no repeats.
+    """
+    ends = set()
+    for load in problem.mechanism.loads:
+        if load.active is not None:
+            ends |= {load.active.start, load.active.stop}
+        if load.table is not None:
+            ends |= set(load.table.jumps())
+        if load.sense != "fixed":
+            ends |= set(reversals(problem, load))
+    return sorted(ends)
+
+
+REVERSAL_GRID = 720
+"""Positions over the cycle at which a motion-following load's sense is first looked at, before bisection."""
+
+
+def reversals(problem: "Problem", load) -> list[float]:
+    """Where the motion a load follows reverses: its point's velocity along the load's line (a torque: its link's ω).
+
+    Sign changes are found on :data:`REVERSAL_GRID` positions over a turn
+    (a slider: over the problem's span) and each is bisected to the last
+    bit (60 halvings, all at once) with the problem's own input speed.
+    """
+    mech = problem.mechanism
+    crank = mech.driver.kind == "crank"
+    if crank:
+        q = np.linspace(0.0, TURN, REVERSAL_GRID + 1)
+    else:
+        lo, hi = float(np.min(problem.q)), float(np.max(problem.q))
+        if hi <= lo:
+            return []
+        q = np.linspace(lo, hi, REVERSAL_GRID + 1)
+
+    def rate(at):
+        kin = problem.kinematics(at)
+        if hasattr(load, "point"):
+            v = kin.z_velocity(load.link, load.point)
+            u = complex(*load.force)
+            r = v.real * u.real + v.imag * u.imag
+        else:
+            r = kin.w(load.link)
+        # Where the linkage does not assemble there is no motion to follow.
+        return np.where(kin.valid, r, np.nan)
+
+    r = rate(q)
+    sign = np.sign(r)
+    k = np.flatnonzero((sign[:-1] * sign[1:] < 0) & np.isfinite(r[:-1]) & np.isfinite(r[1:]))
+    zero = [float(q[j]) for j in np.flatnonzero(sign == 0)]
+    if not k.size:
+        return sorted({x % TURN if crank else x for x in zero})
+    a, b, ra = q[k].copy(), q[k + 1].copy(), r[k].copy()
+    for _ in range(60):
+        m = 0.5 * (a + b)
+        rm = rate(m)
+        left = np.sign(rm) == np.sign(ra)
+        a, ra = np.where(left, m, a), np.where(left, rm, ra)
+        b = np.where(left, b, m)
+    roots = 0.5 * (a + b)
+    return sorted({float(x % TURN) if crank else float(x) for x in list(roots) + zero})
 
 
 def switching_samples(problem: "Problem", q: np.ndarray) -> np.ndarray:

@@ -94,17 +94,20 @@ def static_problem(problem: "Problem") -> "Problem":
     return replace(problem, mechanism=replace(mech, links=links), given={})
 
 
-def _reference_load(problem: "Problem", q) -> tuple[np.ndarray, str]:
+def _reference_load(problem: "Problem", kin) -> tuple[np.ndarray, str]:
+    """The external load the index divides by at each position of ``kin``, and the index's units."""
+    from ..solve.loads import applied
+
     mech = problem.mechanism
     forces = [l for l in mech.loads if isinstance(l, PointForce)]
     torques = [l for l in mech.loads if isinstance(l, Torque)]
     if not forces and not torques:
         raise GraphkinError(f"{problem.name}: no external load, so the joint-force index is undefined")
+    # What each load applies here (window, table and sense included): a tabulated gas force sets the scale.
     if forces:
-        sizes, units = [(math.hypot(*l.force), l.active) for l in forces], ""
+        on, units = [np.abs(applied(kin, l)) for l in forces], ""
     else:
-        sizes, units = [(abs(l.torque), l.active) for l in torques], "1/m"
-    on = [size * (np.ones(len(q)) if active is None else active.mask(q)) for size, active in sizes]
+        on, units = [np.abs(applied(kin, l)) for l in torques], "1/m"
     return np.max(on, axis=0), units
 
 
@@ -154,7 +157,7 @@ def index_at(problem: "Problem", at, limit: float = 2.0) -> JointForceIndex:
     static = static_problem(problem)
     result = static.solve(at=at)
     q = result.kinematics.q
-    load, units = _reference_load(problem, q)
+    load, units = _reference_load(problem, result.kinematics)
     names = np.array([result.name_of(i, j) for i, j in result.forces] + [""])
     F = np.array([np.hypot(f[:, 0], f[:, 1]) for f in result.forces.values()])
     finite = np.all(np.isfinite(F), axis=0)

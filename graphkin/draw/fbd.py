@@ -40,10 +40,9 @@ def loads_on(construction, link: int) -> dict:
     for a in c.external.get(link, []):
         forces.append((a.name, tuple(a.vector), tuple(a.at), "known"))
     G = c.G.get(link)
-    for ld in mech.loads:
-        if isinstance(ld, Torque) and ld.link == link:
-            if ld.active is None or ld.active.mask(np.array([c.q]))[0]:
-                couples.append((ld.name or f"T{link}", ld.torque, G, "known"))
+    # The construction's own torques: a tabulated or motion-following one at its value here.
+    for name, T in c.torques.get(link, []):
+        couples.append((name, T, G, "known"))
     inert = c.inertia.get(link)
     if inert is not None:
         F, T = inert["F"], inert["T"]

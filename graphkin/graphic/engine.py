@@ -263,18 +263,21 @@ class _Builder:
             load.add(W, G)
             parts.append(f"its weight {abs(W):.4g} N acts at G{link}")
         from ..model import PointForce, Torque
+        from ..solve.loads import applied_at
 
         for ld in self.mech.loads:
-            if ld.link != link or (ld.active is not None and not ld.active.mask(kin.q[i : i + 1])[0]):
+            if ld.link != link:
                 continue
-            # A load of zero size is no load: listing it would contradict "link 3 carries no load" further on.
-            if isinstance(ld, PointForce) and any(ld.force):
-                F = complex(*ld.force)
+            value = applied_at(kin, ld, i)
+            if not value:  # not acting here (outside its window, a table's zero, or at rest on its working stroke)
+                continue
+            if isinstance(ld, PointForce):
+                F = complex(value)
                 load.add(F, self.z(link, ld.point))
                 parts.append(f"the external force {ld.name or 'P'} = {abs(F):.4g} N acts at {ld.point}")
-            elif isinstance(ld, Torque) and ld.torque:
-                load.add(0j, None, ld.torque)
-                parts.append(f"the external torque {ld.name or 'T'} = {ld.torque:.4g} N·m acts on it")
+            elif isinstance(ld, Torque):
+                load.add(0j, None, value)
+                parts.append(f"the external torque {ld.name or 'T'} = {value:.4g} N·m acts on it")
         only_inertia = len(parts) == 1 and bool(Fi or Ti)
         self.rname[link] = f"R{link}i" if only_inertia else f"R{link}"
         if len(parts) > 1 and load.F and load.point() is not None:
@@ -837,7 +840,7 @@ def construct_forces(kin: Kinematics, index: int = 0) -> Construction:
 def _geometry(kin: Kinematics, i: int) -> dict:
     """Plain-data geometry of position i, for drawing and handouts."""
     from ..model import GearMesh, PointForce, Torque
-    from ..solve.loads import inertia
+    from ..solve.loads import applied_at, inertia
 
     mech = kin.mechanism
     points = {link.number: {name: _xy(complex(kin.z(link.number, name)[i])) for name in link.points} for link in mech.links}
@@ -854,11 +857,13 @@ def _geometry(kin: Kinematics, i: int) -> dict:
         if mech.gravity and body.mass:
             arrows.append(Arrow(f"W{link}", (0.0, -body.mass * mech.gravity), True, G[link]))
         for ld in mech.loads:
-            if isinstance(ld, PointForce) and ld.link == link and (ld.active is None or ld.active.mask(kin.q[i:i + 1])[0]):
-                arrows.append(Arrow(ld.name or f"P{link}", ld.force, True, points[link][ld.point]))
+            if isinstance(ld, PointForce) and ld.link == link:
+                F = applied_at(kin, ld, i)
+                if F:
+                    arrows.append(Arrow(ld.name or f"P{link}", _xy(F), True, points[link][ld.point]))
         external[link] = arrows
-    torques = {link: [(ld.name or f"T{link}", ld.torque) for ld in mech.loads
-                      if isinstance(ld, Torque) and ld.link == link and (ld.active is None or ld.active.mask(kin.q[i:i + 1])[0])]
+    torques = {link: [(ld.name or f"T{link}", T) for ld in mech.loads
+                      if isinstance(ld, Torque) and ld.link == link and (T := applied_at(kin, ld, i))]
                for link in mech.moving}
     guides = {tuple(sorted(j.links)): _xy(complex(kin.z_guide(j)[i])) for j in mech.joints if isinstance(j, Prismatic)}
     angles = {link.number: float(kin.theta[link.number][i]) for link in mech.links}

@@ -308,6 +308,7 @@ def _build(s: _Subject, version: str) -> dict:
             _kinematics(doc, s, entry, i)
             if not s.static:
                 _inertia(doc, s, entry, c, i)
+            _loads(doc, s, entry)
             _matrix(doc, s, entry, i)
             _forces(doc, s, entry)
             _graphical(doc, s, entry, c)
@@ -412,7 +413,14 @@ def _given_rows(raw: dict, frame_number: int) -> list[list[str]]:
     for ld in raw.get("loads", []):
         where = f"on link {ld.get('link')}" + (f" at {ld['point']}" if "point" in ld else "")
         value = _pretty(ld.get("force", ld.get("torque", "")))
+        if "table" in ld or "csv" in ld:
+            rows = [r for r in str(ld.get("table", "")).strip().splitlines()[1:] if r.strip() and r.strip()[0] != "#"]
+            value = (f"from the table in {ld['csv']}" if "csv" in ld else f"from a table of {len(rows)} rows")
+            if "direction" in ld:
+                value += f", along {_pretty(ld['direction'])}"
         when = f", {_pretty(ld['active'])}" if "active" in ld else ""
+        if ld.get("sense", "fixed") != "fixed":
+            when += f", sense: {ld['sense']}"
         rows.append([f"{ld.get('type', 'load')} {ld.get('name', '')}".strip(), f"{value} {where}{when}"])
     for link, values in raw.get("given", {}).items():
         rows.append([f"given, link {link}", "; ".join(f"{k} = {_pretty(x)}" for k, x in values.items())])
@@ -606,6 +614,24 @@ def _inertia(doc: _Doc, s: _Subject, entry: dict, c, i: int):
                          M.qty(h * 1e3, "mm"), f" to the {side} of G{link} (looking along the force; from G{link} "
                          f"towards ", M.n(M.fmt_fixed(M.angle_of(off))), "°), where its moment about "
                          f"G{link} is {sense}, as T{link}i is.")
+
+
+def _loads(doc: _Doc, s: _Subject, entry: dict):
+    """The external loads at this position, when any of them changes with the position (a table, a sense)."""
+    if not any(ld.varies for ld in s.mech.loads):
+        return  # the given data already says what they are
+    doc.heading(2, "External loads here")
+    rows = []
+    for ld in entry["loads"]:
+        name = M.name(ld["name"]) if ld["name"] else ("P" if "force" in ld else "T")
+        if "force" in ld:
+            value = (M.polar(M.size_of(ld["force"]), M.angle_of(ld["force"]), "N") if ld["acting"]
+                     else M.qty(0.0, "N"))
+            rows.append([name, f"link {ld['link']} at {ld['point']}", value])
+        else:
+            rows.append([name, f"link {ld['link']}", M.qty(ld["torque"], "N·m")])
+    doc.table(["load", "on", "value at this position"], rows, "llr",
+              caption="Each load at its value here: read off its table, and with the sense the motion gives it")
 
 
 def _clean(x, scale, rel=1e-12):

@@ -3,10 +3,10 @@
 from .driver import Driver
 from .joints import GearMesh, Joint, Prismatic, Revolute
 from .link import FRAME, Link
-from .loads import Active, Load, PointForce, Torque
+from .loads import SENSES, Active, Load, PointForce, Table, Torque
 from .mechanism import Mechanism
 
 __all__ = [
     "FRAME", "Active", "Driver", "GearMesh", "Joint", "Link", "Load", "Mechanism",
-    "PointForce", "Prismatic", "Revolute", "Torque",
+    "PointForce", "Prismatic", "Revolute", "SENSES", "Table", "Torque",
 ]

@@ -1,7 +1,11 @@
 """External loads: point forces and torques on links, and gravity.
 
 A load may act only over a range of the input coordinate, like the cutting
-force of the strip cutter (Söylemez §6.4.1: 2000 N for 124° < θ12 < 156°).
+force of the strip cutter (Söylemez §6.4.1: 2000 N for 124° < θ12 < 156°);
+its size may follow a table against the input (an engine's gas force
+against crank angle, :class:`Table`); and its sense may follow the motion
+(a resistance that always opposes its point's velocity, or one that acts on
+the working stroke only, :data:`SENSES`).
 """
 
 from __future__ import annotations
@@ -13,7 +17,7 @@ import numpy as np
 
 from ..errors import ModelError
 from .link import _finite, _point
-from .ranges import check
+from .ranges import check, check_array
 
 
 EDGE = 1e-12
@@ -61,6 +65,121 @@ class Active:
         return (d > tol) & (d < width - tol)
 
 
+SENSES = ("fixed", "opposes motion", "working stroke")
+"""How a load's sense is set.
+
+``"fixed"``: as given. ``"opposes motion"``: the given size, with the sense
+that opposes the velocity of its point along the load's line (a torque: the
+link's ω), as a Coulomb resistance, F = −sign(v·u) |F| u; zero where the
+point stands still along that line. ``"working stroke"``: as given, but only
+while its point moves against it (the load does negative work: a tool that
+cuts on the forward stroke and idles on the return); zero otherwise.
+"""
+
+
+@dataclass(frozen=True, eq=False)
+class Table:
+    """A load's size against the input, piecewise linear between the rows.
+
+    Parameters
+    ----------
+    q : array_like
+        The input at each row [rad for a crank, m for a slider], ascending; a
+        value repeated on two rows is a jump (the value of the first row just
+        before, of the second just after).
+    value : array_like
+        The load's size at each row [N along the load's direction, or N·m].
+    periodic : bool
+        True for a crank: q is taken modulo one turn and the last row runs on
+        to the first (the table needs rows inside one turn, 360° apart at most).
+        False for a slider: outside the rows the load is not defined.
+
+    Examples
+    --------
+    >>> import math
+    >>> t = Table([0.0, math.pi], [0.0, 100.0])
+    >>> [round(float(v), 6) for v in t([0.0, math.pi / 2, math.pi, 3 * math.pi / 2, 2 * math.pi])]
+    [0.0, 50.0, 100.0, 50.0, 0.0]
+    """
+
+    q: np.ndarray
+    value: np.ndarray
+    periodic: bool = True
+    source: str = ""
+
+    def __post_init__(self):
+        q = np.asarray(self.q, dtype=float).ravel()
+        v = np.asarray(self.value, dtype=float).ravel()
+        where = f"table{' ' + self.source if self.source else ''}"
+        if q.size != v.size:
+            raise ModelError(f"{where}: {q.size} input values but {v.size} load values; give one per row")
+        if q.size < 2:
+            raise ModelError(f"{where}: needs at least two rows, got {q.size}")
+        if not (np.isfinite(q).all() and np.isfinite(v).all()):
+            raise ModelError(f"{where}: every value must be finite")
+        step = np.diff(q)
+        if (step < 0).any():
+            k = int(np.argmax(step < 0))
+            raise ModelError(f"{where}: the input must ascend, but row {k + 2} is below row {k + 1}")
+        if ((step[1:] == 0) & (step[:-1] == 0)).any():
+            raise ModelError(f"{where}: an input value appears on three rows; a jump needs two")
+        if self.periodic and q[-1] - q[0] > 2 * math.pi * (1 + 1e-12):
+            raise ModelError(f"{where}: spans {math.degrees(q[-1] - q[0]):.6g}°; a crank's table covers one turn "
+                             "(360° at most from its first row to its last)")
+        object.__setattr__(self, "q", q)
+        object.__setattr__(self, "value", v)
+
+    def __call__(self, q) -> np.ndarray:
+        """The load's size at the inputs ``q`` [N or N·m].
+
+        Raises
+        ------
+        ModelError
+            For a slider's table, at an input outside its rows.
+        """
+        q = np.asarray(q, dtype=float)
+        xp, fp = self.q, self.value
+        if self.periodic:
+            turn = 2 * math.pi
+            x = xp[0] + (q - xp[0]) % turn
+            # The last row runs on to the first one a turn later.
+            xp, fp = np.append(xp, xp[0] + turn), np.append(fp, fp[0])
+            return self._interp(x, xp, fp)
+        tol = 1e-12 * max(abs(xp[0]), abs(xp[-1]), 1.0)
+        outside = (q < xp[0] - tol) | (q > xp[-1] + tol)
+        if outside.any():
+            bad = float(np.asarray(q)[outside].flat[0])
+            raise ModelError(f"table{' ' + self.source if self.source else ''}: the input {bad * 1e3:.6g} mm lies "
+                             f"outside its rows ({xp[0] * 1e3:.6g} mm to {xp[-1] * 1e3:.6g} mm)")
+        return self._interp(np.clip(q, xp[0], xp[-1]), xp, fp)
+
+    @staticmethod
+    def _interp(x, xp, fp):
+        # np.interp takes the value of the *last* of two equal rows at the jump itself; between rows it is the
+        # straight line, so a jump's two rows give the value before and after it.
+        return np.interp(x, xp, fp)
+
+    def jumps(self) -> list[float]:
+        """Inputs where the table jumps (a value on two rows whose loads differ)."""
+        k = np.flatnonzero((np.diff(self.q) == 0) & (np.diff(self.value) != 0))
+        out = [float(self.q[i]) for i in k]
+        if self.periodic and self.q[-1] - self.q[0] >= 2 * math.pi * (1 - 1e-12) and self.value[-1] != self.value[0]:
+            out.append(float(self.q[0]))  # the last row is a turn after the first, with another value
+        return out
+
+    def __eq__(self, other):
+        return (isinstance(other, Table) and self.periodic == other.periodic and np.array_equal(self.q, other.q)
+                and np.array_equal(self.value, other.value))
+
+    __hash__ = None
+
+
+def _sense(sense: str, what: str) -> str:
+    if sense not in SENSES:
+        raise ModelError(f"{what}: sense must be one of {', '.join(repr(s) for s in SENSES)}, got {sense!r}")
+    return sense
+
+
 @dataclass(frozen=True)
 class PointForce:
     """A force of fixed global direction on a link.
@@ -77,6 +196,11 @@ class PointForce:
         Where it acts; None for always.
     name : str
         Label for reports, e.g. ``"F13"``.
+    table : Table or None
+        The force's size against the input: the force is ``table(q)`` times
+        the unit vector of ``force`` (whose length then does not matter).
+    sense : str
+        One of :data:`SENSES`.
     """
 
     link: int
@@ -84,9 +208,22 @@ class PointForce:
     force: tuple[float, float]
     active: Active | None = None
     name: str = ""
+    table: Table | None = None
+    sense: str = "fixed"
 
     def __post_init__(self):
-        object.__setattr__(self, "force", _point(self.force, f"force on link {self.link} at {self.point}", "force"))
+        what = f"force on link {self.link} at {self.point}"
+        object.__setattr__(self, "force", _point(self.force, what, "force"))
+        if self.table is not None:
+            if self.force == (0.0, 0.0):
+                raise ModelError(f"{what}: a tabulated force needs a direction, got a zero vector")
+            check_array(self.table.value, "force", f"{what}: table")
+        _sense(self.sense, what)
+
+    @property
+    def varies(self) -> bool:
+        """True if the force changes with the position (a table, or a sense that follows the motion)."""
+        return self.table is not None or self.sense != "fixed"
 
 
 @dataclass(frozen=True)
@@ -97,10 +234,21 @@ class Torque:
     torque: float
     active: Active | None = None
     name: str = ""
+    table: Table | None = None
+    """The torque against the input (then ``torque`` is 1.0 and ignored)."""
+    sense: str = "fixed"
 
     def __post_init__(self):
         what = f"torque on link {self.link}"
         object.__setattr__(self, "torque", check(_finite(self.torque, what, "N·m"), "torque", what))
+        if self.table is not None:
+            check_array(self.table.value, "torque", f"{what}: table")
+        _sense(self.sense, what)
+
+    @property
+    def varies(self) -> bool:
+        """True if the torque changes with the position (a table, or a sense that follows the motion)."""
+        return self.table is not None or self.sense != "fixed"
 
 
 Load = PointForce | Torque

@@ -53,6 +53,66 @@ def inertia(kin: Kinematics, link: int) -> Inertia:
     return Inertia(as_xy(F), T, h, as_xy(kin.z_G(link) + shift))
 
 
+def applied(kin: Kinematics, load) -> np.ndarray:
+    """What an external load applies at each position, active window, table and sense included.
+
+    Parameters
+    ----------
+    kin : Kinematics
+    load : PointForce or Torque
+
+    Returns
+    -------
+    ndarray, shape (n,)
+        A force as complex Fx + i Fy [N]; a torque as float [N·m], CCW positive.
+        Zero where the load does not act.
+
+    Notes
+    -----
+    A tabulated load is ``table(q)`` along the unit vector of its ``force``
+    (a torque: ``table(q)`` itself). A load whose sense follows the motion
+    reads the velocity of its point along its line (a torque: its link's ω);
+    the sign of that velocity sets the sense, so at a standstill along the
+    line the load is zero (Coulomb's sign(v), as lecture 22's friction).
+    """
+    q = kin.q
+    if isinstance(load, PointForce):
+        f = complex(*load.force)
+        if load.table is not None:
+            f = f / abs(f) * load.table(q)
+        else:
+            f = np.full(kin.n, f)
+        if load.sense != "fixed":
+            v = kin.z_velocity(load.link, load.point)
+            along = v.real * f.real + v.imag * f.imag     # v · F: negative while the point moves against F
+            f = _by_sense(load.sense, f, along)
+    else:
+        f = load.table(q) if load.table is not None else np.full(kin.n, float(load.torque))
+        if load.sense != "fixed":
+            f = _by_sense(load.sense, f, kin.w(load.link) * f)
+    if load.active is not None:
+        f = np.where(load.active.mask(q), f, 0.0 * f)
+    return f + 0.0
+
+
+def applied_at(kin: Kinematics, load, i: int):
+    """What a load applies at position ``i`` alone: complex force [N] or torque [N·m], 0 where it does not act."""
+    if load.varies:
+        return applied(kin, load)[i].item()
+    if load.active is not None and not load.active.mask(kin.q[i:i + 1])[0]:
+        return 0j if isinstance(load, PointForce) else 0.0
+    return complex(*load.force) if isinstance(load, PointForce) else float(load.torque)
+
+
+def _by_sense(sense: str, f, power):
+    """The load with its sense set by the sign of its power ``power`` = F · v (or T ω) as given."""
+    if sense == "opposes motion":
+        # Reversed where it would help the motion, kept where it resists; zero at a standstill.
+        return np.where(power > 0, -f, np.where(power < 0, f, 0.0 * f))
+    # "working stroke": as given while it resists the motion, nothing on the return.
+    return np.where(power < 0, f, 0.0 * f)
+
+
 def _external(kin: Kinematics, link: int):
     """Sum of external forces and weight (complex) and their moment about the origin."""
     mech = kin.mechanism
@@ -67,13 +127,16 @@ def _external(kin: Kinematics, link: int):
     for load in mech.loads:
         if load.link != link:
             continue
-        on = 1.0 if load.active is None else load.active.mask(kin.q)
+        if not load.varies:
+            on = 1.0 if load.active is None else load.active.mask(kin.q)
+            value = on * (complex(*load.force) if isinstance(load, PointForce) else load.torque)
+        else:
+            value = applied(kin, load)
         if isinstance(load, PointForce):
-            f = on * complex(*load.force)
-            F = F + f
-            M = M + cross(kin.z(link, load.point), f)
+            F = F + value
+            M = M + cross(kin.z(link, load.point), value)
         elif isinstance(load, Torque):
-            M = M + on * load.torque
+            M = M + value
     return F, M
 
 
