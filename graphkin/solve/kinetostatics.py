@@ -352,7 +352,8 @@ def _program(plan: Plan, mech: Mechanism) -> list:
             else:
                 steps.append(None)
         plan.compiled["forces"] = steps
-        plan.compiled["general"] = None in steps
+        # A load that follows a table or the motion reads the Kinematics (a point's velocity, a link's ω).
+        plan.compiled["general"] = None in steps or any(load.varies for load in mech.loads)
     return steps
 
 

@@ -189,10 +189,12 @@ def load_specs(plan, mech) -> dict:
             body = mech.link(link)
             W = -1j * body.mass * mech.gravity if mech.gravity and body.mass else 0j
             forces = [(plan.points[link, load.point], complex(*load.force), load.active)
-                      for load in mech.loads if load.link == link and isinstance(load, PointForce)]
+                      for load in mech.loads if load.link == link and isinstance(load, PointForce) and not load.varies]
             torques = [(load.torque, load.active)
-                       for load in mech.loads if load.link == link and isinstance(load, Torque)]
-            specs[link] = (body.mass, body.I_G, complex(*body.G), W, forces, torques)
+                       for load in mech.loads if load.link == link and isinstance(load, Torque) and not load.varies]
+            # A table's or a motion's load is worked out at each call (applied); the solver then hands a Kinematics.
+            varying = [load for load in mech.loads if load.link == link and load.varies]
+            specs[link] = (body.mass, body.I_G, complex(*body.G), W, forces, torques, varying)
         plan.compiled["loads"] = specs
     return specs
 
@@ -203,7 +205,7 @@ def _external_fast(kin, link: int, spec, L, M) -> None:
     For kinematics without given values (``kin`` a Kinematics or the solver's own state), from a compiled
     spec (:func:`load_specs`); a link with no external load gets no entry.
     """
-    m, I_G, pG, W, forces, torques = spec
+    m, I_G, pG, W, forces, torques, varying = spec
     if W:
         zG = kin.O[link] + kin.e[link] * pG
         _accumulate(L, M, link, W, cross(zG, W))
@@ -212,11 +214,17 @@ def _external_fast(kin, link: int, spec, L, M) -> None:
         _accumulate(L, M, link, f, cross(kin.O[link] + kin.e[link] * p, f))
     for T, active in torques:
         _accumulate(L, M, link, None, T if active is None else active.mask(kin.q) * T)
+    for load in varying:
+        value = applied(kin, load)
+        if isinstance(load, PointForce):
+            _accumulate(L, M, link, value, cross(kin.z(link, load.point), value))
+        else:
+            _accumulate(L, M, link, None, value)
 
 
 def _inertia_fast(kin, link: int, spec, L, M) -> None:
     """Add a link's inertia force −m a_G and torque −I_G α to ``L`` and ``M`` (about the origin), unless static."""
-    m, I_G, pG, W, forces, torques = spec
+    m, I_G, pG, W, forces, torques, varying = spec
     if kin.static:
         return
     if m:
