@@ -914,7 +914,7 @@ assert round(-W_cut) == 50  # "the cut takes only 50 J per turn"
 
 # %%
 assert math.isclose(f.I_s, f.E / (Cs * omega**2), rel_tol=1e-12)
-assert math.isclose(f_half_Cs.I_s, 2 * f.I_s, rel_tol=1e-12) and f_half_Cs.E == f.E
+assert math.isclose(f_half_Cs.I_s, 2 * f.I_s, rel_tol=1e-12) and math.isclose(f_half_Cs.E, f.E, rel_tol=1e-12)
 assert math.isclose(f_half_w.I_s, 4 * f.I_s, rel_tol=1e-12)
 assert math.isclose(disk.mass, m_hand, rel_tol=1e-12)
 assert math.isclose(0.5 * m_hand * disk.radius**2, f.I_s, rel_tol=1e-12)  # I = m r²/2
