@@ -116,7 +116,8 @@ def test_the_wrong_notebook_gets_graphkins_feedback(graded):
         assert q["feedback"] in output
         assert runtime.feedback_line(q) in output
     assert "The size is right but the sense is wrong" in tests["T12"]["output"]
-    assert "Not within 1 % of the answer. Revisit step 5 of the construction" in tests["F23"]["output"]
+    # F23 is the sum of the superposition's sub-problems (step 18), where the hint sends the student back to.
+    assert "Not within 1 % of the answer. Revisit step 18 of the construction: the superposition" in tests["F23"]["output"]
     # Students see the public tests at once: they say the unanswered question has no answer.
     public = next(t for t in graded["results"]["bad"]["tests"] if t["name"] == "Public Tests")
     assert public["visibility"] == "visible" and "No answer was given for F14." in public["output"]
