@@ -100,6 +100,13 @@ def _list() -> int:
         print(f"{name:<24}{problem.title}")
         print(f"{'':<24}family: {catalog.family(name)}")
         print(f"{'':<24}{problem.source}")
+    print("\nflywheels (graphkin flywheel NAME):")
+    for name in catalog.flywheel_names():
+        from .flywheel_file import load_flywheel
+
+        fly = load_flywheel(catalog.flywheel_path(name), name=name)
+        print(f"{name:<24}{fly.title}")
+        print(f"{'':<24}{fly.source}")
     return 0
 
 

@@ -20,15 +20,23 @@ def add_parser(sub) -> None:
     """Add ``flywheel`` to the ``graphkin`` subcommands."""
     f = sub.add_parser("flywheel", help="size a flywheel from a turning-moment diagram (engine torque against angle), "
                        "no mechanism needed")
-    f.add_argument("file", help="a flywheel file (TOML; see docs/problem-files.md, 'Flywheel files')")
+    f.add_argument("file", help="a flywheel file (TOML; see docs/problem-files.md, 'Flywheel files'), or a catalog "
+                   "flywheel's name (graphkin list)")
     f.add_argument("--json", action="store_true", help="print the result as JSON in SI units (schema: docs/json.md)")
 
 
 def run(args) -> int:
     """Carry out ``graphkin flywheel``; returns the exit code."""
+    from pathlib import Path
+
+    from . import catalog
     from .flywheel_file import load_flywheel
 
-    problem = load_flywheel(args.file)
+    # A catalog name, unless a file of that name is here.
+    if not Path(args.file).exists() and args.file in catalog.flywheel_names():
+        problem = load_flywheel(catalog.flywheel_path(args.file), name=args.file)
+    else:
+        problem = load_flywheel(args.file)
     fly = problem.size()
     data = flywheel_data(problem, fly)
     if args.json:

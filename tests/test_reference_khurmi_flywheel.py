@@ -6,7 +6,7 @@ The data and the printed answers are those of the FOSSEE Python Textbook Compani
 worked examples, not the book's page, which was not available. Where the companion's printing rounds, truncates
 or errs, the test says how, and checks graphkin against a closed form written out here instead.
 
-Example 16.8 (p. 580), ``docs/examples/three_cylinder_flywheel.toml``: a three-cylinder single-acting engine,
+Example 16.8 (p. 580), ``graphkin/catalog/flywheels/three_cylinder.toml`` (``graphkin flywheel three_cylinder``): a three-cylinder single-acting engine,
 cranks at 120°; each cylinder's torque a triangle from 0 at its dead centre up to 90 N·m at 60° and down to 0 at
 180°, nothing on the return stroke; 600 rpm; flywheel 12 kg, k = 80 mm (I = 0.0768 kg·m²). Closed form: the sum
 repeats every 120°, T = 45 + 0.75 θ° on 0–60°, 135 − 0.75 θ° on 60–120°, mean 67.5 N·m; T − T_mean is positive
@@ -30,7 +30,7 @@ import pytest
 from graphkin.cli import main
 from graphkin.flywheel_file import load_flywheel, parse_flywheel
 
-FILE = Path(__file__).resolve().parents[1] / "docs" / "examples" / "three_cylinder_flywheel.toml"
+FILE = Path(__file__).resolve().parents[1] / "graphkin" / "catalog" / "flywheels" / "three_cylinder.toml"
 
 # -- Example 16.8 ----------------------------------------------------------------------------------------------
 
@@ -186,3 +186,16 @@ def test_16_13_varying_resistance():
     # With the resistance taken as the mean (5000 N·m) instead, the swing is (i)'s 1000 J: the varying
     # resistance matters, and graphkin follows it.
     assert f.E > 1.6 * 1000.0
+
+
+def test_the_catalog_flywheel_runs_by_name(capsys):
+    """``graphkin flywheel three_cylinder`` finds the catalog's file; ``graphkin list`` names it."""
+    from graphkin import catalog
+    from graphkin.cli import main
+
+    assert catalog.flywheel_names() == ["three_cylinder"] and catalog.flywheel_path("three_cylinder") == FILE
+    assert main(["flywheel", "three_cylinder", "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert data["problem"] == "three_cylinder" and math.isclose(data["E"], 3.75 * math.pi, rel_tol=1e-9)
+    assert main(["list"]) == 0
+    assert "three_cylinder" in capsys.readouterr().out

@@ -43,6 +43,19 @@ def path(name: str) -> Path:
     return Path(str(resources.files(__name__).joinpath(name + ".toml")))
 
 
+def flywheel_names() -> list[str]:
+    """Names of the catalog's flywheel files (``graphkin flywheel NAME``), sorted."""
+    return sorted(p.name[:-5] for p in resources.files(__name__).joinpath("flywheels").iterdir()
+                  if p.name.endswith(".toml"))
+
+
+def flywheel_path(name: str) -> Path:
+    """Path of a catalog flywheel file."""
+    if name not in flywheel_names():
+        raise GraphkinError(f"no catalog flywheel {name!r} (the catalog has: {', '.join(flywheel_names())})")
+    return Path(str(resources.files(__name__).joinpath("flywheels", name + ".toml")))
+
+
 def load(name_or_path: str):
     """A :class:`graphkin.problem.Problem` from a catalog name or a file path."""
     from ..problem import load_problem
