@@ -758,6 +758,21 @@ for angle in (0.0, 90.0, 200.0):
           f"F23 drawn = {show(ex_g.construction['F23'])}")
 
 # %% [markdown]
+# ### The worked solutions, to keep
+#
+# Both examples of this lesson are written out as textbook solutions — the data, each link's
+# kinematics with the numbers, the inertia loads, the matrix with the friction and pressure-angle
+# rows, the graphical route step by step (the guide reaction tilted by ρ, the tooth force on the
+# pressure line) and both routes side by side — in the handouts
+# [`slider_crank_friction.pdf`](../figures/handouts/slider_crank_friction.pdf) and
+# [`gearset.pdf`](../figures/handouts/gearset.pdf). Make your own with
+#
+# ```sh
+# graphkin handout slider_crank_friction --at '60 deg' -o slider_crank_friction.pdf
+# graphkin handout gearset -o gearset.html
+# ```
+
+# %% [markdown]
 # ## 4. Your turn
 #
 # Two exercises with **your own numbers**: every student id gets its own crank angle, speed and
