@@ -31,11 +31,33 @@ def test_builds_for_every_catalog_problem(explorers, name):
     assert ex.image.value[:8] == b"\x89PNG\r\n\x1a\n"
     assert ex.widget.children and ex.figure.axes
     ends = {q for load in ex.problem.mechanism.loads if load.active is not None for q in (load.active.start, load.active.stop)}
-    switches = 2 * len(ends)  # a sample either side of each angle where a load switches on or off
+    # A sample either side of each angle where a load switches on or off: an active window's ends, and each
+    # reversal of the motion a load's sense follows.
+    switches = 2 * (len(ends) + _reversals(ex.problem))
     assert len(ex.cycle.torque) == SMALL + (switches if ex.problem.mechanism.driver.kind == "crank" else 0)
     crank = ex.problem.mechanism.driver.kind == "crank"
     assert ("deg" in ex.slider.description) == crank
     assert ("rpm" in ex.speed.description) == crank
+
+
+def _reversals(problem):
+    """How often over a turn the points of the loads whose sense follows the motion reverse along the load's line.
+
+    Counted here from the sign of the velocity on 720 crank angles, independently of graphkin's own search.
+    """
+    followers = [load for load in problem.mechanism.loads if getattr(load, "sense", "fixed") != "fixed"]
+    if not followers or problem.mechanism.driver.kind != "crank":
+        return 0
+    kin = problem.kinematics(at=np.linspace(0.0, 2 * np.pi, 720, endpoint=False))
+    count = 0
+    for load in followers:
+        if hasattr(load, "force"):
+            u = np.asarray(load.force, float) / np.hypot(*load.force)  # the line of the load (its fixed direction)
+            v = kin.velocity(load.link, load.point) @ u
+        else:  # a torque follows its link's turning
+            v = kin.w(load.link)
+        count += int(np.count_nonzero(np.sign(v) != np.sign(np.roll(v, 1))))
+    return count
 
 
 @pytest.mark.parametrize("name,value", [("strip_cutter", 140.0), ("slider_crank_friction", 75.0), ("double_slider", -120.0),

@@ -15,6 +15,7 @@ FAMILIES = {
     "double_slider": "double slider (PRRP), driven by a slider",
     "engine_gas_force": "slider-crank engine with a gas force",
     "gearset": "spur gear pair",
+    "shaper_six_bar": "six-bar quick-return: crank, block on a slotted lever, ram (R-RTR-RRT), with gravity",
     "single_link": "single link (a crank alone)",
     "slider_crank_friction": "offset slider-crank with slider friction",
     "strip_cutter": "four-bar with a cutting load",

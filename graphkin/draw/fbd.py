@@ -10,7 +10,7 @@ from ..model import Prismatic, Torque
 from . import style as _style
 from .arrows import arc_points, arrow, moment_arrow, perp, unit
 from .axes import MM, Drawn, had_content, line, new_axes, points_per_unit, set_limits, setup_axes
-from .labels import Labeler, arrow_label_candidates, point_label_candidates
+from .labels import Labeler, arrow_label_candidates, measuring_renderer, point_label_candidates, text_size
 from .mechanism import NEAR, Geometry, _label_points, centre_of_mass, draw_link_body
 from .scales import dimension, nice_round, scale_bar
 from .text import num, sub
@@ -266,6 +266,10 @@ def draw_free_body(construction, link: int, *, ax=None, force_scale=None, title=
         lab.curve(arc, a.get_linewidth(), a.get_mutation_scale())
         extent += [X - 1.15 * r, X + 1.15 * r]
         text = f"{sub(name)} = {num(abs(T))} N·m {'CCW' if T > 0 else 'CW'}"
+        if _too_wide(ax, text, s):
+            # In a small panel (the explorer's) a long reading finds no spot clear of a long link: the unit and
+            # the sense go on a second line.
+            text = text.replace(" N·m ", "\nN·m ")
         pads = [s.label_pad, 3 * s.label_pad, 7 * s.label_pad, 12 * s.label_pad]
         if gear_r:
             # Just outside the teeth, where the gear's face is too busy.
@@ -366,3 +370,12 @@ def _friction_angle(ax, c, geom, link, drawn, lab, s, ppu) -> list:
         drawn.labels["rho"] = t
         drawn.add(t)
     return extent
+
+
+def _too_wide(ax, text: str, s) -> bool:
+    """Whether a label would take more than half its panel's width (measured as the Labeler will measure it)."""
+    from matplotlib.text import Text
+
+    t = Text(0, 0, text, fontsize=s.label_size, figure=ax.figure)
+    w, _ = text_size(t, measuring_renderer(ax.figure))
+    return w > 0.5 * ax.get_position(original=True).width * ax.figure.bbox.width

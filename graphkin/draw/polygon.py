@@ -83,9 +83,13 @@ def draw_force_polygon(step, *, scale: float, ax=None, origin=(0.0, 0.0), values
     sizes = [math.hypot(*a.vector) for a in step.polygon]
     largest = max(sizes + [0.0])
     start = np.asarray(origin, float)
-    # The polygon's vertices (zero forces left out), and its extent, which sets the view.
-    shown = [(a, size) for a, size in zip(step.polygon, sizes) if size > 1e-12 * max(largest, 1e-300)]
-    zero = [a.name for a, size in zip(step.polygon, sizes) if size <= 1e-12 * max(largest, 1e-300)]
+    # The polygon's vertices (zero forces left out), and its extent, which sets the view. A force is zero when it
+    # is rounding beside the polygon's largest, or beside the construction's scale (under a nanometre of drawing):
+    # a polygon whose forces all vanish at this position (a load whose line passes through a pivot) is then drawn
+    # as "= 0", not blown up to its rounding residue with a scale bar reading 1e−17 N.
+    floor = max(1e-12 * largest, 1e-9 * abs(scale), 1e-300)
+    shown = [(a, size) for a, size in zip(step.polygon, sizes) if size > floor]
+    zero = [a.name for a, size in zip(step.polygon, sizes) if size <= floor]
     verts = np.cumsum([start] + [np.asarray(a.vector, float) / scale for a, _ in shown], axis=0)
     span = float(np.max(np.ptp(verts, axis=0))) if len(verts) > 1 else 0.0
     span = span or 10.0

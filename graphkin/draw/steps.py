@@ -81,7 +81,8 @@ def draw_step_geometry(construction, step, *, ax, **style) -> list:
             a = arrow(ax, P - d * 0.09 * geom.size, P + d * 0.09 * geom.size, color=color, lw=s.known_lw, s=s,
                       zorder=4.5)
             out.append(a)
-            lab.segment(P - d * 0.09 * geom.size, P + d * 0.09 * geom.size)
+            # As an arrow, head and all: its head is wider than its shaft.
+            lab.arrow(P - d * 0.09 * geom.size, P + d * 0.09 * geom.size, a.get_linewidth(), a.get_mutation_scale())
         n = perp(d)
         # The line itself: a label may cross it, at a price (the axline is drawn across the whole view).
         lab.segment(P - d * 3 * geom.size, P + d * 3 * geom.size, soft=True)
