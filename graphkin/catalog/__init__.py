@@ -14,6 +14,7 @@ DEFAULT = "double_slider"
 FAMILIES = {
     "double_slider": "double slider (PRRP), driven by a slider",
     "engine_gas_force": "slider-crank engine with a gas force",
+    "engine_static_khurmi": "slider-crank, static: a gas force (with friction and a given inertia) on the piston",
     "gearset": "spur gear pair",
     "shaper_six_bar": "six-bar quick-return: crank, block on a slotted lever, ram (R-RTR-RRT), with gravity",
     "single_link": "single link (a crank alone)",
