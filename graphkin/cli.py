@@ -11,7 +11,6 @@ starts in about a tenth of a second (benchmarks/bench_cli.py).
 from __future__ import annotations
 
 import argparse
-import json
 import math
 import os
 import sys
@@ -284,13 +283,13 @@ def _peak(p) -> dict:
 
 
 def json_text(data) -> str:
-    """``json.dumps(data, indent=2, ensure_ascii=False)``: the same text, character for character, faster.
+    """The JSON text of plain data, indented by two spaces, as ``json.dumps(data, indent=2, ensure_ascii=False)``.
 
-    json's indented output is written by its pure-Python encoder, one call per
-    number: ~0.3 s for a cycle's half a million values. Here a list of plain
-    floats (and ints and None), of booleans or of strings becomes one
-    ``str.join`` over ``float.__repr__`` (the function json uses), ~10x
-    faster; anything else is handed to json itself.
+    Written by orjson: a whole cycle's half a million numbers take ~12 ms, where json's indented
+    encoder (pure Python, a call per number) takes ~0.3 s. The text is laid out as json lays it out, line for
+    line; numbers are the same shortest round-trip ones, spelt ``2.5e-8`` where json writes ``2.5e-08``, and
+    one that is not finite (NaN, ±inf) is ``null`` (json writes ``NaN``, which JSON does not have). numpy
+    arrays and scalars are written as lists and numbers.
 
     Parameters
     ----------
@@ -315,55 +314,10 @@ def json_text(data) -> str:
       ]
     }
     """
-    out: list[str] = []
-    _json_into(data, "\n", out)
-    return "".join(out)
+    import orjson
 
-
-_JSON_NUMBERS = {float, int, type(None)}
-_JSON_BOOL = {True: "true", False: "false"}
-
-
-def _json_into(obj, newline: str, out: list) -> None:
-    """Append the JSON of ``obj`` to ``out``; ``newline`` is a line break and the current indentation."""
-    from json.encoder import encode_basestring
-
-    inner = newline + "  "
-    if type(obj) is dict and obj and all(type(k) is str for k in obj):
-        out.append("{")
-        sep = inner
-        for k, v in obj.items():
-            out.append(f"{sep}{encode_basestring(k)}: ")
-            _json_into(v, inner, out)
-            sep = "," + inner
-        out.append(newline + "}")
-        return
-    if type(obj) in (list, tuple) and obj:
-        kinds = set(map(type, obj))
-        text = None
-        if kinds <= _JSON_NUMBERS:
-            text = ("," + inner).join(map(repr, obj)).replace("None", "null")
-            if "nan" in text or "inf" in text:  # json writes NaN and Infinity: leave those to json
-                text = None
-        elif kinds == {bool}:
-            text = ("," + inner).join(map(_JSON_BOOL.__getitem__, obj))
-        elif kinds == {str}:
-            text = ("," + inner).join(map(encode_basestring, obj))
-        if text is not None:
-            out.append(f"[{inner}{text}{newline}]")
-            return
-        if kinds <= {dict, list, tuple}:
-            out.append("[")
-            sep = inner
-            for v in obj:
-                out.append(sep)
-                _json_into(v, inner, out)
-                sep = "," + inner
-            out.append(newline + "]")
-            return
-    # Scalars, empty containers, unusual keys or mixed lists: json's own text, moved to this indentation
-    # (json escapes line breaks inside strings, so every "\n" in its output starts a line).
-    out.append(json.dumps(obj, indent=2, ensure_ascii=False).replace("\n", newline))
+    options = orjson.OPT_INDENT_2 | orjson.OPT_SERIALIZE_NUMPY | orjson.OPT_NON_STR_KEYS
+    return orjson.dumps(data, option=options).decode("utf-8")
 
 
 def cycle_data(cycle, Cs=None) -> dict:
