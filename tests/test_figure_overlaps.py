@@ -332,3 +332,23 @@ def test_the_measure_sees_labels_left_where_they_were_first_put(monkeypatch):
     found = overlaps(fig)
     kinds = {what.split()[0] for _, what, _ in found}
     assert {"arrow", "line", "axes"} <= kinds, found
+
+
+def test_a_long_link_name_does_not_run_into_the_next_title_in_the_explorer(tmp_path):
+    """The explorer's free-body titles sit side by side in small panels: a long name goes to a second line
+    (the static engine's piston, named as engine_gas_force names it, overlapped its neighbour at 90°)."""
+    pytest.importorskip("ipywidgets")
+    from graphkin.problem import load_problem
+    from graphkin.widgets import explore
+
+    text = catalog.path("engine_static_khurmi").read_text(encoding="utf-8")
+    path = tmp_path / "long.toml"
+    path.write_text(text.replace('name = "piston P"', 'name = "piston P (reciprocating parts)"'), encoding="utf-8")
+    ex = explore(load_problem(path))
+    bad = []
+    for value in (90.0, 270.0, 30.0):
+        ex.slider.value = value
+        bad += [(value, *o) for o in overlaps(ex.figure, panels=ex._panels, page=True)]
+    assert not bad, "\n".join(map(str, bad))
+    titles = [ax.get_title() for ax in ex.figure.axes if ax.get_title().startswith("Free body: link 4")]
+    assert titles == ["Free body: link 4\n(piston P (reciprocating parts))"]

@@ -155,7 +155,11 @@ def draw_free_body(construction, link: int, *, ax=None, force_scale=None, title=
     if link == mech.frame or link not in mech.moving:
         raise ValueError(f"link {link} is not a moving link of the mechanism (moving: {mech.moving})")
     if title:
-        ax.set_title(f"Free body: {body.label}", fontsize=s.title_size, color=s.ink)
+        title = f"Free body: {body.label}"
+        if _too_wide(ax, title, s, size=s.title_size, share=1.0):
+            # A long link name in a small panel (the explorer's) would run into the next panel's title.
+            title = title.replace(" (", "\n(", 1)
+        ax.set_title(title, fontsize=s.title_size, color=s.ink)
     if not c.valid or not c.points:
         drawn.add(ax.text(0.5, 0.5, f"No solution here: {c.reason}", transform=ax.transAxes, ha="center", va="center",
                           fontsize=s.label_size, color=s.unknown, wrap=True))
@@ -372,10 +376,10 @@ def _friction_angle(ax, c, geom, link, drawn, lab, s, ppu) -> list:
     return extent
 
 
-def _too_wide(ax, text: str, s) -> bool:
-    """Whether a label would take more than half its panel's width (measured as the Labeler will measure it)."""
+def _too_wide(ax, text: str, s, *, size=None, share=0.5) -> bool:
+    """Whether a text would take more than ``share`` of its panel's width (measured as the Labeler measures)."""
     from matplotlib.text import Text
 
-    t = Text(0, 0, text, fontsize=s.label_size, figure=ax.figure)
+    t = Text(0, 0, text, fontsize=size or s.label_size, figure=ax.figure)
     w, _ = text_size(t, measuring_renderer(ax.figure))
-    return w > 0.5 * ax.get_position(original=True).width * ax.figure.bbox.width
+    return w > share * ax.get_position(original=True).width * ax.figure.bbox.width
