@@ -358,15 +358,21 @@ def test_unassemblable_positions_give_nan_and_a_reason(drawn):
     assert not ok.all()
     np.testing.assert_array_equal(kin.valid[clear], ok[clear])
     bad = ~kin.valid
+    # Out of reach (not on the boundary, where the dyad stands straight or folded: a dead point, or pins that
+    # coincide, whose positions are invalid with their own reasons): nothing of links 3 and 4 is placed.
+    out = ~ok & clear
+    assert not kin.valid[out].any()
     for link in (3, 4):
         for store in (kin.theta, kin.omega, kin.alpha):
-            assert np.isnan(store[link][bad]).all()
-        assert np.isnan(kin.position(link, "B")[bad]).all()
-        assert np.isnan(kin.acceleration(link, "B")[bad]).all()
+            assert np.isnan(store[link][out]).all()
+        assert np.isnan(kin.position(link, "B")[out]).all()
+        assert np.isnan(kin.acceleration(link, "B")[out]).all()
         assert np.isfinite(kin.acceleration(link, "B")[kin.valid]).all()
     np.testing.assert_allclose(kin.position(2, "A"), A, atol=1e-12)  # the driver is always placed
-    for i in np.flatnonzero(bad):
+    for i in np.flatnonzero(out):
         assert "cannot be assembled" in kin.reason(i)
+    for i in np.flatnonzero(bad):  # every invalid position says why, in the dyad's words
+        assert kin.reason(i).startswith("RRR dyad 3–4"), kin.reason(i)
     for i in np.flatnonzero(kin.valid):
         assert kin.reason(i) == ""
     # Forces: invalid where the kinematics is, nan there, and the valid
@@ -374,7 +380,7 @@ def test_unassemblable_positions_give_nan_and_a_reason(drawn):
     r = solve_forces(kin)
     np.testing.assert_array_equal(r.valid, kin.valid)
     assert np.isnan(r.effort[bad]).all() and np.isfinite(r.effort[kin.valid]).all()
-    for i in np.flatnonzero(bad)[:3]:
+    for i in np.flatnonzero(out)[:3]:
         assert "cannot be assembled" in r.reason(i)
     good = np.flatnonzero(kin.valid)
     if len(good):
@@ -448,3 +454,15 @@ def test_assembly_branch_does_not_depend_on_link_numbering():
     b = solve_kinematics(_fourbar_numbered(4, 3), q)  # the same linkage, coupler and rocker renumbered
     np.testing.assert_allclose(b.position(4, "B"), a.position(3, "B"), atol=1e-12,
                                err_msg="assembly={'B': +1} gives a different branch when links are renumbered")
+
+
+def test_a_dyad_whose_outer_pins_coincide_says_so():
+    """Equal arms folded onto each other (A on O4): the dyad may turn about them, so its position is not
+    determined. The position is invalid, and the reason names the pins (it was 'no group says why')."""
+    links = (Link(1, {"O2": (0.0, 0.0), "O4": (1.0, 0.0)}), Link(2, {"O2": (0.0, 0.0), "A": (1.0, 0.0)}, mass=1.0),
+             Link(3, {"A": (0.0, 0.0), "B": (0.5, 0.0)}, mass=1.0), Link(4, {"O4": (0.0, 0.0), "B": (0.5, 0.0)}, mass=1.0))
+    joints = (Revolute((1, 2), "O2"), Revolute((2, 3), "A"), Revolute((3, 4), "B"), Revolute((4, 1), "O4"))
+    kin = solve_kinematics(Mechanism(links, joints, Driver(2)), np.array([0.0, 0.5]), 1.0, 0.0)
+    assert not kin.valid[0] and kin.valid[1]
+    assert kin.reason(0) == ("RRR dyad 3–4 has no definite position: its outer pins A and O4 coincide, "
+                             "so it may turn about them")

@@ -482,6 +482,8 @@ def _rrr_step(plan: Plan, d: Dyad, sigma: int, index: int):
     branch = 1j * sigma
     reach = f"{d.label} cannot be assembled ({d.J1.point}{d.J3.point} out of reach)"
     toggle = f"{d.label} is at a dead point"
+    together = (f"{d.label} has no definite position: its outer pins {d.J1.point} and {d.J3.point} coincide, "
+                f"so it may turn about them")
 
     def step(st):
         if a == frame:
@@ -498,6 +500,9 @@ def _rrr_step(plan: Plan, d: Dyad, sigma: int, index: int):
         D = X3 - X1
         dd2 = D.real * D.real
         dd2 += D.imag * D.imag
+        at_one = dd2 == 0  # equal arms folded onto each other: no direction to build the dyad on
+        if at_one.any():
+            st.fail(together, at_one)
         t = half_c / dd2
         t += 0.5
         h2 = Lj2 / dd2
