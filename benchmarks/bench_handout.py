@@ -4,10 +4,14 @@ Issue 11's target: 200 students (a sheet and a key each, PDF) in at most 60 s on
 
     .venv/bin/python benchmarks/bench_handout.py                 # 200 students of each exercise
     .venv/bin/python benchmarks/bench_handout.py --students 40 --exercise strip_cutter_cut
+    .venv/bin/python benchmarks/bench_handout.py --students 0 --in-process 8 --exercise strip_cutter_cut
 
 Prints a table; nothing is asserted (speed is measured here, never in a test). On a shared machine the
 wall time counts other people's work too, so each roster's line also gives the CPU time its workers took
 and the load average (1 min) before and after it: CPU / cores is what the roster takes on free cores.
+Even the workers' CPU moves with the machine's load (two busy processes on two cores slow each other), so
+``--in-process N`` also times N students one by one in this process, after one warm-up student: the
+steadiest number to compare two versions by, run alternately (``PYTHONPATH`` at a copy of the other).
 """
 
 from __future__ import annotations
@@ -16,6 +20,7 @@ import argparse
 import os
 import resource
 import shutil
+import statistics
 import tempfile
 import time
 from pathlib import Path
@@ -63,9 +68,27 @@ def roster(exercise: str, students: int, folder: Path) -> dict:
     return {"wall": elapsed, "cpu": cpu, "files": sum(len(r[1]) for r in rows), "load": (load, os.getloadavg()[0])}
 
 
+def in_process(exercise: str, students: int, folder: Path) -> list[float]:
+    """CPU seconds of each student's sheet and key (PDF) made in this process, after one warm-up student."""
+    from graphkin.handout.batch import _chunk
+
+    def one(student: str) -> float:
+        t = time.process_time()
+        (row,) = _chunk((exercise, [student], "bench", ("sheet", "key"), "pdf", str(folder), None))
+        if row[2]:
+            raise SystemExit(f"{student} failed: {row[2]}")
+        return time.process_time() - t
+
+    folder.mkdir(parents=True, exist_ok=True)
+    one("warm-up")  # imports, fonts, the catalog, typst's compiler: what a worker pays once
+    return [one(f"s{k:04d}") for k in range(students)]
+
+
 def main() -> None:
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("--students", type=int, default=200)
+    p.add_argument("--in-process", type=int, default=0, metavar="N",
+                   help="also time N students one by one in this process (CPU per student, median and fastest)")
     p.add_argument("--exercise", action="append",
                    help=f"an exercise (repeat for several; default: {', '.join(EXERCISES)})")
     args = p.parse_args()
@@ -82,6 +105,12 @@ def main() -> None:
         for what, s in rows:
             print(f"{what:<52}{s:>10.2f}")
         for exercise in args.exercise or EXERCISES:
+            if args.in_process:
+                cpu = sorted(in_process(exercise, args.in_process, folder / f"{exercise}-one"))
+                what = f"{exercise}: CPU per student, in one process"
+                print(f"{what:<52}{statistics.median(cpu):>10.3f}   median of {len(cpu)} (fastest {cpu[0]:.3f})")
+            if args.students <= 0:
+                continue
             r = roster(exercise, args.students, folder / exercise)
             what = f"{exercise}: {args.students} students, {r['files']} PDFs"
             print(f"{what:<52}{r['wall']:>10.1f}"

@@ -5,7 +5,7 @@ from __future__ import annotations
 from contextlib import contextmanager
 
 import numpy as np
-from matplotlib import rc_context
+from matplotlib import rcParams
 from matplotlib.axes import Axes
 from matplotlib.axis import XAxis, YAxis
 from matplotlib.figure import Figure
@@ -118,9 +118,14 @@ class PanelAxes(Axes):
     def clear(self):
         # The title sits at the top of the axes (y = 1): no panel puts tick labels above its axes. With the
         # position fixed, matplotlib no longer measures every tick label at each draw to place the title
-        # above them (a tenth of drawing a handout's figure with a title).
-        with rc_context({"axes.titley": 1.0}):
+        # above them (a tenth of drawing a handout's figure with a title). The one setting is swapped by hand:
+        # rc_context copies all of rcParams, a sixth of making the axes.
+        titley = rcParams["axes.titley"]
+        rcParams["axes.titley"] = 1.0
+        try:
             super().clear()
+        finally:
+            rcParams["axes.titley"] = titley
 
     def _init_axis(self):
         self.xaxis = _XAxis(self, clear=False)

@@ -141,7 +141,7 @@ def _hits_many(P, Q, W, C, boxes):
     """For each box (x0, y0, x1, y1) in ``boxes`` (n×4), the summed price C[k] of the segments P[k]–Q[k] it meets.
 
     Display coordinates; segment k is W[k] wide on either side. Liang–Barsky
-    clipping (as :func:`segment_hits_box`), vectorised over boxes × segments.
+    clipping (as :func:`segment_hits_box`), vectorised over the box–segment pairs whose extents meet.
     """
     n = len(boxes)
     if not len(P) or not n:
@@ -149,23 +149,26 @@ def _hits_many(P, Q, W, C, boxes):
     lo, hi = np.minimum(P, Q) - W[:, None], np.maximum(P, Q) + W[:, None]
     bx0, by0, bx1, by1 = (boxes[:, k, None] for k in range(4))
     near = (lo[None, :, 0] <= bx1) & (hi[None, :, 0] >= bx0) & (lo[None, :, 1] <= by1) & (hi[None, :, 1] >= by0)
-    if not near.any():
+    # Only the pairs whose extents meet are clipped: a box is near a few of the segments.
+    b, k = np.nonzero(near)
+    if not len(b):
         return np.zeros(n)
-    x0, y0, x1, y1 = bx0 - W, by0 - W, bx1 + W, by1 + W
-    px, py = P[:, 0], P[:, 1]
-    dx, dy = Q[:, 0] - px, Q[:, 1] - py
-    t0 = np.zeros(near.shape)
-    t1 = np.ones(near.shape)
-    out = np.zeros(near.shape, bool)
+    w = W[k]
+    x0, y0, x1, y1 = boxes[b, 0] - w, boxes[b, 1] - w, boxes[b, 2] + w, boxes[b, 3] + w
+    px, py = P[k, 0], P[k, 1]
+    dx, dy = Q[k, 0] - px, Q[k, 1] - py
+    t0 = np.zeros(len(b))
+    t1 = np.ones(len(b))
+    out = np.zeros(len(b), bool)
     with np.errstate(divide="ignore", invalid="ignore"):
         for pp, qq in ((-dx, px - x0), (dx, x1 - px), (-dy, py - y0), (dy, y1 - py)):
             zero = pp == 0
-            qq = np.broadcast_to(qq, near.shape)
             out |= zero & (qq < 0)
             r = qq / pp
             t0 = np.where(~zero & (pp < 0), np.maximum(t0, r), t0)
             t1 = np.where(~zero & (pp > 0), np.minimum(t1, r), t1)
-    return (near & ~out & (t0 <= t1)) @ C
+    hit = ~out & (t0 <= t1)
+    return np.bincount(b[hit], weights=C[k[hit]], minlength=n)
 
 
 def _box_overlaps(boxes, others, costs):
@@ -296,11 +299,13 @@ class Labeler:
         axbox = TransformedBbox(ax.get_position(original=True), ax.figure.transSubfigure)
         room = np.array([axbox.x0, axbox.y0, axbox.x1, axbox.y1])
         page = np.asarray(ax.figure.bbox.extents, float)
-        marks = []
-        for b, pad in self.boxes:
-            (x0, y0), (x1, y1) = to((b[0], b[1])), to((b[2], b[3]))
-            g = pad * dpi / 72
-            marks.append((min(x0, x1) - g, min(y0, y1) - g, max(x0, x1) + g, max(y0, y1) + g))
+        marks = np.zeros((0, 4))
+        if self.boxes:
+            # Both corners of every mark in one transform (x0, y0), (x1, y1), (x0, y0), ...
+            corners = to(np.array([b for b, _ in self.boxes], float).reshape(-1, 2))
+            g = np.array([pad for _, pad in self.boxes], float)[:, None] * dpi / 72
+            a, b = corners[0::2], corners[1::2]
+            marks = np.hstack([np.minimum(a, b) - g, np.maximum(a, b) + g])
         scale = dpi / 72.0
         renderer = measuring_renderer(ax.figure)
         placed = []
@@ -323,27 +328,31 @@ class Labeler:
         # Every label's candidate boxes first: a label's size does not depend on where it goes, and
         # the obstacles other than labels do not depend on the other labels, so one vectorised test
         # serves them all; only the overlaps with labels placed before need the loop.
-        spots = []
-        for t, candidates in self.items:
-            w, h = text_size(t, renderer)
-            n = len(candidates)
-            A = to(np.array([a for a, _, _ in candidates], float).reshape(n, 2))
-            D = np.array([d for _, d, _ in candidates], float).reshape(n, 2)
-            norm = np.hypot(D[:, 0], D[:, 1])
-            D = np.where(norm[:, None] > 0, D / np.where(norm > 0, norm, 1.0)[:, None], [1.0, 0.0])
-            pads = np.array([pad for _, _, pad in candidates], float)
-            XY = A + D * pads[:, None] * scale
-            # _align, for every candidate: where the text's box starts relative to its anchor point.
-            fx = np.where(D[:, 0] > 0.2, 0.0, np.where(D[:, 0] < -0.2, 1.0, 0.5))
-            fy = np.where(D[:, 1] > 0.2, 0.0, np.where(D[:, 1] < -0.2, 1.0, 0.5))
-            x0 = XY[:, 0] - w * fx
-            y0 = XY[:, 1] - h * fy
-            spots.append((D, pads, np.column_stack([x0 - GROW, y0 - GROW, x0 + w + GROW, y0 + h + GROW]), A[0], w, h))
-        if not spots:
+        if not self.items:
             return
-        every = np.concatenate([s[2] for s in spots])
-        cuts = np.cumsum([len(s[2]) for s in spots])[:-1]
+        # All the candidates of all the labels at once: numpy's cost per call, not per spot, was most of this.
+        counts = [len(candidates) for _, candidates in self.items]
+        spots = [spot for _, candidates in self.items for spot in candidates]
+        A = to(np.array([a for a, _, _ in spots], float).reshape(-1, 2))
+        D = np.array([d for _, d, _ in spots], float).reshape(-1, 2)
+        norm = np.hypot(D[:, 0], D[:, 1])
+        D = np.where(norm[:, None] > 0, D / np.where(norm > 0, norm, 1.0)[:, None], [1.0, 0.0])
+        pads = np.array([pad for _, _, pad in spots], float)
+        sizes = np.array([text_size(t, renderer) for t, _ in self.items], float).reshape(-1, 2)
+        w, h = np.repeat(sizes, counts, axis=0).T
+        XY = A + D * pads[:, None] * scale
+        # _align, for every candidate: where the text's box starts relative to its anchor point.
+        fx = np.where(D[:, 0] > 0.2, 0.0, np.where(D[:, 0] < -0.2, 1.0, 0.5))
+        fy = np.where(D[:, 1] > 0.2, 0.0, np.where(D[:, 1] < -0.2, 1.0, 0.5))
+        x0 = XY[:, 0] - w * fx
+        y0 = XY[:, 1] - h * fy
+        every = np.column_stack([x0 - GROW, y0 - GROW, x0 + w + GROW, y0 + h + GROW])
+        cuts = np.cumsum(counts)[:-1]
         fixed = cost(every)
+        firsts = np.concatenate([[0], cuts])
+        # Per label: its directions, pads and boxes, its first anchor (display) and its size.
+        spots = [(d, p, b, A[k], float(wh[0]), float(wh[1])) for d, p, b, k, wh in
+                 zip(np.split(D, cuts), np.split(pads, cuts), np.split(every, cuts), firsts, sizes)]
         leaders = []  # display segments of the leaders drawn so far: later labels keep off them
         for (t, candidates), (D, pads, boxes, A0, w, h), score in zip(self.items, spots, np.split(fixed, cuts)):
             score = score + _box_overlaps(boxes, placed, [TEXT_COST] * len(placed)) + self._on_leaders(boxes, leaders)
@@ -440,12 +449,27 @@ def arrow_label_candidates(tail, tip, away, pad):
     return out
 
 
-def point_label_candidates(P, away, pad):
-    """Candidate spots around a point, the ``away`` direction first, then 16 directions nearest it first."""
-    away = unit(away) if np.hypot(*away) > 0 else np.array([0.0, 1.0])
-    dirs = [away]
+def _compass():
+    dirs = []
     for k in range(16):
         a = math.pi / 8 * k
-        dirs.append(np.array([math.cos(a), math.sin(a)]))
-    dirs.sort(key=lambda d: -float(np.dot(d, away)))
-    return [(P, d, pad) for d in dirs]
+        d = np.array([math.cos(a), math.sin(a)])
+        d.flags.writeable = False  # shared by every candidate list
+        dirs.append(d)
+    return tuple(dirs)
+
+
+_COMPASS = _compass()
+"""The 16 directions a point's label may go, made once: a drawing asks for them some fifty times."""
+
+
+def point_label_candidates(P, away, pad):
+    """Candidate spots around a point, the ``away`` direction first, then 16 directions nearest it first.
+
+    ``pad`` [pt] is a number, or several (nearest first): every direction at the first pad, then every
+    direction at the next, the directions sorted once.
+    """
+    away = unit(away) if np.hypot(*away) > 0 else np.array([0.0, 1.0])
+    dirs = sorted((away,) + _COMPASS, key=lambda d: -float(np.dot(d, away)))
+    pads = pad if isinstance(pad, (list, tuple)) else (pad,)
+    return [(P, d, p) for p in pads for d in dirs]

@@ -10,7 +10,7 @@ from matplotlib.patches import Circle, Polygon
 from ..model import GearMesh, Prismatic, Revolute
 from . import style as _style
 from .arrows import arc_points, perp, unit
-from .axes import MM, Drawn, had_content, line, markers, new_axes, points_per_unit, set_limits, setup_axes
+from .axes import MM, Drawn, had_content, line, markers, new_axes, points_per_unit, put, set_limits, setup_axes
 from .labels import Labeler, point_label_candidates
 from .scales import nice_round, scale_bar
 from .text import sub
@@ -223,7 +223,7 @@ def draw_link_body(ax, geom: Geometry, n: int, s, labeler: Labeler | None = None
         if len(hull) >= 3:
             poly = Polygon(hull, closed=True, facecolor=s.plate_fill, edgecolor=s.ink, lw=s.outline_lw * 1.4,
                            joinstyle="round", zorder=2.0)
-            ax.add_patch(poly)
+            put(ax, poly, hull)  # its corners are its extent: add_patch would find them through its transforms
             out.append(poly)
             if labeler:
                 labeler.polyline(hull, closed=True)
@@ -235,7 +235,7 @@ def draw_link_body(ax, geom: Geometry, n: int, s, labeler: Labeler | None = None
         X, u = geom.guide(j)
         block = Polygon(_rect(X, u, 3.4 * geom.sym, 2.0 * geom.sym), closed=True, facecolor=s.link_fill,
                         edgecolor=s.ink, lw=s.outline_lw * 1.3, zorder=2.5)
-        ax.add_patch(block)
+        put(ax, block, block.get_xy())
         out.append(block)
         if labeler:
             corners = np.asarray(block.get_xy(), float)
@@ -326,7 +326,7 @@ def _ground(ax, X, size, s, direction, out, labeler=None):
                      base + n * 1.3 * size + d * 0.55 * size], closed=True, fill=False, hatch=s.ground_hatch,
                     edgecolor=s.ink, lw=0, zorder=1.1)
     for p in (tri, hatch):
-        ax.add_patch(p)
+        put(ax, p, p.get_xy())
     base_line.set_zorder(2.6)
     tri.set_zorder(2.6)
     hatch.set_zorder(2.55)
@@ -381,14 +381,14 @@ def _rails(ax, geom: Geometry, j: Prismatic, s, out, labeler=None):
             w = 0.55 * geom.sym
             hatch = Polygon([a, b, b + side * n * w, a + side * n * w], closed=True, fill=False, hatch=s.ground_hatch,
                             edgecolor=s.ink, lw=0, zorder=1.1)
-            ax.add_patch(hatch)
+            put(ax, hatch, hatch.get_xy())
             out.append(hatch)
             if labeler:
                 labeler.polyline(hatch.get_xy(), closed=True)  # the hatching: a label on it is hard to read
     return cl
 
 
-def draw_mechanism(construction, *, ax=None, labels=True, faint=False, emphasis=None, **style) -> Drawn:
+def draw_mechanism(construction, *, ax=None, labels=True, faint=False, emphasis=None, place=True, **style) -> Drawn:
     """Draw the mechanism to scale at the construction's position, in mm.
 
     Links are bars between their points (plates for ternary links), pins
@@ -409,6 +409,10 @@ def draw_mechanism(construction, *, ax=None, labels=True, faint=False, emphasis=
         Draw everything pale (a background for construction steps).
     emphasis : int, optional
         With ``faint``, a link drawn at full strength.
+    place : bool
+        Place the labels now. False when a drawing on top adds labels of its own and places them all
+        (:func:`graphkin.draw.steps.draw_step_geometry` does): each placement lays every label out afresh,
+        so placing the mechanism's alone first would be work thrown away.
     **style
         Overrides of :class:`graphkin.draw.style.Style` fields.
 
@@ -488,8 +492,9 @@ def draw_mechanism(construction, *, ax=None, labels=True, faint=False, emphasis=
     if labels:
         view = float(np.max(np.ptp(np.asarray(extent, float), axis=0))) * 1.18
         _label_points(ax, geom, c, s, lab, drawn, faint, emphasis, near=NEAR / points_per_unit(ax, view))
-    lab.place()
-    drawn += lab.leaders
+    if place:
+        lab.place()
+        drawn += lab.leaders
     ax._graphkin_labeler = lab  # what a drawing on top (a construction step) keeps off
     return drawn
 
@@ -500,10 +505,7 @@ NEAR = 9.0
 
 def _candidates(X, away, spread=0.0):
     """Label spots around a point (or a cluster of points ``spread`` points across): near ones first."""
-    out = []
-    for pad in (6.0, 13.0, 22.0, 34.0, 48.0, 64.0):
-        out += point_label_candidates(X, away, pad + spread)
-    return out
+    return point_label_candidates(X, away, [pad + spread for pad in (6.0, 13.0, 22.0, 34.0, 48.0, 64.0)])
 
 
 def _point_name(name: str, links, shared) -> str:

@@ -1,9 +1,18 @@
-"""Text as the figures write it: subscripted names, numbers with a true minus, polar form, the input, a halo."""
+"""Text as the figures write it: subscripted names, numbers with a true minus, polar form, the input, a halo;
+and text laid out once per process in SVG output."""
 
 from __future__ import annotations
 
+import functools
 import math
 import re
+import threading
+from contextlib import contextmanager
+
+import numpy as np
+from matplotlib.backends import backend_svg
+from matplotlib.font_manager import findfont
+from matplotlib.textpath import TextToPath
 
 from .axes import MM
 
@@ -88,3 +97,74 @@ def halo(width: float = 2.6):
     from matplotlib.patheffects import withStroke
 
     return withStroke(linewidth=width, foreground="white")
+
+
+class _TextToPathOnce(TextToPath):
+    """Text laid out, and turned into outlines, once per process for every SVG renderer.
+
+    matplotlib gives each renderer a :class:`~matplotlib.textpath.TextToPath` of its own, and the SVG
+    renderer asks it for every text's size and, for a text with a halo (drawn as its outline), for the
+    outline: a handout's twenty figures laid the same names (``A``, ``F₂₃``, ``0``) out twenty times, a
+    tenth of a student's handout. What a text becomes depends on the string, its font properties and the
+    font file they resolve to (in the key, so that a change of ``rcParams["font.*"]`` makes a new entry),
+    never on the renderer. TeX text is left to matplotlib.
+    """
+
+    @staticmethod
+    def _key(prop):
+        # A copy: FontProperties is mutable and hashes by its state (matplotlib's own text cache does so too).
+        return prop.copy(), findfont(prop)
+
+    def get_text_width_height_descent(self, s, prop, ismath):
+        if ismath == "TeX":
+            return super().get_text_width_height_descent(s, prop, ismath)
+        return self._size(s, *self._key(prop), ismath)
+
+    @functools.lru_cache(8192)
+    def _size(self, s, prop, font, ismath):
+        return super().get_text_width_height_descent(s, prop, ismath)
+
+    def get_text_path(self, prop, s, ismath=False, *, features=None, language=None):
+        if ismath == "TeX":
+            return super().get_text_path(prop, s, ismath, features=features, language=language)
+        return self._outline(s, *self._key(prop), ismath, None if features is None else tuple(features), language)
+
+    @functools.lru_cache(2048)
+    def _outline(self, s, prop, font, ismath, features, language):
+        verts, codes = super().get_text_path(prop, s, ismath, features=features, language=language)
+        # Two arrays rather than matplotlib's list of vertex rows (a tenth of the memory), read-only because
+        # every figure shares them: the renderer only reads them into a Path.
+        verts, codes = np.asarray(verts, float).reshape(-1, 2), np.asarray(codes, np.uint8)
+        verts.flags.writeable = codes.flags.writeable = False
+        return verts, codes
+
+
+_TEXT_TO_PATH = _TextToPathOnce()
+
+
+class _RendererSVG(backend_svg.RendererSVG):
+    """matplotlib's SVG renderer with the shared :class:`_TextToPathOnce`."""
+
+    def __init__(self, *args, **kwargs):
+        super().__init__(*args, **kwargs)
+        self._text2path = _TEXT_TO_PATH
+
+
+_SWAP = threading.RLock()
+
+
+@contextmanager
+def svg_text_laid_out_once():
+    """While in the block, SVG files that matplotlib writes lay each text out once per process.
+
+    ``savefig(format="svg")`` makes its renderer by the name ``RendererSVG`` in matplotlib's SVG backend and
+    offers no way to pass one; the name points at :class:`_RendererSVG` for the block. The SVG is the same,
+    byte for byte.
+    """
+    with _SWAP:  # two threads saving at once must not put each other's name back
+        plain = backend_svg.RendererSVG
+        backend_svg.RendererSVG = _RendererSVG
+        try:
+            yield
+        finally:
+            backend_svg.RendererSVG = plain

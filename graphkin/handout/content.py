@@ -747,7 +747,8 @@ def _graphical(doc: _Doc, s: _Subject, entry: dict, c):
         pics = []
         if _draws_geometry(step, s.mech.driver.link):
             def geometry(step=step):
-                d = draw.draw_mechanism(c, faint=True, emphasis=step.link)
+                # The step places the mechanism's labels with its own: placing them alone first is work lost.
+                d = draw.draw_mechanism(c, faint=True, emphasis=step.link, place=False)
                 draw_step_geometry(c, step, ax=d.ax)
                 return d
 

@@ -58,7 +58,9 @@ class Picture:
             # handout gives the same bytes, so a teacher can diff this year's HTML against last year's.
             from matplotlib import rc_context
 
-            with rc_context({"svg.hashsalt": f"graphkin-{self.key}"}):
+            from ..draw.text import svg_text_laid_out_once
+
+            with rc_context({"svg.hashsalt": f"graphkin-{self.key}"}), svg_text_laid_out_once():
                 fig.savefig(out, format="svg", bbox_inches=box, facecolor="white", metadata={"Date": None})
             self._svg = out.getvalue().decode("utf-8")
             self.draw = None  # the figure and its data can go
