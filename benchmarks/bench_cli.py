@@ -166,12 +166,7 @@ def main() -> int:
             return _compare(tmp, env, args)
         print("graphkin command-line latency (issue 15)")
         print("========================================")
-        print(f"date       {time.strftime('%Y-%m-%dT%H:%M:%S%z')}")
-        print(f"machine    {platform.machine()}, {os.cpu_count()} CPUs, {platform.system()} {platform.release()}")
-        print(f"python     {platform.python_version()} ({sys.executable})")
-        print(f"graphkin   {where}")
-        if hasattr(os, "getloadavg"):
-            print("load avg   {:.2f} {:.2f} {:.2f} (1, 5, 15 min)".format(*os.getloadavg()))
+        _when_and_where({"graphkin": where})
         print(f"runs       {args.runs} per command, a new process each; median and fastest wall time [ms]")
         print()
         print(f"{'command':48s} {'median':>8s} {'min':>8s} {'aim':>8s}  verdict")
@@ -225,6 +220,17 @@ def main() -> int:
     return 0
 
 
+def _when_and_where(packages: dict) -> None:
+    """The run's header: date, machine, Python, the graphkin package(s) timed, the load before it."""
+    print(f"date       {time.strftime('%Y-%m-%dT%H:%M:%S%z')}")
+    print(f"machine    {platform.machine()}, {os.cpu_count()} CPUs, {platform.system()} {platform.release()}")
+    print(f"python     {platform.python_version()} ({sys.executable})")
+    for label, where in packages.items():
+        print(f"{label:<10s} {where}")
+    if hasattr(os, "getloadavg"):
+        print("load avg   {:.2f} {:.2f} {:.2f} (1, 5, 15 min)".format(*os.getloadavg()))
+
+
 def _compare(tmp: Path, env: dict, args) -> int:
     """``--against DIR``: each command with this checkout's graphkin and DIR's, alternately."""
     other = _environment(tmp, args.against)
@@ -235,11 +241,7 @@ def _compare(tmp: Path, env: dict, args) -> int:
     theirs = subprocess.run([sys.executable, "-c", "import graphkin; print(graphkin.__file__)"], env=other,
                             capture_output=True, text=True).stdout.strip()
     print("graphkin command-line latency (issue 15), two versions side by side")
-    print(f"date       {time.strftime('%Y-%m-%dT%H:%M:%S%z')}")
-    print(f"A (this)   {mine}")
-    print(f"B          {theirs}")
-    if hasattr(os, "getloadavg"):
-        print("load avg   {:.2f} {:.2f} {:.2f} (1, 5, 15 min)".format(*os.getloadavg()))
+    _when_and_where({"A (this)": mine, "B": theirs})
     print(f"runs       {args.runs} per command and version, alternating; median (min) wall time [ms]")
     print()
     print(f"{'command':48s} {'A':>14s} {'B':>14s} {'A/B':>6s} {'aim':>6s}  A meets it")

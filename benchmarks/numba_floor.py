@@ -21,7 +21,7 @@ from __future__ import annotations
 
 import math
 import sys
-import time
+import timeit
 from pathlib import Path
 
 import numpy as np
@@ -150,12 +150,7 @@ def time_floor(n: int, repeat: int = 7) -> float:
     """Best-of-``repeat`` wall time [s] of :func:`floor` at n positions (compiled beforehand)."""
     prepare()
     theta = ps.crank_angles(n)
-    best = float("inf")
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        floor(theta)
-        best = min(best, time.perf_counter() - t0)
-    return best
+    return min(timeit.repeat(lambda: floor(theta), number=1, repeat=repeat))
 
 
 if __name__ == "__main__":

@@ -54,7 +54,7 @@ against the closed-form numpy four-bar and the timings.
 
 from __future__ import annotations
 
-import time
+import timeit
 from math import pi
 
 import numpy as np
@@ -229,21 +229,11 @@ def time_pylinkage(n: int, repeat: int = 7, api: str = "linkage") -> float:
     """
     prepare(n)
     fn = {"linkage": pylinkage_kinematics, "kernel": _kernel_call}[api]
-    best = float("inf")
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        fn(n)
-        best = min(best, time.perf_counter() - t0)
-    return best
+    return min(timeit.repeat(lambda: fn(n), number=1, repeat=repeat))
 
 
 def _time_reference(n: int, repeat: int = 7) -> float:
-    best = float("inf")
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        reference_kinematics(n)
-        best = min(best, time.perf_counter() - t0)
-    return best
+    return min(timeit.repeat(lambda: reference_kinematics(n), number=1, repeat=repeat))
 
 
 def max_errors(n: int) -> dict[str, float]:

@@ -38,14 +38,20 @@ def _pdf_text(path) -> str:
     return "\n".join(page.extract_text() for page in pypdf.PdfReader(path).pages)
 
 
+def _handout(tmp_path_factory, name: str, text: str, suffix: str):
+    """A problem file written from ``text``, its key built and written as ``suffix``: (file, doc, output)."""
+    folder = tmp_path_factory.mktemp(name)
+    path = folder / f"{name}.toml"
+    path.write_text(text, encoding="utf-8")
+    doc = handout.build(str(path))
+    out = folder / f"{name}{suffix}"
+    handout.write(doc, out)
+    return path, doc, out
+
+
 @pytest.fixture(scope="module")
 def static_key(tmp_path_factory):
-    folder = tmp_path_factory.mktemp("static0")
-    path = folder / "static0.toml"
-    path.write_text(STATIC_FOURBAR, encoding="utf-8")
-    doc = handout.build(str(path))
-    pdf = folder / "static0.pdf"
-    handout.write(doc, pdf)
+    path, doc, pdf = _handout(tmp_path_factory, "static0", STATIC_FOURBAR, ".pdf")
     return path, doc, _pdf_text(pdf)
 
 
@@ -102,12 +108,7 @@ def test_static_kinematics_are_positions_only(static_key):
 
 @pytest.fixture(scope="module")
 def dynamic_doc(tmp_path_factory):
-    folder = tmp_path_factory.mktemp("dynamic0")
-    path = folder / "dynamic0.toml"
-    path.write_text(DYNAMIC_CYCLE, encoding="utf-8")
-    doc = handout.build(str(path))
-    md = folder / "dynamic0.md"
-    handout.write(doc, md)
+    path, doc, md = _handout(tmp_path_factory, "dynamic0", DYNAMIC_CYCLE, ".md")
     return path, doc, md.read_text(encoding="utf-8")
 
 

@@ -148,11 +148,16 @@ class SubProblem:
 
     def force(self, i: int, j: int) -> np.ndarray:
         """Force of link i on link j in this sub-problem [N], shape (2,)."""
-        key = (min(i, j), max(i, j))
-        if key not in self.forces:
-            raise GraphkinError(f"links {i} and {j} share no joint")
-        F = np.asarray(self.forces[key], dtype=float)
-        return F if i < j else -F
+        return _force_of(self.forces, i, j)
+
+
+def _force_of(forces: dict, i: int, j: int) -> np.ndarray:
+    """Force of link i on link j [N] from forces kept as the lower-numbered link's on the higher."""
+    key = (min(i, j), max(i, j))
+    if key not in forces:
+        raise GraphkinError(f"links {i} and {j} share no joint")
+    F = np.asarray(forces[key], dtype=float)
+    return F if i < j else -F
 
 
 def nice_scale(largest: float, length: float = 80.0) -> float:
@@ -289,11 +294,7 @@ class Construction:
 
     def force(self, i: int, j: int) -> np.ndarray:
         """Force of link i on link j [N], shape (2,)."""
-        key = (min(i, j), max(i, j))
-        if key not in self.forces:
-            raise GraphkinError(f"links {i} and {j} share no joint")
-        F = np.asarray(self.forces[key], dtype=float)
-        return F if i < j else -F
+        return _force_of(self.forces, i, j)
 
     def __getitem__(self, name: str):
         from ..solve.result import parse_force_name
