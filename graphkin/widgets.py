@@ -43,7 +43,9 @@ Examples
 
 from __future__ import annotations
 
+import collections
 import contextlib
+import dataclasses
 import functools
 import io
 import json
@@ -84,8 +86,45 @@ LIVE = 0.15
 ECHOES = 64
 """Values set by the kernel that are remembered to recognise their late echoes."""
 
+AHEAD = 2
+"""Positions drawn ahead on either side of the one shown, while the kernel is idle (the way it moves first)."""
 
-def explore(problem, *, n: int = 360, limits=None, dpi: int | None = None, halo: bool = False):
+IDLE = 0.05
+"""Seconds without a new value before the explorer draws ahead."""
+
+FRAMES = 48
+"""Finished frames kept (least recently shown dropped first): a few MB of PNG."""
+
+
+@dataclasses.dataclass(frozen=True, slots=True)
+class Frame:
+    """One position, drawn: what the explorer's widgets show there.
+
+    Attributes
+    ----------
+    value : float
+        The position [deg or mm].
+    png : bytes
+        The figure.
+    construction, analytical
+        The graphical and the matrix solution (None where there is none).
+    message : str
+        Why there is no solution here ("" where there is one).
+    status, table : str
+        The HTML of the status line and of the force table.
+    """
+
+    value: float
+    png: bytes
+    construction: object
+    analytical: object
+    message: str
+    status: str
+    table: str
+
+
+def explore(problem, *, n: int = 360, limits=None, dpi: int | None = None, halo: bool = False,
+            ahead: int = AHEAD):
     """An interactive explorer of a problem, for a Jupyter notebook.
 
     Parameters
@@ -106,12 +145,17 @@ def explore(problem, *, n: int = 360, limits=None, dpi: int | None = None, halo:
     halo : bool
         Keep the white outline behind labels (legible over lines, but drawing
         outlined text costs about a third of the rendering time).
+    ahead : int
+        While the kernel is idle, the positions this many steps either side of
+        the one shown are drawn ahead, the way the slider last moved first: a
+        key press (or a typed value) that reaches one of them shows it at once.
+        0 draws only what is asked for.
 
     Returns
     -------
     Explorer
     """
-    return Explorer(problem, n=n, limits=limits, dpi=dpi, halo=halo)
+    return Explorer(problem, n=n, limits=limits, dpi=dpi, halo=halo, ahead=ahead)
 
 
 def _link_size(link) -> float:
@@ -129,7 +173,9 @@ def _empty(ax):
         title.set_text("")
     ax.ignore_existing_data_limits = True
     ax.dataLim.set_points(np.array([[np.inf, np.inf], [-np.inf, -np.inf]]))
-    ax.set_autoscale_on(True)
+    # Every drawing sets its panel's view itself: with autoscaling off, matplotlib neither keeps the
+    # data limits (graphkin.draw.axes.follows_data) nor fits a view that is then replaced.
+    ax.set_autoscale_on(False)
 
 
 def _assembling_span(problem, q0: float, n: int) -> tuple[float, float]:
@@ -288,7 +334,8 @@ class Explorer:
         Seconds taken by each update (construction + redraw + PNG).
     """
 
-    def __init__(self, problem, *, n: int = 360, limits=None, dpi: int | None = None, halo: bool = False):
+    def __init__(self, problem, *, n: int = 360, limits=None, dpi: int | None = None, halo: bool = False,
+                 ahead: int = AHEAD):
         import ipywidgets as W
         from matplotlib.figure import Figure
 
@@ -298,8 +345,11 @@ class Explorer:
             raise GraphkinError(f"n must be a whole number of positions ≥ 2, got {n!r}")
         if dpi is not None and (isinstance(dpi, bool) or not isinstance(dpi, (int, np.integer)) or dpi < 10):
             raise GraphkinError(f"dpi must be a whole number ≥ 10 (or None: the screen's), got {dpi!r}")
+        if isinstance(ahead, bool) or not isinstance(ahead, (int, np.integer)) or ahead < 0:
+            raise GraphkinError(f"ahead must be a whole number of positions ≥ 0, got {ahead!r}")
         self.n = int(n)
         self.halo = halo
+        self.ahead = int(ahead)
         self.crank = problem.mechanism.driver.kind == "crank"
         self._original = problem
         q_dot0 = float(problem.q_dot[0])
@@ -315,6 +365,10 @@ class Explorer:
         self._sent: list[float] = []  # values set by the kernel since the browser last moved the slider
         self._timer = None  # the pending draw of a value from the browser
         self._first_wait = None  # when the values now waiting began to arrive (loop time)
+        self._frames: collections.OrderedDict = collections.OrderedDict()  # position -> Frame, drawn
+        self._figure_at = None  # the position the figure shows (None: none yet)
+        self._heading = 1  # the way the slider last moved: +1 or -1
+        self._ahead_handle = None  # the pending draw ahead
 
         q0 = float(problem.q[0])
         if self.crank:
@@ -355,8 +409,8 @@ class Explorer:
         self.speed.layout = W.Layout(width="15em", flex="0 0 auto")
         self.speed.disabled = bool(problem.given)
 
-        self.figure = Figure(dpi=self._dpi or CSS_DPI)
-        StampCanvas(self.figure)  # each distinct label is rendered once, then pasted
+        self._figure = Figure(dpi=self._dpi or CSS_DPI)
+        StampCanvas(self._figure)  # each distinct label is rendered once, then pasted
         self.image = W.Image(format="png", layout=W.Layout(max_width="100%", height="auto"))
         self.status = W.HTML(layout=W.Layout(flex="1 1 auto"))
         self.table = W.HTML()
@@ -431,9 +485,10 @@ class Explorer:
         if "value" in self.box._property_lock:
             # Typed by a person: it stands, even if it equals a value the kernel set earlier.
             self._sent.clear()
-            self.value = self._snap(change["new"])
-            self._show(self.value)
-            self._later()
+            v = self._snap(change["new"])
+            self._move(v)
+            self._show(v)
+            self._take(v)
         else:
             self._goto(change["new"])
 
@@ -442,9 +497,15 @@ class Explorer:
         v = self._snap(value)
         self._sent.append(v)
         del self._sent[:-ECHOES]
-        self.value = v
+        self._move(v)
         self._show(v)
         self.update()
+
+    def _move(self, v: float):
+        """Make ``v`` the position, noting the way the slider moved (drawn ahead first)."""
+        if not self._same(v, self.value):
+            self._heading = 1 if v > self.value else -1
+        self.value = v
 
     def from_browser(self, value: float) -> bool:
         """Take a value of the slider that came from the browser; returns whether it moved the explorer.
@@ -454,8 +515,10 @@ class Explorer:
         arrive after the kernel has set a newer one. A value within a millionth of
         a step of the position drawn changes nothing; one equal to an earlier value
         the kernel set is such a late echo: the slider is put back to the position
-        drawn. Anything else is a person's move: it is drawn once the burst of
-        moves settles (:data:`SETTLE`), or at once outside a running event loop.
+        drawn. Anything else is a person's move: shown at once if that position
+        was drawn ahead (see ``ahead`` in :func:`explore`), else drawn once the
+        burst of moves settles (:data:`SETTLE`), or at once outside a running
+        event loop.
 
         Parameters
         ----------
@@ -474,9 +537,9 @@ class Explorer:
                 self.slider.value = self.value  # tells the browser where the explorer is
             return False
         self._sent.clear()
-        self.value = v
+        self._move(v)
         self._show(v, slider=False)
-        self._later()
+        self._take(v)
         return True
 
     def _later(self):
@@ -554,8 +617,10 @@ class Explorer:
 
         from .draw.axes import PanelAxes
 
-        fig = self.figure
+        fig = self._figure
         fig.clear()
+        self._frames.clear()  # drawn for the old layout
+        self._figure_at = None
         moving = list(self.problem.mechanism.moving)
         fbd_rows = math.ceil(len(moving) / NCOLS)
         poly_rows = math.ceil(polygons / NCOLS)
@@ -593,7 +658,7 @@ class Explorer:
         # The torque curve's axes keep their position: no per-draw title layout.
         self.ax_torque._autotitlepos = False
         self.curve = None
-        self.marker = None
+        self._marker = None
 
     # -- the torque curve ---------------------------------------------------------
     def _sweep(self):
@@ -611,6 +676,7 @@ class Explorer:
 
     def _draw_curve(self):
         self._background = None
+        self._frames.clear()  # their marker sits on the old curve
         ax = self.ax_torque
         ax.cla()
         ax._autotitlepos = False
@@ -621,7 +687,7 @@ class Explorer:
         unit = "N·m" if self.crank else "N"
         speed = f"{self.speed.value:g} {'rpm' if self.crank else 'm/s'}"
         (self.curve,) = ax.plot(x, y, color="#0072B2", lw=1.4)
-        (self.marker,) = ax.plot([np.nan], [np.nan], "o", color="#CC79A7", ms=7, zorder=5)
+        (self._marker,) = ax.plot([np.nan], [np.nan], "o", color="#CC79A7", ms=7, zorder=5)
         ax.axhline(0.0, color="#999999", lw=0.6)
         ax.set_xlim(*self.limits)
         finite = y[np.isfinite(y)]
@@ -654,21 +720,35 @@ class Explorer:
     # -- one update -----------------------------------------------------------------
     def update(self):
         """Solve and redraw at the current position (:attr:`value`); returns the Construction drawn (None if none)."""
+        self._cancel()  # what was waiting to be drawn is drawn now
+        t0 = time.perf_counter()
+        frame = self._draw(self.value)
+        self._present(frame)
+        self.timings.append(time.perf_counter() - t0)
+        self._plan_ahead()
+        return frame.construction
+
+    def _draw(self, value: float) -> Frame:
+        """Solve and draw the figure at ``value``, keep the frame and return it (the widgets show what they showed)."""
         import matplotlib
 
-        self._cancel()  # what was waiting to be drawn is drawn now
         # Unhinted glyphs lay out and render about a quarter faster, and look the same at this size.
         with matplotlib.rc_context(RC):
-            return self._update()
+            frame = self._drawn(value)
+        self._figure_at = value
+        self._frames[value] = frame
+        self._frames.move_to_end(value)
+        while len(self._frames) > FRAMES:
+            self._frames.popitem(last=False)
+        return frame
 
-    def _update(self):
+    def _drawn(self, value: float) -> Frame:
         from . import draw
         from .graphic import construct_forces
 
-        t0 = time.perf_counter()
-        q = self._si(self.value)
+        q = self._si(value)
         c = a = None
-        self.message = ""
+        message = ""
         try:
             kin = self.problem.kinematics(at=[q])
             c = construct_forces(kin, 0)
@@ -676,22 +756,21 @@ class Explorer:
 
             a = solve_forces(kin)
         except GraphkinError as exc:
-            self.message = str(exc)
+            message = str(exc)
         if c is not None and not c.valid:
-            self.message = c.reason or "the linkage cannot be assembled here"
-        self.construction, self.analytical = c, a
+            message = c.reason or "the linkage cannot be assembled here"
         polys = [s for s in c.steps if s.polygon] if (c is not None and c.valid) else []
         if len(polys) > self._polygon_slots:
             self._layout(len(polys))
             self._draw_curve()
         for ax in self._panels:
             _empty(ax)
-        here = f"{self.value:g}{'°' if self.crank else ' mm'}"
-        if self.message:
-            self.ax_mechanism.text(0.5, 0.5, f"No solution at {here}:\n{self.message}", ha="center", va="center",
+        here = f"{value:g}{'°' if self.crank else ' mm'}"
+        if message:
+            self.ax_mechanism.text(0.5, 0.5, f"No solution at {here}:\n{message}", ha="center", va="center",
                                    wrap=True, fontsize=10, color="#D55E00", transform=self.ax_mechanism.transAxes)
-            self.marker.set_data([np.nan], [np.nan])
-            self.status.value = f"<b>No solution at {here}</b>: {self.message}"
+            self._marker.set_data([np.nan], [np.nan])
+            status = f"<b>No solution at {here}</b>: {message}"
         else:
             draw.draw_mechanism(c, ax=self.ax_mechanism)
             for link, ax in self.ax_fbd.items():
@@ -699,41 +778,118 @@ class Explorer:
             for step, ax in zip(polys, self.ax_polygons):
                 draw.draw_force_polygon(step, scale=c.force_scale, ax=ax, driver_name=c.driver_name, values=False)
             effort = float(a.effort[0]) if a is not None else float(c.effort)
-            self.marker.set_data([self.value], [effort])
+            self._marker.set_data([value], [effort])
             name = c.driver_name
             unit = "N·m" if self.crank else "N"
             warn = "".join(f"<br>warning: {w}" for w in c.warnings)
-            self.status.value = (f"{here}: {name} = {effort:.5g} {unit} (analytical), "
-                                 f"{float(c.effort):.5g} {unit} (graphical){warn}")
+            status = (f"{here}: {name} = {effort:.5g} {unit} (analytical), "
+                      f"{float(c.effort):.5g} {unit} (graphical){warn}")
         where = f"θ = {here}" if self.crank else f"s = {here}"
-        self.table.value = _table(c, a, where) if not self.message else ""
+        table = _table(c, a, where) if not message else ""
         for ax in self._panels:
             ax._autotitlepos = False
             if not self.halo:
                 for t in ax.texts:
                     if t.get_path_effects():
                         t.set_path_effects([])
-        self.image.value = self.png()
-        self.timings.append(time.perf_counter() - t0)
-        return c
+        return Frame(value, self._png(), c, a, message, status, table)
+
+    def _present(self, frame: Frame):
+        """Show a drawn frame in the widgets."""
+        self.construction, self.analytical, self.message = frame.construction, frame.analytical, frame.message
+        self.status.value = frame.status
+        self.table.value = frame.table
+        self.image.value = frame.png
+
+    # -- drawing ahead ----------------------------------------------------------------
+    def _take(self, value: float):
+        """A position from the browser: shown at once if it was drawn ahead, else drawn once the values settle."""
+        frame = self._frames.get(value)
+        if frame is None:
+            self._later()
+            return
+        self._cancel()  # a value still waiting is superseded by this one
+        self._frames.move_to_end(value)
+        self._present(frame)
+        self._plan_ahead()
+
+    def _neighbours(self) -> list[float]:
+        """The positions to draw ahead, nearest first, the way the slider last moved before the other."""
+        out = []
+        for k in range(1, self.ahead + 1):
+            for way in (self._heading, -self._heading):
+                v = self._snap(self.value + way * k * self.step)
+                if not self._same(v, self.value) and v not in out:
+                    out.append(v)
+        return out
+
+    def _plan_ahead(self):
+        """Draw the neighbours once the kernel has been idle for :data:`IDLE` (in a running event loop only)."""
+        loop = _running_loop()
+        if loop is None or not self.ahead:
+            return
+        if self._ahead_handle is not None:
+            self._ahead_handle.cancel()
+        self._ahead_handle = loop.call_later(IDLE, self._draw_ahead)
+
+    def _draw_ahead(self):
+        """Draw one neighbour not drawn yet, then give the loop back (a message that came meanwhile goes first)."""
+        self._ahead_handle = None
+        if self._timer is not None:
+            return  # a value from the browser is waiting: its drawing plans again
+        todo = [v for v in self._neighbours() if v not in self._frames]
+        if not todo:
+            return
+        try:
+            self._draw(todo[0])
+        except Exception:  # noqa: BLE001 - drawn again when it is asked for, and any error shows then
+            return
+        # A timer, not call_soon: the loop reads the messages that came while this frame was drawn first.
+        self._ahead_handle = _running_loop().call_later(0.0, self._draw_ahead)
+
+    # -- the figure -------------------------------------------------------------------
+    @property
+    def figure(self):
+        """The figure (matplotlib.figure.Figure), drawn at :attr:`value`.
+
+        After a frame drawn ahead was shown (or while positions are drawn
+        ahead), the figure may hold another position; asking for it draws the
+        current one first.
+        """
+        self._sync()
+        return self._figure
+
+    @property
+    def marker(self):
+        """The marker on the torque curve (matplotlib.lines.Line2D), at :attr:`value`."""
+        self._sync()
+        return self._marker
+
+    def _sync(self):
+        if self._figure_at is None or not self._same(self._figure_at, self.value):
+            self._draw(self.value)
 
     def png(self) -> bytes:
-        """The figure as PNG bytes (fast zlib setting)."""
+        """The figure at :attr:`value` as PNG bytes (fast zlib setting)."""
+        self._sync()
+        return self._png()
+
+    def _png(self) -> bytes:
         from PIL import Image
 
         from matplotlib.transforms import TransformedBbox
 
-        canvas = self.figure.canvas
-        fig, ax = self.figure, self.ax_torque
+        canvas = self._figure.canvas
+        fig, ax = self._figure, self.ax_torque
         # The torque curve changes only with the speed: its pixels are rendered once and pasted,
         # and only the marker is drawn on each update.
         if self._background is None:
             for panel in self._panels:
                 panel.set_visible(False)
-            self.marker.set_visible(False)
+            self._marker.set_visible(False)
             canvas.draw()
             self._background = canvas.copy_from_bbox(TransformedBbox(self._torque_cell, fig.transFigure))
-            self.marker.set_visible(True)
+            self._marker.set_visible(True)
             for panel in self._panels:
                 panel.set_visible(True)
         ax.set_visible(False)
@@ -742,7 +898,7 @@ class Explorer:
         finally:
             ax.set_visible(True)
         canvas.restore_region(self._background)
-        ax.draw_artist(self.marker)
+        ax.draw_artist(self._marker)
         w, h = canvas.get_width_height(physical=True)
         # Line art on white has few colours: a 256-colour palette (octree, no dithering visible at
         # this size) makes a PNG a third the size, and quantising + encoding costs half of what

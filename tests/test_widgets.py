@@ -312,6 +312,85 @@ def test_a_burst_from_the_browser_is_drawn_once_at_its_last_value():
     assert len(ex.timings) == before + 2 and ex.construction.q == pytest.approx(math.radians(50))
 
 
+def _grey(png: bytes):
+    import io
+
+    from PIL import Image
+
+    with Image.open(io.BytesIO(png)) as im:
+        return np.asarray(im.convert("RGBA").convert("L"), float)
+
+
+def test_positions_next_to_the_one_shown_are_drawn_ahead_and_a_key_press_shows_one_at_once():
+    """Idle in a kernel, the explorer draws θ ± 1 and ± 2 steps, the way it last moved first (issue 15)."""
+    import asyncio
+
+    from graphkin import widgets
+
+    ex = explore(catalog.load("strip_cutter"), n=SMALL)
+
+    async def session():
+        ex.slider.value = 100  # code draws at once, then, idle, the neighbours
+        for _ in range(200):
+            if {98.0, 99.0, 101.0, 102.0} <= set(ex._frames):
+                break
+            await asyncio.sleep(0.05)
+        order = [v for v in ex._frames if v in (98.0, 99.0, 101.0, 102.0)]
+        drawn = len(ex.timings)
+        ex.slider.set_state({"value": 101})  # an arrow key in the browser
+        shown_at_once = (len(ex.timings) == drawn, ex.value, ex.construction.q, ex.table.value, ex.status.value,
+                         ex.image.value == ex._frames[101.0].png)
+        await asyncio.sleep(widgets.IDLE + 2.0)  # 103 is drawn next: 101's other neighbours are done
+        return order, shown_at_once, list(ex._frames)
+
+    order, (nothing_redrawn, value, q, table, status, image), frames = asyncio.run(session())
+    assert order == [101.0, 99.0, 102.0, 98.0]  # up first: the slider came up from its start at 0°
+    assert nothing_redrawn and value == 101 and image
+    assert q == pytest.approx(math.radians(101))
+    ref = ex.problem.solve(at=[math.radians(101)])
+    assert "θ = 101°" in table and f"{ref.effort[0]:.5g}" in status
+    assert frames[-1] == 103.0
+    # The figure is the position shown when code asks for it, drawn again if the neighbours were drawn since.
+    x, y = ex.marker.get_data()
+    assert x[0] == 101 and y[0] == pytest.approx(ref.effort[0], rel=1e-12)
+    got, shown, last = _grey(ex.png()), _grey(ex._frames[101.0].png), _grey(ex._frames[103.0].png)
+    assert np.abs(got - shown).mean() < 0.2 * np.abs(last - shown).mean()  # 101's picture, not 103's
+
+
+def test_a_frame_drawn_ahead_is_the_frame_drawn_when_asked():
+    import asyncio
+
+    ahead = explore(catalog.load("slider_crank_friction"), n=SMALL)
+    plain = explore(catalog.load("slider_crank_friction"), n=SMALL, ahead=0)
+
+    async def idle():
+        ahead.slider.value = 60
+        plain.slider.value = 60
+        for _ in range(200):
+            if 61.0 in ahead._frames:
+                break
+            await asyncio.sleep(0.05)
+        await asyncio.sleep(0.3)
+        return sorted(plain._frames)
+
+    assert asyncio.run(idle()) == [0.0, 60.0]  # ahead=0: nothing but what was asked for (first 0°, then 60°)
+    frame = ahead._frames[61.0]
+    plain.slider.set_state({"value": 61})  # drawn when asked
+    assert (frame.status, frame.table, frame.message) == (plain.status.value, plain.table.value, plain.message)
+    assert frame.construction.effort == plain.construction.effort
+    got, want, before = _grey(frame.png), _grey(plain.image.value), _grey(ahead._frames[60.0].png)
+    # The same picture: text stamped to whole pixels and the palette may differ by a shade here and there,
+    # far below what one degree of crank changes.
+    assert got.shape == want.shape
+    assert np.abs(got - want).mean() < 0.2 * np.abs(before - want).mean()
+
+
+def test_bad_ahead():
+    for bad in (-1, 1.5, True):
+        with pytest.raises(Exception, match="ahead must be a whole number"):
+            explore(catalog.load("strip_cutter"), n=SMALL, ahead=bad)
+
+
 def test_the_figure_is_rendered_for_the_screen_the_browser_reports():
     import io
     import json

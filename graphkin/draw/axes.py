@@ -156,13 +156,14 @@ def line(ax, x, y, **props):
     ``props`` are Line2D properties and their short names (``lw``, ``ms``,
     ``mfc``); give ``color`` (there is no colour cycle). Faster than
     ``ax.plot``: no format-string parsing, and the points join the data
-    limits directly instead of through the line's transformed path.
+    limits directly instead of through the line's transformed path (and
+    not at all on axes whose view is fixed: see :func:`follows_data`).
     """
     x = np.atleast_1d(np.asarray(x, float))
     y = np.atleast_1d(np.asarray(y, float))
     artist = Line2D(x, y, **props)
     _add(ax, artist)
-    if x.size:
+    if x.size and follows_data(ax):
         ax.update_datalim(np.column_stack([x, y]))
         # As ax.plot does: the view follows the data at the next draw (unless the limits were set).
         request = getattr(ax, "_request_autoscale_view", None)
@@ -183,8 +184,20 @@ def put(ax, patch, points):
     ends are extent enough.
     """
     _add(ax, patch)
-    ax.update_datalim(np.asarray(points, float).reshape(-1, 2))
+    if follows_data(ax):
+        ax.update_datalim(np.asarray(points, float).reshape(-1, 2))
     return patch
+
+
+def follows_data(ax) -> bool:
+    """Whether the view of ``ax`` is fitted to its data at the next draw (autoscaling on in x or y).
+
+    Only then are data limits worth keeping up to date. Axes whose view was
+    fixed (the explorer's panels, redrawn in place with their limits set by
+    each drawing) skip it: merging the points into the limits was a tenth of
+    an explorer update.
+    """
+    return ax.get_autoscalex_on() or ax.get_autoscaley_on()
 
 
 def _add(ax, artist):
