@@ -21,6 +21,7 @@ Examples
 
 from __future__ import annotations
 
+import importlib
 import os
 from pathlib import Path
 
@@ -28,16 +29,35 @@ from ..files import file_mode
 from . import style
 from .axes import Drawn
 from .convention import draw_sign_convention
-from .cycle import draw_cycle, draw_energy, draw_joint_force_index, draw_polar_forces, draw_shaking, draw_torque_curve
 from .fbd import draw_free_body, loads_on
 from .given import draw_given
 from .labels import measuring_renderer
 from .mechanism import draw_mechanism
 from .polygon import draw_force_polygon
 from .solution import comparison_rows, draw_solution
-from .steps import draw_step_grid, draw_steps
 
 FORMATS = ("png", "svg", "pdf")
+
+_LATER = {
+    **dict.fromkeys(("draw_cycle", "draw_energy", "draw_joint_force_index", "draw_polar_forces", "draw_shaking",
+                     "draw_torque_curve"), "cycle"),
+    **dict.fromkeys(("draw_step_grid", "draw_steps"), "steps"),
+}
+"""Drawings imported when first asked for: the cycle plots bring graphkin.analysis and matplotlib's tickers
+(~20 ms that ``graphkin solve --figure`` does not need)."""
+
+
+def __getattr__(name):
+    module = _LATER.get(name)
+    if module is None:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    value = getattr(importlib.import_module(f".{module}", __name__), name)
+    globals()[name] = value
+    return value
+
+
+def __dir__():
+    return sorted({*globals(), *_LATER})
 
 
 def save(fig, path, *, dpi=None, **kwargs) -> Path:
