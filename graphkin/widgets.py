@@ -23,6 +23,11 @@ What a person sees in a browser, and what code sees, agree:
 * Values that arrive from the browser in a burst (key presses, a drag) are
   drawn once, at the latest value, after the burst settles (:data:`SETTLE`).
   Values set from code are drawn at once, so a cell can read the result.
+* While the kernel is idle, the positions next to the one shown are drawn
+  ahead (:data:`AHEAD` steps either side, the way the slider last moved
+  first): an arrow key that reaches one shows that finished frame at once,
+  well under a millisecond where drawing it takes 30–200 ms. The figure and
+  the marker that code reads are always those of the position shown.
 * The figure is rendered for the screen: the browser reports its pixel ratio
   and the width it gives the explorer, and the PNG is drawn at
   ``CSS_DPI × pixel ratio`` (text of 8 pt is then at least 11 screen pixels
@@ -90,7 +95,17 @@ AHEAD = 2
 """Positions drawn ahead on either side of the one shown, while the kernel is idle (the way it moves first)."""
 
 IDLE = 0.05
-"""Seconds without a new value before the explorer draws ahead."""
+"""Seconds without a new value before the explorer draws ahead, and between two frames drawn ahead."""
+
+SHOWN = 0.5
+"""Seconds after a new layout (the explorer shown, or the page's width or pixel ratio reported) before drawing ahead.
+
+The page may still be settling (a second report of its width would throw the frames away), and a person
+looks at the figure before pressing a key: a key pressed meanwhile is drawn, not kept waiting behind a frame
+drawn ahead."""
+
+STEP = 0.002
+"""Seconds between two steps of a frame drawn ahead: the kernel reads what came meanwhile."""
 
 FRAMES = 48
 """Finished frames kept (least recently shown dropped first): a few MB of PNG."""
@@ -250,6 +265,15 @@ _PROBE = ("<img src='data:,' alt='' style='display:none' onerror=\"(function pro
           "})(this, 0)\">")
 
 
+def _step(steps):
+    """One step of a drawing (a generator), with the explorer's matplotlib settings around it only."""
+    import matplotlib
+
+    # Unhinted glyphs lay out and render about a quarter faster, and look the same at this size.
+    with matplotlib.rc_context(RC):
+        next(steps)
+
+
 def _running_loop():
     """The event loop a kernel dispatches messages from, or None (plain Python, a test)."""
     import asyncio
@@ -368,7 +392,9 @@ class Explorer:
         self._frames: collections.OrderedDict = collections.OrderedDict()  # position -> Frame, drawn
         self._figure_at = None  # the position the figure shows (None: none yet)
         self._heading = 1  # the way the slider last moved: +1 or -1
-        self._ahead_handle = None  # the pending draw ahead
+        self._ahead_handle = None  # the pending step of drawing ahead
+        self._ahead_job = None  # (position, its drawing's steps) being drawn ahead
+        self._new_layout = True  # no frame drawn ahead since the layout was made (see SHOWN)
 
         q0 = float(problem.q[0])
         if self.crank:
@@ -617,10 +643,14 @@ class Explorer:
 
         from .draw.axes import PanelAxes
 
+        job = self._ahead_job
+        if job is not None and not job[1].gi_running:
+            self._abandon()  # it draws on the old axes (unless it is what needs the new layout)
         fig = self._figure
         fig.clear()
         self._frames.clear()  # drawn for the old layout
         self._figure_at = None
+        self._new_layout = True
         moving = list(self.problem.mechanism.moving)
         fbd_rows = math.ceil(len(moving) / NCOLS)
         poly_rows = math.ceil(polygons / NCOLS)
@@ -730,19 +760,28 @@ class Explorer:
 
     def _draw(self, value: float) -> Frame:
         """Solve and draw the figure at ``value``, keep the frame and return it (the widgets show what they showed)."""
-        import matplotlib
+        self._abandon()  # a frame being drawn ahead: the figure is needed now
+        steps = self._drawing(value)
+        while True:
+            try:
+                _step(steps)
+            except StopIteration as done:
+                return done.value
 
-        # Unhinted glyphs lay out and render about a quarter faster, and look the same at this size.
-        with matplotlib.rc_context(RC):
-            frame = self._drawn(value)
-        self._figure_at = value
-        self._frames[value] = frame
-        self._frames.move_to_end(value)
+    def _keep(self, frame: Frame) -> Frame:
+        self._figure_at = frame.value
+        self._frames[frame.value] = frame
+        self._frames.move_to_end(frame.value)
         while len(self._frames) > FRAMES:
             self._frames.popitem(last=False)
         return frame
 
-    def _drawn(self, value: float) -> Frame:
+    def _drawing(self, value: float):
+        """Solve and draw the figure at ``value`` in steps (a generator: one panel, the rendering, the PNG each),
+        keep the frame and return it (the widgets show what they showed).
+
+        Drawn ahead, the kernel reads its messages between two steps (see :meth:`_draw_ahead`).
+        """
         from . import draw
         from .graphic import construct_forces
 
@@ -763,9 +802,11 @@ class Explorer:
         if len(polys) > self._polygon_slots:
             self._layout(len(polys))
             self._draw_curve()
+        self._figure_at = None  # in between: asked for, the figure is drawn again
         for ax in self._panels:
             _empty(ax)
         here = f"{value:g}{'°' if self.crank else ' mm'}"
+        yield
         if message:
             self.ax_mechanism.text(0.5, 0.5, f"No solution at {here}:\n{message}", ha="center", va="center",
                                    wrap=True, fontsize=10, color="#D55E00", transform=self.ax_mechanism.transAxes)
@@ -773,10 +814,13 @@ class Explorer:
             status = f"<b>No solution at {here}</b>: {message}"
         else:
             draw.draw_mechanism(c, ax=self.ax_mechanism)
+            yield
             for link, ax in self.ax_fbd.items():
                 draw.draw_free_body(c, link, ax=ax)
+                yield
             for step, ax in zip(polys, self.ax_polygons):
                 draw.draw_force_polygon(step, scale=c.force_scale, ax=ax, driver_name=c.driver_name, values=False)
+                yield
             effort = float(a.effort[0]) if a is not None else float(c.effort)
             self._marker.set_data([value], [effort])
             name = c.driver_name
@@ -792,7 +836,9 @@ class Explorer:
                 for t in ax.texts:
                     if t.get_path_effects():
                         t.set_path_effects([])
-        return Frame(value, self._png(), c, a, message, status, table)
+        self._render()
+        yield
+        return self._keep(Frame(value, self._encode(), c, a, message, status, table))
 
     def _present(self, frame: Frame):
         """Show a drawn frame in the widgets."""
@@ -805,6 +851,8 @@ class Explorer:
     def _take(self, value: float):
         """A position from the browser: shown at once if it was drawn ahead, else drawn once the values settle."""
         frame = self._frames.get(value)
+        if frame is None and self._ahead_job is not None and self._same(self._ahead_job[0], value):
+            frame = self._finish_ahead()  # being drawn ahead: its last steps now
         if frame is None:
             self._later()
             return
@@ -824,28 +872,60 @@ class Explorer:
         return out
 
     def _plan_ahead(self):
-        """Draw the neighbours once the kernel has been idle for :data:`IDLE` (in a running event loop only)."""
+        """Draw the neighbours once the kernel has been idle for :data:`IDLE` (:data:`SHOWN` after a new layout);
+        in a running event loop only."""
         loop = _running_loop()
         if loop is None or not self.ahead:
             return
         if self._ahead_handle is not None:
             self._ahead_handle.cancel()
-        self._ahead_handle = loop.call_later(IDLE, self._draw_ahead)
+        self._ahead_handle = loop.call_later(SHOWN if self._new_layout else IDLE, self._draw_ahead)
 
     def _draw_ahead(self):
-        """Draw one neighbour not drawn yet, then give the loop back (a message that came meanwhile goes first)."""
+        """One step of drawing a neighbour not drawn yet, then the loop back: a message that came meanwhile
+        (a key press) is read before the next step, so the kernel is never busy drawing ahead for longer
+        than a step (one panel, the rendering, or the PNG)."""
         self._ahead_handle = None
+        self._new_layout = False
         if self._timer is not None:
+            self._abandon()
             return  # a value from the browser is waiting: its drawing plans again
-        todo = [v for v in self._neighbours() if v not in self._frames]
-        if not todo:
-            return
+        if self._ahead_job is None:
+            todo = [v for v in self._neighbours() if v not in self._frames]
+            if not todo:
+                return
+            self._ahead_job = (todo[0], self._drawing(todo[0]))
+        value, steps = self._ahead_job
         try:
-            self._draw(todo[0])
+            _step(steps)
+        except StopIteration:
+            self._ahead_job = None
         except Exception:  # noqa: BLE001 - drawn again when it is asked for, and any error shows then
+            self._abandon()
             return
-        # A timer, not call_soon: the loop reads the messages that came while this frame was drawn first.
-        self._ahead_handle = _running_loop().call_later(0.0, self._draw_ahead)
+        # A pause before the next step: a message passes through the kernel's queues in several turns of
+        # the loop, and a new value must find it free.
+        self._ahead_handle = _running_loop().call_later(STEP if self._ahead_job else IDLE, self._draw_ahead)
+
+    def _finish_ahead(self) -> Frame | None:
+        """The frame being drawn ahead, drawn to its end now (None if it fails: it is drawn again when asked)."""
+        _, steps = self._ahead_job
+        self._ahead_job = None
+        try:
+            while True:
+                _step(steps)
+        except StopIteration as done:
+            return done.value
+        except Exception:  # noqa: BLE001
+            self._figure_at = None
+            return None
+
+    def _abandon(self):
+        """Stop drawing ahead (the figure is needed for something else; what was half drawn is drawn again)."""
+        if self._ahead_job is not None:
+            self._ahead_job[1].close()
+            self._ahead_job = None
+            self._figure_at = None
 
     # -- the figure -------------------------------------------------------------------
     @property
@@ -875,8 +955,11 @@ class Explorer:
         return self._png()
 
     def _png(self) -> bytes:
-        from PIL import Image
+        self._render()
+        return self._encode()
 
+    def _render(self):
+        """Render the figure into the canvas (Agg)."""
         from matplotlib.transforms import TransformedBbox
 
         canvas = self._figure.canvas
@@ -899,13 +982,19 @@ class Explorer:
             ax.set_visible(True)
         canvas.restore_region(self._background)
         ax.draw_artist(self._marker)
+
+    def _encode(self) -> bytes:
+        """The canvas as PNG bytes (fast zlib setting)."""
+        from PIL import Image
+
+        canvas = self._figure.canvas
         w, h = canvas.get_width_height(physical=True)
         # Line art on white has few colours: a 256-colour palette (octree, no dithering visible at
         # this size) makes a PNG a third the size, and quantising + encoding costs half of what
         # encoding the full-colour pixels did.
         image = Image.frombuffer("RGBA", (w, h), canvas.buffer_rgba(), "raw", "RGBA", 0, 1)
         buf = io.BytesIO()
-        dpi = round(float(fig.dpi))  # in the file (pHYs), so what shows it can tell its resolution
+        dpi = round(float(self._figure.dpi))  # in the file (pHYs), so what shows it can tell its resolution
         image.quantize(256, method=Image.Quantize.FASTOCTREE).save(buf, format="png", compress_level=1, dpi=(dpi, dpi))
         return buf.getvalue()
 

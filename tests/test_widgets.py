@@ -385,6 +385,46 @@ def test_a_frame_drawn_ahead_is_the_frame_drawn_when_asked():
     assert np.abs(got - want).mean() < 0.2 * np.abs(before - want).mean()
 
 
+def test_a_key_press_while_a_neighbour_is_drawn_ahead_waits_one_step_at_most():
+    """Drawing ahead goes a panel at a time: a press for the frame being drawn finishes it; any other stops it."""
+    import asyncio
+
+    from graphkin import widgets
+
+    ex = explore(catalog.load("strip_cutter"), n=SMALL)
+
+    async def job_started():
+        import time
+
+        end = time.monotonic() + 10.0
+        while time.monotonic() < end:  # the first after SHOWN, the next after IDLE
+            if ex._ahead_job is not None:
+                return ex._ahead_job[0]
+            await asyncio.sleep(0.001)
+        raise AssertionError("nothing was drawn ahead")
+
+    async def session():
+        ex.slider.value = 100
+        value = await job_started()  # 101: up first
+        drawn = len(ex.timings)
+        ex.slider.set_state({"value": value})  # a key press for the frame on the way
+        first = (len(ex.timings) == drawn, ex.value, ex.construction.q, ex._ahead_job)
+        await asyncio.sleep(widgets.IDLE)
+        value = await job_started()  # the next neighbour
+        ex.slider.set_state({"value": 140})  # a jump elsewhere: settles, then drawn
+        await asyncio.sleep(widgets.SETTLE + 0.5)
+        return first, value, ex.value, ex.construction.q, len(ex.timings) - drawn
+
+    (nothing_redrawn, shown, q, job), abandoned, value, q140, redrawn = asyncio.run(session())
+    assert nothing_redrawn and shown == 101 and job is None
+    assert q == pytest.approx(math.radians(101))
+    assert value == 140 and q140 == pytest.approx(math.radians(140)) and redrawn == 1
+    assert abandoned not in ex._frames or ex._frames[abandoned].construction.q == pytest.approx(
+        math.radians(abandoned))  # left half drawn, or finished later as a whole frame: never a mixed one
+    x, _ = ex.marker.get_data()
+    assert x[0] == 140
+
+
 def test_bad_ahead():
     for bad in (-1, 1.5, True):
         with pytest.raises(Exception, match="ahead must be a whole number"):

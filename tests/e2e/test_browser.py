@@ -10,7 +10,9 @@ the torque curve; the figure is rendered for the screen's pixel ratio with
 text of at least 11 screen pixels; the slider takes at least 60 % of the
 explorer's width with the numeric box beside it. The time from a key press to
 the new image is printed and written to ``build/e2e/timings.json`` with the
-screenshots.
+screenshots, twice: for a press as soon as the explorer shows (its neighbours
+may not be drawn ahead yet), and for one after a pause of a second, as a person
+reads the figure before pressing again.
 """
 
 from __future__ import annotations
@@ -153,6 +155,18 @@ def check_explorer(page, root, name: str) -> dict:
     assert table.inner_html() != before_table  # headed by the position; the forces too where they change with it
     assert re.search(rf"[θs] = {moved:g}(°| mm)", table.inner_text())
 
+    # A person reads the new position before the next press: meanwhile the explorer draws the positions next to it.
+    time.sleep(1.0)
+    n = _loads(root)
+    page.keyboard.press(key)
+    _wait_loads(page, root, n)
+    w = root.evaluate("r => r.__watch")
+    found["key_after_pause_ms"] = round(w["loads"][n] - w["keys"][-1], 1)
+    step = moved - value
+    moved, value = float(box.input_value()), moved
+    assert moved == pytest.approx(value + step)
+    _wait_status(page, root, moved)
+
     # Ten quick presses: drawn once or twice, ending at the last position.
     k, n = len(w["keys"]), _loads(root)
     for _ in range(10):
@@ -236,7 +250,8 @@ def _report(where: str, lesson: str, found: list, timings: dict, seconds: float)
     timings.setdefault(where, {})[lesson] = {"seconds": round(seconds, 1), "explorers": found}
     for k, f in enumerate(found):
         extra = f", speed → image {f['speed_to_image_ms']:.0f} ms" if "speed_to_image_ms" in f else ""
-        print(f"\n{where} {lesson} explorer {k + 1}: key → image {f['key_to_image_ms']:.0f} ms; ten presses: "
+        print(f"\n{where} {lesson} explorer {k + 1}: key → image {f['key_to_image_ms']:.0f} ms at once, "
+              f"{f['key_after_pause_ms']:.0f} ms after a pause; ten presses: "
               f"{f['burst_images']} images, settled in {f['burst_settle_ms']:.0f} ms{extra}; "
               f"PNG {f['png_dpi']:.0f} dpi "
               f"at pixel ratio {f['pixel_ratio']:g}, smallest text {f['smallest_text_px']:.1f} px, slider "
