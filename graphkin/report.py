@@ -12,6 +12,7 @@ import math
 import numpy as np
 
 from .kinematics.points import link_points
+from .numbers import PICOMETRE, RESIDUE, num
 from .model import GearMesh, Prismatic
 from .solve import ForceAnalysis
 
@@ -239,10 +240,29 @@ def _given_text(given) -> list[str]:
     return out
 
 
-def polar_text(v, unit="N", digits=4) -> str:
-    """A vector as the books print it: ``27.06 N ∠ -73.78°``."""
+def polar_text(v, unit="N", digits=4, scale=0.0) -> str:
+    """A vector as the books print it: ``27.06 N ∠ -73.78°``; ``0 N`` if it is rounding beside ``scale``
+    (:data:`graphkin.numbers.RESIDUE` of it: the largest force at the position, for a force)."""
     size, angle = polar(v)
-    return f"{size:.{digits}g} {unit} ∠ {angle:.2f}°"
+    if size <= RESIDUE * scale:
+        return f"0 {unit}"
+    return f"{num(size, digits, minus='-')} {unit} ∠ {angle:.2f}°"
+
+
+def _largest_force(entry) -> float:
+    """The largest joint force at a position [N]: what a force there is rounding beside."""
+    return max((math.hypot(*F) for F in entry["forces"].values()), default=0.0)
+
+
+def _effort(x: float, largest: float) -> float:
+    """A driving torque [N·m] or force [N] for the text: 0 where it is rounding beside the largest force (times a
+    metre, for a torque), as at a dead centre."""
+    return 0.0 if abs(x) <= RESIDUE * largest else x + 0.0
+
+
+def _mm(x) -> str:
+    """A length [m] in mm, a rounding residue below a picometre shown as 0."""
+    return num(x * 1e3, minus="-", zero=PICOMETRE * 1e3)
 
 
 def _input_text(entry, crank, static=False):
@@ -284,7 +304,7 @@ def _loads_text(entry) -> list[str]:
             value = polar_text(ld["force"]) if ld["acting"] else "0 N (not acting here)"
             lines.append(f"    {name:<5} on link {ld['link']} at {ld['point']}: {value}")
         else:
-            value = f"{ld['torque']:.4g} N·m" if ld["acting"] else "0 N·m (not acting here)"
+            value = f"{num(ld['torque'], minus='-')} N·m" if ld["acting"] else "0 N·m (not acting here)"
             lines.append(f"    {name:<5} on link {ld['link']}: {value}")
     return (["  External loads"] + lines) if lines else []
 
@@ -328,24 +348,33 @@ def format_solution(problem, result: ForceAnalysis, graphical: list | None = Non
             if mech.link(int(link)).mass == 0:
                 out.append(f"    link {link}: massless")
                 continue
-            h = "—" if s["h"] is None else f"{s['h'] * 1e3:.4g} mm"
+            h = "—" if s["h"] is None else f"{_mm(s['h'])} mm"
             T = s["inertia_torque"]
             sense = "CCW" if T > 0 else "CW" if T < 0 else ""
-            out.append(f"    link {link}: F_i = {polar_text(s['inertia_force'])}   T_i = {T:.4g} N·m {sense}   h = {h}")
+            if abs(T) <= PICOMETRE * math.hypot(*s["inertia_force"]):
+                T, sense = 0.0, ""  # rounding: the resultant passes through G (h under a picometre)
+            out.append(f"    link {link}: F_i = {polar_text(s['inertia_force'])}   T_i = {num(T, minus='-')} N·m {sense}   "
+                       f"h = {h}")
         out.extend(_loads_text(entry))
         out.append("  Joint forces")
+        largest = _largest_force(entry)
         for a, b in result.forces:
             name, back = result.name_of(a, b), result.name_of(b, a)
             F = entry["forces"][name]
-            out.append(f"    {name:<5} = ({F[0]:>10.4f}, {F[1]:>10.4f}) N = {polar_text(F):<24} {back} = −{name}")
+            out.append(f"    {name:<5} = ({F[0]:>10.4f}, {F[1]:>10.4f}) N = {polar_text(F, scale=largest):<24} "
+                       f"{back} = −{name}")
             if name in entry["prismatic"]:
                 s = entry["prismatic"][name]
-                where = "—" if s["offset"] is None else f"{s['offset'] * 1e3 + 0.0:.4g} mm from {s['slider_point']} along the guide"
-                out.append(f"          normal {s['normal']:.4g} N, friction {s['friction']:.4g} N, line acts {where}")
+                floor = RESIDUE * largest
+                where = ("—" if s["offset"] is None or abs(s["normal"]) <= floor else
+                         f"{_mm(s['offset'])} mm from {s['slider_point']} along the guide")
+                out.append(f"          normal {num(s['normal'], minus='-', zero=floor)} N, "
+                           f"friction {num(s['friction'], minus='-', zero=floor)} N, line acts {where}")
         d = entry["driver"]
         if crank:
-            sense = "CCW" if d["value"] > 0 else "CW" if d["value"] < 0 else ""
-            out.append(f"  Driver: {d['name']} = {d['value']:.4f} N·m {sense}")
+            T = _effort(d["value"], largest)
+            sense = "CCW" if T > 0 else "CW" if T < 0 else ""
+            out.append(f"  Driver: {d['name']} = {T:.4f} N·m {sense}")
         else:
             out.append(f"  Driver: {d['name']} = {polar_text(d['vector'])} ({d['value']:.4f} N along the guide)")
         if "graphical" in entry:
@@ -365,9 +394,10 @@ def _format_subproblems(entry, crank) -> list[str]:
     head = "".join(f"{sp['label'] + ' (link ' + str(sp['link']) + ')':>{width}}" for sp in subs)
     out.append(f"    {'force':<7}{head}{'sum':>{width}}")
     names = [name for name in g["relative_difference"] if name != g["driver"]["name"]]
+    largest = _largest_force(entry)
     for name in names:
-        cells = "".join(f"{polar_text(sp['forces'][name]):>{width}}" for sp in subs)
-        out.append(f"    {name:<7}{cells}{polar_text(g['forces'][name]):>{width}}")
+        cells = "".join(f"{polar_text(sp['forces'][name], scale=largest):>{width}}" for sp in subs)
+        out.append(f"    {name:<7}{cells}{polar_text(g['forces'][name], scale=largest):>{width}}")
     name, unit = g["driver"]["name"], "N·m" if crank else "N"
     cells = "".join(f"{sp['driver']['value']:>{width - 4}.4f} {unit:<3}" for sp in subs)
     out.append(f"    {name:<7}{cells}{g['driver']['value']:>{width - 4}.4f} {unit:<3}")
@@ -383,12 +413,14 @@ def _format_graphical(entry, crank) -> list[str]:
     out.append(f"    polygon scale: {g['force_scale_N_per_mm']:g} N per mm")
     out += _format_subproblems(entry, crank)
     out.append(f"    {'force':<6}{'analytical':>26}{'graphical':>26}{'rel. diff':>11}")
+    largest = _largest_force(entry)
     for name, rel in g["relative_difference"].items():
         if name == g["driver"]["name"]:
             unit = "N·m" if crank else "N"
-            a, c = entry["driver"]["value"], g["driver"]["value"]
+            a, c = (_effort(x, largest) for x in (entry["driver"]["value"], g["driver"]["value"]))
             out.append(f"    {name:<6}{a:>22.4f} {unit:<3}{c:>22.4f} {unit:<3}{rel:>11.1e}")
         else:
-            out.append(f"    {name:<6}{polar_text(entry['forces'][name]):>26}{polar_text(g['forces'][name]):>26}{rel:>11.1e}")
+            out.append(f"    {name:<6}{polar_text(entry['forces'][name], scale=largest):>26}"
+                       f"{polar_text(g['forces'][name], scale=largest):>26}{rel:>11.1e}")
     out += [f"    warning: {w}" for w in g["warnings"]]
     return out

@@ -14,6 +14,7 @@ from matplotlib.backends import backend_svg
 from matplotlib.font_manager import findfont
 from matplotlib.textpath import TextToPath
 
+from ..numbers import num  # noqa: F401 - drawings write numbers as the text does
 from .axes import MM
 
 _NAME = re.compile(r"^([−-]?)([A-Za-z])([a-z]?\d+(?:,\d+)?[a-z]?)([′″‴⁗]|⁽[⁰¹²³⁴⁵⁶⁷⁸⁹]+⁾)?$")
@@ -60,18 +61,6 @@ def plain(text: str) -> str:
     """
     text = "".join(_UNSUB.get(ch, ch) for ch in text)
     return re.sub(r"\\mathregular|[${}]|_(?=\{)", "", text)
-
-
-def num(x: float, digits: int = 4) -> str:
-    """A number with ``digits`` significant figures and a true minus sign."""
-    if x == 0 or not math.isfinite(x):
-        return "0" if x == 0 else str(x)
-    text = f"{x:.{digits}g}"
-    if "e" in text and 1e-4 <= abs(x) < 1e7:
-        # 22850 rather than 2.285e+04: the same digits, read at a glance.
-        places = max(0, digits - 1 - math.floor(math.log10(abs(x))))
-        text = f"{round(x, digits - 1 - math.floor(math.log10(abs(x)))):.{places}f}"
-    return text.replace("-", "−")
 
 
 def polar_text(v, unit: str = "N", digits: int = 4) -> str:

@@ -46,6 +46,7 @@ import numpy as np
 import shapely
 
 from ..errors import GraphkinError
+from ..numbers import PICOMETRE, RESIDUE, num
 from ..kinematics import Dyad, DriverGroup, GearGroup, Kinematics
 from ..geometry import zcross as cross
 from ..geometry import zdot as dot
@@ -135,15 +136,27 @@ def _and(items) -> str:
     return items[0] if len(items) == 1 else ", ".join(items[:-1]) + " and " + items[-1]
 
 
-def _polar(z) -> str:
-    """A force as the books print it: ``1290 N ∠ -123.45°`` (``0 N`` for none)."""
+def _polar(z, scale: float = 0.0) -> str:
+    """A force as the books print it: ``1290 N ∠ -123.45°`` (``0 N`` for none, or for rounding beside ``scale``)."""
     z = complex(z)
-    if z == 0:
+    if z == 0 or abs(z) <= RESIDUE * scale:
         return "0 N"
     tiny = 1e-12 * abs(z)
     x, y = (0.0 if abs(z.real) <= tiny else z.real), (0.0 if abs(z.imag) <= tiny else z.imag)
     angle = math.degrees(math.atan2(y, x))
-    return f"{abs(z):.4g} N ∠ {180.0 if angle == -180.0 else angle:.2f}°"
+    return f"{_n(abs(z))} N ∠ {180.0 if angle == -180.0 else angle:.2f}°"
+
+
+def _shown_effort(effort: float, forces) -> float:
+    """A driving torque [N·m] (or force [N]) as a caption says it: 0 where it is rounding beside the largest of
+    ``forces`` ((x, y) [N]; times a metre, for a torque), as in a sub-problem whose loads pass through the pivot."""
+    largest = max((math.hypot(*F) for F in forces), default=0.0)
+    return 0.0 if abs(effort) <= RESIDUE * largest else effort + 0.0
+
+
+def _n(x: float) -> str:
+    """A value in a caption: four significant figures, no exponent where none is needed (``50640``)."""
+    return num(x, minus="-")
 
 
 def _sense(T: float) -> str:
@@ -252,16 +265,17 @@ class _Builder:
                 lines.append(Line(f"R{link}i", _xy(P), _xy(Fi / abs(Fi)), "resultant"))
                 sense = "clockwise" if Ti < 0 else "counter-clockwise"
                 parts.append(
-                    f"its inertia force F{link}i = −m a_G = {abs(Fi):.4g} N and inertia torque T{link}i = −I_G α = "
-                    f"{Ti:.4g} N·m combine into one force R{link}i of the same size and direction, whose line is offset "
-                    f"from G{link} by h = |T|/|F| = {h * 1e3:.4g} mm to the side that turns link {link} {sense}"
-                    if Ti else f"its inertia force F{link}i = −m a_G = {abs(Fi):.4g} N acts through G{link}")
+                    f"its inertia force F{link}i = −m a_G = {_n(abs(Fi))} N and inertia torque T{link}i = −I_G α = "
+                    f"{_n(Ti)} N·m combine into one force R{link}i of the same size and direction, whose line is offset "
+                    f"from G{link} by h = |T|/|F| = {_n(h * 1e3)} mm to the side that turns link {link} {sense}"
+                    # An offset under a picometre is rounding (α = 0 but for it): the force acts through G.
+                    if h > PICOMETRE else f"its inertia force F{link}i = −m a_G = {_n(abs(Fi))} N acts through G{link}")
             else:
-                parts.append(f"its inertia torque T{link}i = {Ti:.4g} N·m is a pure couple")
+                parts.append(f"its inertia torque T{link}i = {_n(Ti)} N·m is a pure couple")
         if self.mech.gravity and body.mass:
             W = -1j * body.mass * self.mech.gravity
             load.add(W, G)
-            parts.append(f"its weight {abs(W):.4g} N acts at G{link}")
+            parts.append(f"its weight {_n(abs(W))} N acts at G{link}")
         from ..model import PointForce, Torque
         from ..solve.loads import applied_at
 
@@ -274,16 +288,16 @@ class _Builder:
             if isinstance(ld, PointForce):
                 F = complex(value)
                 load.add(F, self.z(link, ld.point))
-                parts.append(f"the external force {ld.name or 'P'} = {abs(F):.4g} N acts at {ld.point}")
+                parts.append(f"the external force {ld.name or 'P'} = {_n(abs(F))} N acts at {ld.point}")
             elif isinstance(ld, Torque):
                 load.add(0j, None, value)
-                parts.append(f"the external torque {ld.name or 'T'} = {value:.4g} N·m acts on it")
+                parts.append(f"the external torque {ld.name or 'T'} = {_n(value)} N·m acts on it")
         only_inertia = len(parts) == 1 and bool(Fi or Ti)
         self.rname[link] = f"R{link}i" if only_inertia else f"R{link}"
         if len(parts) > 1 and load.F and load.point() is not None:
             lines.append(Line(f"R{link}", _xy(load.point()), _xy(load.F / abs(load.F)), "resultant"))
             values[f"R{link}"] = _xy(load.F)
-            parts.append(f"together they make one resultant R{link} = {abs(load.F):.4g} N")
+            parts.append(f"together they make one resultant R{link} = {_n(abs(load.F))} N")
         if parts:
             self.add("resultant", f"Link {link}: " + "; ".join(parts) + ".", link, lines, values=values)
         return load
@@ -298,7 +312,7 @@ class _Builder:
             names = [n for n, _, _, _ in extra]
             P = load.point()
             lines = (Line(R, _xy(P), _xy(load.F / abs(load.F)), "resultant"),) if P is not None else ()
-            res = f"{R} = {abs(load.F):.4g} N" if P is not None else f"{R}, a pure couple of {load.M0:.4g} N·m"
+            res = f"{R} = {_n(abs(load.F))} N" if P is not None else f"{R}, a pure couple of {_n(load.M0)} N·m"
             if own:
                 # The own loads' name only when it differs from the new one (a crank's weight alone is R2 too).
                 mine = f" ({own_name})" if own_name != R else ""
@@ -544,7 +558,7 @@ class _Builder:
         nW, nF = self.name(g.j, g.k), self.name(g.b, g.k)
         Rk = self.rname[g.k]
         self.add("line", self.lead(f"the tooth force {nW} lies on the pressure line through the pitch point P, inclined "
-                                   f"{math.degrees(mesh.pressure_angle):.4g}° to the common tangent, on the flank that "
+                                   f"{_n(math.degrees(mesh.pressure_angle))}° to the common tangent, on the flank that "
                                    f"opposes the load on gear {g.k}."), g.k, (Line(nW, _xy(P), _xy(d)),), {"P": _xy(P)})
         arm = cross(P - Ck, d)
         F_W = (-R.about(Ck) / arm) * d
@@ -560,7 +574,7 @@ class _Builder:
         # nil, e.g. an input torque) is no three-force member: the tooth and
         # pivot forces are then the opposite couple, equal and opposite.
         if abs(R.F) <= 1e-9 * abs(F_W):
-            self.add("couple", f"Gear {g.k} carries only a couple ({R.M0:.4g} N·m){self.within()}: {nW} and the pivot "
+            self.add("couple", f"Gear {g.k} carries only a couple ({_n(R.M0)} N·m){self.within()}: {nW} and the pivot "
                      f"force {nF} form the opposite couple, so {nF} = −{nW}, through the centre {g.pivot.point}.",
                      g.k, pivot_line, points)
             poly = (Arrow(nW, _xy(F_W), False), Arrow(nF, _xy(F_piv), False))
@@ -598,10 +612,12 @@ class _Builder:
             # too long for a float, which is said in words rather than as a numpy overflow.
             d = abs(T) / abs(complex(R.F)) if R.F else 0.0
             dn = "d" + self.mark
-            arm = (f"with {Rd} it forms a couple of arm {dn} = {d * 1e3:.4g} mm, which the driving torque balances: "
-                   f"{drive} = ±|{Rd}|·{dn} = {T:.4g} N·m{_sense(T)}" if math.isfinite(d * 1e3) else
+            arm = (f"{Rd} acts through {J.point} (its arm {dn} = 0), so the driving torque is {drive} = 0 N·m"
+                   if d <= PICOMETRE else  # a dead centre: what is left of the arm is rounding
+                   f"with {Rd} it forms a couple of arm {dn} = {_n(d * 1e3)} mm, which the driving torque balances: "
+                   f"{drive} = ±|{Rd}|·{dn} = {_n(T)} N·m{_sense(T)}" if math.isfinite(d * 1e3) else
                    f"{Rd} is so small beside its moment about {J.point} that the loads are a pure couple, which the "
-                   f"driving torque balances: {drive} = {T:.4g} N·m{_sense(T)}")
+                   f"driving torque balances: {drive} = {_n(T)} N·m{_sense(T)}")
             self.add("driver", f"The crank{self.within()}: the pivot force {name} = −{Rd} acts at {J.point}; {arm}"
                      + (f"; {total}." if total else "."), link,
                      (Line(name, _xy(X), _xy(F / abs(F)) if F else (1.0, 0.0), "found"),),
@@ -721,8 +737,8 @@ def _superposition(kin: Kinematics, index: int, whole: _Builder):
                      warnings=p.warnings, like=whole)
         b.rname = dict(p.rname)
         others = [n for n in mech.moving if n != L]
-        size = (f"{p.rname[L]} = {abs(own[L].F):.4g} N" if own[L].point() is not None
-                else f"a couple of {own[L].M0:.4g} N·m")
+        size = (f"{p.rname[L]} = {_n(abs(own[L].F))} N" if own[L].point() is not None
+                else f"a couple of {_n(own[L].M0)} N·m")
         b.add("sub-problem", f"Sub-problem {x}: only the loads on link {L} ({size}); "
               + (f"link{'s' * (len(others) > 1)} {_and([str(n) for n in others])} "
                  f"{'are' if len(others) > 1 else 'is'} unloaded. " if others else "")
@@ -734,10 +750,12 @@ def _superposition(kin: Kinematics, index: int, whole: _Builder):
             readings[b.name(other, on)] = _xy(b.on(J, on))
         drive = mech.driver.symbol + m
         readings[drive] = b.effort if crank else b.driver_vector
-        effort_text = (f"{b.effort + 0.0:.4g} N·m{_sense(b.effort)}" if crank
-                       else f"{b.effort + 0.0:.4g} N along the guide")
+        forces = [v for n, v in readings.items() if n != drive]
+        largest = max((math.hypot(*v) for v in forces), default=0.0)
+        shown = _shown_effort(b.effort, forces)
+        effort_text = (f"{_n(shown)} N·m{_sense(shown)}" if crank else f"{_n(shown)} N along the guide")
         b.add("readings", f"Sub-problem {x} gives " + ", ".join(
-            f"{n} = {_polar(complex(*v))}" for n, v in readings.items() if n != drive)
+            f"{n} = {_polar(complex(*v), largest)}" for n, v in readings.items() if n != drive)
             + f"; its {effort} {drive} = {effort_text}.", L, values=readings)
         subs.append((x, m, L, b))
     # The sums: every joint force of the groups, then the input link with the summed reactions.
@@ -777,7 +795,8 @@ def _superposition(kin: Kinematics, index: int, whole: _Builder):
     drive = mech.driver.symbol
     total = (f"it is the sum of the sub-problems' {effort}s, {drive} = "
              + " + ".join(drive + m for _, m, _, _ in subs) + " = "
-             + " + ".join(f"({b.effort:.4g})" if b.effort < 0 else f"{b.effort + 0.0:.4g}" for _, _, _, b in subs)
+             + " + ".join(f"({_n(e)})" if e < 0 else f"{_n(e)}"
+                          for e in (_shown_effort(b.effort, b.forces.values()) for _, _, _, b in subs))
              + (" N·m" if crank else " N"))
     p.driver(driver_group, R, total)
     out = tuple(SubProblem(x, L, m, dict(b.forces), dict(b.normal), dict(b.couple), b.effort, b.driver_vector)

@@ -1,0 +1,68 @@
+"""Numbers in text for people (graphkin.numbers): no exponent where none is needed, rounding residues as 0."""
+
+from __future__ import annotations
+
+import math
+import re
+
+import pytest
+from hypothesis import given
+from hypothesis import strategies as st
+
+from graphkin import catalog, report
+from graphkin.numbers import num
+
+
+@pytest.mark.parametrize("x, text", [
+    (50640.7, "50640"), (-22851.3, "−22850"), (1972.4, "1972"), (27.0625, "27.06"), (0.01234, "0.01234"),
+    (0.0, "0"), (2.5e-5, "2.5e−05"), (3.2e7, "3.2e+07"),
+])
+def test_four_significant_figures_without_an_exponent_from_1e_minus_4_to_1e7(x, text):
+    assert num(x) == text
+
+
+def test_the_minus_sign_and_the_residue_floor():
+    assert num(-0.5, minus="-") == "-0.5"
+    assert num(3.2e-12, zero=1e-9) == "0" and num(-1e-9, zero=1e-9) == "0" and num(2e-9, zero=1e-9) == "2e−09"
+
+
+@given(st.floats(min_value=1e-4, max_value=9.99e6) | st.floats(min_value=-9.99e6, max_value=-1e-4))
+def test_the_digits_read_back_as_the_value_to_four_figures(x):
+    text = num(x, minus="-")
+    assert "e" not in text
+    assert float(text) == pytest.approx(x, rel=5.01e-4)
+
+
+def _text_at(name, degrees):
+    p = catalog.load(name)
+    r = p.solve(at=[math.radians(degrees)])
+    return report.format_solution(p, r, report.constructions(r))
+
+
+def test_a_dead_centre_reads_as_zero_not_as_rounding():
+    """Khurmi & Gupta's engine at θ = 180° (inner dead centre): no guide force and no driving torque, exactly."""
+    text = _text_at("engine_gas_force", 180)
+    assert not re.search(r"\de[-+]\d", text.split("rel. diff")[0]), text  # no exponent before the last table
+    assert re.search(r"G14 += \( +0\.0000, +0\.0000\) N = 0 N ", text)
+    assert "normal 0 N, friction 0 N, line acts —" in text
+    assert re.search(r"Driver: T12 = 0\.0000 N·m *\n", text)  # no sense: CW or CCW of a residue
+    assert "acts through O (its arm d = 0), so the driving torque is T12 = 0 N·m" in text
+    # The data keeps what was computed.
+    r = catalog.load("engine_gas_force").solve(at=[math.pi])
+    assert 0 < abs(r["G14"][0][1]) < 1e-9
+
+
+def test_large_forces_are_written_in_digits():
+    """The engine's rod thrust at 60° from IDC (Khurmi & Gupta Ex. 15.7: 50.62 kN printed) reads 50640 N."""
+    text = _text_at("engine_gas_force", 60)
+    assert "e+0" not in text.split("rel. diff")[0]
+    assert re.search(r"F23 += \( *49440\.0331, +-10964\.1372\) N = 50640 N ∠ -12\.50°", text), text
+
+
+def test_an_inertia_torque_of_rounding_is_zero_and_its_force_acts_through_g():
+    """The shaper's crank and slotted lever at 90°: α = 0 but for rounding (T_i ~ 1e-21 N·m)."""
+    text = _text_at("shaper_six_bar", 90)
+    assert re.search(r"link 2: F_i = 0\.7018 N ∠ 90\.00° +T_i = 0 N·m +h = 0 mm", text), text
+    assert "its inertia force F2i = −m a_G = 0.7018 N acts through G2" in text
+    readings = next(line for line in text.splitlines() if "Sub-problem II gives" in line)
+    assert "G23″ = 0 N" in readings and not re.search(r"\de-\d", readings), readings  # 6.4e-21 N was printed
