@@ -66,3 +66,19 @@ def test_an_inertia_torque_of_rounding_is_zero_and_its_force_acts_through_g():
     assert "its inertia force F2i = −m a_G = 0.7018 N acts through G2" in text
     readings = next(line for line in text.splitlines() if "Sub-problem II gives" in line)
     assert "G23″ = 0 N" in readings and not re.search(r"\de-\d", readings), readings  # 6.4e-21 N was printed
+
+
+def test_a_sub_problem_whose_loads_reach_the_crank_only_as_rounding_reads_zero():
+    """The shaper at 90°: sub-problem III (the lever's own loads) leaves the crank nothing but 3.7e-17 N."""
+    text = _text_at("shaper_six_bar", 90)
+    lines = [line for line in text.splitlines() if "sub-problem III" in line and "link 1" in line or
+             "The crank in sub-problem III" in line]
+    assert any("R1‴ = 0 N." in line for line in lines), lines
+    assert any("R1‴ is rounding, so F01‴ = 0 and T01‴ = 0 N·m" in line for line in lines), lines
+    assert not any(re.search(r"\de-\d", line) for line in lines), lines
+    # What was computed stays in the construction, and the sub-problems still add up to the whole.
+    p = catalog.load("shaper_six_bar")
+    c = report.constructions(p.solve(at=[math.pi / 2]))[0]
+    third = next(sp for sp in c.subproblems if sp.label == "III")
+    assert abs(third.effort) < 1e-15
+    assert sum(sp.effort for sp in c.subproblems) == pytest.approx(c.effort, rel=1e-12)

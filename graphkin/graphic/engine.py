@@ -202,6 +202,12 @@ class _Builder:
             pts = [self.z(link, p) for link in self.mech.moving for p in self.mech.link(link).points]
             self.reach = max((abs(a - b) for a in pts for b in pts), default=1.0) or 1.0
 
+    def rounding(self, F: complex, M: float = 0.0) -> bool:
+        """Whether a force ``F`` [N] and a moment ``M`` [N·m] are rounding beside the largest force found so far in
+        this (sub-)problem (times a metre, for the moment): what the captions then say is 0."""
+        largest = max((math.hypot(*v) for v in self.forces.values()), default=0.0)
+        return abs(F) <= RESIDUE * largest and abs(M) <= RESIDUE * largest
+
     def step(self, kind, caption, link=None, lines=(), points=None, polygon=(), values=None) -> Step:
         return Step(kind, caption, link, tuple(lines), points or {}, tuple(polygon), values or {}, self.sub)
 
@@ -312,7 +318,8 @@ class _Builder:
             names = [n for n, _, _, _ in extra]
             P = load.point()
             lines = (Line(R, _xy(P), _xy(load.F / abs(load.F)), "resultant"),) if P is not None else ()
-            res = f"{R} = {_n(abs(load.F))} N" if P is not None else f"{R}, a pure couple of {_n(load.M0)} N·m"
+            res = (f"{R} = 0 N" if P is not None and self.rounding(load.F) else
+                   f"{R} = {_n(abs(load.F))} N" if P is not None else f"{R}, a pure couple of {_n(load.M0)} N·m")
             if own:
                 # The own loads' name only when it differs from the new one (a crank's weight alone is R2 too).
                 mine = f" ({own_name})" if own_name != R else ""
@@ -612,7 +619,8 @@ class _Builder:
             # too long for a float, which is said in words rather than as a numpy overflow.
             d = abs(T) / abs(complex(R.F)) if R.F else 0.0
             dn = "d" + self.mark
-            arm = (f"{Rd} acts through {J.point} (its arm {dn} = 0), so the driving torque is {drive} = 0 N·m"
+            arm = (f"{Rd} is rounding, so {name} = 0 and {drive} = 0 N·m" if self.rounding(R.F, R.M0) else
+                   f"{Rd} acts through {J.point} (its arm {dn} = 0), so the driving torque is {drive} = 0 N·m"
                    if d <= PICOMETRE else  # a dead centre: what is left of the arm is rounding
                    f"with {Rd} it forms a couple of arm {dn} = {_n(d * 1e3)} mm, which the driving torque balances: "
                    f"{drive} = ±|{Rd}|·{dn} = {_n(T)} N·m{_sense(T)}" if math.isfinite(d * 1e3) else
