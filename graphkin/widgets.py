@@ -54,12 +54,16 @@ import dataclasses
 import functools
 import io
 import json
+import logging
 import math
 import time
+import weakref
 
 import numpy as np
 
 from .errors import GraphkinError
+
+_log = logging.getLogger(__name__)
 
 NCOLS = 4
 """Panels per row of the explorer's figure."""
@@ -94,6 +98,9 @@ ECHOES = 64
 AHEAD = 2
 """Positions drawn ahead on either side of the one shown, while the kernel is idle (the way it moves first)."""
 
+MOST_AHEAD = 8
+"""The most positions drawn ahead on either side: more is idle work nobody waits for."""
+
 IDLE = 0.05
 """Seconds without a new value before the explorer draws ahead, and between two frames drawn ahead."""
 
@@ -108,7 +115,8 @@ STEP = 0.002
 """Seconds between two steps of a frame drawn ahead: the kernel reads what came meanwhile."""
 
 FRAMES = 48
-"""Finished frames kept (least recently shown dropped first): a few MB of PNG."""
+"""Finished frames kept while drawing ahead (least recently shown dropped first): 2–12 MB of PNG (the six-bar at
+pixel ratio 2 the most), and at least every neighbour of the position shown (``2 × MOST_AHEAD + 1``)."""
 
 
 @dataclasses.dataclass(frozen=True, slots=True)
@@ -369,10 +377,10 @@ class Explorer:
             raise GraphkinError(f"n must be a whole number of positions ≥ 2, got {n!r}")
         if dpi is not None and (isinstance(dpi, bool) or not isinstance(dpi, (int, np.integer)) or dpi < 10):
             raise GraphkinError(f"dpi must be a whole number ≥ 10 (or None: the screen's), got {dpi!r}")
-        if isinstance(ahead, bool) or not isinstance(ahead, (int, np.integer)) or ahead < 0:
-            raise GraphkinError(f"ahead must be a whole number of positions ≥ 0, got {ahead!r}")
+        if isinstance(ahead, bool) or not isinstance(ahead, (int, np.integer)) or not 0 <= ahead <= MOST_AHEAD:
+            raise GraphkinError(f"ahead must be a whole number of positions from 0 to {MOST_AHEAD}, got {ahead!r}")
         self.n = int(n)
-        self.halo = halo
+        self._halo = bool(halo)
         self.ahead = int(ahead)
         self.crank = problem.mechanism.driver.kind == "crank"
         self._original = problem
@@ -395,6 +403,8 @@ class Explorer:
         self._ahead_handle = None  # the pending step of drawing ahead
         self._ahead_job = None  # (position, its drawing's steps) being drawn ahead
         self._new_layout = True  # no frame drawn ahead since the layout was made (see SHOWN)
+        self._failed: set = set()  # positions whose drawing ahead failed (drawn when asked, the error shown then)
+        self._handed_out = False  # code has taken the figure: it is put back before each cell runs
 
         q0 = float(problem.q[0])
         if self.crank:
@@ -646,6 +656,10 @@ class Explorer:
         job = self._ahead_job
         if job is not None and not job[1].gi_running:
             self._abandon()  # it draws on the old axes (unless it is what needs the new layout)
+            if self._ahead_handle is not None:
+                self._ahead_handle.cancel()
+                self._ahead_handle = None
+        self._failed.clear()
         fig = self._figure
         fig.clear()
         self._frames.clear()  # drawn for the old layout
@@ -707,6 +721,7 @@ class Explorer:
     def _draw_curve(self):
         self._background = None
         self._frames.clear()  # their marker sits on the old curve
+        self._figure_at = None
         ax = self.ax_torque
         ax.cla()
         ax._autotitlepos = False
@@ -760,16 +775,25 @@ class Explorer:
 
     def _draw(self, value: float) -> Frame:
         """Solve and draw the figure at ``value``, keep the frame and return it (the widgets show what they showed)."""
+        import matplotlib
+
         self._abandon()  # a frame being drawn ahead: the figure is needed now
         steps = self._drawing(value)
-        while True:
-            try:
-                _step(steps)
-            except StopIteration as done:
-                return done.value
+        with matplotlib.rc_context(RC):
+            while True:
+                try:
+                    next(steps)
+                except StopIteration as done:
+                    return done.value
+
+    def _drawing_ahead(self) -> bool:
+        """Whether positions are drawn ahead: ``ahead`` > 0, in a running event loop (a kernel)."""
+        return bool(self.ahead) and _running_loop() is not None
 
     def _keep(self, frame: Frame) -> Frame:
         self._figure_at = frame.value
+        if not self._drawing_ahead():
+            return frame  # no frame is shown again: each position is drawn when asked, as it always was
         self._frames[frame.value] = frame
         self._frames.move_to_end(frame.value)
         while len(self._frames) > FRAMES:
@@ -832,7 +856,7 @@ class Explorer:
         table = _table(c, a, where) if not message else ""
         for ax in self._panels:
             ax._autotitlepos = False
-            if not self.halo:
+            if not self._halo:
                 for t in ax.texts:
                     if t.get_path_effects():
                         t.set_path_effects([])
@@ -850,15 +874,17 @@ class Explorer:
     # -- drawing ahead ----------------------------------------------------------------
     def _take(self, value: float):
         """A position from the browser: shown at once if it was drawn ahead, else drawn once the values settle."""
-        frame = self._frames.get(value)
+        frame = self._frames.get(value) if self._drawing_ahead() else None
         if frame is None and self._ahead_job is not None and self._same(self._ahead_job[0], value):
             frame = self._finish_ahead()  # being drawn ahead: its last steps now
         if frame is None:
             self._later()
             return
         self._cancel()  # a value still waiting is superseded by this one
-        self._frames.move_to_end(value)
+        self._frames.move_to_end(frame.value)
         self._present(frame)
+        if self._ahead_job is not None and self._ahead_job[0] not in self._neighbours():
+            self._abandon()  # the neighbour of a position left behind
         self._plan_ahead()
 
     def _neighbours(self) -> list[float]:
@@ -886,23 +912,24 @@ class Explorer:
         (a key press) is read before the next step, so the kernel is never busy drawing ahead for longer
         than a step (one panel, the rendering, or the PNG)."""
         self._ahead_handle = None
-        self._new_layout = False
         if self._timer is not None:
             self._abandon()
             return  # a value from the browser is waiting: its drawing plans again
         if self._ahead_job is None:
-            todo = [v for v in self._neighbours() if v not in self._frames]
+            todo = [v for v in self._neighbours() if v not in self._frames and v not in self._failed]
             if not todo:
                 return
+            self._new_layout = False
             self._ahead_job = (todo[0], self._drawing(todo[0]))
         value, steps = self._ahead_job
         try:
             _step(steps)
         except StopIteration:
             self._ahead_job = None
-        except Exception:  # noqa: BLE001 - drawn again when it is asked for, and any error shows then
+        except Exception:  # noqa: BLE001 - drawn when it is asked for, and the error shown then
+            _log.debug("drawing %g ahead failed", value, exc_info=True)
+            self._failed.add(value)
             self._abandon()
-            return
         # A pause before the next step: a message passes through the kernel's queues in several turns of
         # the loop, and a new value must find it free.
         self._ahead_handle = _running_loop().call_later(STEP if self._ahead_job else IDLE, self._draw_ahead)
@@ -916,7 +943,8 @@ class Explorer:
                 _step(steps)
         except StopIteration as done:
             return done.value
-        except Exception:  # noqa: BLE001
+        except Exception:  # noqa: BLE001 - drawn again as asked, and the error shown then
+            _log.debug("finishing %g, drawn ahead, failed", self.value, exc_info=True)
             self._figure_at = None
             return None
 
@@ -932,22 +960,61 @@ class Explorer:
     def figure(self):
         """The figure (matplotlib.figure.Figure), drawn at :attr:`value`.
 
-        After a frame drawn ahead was shown (or while positions are drawn
-        ahead), the figure may hold another position; asking for it draws the
-        current one first.
+        Positions are drawn ahead on this figure while the kernel is idle;
+        asking for it draws the position shown first, and once code has had
+        it, the explorer puts it back at the position shown before each cell
+        runs (so ``fig = ex.figure`` in one cell and ``fig.savefig(...)`` in
+        the next save what the explorer shows).
         """
         self._sync()
+        self._hand_out()
         return self._figure
 
     @property
     def marker(self):
-        """The marker on the torque curve (matplotlib.lines.Line2D), at :attr:`value`."""
+        """The marker on the torque curve (matplotlib.lines.Line2D), at :attr:`value` (see :attr:`figure`)."""
         self._sync()
+        self._hand_out()
         return self._marker
+
+    @property
+    def halo(self) -> bool:
+        """Whether labels keep their white outline (see :func:`explore`); setting it redraws the position shown."""
+        return self._halo
+
+    @halo.setter
+    def halo(self, on: bool):
+        self._halo = bool(on)
+        self._frames.clear()  # drawn the other way
+        self.update()
 
     def _sync(self):
         if self._figure_at is None or not self._same(self._figure_at, self.value):
             self._draw(self.value)
+
+    def _hand_out(self):
+        """Code has the figure: from now on, put it back at the position shown before each cell runs."""
+        if self._handed_out:
+            return
+        self._handed_out = True
+        try:
+            from IPython import get_ipython
+        except ImportError:  # pragma: no cover - ipywidgets brings IPython
+            return
+        shell = get_ipython()
+        if shell is None:
+            return
+        ref = weakref.ref(self)
+
+        def before_cell(*_):
+            ex = ref()
+            if ex is None:
+                shell.events.unregister("pre_run_cell", before_cell)
+                return
+            if ex._ahead_job is not None or ex._figure_at is None or not ex._same(ex._figure_at, ex.value):
+                ex._draw(ex.value)
+
+        shell.events.register("pre_run_cell", before_cell)
 
     def png(self) -> bytes:
         """The figure at :attr:`value` as PNG bytes (fast zlib setting)."""

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import io
 import math
 import subprocess
 import sys
@@ -373,7 +374,7 @@ def test_a_frame_drawn_ahead_is_the_frame_drawn_when_asked():
         await asyncio.sleep(0.3)
         return sorted(plain._frames)
 
-    assert asyncio.run(idle()) == [0.0, 60.0]  # ahead=0: nothing but what was asked for (first 0°, then 60°)
+    assert asyncio.run(idle()) == []  # ahead=0: nothing kept, each position drawn when asked
     frame = ahead._frames[61.0]
     plain.slider.set_state({"value": 61})  # drawn when asked
     assert (frame.status, frame.table, frame.message) == (plain.status.value, plain.table.value, plain.message)
@@ -385,48 +386,212 @@ def test_a_frame_drawn_ahead_is_the_frame_drawn_when_asked():
     assert np.abs(got - want).mean() < 0.2 * np.abs(before - want).mean()
 
 
-def test_a_key_press_while_a_neighbour_is_drawn_ahead_waits_one_step_at_most():
-    """Drawing ahead goes a panel at a time: a press for the frame being drawn finishes it; any other stops it."""
+async def _until(condition, seconds=10.0):
+    """Wait in the event loop until ``condition()`` holds (drawing ahead goes on meanwhile)."""
+    import asyncio
+    import time
+
+    end = time.monotonic() + seconds
+    while not condition():
+        if time.monotonic() > end:
+            raise AssertionError("timed out")
+        await asyncio.sleep(0.001)
+
+
+def test_a_key_press_for_the_frame_being_drawn_ahead_finishes_it_and_any_other_stops_it():
+    """Drawing ahead goes a panel at a time, the kernel free between steps."""
     import asyncio
 
     from graphkin import widgets
 
     ex = explore(catalog.load("strip_cutter"), n=SMALL)
 
-    async def job_started():
-        import time
-
-        end = time.monotonic() + 10.0
-        while time.monotonic() < end:  # the first after SHOWN, the next after IDLE
-            if ex._ahead_job is not None:
-                return ex._ahead_job[0]
-            await asyncio.sleep(0.001)
-        raise AssertionError("nothing was drawn ahead")
-
     async def session():
         ex.slider.value = 100
-        value = await job_started()  # 101: up first
+        await _until(lambda: ex._ahead_job is not None)
+        value, job = ex._ahead_job  # 101: up first
         drawn = len(ex.timings)
         ex.slider.set_state({"value": value})  # a key press for the frame on the way
-        first = (len(ex.timings) == drawn, ex.value, ex.construction.q, ex._ahead_job)
-        await asyncio.sleep(widgets.IDLE)
-        value = await job_started()  # the next neighbour
-        ex.slider.set_state({"value": 140})  # a jump elsewhere: settles, then drawn
-        await asyncio.sleep(widgets.SETTLE + 0.5)
-        return first, value, ex.value, ex.construction.q, len(ex.timings) - drawn
+        first = (len(ex.timings) == drawn, ex.value, ex.construction.q, ex._ahead_job, job.gi_frame)
+        await _until(lambda: ex._ahead_job is not None)
+        other, job = ex._ahead_job  # the next neighbour, begun
+        ex.slider.set_state({"value": 140})  # a jump elsewhere: the job stops at its next step
+        await _until(lambda: ex._ahead_job is None or ex._ahead_job[1] is not job, seconds=1.0)
+        stopped = (job.gi_frame is None, other in ex._frames, len(ex.timings) - drawn)
+        await asyncio.sleep(widgets.SETTLE + 0.3)
+        return first, stopped, ex.value, ex.construction.q, len(ex.timings) - drawn
 
-    (nothing_redrawn, shown, q, job), abandoned, value, q140, redrawn = asyncio.run(session())
-    assert nothing_redrawn and shown == 101 and job is None
+    (nothing_redrawn, shown, q, job_after, frame_after), stopped, value, q140, redrawn = asyncio.run(session())
+    assert nothing_redrawn and shown == 101 and job_after is None and frame_after is None  # finished, not redrawn
     assert q == pytest.approx(math.radians(101))
+    closed, kept, drawn_meanwhile = stopped
+    assert closed and not kept and drawn_meanwhile == 0  # stopped half way, before 140 was drawn
     assert value == 140 and q140 == pytest.approx(math.radians(140)) and redrawn == 1
-    assert abandoned not in ex._frames or ex._frames[abandoned].construction.q == pytest.approx(
-        math.radians(abandoned))  # left half drawn, or finished later as a whole frame: never a mixed one
     x, _ = ex.marker.get_data()
     assert x[0] == 140
 
 
+def test_outside_an_event_loop_or_with_ahead_0_every_position_is_drawn_when_asked():
+    """As before drawing ahead: nothing kept, a position the browser sends again is drawn again."""
+    import asyncio
+
+    ex = explore(catalog.load("strip_cutter"), n=SMALL)
+    before = len(ex.timings)
+    for v in (60, 0, 60):
+        ex.slider.set_state({"value": v})
+    assert len(ex.timings) == before + 3 and not ex._frames
+
+    plain = explore(catalog.load("strip_cutter"), n=SMALL, ahead=0)
+
+    async def in_a_loop():
+        plain.slider.value = 100
+        await asyncio.sleep(0.8)
+        drawn = len(plain.timings)
+        plain.slider.set_state({"value": 101})
+        await asyncio.sleep(0.3)
+        return len(plain.timings) - drawn
+
+    assert asyncio.run(in_a_loop()) == 1 and not plain._frames
+
+
+def test_the_neighbours_go_the_way_the_slider_moved_and_stay_in_its_range():
+    import asyncio
+
+    ex = explore(catalog.load("strip_cutter"), n=SMALL)
+
+    async def session():
+        ex.slider.value = 120
+        ex.slider.value = 100  # down
+        await _until(lambda: {98.0, 99.0, 101.0, 102.0} <= set(ex._frames))
+        order = [v for v in ex._frames if v in (98.0, 99.0, 101.0, 102.0)]
+        ex.slider.value = 360
+        await _until(lambda: {358.0, 359.0} <= set(ex._frames))
+        await asyncio.sleep(0.3)
+        return order, ex._neighbours(), sorted(ex._frames)
+
+    order, at_360, frames = asyncio.run(session())
+    assert order == [99.0, 101.0, 98.0, 102.0]
+    assert at_360 == [359.0, 358.0] and max(frames) == 360.0
+
+
+def test_a_late_echo_and_a_typed_value_with_frames_drawn_ahead():
+    import asyncio
+
+    ex = explore(catalog.load("slider_crank_friction"), n=SMALL)
+
+    async def session():
+        ex.slider.value = 60
+        ex.slider.value = 100  # two values set by code
+        await _until(lambda: {99.0, 101.0} <= set(ex._frames))
+        drawn = len(ex.timings)
+        ex.slider.set_state({"value": 60})  # the browser's late echo of 60: 60 has a frame, and is still ignored
+        echo = (ex.value, ex.slider.value, len(ex.timings) == drawn)
+        ex.box.set_state({"value": 101})  # typed in the box: shown from its frame
+        typed = (len(ex.timings) == drawn, ex.value, ex.slider.value, ex.image.value == ex._frames[101.0].png)
+        return echo, typed
+
+    (value, slider, nothing_redrawn), typed = asyncio.run(session())
+    assert value == 100 and slider == 100 and nothing_redrawn
+    nothing_redrawn, value, slider, image = typed
+    assert nothing_redrawn and value == 101 and slider == 101 and image
+    assert ex.construction.q == pytest.approx(math.radians(101))
+
+
+def test_a_new_speed_or_screen_while_drawing_ahead_leaves_no_frame_of_the_old_one():
+    import asyncio
+    import json
+
+    from PIL import Image
+
+    ex = explore(catalog.load("strip_cutter"), n=SMALL)
+
+    async def session():
+        ex.slider.value = 100
+        await _until(lambda: 101.0 in ex._frames)
+        ex.speed.value = 450.0  # the torque curve and every frame change
+        await _until(lambda: {99.0, 101.0} <= set(ex._frames))
+        ex.slider.set_state({"value": 101})
+        status = ex.status.value
+        await _until(lambda: ex._ahead_job is not None)
+        job = ex._ahead_job[1]
+        ex._screen.value = json.dumps({"ratio": 2, "width": 1200})  # what the page reports
+        closed = job.gi_frame is None
+        await _until(lambda: {100.0, 102.0} <= set(ex._frames) and ex._figure_at == 101.0 or
+                     len(ex._frames) >= 3, seconds=20.0)
+        await asyncio.sleep(0.5)
+        return status, closed, dict(ex._frames)
+
+    status, closed, frames = asyncio.run(session())
+    want = ex.problem.solve(at=[math.radians(101)]).effort[0]
+    assert f"{want:.5g}" in status and ex.problem.q_dot[0] == pytest.approx(450 * math.pi / 30)
+    assert closed
+    size = ex._figure.canvas.get_width_height(physical=True)
+    for frame in frames.values():
+        with Image.open(io.BytesIO(frame.png)) as im:
+            assert im.size == size  # every frame kept is of the new screen
+
+
+def test_a_position_that_cannot_be_drawn_ahead_does_not_stop_the_others(monkeypatch):
+    import asyncio
+
+    from graphkin import draw, widgets
+
+    ex = explore(catalog.load("strip_cutter"), n=SMALL)
+    real = draw.draw_free_body
+
+    def failing(c, link, **kwargs):
+        if abs(c.q - math.radians(101)) < 1e-9:
+            raise RuntimeError("a drawing fault at 101°")
+        return real(c, link, **kwargs)
+
+    monkeypatch.setattr(draw, "draw_free_body", failing)
+
+    async def session():
+        ex.slider.value = 100
+        await _until(lambda: {98.0, 99.0, 102.0} <= set(ex._frames))
+        ex.slider.set_state({"value": 101})  # drawn when asked: its error shows
+        await asyncio.sleep(widgets.SETTLE + 0.3)
+        return sorted(ex._frames), ex.status.value
+
+    frames, status = asyncio.run(session())
+    assert 101.0 not in frames and {98.0, 99.0, 102.0} <= set(frames)
+    assert "Could not draw 101" in status and "a drawing fault at 101°" in status
+
+
+def test_a_figure_code_holds_is_put_back_at_the_position_shown_before_a_cell_runs():
+    """fig = ex.figure in one cell, fig.savefig(...) in the next: the position shown, not a neighbour."""
+    import asyncio
+
+    from IPython.core.interactiveshell import InteractiveShell
+
+    shell = InteractiveShell.instance()
+    try:
+        ex = explore(catalog.load("strip_cutter"), n=SMALL)
+
+        async def session():
+            ex.slider.value = 100
+            fig = ex.figure  # the first cell
+            await _until(lambda: {99.0, 101.0} <= set(ex._frames))
+            moved = ex._figure_at
+            shell.events.trigger("pre_run_cell", None)  # the next cell is about to run
+            # What that cell sees (the loop waits while a cell runs: nothing is drawn ahead meanwhile).
+            return fig, moved, ex._figure_at, ex._ahead_job, ex._marker.get_xdata()[0]
+
+        fig, moved, at, job, marker = asyncio.run(session())
+        assert moved != 100.0  # drawing ahead had drawn a neighbour on it
+        assert at == 100.0 and job is None and marker == 100.0 and fig is ex._figure
+    finally:
+        InteractiveShell.clear_instance()
+
+
+def widgets_most_ahead():
+    from graphkin import widgets
+
+    return widgets.MOST_AHEAD
+
+
 def test_bad_ahead():
-    for bad in (-1, 1.5, True):
+    for bad in (-1, 1.5, True, widgets_most_ahead() + 1):
         with pytest.raises(Exception, match="ahead must be a whole number"):
             explore(catalog.load("strip_cutter"), n=SMALL, ahead=bad)
 

@@ -194,8 +194,10 @@ def follows_data(ax) -> bool:
 
     Only then are data limits worth keeping up to date. Axes whose view was
     fixed (the explorer's panels, redrawn in place with their limits set by
-    each drawing) skip it: merging the points into the limits was a tenth of
-    an explorer update.
+    each drawing; any axes a drawing has set the limits of) skip it: merging
+    the points into the limits was a tenth of an explorer update. On such
+    axes, call ``ax.relim()`` before ``ax.autoscale()`` to fit the view to
+    everything drawn.
     """
     return ax.get_autoscalex_on() or ax.get_autoscaley_on()
 
