@@ -602,7 +602,10 @@ def _solution(A: complex, B: complex, rhs: complex, unknowns, units) -> list:
     scale = abs(A) * abs(B)
     row = [M.i("Δ"), M.op("="), M.n(_clean(det, scale))]
     for sym, num, value, unit in zip(unknowns, nums, z, units):
-        numerator = M.n(_clean(num, abs(rhs) * max(abs(A), abs(B))))
+        num = _clean(num, abs(rhs) * max(abs(A), abs(B)))
+        numerator = M.n(num)
+        if num == 0:
+            value = 0.0  # its numerator is rounding, and so is what it gives (1e-17 m/s² where a slide stops)
         row += [M.op(";"), M.SP, sym, M.op("="), M.frac(numerator, M.i("Δ")), M.op("="),
                 M.qty(value, unit)]
     return [M.row(*row)]
