@@ -28,6 +28,20 @@ PICOMETRE = 1e-12
 """A length [m] below which a distance in a linkage is rounding: no drawing or machine tells it from 0."""
 
 
+def largest(forces) -> float:
+    """The largest size of ``forces`` ((x, y) pairs [N]), 0 for none: what a force among them is rounding beside."""
+    return max((math.hypot(*F) for F in forces), default=0.0)
+
+
+def unless_rounding(x: float, scale: float) -> float:
+    """``x``, or 0 where it is rounding beside ``scale`` (:data:`RESIDUE` of it).
+
+    A driving torque [N·m] is measured against the largest force times a
+    metre, so ``scale`` is the largest force [N] for a force and a torque alike.
+    """
+    return 0.0 if abs(x) <= RESIDUE * abs(scale) else x + 0.0
+
+
 def num(x: float, digits: int = 4, *, minus: str = "−", zero: float = 0.0) -> str:
     """``x`` with ``digits`` significant figures, without an exponent from 1e-4 to 1e7.
 

@@ -12,7 +12,7 @@ import math
 import numpy as np
 
 from .kinematics.points import link_points
-from .numbers import PICOMETRE, RESIDUE, num
+from .numbers import PICOMETRE, RESIDUE, largest, num, unless_rounding
 from .model import GearMesh, Prismatic
 from .solve import ForceAnalysis
 
@@ -244,20 +244,9 @@ def polar_text(v, unit="N", digits=4, scale=0.0) -> str:
     """A vector as the books print it: ``27.06 N ∠ -73.78°``; ``0 N`` if it is rounding beside ``scale``
     (:data:`graphkin.numbers.RESIDUE` of it: the largest force at the position, for a force)."""
     size, angle = polar(v)
-    if size <= RESIDUE * scale:
+    if unless_rounding(size, scale) == 0:
         return f"0 {unit}"
     return f"{num(size, digits, minus='-')} {unit} ∠ {angle:.2f}°"
-
-
-def _largest_force(entry) -> float:
-    """The largest joint force at a position [N]: what a force there is rounding beside."""
-    return max((math.hypot(*F) for F in entry["forces"].values()), default=0.0)
-
-
-def _effort(x: float, largest: float) -> float:
-    """A driving torque [N·m] or force [N] for the text: 0 where it is rounding beside the largest force (times a
-    metre, for a torque), as at a dead centre."""
-    return 0.0 if abs(x) <= RESIDUE * largest else x + 0.0
 
 
 def _mm(x) -> str:
@@ -357,22 +346,22 @@ def format_solution(problem, result: ForceAnalysis, graphical: list | None = Non
                        f"h = {h}")
         out.extend(_loads_text(entry))
         out.append("  Joint forces")
-        largest = _largest_force(entry)
+        biggest = largest(entry["forces"].values())  # what a force or torque here is rounding beside
         for a, b in result.forces:
             name, back = result.name_of(a, b), result.name_of(b, a)
             F = entry["forces"][name]
-            out.append(f"    {name:<5} = ({F[0]:>10.4f}, {F[1]:>10.4f}) N = {polar_text(F, scale=largest):<24} "
+            out.append(f"    {name:<5} = ({F[0]:>10.4f}, {F[1]:>10.4f}) N = {polar_text(F, scale=biggest):<24} "
                        f"{back} = −{name}")
             if name in entry["prismatic"]:
                 s = entry["prismatic"][name]
-                floor = RESIDUE * largest
+                floor = RESIDUE * biggest
                 where = ("—" if s["offset"] is None or abs(s["normal"]) <= floor else
                          f"{_mm(s['offset'])} mm from {s['slider_point']} along the guide")
                 out.append(f"          normal {num(s['normal'], minus='-', zero=floor)} N, "
                            f"friction {num(s['friction'], minus='-', zero=floor)} N, line acts {where}")
         d = entry["driver"]
         if crank:
-            T = _effort(d["value"], largest)
+            T = unless_rounding(d["value"], biggest)  # 0 at a dead centre
             sense = "CCW" if T > 0 else "CW" if T < 0 else ""
             out.append(f"  Driver: {d['name']} = {T:.4f} N·m {sense}")
         else:
@@ -394,10 +383,10 @@ def _format_subproblems(entry, crank) -> list[str]:
     head = "".join(f"{sp['label'] + ' (link ' + str(sp['link']) + ')':>{width}}" for sp in subs)
     out.append(f"    {'force':<7}{head}{'sum':>{width}}")
     names = [name for name in g["relative_difference"] if name != g["driver"]["name"]]
-    largest = _largest_force(entry)
+    biggest = largest(entry["forces"].values())
     for name in names:
-        cells = "".join(f"{polar_text(sp['forces'][name], scale=largest):>{width}}" for sp in subs)
-        out.append(f"    {name:<7}{cells}{polar_text(g['forces'][name], scale=largest):>{width}}")
+        cells = "".join(f"{polar_text(sp['forces'][name], scale=biggest):>{width}}" for sp in subs)
+        out.append(f"    {name:<7}{cells}{polar_text(g['forces'][name], scale=biggest):>{width}}")
     name, unit = g["driver"]["name"], "N·m" if crank else "N"
     cells = "".join(f"{sp['driver']['value']:>{width - 4}.4f} {unit:<3}" for sp in subs)
     out.append(f"    {name:<7}{cells}{g['driver']['value']:>{width - 4}.4f} {unit:<3}")
@@ -413,14 +402,14 @@ def _format_graphical(entry, crank) -> list[str]:
     out.append(f"    polygon scale: {g['force_scale_N_per_mm']:g} N per mm")
     out += _format_subproblems(entry, crank)
     out.append(f"    {'force':<6}{'analytical':>26}{'graphical':>26}{'rel. diff':>11}")
-    largest = _largest_force(entry)
+    biggest = largest(entry["forces"].values())
     for name, rel in g["relative_difference"].items():
         if name == g["driver"]["name"]:
             unit = "N·m" if crank else "N"
-            a, c = (_effort(x, largest) for x in (entry["driver"]["value"], g["driver"]["value"]))
+            a, c = (unless_rounding(x, biggest) for x in (entry["driver"]["value"], g["driver"]["value"]))
             out.append(f"    {name:<6}{a:>22.4f} {unit:<3}{c:>22.4f} {unit:<3}{rel:>11.1e}")
         else:
-            out.append(f"    {name:<6}{polar_text(entry['forces'][name], scale=largest):>26}"
-                       f"{polar_text(g['forces'][name], scale=largest):>26}{rel:>11.1e}")
+            out.append(f"    {name:<6}{polar_text(entry['forces'][name], scale=biggest):>26}"
+                       f"{polar_text(g['forces'][name], scale=biggest):>26}{rel:>11.1e}")
     out += [f"    warning: {w}" for w in g["warnings"]]
     return out

@@ -282,6 +282,18 @@ def _step(steps):
         next(steps)
 
 
+def _to_the_end(steps):
+    """The rest of a drawing (a generator) at once, with the explorer's matplotlib settings; returns its frame."""
+    import matplotlib
+
+    with matplotlib.rc_context(RC):
+        while True:
+            try:
+                next(steps)
+            except StopIteration as done:
+                return done.value
+
+
 def _running_loop():
     """The event loop a kernel dispatches messages from, or None (plain Python, a test)."""
     import asyncio
@@ -775,16 +787,8 @@ class Explorer:
 
     def _draw(self, value: float) -> Frame:
         """Solve and draw the figure at ``value``, keep the frame and return it (the widgets show what they showed)."""
-        import matplotlib
-
         self._abandon()  # a frame being drawn ahead: the figure is needed now
-        steps = self._drawing(value)
-        with matplotlib.rc_context(RC):
-            while True:
-                try:
-                    next(steps)
-                except StopIteration as done:
-                    return done.value
+        return _to_the_end(self._drawing(value))
 
     def _drawing_ahead(self) -> bool:
         """Whether positions are drawn ahead: ``ahead`` > 0, in a running event loop (a kernel)."""
@@ -939,10 +943,7 @@ class Explorer:
         _, steps = self._ahead_job
         self._ahead_job = None
         try:
-            while True:
-                _step(steps)
-        except StopIteration as done:
-            return done.value
+            return _to_the_end(steps)
         except Exception:  # noqa: BLE001 - drawn again as asked, and the error shown then
             _log.debug("finishing %g, drawn ahead, failed", self.value, exc_info=True)
             self._figure_at = None
@@ -1011,8 +1012,7 @@ class Explorer:
             if ex is None:
                 shell.events.unregister("pre_run_cell", before_cell)
                 return
-            if ex._ahead_job is not None or ex._figure_at is None or not ex._same(ex._figure_at, ex.value):
-                ex._draw(ex.value)
+            ex._sync()  # a job half way has left the figure at no position: drawn again
 
         shell.events.register("pre_run_cell", before_cell)
 

@@ -46,7 +46,7 @@ import numpy as np
 import shapely
 
 from ..errors import GraphkinError
-from ..numbers import PICOMETRE, RESIDUE, num
+from ..numbers import PICOMETRE, largest, num, unless_rounding
 from ..kinematics import Dyad, DriverGroup, GearGroup, Kinematics
 from ..geometry import zcross as cross
 from ..geometry import zdot as dot
@@ -139,19 +139,12 @@ def _and(items) -> str:
 def _polar(z, scale: float = 0.0) -> str:
     """A force as the books print it: ``1290 N ∠ -123.45°`` (``0 N`` for none, or for rounding beside ``scale``)."""
     z = complex(z)
-    if z == 0 or abs(z) <= RESIDUE * scale:
+    if unless_rounding(abs(z), scale) == 0:
         return "0 N"
     tiny = 1e-12 * abs(z)
     x, y = (0.0 if abs(z.real) <= tiny else z.real), (0.0 if abs(z.imag) <= tiny else z.imag)
     angle = math.degrees(math.atan2(y, x))
     return f"{_n(abs(z))} N ∠ {180.0 if angle == -180.0 else angle:.2f}°"
-
-
-def _shown_effort(effort: float, forces) -> float:
-    """A driving torque [N·m] (or force [N]) as a caption says it: 0 where it is rounding beside the largest of
-    ``forces`` ((x, y) [N]; times a metre, for a torque), as in a sub-problem whose loads pass through the pivot."""
-    largest = max((math.hypot(*F) for F in forces), default=0.0)
-    return 0.0 if abs(effort) <= RESIDUE * largest else effort + 0.0
 
 
 def _n(x: float) -> str:
@@ -205,8 +198,8 @@ class _Builder:
     def rounding(self, F: complex, M: float = 0.0) -> bool:
         """Whether a force ``F`` [N] and a moment ``M`` [N·m] are rounding beside the largest force found so far in
         this (sub-)problem (times a metre, for the moment): what the captions then say is 0."""
-        largest = max((math.hypot(*v) for v in self.forces.values()), default=0.0)
-        return abs(F) <= RESIDUE * largest and abs(M) <= RESIDUE * largest
+        scale = largest(self.forces.values())
+        return unless_rounding(abs(F), scale) == 0 and unless_rounding(M, scale) == 0
 
     def step(self, kind, caption, link=None, lines=(), points=None, polygon=(), values=None) -> Step:
         return Step(kind, caption, link, tuple(lines), points or {}, tuple(polygon), values or {}, self.sub)
@@ -758,12 +751,11 @@ def _superposition(kin: Kinematics, index: int, whole: _Builder):
             readings[b.name(other, on)] = _xy(b.on(J, on))
         drive = mech.driver.symbol + m
         readings[drive] = b.effort if crank else b.driver_vector
-        forces = [v for n, v in readings.items() if n != drive]
-        largest = max((math.hypot(*v) for v in forces), default=0.0)
-        shown = _shown_effort(b.effort, forces)
+        biggest = largest(v for n, v in readings.items() if n != drive)
+        shown = unless_rounding(b.effort, biggest)  # a sub-problem whose loads pass through the pivot: 0
         effort_text = (f"{_n(shown)} N·m{_sense(shown)}" if crank else f"{_n(shown)} N along the guide")
         b.add("readings", f"Sub-problem {x} gives " + ", ".join(
-            f"{n} = {_polar(complex(*v), largest)}" for n, v in readings.items() if n != drive)
+            f"{n} = {_polar(complex(*v), biggest)}" for n, v in readings.items() if n != drive)
             + f"; its {effort} {drive} = {effort_text}.", L, values=readings)
         subs.append((x, m, L, b))
     # The sums: every joint force of the groups, then the input link with the summed reactions.
@@ -804,7 +796,7 @@ def _superposition(kin: Kinematics, index: int, whole: _Builder):
     total = (f"it is the sum of the sub-problems' {effort}s, {drive} = "
              + " + ".join(drive + m for _, m, _, _ in subs) + " = "
              + " + ".join(f"({_n(e)})" if e < 0 else f"{_n(e)}"
-                          for e in (_shown_effort(b.effort, b.forces.values()) for _, _, _, b in subs))
+                          for e in (unless_rounding(b.effort, largest(b.forces.values())) for _, _, _, b in subs))
              + (" N·m" if crank else " N"))
     p.driver(driver_group, R, total)
     out = tuple(SubProblem(x, L, m, dict(b.forces), dict(b.normal), dict(b.couple), b.effort, b.driver_vector)
