@@ -28,6 +28,11 @@ What a person sees in a browser, and what code sees, agree:
   first): an arrow key that reaches one shows that finished frame at once,
   well under a millisecond where drawing it takes 30–200 ms. The figure and
   the marker that code reads are always those of the position shown.
+* The explorer belongs to the thread that made it (the kernel's main
+  thread). A message from the browser that ipykernel hands to another
+  thread (a subshell's) is answered on the explorer's own thread, never
+  alongside what it draws there; an error in answering is shown in the
+  status line.
 * The figure is rendered for the screen: the browser reports its pixel ratio
   and the width it gives the explorer, and the PNG is drawn at
   ``CSS_DPI × pixel ratio`` (text of 8 pt is then at least 11 screen pixels
@@ -56,6 +61,7 @@ import io
 import json
 import logging
 import math
+import threading
 import time
 import weakref
 
@@ -304,6 +310,43 @@ def _running_loop():
         return None
 
 
+def _answers_the_browser(name: str, what: str):
+    """Decorate the observer of the control ``name`` (``what`` it holds, for people).
+
+    The observer is called as ``observer(self, change, by_browser)``, where
+    ``by_browser`` tells a value the browser sent from one that code set
+    (ipywidgets locks the property while it applies a browser's value: the lock
+    is read here, while it is held).
+
+    The explorer belongs to the thread it was made in, the kernel's main thread:
+    its figure, its timers and its drawing ahead are never touched from two
+    threads. ipykernel 7 may run a comm message's handler on another thread (a
+    subshell's: a comm's messages go to the subshell that last sent on it),
+    where it would close or step a drawing that the main thread is stepping. On
+    another thread, the observer's work is handed to the main thread's event
+    loop, and the handler returns at once.
+
+    An error in answering the browser is shown in the status line: run from a
+    comm message, outside any cell, it would otherwise reach only the kernel's
+    log, and the explorer would silently stop answering. A value set by code
+    on the explorer's own thread raises in the cell that set it.
+    """
+
+    def decorate(observer):
+        @functools.wraps(observer)
+        def observe(self, change):
+            by_browser = "value" in getattr(self, name)._property_lock
+            home = self._home_loop if threading.get_ident() != self._home else None
+            if home is not None and home.is_running():
+                home.call_soon_threadsafe(self._answer, observer, change, by_browser, what, True)
+            else:
+                self._answer(observer, change, by_browser, what, False)
+
+        return observe
+
+    return decorate
+
+
 def _cell(v) -> str:
     """A force for the table, with a true minus: ``1972 N ∠ −73.78°`` (``0 N`` when there is none)."""
     from .report import polar_text
@@ -417,6 +460,8 @@ class Explorer:
         self._new_layout = True  # no frame drawn ahead since the layout was made (see SHOWN)
         self._failed: set = set()  # positions whose drawing ahead failed (drawn when asked, the error shown then)
         self._handed_out = False  # code has taken the figure: it is put back before each cell runs
+        self._home = threading.get_ident()  # the explorer's thread: everything it draws is drawn there
+        self._home_loop = None  # that thread's event loop, once seen running (see _loop)
 
         q0 = float(problem.q[0])
         if self.crank:
@@ -481,6 +526,26 @@ class Explorer:
         self._screen.observe(self._on_screen, names="value")
         self.update()
 
+    # -- the thread ---------------------------------------------------------------
+    def _loop(self):
+        """The running event loop (None outside one: plain Python), remembered when it is the explorer's thread's."""
+        loop = _running_loop()
+        if loop is not None and threading.get_ident() == self._home:
+            self._home_loop = loop
+        return loop
+
+    def _answer(self, observer, change, by_browser: bool, what: str, handed: bool):
+        """Run an observer of a control (see :func:`_answers_the_browser`)."""
+        if not (by_browser or handed):
+            observer(self, change, by_browser)  # code's own change: an error reaches its cell
+            return
+        try:
+            observer(self, change, by_browser)
+        except Exception as exc:  # noqa: BLE001 - shown to the person, logged with its traceback
+            _log.exception("the explorer could not answer a new %s", what)
+            self.status.value = (f"<b>Could not draw {self.value:g}</b> (a new {what} from the browser): "
+                                 f"{_escape(f'{type(exc).__name__}: {exc}')}")
+
     # -- the position -------------------------------------------------------------
     def _si(self, value: float) -> float:
         """A position in the slider's unit, in SI (rad or m)."""
@@ -517,20 +582,21 @@ class Explorer:
                 self.slider.value = value
             self.box.value = value
 
-    def _on_slider(self, change):
+    @_answers_the_browser("slider", "position")
+    def _on_slider(self, change, by_browser: bool):
         if self._quiet:
             return
-        # ipywidgets locks a property while it applies a value that came from the browser: that is
-        # the only way to tell a person's move (or the browser's echo) from a value set by code.
-        if "value" in self.slider._property_lock:
+        # A person's move (or the browser's echo), or a value set by code.
+        if by_browser:
             self.from_browser(change["new"])
         else:
             self._goto(change["new"])
 
-    def _on_box(self, change):
+    @_answers_the_browser("box", "position typed")
+    def _on_box(self, change, by_browser: bool):
         if self._quiet:
             return
-        if "value" in self.box._property_lock:
+        if by_browser:
             # Typed by a person: it stands, even if it equals a value the kernel set earlier.
             self._sent.clear()
             v = self._snap(change["new"])
@@ -592,7 +658,7 @@ class Explorer:
 
     def _later(self):
         """Draw the latest value once the values from the browser stop coming (or every LIVE seconds)."""
-        loop = _running_loop()
+        loop = self._loop()
         if loop is None:
             self.update()
             return
@@ -617,7 +683,8 @@ class Explorer:
         self._timer = self._first_wait = None
 
     # -- the screen -----------------------------------------------------------------
-    def _on_screen(self, change):
+    @_answers_the_browser("_screen", "screen size")
+    def _on_screen(self, change, by_browser: bool):
         """The browser reports its pixel ratio and the width it gives the explorer: re-render to fit."""
         try:
             said = json.loads(change["new"])
@@ -767,7 +834,8 @@ class Explorer:
             ax.set_ylim(*ylim)
 
     # -- the speed ------------------------------------------------------------------
-    def _on_speed(self, change):
+    @_answers_the_browser("speed", "speed")
+    def _on_speed(self, change, by_browser: bool):
         try:
             self._sweep()
         except GraphkinError as exc:
@@ -792,7 +860,7 @@ class Explorer:
 
     def _drawing_ahead(self) -> bool:
         """Whether positions are drawn ahead: ``ahead`` > 0, in a running event loop (a kernel)."""
-        return bool(self.ahead) and _running_loop() is not None
+        return bool(self.ahead) and self._loop() is not None
 
     def _keep(self, frame: Frame) -> Frame:
         self._figure_at = frame.value
@@ -904,7 +972,7 @@ class Explorer:
     def _plan_ahead(self):
         """Draw the neighbours once the kernel has been idle for :data:`IDLE` (:data:`SHOWN` after a new layout);
         in a running event loop only."""
-        loop = _running_loop()
+        loop = self._loop()
         if loop is None or not self.ahead:
             return
         if self._ahead_handle is not None:
@@ -936,7 +1004,7 @@ class Explorer:
             self._abandon()
         # A pause before the next step: a message passes through the kernel's queues in several turns of
         # the loop, and a new value must find it free.
-        self._ahead_handle = _running_loop().call_later(STEP if self._ahead_job else IDLE, self._draw_ahead)
+        self._ahead_handle = self._loop().call_later(STEP if self._ahead_job else IDLE, self._draw_ahead)
 
     def _finish_ahead(self) -> Frame | None:
         """The frame being drawn ahead, drawn to its end now (None if it fails: it is drawn again when asked)."""
@@ -1012,7 +1080,8 @@ class Explorer:
             if ex is None:
                 shell.events.unregister("pre_run_cell", before_cell)
                 return
-            ex._sync()  # a job half way has left the figure at no position: drawn again
+            if threading.get_ident() == ex._home:  # a cell on a subshell's thread leaves it alone
+                ex._sync()  # a job half way has left the figure at no position: drawn again
 
         shell.events.register("pre_run_cell", before_cell)
 

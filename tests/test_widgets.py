@@ -558,6 +558,65 @@ def test_a_position_that_cannot_be_drawn_ahead_does_not_stop_the_others(monkeypa
     assert "Could not draw 101" in status and "a drawing fault at 101°" in status
 
 
+def test_an_error_in_answering_the_browser_is_shown_in_the_status_line_and_one_from_code_raises(monkeypatch):
+    """A comm message's handler runs outside any cell: its error would reach only the kernel's log."""
+    ex = explore(catalog.load("strip_cutter"), n=SMALL)
+
+    def failing():
+        raise RuntimeError("a fault in the sweep")
+
+    monkeypatch.setattr(ex, "_sweep", failing)
+    ex.speed.set_state({"value": 450.0})  # typed in the browser
+    assert "Could not draw" in ex.status.value and "a new speed from the browser" in ex.status.value
+    assert "RuntimeError: a fault in the sweep" in ex.status.value
+    with pytest.raises(RuntimeError, match="a fault in the sweep"):
+        ex.speed.value = 600.0  # set by code: the cell sees it
+    monkeypatch.setattr(ex, "_take", lambda v: failing())
+    ex.slider.set_state({"value": 120})
+    assert "a new position from the browser" in ex.status.value and "a fault in the sweep" in ex.status.value
+
+
+def test_messages_handled_on_another_thread_are_answered_on_the_explorers_own():
+    """ipykernel 7 runs a comm's handler on a subshell's thread: JupyterLab's key presses came there while the
+    main thread drew ahead, and a new speed on the main thread then met "generator already executing"."""
+    import asyncio
+    import threading
+
+    from graphkin import widgets
+
+    ex = explore(catalog.load("strip_cutter"), n=SMALL)
+    rendered_on = set()
+    render = ex._render
+
+    def recording():
+        rendered_on.add(threading.get_ident())
+        render()
+
+    ex._render = recording
+
+    def subshell(values):  # what a subshell's thread does with a burst of key presses
+        for v in values:
+            ex.slider.set_state({"value": v})
+
+    async def session():
+        ex.slider.value = 100
+        await _until(lambda: ex._ahead_job is not None)  # a frame is being drawn ahead, a step at a time
+        worker = threading.Thread(target=subshell, args=(range(101, 131),))
+        worker.start()
+        while worker.is_alive():  # the main thread keeps drawing ahead meanwhile
+            await asyncio.sleep(0.001)
+        worker.join()
+        ex.speed.set_state({"value": 450.0})  # then a new speed, on the main thread
+        await asyncio.sleep(widgets.SETTLE + 0.5)
+        return ex.value, ex.status.value
+
+    value, status = asyncio.run(session())
+    assert rendered_on == {threading.get_ident()}  # nothing drawn on the subshell's thread
+    assert value == 130 and "Could not draw" not in status
+    want = ex.problem.solve(at=[math.radians(130)]).effort[0]
+    assert ex.problem.q_dot[0] == pytest.approx(450 * math.pi / 30) and f"{want:.5g}" in status
+
+
 def test_a_figure_code_holds_is_put_back_at_the_position_shown_before_a_cell_runs():
     """fig = ex.figure in one cell, fig.savefig(...) in the next: the position shown, not a neighbour."""
     import asyncio
