@@ -363,7 +363,7 @@ def format_solution(problem, result: ForceAnalysis, graphical: list | None = Non
         if crank:
             T = unless_rounding(d["value"], biggest)  # 0 at a dead centre
             sense = "CCW" if T > 0 else "CW" if T < 0 else ""
-            out.append(f"  Driver: {d['name']} = {T:.4f} N·m {sense}")
+            out.append(f"  Driver: {d['name']} = {T:.4f} N·m {sense}".rstrip())  # no sense at a dead centre
         else:
             out.append(f"  Driver: {d['name']} = {polar_text(d['vector'])} ({d['value']:.4f} N along the guide)")
         if "graphical" in entry:

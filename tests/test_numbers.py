@@ -45,7 +45,7 @@ def test_a_dead_centre_reads_as_zero_not_as_rounding():
     assert not re.search(r"\de[-+]\d", text.split("rel. diff")[0]), text  # no exponent before the last table
     assert re.search(r"G14 += \( +0\.0000, +0\.0000\) N = 0 N ", text)
     assert "normal 0 N, friction 0 N, line acts —" in text
-    assert re.search(r"Driver: T12 = 0\.0000 N·m *\n", text)  # no sense: CW or CCW of a residue
+    assert re.search(r"Driver: T12 = 0\.0000 N·m\n", text)  # no sense (CW or CCW of a residue), no trailing space
     assert "acts through O (its arm d = 0), so the driving torque is T12 = 0 N·m" in text
     # The data (what --json writes) keeps what the solver computed, rounding and all.
     p = catalog.load("engine_gas_force")
