@@ -86,3 +86,7 @@ def test_a_sub_problem_whose_loads_reach_the_crank_only_as_rounding_reads_zero()
     third = next(sp for sp in c.subproblems if sp.label == "III")
     assert abs(third.effort) < 1e-15
     assert sum(sp.effort for sp in c.subproblems) == pytest.approx(c.effort, rel=1e-12)
+    # Nor is a line drawn for R1‴ or F01‴: its direction would be the rounding's (it was drawn straight down).
+    drawn = [ln.name for s in c.steps if s.sub == "III" for ln in s.lines]
+    assert "R1‴" not in drawn and "F01‴" not in drawn, drawn
+    assert "R1″" in [ln.name for s in c.steps if s.sub == "II" for ln in s.lines]  # one that is there is drawn

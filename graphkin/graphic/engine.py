@@ -310,7 +310,9 @@ class _Builder:
             R = self.rname[link] = f"R{link}{self.mark}"
             names = [n for n, _, _, _ in extra]
             P = load.point()
-            lines = (Line(R, _xy(P), _xy(load.F / abs(load.F)), "resultant"),) if P is not None else ()
+            # A resultant that is rounding has no line: its direction would be the rounding's.
+            lines = ((Line(R, _xy(P), _xy(load.F / abs(load.F)), "resultant"),)
+                     if P is not None and not self.rounding(load.F) else ())
             res = (f"{R} = 0 N" if P is not None and self.rounding(load.F) else
                    f"{R} = {_n(abs(load.F))} N" if P is not None else f"{R}, a pure couple of {_n(load.M0)} N·m")
             if own:
@@ -621,7 +623,8 @@ class _Builder:
                    f"driving torque balances: {drive} = {_n(T)} N·m{_sense(T)}")
             self.add("driver", f"The crank{self.within()}: the pivot force {name} = −{Rd} acts at {J.point}; {arm}"
                      + (f"; {total}." if total else "."), link,
-                     (Line(name, _xy(X), _xy(F / abs(F)) if F else (1.0, 0.0), "found"),),
+                     (Line(name, _xy(X), _xy(F / abs(F)) if F else (1.0, 0.0), "found"),)
+                     if not self.rounding(R.F, R.M0) else (),
                      values={name: _xy(F), drive: T, **({"d": d} if math.isfinite(d) else {})},
                      polygon=(Arrow(Rd, _xy(R.F), True), Arrow(name, _xy(F), False, _xy(X))))
             self.store(J, link, F)
