@@ -543,8 +543,11 @@ class Explorer:
             observer(self, change, by_browser)
         except Exception as exc:  # noqa: BLE001 - shown to the person, logged with its traceback
             _log.exception("the explorer could not answer a new %s", what)
-            self.status.value = (f"<b>Could not draw {self.value:g}</b> (a new {what} from the browser): "
-                                 f"{_escape(f'{type(exc).__name__}: {exc}')}")
+            self._could_not_draw(exc, f" (a new {what} from the browser)")
+
+    def _could_not_draw(self, exc: Exception, why: str = ""):
+        """Say in the status line that the position shown could not be drawn, and the error."""
+        self.status.value = f"<b>Could not draw {self.value:g}</b>{why}: {_escape(f'{type(exc).__name__}: {exc}')}"
 
     # -- the position -------------------------------------------------------------
     def _si(self, value: float) -> float:
@@ -675,7 +678,7 @@ class Explorer:
         try:
             self.update()
         except Exception as exc:  # no cell shows what a loop callback raises: the status line does
-            self.status.value = f"<b>Could not draw {self.value:g}</b>: {_escape(f'{type(exc).__name__}: {exc}')}"
+            self._could_not_draw(exc)
 
     def _cancel(self):
         if self._timer is not None:

@@ -310,10 +310,10 @@ class _Builder:
             R = self.rname[link] = f"R{link}{self.mark}"
             names = [n for n, _, _, _ in extra]
             P = load.point()
+            nothing = P is not None and self.rounding(load.F)
             # A resultant that is rounding has no line: its direction would be the rounding's.
-            lines = ((Line(R, _xy(P), _xy(load.F / abs(load.F)), "resultant"),)
-                     if P is not None and not self.rounding(load.F) else ())
-            res = (f"{R} = 0 N" if P is not None and self.rounding(load.F) else
+            lines = (Line(R, _xy(P), _xy(load.F / abs(load.F)), "resultant"),) if P is not None and not nothing else ()
+            res = (f"{R} = 0 N" if nothing else
                    f"{R} = {_n(abs(load.F))} N" if P is not None else f"{R}, a pure couple of {_n(load.M0)} N·m")
             if own:
                 # The own loads' name only when it differs from the new one (a crank's weight alone is R2 too).
@@ -614,7 +614,8 @@ class _Builder:
             # too long for a float, which is said in words rather than as a numpy overflow.
             d = abs(T) / abs(complex(R.F)) if R.F else 0.0
             dn = "d" + self.mark
-            arm = (f"{Rd} is rounding, so {name} = 0 and {drive} = 0 N·m" if self.rounding(R.F, R.M0) else
+            nothing = self.rounding(R.F, R.M0)
+            arm = (f"{Rd} is rounding, so {name} = 0 and {drive} = 0 N·m" if nothing else
                    f"{Rd} acts through {J.point} (its arm {dn} = 0), so the driving torque is {drive} = 0 N·m"
                    if d <= PICOMETRE else  # a dead centre: what is left of the arm is rounding
                    f"with {Rd} it forms a couple of arm {dn} = {_n(d * 1e3)} mm, which the driving torque balances: "
@@ -623,8 +624,7 @@ class _Builder:
                    f"driving torque balances: {drive} = {_n(T)} N·m{_sense(T)}")
             self.add("driver", f"The crank{self.within()}: the pivot force {name} = −{Rd} acts at {J.point}; {arm}"
                      + (f"; {total}." if total else "."), link,
-                     (Line(name, _xy(X), _xy(F / abs(F)) if F else (1.0, 0.0), "found"),)
-                     if not self.rounding(R.F, R.M0) else (),
+                     () if nothing else (Line(name, _xy(X), _xy(F / abs(F)) if F else (1.0, 0.0), "found"),),
                      values={name: _xy(F), drive: T, **({"d": d} if math.isfinite(d) else {})},
                      polygon=(Arrow(Rd, _xy(R.F), True), Arrow(name, _xy(F), False, _xy(X))))
             self.store(J, link, F)

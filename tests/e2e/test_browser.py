@@ -69,10 +69,12 @@ WATCH = """(root) => {
 }"""
 
 
+POSITION = r"^(?:No solution at )?(-?[0-9.]+)"  # the position a status line reports, in JavaScript and Python
+
 STATUS_AT = """([r, target]) => {
-  const m = r.querySelector('.graphkin-status').innerText.match(/^(?:No solution at )?(-?[0-9.]+)/);
+  const m = r.querySelector('.graphkin-status').innerText.match(/%s/);
   return m !== null && Math.abs(parseFloat(m[1]) - target) < 1e-6 * Math.max(1, Math.abs(target));
-}"""
+}""" % POSITION
 
 
 STATE = """(r) => ({status: r.querySelector('.graphkin-status').innerText,
@@ -208,7 +210,7 @@ def check_explorer(page, root, name: str) -> dict:
     w = root.evaluate("r => r.__watch")
     found["burst_images"] = len(w["loads"]) - n
     found["burst_settle_ms"] = round(w["loads"][-1] - w["keys"][k], 1)
-    shown = [float(re.match(r"(?:No solution at )?(-?[0-9.]+)", t).group(1)) for t in w["shown"][n:]]
+    shown = [float(re.match(POSITION, t).group(1)) for t in w["shown"][n:]]
     assert abs(target - moved) > 9.5 * abs(moved - value), found
     assert shown and shown[-1] == pytest.approx(target), (found, shown)
     assert all(sign * (b - a) > 0 for a, b in zip([moved, *shown], shown)), ("replayed or out of order", shown)
