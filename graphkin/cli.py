@@ -16,7 +16,7 @@ import os
 import sys
 from pathlib import Path
 
-from .errors import GraphkinError
+from graphkin.errors import GraphkinError
 
 
 class _Parser(argparse.ArgumentParser):
@@ -46,10 +46,10 @@ def _parser() -> argparse.ArgumentParser:
     c.add_argument("--cs", type=float, metavar="CS", help="coefficient of speed fluctuation: size a flywheel, e.g. 0.05")
     c.add_argument("--json", action="store_true", help="print every array as JSON in SI units (schema: docs/json.md)")
     c.add_argument("--figure", metavar="FILE", help="write the cycle figure (.png, .svg or .pdf)")
-    from .cli_exercises import add_parser
-    from .cli_flywheel import add_parser as add_flywheel
-    from .cli_explore import add_parser as add_explore
-    from .cli_handout import add_parser as add_handout
+    from graphkin.cli_exercises import add_parser
+    from graphkin.cli_flywheel import add_parser as add_flywheel
+    from graphkin.cli_explore import add_parser as add_explore
+    from graphkin.cli_handout import add_parser as add_handout
 
     add_parser(sub)
     add_explore(sub)
@@ -61,7 +61,7 @@ def _parser() -> argparse.ArgumentParser:
 def _positions(problem, text: str):
     import numpy as np
 
-    from .units import to_si
+    from graphkin.units import to_si
 
     crank = problem.mechanism.driver.kind == "crank"
     dim = "angle" if crank else "length"
@@ -69,7 +69,7 @@ def _positions(problem, text: str):
     if not text.strip() or any(not part.strip() for part in parts):
         raise GraphkinError(f"--at {text!r}: give one or more positions with units, separated by commas, e.g. "
                             + ("'124 deg,140 deg'" if crank else "'200 mm,250 mm'"))
-    from .model.ranges import complaint
+    from graphkin.model.ranges import complaint
 
     q = np.array([to_si(part.strip(), dim, field="--at", file="command line") for part in parts])
     for x, part in zip(q, parts):
@@ -81,7 +81,7 @@ def _positions(problem, text: str):
 
 def _check_outputs(figure=None, steps=None) -> None:
     """Refuse a figure or step folder that cannot be written, before any work is done."""
-    from .files import check_destination, check_folder
+    from graphkin.files import check_destination, check_folder
 
     if figure:
         if Path(figure).suffix.lower() not in (".png", ".svg", ".pdf"):
@@ -92,7 +92,7 @@ def _check_outputs(figure=None, steps=None) -> None:
 
 
 def _list() -> int:
-    from . import catalog
+    from graphkin import catalog
 
     for name in catalog.names():
         problem = catalog.load(name)
@@ -101,7 +101,7 @@ def _list() -> int:
         print(f"{'':<24}{problem.source}")
     print("\nflywheels (graphkin flywheel NAME):")
     for name in catalog.flywheel_names():
-        from .flywheel_file import load_flywheel
+        from graphkin.flywheel_file import load_flywheel
 
         fly = load_flywheel(catalog.flywheel_path(name), name=name)
         print(f"{name:<24}{fly.title}")
@@ -112,7 +112,7 @@ def _list() -> int:
 def _solve(args) -> int:
     import numpy as np
 
-    from . import catalog, report
+    from graphkin import catalog, report
 
     _check_outputs(args.figure, args.steps)
     problem = catalog.load(args.problem)
@@ -136,7 +136,7 @@ def _solve(args) -> int:
 
 def position_text(problem, q) -> str:
     """``θ = 89.99999999999°`` or ``s = 499.99 mm``: as many digits as name the position (a dead point's neighbour)."""
-    from .kinematics import position_text as text
+    from graphkin.kinematics import position_text as text
 
     return text(q, problem.mechanism.driver.kind == "crank")
 
@@ -157,7 +157,7 @@ def _figures(problem, result, graphical, figure, steps, say):
 
     from tqdm import tqdm
 
-    from . import draw
+    from graphkin import draw
 
     many = result.n > 1
     drawn = [(i, c) for i, c in enumerate(graphical) if c is not None and c.valid]
@@ -202,11 +202,11 @@ def _batch_note(written) -> str:
 def _cycle(args) -> int:
     import numpy as np
 
-    from . import catalog
-    from .analysis import sweep
+    from graphkin import catalog
+    from graphkin.analysis import sweep
 
-    from .analysis.flywheel import check_Cs
-    from .model.ranges import MAX_POSITIONS
+    from graphkin.analysis.flywheel import check_Cs
+    from graphkin.model.ranges import MAX_POSITIONS
 
     _check_outputs(args.figure)
     if args.cs is not None:
@@ -229,7 +229,7 @@ def _cycle(args) -> int:
     else:
         print(format_cycle(cycle, data))
     if args.figure:
-        from . import draw
+        from graphkin import draw
 
         path = Path(args.figure)
         with _Progress(f"drawing {path.name}"):
@@ -402,7 +402,7 @@ def cycle_data(cycle, Cs=None) -> dict:
 
 
 def _peak_of(values, q, lowest=False):
-    from .analysis.cycle import peak_of
+    from graphkin.analysis.cycle import peak_of
 
     return peak_of(values, q, lowest=lowest)
 
@@ -411,7 +411,7 @@ def format_cycle(cycle, data: dict) -> str:
     """The text summary of ``graphkin cycle``, with units, from :func:`cycle_data`."""
     import numpy as np
 
-    from .analysis.cycle import switching_angles
+    from graphkin.analysis.cycle import switching_angles
 
     mech = cycle.problem.mechanism
     crank = mech.driver.kind == "crank"
@@ -539,7 +539,7 @@ def _one_line_warnings() -> None:
     """Print graphkin's warnings as ``graphkin: warning: ...``, one line each, not Python's two-line form."""
     import warnings
 
-    from .errors import GraphkinWarning
+    from graphkin.errors import GraphkinWarning
 
     default = warnings.showwarning
 
@@ -588,19 +588,19 @@ def main(argv=None) -> int:
         if args.command == "cycle":
             return _cycle(args)
         if args.command == "exercise":
-            from .cli_exercises import run
+            from graphkin.cli_exercises import run
 
             return run(args)
         if args.command == "handout":
-            from .cli_handout import run as handout
+            from graphkin.cli_handout import run as handout
 
             return handout(args)
         if args.command == "explore":
-            from .cli_explore import run as explore
+            from graphkin.cli_explore import run as explore
 
             return explore(args)
         if args.command == "flywheel":
-            from .cli_flywheel import run as flywheel
+            from graphkin.cli_flywheel import run as flywheel
 
             return flywheel(args)
         return _list() if args.command == "list" else _solve(args)

@@ -21,8 +21,8 @@ import os
 import sys
 from pathlib import Path
 
-from .errors import GraphkinError
-from .files import check_destination, read_text, write_text
+from graphkin.errors import GraphkinError
+from graphkin.files import check_destination, read_text, write_text
 
 MAX_ROSTER = 100_000
 
@@ -81,8 +81,8 @@ def _secret(args) -> str:
 def _run(args) -> int:
     # Imported here, not at the top: `graphkin` builds every subcommand's parser, and the exercise machinery
     # (numpy, shapely, the problem reader) is ~0.1 s that `graphkin solve` and `graphkin list` never use.
-    from . import exercises
-    from .exercises.batch import run_roster
+    from graphkin import exercises
+    from graphkin.exercises.batch import run_roster
 
     if args.action == "list":
         for name in exercises.names():
@@ -120,7 +120,7 @@ def _run(args) -> int:
 
 
 def _export(args) -> int:
-    from .exercises import platforms
+    from graphkin.exercises import platforms
 
     platforms.platform(args.to)
     secret = _secret(args)
@@ -134,7 +134,7 @@ def _export(args) -> int:
 
 
 def _given_figure(v, figure) -> None:
-    from . import draw
+    from graphkin import draw
 
     c = v.construction
     if not c.valid:
@@ -148,7 +148,7 @@ def _progress(total: int, label: str):
     """A progress bar on stderr for a batch that takes more than a second (none when stderr is not a terminal)."""
     from tqdm import tqdm
 
-    from .cli import PROGRESS_DELAY
+    from graphkin.cli import PROGRESS_DELAY
 
     return tqdm(total=total, desc=f"graphkin: {label}", unit="student", delay=PROGRESS_DELAY, file=sys.stderr,
                 leave=False, disable=None)
@@ -228,8 +228,8 @@ def _answers_json(path) -> dict:
 
 
 def _grade(ex, args, secret) -> int:
-    from .exercises.batch import run_roster
-    from .exercises.grading import grade_variant
+    from graphkin.exercises.batch import run_roster
+    from graphkin.exercises.grading import grade_variant
 
     reveal = True if args.reveal else None
     if args.student:

@@ -24,7 +24,7 @@ import os
 import sys
 from pathlib import Path
 
-from .errors import GraphkinError
+from graphkin.errors import GraphkinError
 
 READY = 60.0
 """Seconds Voilà is given to start listening."""
@@ -81,7 +81,7 @@ def run(args) -> int:
     import subprocess
     import tempfile
 
-    from . import catalog
+    from graphkin import catalog
 
     problem = catalog.load(args.problem)  # a bad name or file: GraphkinError, before anything starts
     source = args.problem if args.problem in catalog.names() else str(Path(args.problem).resolve())

@@ -29,8 +29,8 @@ def run(args) -> int:
     """Carry out ``graphkin flywheel``; returns the exit code."""
     from pathlib import Path
 
-    from . import catalog
-    from .flywheel_file import load_flywheel
+    from graphkin import catalog
+    from graphkin.flywheel_file import load_flywheel
 
     # A catalog name, unless a file of that name is here.
     if not Path(args.file).exists() and args.file in catalog.flywheel_names():

@@ -18,7 +18,7 @@ import os
 import sys
 from pathlib import Path
 
-from .errors import GraphkinError
+from graphkin.errors import GraphkinError
 
 
 def add_parser(sub) -> None:
@@ -52,7 +52,7 @@ def _version(args) -> str | None:
 
 def run(args) -> int:
     """Carry out ``graphkin handout``; returns the exit code."""
-    from . import handout
+    from graphkin import handout
 
     if args.roster:
         return _roster(args)
@@ -79,8 +79,8 @@ def _secret(args) -> str:
 
 
 def _roster(args) -> int:
-    from .cli_exercises import _roster as read_roster
-    from .handout.batch import make_roster
+    from graphkin.cli_exercises import _roster as read_roster
+    from graphkin.handout.batch import make_roster
 
     folder = Path(args.output)
     if folder.exists() and not folder.is_dir():
@@ -98,7 +98,7 @@ def _roster(args) -> int:
         raise GraphkinError(f"-o {folder}: the folder cannot be written")
     students = read_roster(args.roster)
     # Read the exercise once here: a missing or malformed one fails now, not in every worker.
-    from . import exercises
+    from graphkin import exercises
 
     exercises.load(args.source)
     secret = _secret(args)
@@ -119,7 +119,7 @@ def _progress(total: int):
     """A progress bar on stderr for a batch that takes more than a second (none when stderr is not a terminal)."""
     from tqdm import tqdm
 
-    from .cli import PROGRESS_DELAY
+    from graphkin.cli import PROGRESS_DELAY
 
     return tqdm(total=total, desc="graphkin: handouts", unit="student", delay=PROGRESS_DELAY, file=sys.stderr,
                 leave=False, disable=None)

@@ -12,7 +12,7 @@ import os
 import tempfile
 from pathlib import Path
 
-from .errors import GraphkinError
+from graphkin.errors import GraphkinError
 
 _UMASK = os.umask(0)
 os.umask(_UMASK)

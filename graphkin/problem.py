@@ -16,10 +16,10 @@ from typing import Any, Mapping
 
 import numpy as np
 
-from .errors import GraphkinError, ModelError, ProblemFileError
-from .model import SENSES, Active, Driver, GearMesh, Link, Mechanism, PointForce, Prismatic, Revolute, Table, Torque
-from .model import mass as massprops
-from .model.ranges import complaint
+from graphkin.errors import GraphkinError, ModelError, ProblemFileError
+from graphkin.model import SENSES, Active, Driver, GearMesh, Link, Mechanism, PointForce, Prismatic, Revolute, Table, Torque
+from graphkin.model import mass as massprops
+from graphkin.model.ranges import complaint
 
 _TOP = {"title", "source", "notes", "analysis", "gravity", "frame", "links", "joints", "driver", "loads", "assembly",
         "given"}
@@ -107,8 +107,8 @@ class Problem:
         """
         from dataclasses import replace
 
-        from .model.link import _finite
-        from .model.ranges import check
+        from graphkin.model.link import _finite
+        from graphkin.model.ranges import check
 
         crank = self.mechanism.driver.kind == "crank"
         rate = {"q_dot": _finite(q_dot, f"{self.name}: q_dot", "rad/s" if crank else "m/s"),
@@ -137,7 +137,7 @@ class Problem:
         """
         from dataclasses import replace
 
-        from .model import Prismatic
+        from graphkin.model import Prismatic
 
         joints = tuple(replace(j, mu=mu) if isinstance(j, Prismatic) else j for j in self.mechanism.joints)
         if not any(isinstance(j, Prismatic) for j in joints):
@@ -164,8 +164,8 @@ class Problem:
         """
         from dataclasses import replace
 
-        from .kinematics import solve_kinematics
-        from .model.ranges import as_array
+        from graphkin.kinematics import solve_kinematics
+        from graphkin.model.ranges import as_array
 
         q, q_dot, q_ddot = self.q, self.q_dot, self.q_ddot
         if at is not None:
@@ -192,7 +192,7 @@ class Problem:
         at : float or array_like, shape (n,), optional
             Input positions θ [rad] or s [m] (see :meth:`kinematics`).
         """
-        from .solve import solve_forces
+        from graphkin.solve import solve_forces
 
         return solve_forces(self.kinematics(at))
 
@@ -230,7 +230,7 @@ class _Reader:
         ``kind="auto"`` takes the dimension's range (:data:`_KIND`); None
         checks none (the caller checks the sign first, with its own message).
         """
-        from .units import to_si
+        from graphkin.units import to_si
 
         x = to_si(value, dimension, field=where, file=self.file)
         self.ranged(x, value, _KIND.get(dimension) if kind == "auto" else kind, where)
@@ -245,7 +245,7 @@ class _Reader:
             raise self.fail(where, f"{_shown(raw)} {why}")
 
     def vec(self, value, dimension, where):
-        from .units import to_si_vector
+        from graphkin.units import to_si_vector
 
         x, y = to_si_vector(value, dimension, field=where, file=self.file)
         kind = _KIND.get(dimension)
@@ -257,7 +257,7 @@ class _Reader:
         return (x, y)
 
     def array(self, value, dimension, where):
-        from .units import to_si_array
+        from graphkin.units import to_si_array
 
         if isinstance(value, dict):
             # A range is linear: its ends bound every value in it. They are checked first, so that a start of
@@ -332,7 +332,7 @@ def load_problem(source: str | Path, *, name: str | None = None) -> Problem:
     ProblemFileError
         With the file, the field and what is wrong.
     """
-    from .files import read_text
+    from graphkin.files import read_text
 
     if not isinstance(source, (str, Path)) or not str(source):
         raise GraphkinError(f"load_problem takes the path of a problem file (a str or Path), got "
@@ -435,8 +435,8 @@ def build_problem(data: Mapping[str, Any], *, file: str = "<problem>", base: str
                           f"driver.{speed} (a static analysis uses it only to set such senses)")
     given = _given(rd, data.get("given", {}), mech, len(q), static)
     try:
-        from .kinematics import decompose
-        from .kinematics.structure import Dyad
+        from graphkin.kinematics import decompose
+        from graphkin.kinematics.structure import Dyad
 
         groups = decompose(mech)
     except ModelError as exc:
@@ -575,7 +575,7 @@ def _joint(rd, t, where):
             if mu > 1:
                 import warnings
 
-                from .errors import GraphkinWarning
+                from graphkin.errors import GraphkinWarning
 
                 # Rubber on dry concrete reaches about 1; above it is more often a typing slip than a material.
                 warnings.warn(f"{rd.file}: {where}.mu: a friction coefficient of {mu:g} is unusually high "
@@ -671,7 +671,7 @@ def _load(rd, t, where, driver_kind):
 
 def _load_table(rd, t, where, kind, driver_kind):
     """A load's ``table`` (CSV text inline) or ``csv`` (a file beside the problem file), as a :class:`Table`."""
-    from .tables import parse_table, read_csv_beside
+    from graphkin.tables import parse_table, read_csv_beside
 
     given = [k for k in ("table", "csv") if k in t]
     if not given:

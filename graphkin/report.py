@@ -11,10 +11,10 @@ import math
 
 import numpy as np
 
-from .kinematics.points import link_points
-from .numbers import PICOMETRE, RESIDUE, largest, num, unless_rounding
-from .model import GearMesh, Prismatic
-from .solve import ForceAnalysis
+from graphkin.kinematics.points import link_points
+from graphkin.numbers import PICOMETRE, RESIDUE, largest, num, unless_rounding
+from graphkin.model import GearMesh, Prismatic
+from graphkin.solve import ForceAnalysis
 
 
 def polar(v) -> tuple[float, float]:
@@ -40,7 +40,7 @@ def _vec(v):
 
 def constructions(result: ForceAnalysis) -> list:
     """The graphical construction of every position of a result (None where invalid)."""
-    from .graphic import construct_forces
+    from graphkin.graphic import construct_forces
 
     return [construct_forces(result.kinematics, i) if result.valid[i] else None for i in range(result.n)]
 
@@ -266,14 +266,14 @@ def _input_text(entry, crank, static=False):
 
 def _applied(kin) -> list:
     """Each external load with what it applies at every position (table, window and sense included)."""
-    from .solve.loads import applied
+    from graphkin.solve.loads import applied
 
     return [(ld, applied(kin, ld)) for ld in kin.mechanism.loads]
 
 
 def _load_entry(load, value) -> dict:
     """One external load at one position, as plain data: a force's vector [N] or a torque [N·m]."""
-    from .model import PointForce
+    from graphkin.model import PointForce
 
     out = {"name": load.name, "link": load.link}
     if isinstance(load, PointForce):

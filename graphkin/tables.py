@@ -22,7 +22,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .errors import ProblemFileError
+from graphkin.errors import ProblemFileError
 
 _HEADER = re.compile(r"^\s*(?P<name>[A-Za-z_][\w ]*?)\s*\[(?P<unit>[^\]]+)\]\s*$")
 
@@ -55,7 +55,7 @@ def parse_table(text: str, columns: dict[str, str], *, file: str, field: str, sh
         with the wrong number of cells, a cell that is not a finite number,
         or fewer than two rows.
     """
-    from .units import to_si
+    from graphkin.units import to_si
 
     where = f"{shown} " if shown else ""
 

@@ -270,7 +270,7 @@ def _learn(ureg, unit, unit_text: str, dimension: str, x: float, si: float) -> N
     try:
         path = _factors_path()
         if path is not None:
-            from .files import write_text
+            from graphkin.files import write_text
 
             path.parent.mkdir(parents=True, exist_ok=True)
             write_text(path, json.dumps({"pint": _pint_stamp(),

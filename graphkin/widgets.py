@@ -67,7 +67,7 @@ import weakref
 
 import numpy as np
 
-from .errors import GraphkinError
+from graphkin.errors import GraphkinError
 
 _log = logging.getLogger(__name__)
 
@@ -349,7 +349,7 @@ def _answers_the_browser(name: str, what: str):
 
 def _cell(v) -> str:
     """A force for the table, with a true minus: ``1972 N ∠ −73.78°`` (``0 N`` when there is none)."""
-    from .report import polar_text
+    from graphkin.report import polar_text
 
     return polar_text(v).replace("-", "−") if np.any(v) else "0 N"
 
@@ -426,7 +426,7 @@ class Explorer:
         import ipywidgets as W
         from matplotlib.figure import Figure
 
-        from .draw._stamps import StampCanvas
+        from graphkin.draw._stamps import StampCanvas
 
         if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 2:
             raise GraphkinError(f"n must be a whole number of positions ≥ 2, got {n!r}")
@@ -715,7 +715,7 @@ class Explorer:
     # -- layout -----------------------------------------------------------------
     def _polygons_needed(self) -> int:
         """The most force polygons a construction draws, over a few positions of the range."""
-        from .graphic import construct_forces
+        from graphkin.graphic import construct_forces
 
         lo, hi = self.limits
         at = np.array([self._si(v) for v in np.linspace(lo, hi, 13)])
@@ -733,7 +733,7 @@ class Explorer:
         """(Re)create the persistent axes: mechanism and torque curve, free bodies, polygon slots."""
         from matplotlib.gridspec import GridSpec
 
-        from .draw.axes import PanelAxes
+        from graphkin.draw.axes import PanelAxes
 
         job = self._ahead_job
         if job is not None and not job[1].gi_running:
@@ -789,7 +789,7 @@ class Explorer:
     # -- the torque curve ---------------------------------------------------------
     def _sweep(self):
         """Solve the whole cycle at the current speed and draw the torque curve (once per speed)."""
-        from .analysis.cycle import Cycle, sweep
+        from graphkin.analysis.cycle import Cycle, sweep
 
         if not self._original.given:
             self.problem = self._original.at_speed(self._q_dot())
@@ -819,7 +819,7 @@ class Explorer:
         ax.set_xlim(*self.limits)
         finite = y[np.isfinite(y)]
         if finite.size:
-            from .draw.cycle import value_limits
+            from graphkin.draw.cycle import value_limits
 
             lo, hi = np.percentile(finite, [0.5, 99.5]) if finite.size > 20 else (finite.min(), finite.max())
             # A flat curve (a gear pair's steady torque) keeps a margin: not on the plot's edge, its marker whole.
@@ -881,8 +881,8 @@ class Explorer:
 
         Drawn ahead, the kernel reads its messages between two steps (see :meth:`_draw_ahead`).
         """
-        from . import draw
-        from .graphic import construct_forces
+        from graphkin import draw
+        from graphkin.graphic import construct_forces
 
         q = self._si(value)
         c = a = None
@@ -890,7 +890,7 @@ class Explorer:
         try:
             kin = self.problem.kinematics(at=[q])
             c = construct_forces(kin, 0)
-            from .solve import solve_forces
+            from graphkin.solve import solve_forces
 
             a = solve_forces(kin)
         except GraphkinError as exc:
@@ -1161,7 +1161,7 @@ def exercise(name, student: str = "", *, secret: str = ""):
         Display it in a cell; ``box.answers`` (question id → text box), ``box.check()``
         and ``box.report`` (the last grading as plain data) are there for tests.
     """
-    from . import exercises
+    from graphkin import exercises
 
     return ExerciseBox(exercises.load(name), student, secret)
 
@@ -1209,7 +1209,7 @@ class ExerciseBox:
 
     def check(self) -> dict | None:
         """Grade what is in the boxes and show the feedback; returns the report (plain data)."""
-        from .exercises.grading import grade_variant
+        from graphkin.exercises.grading import grade_variant
 
         student = self.student.value.strip()
         if not student:

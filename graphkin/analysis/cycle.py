@@ -16,19 +16,19 @@ from typing import TYPE_CHECKING, Mapping
 
 import numpy as np
 
-from ..errors import GraphkinError
-from ..geometry import cross
-from ..kinematics import position_text
-from ..model import GearMesh, Prismatic, Revolute
-from ..solve import ForceAnalysis
-from ._sampling import (SWITCH, Peak, check_problem, peak_of, positions, sweep_positions, switching_angles,
+from graphkin.errors import GraphkinError
+from graphkin.geometry import cross
+from graphkin.kinematics import position_text
+from graphkin.model import GearMesh, Prismatic, Revolute
+from graphkin.solve import ForceAnalysis
+from graphkin.analysis._sampling import (SWITCH, Peak, check_problem, peak_of, positions, sweep_positions, switching_angles,
                         switching_samples)
-from ._turn import TURN, closing_step, weights
-from .index import JointForceIndex, index_at
+from graphkin.analysis._turn import TURN, closing_step, weights
+from graphkin.analysis.index import JointForceIndex, index_at
 
 if TYPE_CHECKING:
-    from ..problem import Problem
-    from .flywheel import Flywheel
+    from graphkin.problem import Problem
+    from graphkin.analysis.flywheel import Flywheel
 
 __all__ = ["SWITCH", "Cycle", "Peak", "Peaks", "check_problem", "peak_of", "positions", "sweep", "sweep_positions",
            "switching_angles", "switching_samples"]
@@ -309,7 +309,7 @@ class Cycle:
         Cs : float
             Coefficient of speed fluctuation (ω_max − ω_min)/ω_avg, e.g. 0.05.
         """
-        from .flywheel import size_flywheel
+        from graphkin.analysis.flywheel import size_flywheel
 
         why = self.why_no_flywheel()
         if why:

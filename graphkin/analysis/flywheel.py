@@ -28,9 +28,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..errors import GraphkinError
-from ..model.ranges import complaint
-from ._turn import TURN, closing_step, steps
+from graphkin.errors import GraphkinError
+from graphkin.model.ranges import complaint
+from graphkin.analysis._turn import TURN, closing_step, steps
 
 
 @dataclass(frozen=True)
@@ -445,7 +445,7 @@ class Flywheel:
 
         The torques are linear between samples, so the extremes lie at samples.
         """
-        from ._sampling import peak_of
+        from graphkin.analysis._sampling import peak_of
 
         a = self.acceleration()
         return peak_of(a, self.theta), peak_of(a, self.theta, lowest=True)

@@ -21,13 +21,13 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from ..errors import GraphkinError
-from ..model import PointForce, Torque
-from ..solve import ForceAnalysis, solve_forces
-from ._sampling import Peak, check_problem, peak_of, sweep_positions
+from graphkin.errors import GraphkinError
+from graphkin.model import PointForce, Torque
+from graphkin.solve import ForceAnalysis, solve_forces
+from graphkin.analysis._sampling import Peak, check_problem, peak_of, sweep_positions
 
 if TYPE_CHECKING:
-    from ..problem import Problem
+    from graphkin.problem import Problem
 
 SINGULAR = 1e6
 """Index above which a position is taken as immovable.
@@ -96,7 +96,7 @@ def static_problem(problem: "Problem") -> "Problem":
 
 def _reference_load(problem: "Problem", kin) -> tuple[np.ndarray, str]:
     """The external load the index divides by at each position of ``kin``, and the index's units."""
-    from ..solve.loads import applied
+    from graphkin.solve.loads import applied
 
     mech = problem.mechanism
     forces = [l for l in mech.loads if isinstance(l, PointForce)]
@@ -151,7 +151,7 @@ def joint_force_index(problem: "Problem", n: int | None = None, *, limit: float 
 
 def index_at(problem: "Problem", at, limit: float = 2.0) -> JointForceIndex:
     """:func:`joint_force_index` at input positions ``at`` (SI; None for the problem's own)."""
-    from .flywheel import _positive
+    from graphkin.analysis.flywheel import _positive
 
     limit = _positive(limit, "limit")
     static = static_problem(problem)

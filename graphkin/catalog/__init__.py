@@ -5,7 +5,7 @@ from __future__ import annotations
 from importlib import resources
 from pathlib import Path
 
-from ..errors import GraphkinError
+from graphkin.errors import GraphkinError
 
 DEFAULT = "double_slider"
 """The example ``make demo`` solves."""
@@ -60,7 +60,7 @@ def flywheel_path(name: str) -> Path:
 
 def load(name_or_path: str):
     """A :class:`graphkin.problem.Problem` from a catalog name or a file path."""
-    from ..problem import load_problem
+    from graphkin.problem import load_problem
 
     if not isinstance(name_or_path, (str, Path)):
         raise GraphkinError(f"catalog.load takes a catalog name ({', '.join(names())}) or a file path, "

@@ -25,16 +25,16 @@ import importlib
 import os
 from pathlib import Path
 
-from ..files import file_mode
-from . import style
-from .axes import Drawn
-from .convention import draw_sign_convention
-from .fbd import draw_free_body, loads_on
-from .given import draw_given
-from .labels import measuring_renderer
-from .mechanism import draw_mechanism
-from .polygon import draw_force_polygon
-from .solution import comparison_rows, draw_solution
+from graphkin.files import file_mode
+from graphkin.draw import style
+from graphkin.draw.axes import Drawn
+from graphkin.draw.convention import draw_sign_convention
+from graphkin.draw.fbd import draw_free_body, loads_on
+from graphkin.draw.given import draw_given
+from graphkin.draw.labels import measuring_renderer
+from graphkin.draw.mechanism import draw_mechanism
+from graphkin.draw.polygon import draw_force_polygon
+from graphkin.draw.solution import comparison_rows, draw_solution
 
 FORMATS = ("png", "svg", "pdf")
 

@@ -8,7 +8,7 @@ import numpy as np
 from matplotlib.patches import ArrowStyle, FancyArrowPatch
 from matplotlib.path import Path
 
-from .axes import put
+from graphkin.draw.axes import put
 
 
 def unit(v):

@@ -6,9 +6,9 @@ import math
 
 import numpy as np
 
-from . import style as _style
-from .arrows import arrow, moment_arrow
-from .axes import Drawn, line, markers, new_axes, setup_axes
+from graphkin.draw import style as _style
+from graphkin.draw.arrows import arrow, moment_arrow
+from graphkin.draw.axes import Drawn, line, markers, new_axes, setup_axes
 
 
 def draw_sign_convention(*, ax=None, title=True, **style) -> Drawn:

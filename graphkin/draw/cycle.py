@@ -29,11 +29,11 @@ from matplotlib.artist import Artist
 from matplotlib.figure import Figure
 from matplotlib.ticker import Formatter, MaxNLocator
 
-from ..analysis._turn import TURN
-from ..errors import GraphkinError
-from . import style as _style
-from .axes import Drawn, PanelAxes, line, markers, new_axes
-from .text import halo, num, sub, subscript
+from graphkin.analysis._turn import TURN
+from graphkin.errors import GraphkinError
+from graphkin.draw import style as _style
+from graphkin.draw.axes import Drawn, PanelAxes, line, markers, new_axes
+from graphkin.draw.text import halo, num, sub, subscript
 
 SERIES = (_style.BLUE, _style.VERMILLION, _style.GREEN, _style.PURPLE, _style.ORANGE, _style.SKY_BLUE, _style.BLACK)
 """Colours of successive curves (Okabe–Ito, yellow left out: too faint on white)."""
@@ -121,7 +121,7 @@ class _RadialLabels(Artist):
         self.curves = [(np.ravel(a), np.ravel(r)) for a, r in curves]
 
     def draw(self, renderer):
-        from .labels import _hits_many
+        from graphkin.draw.labels import _hits_many
 
         ax = self.axes
         axis = ax.yaxis

@@ -4,9 +4,9 @@ from __future__ import annotations
 
 from matplotlib.figure import Figure
 
-from .axes import PanelAxes
-from .fbd import draw_free_body
-from .mechanism import draw_mechanism
+from graphkin.draw.axes import PanelAxes
+from graphkin.draw.fbd import draw_free_body
+from graphkin.draw.mechanism import draw_mechanism
 
 
 def draw_given(construction, links=None, *, figsize=None, **style) -> Figure:

@@ -14,9 +14,9 @@ import math
 import numpy as np
 from matplotlib.transforms import ScaledTranslation, TransformedBbox
 
-from .arrows import perp, unit
-from .axes import clip_path, line
-from .text import halo
+from graphkin.draw.arrows import perp, unit
+from graphkin.draw.axes import clip_path, line
+from graphkin.draw.text import halo
 
 TEXT_COST = 400.0
 """Price of a label's box on another text's box: never, unless every spot does."""

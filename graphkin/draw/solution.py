@@ -7,13 +7,13 @@ import math
 import numpy as np
 from matplotlib.figure import Figure
 
-from . import style as _style
-from .axes import PanelAxes
-from .text import input_text, num, polar_text, sub
-from .convention import draw_sign_convention
-from .fbd import draw_free_body
-from .mechanism import draw_mechanism
-from .polygon import draw_force_polygon, step_title
+from graphkin.draw import style as _style
+from graphkin.draw.axes import PanelAxes
+from graphkin.draw.text import input_text, num, polar_text, sub
+from graphkin.draw.convention import draw_sign_convention
+from graphkin.draw.fbd import draw_free_body
+from graphkin.draw.mechanism import draw_mechanism
+from graphkin.draw.polygon import draw_force_polygon, step_title
 
 NCOLS = 4
 

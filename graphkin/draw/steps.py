@@ -8,13 +8,13 @@ import textwrap
 import numpy as np
 from matplotlib.figure import Figure
 
-from . import style as _style
-from .arrows import arrow, perp, unit
-from .axes import MM, PanelAxes, markers, set_limits
-from .labels import Labeler, point_label_candidates
-from .text import input_text, num, sub
-from .mechanism import Geometry, draw_mechanism
-from .polygon import draw_force_polygon, step_title
+from graphkin.draw import style as _style
+from graphkin.draw.arrows import arrow, perp, unit
+from graphkin.draw.axes import MM, PanelAxes, markers, set_limits
+from graphkin.draw.labels import Labeler, point_label_candidates
+from graphkin.draw.text import input_text, num, sub
+from graphkin.draw.mechanism import Geometry, draw_mechanism
+from graphkin.draw.polygon import draw_force_polygon, step_title
 
 KIND_TITLE = {
     "resultant": "resultant of the known loads",

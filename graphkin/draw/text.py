@@ -14,8 +14,8 @@ from matplotlib.backends import backend_svg
 from matplotlib.font_manager import findfont
 from matplotlib.textpath import TextToPath
 
-from ..numbers import num  # noqa: F401 - drawings write numbers as the text does
-from .axes import MM
+from graphkin.numbers import num  # noqa: F401 - drawings write numbers as the text does
+from graphkin.draw.axes import MM
 
 _NAME = re.compile(r"^([−-]?)([A-Za-z])([a-z]?\d+(?:,\d+)?[a-z]?)([′″‴⁗]|⁽[⁰¹²³⁴⁵⁶⁷⁸⁹]+⁾)?$")
 SUBSCRIPTS = dict(zip("0123456789aehijklmnoprstuvx,", "₀₁₂₃₄₅₆₇₈₉ₐₑₕᵢⱼₖₗₘₙₒₚᵣₛₜᵤᵥₓ,"))
@@ -65,7 +65,7 @@ def plain(text: str) -> str:
 
 def polar_text(v, unit: str = "N", digits: int = 4) -> str:
     """``27.06 N ∠ −73.78°`` (the README's polar form)."""
-    from ..report import polar
+    from graphkin.report import polar
 
     size, angle = polar(v)
     if size == 0:

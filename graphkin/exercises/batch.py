@@ -16,7 +16,7 @@ import atexit
 import os
 from concurrent.futures import ProcessPoolExecutor
 
-from .exercise import Exercise
+from graphkin.exercises.exercise import Exercise
 
 PARALLEL_FROM = 200
 """Rosters of at least this many students are spread over the cores."""
@@ -26,7 +26,7 @@ _WORKERS: list[ProcessPoolExecutor] = []
 
 
 def _one(exercise: Exercise, action: str, student: str, secret: str, answers, reveal):
-    from ..errors import GraphkinError
+    from graphkin.errors import GraphkinError
 
     try:
         v = exercise.variant(student, secret)
@@ -36,7 +36,7 @@ def _one(exercise: Exercise, action: str, student: str, secret: str, answers, re
         return v.sheet()
     if action == "key":
         return v.key()
-    from .grading import grade_variant
+    from graphkin.exercises.grading import grade_variant
 
     return grade_variant(v, answers or {}, reveal=reveal)
 

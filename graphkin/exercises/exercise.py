@@ -16,8 +16,8 @@ from decimal import Decimal, InvalidOperation
 from pathlib import Path
 from typing import Any
 
-from ..errors import GraphkinError, ProblemFileError
-from ..problem import _Reader as ProblemReader
+from graphkin.errors import GraphkinError, ProblemFileError
+from graphkin.problem import _Reader as ProblemReader
 
 _TOP = {"title", "source", "problem", "intro", "route", "vary", "questions", "partial", "positions", "flywheel",
         "reveal", "max_force_ratio", "max_speed_ratio", "draw"}
@@ -214,7 +214,7 @@ class Exercise:
 
     def variant(self, student: str, secret: str = ""):
         """This exercise's data for one student (:class:`graphkin.exercises.variant.Variant`)."""
-        from .variant import make_variant
+        from graphkin.exercises.variant import make_variant
 
         return make_variant(self, student, secret)
 
@@ -345,12 +345,12 @@ def _question(rd: _Reader, t: dict, where: str, names: set[str], driver: str, ro
     if "floor" in t and part in ("direction", "at"):
         raise rd.fail(f"{where}.floor", "applies to values, not to angles (an angle's slack comes from the tolerance)")
     if "floor" in t:
-        from ..units import to_si
+        from graphkin.units import to_si
 
         floor = to_si(t["floor"], dimension_of(kind, part), field=f"{where}.floor", file=rd.file)
         if floor < 0:
             raise rd.fail(f"{where}.floor", f"must not be negative, got {t['floor']!r}")
-    from ..units import to_si
+    from graphkin.units import to_si
 
     if unit:
         # The unit must suit the question: "mm" for a force is a slip in the file, not the student's.
@@ -389,7 +389,7 @@ def load_exercise(source: str | Path, *, name: str | None = None) -> Exercise:
     ProblemFileError
         Naming the file and the field at fault.
     """
-    from ..files import read_text
+    from graphkin.files import read_text
 
     path = Path(source)
     file = name or str(path)
@@ -399,7 +399,7 @@ def load_exercise(source: str | Path, *, name: str | None = None) -> Exercise:
 
 def parse_exercise(text: str, *, file: str = "<exercise>", id: str = "exercise", folder: Path | None = None) -> Exercise:
     """Build an :class:`Exercise` from TOML text (relative problem paths from ``folder``)."""
-    from .. import catalog
+    from graphkin import catalog
 
     rd = _Reader(file)
     try:
@@ -414,18 +414,18 @@ def parse_exercise(text: str, *, file: str = "<exercise>", id: str = "exercise",
         base_path = (folder or Path(".")) / problem
         if not base_path.is_file():
             raise rd.fail("problem", f"{problem!r} is neither a catalog problem ({', '.join(catalog.names())}) nor a file")
-    from ..files import read_text
+    from graphkin.files import read_text
 
     base_text = read_text(base_path, "problem", shown=str(base_path))
     try:
         base = tomllib.loads(base_text)
     except tomllib.TOMLDecodeError as exc:
         raise rd.fail("problem", f"{problem!r} cannot be read ({exc})") from None
-    from ..problem import build_problem
+    from graphkin.problem import build_problem
 
     problem_obj = build_problem(base, file=problem)
     mech = problem_obj.mechanism
-    from ..solve.result import parse_force_name
+    from graphkin.solve.result import parse_force_name
 
     names = set()
     for J in mech.joints:
@@ -541,8 +541,8 @@ def _check_values(rd: _Reader, base: dict, problem: str, vary: list[Vary]) -> No
     """Every value of every varied field must be one the problem file accepts there (units, field name)."""
     import copy
 
-    from ..problem import build_problem
-    from ..units import to_si
+    from graphkin.problem import build_problem
+    from graphkin.units import to_si
 
     for v in vary:
         # The ends and the middle: a unit or a field name at fault shows on any of them.

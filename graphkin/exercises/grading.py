@@ -18,9 +18,9 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping
 
-from .answers import Reading, Unreadable, read_answer
-from .exercise import CYCLE_KINDS, dimension_of
-from .quantities import Expected, _distance, _unit_text, unit_factor, value_of
+from graphkin.exercises.answers import Reading, Unreadable, read_answer
+from graphkin.exercises.exercise import CYCLE_KINDS, dimension_of
+from graphkin.exercises.quantities import Expected, _distance, _unit_text, unit_factor, value_of
 
 #: Verdicts a question can get.
 VERDICTS = ("correct", "slip", "wrong", "unreadable", "missing")
@@ -112,7 +112,7 @@ def _names(exp: Expected, variant):
     name = q.find if q.kind in ("force", "driver_torque", "driver_force", "inertia_force", "inertia_torque") else q.id
     other, i, j = name, "", ""
     if q.kind == "force":
-        from ..solve.result import parse_force_name
+        from graphkin.solve.result import parse_force_name
 
         i, j = parse_force_name(variant.problem.mechanism, q.find)
         other = f"{q.find[0]}{j}{i}"

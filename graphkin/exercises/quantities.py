@@ -14,7 +14,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .exercise import Question, dimension_of
+from graphkin.exercises.exercise import Question, dimension_of
 
 # SI unit of each dimension, as printed in keys.
 _SI = {"force": "N", "torque": "N*m", "length": "m", "angle": "rad", "energy": "J",
@@ -80,7 +80,7 @@ def unit_factor(unit: str, dimension: str) -> float:
     """SI value of one ``unit`` (1 for ``"mm"`` → 0.001)."""
     if not unit:
         return 1.0
-    from ..units import to_si
+    from graphkin.units import to_si
 
     return to_si(f"1 {unit}", dimension, field="unit")
 
@@ -171,7 +171,7 @@ def value_of(solved, q: Question):
     if kind == "average_torque":
         return cycle.average
     if kind == "peak_force":
-        from ..solve.result import parse_force_name
+        from graphkin.solve.result import parse_force_name
 
         i, j = parse_force_name(solved.problem.mechanism, q.find.split(".", 1)[1])
         p = cycle.peaks().forces[cycle.analysis.name_of(min(i, j), max(i, j))]
@@ -258,7 +258,7 @@ def _hint(solved, q: Question) -> str:
         if kind == "concurrency" and f"I{q.link}" in step.points:
             return _step_hint(n, step)
     if kind == "force":
-        from ..solve.result import parse_force_name
+        from graphkin.solve.result import parse_force_name
 
         i, j = parse_force_name(solved.problem.mechanism, q.find)
         return f"the equilibrium of link {j} (ΣF = 0, ΣM = 0: its rows of [A]{{x}} = {{b}})"

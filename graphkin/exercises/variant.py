@@ -23,8 +23,8 @@ from functools import cached_property
 
 import numpy as np
 
-from ..errors import GraphkinError
-from .exercise import CYCLE_KINDS, Exercise, Question, set_field
+from graphkin.errors import GraphkinError
+from graphkin.exercises.exercise import CYCLE_KINDS, Exercise, Question, set_field
 
 MAX_ATTEMPTS = 64
 """Draws tried per student before the exercise is declared unusable."""
@@ -100,13 +100,13 @@ class Solved:
 
     @cached_property
     def construction(self):
-        from ..graphic import construct_forces
+        from graphkin.graphic import construct_forces
 
         return construct_forces(self.result.kinematics, 0)
 
     @cached_property
     def cycle(self):
-        from ..analysis import sweep
+        from graphkin.analysis import sweep
 
         return sweep(self.problem, self.exercise.positions)
 
@@ -157,7 +157,7 @@ class Variant:
 
     def expected(self, q: Question):
         """The answer to question ``q`` (:class:`graphkin.exercises.quantities.Expected`), computed once."""
-        from .quantities import expected
+        from graphkin.exercises.quantities import expected
 
         if ("question", q.id) not in self._memo:
             self._memo["question", q.id] = expected(self, q)
@@ -165,7 +165,7 @@ class Variant:
 
     def sheet(self) -> dict:
         """The student's exercise as plain data: the statement, their data and the questions; no answers."""
-        from .quantities import question_data
+        from graphkin.exercises.quantities import question_data
 
         intro = _fill(self.exercise.intro, self.data)
         return {"exercise": self.exercise.id, "title": self.exercise.title, "source": self.exercise.source,
@@ -185,7 +185,7 @@ class Variant:
 
     def grade(self, answers) -> dict:
         """Grade a student's answers (a mapping of question id to text); see :func:`graphkin.exercises.grade`."""
-        from .grading import grade_variant
+        from graphkin.exercises.grading import grade_variant
 
         return grade_variant(self, answers)
 
@@ -203,8 +203,8 @@ def _choose(ex: Exercise, student: str, secret: str, attempt: int) -> tuple[Give
 
 
 def _build(ex: Exercise, data: tuple[Given, ...], student: str):
-    from ..problem import build_problem
-    from ..units import to_si
+    from graphkin.problem import build_problem
+    from graphkin.units import to_si
 
     base = dict(ex.base)
     Cs = ex.Cs
@@ -250,7 +250,7 @@ def _unusable(ex: Exercise, solved: Solved) -> str | None:
     if max(loads + [0.0]) > 0 and largest > ex.max_force_ratio * max(loads):
         return (f"the joint forces are {largest / max(loads):.0f} times the largest load: the linkage is near a dead "
                 "point")
-    from .quantities import undefined
+    from graphkin.exercises.quantities import undefined
 
     for q in ex.questions:
         if q.kind not in CYCLE_KINDS:
@@ -261,7 +261,7 @@ def _unusable(ex: Exercise, solved: Solved) -> str | None:
 
 
 def _span_of(solved: Solved) -> float:
-    from .quantities import _span
+    from graphkin.exercises.quantities import _span
 
     return _span(solved.construction) if solved.construction.valid else math.nan
 

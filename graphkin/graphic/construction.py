@@ -12,7 +12,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..errors import GraphkinError
+from graphkin.errors import GraphkinError
 
 
 @dataclass(frozen=True)
@@ -255,7 +255,7 @@ class Construction:
         A prismatic pair's force is placed at the slider point; the couple it
         also transmits is in :attr:`couple` (see :meth:`couple_on`).
         """
-        from ..model import GearMesh, Prismatic
+        from graphkin.model import GearMesh, Prismatic
 
         out = []
         for joint in self.mechanism.joints_of(link):
@@ -297,7 +297,7 @@ class Construction:
         return _force_of(self.forces, i, j)
 
     def __getitem__(self, name: str):
-        from ..solve.result import parse_force_name
+        from graphkin.solve.result import parse_force_name
 
         if name == self.driver_name:
             # As in ForceAnalysis: a torque is a number, a slider's force a vector.

@@ -29,9 +29,9 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from ..errors import GraphkinError
-from ..files import check_destination, write_bytes
-from .content import VERSIONS, build
+from graphkin.errors import GraphkinError
+from graphkin.files import check_destination, write_bytes
+from graphkin.handout.content import VERSIONS, build
 
 FORMATS = {".pdf": "pdf", ".html": "html", ".htm": "html", ".md": "md"}
 """File suffixes a handout can be written to, and the format each means."""
@@ -64,15 +64,15 @@ def render(doc: dict, fmt: str, *, folder: str = "figures") -> tuple[bytes, dict
         For Markdown: the figures' folder, relative to the document.
     """
     if fmt == "pdf":
-        from .typst import render as pdf
+        from graphkin.handout.typst import render as pdf
 
         return pdf(doc), {}
     if fmt == "html":
-        from .html import render as page
+        from graphkin.handout.html import render as page
 
         return page(doc).encode("utf-8"), {}
     if fmt == "md":
-        from .markdown import render as md
+        from graphkin.handout.markdown import render as md
 
         text, files = md(doc, folder)
         return text.encode("utf-8"), files

@@ -47,9 +47,9 @@ from pathlib import Path
 
 import numpy as np
 
-from ..errors import GraphkinError
-from . import maths as M
-from .figures import Picture
+from graphkin.errors import GraphkinError
+from graphkin.handout import maths as M
+from graphkin.handout.figures import Picture
 
 VERSIONS = ("key", "sheet", "blank")
 
@@ -140,7 +140,7 @@ class _Subject:
         """The graphical construction at position ``i`` (None where the linkage has no solution), built once."""
         key = f"construction-{i}"
         if key not in self.__dict__:
-            from ..graphic import construct_forces
+            from graphkin.graphic import construct_forces
 
             self.__dict__[key] = construct_forces(self.result.kinematics, i) if self.result.valid[i] else None
         return self.__dict__[key]
@@ -148,7 +148,7 @@ class _Subject:
     def data(self) -> dict:
         """:func:`graphkin.report.solution` of the worked positions, graphical route included (made once)."""
         if "_data" not in self.__dict__:
-            from ..report import solution
+            from graphkin.report import solution
 
             graphical = [None] * self.n
             for i in self.worked():
@@ -184,7 +184,7 @@ class _Subject:
 
 def _read_raw(name: str) -> dict:
     """A problem file's data as written (units and all), for the table of given data."""
-    from .. import catalog
+    from graphkin import catalog
 
     path = catalog.path(name) if name in catalog.names() else Path(name)
     try:
@@ -195,9 +195,9 @@ def _read_raw(name: str) -> dict:
 
 def subject(source, *, student=None, secret="", at=None, Cs=None):
     """Resolve what a handout is about: a problem (name or file) or, with ``student``, an exercise variant."""
-    from .. import catalog, exercises
-    from ..exercises.exercise import set_field
-    from ..exercises.variant import Variant
+    from graphkin import catalog, exercises
+    from graphkin.exercises.exercise import set_field
+    from graphkin.exercises.variant import Variant
 
     if isinstance(source, Variant) or student is not None:
         if at is not None:
@@ -217,7 +217,7 @@ def subject(source, *, student=None, secret="", at=None, Cs=None):
                                 "(or a class with --roster FILE.csv)") from None
         raise
     if isinstance(at, str):
-        from ..units import to_si
+        from graphkin.units import to_si
 
         dim = "angle" if problem.mechanism.driver.kind == "crank" else "length"
         at = np.array([to_si(part.strip(), dim, field="--at", file="command line") for part in at.split(",")])
@@ -348,7 +348,7 @@ def _paragraphs(text: str) -> list[str]:
 
 def _pretty(value) -> str:
     """A value of the problem file as written, in a book's notation (``"7.6 deg"`` → ``7.6°``)."""
-    from ..exercises.variant import pretty
+    from graphkin.exercises.variant import pretty
 
     if isinstance(value, str):
         return pretty(value)
@@ -475,7 +475,7 @@ _CONVENTION: list[Picture] = []
 def _convention_picture() -> Picture:
     """The sign convention's drawing: the same in every handout, so drawn once per process (a class's batch)."""
     if not _CONVENTION:
-        from .. import draw
+        from graphkin import draw
 
         _CONVENTION.append(Picture("convention", lambda: draw.draw_sign_convention(), 0.5,
                                    "x right, y up; angles, ω, α and torques positive counter-clockwise", 60))
@@ -503,7 +503,7 @@ def _convention(doc: _Doc, s: _Subject):
 
 
 def _mechanism(doc: _Doc, s: _Subject, c, i: int):
-    from .. import draw
+    from graphkin import draw
 
     label = doc.figure([s.picture(f"mechanism-{i}", lambda: draw.draw_mechanism(c), 0.7,
                                 f"the mechanism at {s.where(i)}", 75)],
@@ -513,7 +513,7 @@ def _mechanism(doc: _Doc, s: _Subject, c, i: int):
 
 def _pick_point(s: _Subject, link: int) -> str:
     """The point the acceleration of G is taken from: a frame pivot if the link has one, else a shared pin."""
-    from ..model import Revolute
+    from graphkin.model import Revolute
 
     joints = [j for j in s.mech.joints_of(link) if isinstance(j, Revolute)]
     joints.sort(key=lambda j: (s.mech.frame not in j.links, min(set(j.links) - {link})))
@@ -523,7 +523,7 @@ def _pick_point(s: _Subject, link: int) -> str:
 
 
 def _kinematics(doc: _Doc, s: _Subject, entry: dict, i: int):
-    from .loops import groups
+    from graphkin.handout.loops import groups
 
     kin = s.result.kinematics
     doc.heading(2, "Position of every link" if s.static else "Kinematics")
@@ -671,7 +671,7 @@ def _matrix(doc: _Doc, s: _Subject, entry: dict, i: int):
 
 def _system(s: _Subject):
     if not hasattr(s, "_system"):
-        from ..solve.matrix import assemble
+        from graphkin.solve.matrix import assemble
 
         s._system = assemble(s.result)
     return s._system
@@ -713,8 +713,8 @@ def _polygon_equation(step) -> list:
 
 
 def _graphical(doc: _Doc, s: _Subject, entry: dict, c):
-    from .. import draw
-    from ..draw.steps import KIND_TITLE, draw_step_geometry
+    from graphkin import draw
+    from graphkin.draw.steps import KIND_TITLE, draw_step_geometry
 
     g = entry.get("graphical", {})
     doc.heading(2, "The graphical route")
@@ -835,7 +835,7 @@ def _both_routes(doc: _Doc, s: _Subject, entry: dict):
 
 
 def _blank(doc: _Doc, s: _Subject, c, drawn: bool):
-    from .. import draw
+    from graphkin import draw
 
     if c is None or not c.valid:
         return
@@ -855,9 +855,9 @@ def _blank(doc: _Doc, s: _Subject, c, drawn: bool):
 
 # -- a whole cycle ------------------------------------------------------------------------------------
 def _cycle(doc: _Doc, s: _Subject):
-    from .. import draw
-    from ..analysis import sweep
-    from ..cli import cycle_data
+    from graphkin import draw
+    from graphkin.analysis import sweep
+    from graphkin.cli import cycle_data
 
     cycle = sweep(s.problem, s.cycle_positions)
     Cs = s.Cs if cycle.closed and not s.static else None  # a static analysis has no speed to keep steady

@@ -48,7 +48,7 @@ class Picture:
             fig = getattr(fig, "figure", fig) if not hasattr(fig, "savefig") else fig
             if hasattr(fig, "get_figure"):
                 fig = fig.get_figure(root=True)
-            from ..draw import measuring_renderer as renderer_of
+            from graphkin.draw import measuring_renderer as renderer_of
 
             # The drawing's own extent, measured with the drawing layer's shared renderer: bbox_inches="tight"
             # would find the same box by drawing the whole figure once more, a third of the cost of a figure.
@@ -58,7 +58,7 @@ class Picture:
             # handout gives the same bytes, so a teacher can diff this year's HTML against last year's.
             from matplotlib import rc_context
 
-            from ..draw.text import svg_text_laid_out_once
+            from graphkin.draw.text import svg_text_laid_out_once
 
             with rc_context({"svg.hashsalt": f"graphkin-{self.key}"}), svg_text_laid_out_once():
                 fig.savefig(out, format="svg", bbox_inches=box, facecolor="white", metadata={"Date": None})

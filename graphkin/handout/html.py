@@ -13,9 +13,9 @@ from __future__ import annotations
 import html as _html
 import re
 
-from ..errors import GraphkinError
-from . import maths as M
-from .figures import inline_svg
+from graphkin.errors import GraphkinError
+from graphkin.handout import maths as M
+from graphkin.handout.figures import inline_svg
 
 CSS = """
 body { font-family: "Libertinus Serif", "Linux Libertine", Georgia, serif; max-width: 52rem; margin: 2rem auto;

@@ -28,12 +28,12 @@ import math
 
 import numpy as np
 
-from ..geometry import zcross as cross
-from ..geometry import zdot as dot
-from ..kinematics import dyads as solver
-from ..kinematics.structure import DriverGroup, Dyad, GearGroup
-from ..model import Prismatic, Revolute
-from . import maths as M
+from graphkin.geometry import zcross as cross
+from graphkin.geometry import zdot as dot
+from graphkin.kinematics import dyads as solver
+from graphkin.kinematics.structure import DriverGroup, Dyad, GearGroup
+from graphkin.model import Prismatic, Revolute
+from graphkin.handout import maths as M
 
 SIGMA = {
     "RRR": "σ = +1 puts {J2} to the left of the line {J1} → {J3}",

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import re
 
-from . import maths as M
+from graphkin.handout import maths as M
 
 _ESCAPE = re.compile(r"([\\`*_\[\]<>$|])")
 

@@ -87,7 +87,7 @@ def fmt_fixed(x: float, places: int = 2) -> str:
 
 def angle_of(v) -> float:
     """Direction of a plane vector [deg] in (−180°, 180°], as :func:`graphkin.report.polar`."""
-    from ..report import polar as _polar
+    from graphkin.report import polar as _polar
 
     return _polar(v)[1]
 

@@ -13,8 +13,8 @@ A typst error, or a font typst does not have, is a
 
 from __future__ import annotations
 
-from ..errors import GraphkinError
-from . import maths as M
+from graphkin.errors import GraphkinError
+from graphkin.handout import maths as M
 
 FONT = "Libertinus Serif"
 MATH_FONT = "New Computer Modern Math"

@@ -24,8 +24,8 @@ from __future__ import annotations
 import weakref
 from functools import partial
 
-from ..model import Mechanism
-from .structure import decompose
+from graphkin.model import Mechanism
+from graphkin.kinematics.structure import decompose
 
 
 def _parts(mech: Mechanism) -> list:

@@ -20,7 +20,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..geometry import as_xy, as_z
+from graphkin.geometry import as_xy, as_z
 
 __all__ = ["PointMotion", "link_points", "point_motion", "rigid_body"]
 

@@ -13,10 +13,10 @@ from typing import Mapping
 
 import numpy as np
 
-from ..geometry import as_xy, as_z
-from ..geometry import zcross as cross
-from ..geometry import zdot as dot
-from ..model import Mechanism, Prismatic
+from graphkin.geometry import as_xy, as_z
+from graphkin.geometry import zcross as cross
+from graphkin.geometry import zdot as dot
+from graphkin.model import Mechanism, Prismatic
 
 STILL = 1e-9
 """Relative sliding speed below which a sliding pair counts as still (no Coulomb friction)."""
@@ -138,7 +138,7 @@ class Kinematics:
 
     def anchor(self, link: int) -> str | None:
         """The pin link ``link`` is turned about when its angle is given: its revolute joint to a link located before it."""
-        from ..model import Revolute
+        from graphkin.model import Revolute
 
         located = {self.mechanism.frame}
         for g in self.groups:

@@ -14,8 +14,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from ..errors import ModelError
-from ..model import GearMesh, Joint, Mechanism, Prismatic, Revolute
+from graphkin.errors import ModelError
+from graphkin.model import GearMesh, Joint, Mechanism, Prismatic, Revolute
 
 
 def kind(joint: Joint) -> str:

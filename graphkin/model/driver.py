@@ -6,7 +6,7 @@ import numbers
 from dataclasses import dataclass
 from typing import Literal
 
-from ..errors import ModelError
+from graphkin.errors import ModelError
 
 
 @dataclass(frozen=True)

@@ -13,9 +13,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..errors import ModelError
-from .link import _finite
-from .ranges import check
+from graphkin.errors import ModelError
+from graphkin.model.link import _finite
+from graphkin.model.ranges import check
 
 
 def _pair(links, what, at=("links",)):

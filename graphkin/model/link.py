@@ -9,8 +9,8 @@ from typing import Mapping
 
 import numpy as np
 
-from ..errors import ModelError
-from .ranges import check
+from graphkin.errors import ModelError
+from graphkin.model.ranges import check
 
 FRAME = 1
 """Link number of the frame (ground) unless a mechanism says otherwise: many books number it 1, others 0

@@ -15,9 +15,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..errors import ModelError
-from .link import _finite, _point
-from .ranges import check, check_array
+from graphkin.errors import ModelError
+from graphkin.model.link import _finite, _point
+from graphkin.model.ranges import check, check_array
 
 
 EDGE = 1e-12

@@ -8,12 +8,12 @@ from dataclasses import dataclass, field, replace
 from types import MappingProxyType
 from typing import Mapping
 
-from ..errors import ModelError
-from .driver import Driver
-from .joints import GearMesh, Joint, Prismatic, Revolute
-from .link import FRAME, FRAME_NUMBERS, Link
-from .loads import Load, PointForce, Torque, standard_gravity
-from .ranges import complaint
+from graphkin.errors import ModelError
+from graphkin.model.driver import Driver
+from graphkin.model.joints import GearMesh, Joint, Prismatic, Revolute
+from graphkin.model.link import FRAME, FRAME_NUMBERS, Link
+from graphkin.model.loads import Load, PointForce, Torque, standard_gravity
+from graphkin.model.ranges import complaint
 
 
 @dataclass(frozen=True)

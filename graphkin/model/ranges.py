@@ -20,7 +20,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..errors import ModelError
+from graphkin.errors import ModelError
 
 TURNS = 1000
 """Largest input angle or direction, in turns either way (a sweep over a few turns fits easily)."""

@@ -28,15 +28,15 @@ from dataclasses import replace
 
 import numpy as np
 
-from ..errors import GraphkinError
-from ..kinematics import Dyad, DriverGroup, GearGroup, Kinematics
-from ..kinematics.dyads import CHUNK, _run, deferred_kinematics, prepare, solve_columns
-from ..kinematics.plan import Plan, plan_of
-from ..geometry import zcross as cross
-from ..geometry import zdot as dot
-from ..model import Mechanism, Prismatic, Revolute
-from .loads import _external_fast, _inertia_fast, _known, load_specs
-from .result import ForceAnalysis
+from graphkin.errors import GraphkinError
+from graphkin.kinematics import Dyad, DriverGroup, GearGroup, Kinematics
+from graphkin.kinematics.dyads import CHUNK, _run, deferred_kinematics, prepare, solve_columns
+from graphkin.kinematics.plan import Plan, plan_of
+from graphkin.geometry import zcross as cross
+from graphkin.geometry import zdot as dot
+from graphkin.model import Mechanism, Prismatic, Revolute
+from graphkin.solve.loads import _external_fast, _inertia_fast, _known, load_specs
+from graphkin.solve.result import ForceAnalysis
 
 
 class _Reactions:

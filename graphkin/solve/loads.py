@@ -6,10 +6,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..kinematics import Kinematics
-from ..geometry import as_xy
-from ..geometry import zcross as cross
-from ..model import PointForce, Torque
+from graphkin.kinematics import Kinematics
+from graphkin.geometry import as_xy
+from graphkin.geometry import zcross as cross
+from graphkin.model import PointForce, Torque
 
 
 @dataclass(frozen=True)

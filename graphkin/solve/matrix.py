@@ -20,12 +20,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..geometry import cross, perp
-from ..geometry import as_xy
-from ..model import GearMesh, Prismatic, Revolute
-from .kinetostatics import _w
-from .loads import known_loads
-from .result import ForceAnalysis
+from graphkin.geometry import cross, perp
+from graphkin.geometry import as_xy
+from graphkin.model import GearMesh, Prismatic, Revolute
+from graphkin.solve.kinetostatics import _w
+from graphkin.solve.loads import known_loads
+from graphkin.solve.result import ForceAnalysis
 
 
 @dataclass(frozen=True)

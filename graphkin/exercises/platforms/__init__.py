@@ -33,8 +33,8 @@ import re
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from ...errors import GraphkinError
-from ...files import check_destination, write_bytes
+from graphkin.errors import GraphkinError
+from graphkin.files import check_destination, write_bytes
 
 PLATFORMS = ("otter", "nbgrader", "prairielearn", "gradescope")
 """The platforms :func:`export` writes for."""
@@ -85,7 +85,7 @@ class Bundle:
 
     def sample_key(self) -> dict:
         """The sample student's key (the answers an export's own solution types)."""
-        from . import runtime
+        from graphkin.exercises.platforms import runtime
 
         return runtime.variant(self.exercise, self.sample, self.secret).key()
 
@@ -122,7 +122,7 @@ def vendor_files() -> dict[str, bytes]:
 
 def _exercise_files(ex) -> dict[str, str]:
     """The exercise file (and a non-catalog base problem) as the export carries them."""
-    from ... import catalog
+    from graphkin import catalog
 
     files = {f"{ex.id}.toml": ex.text}
     if ex.problem not in catalog.names():
@@ -147,9 +147,9 @@ def bundle(exercise, *, secret: str = "", students=None, progress=None) -> Bundl
     progress : callable, optional
         Called with the number of students done, as a batch goes.
     """
-    from .. import load
-    from ..batch import run_roster
-    from ..variant import check_student
+    from graphkin.exercises import load
+    from graphkin.exercises.batch import run_roster
+    from graphkin.exercises.variant import check_student
 
     ex = load(exercise)
     sheets = {}

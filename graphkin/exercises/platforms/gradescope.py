@@ -37,7 +37,7 @@ import traceback
 import zipfile
 from pathlib import Path
 
-from ...errors import GraphkinError
+from graphkin.errors import GraphkinError
 
 ROOT_ENV = "GRAPHKIN_AUTOGRADER_ROOT"
 """Environment variable naming the autograder's root folder (Gradescope's is ``/autograder``)."""
@@ -210,7 +210,7 @@ def build(bundle) -> dict:
 
 def zip_members(bundle) -> dict[str, bytes]:
     """The files of the autograder zip, by their path inside it."""
-    from . import requirements, vendor_files
+    from graphkin.exercises.platforms import requirements, vendor_files
 
     members = {
         "setup.sh": SETUP_SH,
@@ -229,7 +229,7 @@ def zip_members(bundle) -> dict[str, bytes]:
 
 def config(bundle) -> dict:
     """What ``grade.py`` reads: the exercise, the course secret and the roster (``None`` without one)."""
-    from ... import __version__
+    from graphkin import __version__
 
     return {
         "exercise": bundle.name,
@@ -323,7 +323,7 @@ python3 -m json.tool --no-ensure-ascii try/results/results.json
 
 def readme(bundle) -> str:
     """The teacher's README: the files, the steps on Gradescope, what the machines need."""
-    from . import requirements
+    from graphkin.exercises.platforms import requirements
 
     name = bundle.name
     total = sum(q.points for q in bundle.exercise.questions)
@@ -447,7 +447,7 @@ def _log_version() -> None:
 
 def grade_submission(root: Path, exercise_file: Path, cfg: dict) -> dict:
     """The results of one submission (a ``SubmissionError`` becomes 0 points and its sentence)."""
-    from . import runtime
+    from graphkin.exercises.platforms import runtime
 
     ex = runtime.exercise(exercise_file)
     try:
@@ -565,7 +565,7 @@ def _flatten(table: dict, prefix: str = "") -> dict:
 
 def _user_ids(user: dict) -> list[str]:
     """A submitter's usable ids, in order of preference: the roster's student id (``sid``), then the email."""
-    from ..variant import check_student
+    from graphkin.exercises.variant import check_student
 
     ids = []
     for key in ("sid", "email"):
@@ -596,7 +596,7 @@ def whom_to_grade(users: list[dict], claimed, roster) -> tuple[str, list[str]]:
     roster); else, with a roster, the first of ``sid``, ``email`` on it;
     without one, ``sid``, else ``email``.
     """
-    from ..variant import check_student
+    from graphkin.exercises.variant import check_student
 
     try:
         claim = check_student(claimed) if claimed is not None else None
@@ -638,7 +638,7 @@ def _test_name(question, limit: int = 100) -> str:
 
 def results_from_report(ex, report: dict, notes: list[str]) -> dict:
     """Gradescope's ``results.json`` for a graphkin grading report: one test per question."""
-    from . import runtime
+    from graphkin.exercises.platforms import runtime
 
     asked = {q.id: q for q in ex.questions}
     tests = [{
@@ -659,7 +659,7 @@ def results_from_report(ex, report: dict, notes: list[str]) -> dict:
 
 def not_graded(exercise_file, reason: str) -> dict:
     """0 points, the reason as the submission's output, and every question listed at 0."""
-    from . import runtime
+    from graphkin.exercises.platforms import runtime
 
     ex = runtime.exercise(exercise_file)
     tests = [{"name": _test_name(q), "score": 0.0, "max_score": q.points, "status": "failed",
@@ -676,7 +676,7 @@ def _results(score: float, output: str, tests: list[dict]) -> dict:
 
 def write_results(path: Path, results: dict) -> None:
     """Write ``results.json`` atomically: Gradescope never reads half a file."""
-    from ...files import write_text
+    from graphkin.files import write_text
 
     write_text(path, json.dumps(results, indent=2, ensure_ascii=False) + "\n", "results")
 

@@ -34,7 +34,7 @@ import keyword
 import os
 from pathlib import Path
 
-from ...errors import GraphkinError
+from graphkin.errors import GraphkinError
 
 SECRET_VARIABLE = "GRAPHKIN_SECRET"
 """The environment variable the hidden tests read the course secret from while ``nbgrader autograde`` runs."""
@@ -95,7 +95,7 @@ def course_secret(exercise_file, student: str, sheets) -> str:
         If ``student`` is not on the roster (the sentence says so), or the
         secret does not give the student's sheet (outside autograde).
     """
-    from . import runtime
+    from graphkin.exercises.platforms import runtime
 
     secret = os.environ.get(SECRET_VARIABLE, "")
     shown = runtime.sheet(exercise_file, student, sheets)["data"]
@@ -120,10 +120,10 @@ def check_answer(exercise_file, qid: str, answer) -> None:
     unreadable, which earn nothing whatever the data; anything else passes,
     and the hidden test grades it. The answer is read as data, never run.
     """
-    from ..answers import Unreadable, read_answer
-    from ..exercise import dimension_of
-    from ..grading import MESSAGES
-    from . import runtime
+    from graphkin.exercises.answers import Unreadable, read_answer
+    from graphkin.exercises.exercise import dimension_of
+    from graphkin.exercises.grading import MESSAGES
+    from graphkin.exercises.platforms import runtime
 
     q = runtime.exercise(exercise_file).question(qid)
     value = runtime.answer_value(answer)
@@ -274,8 +274,8 @@ def _question_text(bundle, q, variable: str) -> str:
 
 def _example_answer(bundle, q) -> str:
     """How to write an answer to ``q``: the grader's own example, a made-up number in the question's unit."""
-    from ..grading import _example
-    from . import runtime
+    from graphkin.exercises.grading import _example
+    from graphkin.exercises.platforms import runtime
 
     return _example(runtime.variant(bundle.exercise, bundle.sample, bundle.secret).expected(q))
 
@@ -341,7 +341,7 @@ c.CourseDirectory.course_id = "mechanics"
 
 def _readme(bundle) -> str:
     """The export's README: what each file is, then nbgrader's commands, step by step."""
-    from . import requirements
+    from graphkin.exercises.platforms import requirements
 
     name = bundle.name
     files = [f"- `source/{name}/{name}.ipynb`: the source notebook (the sample answers of student "

@@ -34,7 +34,7 @@ import math
 import re
 import uuid
 
-from ...errors import GraphkinError
+from graphkin.errors import GraphkinError
 
 TOPIC = "Kinetostatics"
 """The PrairieLearn topic of every exported question (listed in the course's ``infoCourse.json``)."""
@@ -100,7 +100,7 @@ def generate(data: dict, exercise_file: str, secret: str = "") -> None:
     key); ``correct_answers`` holds the key's answer texts, which
     PrairieLearn's answer panel shows. Neither holds the secret.
     """
-    from . import runtime
+    from graphkin.exercises.platforms import runtime
 
     student = variant_student(data)
     key = runtime.variant(exercise_file, student, secret).key()
@@ -127,7 +127,7 @@ def parse(data: dict, exercise_file: str, secret: str = "") -> None:
     answers are left to ``pl-string-input`` (blank is its own format error
     unless ``allow-blank`` is set; then graphkin grades it as missing).
     """
-    from . import runtime
+    from graphkin.exercises.platforms import runtime
 
     student = _student_of(data)
     ex = runtime.exercise(exercise_file)
@@ -149,7 +149,7 @@ def grade(data: dict, exercise_file: str, secret: str = "") -> dict:
     under the answer); ``data["score"]`` is the points earned over the
     points, from 0 to 1. Returns graphkin's report.
     """
-    from . import runtime
+    from graphkin.exercises.platforms import runtime
 
     ex = runtime.exercise(exercise_file)
     names = answer_names([q.id for q in ex.questions])
@@ -183,8 +183,8 @@ def figure(data: dict, exercise_file: str, secret: str = "") -> bytes:
     """PNG of what the student is given to scale (``graphkin exercise make --figure``), for ``file(data)``."""
     import io
 
-    from ... import draw
-    from . import runtime
+    from graphkin import draw
+    from graphkin.exercises.platforms import runtime
 
     c = runtime.variant(exercise_file, _student_of(data), secret).construction
     if not c.valid:
@@ -213,7 +213,7 @@ def _pretty_unit(unit: str) -> str:
 
 def build(bundle) -> dict:
     """The export's files (relative path → text or bytes): one question folder, graphkin, a check, a README."""
-    from . import vendor_files
+    from graphkin.exercises.platforms import vendor_files
 
     folder = f"questions/{bundle.name}"
     tree: dict = {
@@ -476,7 +476,7 @@ def check_question_py(bundle) -> str:
 
 def readme(bundle) -> str:
     """README.md: what each file is, where it goes in the course repository, what the server needs."""
-    from . import requirements
+    from graphkin.exercises.platforms import requirements
 
     name = bundle.name
     reqs = "\n".join(f"       {r}" for r in requirements())

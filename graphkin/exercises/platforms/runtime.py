@@ -13,12 +13,12 @@ import json
 from functools import lru_cache
 from pathlib import Path
 
-from ...errors import GraphkinError
+from graphkin.errors import GraphkinError
 
 
 @lru_cache(maxsize=16)
 def _load(path: str):
-    from .. import load_exercise
+    from graphkin.exercises import load_exercise
 
     p = Path(path)
     return load_exercise(p, name=p.stem)
@@ -26,7 +26,7 @@ def _load(path: str):
 
 def exercise(path_or_exercise):
     """The exercise of an export (read once per process), from its file or as given."""
-    from ..exercise import Exercise
+    from graphkin.exercises.exercise import Exercise
 
     if isinstance(path_or_exercise, Exercise):
         return path_or_exercise
@@ -35,7 +35,7 @@ def exercise(path_or_exercise):
 
 def variant(path_or_exercise, student: str, secret: str = ""):
     """The student's variant (:class:`graphkin.exercises.Variant`)."""
-    from ..variant import make_variant
+    from graphkin.exercises.variant import make_variant
 
     return make_variant(exercise(path_or_exercise), student, secret)
 
@@ -57,7 +57,7 @@ def sheet(path_or_exercise, student: str, sheets=None, secret: str = "") -> dict
     it never needs the course secret; an id that is not on the roster is an
     error that says so.
     """
-    from ..variant import check_student
+    from graphkin.exercises.variant import check_student
 
     student = check_student(student)
     if sheets is None:
@@ -72,14 +72,14 @@ def sheet(path_or_exercise, student: str, sheets=None, secret: str = "") -> dict
 
 def sheet_text(path_or_exercise, student: str, sheets=None, secret: str = "") -> str:
     """The student's sheet as text (data and questions), for a notebook cell to print."""
-    from ...cli_exercises import format_sheet
+    from graphkin.cli_exercises import format_sheet
 
     return format_sheet(sheet(path_or_exercise, student, sheets, secret))
 
 
 def grade(path_or_exercise, student: str, answers: dict, secret: str = "", *, reveal=None) -> dict:
     """Grade a student's answers (question id → value): the report of ``graphkin exercise grade --json``."""
-    from ..grading import grade_variant
+    from graphkin.exercises.grading import grade_variant
 
     answers = {k: answer_value(v) for k, v in dict(answers).items()}
     return grade_variant(variant(path_or_exercise, student, secret), answers, reveal=reveal)
@@ -87,7 +87,7 @@ def grade(path_or_exercise, student: str, answers: dict, secret: str = "", *, re
 
 def grade_question(path_or_exercise, student: str, qid: str, answer, secret: str = "", *, reveal=None) -> dict:
     """Grade one answer: ``{"id", "verdict", "slip", "score", "max", "feedback", "answer"[, "expected"]}``."""
-    from ..grading import grade_question as _grade_one
+    from graphkin.exercises.grading import grade_question as _grade_one
 
     v = variant(path_or_exercise, student, secret)
     q = v.exercise.question(qid)
@@ -111,7 +111,7 @@ def identity_error(claimed, graded_as) -> str | None:
     the platform knows whom it grades. A submission that carries another
     student's id (a friend's variant, a friend's answers) scores nothing.
     """
-    from ..variant import check_student
+    from graphkin.exercises.variant import check_student
 
     try:
         claimed = check_student(claimed)
