@@ -127,7 +127,7 @@ t0 = time.perf_counter()
 from graphkin.cli import _single_threaded_blas, cycle_data, json_text
 _single_threaded_blas()
 from graphkin import catalog
-from graphkin.analysis import sweep
+from graphkin.cycle import sweep
 t1 = time.perf_counter()
 problem = catalog.load("strip_cutter")
 cycle = sweep(problem, 3600)

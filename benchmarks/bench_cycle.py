@@ -26,7 +26,7 @@ import sys
 import time
 
 from graphkin import catalog
-from graphkin.analysis import joint_force_index, sweep
+from graphkin.cycle import joint_force_index, sweep
 
 AIM = 0.050  # s
 

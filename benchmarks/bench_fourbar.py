@@ -16,7 +16,7 @@ cutter's masses on links 2, 3 and 4, is analysed at n = 360, 3600 and
      library is used); timed at n = 360 and 3600, *extrapolated* linearly
      from the n = 3600 per-position time at n = 100 000 (a run would take
      ~100 s)
-  4  ``graphkin.solve.matrix.solve_matrix(result)``: the general matrix
+  4  ``graphkin.analytical.matrix.solve_matrix(result)``: the general matrix
      [A]{x} = {b} assembled and solved with ``numpy.linalg.solve`` per
      position (kinematics and the ForceAnalysis it takes are precomputed, so
      this is assembly + LAPACK only)
@@ -75,8 +75,8 @@ import pylinkage_side as ps  # noqa: E402
 import graphkin  # noqa: E402
 from graphkin.kinematics import solve_kinematics  # noqa: E402
 from graphkin.model import Driver, Link, Mechanism, Revolute  # noqa: E402
-from graphkin.solve import solve  # noqa: E402
-from graphkin.solve.matrix import solve_matrix  # noqa: E402
+from graphkin.analytical import solve  # noqa: E402
+from graphkin.analytical.matrix import solve_matrix  # noqa: E402
 
 N_SIZES = ps.N_SIZES  # (360, 3600, 100_000)
 LOOP_SIZES = (360, 3600)  # the Python loop is extrapolated beyond these

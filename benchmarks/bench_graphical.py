@@ -26,7 +26,7 @@ matplotlib.use("Agg")
 from build import AT  # noqa: E402
 
 from graphkin import catalog, draw  # noqa: E402
-from graphkin.graphic import construct_forces  # noqa: E402
+from graphkin.graphical import construct_forces  # noqa: E402
 
 AIM_MS = 150.0
 

@@ -7,7 +7,7 @@ code -- the crank's sin and cos, the circle intersection for B, the
 velocity and acceleration equations by Cramer's rule, the inertia loads of
 links 2, 3 and 4, the dyad's three joint forces and the crank's pivot force
 and driving torque -- with the same formulas as graphkin's vectorised
-solver (``graphkin/kinematics/dyads.py`` and ``graphkin/solve/kinetostatics.py``),
+solver (``graphkin/kinematics/dyads.py`` and ``graphkin/analytical/kinetostatics.py``),
 nothing cached between calls but the compiled function. It is what numpy's
 temporaries and per-call overhead cost graphkin: the time a compiled loop
 needs for the same numbers.
@@ -135,7 +135,7 @@ def max_difference(n: int = 3600) -> float:
     """Largest difference from graphkin's solve over every output, relative to its largest value."""
     from bench_fourbar import MECH
 
-    from graphkin.solve import solve
+    from graphkin.analytical import solve
 
     theta = ps.crank_angles(n)
     got, r = floor(theta), solve(MECH, theta, ps.OMEGA2, 0.0)

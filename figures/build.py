@@ -15,7 +15,7 @@ from pathlib import Path
 import numpy as np
 
 from graphkin import catalog, draw
-from graphkin.graphic import construct_forces
+from graphkin.graphical import construct_forces
 
 HERE = Path(__file__).resolve().parent
 AT = {
@@ -49,7 +49,7 @@ CYCLES = {
 
 def build_cycle(name: str) -> list[Path]:
     """The cycle figure (torque with its pulses, polar joint forces, energy) and the flywheel's before/after."""
-    from graphkin.analysis import sweep
+    from graphkin.cycle import sweep
 
     n, Cs = CYCLES[name]
     cycle = sweep(catalog.load(name), n)

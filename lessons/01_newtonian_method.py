@@ -41,7 +41,7 @@ import numpy as np
 import graphkin.catalog
 from graphkin.geometry import cross
 from graphkin.report import format_solution, polar
-from graphkin.solve.matrix import assemble
+from graphkin.analytical.matrix import assemble
 
 np.set_printoptions(precision=4, suppress=True)
 

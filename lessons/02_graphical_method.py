@@ -47,7 +47,7 @@ import numpy as np
 
 from graphkin import catalog, draw
 from graphkin.geometry import cross
-from graphkin.graphic import construct_forces
+from graphkin.graphical import construct_forces
 from graphkin.problem import parse_problem
 from graphkin.report import polar
 

@@ -52,13 +52,13 @@ import numpy as np
 from matplotlib.figure import Figure
 
 from graphkin import catalog, draw
-from graphkin.analysis import sweep
-from graphkin.analysis.cycle import SWITCH
+from graphkin.cycle import sweep
+from graphkin.cycle.sweep import SWITCH
 from graphkin.geometry import cross
-from graphkin.graphic import construct_forces
+from graphkin.graphical import construct_forces
 from graphkin.problem import parse_problem
 from graphkin.report import polar
-from graphkin.solve.matrix import assemble
+from graphkin.analytical.matrix import assemble
 
 np.set_printoptions(precision=4, suppress=True)
 
@@ -140,7 +140,7 @@ fig
 #
 # The sweep adds positions of its own. Wherever a load switches on or off — here at 124° and at
 # 156° — it solves at two more angles, $\varepsilon = 10^{-9}$ rad before and after
-# (`graphkin.analysis.cycle.SWITCH`), so that the curve is sampled on **both sides of each jump**.
+# (`graphkin.cycle.sweep.SWITCH`), so that the curve is sampled on **both sides of each jump**.
 # Sections 3 and 4 show why that matters.
 
 # %%

@@ -51,10 +51,10 @@ from IPython.display import Image
 from matplotlib.figure import Figure
 
 from graphkin import catalog, draw
-from graphkin.analysis import joint_force_index, size_flywheel, static_problem, sweep
+from graphkin.cycle import joint_force_index, size_flywheel, static_problem, sweep
 from graphkin.model import mass
 from graphkin.problem import parse_problem
-from graphkin.solve.matrix import assemble
+from graphkin.analytical.matrix import assemble
 
 np.set_printoptions(precision=4, suppress=True)
 TURN = 2 * math.pi

@@ -59,12 +59,12 @@ import numpy as np
 from matplotlib.figure import Figure
 
 from graphkin import catalog, draw
-from graphkin.analysis.cycle import sweep
+from graphkin.cycle.sweep import sweep
 from graphkin.geometry import cross
-from graphkin.graphic import construct_forces
+from graphkin.graphical import construct_forces
 from graphkin.problem import parse_problem
 from graphkin.report import polar
-from graphkin.solve.matrix import assemble
+from graphkin.analytical.matrix import assemble
 from graphkin.widgets import explore
 
 np.set_printoptions(precision=4, suppress=True)

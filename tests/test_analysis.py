@@ -12,9 +12,9 @@ import numpy as np
 import pytest
 
 from graphkin import catalog
-from graphkin.analysis import joint_force_index, size_flywheel, sweep
-from graphkin.analysis._turn import weights
-from graphkin.analysis.cycle import SWITCH
+from graphkin.cycle import joint_force_index, size_flywheel, sweep
+from graphkin.cycle._turn import weights
+from graphkin.cycle.sweep import SWITCH
 from graphkin.errors import GraphkinError
 from graphkin.model import Driver, Link, Mechanism, PointForce, Revolute
 from graphkin.problem import Problem

@@ -10,7 +10,7 @@ import pytest
 
 from graphkin import catalog
 from graphkin.cli import main
-from graphkin.solve.matrix import assemble, solve_matrix
+from graphkin.analytical.matrix import assemble, solve_matrix
 
 
 @pytest.mark.parametrize("name", catalog.names())
@@ -75,7 +75,7 @@ def test_cutting_force_switches_on_and_off():
     problem = catalog.load("strip_cutter")
     on = problem.solve(at=np.radians([130.0]))
     off = problem.solve(at=np.radians([160.0]))
-    from graphkin.solve import external_loads
+    from graphkin.analytical import external_loads
 
     assert external_loads(on.kinematics, 3)[0][0] == pytest.approx([0.0, 2000.0], abs=1e-9)
     assert external_loads(off.kinematics, 3)[0][0] == pytest.approx([0.0, 0.0])
@@ -117,8 +117,8 @@ def test_console_script_runs_the_default_example():
 
 def test_import_loads_no_heavy_layers():
     code = (
-        "import sys, graphkin, graphkin.model, graphkin.kinematics, graphkin.solve, graphkin.problem, graphkin.catalog,"
-        " graphkin.graphic, graphkin.analysis, graphkin.report;"
+        "import sys, graphkin, graphkin.model, graphkin.kinematics, graphkin.analytical, graphkin.problem, graphkin.catalog,"
+        " graphkin.graphical, graphkin.cycle, graphkin.report;"
         "print([m for m in ('matplotlib', 'ipywidgets', 'pint', 'IPython') if m in sys.modules])"
     )
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)

@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from graphkin import catalog
-from graphkin.analysis import joint_force_index, sweep
+from graphkin.cycle import joint_force_index, sweep
 from graphkin.cli import DISK_THICKNESS, STEEL, _Progress, main
 
 

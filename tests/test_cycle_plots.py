@@ -7,7 +7,7 @@ import pytest
 from matplotlib.figure import Figure
 
 from graphkin import catalog, draw
-from graphkin.analysis import joint_force_index, sweep
+from graphkin.cycle import joint_force_index, sweep
 from graphkin.draw.cycle import crossing_energy
 from graphkin.errors import GraphkinError
 

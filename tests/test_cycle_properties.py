@@ -20,7 +20,7 @@ from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
 from graphkin import catalog
-from graphkin.analysis.cycle import SWITCH, sweep, switching_samples
+from graphkin.cycle.sweep import SWITCH, sweep, switching_samples
 from graphkin.model import Active, Prismatic
 
 TURN = 2 * math.pi

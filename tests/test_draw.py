@@ -18,8 +18,8 @@ from matplotlib.figure import Figure  # noqa: E402
 from matplotlib.testing.compare import compare_images  # noqa: E402
 
 from graphkin import catalog, draw  # noqa: E402
-from graphkin.graphic import construct_forces  # noqa: E402
-from graphkin.graphic.construction import Construction  # noqa: E402
+from graphkin.graphical import construct_forces  # noqa: E402
+from graphkin.graphical.construction import Construction  # noqa: E402
 from graphkin.model import FRAME  # noqa: E402
 
 NAMES = ["double_slider", "strip_cutter", "slider_crank_friction", "gearset", "single_link"]
@@ -110,9 +110,9 @@ def expected_forces(c, link):
 
 def test_graphkin_and_the_construction_do_not_import_matplotlib():
     code = (
-        "import sys, graphkin, graphkin.graphic\n"
+        "import sys, graphkin, graphkin.graphical\n"
         "from graphkin import catalog\n"
-        "from graphkin.graphic import construct_forces\n"
+        "from graphkin.graphical import construct_forces\n"
         "p = catalog.load('double_slider'); construct_forces(p.kinematics(), 0); p.solve()\n"
         "bad = sorted(m for m in sys.modules if m == 'matplotlib' or m.startswith('matplotlib.'))\n"
         "assert not bad, bad\n"

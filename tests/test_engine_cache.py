@@ -4,7 +4,7 @@ A mechanism's decomposition and constants are worked out once and reused
 (:mod:`graphkin.kinematics.plan`): a cached plan must never answer for
 another mechanism, or for one that has changed. Large batches are solved a
 chunk at a time, which must not change a digit. And the result of
-:func:`graphkin.solve.solve` keeps the forces, not the solver's
+:func:`graphkin.analytical.solve` keeps the forces, not the solver's
 intermediates: its kinematics are worked out again, identically, when read.
 Timings are in ``benchmarks/``.
 """
@@ -20,13 +20,13 @@ import numpy as np
 import pytest
 
 import graphkin.kinematics.dyads as dyads
-import graphkin.solve.kinetostatics as kinetostatics
+import graphkin.analytical.kinetostatics as kinetostatics
 from graphkin.kinematics import solve_kinematics
 from graphkin.kinematics.plan import cached_plans, plan_of
 from graphkin.model import Active, Driver, Link, Mechanism, PointForce, Revolute, Torque
 from graphkin.catalog import load as load_problem
 from graphkin.catalog import names as catalog_names
-from graphkin.solve import solve, solve_forces
+from graphkin.analytical import solve, solve_forces
 
 FIELDS = ("theta", "omega", "alpha", "e", "O", "v_O", "a_O")
 

@@ -257,7 +257,7 @@ def test_exercises_do_not_import_matplotlib_or_ipywidgets():
 
 
 def test_cycle_keys_match_the_analysis_layer():
-    from graphkin.analysis import sweep
+    from graphkin.cycle import sweep
 
     v = exercises.variant("flywheel", "s002")
     key = {q["id"]: q["answer"]["si"] for q in v.key()["questions"]}

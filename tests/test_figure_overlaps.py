@@ -36,7 +36,7 @@ from matplotlib.lines import Line2D  # noqa: E402
 from matplotlib.patches import FancyArrowPatch  # noqa: E402
 
 from graphkin import catalog, draw  # noqa: E402
-from graphkin.graphic import construct_forces  # noqa: E402
+from graphkin.graphical import construct_forces  # noqa: E402
 
 TOL = 1.5
 """How far [px, at the figures' 100 dpi] a text's box may run into another box or onto an outline.
@@ -307,7 +307,7 @@ def test_no_label_on_a_label_or_a_curve_in_the_cycle_figure(name):
     legends keep off each other, and the polar plot's radial tick labels keep off every curve."""
     from matplotlib.backends.backend_agg import FigureCanvasAgg
 
-    from graphkin.analysis import sweep
+    from graphkin.cycle import sweep
 
     fig = draw.draw_cycle(sweep(catalog.load(name), 120))
     FigureCanvasAgg(fig)

@@ -12,10 +12,10 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from graphkin.analysis import size_flywheel
+from graphkin.cycle import size_flywheel
 from graphkin.cli import main
 from graphkin.errors import GraphkinError
-from graphkin.flywheel_file import load_flywheel, parse_flywheel
+from graphkin.cycle.flywheel_file import load_flywheel, parse_flywheel
 
 TURN = 2 * math.pi
 

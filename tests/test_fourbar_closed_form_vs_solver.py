@@ -13,8 +13,8 @@ import numpy as np
 from hypothesis import given, settings
 
 from graphkin.model import Driver, Link, Mechanism, PointForce, Revolute
-from graphkin.solve import solve
-from graphkin.solve.matrix import solve_matrix
+from graphkin.analytical import solve
+from graphkin.analytical.matrix import solve_matrix
 from tests.reference.soylemez_fourbar import soylemez_fourbar
 from tests.test_reference_soylemez_fourbar import crank_rockers
 

@@ -13,7 +13,7 @@ import pytest
 
 from graphkin import catalog
 from graphkin.errors import GraphkinError
-from graphkin.graphic import construct_forces
+from graphkin.graphical import construct_forces
 from graphkin.model import Prismatic
 
 PROBLEM = catalog.load("slider_crank_friction")

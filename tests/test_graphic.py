@@ -7,11 +7,11 @@ import pytest
 
 from graphkin import catalog
 from graphkin.geometry import cross
-from graphkin.graphic import construct_forces
-from graphkin.graphic.construction import Arrow, Step, nice_scale
+from graphkin.graphical import construct_forces
+from graphkin.graphical.construction import Arrow, Step, nice_scale
 from graphkin.model import Driver, Link, Mechanism, PointForce, Prismatic, Revolute
 from graphkin.report import polar
-from graphkin.solve import solve
+from graphkin.analytical import solve
 
 
 def agree(c, r, i=0, rel=1e-9):

@@ -33,34 +33,12 @@ PROBLEMS = ("double_slider", "strip_cutter")
 
 # -- the handouts and the JSON they must agree with ------------------------------------------------
 def _main(argv) -> tuple[int, str, str]:
-    """``graphkin ARGV`` in this process: exit code, stdout, stderr.
-
-    Through ``graphkin.cli.main`` once ``handout`` is wired into it; until
-    then through the same two steps main takes (parse, run, and a
-    GraphkinError printed as one line with exit code 2).
-    """
-    from graphkin import cli, cli_handout
-    from graphkin.errors import GraphkinError
+    """``graphkin ARGV`` in this process: exit code, stdout, stderr."""
+    from graphkin import cli
 
     out, err = io.StringIO(), io.StringIO()
     with redirect_stdout(out), redirect_stderr(err):
-        try:
-            parser = cli._parser()
-            wired = "handout" in parser._subparsers._group_actions[0].choices
-        except Exception:
-            wired = False
-        if wired or argv[0] != "handout":
-            code = cli.main(argv)
-        else:
-            import argparse
-
-            p = argparse.ArgumentParser(prog="graphkin")
-            cli_handout.add_parser(p.add_subparsers(dest="command", required=True))
-            try:
-                code = cli_handout.run(p.parse_args(argv))
-            except GraphkinError as exc:
-                print(f"graphkin: error: {exc}", file=sys.stderr)
-                code = 2
+        code = cli.main(argv)
     return code, out.getvalue(), err.getvalue()
 
 
@@ -143,7 +121,7 @@ def test_the_worked_position_of_a_cycle_is_where_the_driving_effort_peaks(built)
 
 def test_the_whole_cycle_carries_the_numbers_of_cycle_json(built):
     from graphkin import catalog
-    from graphkin.analysis import sweep
+    from graphkin.cycle import sweep
     from graphkin.cli import cycle_data
 
     data = cycle_data(sweep(catalog.load("strip_cutter")), handout.content.DEFAULT_CS)
@@ -712,7 +690,7 @@ def test_fmt_prints_as_the_books_do():
 
 
 def test_importing_the_handouts_loads_neither_matplotlib_nor_typst():
-    code = ("import sys, graphkin, graphkin.handout, graphkin.cli_handout; "
+    code = ("import sys, graphkin, graphkin.handout, graphkin.cli.handout; "
             "print(sorted(m for m in ('matplotlib', 'typst', 'pint', 'latex2mathml') if m in sys.modules))")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True, cwd=ROOT.parent)
     assert out.stdout.strip() == "[]"

@@ -41,7 +41,7 @@ from hypothesis import strategies as st
 
 from graphkin.kinematics import Dyad, decompose, solve_kinematics
 from graphkin.model import FRAME, Driver, GearMesh, Link, Mechanism, Prismatic, Revolute
-from graphkin.solve import solve_forces
+from graphkin.analytical import solve_forces
 
 from tests.strategies import crank_families, families, length_scale
 from tests.vectors import cross, dot, perp

@@ -295,7 +295,7 @@ def test_json_text_reads_back_as_the_data(data):
 @pytest.fixture(scope="module")
 def strip_cutter_cycle():
     from graphkin import catalog
-    from graphkin.analysis import sweep
+    from graphkin.cycle import sweep
 
     return sweep(catalog.load("strip_cutter"), 90)
 

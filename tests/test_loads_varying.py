@@ -226,7 +226,7 @@ def test_the_gas_force_follows_its_table_in_json_and_text(capsys):
 def test_a_resistance_opposes_the_slider_on_both_strokes():
     p = _problem(RESIST, sense="opposes motion")
     kin = p.kinematics(np.radians([90.0, 270.0]))
-    from graphkin.solve import applied
+    from graphkin.analytical import applied
 
     F = applied(kin, p.mechanism.loads[0])
     v = kin.velocity(4, "B")[:, 0]
@@ -317,7 +317,7 @@ def test_graphical_equals_analytical_with_varying_loads(family, data):
 @pytest.mark.parametrize("sense, strokes", [("opposes motion", 2), ("working stroke", 1)])
 def test_a_resistance_does_its_work_over_the_cycle(sense, strokes):
     """500 N against the slider over 2r = 100 mm per stroke: W = 500 N × 0.1 m × strokes, T_avg = W / 2π."""
-    from graphkin.analysis import sweep
+    from graphkin.cycle import sweep
 
     p = _problem(RESIST, sense=sense)
     cycle = sweep(p, 360)

@@ -1,4 +1,4 @@
-"""Numbers in text for people (graphkin.numbers): no exponent where none is needed, rounding residues as 0."""
+"""Numbers in text for people (graphkin.notation): no exponent where none is needed, rounding residues as 0."""
 
 from __future__ import annotations
 
@@ -10,7 +10,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from graphkin import catalog, report
-from graphkin.numbers import num
+from graphkin.notation import num
 
 
 @pytest.mark.parametrize("x, text", [

@@ -40,8 +40,8 @@ from hypothesis import strategies as st
 from graphkin.errors import GraphkinError
 from graphkin.kinematics import solve_kinematics
 from graphkin.model import FRAME, GearMesh, Mechanism, PointForce, Prismatic, Revolute
-from graphkin.solve import solve_forces
-from graphkin.solve.matrix import assemble, solve_matrix
+from graphkin.analytical import solve_forces
+from graphkin.analytical.matrix import assemble, solve_matrix
 
 from tests.strategies import families, friction_families, length_scale
 from tests.vectors import cross, dot, perp
@@ -126,7 +126,7 @@ def load_value(kin, load):
     """What an external load applies at each position: force (n, 2) [N] or torque (n,) [N·m].
 
     From the load's own definition (window, table, sense), independently of
-    :func:`graphkin.solve.loads.applied`: a table along the unit vector of
+    :func:`graphkin.analytical.loads.applied`: a table along the unit vector of
     ``force``; "opposes motion" reverses the load where it would help the
     motion (F·v > 0, a torque's T ω > 0) and drops it at a standstill;
     "working stroke" keeps it only where it resists (F·v < 0).

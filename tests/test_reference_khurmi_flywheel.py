@@ -28,7 +28,7 @@ import numpy as np
 import pytest
 
 from graphkin.cli import main
-from graphkin.flywheel_file import load_flywheel, parse_flywheel
+from graphkin.cycle.flywheel_file import load_flywheel, parse_flywheel
 
 FILE = Path(__file__).resolve().parents[1] / "graphkin" / "catalog" / "flywheels" / "three_cylinder.toml"
 

@@ -128,7 +128,7 @@ def test_the_block_carries_the_levers_force_at_B(solved):
 
 def test_the_ram_load_opposes_the_ram(solved):
     """The program's Fext = −sign(v_E) 500 N: the ram moves to −x here, so the load points to +x."""
-    from graphkin.solve import applied
+    from graphkin.analytical import applied
 
     problem, result, _ = solved
     (load,) = problem.mechanism.loads
@@ -149,7 +149,7 @@ def test_the_sub_problems_add_up_to_the_printed_moment(solved):
 
 def _links(result, name):
     """The (i, j) of a force name such as ``G32``."""
-    from graphkin.solve.result import parse_force_name
+    from graphkin.analytical.result import parse_force_name
 
     return parse_force_name(result.mechanism, name)
 
@@ -159,7 +159,7 @@ def test_a_polygon_of_rounding_residues_is_drawn_as_zero():
     through D, so in sub-problem III the crank carries nothing, 1e-17 N of rounding. Its polygon shows "= 0",
     not that residue blown up to a scale bar of 1e−17 N."""
     from graphkin import draw
-    from graphkin.graphic import construct_forces
+    from graphkin.graphical import construct_forces
 
     problem = catalog.load("shaper_six_bar")
     c = construct_forces(problem.kinematics(at=[math.radians(90.0)]), 0)

@@ -20,12 +20,12 @@ from hypothesis import strategies as st
 
 from graphkin import catalog
 from graphkin.cli import main
-from graphkin.graphic import construct_forces
+from graphkin.graphical import construct_forces
 from graphkin.kinematics import solve_kinematics
 from graphkin.model import Driver, Mechanism, Prismatic
 from graphkin.problem import parse_problem
 from graphkin.report import constructions, format_solution, solution
-from graphkin.solve import solve_forces
+from graphkin.analytical import solve_forces
 from tests.strategies import families, length_scale
 from tests.test_properties import active, close, joint_point
 
@@ -210,7 +210,7 @@ def test_cycle_figure_follows_the_numbering():
     import matplotlib.pyplot as plt
 
     from graphkin import draw
-    from graphkin.analysis import sweep
+    from graphkin.cycle import sweep
 
     dynamic = STATIC_FOURBAR.replace('analysis = "static"', "").replace('theta = "60 deg"',
                                                                      'theta = "60 deg"\nomega = "300 rpm"')

@@ -59,7 +59,7 @@ WRITER = textwrap.dedent("""
     import sys, time
     from pathlib import Path
     from graphkin import catalog, draw
-    from graphkin.graphic import construct_forces
+    from graphkin.graphical import construct_forces
 
     folder, me = Path(sys.argv[1]), sys.argv[2]
     p = catalog.load("double_slider")

@@ -11,7 +11,7 @@ that need several axes return a Figure.
 Examples
 --------
 >>> from graphkin import catalog
->>> from graphkin.graphic import construct_forces
+>>> from graphkin.graphical import construct_forces
 >>> from graphkin import draw
 >>> p = catalog.load("double_slider")
 >>> c = construct_forces(p.kinematics(), 0)
@@ -43,7 +43,7 @@ _LATER = {
                      "draw_torque_curve"), "cycle"),
     **dict.fromkeys(("draw_step_grid", "draw_steps"), "steps"),
 }
-"""Drawings imported when first asked for: the cycle plots bring graphkin.analysis and matplotlib's tickers
+"""Drawings imported when first asked for: the cycle plots bring graphkin.cycle and matplotlib's tickers
 (~20 ms that ``graphkin solve --figure`` does not need)."""
 
 

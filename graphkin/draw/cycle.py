@@ -1,6 +1,6 @@
 """Plots of a whole cycle: driving torque, joint forces in polar form, shaking, flywheel energy, joint-force index.
 
-Each function plots a result of :mod:`graphkin.analysis` (compute there,
+Each function plots a result of :mod:`graphkin.cycle` (compute there,
 draw here) with matplotlib's object API only. Functions that draw on one
 axes take ``ax=None`` (a new headless figure when omitted) and return a
 :class:`Drawn`; its ``curves`` dict gives the main lines by role
@@ -13,7 +13,7 @@ slider driver (s); forces in N, torques in N·m, energy in J.
 Examples
 --------
 >>> from graphkin import catalog
->>> from graphkin.analysis import sweep
+>>> from graphkin.cycle import sweep
 >>> from graphkin.draw.cycle import draw_cycle
 >>> fig = draw_cycle(sweep(catalog.load("strip_cutter")), Cs=0.05)
 >>> len(fig.axes)
@@ -29,7 +29,7 @@ from matplotlib.artist import Artist
 from matplotlib.figure import Figure
 from matplotlib.ticker import Formatter, MaxNLocator
 
-from graphkin.analysis._turn import TURN
+from graphkin.cycle._turn import TURN
 from graphkin.errors import GraphkinError
 from graphkin.draw import style as _style
 from graphkin.draw.axes import Drawn, PanelAxes, line, markers, new_axes
@@ -239,7 +239,7 @@ def draw_torque_curve(cycle, *, ax=None, flywheel=None, **style) -> Drawn:
     Parameters
     ----------
     cycle : Cycle
-        From :func:`graphkin.analysis.sweep`.
+        From :func:`graphkin.cycle.sweep`.
     ax : Axes, optional
     flywheel : Flywheel, optional
         From ``cycle.flywheel(Cs)``: the pulses of T − T_avg between its
@@ -454,7 +454,7 @@ def draw_energy(flywheel, *, ax=None, **style) -> Drawn:
     Parameters
     ----------
     flywheel : Flywheel
-        From ``cycle.flywheel(Cs)`` or :func:`graphkin.analysis.size_flywheel`.
+        From ``cycle.flywheel(Cs)`` or :func:`graphkin.cycle.size_flywheel`.
     ax : Axes, optional
 
     Returns
@@ -500,7 +500,7 @@ def draw_joint_force_index(jfi, *, ax=None, **style) -> Drawn:
     Parameters
     ----------
     jfi : JointForceIndex
-        From :func:`graphkin.analysis.joint_force_index`.
+        From :func:`graphkin.cycle.joint_force_index`.
     ax : Axes, optional
 
     Returns

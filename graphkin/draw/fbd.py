@@ -119,7 +119,7 @@ def draw_free_body(construction, link: int, *, ax=None, force_scale=None, title=
 
     Parameters
     ----------
-    construction : graphkin.graphic.Construction
+    construction : graphkin.graphical.Construction
     link : int
         A moving link.
     ax : matplotlib.axes.Axes, optional

@@ -19,7 +19,7 @@ def draw_given(construction, links=None, *, figsize=None, **style) -> Figure:
 
     Parameters
     ----------
-    construction : graphkin.graphic.Construction
+    construction : graphkin.graphical.Construction
         E.g. ``graphkin.exercises.variant(name, student).construction``.
     links : sequence of int, optional
         Which free bodies (default: every moving link that carries an inertia

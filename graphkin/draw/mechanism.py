@@ -400,7 +400,7 @@ def draw_mechanism(construction, *, ax=None, labels=True, faint=False, emphasis=
 
     Parameters
     ----------
-    construction : graphkin.graphic.Construction
+    construction : graphkin.graphical.Construction
     ax : matplotlib.axes.Axes, optional
         Where to draw; a new headless figure when omitted.
     labels : bool

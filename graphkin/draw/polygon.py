@@ -44,7 +44,7 @@ def draw_force_polygon(step, *, scale: float, ax=None, origin=(0.0, 0.0), values
 
     Parameters
     ----------
-    step : graphkin.graphic.Step
+    step : graphkin.graphical.Step
         A step with a ``polygon``.
     scale : float
         Force scale [N per mm of drawing], e.g. ``construction.force_scale``.

@@ -109,8 +109,8 @@ def draw_solution(construction, analytical=None, *, figsize=None, **style) -> Fi
 
     Parameters
     ----------
-    construction : graphkin.graphic.Construction
-    analytical : graphkin.solve.ForceAnalysis, optional
+    construction : graphkin.graphical.Construction
+    analytical : graphkin.analytical.ForceAnalysis, optional
         The matrix solution of the same kinematics; compared at ``construction.index``.
     figsize : (float, float), optional
         Inches; by default 4 panels wide and as tall as the content needs.

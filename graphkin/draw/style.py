@@ -104,7 +104,7 @@ LINE_DASH = {
     "known direction": (0, (6, 3)),
     "found": (0, (8, 2.5, 1.5, 2.5)),
 }
-"""Dash pattern of a line of action by its role (see :class:`graphkin.graphic.Line`)."""
+"""Dash pattern of a line of action by its role (see :class:`graphkin.graphical.Line`)."""
 
 
 def line_color(role: str, s: Style | None = None) -> str:

@@ -14,7 +14,7 @@ from matplotlib.backends import backend_svg
 from matplotlib.font_manager import findfont
 from matplotlib.textpath import TextToPath
 
-from graphkin.numbers import num  # noqa: F401 - drawings write numbers as the text does
+from graphkin.notation import num  # noqa: F401 - drawings write numbers as the text does
 from graphkin.draw.axes import MM
 
 _NAME = re.compile(r"^([−-]?)([A-Za-z])([a-z]?\d+(?:,\d+)?[a-z]?)([′″‴⁗]|⁽[⁰¹²³⁴⁵⁶⁷⁸⁹]+⁾)?$")

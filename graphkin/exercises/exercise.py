@@ -425,7 +425,7 @@ def parse_exercise(text: str, *, file: str = "<exercise>", id: str = "exercise",
 
     problem_obj = build_problem(base, file=problem)
     mech = problem_obj.mechanism
-    from graphkin.solve.result import parse_force_name
+    from graphkin.analytical.result import parse_force_name
 
     names = set()
     for J in mech.joints:

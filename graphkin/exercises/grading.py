@@ -112,7 +112,7 @@ def _names(exp: Expected, variant):
     name = q.find if q.kind in ("force", "driver_torque", "driver_force", "inertia_force", "inertia_torque") else q.id
     other, i, j = name, "", ""
     if q.kind == "force":
-        from graphkin.solve.result import parse_force_name
+        from graphkin.analytical.result import parse_force_name
 
         i, j = parse_force_name(variant.problem.mechanism, q.find)
         other = f"{q.find[0]}{j}{i}"

@@ -171,7 +171,7 @@ def value_of(solved, q: Question):
     if kind == "average_torque":
         return cycle.average
     if kind == "peak_force":
-        from graphkin.solve.result import parse_force_name
+        from graphkin.analytical.result import parse_force_name
 
         i, j = parse_force_name(solved.problem.mechanism, q.find.split(".", 1)[1])
         p = cycle.peaks().forces[cycle.analysis.name_of(min(i, j), max(i, j))]
@@ -258,7 +258,7 @@ def _hint(solved, q: Question) -> str:
         if kind == "concurrency" and f"I{q.link}" in step.points:
             return _step_hint(n, step)
     if kind == "force":
-        from graphkin.solve.result import parse_force_name
+        from graphkin.analytical.result import parse_force_name
 
         i, j = parse_force_name(solved.problem.mechanism, q.find)
         return f"the equilibrium of link {j} (ΣF = 0, ΣM = 0: its rows of [A]{{x}} = {{b}})"

@@ -100,13 +100,13 @@ class Solved:
 
     @cached_property
     def construction(self):
-        from graphkin.graphic import construct_forces
+        from graphkin.graphical import construct_forces
 
         return construct_forces(self.result.kinematics, 0)
 
     @cached_property
     def cycle(self):
-        from graphkin.analysis import sweep
+        from graphkin.cycle import sweep
 
         return sweep(self.problem, self.exercise.positions)
 
@@ -146,7 +146,7 @@ class Variant:
 
     @property
     def construction(self):
-        """The graphical construction of the student's position (:class:`graphkin.graphic.Construction`)."""
+        """The graphical construction of the student's position (:class:`graphkin.graphical.Construction`)."""
         return self.solved.construction
 
     def altered(self, slip: str) -> Solved | None:

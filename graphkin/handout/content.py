@@ -140,7 +140,7 @@ class _Subject:
         """The graphical construction at position ``i`` (None where the linkage has no solution), built once."""
         key = f"construction-{i}"
         if key not in self.__dict__:
-            from graphkin.graphic import construct_forces
+            from graphkin.graphical import construct_forces
 
             self.__dict__[key] = construct_forces(self.result.kinematics, i) if self.result.valid[i] else None
         return self.__dict__[key]
@@ -636,7 +636,7 @@ def _loads(doc: _Doc, s: _Subject, entry: dict):
 
 def _clean(x, scale, rel=1e-12):
     """Values below ``rel`` × ``scale`` set to 0: rounding noise (1e-17 where a lever arm is zero) would hide
-    the matrix's structure, as in :meth:`graphkin.solve.matrix.System.format`."""
+    the matrix's structure, as in :meth:`graphkin.analytical.matrix.System.format`."""
     x = np.array(x, dtype=float)
     x[np.abs(x) < rel * max(scale, 1e-300)] = 0.0
     return x + 0.0
@@ -671,7 +671,7 @@ def _matrix(doc: _Doc, s: _Subject, entry: dict, i: int):
 
 def _system(s: _Subject):
     if not hasattr(s, "_system"):
-        from graphkin.solve.matrix import assemble
+        from graphkin.analytical.matrix import assemble
 
         s._system = assemble(s.result)
     return s._system
@@ -856,7 +856,7 @@ def _blank(doc: _Doc, s: _Subject, c, drawn: bool):
 # -- a whole cycle ------------------------------------------------------------------------------------
 def _cycle(doc: _Doc, s: _Subject):
     from graphkin import draw
-    from graphkin.analysis import sweep
+    from graphkin.cycle import sweep
     from graphkin.cli import cycle_data
 
     cycle = sweep(s.problem, s.cycle_positions)

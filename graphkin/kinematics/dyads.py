@@ -43,7 +43,7 @@ import numpy as np
 
 from graphkin.errors import ModelError
 from graphkin.model import Mechanism, Prismatic, Revolute
-from graphkin.model.ranges import MAX_POSITIONS, RANGES, as_array
+from graphkin.ranges import MAX_POSITIONS, RANGES, as_array
 from graphkin.geometry import zcross as cross
 from graphkin.geometry import zdot as dot
 from graphkin.kinematics.state import Kinematics
@@ -774,7 +774,7 @@ def deferred_kinematics(plan: Plan, mech: Mechanism, q, q_dot, q_ddot, rates, va
 
 # -- inputs ------------------------------------------------------------------------------------------------
 def _checked(value, what: str, kind: str, n: int | None = None):
-    """:func:`graphkin.model.ranges.as_array`, with a short way for a float array or a plain number.
+    """:func:`graphkin.ranges.as_array`, with a short way for a float array or a plain number.
 
     Anything else, or anything out of range, goes through ``as_array``, which accepts the same values and
     gives the same messages. Returns the array and, for a plain number, that number (else None).
@@ -836,7 +836,7 @@ def solve_kinematics(mech: Mechanism, q, q_dot=0.0, q_ddot=0.0) -> Kinematics:
     ------
     ModelError
         If the inputs are not numbers, not 1-D, of different lengths, not
-        finite or outside graphkin's ranges (:mod:`graphkin.model.ranges`).
+        finite or outside graphkin's ranges (:mod:`graphkin.ranges`).
     """
     plan, q, q_dot, q_ddot, rates = prepare(mech, q, q_dot, q_ddot)
     return _kinematics(plan, mech, q, q_dot, q_ddot, rates)

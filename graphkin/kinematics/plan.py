@@ -36,7 +36,7 @@ def _parts(mech: Mechanism) -> list:
 
 
 class Plan:
-    """What :func:`graphkin.kinematics.solve_kinematics` and :func:`graphkin.solve.solve_forces` reuse.
+    """What :func:`graphkin.kinematics.solve_kinematics` and :func:`graphkin.analytical.solve_forces` reuse.
 
     Attributes
     ----------

@@ -66,7 +66,7 @@ class Kinematics:
         pass solved: the joints' points, the arms, the size of the
         determinant. The force analysis reuses them, so that it gives the same
         numbers to the last digit whether it is called on these kinematics or
-        through :func:`graphkin.solve.solve`. Empty once values are given
+        through :func:`graphkin.analytical.solve`. Empty once values are given
         (:meth:`with_given`).
     """
 

@@ -15,7 +15,7 @@ import numpy as np
 
 from graphkin.errors import ModelError
 from graphkin.model.link import _finite
-from graphkin.model.ranges import check
+from graphkin.ranges import check
 
 
 def _pair(links, what, at=("links",)):

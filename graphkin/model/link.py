@@ -10,7 +10,7 @@ from typing import Mapping
 import numpy as np
 
 from graphkin.errors import ModelError
-from graphkin.model.ranges import check
+from graphkin.ranges import check
 
 FRAME = 1
 """Link number of the frame (ground) unless a mechanism says otherwise: many books number it 1, others 0
@@ -45,7 +45,7 @@ def _finite(value, what: str, unit: str = "") -> float:
 
 
 def _point(value, what: str, kind: str = "coordinate") -> tuple[float, float]:
-    """A pair (x, y) of finite floats inside the range of ``kind`` (:mod:`graphkin.model.ranges`)."""
+    """A pair (x, y) of finite floats inside the range of ``kind`` (:mod:`graphkin.ranges`)."""
     unit = {"coordinate": "in metres", "force": "in newtons"}[kind]
     # A string unpacks into two characters and an array into rows: neither is a pair of numbers.
     if isinstance(value, (str, bytes)) or _ndim(value) != 1:

@@ -17,7 +17,7 @@ import numpy as np
 
 from graphkin.errors import ModelError
 from graphkin.model.link import _finite, _point
-from graphkin.model.ranges import check, check_array
+from graphkin.ranges import check, check_array
 
 
 EDGE = 1e-12

@@ -13,7 +13,7 @@ from graphkin.model.driver import Driver
 from graphkin.model.joints import GearMesh, Joint, Prismatic, Revolute
 from graphkin.model.link import FRAME, FRAME_NUMBERS, Link
 from graphkin.model.loads import Load, PointForce, Torque, standard_gravity
-from graphkin.model.ranges import complaint
+from graphkin.ranges import complaint
 
 
 @dataclass(frozen=True)

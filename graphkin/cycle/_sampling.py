@@ -1,7 +1,7 @@
 """Where a sweep samples the input, and the extremes read off it (used by the cycle and the joint-force index).
 
-Kept apart from :mod:`graphkin.analysis.cycle` so that the joint-force index
-(:mod:`graphkin.analysis.index`) and the cycle both import it, one way, and
+Kept apart from :mod:`graphkin.cycle.sweep` so that the joint-force index
+(:mod:`graphkin.cycle.index`) and the cycle both import it, one way, and
 neither imports the other's importer.
 """
 
@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from graphkin.errors import GraphkinError
-from graphkin.analysis._turn import TURN, closing_step
+from graphkin.cycle._turn import TURN, closing_step
 
 if TYPE_CHECKING:
     from graphkin.problem import Problem

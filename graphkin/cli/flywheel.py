@@ -30,7 +30,7 @@ def run(args) -> int:
     from pathlib import Path
 
     from graphkin import catalog
-    from graphkin.flywheel_file import load_flywheel
+    from graphkin.cycle.flywheel_file import load_flywheel
 
     # A catalog name, unless a file of that name is here.
     if not Path(args.file).exists() and args.file in catalog.flywheel_names():
@@ -62,8 +62,8 @@ def flywheel_data(problem, fly) -> dict:
 
     Parameters
     ----------
-    problem : graphkin.flywheel_file.FlywheelProblem
-    fly : graphkin.analysis.Flywheel
+    problem : graphkin.cycle.flywheel_file.FlywheelProblem
+    fly : graphkin.cycle.Flywheel
         ``problem.size()``.
     """
     speed = fly.speed_extremes()

@@ -29,8 +29,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from graphkin.errors import GraphkinError
-from graphkin.model.ranges import complaint
-from graphkin.analysis._turn import TURN, closing_step, steps
+from graphkin.ranges import complaint
+from graphkin.cycle._turn import TURN, closing_step, steps
 
 
 @dataclass(frozen=True)
@@ -445,7 +445,7 @@ class Flywheel:
 
         The torques are linear between samples, so the extremes lie at samples.
         """
-        from graphkin.analysis._sampling import peak_of
+        from graphkin.cycle._sampling import peak_of
 
         a = self.acceleration()
         return peak_of(a, self.theta), peak_of(a, self.theta, lowest=True)
@@ -547,7 +547,7 @@ class Flywheel:
 
         The periodic solution is exact for T linear between samples (any
         spacing, so the jumps a switched load makes, sampled either side by
-        :func:`graphkin.analysis.sweep`, pass through without ringing).
+        :func:`graphkin.cycle.sweep`, pass through without ringing).
 
         Parameters
         ----------

@@ -11,7 +11,7 @@ import numpy as np
 from graphkin.errors import GraphkinError
 from graphkin.kinematics import Kinematics
 from graphkin.model import GearMesh, Prismatic
-from graphkin.solve.loads import Inertia, inertia
+from graphkin.analytical.loads import Inertia, inertia
 
 _NAME = re.compile(r"^([FGT])(\d)(\d)$|^([FGT])_?(\d+),(\d+)$")
 
@@ -46,7 +46,7 @@ class ForceAnalysis:
     Attributes
     ----------
     kinematics : Kinematics
-        The motion the forces were found from. From :func:`graphkin.solve.solve`, its per-link arrays
+        The motion the forces were found from. From :func:`graphkin.analytical.solve`, its per-link arrays
         are worked out again, to the same digits, the first time one is read, rather than kept.
     forces : dict of (int, int) to ndarray, shape (n, 2)
         Force of the lower-numbered link on the higher, per joint.
@@ -120,7 +120,7 @@ class ForceAnalysis:
         return self.force(*parse_force_name(self.mechanism, name))
 
     def inertia(self, link: int) -> Inertia:
-        """The link's inertia force, torque and h (see :func:`graphkin.solve.loads.inertia`)."""
+        """The link's inertia force, torque and h (see :func:`graphkin.analytical.loads.inertia`)."""
         return inertia(self.kinematics, link)
 
     def reason(self, i: int) -> str:

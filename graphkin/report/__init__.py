@@ -12,9 +12,9 @@ import math
 import numpy as np
 
 from graphkin.kinematics.points import link_points
-from graphkin.numbers import PICOMETRE, RESIDUE, largest, num, unless_rounding
+from graphkin.notation import PICOMETRE, RESIDUE, largest, num, unless_rounding
 from graphkin.model import GearMesh, Prismatic
-from graphkin.solve import ForceAnalysis
+from graphkin.analytical import ForceAnalysis
 
 
 def polar(v) -> tuple[float, float]:
@@ -40,7 +40,7 @@ def _vec(v):
 
 def constructions(result: ForceAnalysis) -> list:
     """The graphical construction of every position of a result (None where invalid)."""
-    from graphkin.graphic import construct_forces
+    from graphkin.graphical import construct_forces
 
     return [construct_forces(result.kinematics, i) if result.valid[i] else None for i in range(result.n)]
 
@@ -242,7 +242,7 @@ def _given_text(given) -> list[str]:
 
 def polar_text(v, unit="N", digits=4, scale=0.0) -> str:
     """A vector as the books print it: ``27.06 N ∠ -73.78°``; ``0 N`` if it is rounding beside ``scale``
-    (:data:`graphkin.numbers.RESIDUE` of it: the largest force at the position, for a force)."""
+    (:data:`graphkin.notation.RESIDUE` of it: the largest force at the position, for a force)."""
     size, angle = polar(v)
     if unless_rounding(size, scale) == 0:
         return f"0 {unit}"
@@ -266,7 +266,7 @@ def _input_text(entry, crank, static=False):
 
 def _applied(kin) -> list:
     """Each external load with what it applies at every position (table, window and sense included)."""
-    from graphkin.solve.loads import applied
+    from graphkin.analytical.loads import applied
 
     return [(ld, applied(kin, ld)) for ld in kin.mechanism.loads]
 

@@ -19,7 +19,7 @@ import numpy as np
 from graphkin.errors import GraphkinError, ModelError, ProblemFileError
 from graphkin.model import SENSES, Active, Driver, GearMesh, Link, Mechanism, PointForce, Prismatic, Revolute, Table, Torque
 from graphkin.model import mass as massprops
-from graphkin.model.ranges import complaint
+from graphkin.ranges import complaint
 
 _TOP = {"title", "source", "notes", "analysis", "gravity", "frame", "links", "joints", "driver", "loads", "assembly",
         "given"}
@@ -108,7 +108,7 @@ class Problem:
         from dataclasses import replace
 
         from graphkin.model.link import _finite
-        from graphkin.model.ranges import check
+        from graphkin.ranges import check
 
         crank = self.mechanism.driver.kind == "crank"
         rate = {"q_dot": _finite(q_dot, f"{self.name}: q_dot", "rad/s" if crank else "m/s"),
@@ -165,7 +165,7 @@ class Problem:
         from dataclasses import replace
 
         from graphkin.kinematics import solve_kinematics
-        from graphkin.model.ranges import as_array
+        from graphkin.ranges import as_array
 
         q, q_dot, q_ddot = self.q, self.q_dot, self.q_ddot
         if at is not None:
@@ -185,14 +185,14 @@ class Problem:
         return kin
 
     def solve(self, at=None):
-        """Force analysis (:class:`graphkin.solve.ForceAnalysis`) at the file's positions or at ``at``.
+        """Force analysis (:class:`graphkin.analytical.ForceAnalysis`) at the file's positions or at ``at``.
 
         Parameters
         ----------
         at : float or array_like, shape (n,), optional
             Input positions θ [rad] or s [m] (see :meth:`kinematics`).
         """
-        from graphkin.solve import solve_forces
+        from graphkin.analytical import solve_forces
 
         return solve_forces(self.kinematics(at))
 
@@ -225,7 +225,7 @@ class _Reader:
         return t[key]
 
     def si(self, value, dimension, where, kind="auto"):
-        """``value`` in SI, inside the range of ``kind`` (:mod:`graphkin.model.ranges`).
+        """``value`` in SI, inside the range of ``kind`` (:mod:`graphkin.ranges`).
 
         ``kind="auto"`` takes the dimension's range (:data:`_KIND`); None
         checks none (the caller checks the sign first, with its own message).
@@ -298,7 +298,7 @@ class _Reader:
 _KIND = {"length": "coordinate", "angle": "angle", "mass": "mass", "moment_of_inertia": "moment_of_inertia",
          "density": "density", "angular_velocity": "angular_velocity", "angular_acceleration": "angular_acceleration",
          "velocity": "velocity", "acceleration": "acceleration", "force": "force", "torque": "torque"}
-"""The range (:data:`graphkin.model.ranges.RANGES`) a value of each dimension is checked against, unless the
+"""The range (:data:`graphkin.ranges.RANGES`) a value of each dimension is checked against, unless the
 field says more (a radius is a ``length``, which must not be zero; a friction coefficient is ``friction``)."""
 
 
@@ -671,7 +671,7 @@ def _load(rd, t, where, driver_kind):
 
 def _load_table(rd, t, where, kind, driver_kind):
     """A load's ``table`` (CSV text inline) or ``csv`` (a file beside the problem file), as a :class:`Table`."""
-    from graphkin.tables import parse_table, read_csv_beside
+    from graphkin.problem.tables import parse_table, read_csv_beside
 
     given = [k for k in ("table", "csv") if k in t]
     if not given:

@@ -20,15 +20,15 @@ from graphkin.errors import GraphkinError
 from graphkin.geometry import cross
 from graphkin.kinematics import position_text
 from graphkin.model import GearMesh, Prismatic, Revolute
-from graphkin.solve import ForceAnalysis
-from graphkin.analysis._sampling import (SWITCH, Peak, check_problem, peak_of, positions, sweep_positions, switching_angles,
+from graphkin.analytical import ForceAnalysis
+from graphkin.cycle._sampling import (SWITCH, Peak, check_problem, peak_of, positions, sweep_positions, switching_angles,
                         switching_samples)
-from graphkin.analysis._turn import TURN, closing_step, weights
-from graphkin.analysis.index import JointForceIndex, index_at
+from graphkin.cycle._turn import TURN, closing_step, weights
+from graphkin.cycle.index import JointForceIndex, index_at
 
 if TYPE_CHECKING:
     from graphkin.problem import Problem
-    from graphkin.analysis.flywheel import Flywheel
+    from graphkin.cycle.flywheel import Flywheel
 
 __all__ = ["SWITCH", "Cycle", "Peak", "Peaks", "check_problem", "peak_of", "positions", "sweep", "sweep_positions",
            "switching_angles", "switching_samples"]
@@ -282,7 +282,7 @@ class Cycle:
         if not ok or len(coupler) != 1:
             raise GraphkinError(
                 f"{self.problem.name}: the transmission angle is defined for a crank-driven four-bar of four revolute"
-                " joints; for other linkages use the joint-force index (graphkin.analysis.joint_force_index)"
+                " joints; for other linkages use the joint-force index (graphkin.cycle.joint_force_index)"
             )
         coupler = coupler[0]
         (rocker,) = [j for j in mech.moving if j not in (crank, coupler)]
@@ -297,19 +297,19 @@ class Cycle:
 
     # -- flywheel ------------------------------------------------------------------
     def joint_force_index(self, limit: float = 2.0) -> "JointForceIndex":
-        """Joint-force index at this cycle's positions (:func:`graphkin.analysis.joint_force_index`)."""
+        """Joint-force index at this cycle's positions (:func:`graphkin.cycle.joint_force_index`)."""
         own = len(self.q) == len(self.problem.q) and np.array_equal(self.q, self.problem.q)
         return index_at(self.problem, None if own else self.q, limit)
 
     def flywheel(self, Cs: float) -> "Flywheel":
-        """Size a flywheel for this cycle's torque (:func:`graphkin.analysis.size_flywheel`).
+        """Size a flywheel for this cycle's torque (:func:`graphkin.cycle.size_flywheel`).
 
         Parameters
         ----------
         Cs : float
             Coefficient of speed fluctuation (ω_max − ω_min)/ω_avg, e.g. 0.05.
         """
-        from graphkin.analysis.flywheel import size_flywheel
+        from graphkin.cycle.flywheel import size_flywheel
 
         why = self.why_no_flywheel()
         if why:

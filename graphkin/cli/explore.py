@@ -199,7 +199,7 @@ def _main_thread() -> bool:
 
 
 def main(argv=None) -> int:
-    """``python -m graphkin.cli_explore PROBLEM``: the subcommand on its own (``graphkin explore`` is the same)."""
+    """``python -m graphkin.cli.explore PROBLEM``: the subcommand on its own (``graphkin explore`` is the same)."""
     import argparse
 
     parser = argparse.ArgumentParser(prog="graphkin")

@@ -163,7 +163,7 @@ _GLUED_TORQUE_RE = re.compile(r"^(?P<prefix>da|[kMmcd])?N(?P<length>m|mm|cm)$")
 _POWER_CHAIN_RE = re.compile(r"(?:\^|\*\*)[^*/^]*(?:\^|\*\*)")
 _MAX_UNIT_CHARS = 60
 # Cap on the length of a range table, to catch a mistyped step; also the most positions a sweep solves at once.
-from graphkin.model.ranges import MAX_POSITIONS  # noqa: E402  (one limit for files, --n and the Python API)
+from graphkin.ranges import MAX_POSITIONS  # noqa: E402  (one limit for files, --n and the Python API)
 
 _MAX_RANGE_POINTS = MAX_POSITIONS
 # Relative tolerance for "stop lands on the grid" and "stop is a full turn".

@@ -83,8 +83,8 @@ class FlywheelProblem:
     notes: str = ""
 
     def size(self):
-        """The flywheel (:func:`graphkin.analysis.size_flywheel`): I_s from C_s, or C_s from I."""
-        from graphkin.analysis.flywheel import size_flywheel
+        """The flywheel (:func:`graphkin.cycle.size_flywheel`): I_s from C_s, or C_s from I."""
+        from graphkin.cycle.flywheel import size_flywheel
 
         return size_flywheel(self.theta, driving=self.driving, resisting=self.resisting, omega_avg=self.omega_avg,
                              Cs=self.Cs, I=self.I, period=self.period)
@@ -199,7 +199,7 @@ def _torque(rd: _Reader, t: dict, role: str, period: float, base):
             return None, "mean", "constant, the mean of the other torque"
         x = rd.si(value, "torque", f"{role}.torque")
         return None, x, f"constant, {x:.6g} N·m"
-    from graphkin.tables import parse_table, read_csv_beside
+    from graphkin.problem.tables import parse_table, read_csv_beside
 
     if "table" in t:
         text, shown, where = rd.text(t["table"], f"{role}.table"), None, f"{role}.table"

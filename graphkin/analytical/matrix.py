@@ -11,7 +11,7 @@ Where a coefficient depends on the sign of an unknown — Coulomb friction
 (μ|N|) or the flank a gear tooth pushes on — the sign is taken from the
 closed-form solution, as the seeds do with F14x = ±μF14y and F32x = c F32y.
 The lessons display this system; the tests check that solving it gives the
-same answer as :func:`graphkin.solve.solve_forces`.
+same answer as :func:`graphkin.analytical.solve_forces`.
 """
 
 from __future__ import annotations
@@ -23,9 +23,9 @@ import numpy as np
 from graphkin.geometry import cross, perp
 from graphkin.geometry import as_xy
 from graphkin.model import GearMesh, Prismatic, Revolute
-from graphkin.solve.kinetostatics import _w
-from graphkin.solve.loads import known_loads
-from graphkin.solve.result import ForceAnalysis
+from graphkin.analytical.kinetostatics import _w
+from graphkin.analytical.loads import known_loads
+from graphkin.analytical.result import ForceAnalysis
 
 
 @dataclass(frozen=True)
@@ -162,7 +162,7 @@ def assemble(result: ForceAnalysis) -> System:
 def solve_matrix(result: ForceAnalysis) -> ForceAnalysis:
     """Solve the assembled matrix and return the answer as a ForceAnalysis.
 
-    A cross-check of :func:`graphkin.solve.solve_forces` (and what the lessons
+    A cross-check of :func:`graphkin.analytical.solve_forces` (and what the lessons
     show); it loops inside LAPACK over positions, so it is slower.
     """
     system = assemble(result)

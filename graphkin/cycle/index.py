@@ -23,8 +23,8 @@ import numpy as np
 
 from graphkin.errors import GraphkinError
 from graphkin.model import PointForce, Torque
-from graphkin.solve import ForceAnalysis, solve_forces
-from graphkin.analysis._sampling import Peak, check_problem, peak_of, sweep_positions
+from graphkin.analytical import ForceAnalysis, solve_forces
+from graphkin.cycle._sampling import Peak, check_problem, peak_of, sweep_positions
 
 if TYPE_CHECKING:
     from graphkin.problem import Problem
@@ -96,7 +96,7 @@ def static_problem(problem: "Problem") -> "Problem":
 
 def _reference_load(problem: "Problem", kin) -> tuple[np.ndarray, str]:
     """The external load the index divides by at each position of ``kin``, and the index's units."""
-    from graphkin.solve.loads import applied
+    from graphkin.analytical.loads import applied
 
     mech = problem.mechanism
     forces = [l for l in mech.loads if isinstance(l, PointForce)]
@@ -120,7 +120,7 @@ def joint_force_index(problem: "Problem", n: int | None = None, *, limit: float 
         The mechanism and its external loads; its masses and inertias are
         ignored (a static analysis, :func:`static_problem`).
     n : int, optional
-        As in :func:`graphkin.analysis.sweep`: n equally spaced crank angles
+        As in :func:`graphkin.cycle.sweep`: n equally spaced crank angles
         over one turn, or the problem's own positions if None (and the
         samples either side of where a load switches on or off).
     limit : float
@@ -151,7 +151,7 @@ def joint_force_index(problem: "Problem", n: int | None = None, *, limit: float 
 
 def index_at(problem: "Problem", at, limit: float = 2.0) -> JointForceIndex:
     """:func:`joint_force_index` at input positions ``at`` (SI; None for the problem's own)."""
-    from graphkin.analysis.flywheel import _positive
+    from graphkin.cycle.flywheel import _positive
 
     limit = _positive(limit, "limit")
     static = static_problem(problem)

@@ -7,7 +7,7 @@ that shows the mechanism, each moving link's free-body diagram, every force
 polygon of the graphical construction and the driving torque (or force) over
 the cycle with a marker at the current position. Moving the slider redraws
 the position; changing the speed recomputes the torque curve (once per speed,
-by :func:`graphkin.analysis.cycle.sweep`).
+by :func:`graphkin.cycle.sweep.sweep`).
 
 The figure is one persistent headless :class:`matplotlib.figure.Figure` whose
 axes are cleared and redrawn on each update with the ``graphkin.draw``
@@ -715,7 +715,7 @@ class Explorer:
     # -- layout -----------------------------------------------------------------
     def _polygons_needed(self) -> int:
         """The most force polygons a construction draws, over a few positions of the range."""
-        from graphkin.graphic import construct_forces
+        from graphkin.graphical import construct_forces
 
         lo, hi = self.limits
         at = np.array([self._si(v) for v in np.linspace(lo, hi, 13)])
@@ -789,7 +789,7 @@ class Explorer:
     # -- the torque curve ---------------------------------------------------------
     def _sweep(self):
         """Solve the whole cycle at the current speed and draw the torque curve (once per speed)."""
-        from graphkin.analysis.cycle import Cycle, sweep
+        from graphkin.cycle.sweep import Cycle, sweep
 
         if not self._original.given:
             self.problem = self._original.at_speed(self._q_dot())
@@ -882,7 +882,7 @@ class Explorer:
         Drawn ahead, the kernel reads its messages between two steps (see :meth:`_draw_ahead`).
         """
         from graphkin import draw
-        from graphkin.graphic import construct_forces
+        from graphkin.graphical import construct_forces
 
         q = self._si(value)
         c = a = None
@@ -890,7 +890,7 @@ class Explorer:
         try:
             kin = self.problem.kinematics(at=[q])
             c = construct_forces(kin, 0)
-            from graphkin.solve import solve_forces
+            from graphkin.analytical import solve_forces
 
             a = solve_forces(kin)
         except GraphkinError as exc:

@@ -46,10 +46,10 @@ def _parser() -> argparse.ArgumentParser:
     c.add_argument("--cs", type=float, metavar="CS", help="coefficient of speed fluctuation: size a flywheel, e.g. 0.05")
     c.add_argument("--json", action="store_true", help="print every array as JSON in SI units (schema: docs/json.md)")
     c.add_argument("--figure", metavar="FILE", help="write the cycle figure (.png, .svg or .pdf)")
-    from graphkin.cli_exercises import add_parser
-    from graphkin.cli_flywheel import add_parser as add_flywheel
-    from graphkin.cli_explore import add_parser as add_explore
-    from graphkin.cli_handout import add_parser as add_handout
+    from graphkin.cli.exercise import add_parser
+    from graphkin.cli.flywheel import add_parser as add_flywheel
+    from graphkin.cli.explore import add_parser as add_explore
+    from graphkin.cli.handout import add_parser as add_handout
 
     add_parser(sub)
     add_explore(sub)
@@ -69,7 +69,7 @@ def _positions(problem, text: str):
     if not text.strip() or any(not part.strip() for part in parts):
         raise GraphkinError(f"--at {text!r}: give one or more positions with units, separated by commas, e.g. "
                             + ("'124 deg,140 deg'" if crank else "'200 mm,250 mm'"))
-    from graphkin.model.ranges import complaint
+    from graphkin.ranges import complaint
 
     q = np.array([to_si(part.strip(), dim, field="--at", file="command line") for part in parts])
     for x, part in zip(q, parts):
@@ -101,7 +101,7 @@ def _list() -> int:
         print(f"{'':<24}{problem.source}")
     print("\nflywheels (graphkin flywheel NAME):")
     for name in catalog.flywheel_names():
-        from graphkin.flywheel_file import load_flywheel
+        from graphkin.cycle.flywheel_file import load_flywheel
 
         fly = load_flywheel(catalog.flywheel_path(name), name=name)
         print(f"{name:<24}{fly.title}")
@@ -203,10 +203,10 @@ def _cycle(args) -> int:
     import numpy as np
 
     from graphkin import catalog
-    from graphkin.analysis import sweep
+    from graphkin.cycle import sweep
 
-    from graphkin.analysis.flywheel import check_Cs
-    from graphkin.model.ranges import MAX_POSITIONS
+    from graphkin.cycle.flywheel import check_Cs
+    from graphkin.ranges import MAX_POSITIONS
 
     _check_outputs(args.figure)
     if args.cs is not None:
@@ -325,7 +325,7 @@ def cycle_data(cycle, Cs=None) -> dict:
 
     Parameters
     ----------
-    cycle : graphkin.analysis.Cycle
+    cycle : graphkin.cycle.Cycle
     Cs : float, optional
         Coefficient of speed fluctuation: size a flywheel (its ``"flywheel"`` is null without it).
 
@@ -402,7 +402,7 @@ def cycle_data(cycle, Cs=None) -> dict:
 
 
 def _peak_of(values, q, lowest=False):
-    from graphkin.analysis.cycle import peak_of
+    from graphkin.cycle.sweep import peak_of
 
     return peak_of(values, q, lowest=lowest)
 
@@ -411,7 +411,7 @@ def format_cycle(cycle, data: dict) -> str:
     """The text summary of ``graphkin cycle``, with units, from :func:`cycle_data`."""
     import numpy as np
 
-    from graphkin.analysis.cycle import switching_angles
+    from graphkin.cycle.sweep import switching_angles
 
     mech = cycle.problem.mechanism
     crank = mech.driver.kind == "crank"
@@ -588,19 +588,19 @@ def main(argv=None) -> int:
         if args.command == "cycle":
             return _cycle(args)
         if args.command == "exercise":
-            from graphkin.cli_exercises import run
+            from graphkin.cli.exercise import run
 
             return run(args)
         if args.command == "handout":
-            from graphkin.cli_handout import run as handout
+            from graphkin.cli.handout import run as handout
 
             return handout(args)
         if args.command == "explore":
-            from graphkin.cli_explore import run as explore
+            from graphkin.cli.explore import run as explore
 
             return explore(args)
         if args.command == "flywheel":
-            from graphkin.cli_flywheel import run as flywheel
+            from graphkin.cli.flywheel import run as flywheel
 
             return flywheel(args)
         return _list() if args.command == "list" else _solve(args)
@@ -622,5 +622,3 @@ def main(argv=None) -> int:
         return 2
 
 
-if __name__ == "__main__":  # pragma: no cover
-    sys.exit(main())

@@ -46,12 +46,12 @@ import numpy as np
 import shapely
 
 from graphkin.errors import GraphkinError
-from graphkin.numbers import PICOMETRE, largest, num, unless_rounding
+from graphkin.notation import PICOMETRE, largest, num, unless_rounding
 from graphkin.kinematics import Dyad, DriverGroup, GearGroup, Kinematics
 from graphkin.geometry import zcross as cross
 from graphkin.geometry import zdot as dot
 from graphkin.model import Prismatic, Revolute
-from graphkin.graphic.construction import Arrow, Construction, Line, Step, SubProblem, nice_scale
+from graphkin.graphical.construction import Arrow, Construction, Line, Step, SubProblem, nice_scale
 
 CLOSE = 1e-9
 """Relative tolerance of the closure check of a polygon."""
@@ -276,7 +276,7 @@ class _Builder:
             load.add(W, G)
             parts.append(f"its weight {_n(abs(W))} N acts at G{link}")
         from graphkin.model import PointForce, Torque
-        from graphkin.solve.loads import applied_at
+        from graphkin.analytical.loads import applied_at
 
         for ld in self.mech.loads:
             if ld.link != link:
@@ -862,7 +862,7 @@ def construct_forces(kin: Kinematics, index: int = 0) -> Construction:
 def _geometry(kin: Kinematics, i: int) -> dict:
     """Plain-data geometry of position i, for drawing and handouts."""
     from graphkin.model import GearMesh, PointForce, Torque
-    from graphkin.solve.loads import applied_at, inertia
+    from graphkin.analytical.loads import applied_at, inertia
 
     mech = kin.mechanism
     points = {link.number: {name: _xy(complex(kin.z(link.number, name)[i])) for name in link.points} for link in mech.links}

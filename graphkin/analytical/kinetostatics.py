@@ -2,7 +2,7 @@
 
 The three equilibrium equations of each moving link (d'Alembert: inertia
 force −m a_G and torque −I_G α included as loads) form [A]{x} = {b}; see
-:mod:`graphkin.solve.matrix` for that matrix, which the lessons display and the
+:mod:`graphkin.analytical.matrix` for that matrix, which the lessons display and the
 tests use as a cross-check. Solving it position by position is slow, so this
 module uses its structure instead: the groups of the kinematic decomposition
 are solved in reverse order (last dyad first), each in closed form with at
@@ -35,8 +35,8 @@ from graphkin.kinematics.plan import Plan, plan_of
 from graphkin.geometry import zcross as cross
 from graphkin.geometry import zdot as dot
 from graphkin.model import Mechanism, Prismatic, Revolute
-from graphkin.solve.loads import _external_fast, _inertia_fast, _known, load_specs
-from graphkin.solve.result import ForceAnalysis
+from graphkin.analytical.loads import _external_fast, _inertia_fast, _known, load_specs
+from graphkin.analytical.result import ForceAnalysis
 
 
 class _Reactions:

@@ -196,7 +196,7 @@ class Construction:
         Force of the lower-numbered link on the higher, per joint [N].
     normal, couple : dict of (int, int) to float
         For prismatic pairs: normal force N [N] and couple C [N·m], as in
-        :class:`graphkin.solve.ForceAnalysis`.
+        :class:`graphkin.analytical.ForceAnalysis`.
     effort : float
         Driving torque T1j [N·m] or force F1j along the guide [N].
     force_scale : float
@@ -297,7 +297,7 @@ class Construction:
         return _force_of(self.forces, i, j)
 
     def __getitem__(self, name: str):
-        from graphkin.solve.result import parse_force_name
+        from graphkin.analytical.result import parse_force_name
 
         if name == self.driver_name:
             # As in ForceAnalysis: a torque is a number, a slider's force a vector.

@@ -1,0 +1,7 @@
+"""``python -m graphkin``: the ``graphkin`` command."""
+
+import sys
+
+from graphkin.cli import main
+
+sys.exit(main())
