@@ -145,7 +145,7 @@ def assemble(result: ForceAnalysis) -> System:
             unknowns.append(f"F{name}")
     c = len(unknowns)
     d = mech.driver
-    if d.kind == "crank":
+    if d.crank:
         put(d.link, c, None, C=ones)
     else:
         joint = mech.joint_between(mech.frame, d.link)

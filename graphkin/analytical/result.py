@@ -93,7 +93,7 @@ class ForceAnalysis:
 
     def driver_force(self) -> np.ndarray:
         """The driving effort as a vector: F1j along the guide (slider) [N], shape (n, 2)."""
-        if self.mechanism.driver.kind != "slider":
+        if self.mechanism.driver.crank:
             raise GraphkinError(f"the driver is a crank: its effort is the torque {self.driver_name}")
         joint = self.mechanism.joint_between(self.mechanism.frame, self.mechanism.driver.link)
         return self.effort[:, None] * self.kinematics.guide_direction(joint)

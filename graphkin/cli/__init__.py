@@ -63,7 +63,7 @@ def _positions(problem, text: str):
 
     from graphkin.units import to_si
 
-    crank = problem.mechanism.driver.kind == "crank"
+    crank = problem.mechanism.driver.crank
     dim = "angle" if crank else "length"
     parts = text.split(",")
     if not text.strip() or any(not part.strip() for part in parts):
@@ -136,9 +136,9 @@ def _solve(args) -> int:
 
 def position_text(problem, q) -> str:
     """``θ = 89.99999999999°`` or ``s = 499.99 mm``: as many digits as name the position (a dead point's neighbour)."""
-    from graphkin.kinematics import position_text as text
+    from graphkin.notation import position_text as text
 
-    return text(q, problem.mechanism.driver.kind == "crank")
+    return text(q, problem.mechanism.driver.crank)
 
 
 PROGRESS_DELAY = 1.0
@@ -215,7 +215,7 @@ def _cycle(args) -> int:
         raise GraphkinError(f"--n {args.n}: n must be a whole number of positions from 2 to {MAX_POSITIONS:,} "
                             "(1° steps need 360, 0.01° steps 36,000)")
     problem = catalog.load(args.problem)
-    if args.n is not None and problem.mechanism.driver.kind != "crank":
+    if args.n is not None and not problem.mechanism.driver.crank:
         raise GraphkinError(f"{problem.name}: --n: the driver is a slider, so there is no turn to divide into "
                             "positions; leave out --n to sweep the problem's own positions")
     with _Progress(f"sweeping {problem.name}"):
@@ -253,10 +253,10 @@ DISK_THICKNESS = 0.025
 
 def _where(cycle, q) -> str:
     """``θ12 = 62°`` for a crank, ``s = 200 mm`` for a slider driver."""
+    from graphkin.notation import input_text
+
     d = cycle.problem.mechanism.driver
-    if not math.isfinite(q):
-        return "—"
-    return f"θ{d.frame}{d.link} = {math.degrees(q):.6g}°" if d.kind == "crank" else f"s = {q * 1e3:.6g} mm"
+    return input_text(q, d.crank, d.input_symbol, minus="-")
 
 
 def _floats(a) -> list:
@@ -338,7 +338,7 @@ def cycle_data(cycle, Cs=None) -> dict:
 
     problem, r = cycle.problem, cycle.analysis
     mech = problem.mechanism
-    crank = mech.driver.kind == "crank"
+    crank = mech.driver.crank
     peaks = cycle.peaks()
     omega = float(np.mean(cycle.q_dot))
     constant = crank and bool(np.allclose(cycle.q_dot, omega))
@@ -414,7 +414,7 @@ def format_cycle(cycle, data: dict) -> str:
     from graphkin.cycle.sweep import switching_angles
 
     mech = cycle.problem.mechanism
-    crank = mech.driver.kind == "crank"
+    crank = mech.driver.crank
     unit = "N·m" if crank else "N"
     name = mech.driver.symbol
 

@@ -37,7 +37,7 @@ def positions(problem: "Problem", n: int | None = None) -> np.ndarray | None:
     """
     if n is None:
         return None
-    if problem.mechanism.driver.kind != "crank":
+    if not problem.mechanism.driver.crank:
         raise GraphkinError(
             f"{problem.name}: the driver is a slider, so there is no turn to divide into n positions;"
             " sweep it at the problem's own positions (n=None)"
@@ -82,7 +82,7 @@ def reversals(problem: "Problem", load) -> list[float]:
     bit (60 halvings, all at once) with the problem's own input speed.
     """
     mech = problem.mechanism
-    crank = mech.driver.kind == "crank"
+    crank = mech.driver.crank
     if crank:
         q = np.linspace(0.0, TURN, REVERSAL_GRID + 1)
     else:
@@ -138,7 +138,7 @@ def switching_samples(problem: "Problem", q: np.ndarray) -> np.ndarray:
     ends = switching_angles(problem)
     if not ends or len(q) < 2 or not np.all(np.diff(q) > 0):
         return q
-    crank = problem.mechanism.driver.kind == "crank"
+    crank = problem.mechanism.driver.crank
     delta = SWITCH if crank else SWITCH * (q[-1] - q[0])
     end = q[0] + TURN if crank and closing_step(q) is not None else q[-1]
     extra = []

@@ -18,7 +18,7 @@ import numpy as np
 
 from graphkin.errors import GraphkinError
 from graphkin.geometry import cross
-from graphkin.kinematics import position_text
+from graphkin.notation import position_text
 from graphkin.model import GearMesh, Prismatic, Revolute
 from graphkin.analytical import ForceAnalysis
 from graphkin.cycle._sampling import (SWITCH, Peak, check_problem, peak_of, positions, sweep_positions, switching_angles,
@@ -124,7 +124,7 @@ class Cycle:
     @property
     def closed(self) -> bool:
         """True if the positions are one full turn of a crank (the last step closes the turn)."""
-        return self.problem.mechanism.driver.kind == "crank" and closing_step(self.q) is not None
+        return self.problem.mechanism.driver.crank and closing_step(self.q) is not None
 
     # -- the driving effort -------------------------------------------------
     @property
@@ -230,7 +230,7 @@ class Cycle:
         S = np.zeros((self.n, 2))
         for _, _, F in self._frame_joints():
             S = S - F
-        if self.problem.mechanism.driver.kind == "slider":
+        if not self.problem.mechanism.driver.crank:
             S = S - self.analysis.driver_force()
         return S
 
@@ -255,7 +255,7 @@ class Cycle:
                 M = M + cross(X, -F) - r.couple[(kin.mechanism.frame, j)]
             elif isinstance(joint, GearMesh):  # pragma: no cover - a gear mesh never involves the frame
                 raise GraphkinError(f"{joint.label}: a gear mesh with the frame is not supported")
-        if self.problem.mechanism.driver.kind == "crank":
+        if self.problem.mechanism.driver.crank:
             M = M - self.torque
         else:
             M = M + cross(self._driver_point(), -r.driver_force())
@@ -275,7 +275,7 @@ class Cycle:
             If the mechanism is not a four-bar of revolute joints driven by a crank.
         """
         mech = self.problem.mechanism
-        ok = (len(mech.links) == 4 and len(mech.joints) == 4 and mech.driver.kind == "crank"
+        ok = (len(mech.links) == 4 and len(mech.joints) == 4 and mech.driver.crank
               and all(isinstance(j, Revolute) for j in mech.joints))
         crank = mech.driver.link
         coupler = [j for j in mech.moving if j != crank and any(set(J.links) == {crank, j} for J in mech.joints)]
@@ -323,7 +323,7 @@ class Cycle:
         one whole turn (Norton §11.11), so it needs a crank swept over one
         full turn, a torque at every position of it, and a constant speed.
         """
-        if self.problem.mechanism.driver.kind != "crank":
+        if not self.problem.mechanism.driver.crank:
             return "no flywheel can be sized: the driver is a slider, and a flywheel evens out a crank's turn"
         if not self.closed:
             return ("no flywheel can be sized from these positions: they are not one full turn of the crank; "

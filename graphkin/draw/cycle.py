@@ -33,7 +33,8 @@ from graphkin.cycle._turn import TURN
 from graphkin.errors import GraphkinError
 from graphkin.draw import style as _style
 from graphkin.draw.axes import Drawn, PanelAxes, line, markers, new_axes
-from graphkin.draw.text import halo, num, sub, subscript
+from graphkin.draw.text import halo, sub, subscript
+from graphkin.notation import num
 
 SERIES = (_style.BLUE, _style.VERMILLION, _style.GREEN, _style.PURPLE, _style.ORANGE, _style.SKY_BLUE, _style.BLACK)
 """Colours of successive curves (Okabe–Ito, yellow left out: too faint on white)."""
@@ -47,7 +48,7 @@ drawn as one line on a wide pale band."""
 # -- helpers ---------------------------------------------------------------------------------------
 
 def _is_crank(mechanism) -> bool:
-    return mechanism.driver.kind == "crank"
+    return mechanism.driver.crank
 
 
 def _x(q, crank: bool) -> np.ndarray:

@@ -13,7 +13,8 @@ from graphkin.draw.axes import MM, Drawn, had_content, line, new_axes, points_pe
 from graphkin.draw.labels import Labeler, arrow_label_candidates, measuring_renderer, point_label_candidates, text_size
 from graphkin.draw.mechanism import NEAR, Geometry, _label_points, centre_of_mass, draw_link_body
 from graphkin.draw.scales import dimension, nice_round, scale_bar
-from graphkin.draw.text import num, sub
+from graphkin.draw.text import sub
+from graphkin.notation import num
 
 FAR_OFFSET = 1.2
 """An inertia resultant's line further from G than this many link sizes is drawn nearer, with a broken dimension."""
@@ -53,7 +54,7 @@ def loads_on(construction, link: int) -> dict:
     d = mech.driver
     if d.link == link and math.isfinite(c.effort):
         joint = mech.joint_between(mech.frame, link)
-        if d.kind == "crank":
+        if d.crank:
             couples.append((d.symbol, c.effort, c.points[mech.frame][joint.point], "driver"))
         else:
             vec = None

@@ -11,7 +11,8 @@ from graphkin.draw.arrows import arrow, perp, unit
 from graphkin.draw.axes import Drawn, had_content, line, markers, new_axes, points_per_unit, set_limits, setup_axes
 from graphkin.draw.labels import Labeler, arrow_label_candidates, point_label_candidates
 from graphkin.draw.scales import nice_round, scale_bar
-from graphkin.draw.text import num, sub
+from graphkin.draw.text import sub
+from graphkin.notation import num
 
 LANE = 1.8
 """Half the gap [pt] between the two lanes of a polygon that lies on one line (a two-force member)."""

@@ -10,7 +10,7 @@ from matplotlib.patches import ArrowStyle, FancyArrowPatch
 from graphkin.draw.arrows import perp, unit
 from graphkin.draw.axes import line, put
 from graphkin.draw.labels import offset_text
-from graphkin.draw.text import num
+from graphkin.notation import num
 
 
 def dimension(ax, labeler, p, q, text, *, s, small: float, color=None, broken=False):

@@ -14,7 +14,7 @@ from matplotlib.backends import backend_svg
 from matplotlib.font_manager import findfont
 from matplotlib.textpath import TextToPath
 
-from graphkin.notation import num  # noqa: F401 - drawings write numbers as the text does
+from graphkin import notation
 from graphkin.draw.axes import MM
 
 _NAME = re.compile(r"^([−-]?)([A-Za-z])([a-z]?\d+(?:,\d+)?[a-z]?)([′″‴⁗]|⁽[⁰¹²³⁴⁵⁶⁷⁸⁹]+⁾)?$")
@@ -63,22 +63,11 @@ def plain(text: str) -> str:
     return re.sub(r"\\mathregular|[${}]|_(?=\{)", "", text)
 
 
-def polar_text(v, unit: str = "N", digits: int = 4) -> str:
-    """``27.06 N ∠ −73.78°`` (the README's polar form)."""
-    from graphkin.report import polar
-
-    size, angle = polar(v)
-    if size == 0:
-        return f"0 {unit}"
-    return f"{num(size, digits)} {unit} ∠ {angle:.2f}°".replace("-", "−")
-
-
 def input_text(construction) -> str:
     """``θ₁₂ = 30°`` for a crank, ``s = 200 mm`` for a slider driver."""
     d = construction.mechanism.driver
-    if d.kind == "crank":
-        return f"θ{subscript(f'{d.frame}{d.link}')} = {num(math.degrees(construction.q), 6)}°"
-    return f"s = {num(construction.q * MM, 6)} mm"
+    crank = d.crank
+    return notation.input_text(construction.q, crank, f"θ{subscript(f'{d.frame}{d.link}')}" if crank else "s")
 
 
 def halo(width: float = 2.6):

@@ -475,7 +475,7 @@ def parse_exercise(text: str, *, file: str = "<exercise>", id: str = "exercise",
     if Cs is not None and not 0 < Cs < 1:
         raise rd.fail("flywheel.Cs", f"the coefficient of speed fluctuation must lie between 0 and 1, got {fly['Cs']!r}")
     if any(q.kind in CYCLE_KINDS for q in questions):
-        if mech.driver.kind != "crank":
+        if not mech.driver.crank:
             raise rd.fail("questions", "questions over the cycle need a crank driver (a whole turn)")
         if positions is None and len(problem_obj.q) < 8:
             positions = 360  # the problem is given at one position: sweep a whole turn in 1° steps

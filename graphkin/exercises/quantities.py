@@ -14,6 +14,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from graphkin.notation import num, polar_text
+
 from graphkin.exercises.exercise import Question, dimension_of
 
 # SI unit of each dimension, as printed in keys.
@@ -100,19 +102,8 @@ def _form(q: Question) -> str:
 
 
 def _num(x: float, digits: int = 4) -> str:
-    """A number to ``digits`` significant figures, with a true minus sign."""
-    if x == 0:
-        return "0"
-    text = f"{x:.{digits}g}"
-    if "e" in text:
-        # Books print 11330 N, not 1.133e+04 N; very large or small values keep a power of ten.
-        exponent = math.floor(math.log10(abs(x)))
-        if -4 <= exponent < 9:
-            text = f"{round(x, digits - 1 - exponent):.{max(digits - 1 - exponent, 0)}f}"
-        else:
-            mant, exp = text.split("e")
-            text = f"{mant}×10^{int(exp)}"
-    return text.replace("-", "−")
+    """A number as a student reads it: a true minus, and a power of ten written out (``1.5×10^−5``)."""
+    return num(x, digits, power=True)
 
 
 def _unit_text(unit: str) -> str:
@@ -126,7 +117,7 @@ def format_value(form: str, value, unit: str, dimension: str, *, torque: bool = 
     if form == "direction":
         return f"{math.degrees(value):.2f}°".replace("-", "−")
     if form == "vector":
-        return f"{_num(abs(value) / f)}{u} ∠ {math.degrees(math.atan2(value.imag, value.real)):.2f}°".replace("-", "−")
+        return polar_text((value.real / f, value.imag / f), unit and _unit_text(unit))
     if form == "point":
         return f"({_num(value.real / f)}, {_num(value.imag / f)}){u}"
     if torque and value:

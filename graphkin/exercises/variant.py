@@ -24,6 +24,7 @@ from functools import cached_property
 import numpy as np
 
 from graphkin.errors import GraphkinError
+from graphkin.notation import input_text
 from graphkin.exercises.exercise import CYCLE_KINDS, Exercise, Question, set_field
 
 MAX_ATTEMPTS = 64
@@ -224,7 +225,7 @@ def _unusable(ex: Exercise, solved: Solved) -> str | None:
         cycle = solved.cycle
         if not cycle.valid.all():
             bad = int(np.flatnonzero(~cycle.valid)[0])
-            return f"θ = {math.degrees(cycle.q[bad]):.4g}°: {cycle.analysis.reason(bad)} (the crank cannot turn fully)"
+            return f"{input_text(cycle.q[bad], True, digits=4)}: {cycle.analysis.reason(bad)} (the crank cannot turn fully)"
         if not cycle.closed:
             return "the positions do not make a whole turn"
         if any(q.kind in ("flywheel_E", "flywheel_I") for q in ex.questions) and not solved.flywheel.E > 0:
@@ -287,7 +288,7 @@ def _speed_ratio(problem, span: float, kinematics) -> float:
         fastest = max(fastest, float(np.max(np.abs(kin.omega[link]) / rate)) * span)
         for point in mech.link(link).points:
             fastest = max(fastest, float(np.max(np.abs(kin.z_velocity(link, point)) / rate)))
-    reference = span if mech.driver.kind == "crank" else 1.0
+    reference = span if mech.driver.crank else 1.0
     return fastest / reference
 
 
@@ -363,7 +364,7 @@ def _altered(v: Variant, slip: str) -> Solved | None:
         speed = next((g.value for g in v.data if "driver.omega" in g.field), None) or \
             v.exercise.base.get("driver", {}).get("omega")
         if not isinstance(speed, str) or not speed.strip().endswith("rpm") or p.given \
-                or p.mechanism.driver.kind != "crank" or len(set(p.q_dot)) > 1:
+                or not p.mechanism.driver.crank or len(set(p.q_dot)) > 1:
             return None
         return Solved(p.at_speed(float(p.q_dot[0]) * 30 / math.pi), v.exercise, v.Cs)
     raise KeyError(slip)

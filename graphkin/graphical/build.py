@@ -720,7 +720,7 @@ def _superposition(kin: Kinematics, index: int, whole: _Builder):
     p = _Builder(kin, index, like=whole)
     own = {link: p.own_loads(link) for link in mech.moving}
     loaded = [link for link in mech.moving if own[link].F != 0 or own[link].M0 != 0]
-    crank = mech.driver.kind == "crank"
+    crank = mech.driver.crank
     effort = "driving torque" if crank else "driving force"
     labels = [_roman(k) for k in range(1, len(loaded) + 1)]
     marks = [_mark(k) for k in range(1, len(loaded) + 1)]

@@ -48,6 +48,7 @@ from pathlib import Path
 import numpy as np
 
 from graphkin.errors import GraphkinError
+from graphkin.notation import input_text
 from graphkin.handout import maths as M
 from graphkin.handout.figures import Picture
 
@@ -126,7 +127,7 @@ class _Subject:
         self.raw = raw
         self.variant = variant
         self.mech = problem.mechanism
-        self.crank = self.mech.driver.kind == "crank"
+        self.crank = self.mech.driver.crank
         self.static = bool(getattr(problem, "static", False))
         self.result = problem.solve(at)
         self.n = self.result.n
@@ -179,7 +180,7 @@ class _Subject:
         """``θ12 = 342°`` or ``s = 200 mm``: the input at position ``i``."""
         q = float(self.result.kinematics.q[i])
         d = self.mech.driver
-        return f"θ{d.frame}{d.link} = {M.fmt(math.degrees(q), 6)}°" if self.crank else f"s = {M.fmt(q * 1e3, 6)} mm"
+        return input_text(q, d.crank, d.input_symbol)
 
 
 def _read_raw(name: str) -> dict:
@@ -219,7 +220,7 @@ def subject(source, *, student=None, secret="", at=None, Cs=None):
     if isinstance(at, str):
         from graphkin.units import to_si
 
-        dim = "angle" if problem.mechanism.driver.kind == "crank" else "length"
+        dim = "angle" if problem.mechanism.driver.crank else "length"
         at = np.array([to_si(part.strip(), dim, field="--at", file="command line") for part in at.split(",")])
     elif at is not None:
         at = np.atleast_1d(np.asarray(at, dtype=float))

@@ -39,57 +39,30 @@ from __future__ import annotations
 import math
 import re
 
-MINUS = "\u2212"
+from graphkin import notation
+from graphkin.notation import MINUS
+from graphkin.notation import fixed as fmt_fixed
 
 
 # -- numbers ------------------------------------------------------------------
 def fmt(x: float, digits: int = 4) -> str:
-    """A number with ``digits`` significant digits, as the handout prints it.
+    """A number with ``digits`` significant digits, as the handout prints it (:func:`graphkin.notation.num`).
 
-    No exponent between 10⁻⁴ and 10⁹ (a book prints 7580 N, not 7.58e+03),
-    U+2212 for the minus sign, and ``"0"`` for zero (never ``"−0"``). Rounding
-    noise (1e-17 where a lever arm is zero) is the caller's to clear: only
-    the caller knows the scale.
+    A true minus, ``"0"`` for zero (never ``"−0"``) and ``—`` for nan. Rounding
+    noise (1e-17 where a lever arm is zero) is the caller's to clear: only the
+    caller knows the scale.
 
     Examples
     --------
     >>> fmt(25.97834), fmt(-0.865942), fmt(7580.38), fmt(-0.0), fmt(123456.0), fmt(9.99996)
     ('25.98', '−0.8659', '7580', '0', '123500', '10')
     """
-    x = float(x)
-    if not math.isfinite(x):
-        return "—"
-    if x == 0:
-        return "0"
-    exponent = math.floor(math.log10(abs(x)))
-    if -4 <= exponent < 9:
-        places = digits - 1 - exponent
-        text = f"{round(x, places):.{max(places, 0)}f}"
-        if "." in text:
-            text = text.rstrip("0").rstrip(".")
-    else:
-        text = f"{x:.{digits}g}"
-    if float(text) == 0:
-        return "0"
-    return text.replace("-", MINUS)
-
-
-def fmt_fixed(x: float, places: int = 2) -> str:
-    """A number with a fixed number of decimals (angles: ``−73.78``), U+2212 for minus, never ``−0.00``."""
-    x = float(x)
-    if not math.isfinite(x):
-        return "—"
-    text = f"{x:.{places}f}"
-    if float(text) == 0:
-        text = text.lstrip("-")
-    return text.replace("-", MINUS)
+    return notation.num(x, digits, nonfinite="—")
 
 
 def angle_of(v) -> float:
-    """Direction of a plane vector [deg] in (−180°, 180°], as :func:`graphkin.report.polar`."""
-    from graphkin.report import polar as _polar
-
-    return _polar(v)[1]
+    """Direction of a plane vector [deg] in (−180°, 180°], as :func:`graphkin.notation.polar`."""
+    return notation.polar(v)[1]
 
 
 def size_of(v) -> float:

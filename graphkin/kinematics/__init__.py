@@ -1,7 +1,7 @@
 """Position, velocity and acceleration of every link, vectorised over input positions."""
 
 from graphkin.kinematics.dyads import solve_kinematics
-from graphkin.kinematics.state import Kinematics, position_text
+from graphkin.kinematics.state import Kinematics
 from graphkin.kinematics.structure import Dyad, DriverGroup, GearGroup, decompose
 
-__all__ = ["Dyad", "DriverGroup", "GearGroup", "Kinematics", "decompose", "position_text", "solve_kinematics"]
+__all__ = ["Dyad", "DriverGroup", "GearGroup", "Kinematics", "decompose", "solve_kinematics"]

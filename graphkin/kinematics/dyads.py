@@ -806,7 +806,7 @@ def prepare(mech, q, q_dot=0.0, q_ddot=0.0, *, caller: str = "solve_kinematics")
     """
     if not isinstance(mech, Mechanism):
         raise ModelError(f"{caller} takes a Mechanism first, got {type(mech).__name__}")
-    crank = mech.driver.kind == "crank"
+    crank = mech.driver.crank
     q, _ = _checked(q, "q (the input positions)", "angle" if crank else "coordinate")
     n = len(q)
     q_dot, w0 = _checked(q_dot, "q_dot", "angular_velocity" if crank else "velocity", n)

@@ -42,3 +42,13 @@ class Driver:
     def symbol(self) -> str:
         """Name of the unknown driving effort: ``T12`` or ``F12`` (``T01`` with the frame numbered 0)."""
         return f"{'T' if self.kind == 'crank' else 'F'}{self.frame}{self.link}"
+
+    @property
+    def crank(self) -> bool:
+        """Whether the input is a crank's angle θ (else a slider's position s along its guide)."""
+        return self.kind == "crank"
+
+    @property
+    def input_symbol(self) -> str:
+        """The input's symbol as the reports print it: ``θ12`` for a crank (``θ01`` with the frame 0), ``s``."""
+        return f"θ{self.frame}{self.link}" if self.crank else "s"

@@ -193,7 +193,7 @@ class Mechanism:
             if d.link not in [l.number for l in self.links]:
                 raise ModelError(f"driver: {exc}", at=at) from None
             raise ModelError(f"driver link {d.link} must be joined to the frame (link {self.frame})", at=at) from None
-        wanted = Revolute if d.kind == "crank" else Prismatic
+        wanted = Revolute if d.crank else Prismatic
         if not isinstance(joint, wanted):
             raise ModelError(f"a {d.kind} driver needs a {wanted.__name__.lower()} joint to the frame; "
                              f"link {d.link} has a {joint.label}", at=("driver", "type"))

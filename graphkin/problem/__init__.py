@@ -86,7 +86,7 @@ class Problem:
     @property
     def input_name(self) -> str:
         """``"theta"`` for a crank, ``"s"`` for a slider."""
-        return "theta" if self.mechanism.driver.kind == "crank" else "s"
+        return "theta" if self.mechanism.driver.crank else "s"
 
     def at_speed(self, q_dot: float, q_ddot: float | None = None) -> "Problem":
         """The same problem driven at a constant input rate (its title says so).
@@ -110,7 +110,7 @@ class Problem:
         from graphkin.model.link import _finite
         from graphkin.ranges import check
 
-        crank = self.mechanism.driver.kind == "crank"
+        crank = self.mechanism.driver.crank
         rate = {"q_dot": _finite(q_dot, f"{self.name}: q_dot", "rad/s" if crank else "m/s"),
                 "q_ddot": _finite(self.q_ddot[0] if q_ddot is None else q_ddot, f"{self.name}: q_ddot",
                                   "rad/s²" if crank else "m/s²")}
@@ -169,7 +169,7 @@ class Problem:
 
         q, q_dot, q_ddot = self.q, self.q_dot, self.q_ddot
         if at is not None:
-            crank = self.mechanism.driver.kind == "crank"
+            crank = self.mechanism.driver.crank
             at = as_array(at, f"{self.name}: at", "angle" if crank else "coordinate")
             if len(set(self.q_dot)) > 1 or len(set(self.q_ddot)) > 1:
                 raise GraphkinError(f"{self.name}: its input rates vary with position, so it can only be solved at its own positions")
@@ -721,7 +721,7 @@ def _given(rd, value, mech, n, static=False):
             if static and name in ("alpha", "a_G"):
                 raise rd.fail(f"{where}.{name}", "a static analysis has no inertia loads, so it is not used: leave it out "
                               "(or write analysis = \"dynamic\")")
-            if name == "theta" and link == mech.driver.link and mech.driver.kind == "crank":
+            if name == "theta" and link == mech.driver.link and mech.driver.crank:
                 raise rd.fail(f"{where}.theta", f"link {link} is the crank: its angle is the input, driver.theta")
             if name == "points":
                 if not isinstance(v, dict) or not v:

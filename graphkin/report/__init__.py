@@ -12,26 +12,10 @@ import math
 import numpy as np
 
 from graphkin.kinematics.points import link_points
-from graphkin.notation import PICOMETRE, RESIDUE, largest, num, unless_rounding
+from graphkin import notation
+from graphkin.notation import PICOMETRE, RESIDUE, input_text, largest, num, polar, unless_rounding
 from graphkin.model import GearMesh, Prismatic
 from graphkin.analytical import ForceAnalysis
-
-
-def polar(v) -> tuple[float, float]:
-    """Magnitude and angle [deg] in (−180°, 180°] of a plane vector, as the books print it.
-
-    Examples
-    --------
-    >>> polar([-7.555, -1e-16])
-    (7.555, 180.0)
-    """
-    x, y = (float(c) for c in v)
-    size = math.hypot(x, y)
-    # Rounding noise must not turn 180° into −180°.
-    tiny = 1e-12 * size
-    x, y = (0.0 if abs(x) <= tiny else x), (0.0 if abs(y) <= tiny else y)
-    angle = math.degrees(math.atan2(y, x))
-    return size, (180.0 if angle == -180.0 else angle)
 
 
 def _vec(v):
@@ -103,7 +87,7 @@ def solution(problem, result: ForceAnalysis, graphical: list | None = None) -> d
     """
     kin = result.kinematics
     mech = kin.mechanism
-    crank = mech.driver.kind == "crank"
+    crank = mech.driver.crank
     positions = []
     pairs = list(result.forces)
     inertia = {link: result.inertia(link) for link in mech.moving}
@@ -241,12 +225,8 @@ def _given_text(given) -> list[str]:
 
 
 def polar_text(v, unit="N", digits=4, scale=0.0) -> str:
-    """A vector as the books print it: ``27.06 N ∠ -73.78°``; ``0 N`` if it is rounding beside ``scale``
-    (:data:`graphkin.notation.RESIDUE` of it: the largest force at the position, for a force)."""
-    size, angle = polar(v)
-    if unless_rounding(size, scale) == 0:
-        return f"0 {unit}"
-    return f"{num(size, digits, minus='-')} {unit} ∠ {angle:.2f}°"
+    """A vector in the report's plain text: ``27.06 N ∠ -73.78°`` (:func:`graphkin.notation.polar_text`)."""
+    return notation.polar_text(v, unit, digits, scale=scale, minus="-")
 
 
 def _mm(x) -> str:
@@ -258,10 +238,10 @@ def _input_text(entry, crank, static=False):
     q = entry["input"]
     if static:
         # Only the position matters; a rate, if the file gives one, only sets the sense of sliding for friction.
-        return f"θ = {math.degrees(q['value']):.6g}°" if crank else f"s = {q['value'] * 1e3:.6g} mm"
-    if crank:
-        return f"θ = {math.degrees(q['value']):.6g}°, ω = {q['rate']:.6g} rad/s, α = {q['rate2']:.6g} rad/s²"
-    return f"s = {q['value'] * 1e3:.6g} mm, v = {q['rate']:.6g} m/s, a = {q['rate2']:.6g} m/s²"
+        return input_text(q["value"], crank, minus="-")
+    rates = ("ω", "rad/s", "α", "rad/s²") if crank else ("v", "m/s", "a", "m/s²")
+    return (f"{input_text(q['value'], crank, minus='-')}, {rates[0]} = {q['rate']:.6g} {rates[1]}, "
+            f"{rates[2]} = {q['rate2']:.6g} {rates[3]}")
 
 
 def _applied(kin) -> list:

@@ -437,7 +437,7 @@ class Explorer:
         self.n = int(n)
         self._halo = bool(halo)
         self.ahead = int(ahead)
-        self.crank = problem.mechanism.driver.kind == "crank"
+        self.crank = problem.mechanism.driver.crank
         self._original = problem
         q_dot0 = float(problem.q_dot[0])
         # A problem that gives ω, α or a_G itself holds at its own speed only: the speed box is then fixed.
