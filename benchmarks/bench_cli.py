@@ -124,10 +124,12 @@ print(json.dumps({"numpy (one BLAS thread)": t1 - t0, "import the engine and rep
     "graphkin cycle strip_cutter --n 3600 --json": r"""
 import sys, time, json
 t0 = time.perf_counter()
-from graphkin.cli import _single_threaded_blas, cycle_data, json_text
+from graphkin.cli import _single_threaded_blas
 _single_threaded_blas()
 from graphkin import catalog
 from graphkin.cycle import sweep
+from graphkin.files import json_text
+from graphkin.report import cycle_data
 t1 = time.perf_counter()
 problem = catalog.load("strip_cutter")
 cycle = sweep(problem, 3600)

@@ -11,7 +11,8 @@ import pytest
 
 from graphkin import catalog
 from graphkin.cycle import joint_force_index, sweep
-from graphkin.cli import DISK_THICKNESS, STEEL, _Progress, main
+from graphkin.cli import _Progress, main
+from graphkin.report import DISK_THICKNESS, STEEL
 
 
 def run(capsys, *argv):

@@ -122,7 +122,7 @@ def test_the_worked_position_of_a_cycle_is_where_the_driving_effort_peaks(built)
 def test_the_whole_cycle_carries_the_numbers_of_cycle_json(built):
     from graphkin import catalog
     from graphkin.cycle import sweep
-    from graphkin.cli import cycle_data
+    from graphkin.report import cycle_data
 
     data = cycle_data(sweep(catalog.load("strip_cutter")), handout.content.DEFAULT_CS)
     fw, jfi, e = data["flywheel"], data["joint_force_index"], data["effort"]

@@ -21,7 +21,8 @@ from hypothesis import strategies as st
 
 from graphkin import catalog
 from graphkin.cycle import sweep
-from graphkin.cli import cycle_data, main
+from graphkin.cli import main
+from graphkin.report import cycle_data
 from graphkin.kinematics import solve_kinematics
 from graphkin.kinematics.points import link_points, point_motion, rigid_body
 from graphkin.report import cycle_links, solution

@@ -6,7 +6,7 @@
 * pint's parsed registry is kept on disk (:func:`graphkin.units.registry`): a
   damaged, missing or unwritable cache costs time, never a wrong number or an
   error.
-* ``graphkin``'s JSON (:func:`graphkin.cli.json_text`) is ``json.dumps(...,
+* ``graphkin``'s JSON (:func:`graphkin.files.json_text`) is ``json.dumps(...,
   indent=2)`` character for character.
 * :func:`graphkin.draw.save` draws a PNG once, with the pixels matplotlib's
   ``bbox_inches="tight"`` gives.
@@ -31,7 +31,9 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from graphkin import units
-from graphkin.cli import _floats, cycle_data, json_text
+from graphkin.files import json_text
+from graphkin.report import cycle_data
+from graphkin.report.plain import floats as _floats
 from graphkin.errors import ProblemFileError
 
 REPO = Path(__file__).resolve().parents[1]

@@ -157,7 +157,7 @@ def test_the_vendored_graphkin_prints_the_sheet(graded):
             "from graphkin.exercises.platforms import runtime; "
             f"print(runtime.sheet_text('{EXERCISE}.toml', 's002', '{EXERCISE}-sheets.json'))")
     out = subprocess.run([sys.executable, "-c", code], cwd=folder, capture_output=True, text=True, check=True)
-    from graphkin.cli.exercise import format_sheet
+    from graphkin.exercises.sheets import format_sheet
 
     assert out.stdout.strip() == format_sheet(exercises.make(EXERCISE, "s002", secret=SECRET)).strip()
 

@@ -11,7 +11,6 @@ starts in about a tenth of a second (benchmarks/bench_cli.py).
 from __future__ import annotations
 
 import argparse
-import math
 import os
 import sys
 from pathlib import Path
@@ -113,6 +112,7 @@ def _solve(args) -> int:
     import numpy as np
 
     from graphkin import catalog, report
+    from graphkin.files import json_text
 
     _check_outputs(args.figure, args.steps)
     problem = catalog.load(args.problem)
@@ -204,6 +204,8 @@ def _cycle(args) -> int:
 
     from graphkin import catalog
     from graphkin.cycle import sweep
+    from graphkin.files import json_text
+    from graphkin.report import cycle_data, format_cycle
 
     from graphkin.cycle.flywheel import check_Cs
     from graphkin.ranges import MAX_POSITIONS
@@ -243,238 +245,6 @@ def _cycle(args) -> int:
               f" {position_text(problem, cycle.q[i])}: {cycle.analysis.reason(i)}", file=sys.stderr)
         return 2
     return 0
-
-
-STEEL = 7850.0
-"""Density of steel [kg/m³], for the flywheel disk of the cycle summary."""
-DISK_THICKNESS = 0.025
-"""Axial thickness of that disk [m] (an assumption, stated in the summary)."""
-
-
-def _where(cycle, q) -> str:
-    """``θ12 = 62°`` for a crank, ``s = 200 mm`` for a slider driver."""
-    from graphkin.notation import input_text
-
-    d = cycle.problem.mechanism.driver
-    return input_text(q, d.crank, d.input_symbol, minus="-")
-
-
-def _floats(a) -> list:
-    """An array as a JSON list, nan and ±inf as null."""
-    import numpy as np
-
-    a = np.asarray(a, dtype=float).ravel()
-    # tolist() gives the same Python floats as float(x) one by one, ~20x faster for a cycle's 3600 values.
-    out = a.tolist()
-    bad = ~np.isfinite(a)
-    if bad.any():
-        for i in np.flatnonzero(bad).tolist():
-            out[i] = None
-    return out
-
-
-def _float(x):
-    x = float(x)
-    return x if math.isfinite(x) else None
-
-
-def _peak(p) -> dict:
-    return {"value": _float(p.value), "at": _float(p.at), "index": int(p.index)}
-
-
-def json_text(data) -> str:
-    """The JSON text of plain data, indented by two spaces, as ``json.dumps(data, indent=2, ensure_ascii=False)``.
-
-    Written by orjson: a whole cycle's half a million numbers take ~12 ms, where json's indented
-    encoder (pure Python, a call per number) takes ~0.3 s. The text is laid out as json lays it out, line for
-    line; numbers are the same shortest round-trip ones, spelt ``2.5e-8`` where json writes ``2.5e-08``, and
-    one that is not finite (NaN, ±inf) is ``null`` (json writes ``NaN``, which JSON does not have). numpy
-    arrays and scalars are written as lists and numbers.
-
-    Parameters
-    ----------
-    data : dict, list or scalar
-        Plain data (what ``json.dumps`` takes).
-
-    Returns
-    -------
-    str
-
-    Examples
-    --------
-    >>> print(json_text({"x": [0.1, None, 2], "ok": [True]}))
-    {
-      "x": [
-        0.1,
-        null,
-        2
-      ],
-      "ok": [
-        true
-      ]
-    }
-    """
-    import orjson
-
-    options = orjson.OPT_INDENT_2 | orjson.OPT_SERIALIZE_NUMPY | orjson.OPT_NON_STR_KEYS
-    return orjson.dumps(data, option=options).decode("utf-8")
-
-
-def cycle_data(cycle, Cs=None) -> dict:
-    """Everything ``graphkin cycle`` reports, as plain data in SI units (schema: docs/json.md).
-
-    Parameters
-    ----------
-    cycle : graphkin.cycle.Cycle
-    Cs : float, optional
-        Coefficient of speed fluctuation: size a flywheel (its ``"flywheel"`` is null without it).
-
-    Raises
-    ------
-    GraphkinError
-        If a flywheel is asked for where none can be sized (a slider, not one full turn, a failed position).
-    """
-    import numpy as np
-
-    problem, r = cycle.problem, cycle.analysis
-    mech = problem.mechanism
-    crank = mech.driver.crank
-    peaks = cycle.peaks()
-    omega = float(np.mean(cycle.q_dot))
-    constant = crank and bool(np.allclose(cycle.q_dot, omega))
-    power = cycle.power
-    forces = {}
-    for (i, j), F in r.forces.items():
-        name = r.name_of(i, j)
-        size, angle = cycle.polar(name)
-        forces[name] = {"x": _floats(F[:, 0]), "y": _floats(F[:, 1]), "magnitude": _floats(size),
-                        "angle": _floats(angle), "peak": _peak(peaks.forces[name])}
-    S = cycle.shaking_force()
-    try:
-        mu = _floats(cycle.transmission_angle())
-    except GraphkinError:
-        mu = None
-    flywheel = None
-    if Cs is not None:
-        f = cycle.flywheel(Cs)
-        disk = f.disk(STEEL, DISK_THICKNESS)
-        flywheel = {
-            "Cs": f.Cs, "omega_avg": f.omega_avg, "T_avg": f.T_avg, "E": f.E, "I_s": f.I_s,
-            "crossings": _floats(f.crossings), "areas": _floats(f.areas), "accumulated": _floats(f.accumulated),
-            "energy": _floats(f.U),
-            "disk": {"material": "steel", "density": disk.density, "thickness": disk.thickness,
-                     "radius": disk.radius, "mass": disk.mass, "I": disk.I},
-        }
-    try:
-        jfi = cycle.joint_force_index()
-    except GraphkinError as exc:
-        index = {"defined": False, "reason": str(exc)}
-    else:
-        index = {
-            "defined": True, "reason": "", "units": jfi.units, "limit": jfi.limit, "values": _floats(jfi.index),
-            "load": _floats(jfi.load), "joint": [str(x) for x in jfi.joint], "peak": _peak(jfi.peak),
-            "over_limit": _floats(jfi.over_limit),
-            "immovable": [{"at": float(q), "reason": why} for q, why in jfi.immovable],
-            "unloaded": _floats(jfi.unloaded),
-        }
-    return {
-        "problem": problem.name, "title": problem.title, "source": problem.source,
-        "units": {"length": "m", "angle": "rad", "force": "N", "torque": "N*m", "power": "W", "energy": "J",
-                  "inertia": "kg*m^2", "mass": "kg", "time": "s"},
-        "driver": {"link": mech.driver.link, "kind": mech.driver.kind, "name": mech.driver.symbol},
-        "n": cycle.n,
-        "closed": cycle.closed,
-        "input": {"name": "theta" if crank else "s", "values": _floats(cycle.q), "rate": _floats(cycle.q_dot)},
-        "valid": [bool(v) for v in cycle.valid],
-        "invalid": [{"index": int(i), "reason": r.reason(int(i))} for i in np.flatnonzero(~cycle.valid)],
-        "links": __import__("graphkin.report", fromlist=["cycle_links"]).cycle_links(r),
-        "effort": {"name": mech.driver.symbol, "values": _floats(cycle.torque), "average": _float(cycle.average),
-                   "max": _peak(peaks.effort_max), "min": _peak(peaks.effort_min)},
-        "power": {"values": _floats(power),
-                  "average": _float(cycle.average * omega) if constant else None,
-                  "max": _peak(_peak_of(power, cycle.q)), "min": _peak(_peak_of(power, cycle.q, lowest=True))},
-        "forces": forces,
-        "shaking": {"force": {"x": _floats(S[:, 0]), "y": _floats(S[:, 1])}, "moment": _floats(cycle.shaking_moment())},
-        "transmission_angle": mu,
-        "flywheel": flywheel,
-        "joint_force_index": index,
-    }
-
-
-def _peak_of(values, q, lowest=False):
-    from graphkin.cycle.sweep import peak_of
-
-    return peak_of(values, q, lowest=lowest)
-
-
-def format_cycle(cycle, data: dict) -> str:
-    """The text summary of ``graphkin cycle``, with units, from :func:`cycle_data`."""
-    import numpy as np
-
-    from graphkin.cycle.sweep import switching_angles
-
-    mech = cycle.problem.mechanism
-    crank = mech.driver.crank
-    unit = "N·m" if crank else "N"
-    name = mech.driver.symbol
-
-    def at(p):
-        return _where(cycle, p["at"] if p["at"] is not None else float("nan"))
-
-    def val(x, digits=6):
-        return "—" if x is None else f"{x:.{digits}g}"
-
-    q0, q1 = cycle.q[0], cycle.q[-1]
-    span = _where(cycle, q0) + (f" … {_where(cycle, q1).split(' = ')[1]}" if cycle.n > 1 else "")
-    lines = [f"{cycle.problem.name}: {cycle.problem.title}",
-             f"{cycle.n} position{'s' * (cycle.n != 1)}, {span}{' (one full turn)' if cycle.closed else ''}"]
-    if crank:
-        lines[-1] += f", ω = {float(np.mean(cycle.q_dot)):.6g} rad/s"
-    ends = switching_angles(cycle.problem)
-    if ends:
-        where = ", ".join(_where(cycle, b).split(" = ")[1] for b in ends)
-        how = ("jump (switch on or off, step in a table, or reverse with the motion)"
-               if any(ld.varies for ld in cycle.problem.mechanism.loads) else "switch on or off")
-        lines.append(f"loads {how} at {where}: each sampled just before and just after")
-    e = data["effort"]
-    lines += ["", f"Driving {'torque' if crank else 'force'} {name}",
-              f"  peak     {val(e['max']['value'])} {unit} at {at(e['max'])}",
-              f"  lowest   {val(e['min']['value'])} {unit} at {at(e['min'])}",
-              f"  average  {val(e['average'])} {unit}"]
-    p = data["power"]
-    lines += [f"Input power",
-              f"  peak     {val(p['max']['value'])} W at {at(p['max'])}",
-              f"  lowest   {val(p['min']['value'])} W at {at(p['min'])}"]
-    if p["average"] is not None:
-        lines.append(f"  average  {val(p['average'])} W")
-    lines += ["", "Peak joint forces"]
-    width = max(len(k) for k in data["forces"]) if data["forces"] else 3
-    for k, f in data["forces"].items():
-        lines.append(f"  {k:<{width}}  {val(f['peak']['value'])} N at {at(f['peak'])}")
-    fw = data["flywheel"]
-    if fw is not None:
-        d = fw["disk"]
-        lines += ["", f"Flywheel (C_s = {fw['Cs']:.6g}, ω_avg = {fw['omega_avg']:.6g} rad/s, Norton §11.11)",
-                  f"  E        {val(fw['E'])} J (largest energy swing)",
-                  f"  I_s      {val(fw['I_s'])} kg·m² (system inertia on the crank shaft)",
-                  f"  disk     radius {d['radius'] * 1e3:.4g} mm, mass {d['mass']:.4g} kg"
-                  f" (assuming solid steel, ρ = {d['density']:g} kg/m³, {d['thickness'] * 1e3:g} mm thick)"]
-    jfi = data["joint_force_index"]
-    lines += ["", "Joint-force index (static, Holte and Chase, Norton §11.12)"]
-    if not jfi["defined"]:
-        lines.append(f"  undefined: {jfi['reason']}")
-    else:
-        u = f" {jfi['units']}" if jfi["units"] else ""
-        lines.append(f"  peak     {val(jfi['peak']['value'])}{u} at {at(jfi['peak'])}"
-                     f" (limit {jfi['limit']:g}: {'over' if (jfi['peak']['value'] or 0) > jfi['limit'] else 'within'})")
-        if jfi["immovable"]:
-            lines.append(f"  immovable at {len(jfi['immovable'])} position(s):")
-            lines += [f"    {_where(cycle, x['at'])}: {x['reason']}" for x in jfi["immovable"][:10]]
-            if len(jfi["immovable"]) > 10:
-                lines.append(f"    … and {len(jfi['immovable']) - 10} more (see --json)")
-        else:
-            lines.append("  immovable positions: none")
-    return "\n".join(lines)
 
 
 class _Progress:

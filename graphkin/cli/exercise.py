@@ -16,15 +16,12 @@ from __future__ import annotations
 import csv
 import io
 import json
-import math
 import os
 import sys
 from pathlib import Path
 
 from graphkin.errors import GraphkinError
-from graphkin.files import check_destination, read_text, write_text
-
-MAX_ROSTER = 100_000
+from graphkin.files import check_destination, json_text, read_text, write_text
 
 
 def add_parser(sub) -> None:
@@ -83,6 +80,8 @@ def _run(args) -> int:
     # (numpy, shapely, the problem reader) is ~0.1 s that `graphkin solve` and `graphkin list` never use.
     from graphkin import exercises
     from graphkin.exercises.batch import run_roster
+    from graphkin.exercises.roster import read_roster
+    from graphkin.exercises.sheets import format_sheet
 
     if args.action == "list":
         for name in exercises.names():
@@ -105,26 +104,27 @@ def _run(args) -> int:
     if args.action == "grade":
         return _grade(ex, args, secret)
     if args.roster:
-        students = _roster(args.roster)
+        students = read_roster(args.roster)
         with _progress(len(students), args.action) as bar:
             rows = run_roster(ex, args.action, students, secret, progress=bar.update)
-        text = json.dumps(rows, indent=2, ensure_ascii=False) if args.json else _csv(_flat(rows))
+        text = json_text(rows) if args.json else _csv(_flat(rows))
     else:
         v = ex.variant(args.student, secret)
         sheet = v.key() if args.action == "key" else v.sheet()
         if figure:
             _given_figure(v, figure)
-        text = json.dumps(sheet, indent=2, ensure_ascii=False) if args.json else format_sheet(sheet)
+        text = json_text(sheet) if args.json else format_sheet(sheet)
     _emit(text, args.output)
     return 0
 
 
 def _export(args) -> int:
     from graphkin.exercises import platforms
+    from graphkin.exercises.roster import read_roster
 
     platforms.platform(args.to)
     secret = _secret(args)
-    students = _roster(args.roster) if args.roster else None
+    students = read_roster(args.roster) if args.roster else None
     with _progress(len(students or ()), "export") as bar:
         written = platforms.export(args.exercise, args.to, args.output, secret=secret, students=students,
                                    progress=bar.update)
@@ -160,33 +160,6 @@ def _emit(text: str, output) -> None:
         print(f"written to {output}", file=sys.stderr)
     else:
         print(text)
-
-
-def _read_csv(path, what) -> list[dict]:
-    text = read_text(path, what)
-    try:
-        reader = csv.DictReader(io.StringIO(text))
-        rows = []
-        for row in reader:
-            rows.append(row)
-            if len(rows) > MAX_ROSTER:
-                raise GraphkinError(f"{what} {path}: more than {MAX_ROSTER} rows")
-    except csv.Error as exc:
-        raise GraphkinError(f"{what} {path}: not a readable CSV ({exc})") from None
-    fields = [f.strip().lower() for f in reader.fieldnames or []]
-    if "student" not in fields:
-        raise GraphkinError(f"{what} {path}: needs a header row with a 'student' column "
-                            f"(found: {', '.join(reader.fieldnames or []) or 'no header'})")
-    key = (reader.fieldnames or [])[fields.index("student")]
-    for n, row in enumerate(rows, start=2):
-        if not (row.get(key) or "").strip():
-            raise GraphkinError(f"{what} {path}: line {n}: the student id is empty")
-        row["student"] = row.pop(key).strip()
-    return rows
-
-
-def _roster(path) -> list[str]:
-    return [row["student"] for row in _read_csv(path, "roster")]
 
 
 def _flat(sheets: list[dict]) -> list[dict]:
@@ -230,24 +203,26 @@ def _answers_json(path) -> dict:
 def _grade(ex, args, secret) -> int:
     from graphkin.exercises.batch import run_roster
     from graphkin.exercises.grading import grade_variant
+    from graphkin.exercises.roster import read_class_csv, read_roster
+    from graphkin.exercises.sheets import format_report
 
     reveal = True if args.reveal else None
     if args.student:
         answers = _answers_json(args.answers)
         report = grade_variant(ex.variant(args.student, secret), answers, reveal=reveal)
-        text = json.dumps(report, indent=2, ensure_ascii=False) if args.json else format_report(report)
+        text = json_text(report) if args.json else format_report(report)
         _emit(text, args.output)
         return 0
-    rows = _read_csv(args.answers, "answers")
+    rows = read_class_csv(args.answers, "answers")
     if args.roster:
-        wanted = set(_roster(args.roster))
+        wanted = set(read_roster(args.roster))
         rows = [r for r in rows if r["student"] in wanted]
     answers = [{k: v for k, v in row.items() if k != "student" and k is not None} for row in rows]
     with _progress(len(rows), "grading") as bar:
         reports = run_roster(ex, "grade", [row["student"] for row in rows], secret, answers=answers, reveal=reveal,
                              progress=bar.update)
     if args.json:
-        text = json.dumps(reports, indent=2, ensure_ascii=False)
+        text = json_text(reports)
     else:
         flat = []
         for r in reports:
@@ -267,38 +242,3 @@ def _grade(ex, args, secret) -> int:
     return 0
 
 
-def format_sheet(sheet: dict) -> str:
-    """A student's sheet (or key) as text."""
-    lines = [sheet["title"], f"student: {sheet['student']}"]
-    if sheet.get("source"):
-        lines.append(f"source: {sheet['source']}")
-    if sheet.get("intro"):
-        lines += ["", sheet["intro"].strip()]
-    lines += ["", "Your data"]
-    lines += [f"  {g['shown']}" + (f"   ({g['label']})" if g["label"] else "") for g in sheet["data"]]
-    lines += ["", "Questions"]
-    for q in sheet["questions"]:
-        tol = f"{100 * q['tolerance']:g} %"
-        if q["form"] == "direction":
-            # An angle's slack is the direction error of a vector off by the tolerance; a peak's place, the grid's.
-            tol = "the step of the sweep" if q["part"] == "at" else f"{math.degrees(math.atan(q['tolerance'])):.2g}°"
-        unit = q["unit"].replace("*", "·").replace("^2", "²") or "no unit"
-        lines.append(f"  {q['id']}: {q['ask']}   [{unit}, within {tol}, {q['points']:g} point"
-                     f"{'s' if q['points'] != 1 else ''}]")
-        if "answer" in q:
-            lines.append(f"      answer: {q['answer']['text']}")
-    return "\n".join(lines)
-
-
-def format_report(report: dict) -> str:
-    """A graded answer sheet as text."""
-    lines = [f"{report['exercise']}, student {report['student']}: {report['score']:g} / {report['max']:g}"]
-    for q in report["questions"]:
-        slip = f" ({q['slip']})" if q["slip"] else ""
-        lines.append(f"  {q['id']:<10} {q['verdict']}{slip:<20} {q['score']:g}/{q['max']:g}   {q['answer']}")
-        lines.append(f"      {q['feedback']}")
-        if "expected" in q:
-            lines.append(f"      expected: {q['expected']}")
-    if report.get("ignored"):
-        lines.append(f"  not questions of this exercise (ignored): {', '.join(report['ignored'])}")
-    return "\n".join(lines)

@@ -79,7 +79,7 @@ def _secret(args) -> str:
 
 
 def _roster(args) -> int:
-    from graphkin.cli.exercise import _roster as read_roster
+    from graphkin.exercises.roster import read_roster
     from graphkin.handout.batch import make_roster
 
     folder = Path(args.output)

@@ -15,7 +15,6 @@ bound; such positions are reported, never raised.
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING
 
@@ -23,7 +22,7 @@ import numpy as np
 
 from graphkin.errors import GraphkinError
 from graphkin.model import PointForce, Torque
-from graphkin.analytical import ForceAnalysis, solve_forces
+from graphkin.analytical import ForceAnalysis
 from graphkin.cycle._sampling import Peak, check_problem, peak_of, sweep_positions
 
 if TYPE_CHECKING:

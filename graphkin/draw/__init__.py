@@ -22,10 +22,9 @@ Examples
 from __future__ import annotations
 
 import importlib
-import os
 from pathlib import Path
 
-from graphkin.files import file_mode
+from graphkin.files import replacing
 from graphkin.draw import style
 from graphkin.draw.axes import Drawn
 from graphkin.draw.convention import draw_sign_convention
@@ -65,7 +64,7 @@ def save(fig, path, *, dpi=None, **kwargs) -> Path:
 
     The figure is cropped to what is drawn (``bbox_inches="tight"``, with a
     0.08 in margin) on a white background. The file is written whole or not
-    at all: a temporary file in the same folder, then :func:`os.replace`.
+    at all (:func:`graphkin.files.replacing`).
 
     Parameters
     ----------
@@ -117,33 +116,10 @@ def save(fig, path, *, dpi=None, **kwargs) -> Path:
     if fmt in ("svg", "pdf"):
         # No creation date: the same figure gives the same file.
         kwargs.setdefault("metadata", {"Date": None} if fmt == "svg" else {"CreationDate": None})
-    # A temporary file in the same folder, then a rename: a reader never sees half a figure, and an
-    # interrupted or failed save leaves the old file (or none). The name is chosen before the file is made,
-    # inside the try that removes it: a Ctrl-C the moment it appears (inside tempfile.mkstemp) would leave it.
-    tmp = None
-    try:
-        for _ in range(100):
-            tmp = path.parent / f".{path.name}.{os.urandom(6).hex()}.tmp"
-            try:
-                os.close(os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o600))
-                break
-            except FileExistsError:
-                tmp = None
-        else:  # pragma: no cover - 100 random names all taken
-            raise FileExistsError(f"no free temporary name beside {path}")
-        if fmt == "png":
-            kwargs.setdefault("pil_kwargs", {"compress_level": PNG_LEVEL})
+    if fmt == "png":
+        kwargs.setdefault("pil_kwargs", {"compress_level": PNG_LEVEL})
+    with replacing(path, "figure") as tmp:
         fig.savefig(tmp, format=fmt, dpi=dpi, **kwargs)
-        # The file was made owner-only: the figure gets the permissions a plain open() would give it.
-        os.chmod(tmp, file_mode())
-        os.replace(tmp, path)
-    except BaseException:
-        if tmp is not None:
-            try:
-                os.unlink(tmp)
-            except OSError:
-                pass
-        raise
     return path
 
 

@@ -6,7 +6,7 @@ import math
 
 import numpy as np
 
-from graphkin.model import Prismatic, Torque
+from graphkin.model import Prismatic
 from graphkin.draw import style as _style
 from graphkin.draw.arrows import arc_points, arrow, moment_arrow, perp, unit
 from graphkin.draw.axes import MM, Drawn, had_content, line, new_axes, points_per_unit, set_limits, setup_axes

@@ -4,7 +4,6 @@ and text laid out once per process in SVG output."""
 from __future__ import annotations
 
 import functools
-import math
 import re
 import threading
 from contextlib import contextmanager
@@ -15,7 +14,6 @@ from matplotlib.font_manager import findfont
 from matplotlib.textpath import TextToPath
 
 from graphkin import notation
-from graphkin.draw.axes import MM
 
 _NAME = re.compile(r"^([−-]?)([A-Za-z])([a-z]?\d+(?:,\d+)?[a-z]?)([′″‴⁗]|⁽[⁰¹²³⁴⁵⁶⁷⁸⁹]+⁾)?$")
 SUBSCRIPTS = dict(zip("0123456789aehijklmnoprstuvx,", "₀₁₂₃₄₅₆₇₈₉ₐₑₕᵢⱼₖₗₘₙₒₚᵣₛₜᵤᵥₓ,"))

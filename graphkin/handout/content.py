@@ -35,7 +35,7 @@ A *run* is a str (plain text) or a math node (a list, see
 :mod:`graphkin.handout.maths`). Every number is formatted here, once, with
 :func:`graphkin.handout.maths.fmt`: the three renderers print the same digits.
 The numbers come from :func:`graphkin.report.solution` (the data of
-``graphkin solve --json``) and :func:`graphkin.cli.cycle_data` (``graphkin
+``graphkin solve --json``) and :func:`graphkin.report.cycle_data` (``graphkin
 cycle --json``); nothing is solved twice.
 """
 
@@ -848,7 +848,7 @@ def _blank(doc: _Doc, s: _Subject, c, drawn: bool):
                            "The free bodies to scale with the known loads ("
                            + ("" if s.static else "the inertia resultant on its offset line, ")
                            + "external loads) and the force scale; the joint forces are yours to find.")
-        doc.text(f"Draw the polygons at 1 mm = ", M.qty(scale, "N"), f" ({label}); step by step:")
+        doc.text("Draw the polygons at 1 mm = ", M.qty(scale, "N"), f" ({label}); step by step:")
         for k, step in enumerate(c.steps, start=1):
             if step.polygon:
                 doc.space(BLANK_SPACE, f"Step {k}. Force polygon of link {step.link}: ", _polygon_equation(step))
@@ -858,7 +858,7 @@ def _blank(doc: _Doc, s: _Subject, c, drawn: bool):
 def _cycle(doc: _Doc, s: _Subject):
     from graphkin import draw
     from graphkin.cycle import sweep
-    from graphkin.cli import cycle_data
+    from graphkin.report import cycle_data
 
     cycle = sweep(s.problem, s.cycle_positions)
     Cs = s.Cs if cycle.closed and not s.static else None  # a static analysis has no speed to keep steady

@@ -7,14 +7,12 @@ equations (r e^{iθ}): a rotation is one multiplication by e^{iθ}, and
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field
 from typing import Mapping
 
 import numpy as np
 
 from graphkin.geometry import as_xy, as_z
-from graphkin.geometry import zcross as cross
 from graphkin.geometry import zdot as dot
 from graphkin.model import Mechanism, Prismatic
 

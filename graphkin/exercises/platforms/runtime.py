@@ -72,7 +72,7 @@ def sheet(path_or_exercise, student: str, sheets=None, secret: str = "") -> dict
 
 def sheet_text(path_or_exercise, student: str, sheets=None, secret: str = "") -> str:
     """The student's sheet as text (data and questions), for a notebook cell to print."""
-    from graphkin.cli.exercise import format_sheet
+    from graphkin.exercises.sheets import format_sheet
 
     return format_sheet(sheet(path_or_exercise, student, sheets, secret))
 
