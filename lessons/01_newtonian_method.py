@@ -40,7 +40,8 @@ import numpy as np
 
 import graphkin.catalog
 from graphkin.geometry import cross
-from graphkin.report import format_solution, polar
+from graphkin.report import format_solution
+from graphkin.notation import polar
 from graphkin.analytical.matrix import assemble
 
 np.set_printoptions(precision=4, suppress=True)

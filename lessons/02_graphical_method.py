@@ -49,7 +49,7 @@ from graphkin import catalog, draw
 from graphkin.geometry import cross
 from graphkin.graphical import construct_forces
 from graphkin.problem import parse_problem
-from graphkin.report import polar
+from graphkin.notation import polar
 
 np.set_printoptions(precision=4, suppress=True)
 

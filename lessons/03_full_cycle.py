@@ -57,7 +57,7 @@ from graphkin.cycle.sweep import SWITCH
 from graphkin.geometry import cross
 from graphkin.graphical import construct_forces
 from graphkin.problem import parse_problem
-from graphkin.report import polar
+from graphkin.notation import polar
 from graphkin.analytical.matrix import assemble
 
 np.set_printoptions(precision=4, suppress=True)

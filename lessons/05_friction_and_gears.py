@@ -63,7 +63,7 @@ from graphkin.cycle.sweep import sweep
 from graphkin.geometry import cross
 from graphkin.graphical import construct_forces
 from graphkin.problem import parse_problem
-from graphkin.report import polar
+from graphkin.notation import polar
 from graphkin.analytical.matrix import assemble
 from graphkin.widgets import explore
 

@@ -130,7 +130,7 @@ def test_bad_input_is_one_line_and_exit_2(capsys, tmp_path, setup, args, expecte
 
 def test_a_failed_write_is_checked_before_the_work(capsys, tmp_path, monkeypatch):
     calls = []
-    monkeypatch.setattr(exercises.Exercise, "variant", lambda *a, **k: calls.append(a))
+    monkeypatch.setattr(exercises, "variant", lambda *a, **k: calls.append(a))
     (tmp_path / "FILE").write_text("x")
     code, _, err = run(capsys, "exercise", "key", "single_link", "--student", "s", "-o", str(tmp_path / "FILE" / "k"))
     assert code == 2 and not calls

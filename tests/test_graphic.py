@@ -10,7 +10,7 @@ from graphkin.geometry import cross
 from graphkin.graphical import construct_forces
 from graphkin.graphical.construction import Arrow, Step, nice_scale
 from graphkin.model import Driver, Link, Mechanism, PointForce, Prismatic, Revolute
-from graphkin.report import polar
+from graphkin.notation import polar
 from graphkin.analytical import solve
 
 

@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from graphkin import catalog
-from graphkin.report import polar
+from graphkin.notation import polar
 
 REL = 2e-3
 

@@ -28,15 +28,21 @@ from dataclasses import replace
 
 import numpy as np
 
-from graphkin.errors import GraphkinError
-from graphkin.kinematics import Dyad, DriverGroup, GearGroup, Kinematics
-from graphkin.kinematics.dyads import CHUNK, _run, deferred_kinematics, prepare, solve_columns
-from graphkin.kinematics.plan import Plan, plan_of
-from graphkin.geometry import zcross as cross
-from graphkin.geometry import zdot as dot
-from graphkin.model import Mechanism, Prismatic, Revolute
 from graphkin.analytical.loads import _external_fast, _inertia_fast, _known, load_specs
 from graphkin.analytical.result import ForceAnalysis
+from graphkin.errors import GraphkinError
+from graphkin.geometry import zcross as cross
+from graphkin.geometry import zdot as dot
+from graphkin.kinematics import DriverGroup, Dyad, GearGroup, Kinematics
+from graphkin.kinematics.dyads import (
+    CHUNK,
+    _run,
+    deferred_kinematics,
+    prepare,
+    solve_columns,
+)
+from graphkin.kinematics.plan import Plan, plan_of
+from graphkin.model import Mechanism, Prismatic, Revolute
 
 
 class _Reactions:

@@ -6,9 +6,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from graphkin.kinematics import Kinematics
 from graphkin.geometry import as_xy
 from graphkin.geometry import zcross as cross
+from graphkin.kinematics import Kinematics
 from graphkin.model import PointForce, Torque
 
 

@@ -20,12 +20,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from graphkin.geometry import cross, perp
-from graphkin.geometry import as_xy
-from graphkin.model import GearMesh, Prismatic, Revolute
 from graphkin.analytical.kinetostatics import _w
 from graphkin.analytical.loads import known_loads
 from graphkin.analytical.result import ForceAnalysis
+from graphkin.geometry import as_xy, cross, perp
+from graphkin.model import GearMesh, Prismatic, Revolute
 
 
 @dataclass(frozen=True)

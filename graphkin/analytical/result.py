@@ -8,10 +8,10 @@ from typing import Mapping
 
 import numpy as np
 
+from graphkin.analytical.loads import Inertia, inertia
 from graphkin.errors import GraphkinError
 from graphkin.kinematics import Kinematics
 from graphkin.model import GearMesh, Prismatic
-from graphkin.analytical.loads import Inertia, inertia
 
 _NAME = re.compile(r"^([FGT])(\d)(\d)$|^([FGT])_?(\d+),(\d+)$")
 

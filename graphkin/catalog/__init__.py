@@ -6,6 +6,7 @@ from importlib import resources
 from pathlib import Path
 
 from graphkin.errors import GraphkinError
+from graphkin.problem import load_problem
 
 DEFAULT = "double_slider"
 """The example ``make demo`` solves."""
@@ -60,8 +61,6 @@ def flywheel_path(name: str) -> Path:
 
 def load(name_or_path: str):
     """A :class:`graphkin.problem.Problem` from a catalog name or a file path."""
-    from graphkin.problem import load_problem
-
     if not isinstance(name_or_path, (str, Path)):
         raise GraphkinError(f"catalog.load takes a catalog name ({', '.join(names())}) or a file path, "
                             f"got {type(name_or_path).__name__} {name_or_path!r}")

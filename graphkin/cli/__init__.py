@@ -46,8 +46,8 @@ def _parser() -> argparse.ArgumentParser:
     c.add_argument("--json", action="store_true", help="print every array as JSON in SI units (schema: docs/json.md)")
     c.add_argument("--figure", metavar="FILE", help="write the cycle figure (.png, .svg or .pdf)")
     from graphkin.cli.exercise import add_parser
-    from graphkin.cli.flywheel import add_parser as add_flywheel
     from graphkin.cli.explore import add_parser as add_explore
+    from graphkin.cli.flywheel import add_parser as add_flywheel
     from graphkin.cli.handout import add_parser as add_handout
 
     add_parser(sub)
@@ -204,11 +204,10 @@ def _cycle(args) -> int:
 
     from graphkin import catalog
     from graphkin.cycle import sweep
-    from graphkin.files import json_text
-    from graphkin.report import cycle_data, format_cycle
-
     from graphkin.cycle.flywheel import check_Cs
+    from graphkin.files import json_text
     from graphkin.ranges import MAX_POSITIONS
+    from graphkin.report import cycle_data, format_cycle
 
     _check_outputs(args.figure)
     if args.cs is not None:

@@ -109,7 +109,7 @@ def _run(args) -> int:
             rows = run_roster(ex, args.action, students, secret, progress=bar.update)
         text = json_text(rows) if args.json else _csv(_flat(rows))
     else:
-        v = ex.variant(args.student, secret)
+        v = exercises.variant(ex, args.student, secret)
         sheet = v.key() if args.action == "key" else v.sheet()
         if figure:
             _given_figure(v, figure)
@@ -201,6 +201,7 @@ def _answers_json(path) -> dict:
 
 
 def _grade(ex, args, secret) -> int:
+    from graphkin import exercises
     from graphkin.exercises.batch import run_roster
     from graphkin.exercises.grading import grade_variant
     from graphkin.exercises.roster import read_class_csv, read_roster
@@ -209,7 +210,7 @@ def _grade(ex, args, secret) -> int:
     reveal = True if args.reveal else None
     if args.student:
         answers = _answers_json(args.answers)
-        report = grade_variant(ex.variant(args.student, secret), answers, reveal=reveal)
+        report = grade_variant(exercises.variant(ex, args.student, secret), answers, reveal=reveal)
         text = json_text(report) if args.json else format_report(report)
         _emit(text, args.output)
         return 0

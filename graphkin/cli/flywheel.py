@@ -13,7 +13,6 @@ prints as one line with exit code 2.
 from __future__ import annotations
 
 
-
 def add_parser(sub) -> None:
     """Add ``flywheel`` to the ``graphkin`` subcommands."""
     f = sub.add_parser("flywheel", help="size a flywheel from a turning-moment diagram (engine torque against angle), "

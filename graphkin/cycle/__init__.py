@@ -4,9 +4,9 @@ force and moment, transmission angle, flywheel sizing and the joint-force index.
 Compute only (numpy): the drawing layer plots these results.
 """
 
-from graphkin.cycle.sweep import Cycle, Peak, Peaks, sweep
 from graphkin.cycle.flywheel import Disk, Flywheel, Pulse, Rim, size_flywheel
 from graphkin.cycle.index import JointForceIndex, joint_force_index, static_problem
+from graphkin.cycle.sweep import Cycle, Peak, Peaks, sweep
 
 __all__ = [
     "Cycle", "Disk", "Flywheel", "JointForceIndex", "Peak", "Peaks", "Pulse", "Rim",

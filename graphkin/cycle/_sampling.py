@@ -12,8 +12,9 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from graphkin.errors import GraphkinError
 from graphkin.cycle._turn import TURN, closing_step
+from graphkin.errors import GraphkinError
+from graphkin.units import MAX_POSITIONS
 
 if TYPE_CHECKING:
     from graphkin.problem import Problem
@@ -42,7 +43,6 @@ def positions(problem: "Problem", n: int | None = None) -> np.ndarray | None:
             f"{problem.name}: the driver is a slider, so there is no turn to divide into n positions;"
             " sweep it at the problem's own positions (n=None)"
         )
-    from graphkin.units import MAX_POSITIONS
 
     if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or not 2 <= n <= MAX_POSITIONS:
         raise GraphkinError(f"n must be a whole number of positions from 2 to {MAX_POSITIONS:,} (the limit of a "

@@ -28,9 +28,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from graphkin.cycle._sampling import peak_of
+from graphkin.cycle._turn import TURN, closing_step, steps
 from graphkin.errors import GraphkinError
 from graphkin.ranges import complaint
-from graphkin.cycle._turn import TURN, closing_step, steps
 
 
 @dataclass(frozen=True)
@@ -445,8 +446,6 @@ class Flywheel:
 
         The torques are linear between samples, so the extremes lie at samples.
         """
-        from graphkin.cycle._sampling import peak_of
-
         a = self.acceleration()
         return peak_of(a, self.theta), peak_of(a, self.theta, lowest=True)
 

@@ -33,8 +33,11 @@ from typing import Any, Mapping
 
 import numpy as np
 
+from graphkin.cycle.flywheel import size_flywheel
 from graphkin.errors import GraphkinError, ProblemFileError
+from graphkin.files import read_text
 from graphkin.problem import _Reader
+from graphkin.problem.tables import parse_table, read_csv_beside
 
 _TOP = {"title", "source", "notes", "flywheel", "driving", "resisting"}
 _FLYWHEEL = {"omega_avg", "Cs", "I", "period"}
@@ -84,8 +87,6 @@ class FlywheelProblem:
 
     def size(self):
         """The flywheel (:func:`graphkin.cycle.size_flywheel`): I_s from C_s, or C_s from I."""
-        from graphkin.cycle.flywheel import size_flywheel
-
         return size_flywheel(self.theta, driving=self.driving, resisting=self.resisting, omega_avg=self.omega_avg,
                              Cs=self.Cs, I=self.I, period=self.period)
 
@@ -98,8 +99,6 @@ def load_flywheel(source: str | Path, *, name: str | None = None) -> FlywheelPro
     ProblemFileError
         With the file, the field and what is wrong.
     """
-    from graphkin.files import read_text
-
     if not isinstance(source, (str, Path)) or not str(source):
         raise GraphkinError(f"load_flywheel takes the path of a flywheel file (a str or Path), got "
                             f"{type(source).__name__} {source!r}")
@@ -199,7 +198,6 @@ def _torque(rd: _Reader, t: dict, role: str, period: float, base):
             return None, "mean", "constant, the mean of the other torque"
         x = rd.si(value, "torque", f"{role}.torque")
         return None, x, f"constant, {x:.6g} N·m"
-    from graphkin.problem.tables import parse_table, read_csv_beside
 
     if "table" in t:
         text, shown, where = rd.text(t["table"], f"{role}.table"), None, f"{role}.table"

@@ -20,10 +20,12 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from graphkin.analytical import ForceAnalysis
+from graphkin.analytical.loads import applied
+from graphkin.cycle._sampling import Peak, check_problem, peak_of, sweep_positions
+from graphkin.cycle.flywheel import _positive
 from graphkin.errors import GraphkinError
 from graphkin.model import PointForce, Torque
-from graphkin.analytical import ForceAnalysis
-from graphkin.cycle._sampling import Peak, check_problem, peak_of, sweep_positions
 
 if TYPE_CHECKING:
     from graphkin.problem import Problem
@@ -95,8 +97,6 @@ def static_problem(problem: "Problem") -> "Problem":
 
 def _reference_load(problem: "Problem", kin) -> tuple[np.ndarray, str]:
     """The external load the index divides by at each position of ``kin``, and the index's units."""
-    from graphkin.analytical.loads import applied
-
     mech = problem.mechanism
     forces = [l for l in mech.loads if isinstance(l, PointForce)]
     torques = [l for l in mech.loads if isinstance(l, Torque)]
@@ -150,8 +150,6 @@ def joint_force_index(problem: "Problem", n: int | None = None, *, limit: float 
 
 def index_at(problem: "Problem", at, limit: float = 2.0) -> JointForceIndex:
     """:func:`joint_force_index` at input positions ``at`` (SI; None for the problem's own)."""
-    from graphkin.cycle.flywheel import _positive
-
     limit = _positive(limit, "limit")
     static = static_problem(problem)
     result = static.solve(at=at)

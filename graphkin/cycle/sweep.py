@@ -16,19 +16,28 @@ from typing import TYPE_CHECKING, Mapping
 
 import numpy as np
 
+from graphkin.analytical import ForceAnalysis
+from graphkin.cycle._sampling import (
+    SWITCH,
+    Peak,
+    check_problem,
+    peak_of,
+    positions,
+    sweep_positions,
+    switching_angles,
+    switching_samples,
+)
+from graphkin.cycle._turn import TURN, closing_step, weights
+from graphkin.cycle.flywheel import size_flywheel
+from graphkin.cycle.index import JointForceIndex, index_at
 from graphkin.errors import GraphkinError
 from graphkin.geometry import cross
-from graphkin.notation import position_text
 from graphkin.model import GearMesh, Prismatic, Revolute
-from graphkin.analytical import ForceAnalysis
-from graphkin.cycle._sampling import (SWITCH, Peak, check_problem, peak_of, positions, sweep_positions, switching_angles,
-                        switching_samples)
-from graphkin.cycle._turn import TURN, closing_step, weights
-from graphkin.cycle.index import JointForceIndex, index_at
+from graphkin.notation import position_text
 
 if TYPE_CHECKING:
-    from graphkin.problem import Problem
     from graphkin.cycle.flywheel import Flywheel
+    from graphkin.problem import Problem
 
 __all__ = ["SWITCH", "Cycle", "Peak", "Peaks", "check_problem", "peak_of", "positions", "sweep", "sweep_positions",
            "switching_angles", "switching_samples"]
@@ -309,8 +318,6 @@ class Cycle:
         Cs : float
             Coefficient of speed fluctuation (ω_max − ω_min)/ω_avg, e.g. 0.05.
         """
-        from graphkin.cycle.flywheel import size_flywheel
-
         why = self.why_no_flywheel()
         if why:
             raise GraphkinError(f"{self.problem.name}: {why}")

@@ -24,7 +24,6 @@ from __future__ import annotations
 import importlib
 from pathlib import Path
 
-from graphkin.files import replacing
 from graphkin.draw import style
 from graphkin.draw.axes import Drawn
 from graphkin.draw.convention import draw_sign_convention
@@ -34,6 +33,7 @@ from graphkin.draw.labels import measuring_renderer
 from graphkin.draw.mechanism import draw_mechanism
 from graphkin.draw.polygon import draw_force_polygon
 from graphkin.draw.solution import comparison_rows, draw_solution
+from graphkin.files import replacing
 
 FORMATS = ("png", "svg", "pdf")
 

@@ -30,10 +30,10 @@ from matplotlib.figure import Figure
 from matplotlib.ticker import Formatter, MaxNLocator
 
 from graphkin.cycle._turn import TURN
-from graphkin.errors import GraphkinError
 from graphkin.draw import style as _style
 from graphkin.draw.axes import Drawn, PanelAxes, line, markers, new_axes
 from graphkin.draw.text import halo, sub, subscript
+from graphkin.errors import GraphkinError
 from graphkin.notation import num
 
 SERIES = (_style.BLUE, _style.VERMILLION, _style.GREEN, _style.PURPLE, _style.ORANGE, _style.SKY_BLUE, _style.BLACK)

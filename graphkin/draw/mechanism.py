@@ -7,13 +7,24 @@ import math
 import numpy as np
 from matplotlib.patches import Circle, Polygon
 
-from graphkin.model import GearMesh, Prismatic, Revolute
 from graphkin.draw import style as _style
 from graphkin.draw.arrows import arc_points, perp, unit
-from graphkin.draw.axes import MM, Drawn, had_content, line, markers, new_axes, points_per_unit, put, set_limits, setup_axes
+from graphkin.draw.axes import (
+    MM,
+    Drawn,
+    had_content,
+    line,
+    markers,
+    new_axes,
+    points_per_unit,
+    put,
+    set_limits,
+    setup_axes,
+)
 from graphkin.draw.labels import Labeler, point_label_candidates
 from graphkin.draw.scales import nice_round, scale_bar
 from graphkin.draw.text import sub
+from graphkin.model import GearMesh, Prismatic, Revolute
 
 PINION_TEETH = 16
 """Teeth on the smallest gear of a train (the others have as many more as their radius is larger)."""

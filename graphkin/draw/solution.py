@@ -9,12 +9,12 @@ from matplotlib.figure import Figure
 
 from graphkin.draw import style as _style
 from graphkin.draw.axes import PanelAxes
-from graphkin.draw.text import input_text, sub
-from graphkin.notation import num, polar_text
 from graphkin.draw.convention import draw_sign_convention
 from graphkin.draw.fbd import draw_free_body
 from graphkin.draw.mechanism import draw_mechanism
 from graphkin.draw.polygon import draw_force_polygon, step_title
+from graphkin.draw.text import input_text, sub
+from graphkin.notation import num, polar_text
 
 NCOLS = 4
 

@@ -12,10 +12,10 @@ from graphkin.draw import style as _style
 from graphkin.draw.arrows import arrow, perp, unit
 from graphkin.draw.axes import MM, PanelAxes, markers, set_limits
 from graphkin.draw.labels import Labeler, point_label_candidates
-from graphkin.draw.text import input_text, sub
-from graphkin.notation import num
 from graphkin.draw.mechanism import Geometry, draw_mechanism
 from graphkin.draw.polygon import draw_force_polygon, step_title
+from graphkin.draw.text import input_text, sub
+from graphkin.notation import num
 
 KIND_TITLE = {
     "resultant": "resultant of the known loads",

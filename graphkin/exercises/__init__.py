@@ -27,8 +27,16 @@ from importlib import resources
 from pathlib import Path
 
 from graphkin.errors import GraphkinError
-from graphkin.exercises.exercise import SLIPS, Exercise, Question, Vary, load_exercise, parse_exercise
-from graphkin.exercises.variant import MAX_ATTEMPTS, Variant, make_variant
+from graphkin.exercises.exercise import (
+    SLIPS,
+    Exercise,
+    Question,
+    Vary,
+    load_exercise,
+    parse_exercise,
+)
+from graphkin.exercises.grading import grade_variant
+from graphkin.exercises.variants import MAX_ATTEMPTS, Variant, make_variant
 
 __all__ = ["Exercise", "Question", "Vary", "Variant", "SLIPS", "MAX_ATTEMPTS", "names", "load", "load_exercise",
            "parse_exercise", "path", "variant", "make", "key", "grade", "check"]
@@ -91,8 +99,6 @@ def grade(exercise: str | Exercise, student: str, answers, secret: str = "", *, 
     diagnosed, the points and a sentence of feedback; the expected value only
     where the exercise (or ``reveal``) allows it.
     """
-    from graphkin.exercises.grading import grade_variant
-
     return grade_variant(variant(exercise, student, secret), answers, reveal=reveal)
 
 

@@ -6,7 +6,7 @@ come back as plain data in the roster's order. A student always goes to the
 same worker (shard = position in the roster modulo the number of workers),
 and the workers live for the whole session, so the variants a worker made
 for the sheets serve the keys and the grades too (see
-:data:`graphkin.exercises.variant.CACHE_SIZE`). Small rosters (or one core)
+:data:`graphkin.exercises.variants.CACHE_SIZE`). Small rosters (or one core)
 run in this process, where starting workers would cost more than it saves.
 """
 
@@ -16,7 +16,10 @@ import atexit
 import os
 from concurrent.futures import ProcessPoolExecutor
 
+from graphkin.errors import GraphkinError
 from graphkin.exercises.exercise import Exercise
+from graphkin.exercises.grading import grade_variant
+from graphkin.exercises.variants import make_variant
 
 PARALLEL_FROM = 200
 """Rosters of at least this many students are spread over the cores."""
@@ -26,17 +29,14 @@ _WORKERS: list[ProcessPoolExecutor] = []
 
 
 def _one(exercise: Exercise, action: str, student: str, secret: str, answers, reveal):
-    from graphkin.errors import GraphkinError
-
     try:
-        v = exercise.variant(student, secret)
+        v = make_variant(exercise, student, secret)
     except GraphkinError as exc:
         return {"student": student, "error": str(exc)}
     if action == "make":
         return v.sheet()
     if action == "key":
         return v.key()
-    from graphkin.exercises.grading import grade_variant
 
     return grade_variant(v, answers or {}, reveal=reveal)
 

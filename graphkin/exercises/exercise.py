@@ -16,8 +16,13 @@ from decimal import Decimal, InvalidOperation
 from pathlib import Path
 from typing import Any
 
+from graphkin import catalog
+from graphkin.analytical.result import parse_force_name
 from graphkin.errors import GraphkinError, ProblemFileError
+from graphkin.files import read_text
 from graphkin.problem import _Reader as ProblemReader
+from graphkin.problem import build_problem
+from graphkin.units import to_si
 
 _TOP = {"title", "source", "problem", "intro", "route", "vary", "questions", "partial", "positions", "flywheel",
         "reveal", "max_force_ratio", "max_speed_ratio", "draw"}
@@ -212,12 +217,6 @@ class Exercise:
                 return q
         raise GraphkinError(f"{self.id}: no question {qid!r} (questions: {', '.join(q.id for q in self.questions)})")
 
-    def variant(self, student: str, secret: str = ""):
-        """This exercise's data for one student (:class:`graphkin.exercises.variant.Variant`)."""
-        from graphkin.exercises.variant import make_variant
-
-        return make_variant(self, student, secret)
-
 
 class _Reader(ProblemReader):
     """The problem files' reader (file name in every message, unknown fields with a hint), with the
@@ -345,12 +344,9 @@ def _question(rd: _Reader, t: dict, where: str, names: set[str], driver: str, ro
     if "floor" in t and part in ("direction", "at"):
         raise rd.fail(f"{where}.floor", "applies to values, not to angles (an angle's slack comes from the tolerance)")
     if "floor" in t:
-        from graphkin.units import to_si
-
         floor = to_si(t["floor"], dimension_of(kind, part), field=f"{where}.floor", file=rd.file)
         if floor < 0:
             raise rd.fail(f"{where}.floor", f"must not be negative, got {t['floor']!r}")
-    from graphkin.units import to_si
 
     if unit:
         # The unit must suit the question: "mm" for a force is a slip in the file, not the student's.
@@ -389,8 +385,6 @@ def load_exercise(source: str | Path, *, name: str | None = None) -> Exercise:
     ProblemFileError
         Naming the file and the field at fault.
     """
-    from graphkin.files import read_text
-
     path = Path(source)
     file = name or str(path)
     text = read_text(path, "exercise", shown=file)
@@ -399,8 +393,6 @@ def load_exercise(source: str | Path, *, name: str | None = None) -> Exercise:
 
 def parse_exercise(text: str, *, file: str = "<exercise>", id: str = "exercise", folder: Path | None = None) -> Exercise:
     """Build an :class:`Exercise` from TOML text (relative problem paths from ``folder``)."""
-    from graphkin import catalog
-
     rd = _Reader(file)
     try:
         data = tomllib.loads(text)
@@ -414,18 +406,15 @@ def parse_exercise(text: str, *, file: str = "<exercise>", id: str = "exercise",
         base_path = (folder or Path(".")) / problem
         if not base_path.is_file():
             raise rd.fail("problem", f"{problem!r} is neither a catalog problem ({', '.join(catalog.names())}) nor a file")
-    from graphkin.files import read_text
 
     base_text = read_text(base_path, "problem", shown=str(base_path))
     try:
         base = tomllib.loads(base_text)
     except tomllib.TOMLDecodeError as exc:
         raise rd.fail("problem", f"{problem!r} cannot be read ({exc})") from None
-    from graphkin.problem import build_problem
 
     problem_obj = build_problem(base, file=problem)
     mech = problem_obj.mechanism
-    from graphkin.analytical.result import parse_force_name
 
     names = set()
     for J in mech.joints:
@@ -540,9 +529,6 @@ def _check_field(rd: _Reader, base: dict, symbol: str, field: str) -> None:
 def _check_values(rd: _Reader, base: dict, problem: str, vary: list[Vary]) -> None:
     """Every value of every varied field must be one the problem file accepts there (units, field name)."""
     import copy
-
-    from graphkin.problem import build_problem
-    from graphkin.units import to_si
 
     for v in vary:
         # The ends and the middle: a unit or a field name at fault shows on any of them.

@@ -18,9 +18,16 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping
 
+from graphkin.analytical.result import parse_force_name
 from graphkin.exercises.answers import Reading, Unreadable, read_answer
 from graphkin.exercises.exercise import CYCLE_KINDS, dimension_of
-from graphkin.exercises.quantities import Expected, _distance, _unit_text, unit_factor, value_of
+from graphkin.exercises.quantities import (
+    Expected,
+    _distance,
+    _unit_text,
+    unit_factor,
+    value_of,
+)
 
 #: Verdicts a question can get.
 VERDICTS = ("correct", "slip", "wrong", "unreadable", "missing")
@@ -112,8 +119,6 @@ def _names(exp: Expected, variant):
     name = q.find if q.kind in ("force", "driver_torque", "driver_force", "inertia_force", "inertia_torque") else q.id
     other, i, j = name, "", ""
     if q.kind == "force":
-        from graphkin.analytical.result import parse_force_name
-
         i, j = parse_force_name(variant.problem.mechanism, q.find)
         other = f"{q.find[0]}{j}{i}"
     sense = ""
@@ -249,7 +254,7 @@ def grade_variant(variant, answers, *, reveal: bool | None = None) -> dict:
 
     Parameters
     ----------
-    variant : graphkin.exercises.variant.Variant
+    variant : graphkin.exercises.variants.Variant
     answers : mapping of str to str
         Question id → the answer as typed. Missing ids score 0; unknown ids
         are listed under ``"ignored"``.

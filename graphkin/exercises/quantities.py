@@ -14,9 +14,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from graphkin.notation import num, polar_text
-
+from graphkin.analytical.result import parse_force_name
 from graphkin.exercises.exercise import Question, dimension_of
+from graphkin.notation import num, polar_text
+from graphkin.units import to_si
 
 # SI unit of each dimension, as printed in keys.
 _SI = {"force": "N", "torque": "N*m", "length": "m", "angle": "rad", "energy": "J",
@@ -82,7 +83,6 @@ def unit_factor(unit: str, dimension: str) -> float:
     """SI value of one ``unit`` (1 for ``"mm"`` → 0.001)."""
     if not unit:
         return 1.0
-    from graphkin.units import to_si
 
     return to_si(f"1 {unit}", dimension, field="unit")
 
@@ -162,8 +162,6 @@ def value_of(solved, q: Question):
     if kind == "average_torque":
         return cycle.average
     if kind == "peak_force":
-        from graphkin.analytical.result import parse_force_name
-
         i, j = parse_force_name(solved.problem.mechanism, q.find.split(".", 1)[1])
         p = cycle.peaks().forces[cycle.analysis.name_of(min(i, j), max(i, j))]
         return p.value if part == "magnitude" else p.at
@@ -249,8 +247,6 @@ def _hint(solved, q: Question) -> str:
         if kind == "concurrency" and f"I{q.link}" in step.points:
             return _step_hint(n, step)
     if kind == "force":
-        from graphkin.analytical.result import parse_force_name
-
         i, j = parse_force_name(solved.problem.mechanism, q.find)
         return f"the equilibrium of link {j} (ΣF = 0, ΣM = 0: its rows of [A]{{x}} = {{b}})"
     return ""

@@ -8,7 +8,6 @@ import io
 from graphkin.errors import GraphkinError
 from graphkin.files import read_text
 
-
 MAX_ROSTER = 100_000
 """The most rows a class file may have."""
 

@@ -4,7 +4,14 @@ Uses shapely for the geometry and never matplotlib; :mod:`graphkin.draw`
 draws what this builds.
 """
 
-from graphkin.graphical.construction import Arrow, Construction, Line, Step, SubProblem, nice_scale
 from graphkin.graphical.build import construct_forces
+from graphkin.graphical.construction import (
+    Arrow,
+    Construction,
+    Line,
+    Step,
+    SubProblem,
+    nice_scale,
+)
 
 __all__ = ["Arrow", "Construction", "Line", "Step", "SubProblem", "construct_forces", "nice_scale"]

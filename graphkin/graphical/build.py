@@ -45,13 +45,21 @@ import math
 import numpy as np
 import shapely
 
+from graphkin.analytical.loads import applied_at, inertia
 from graphkin.errors import GraphkinError
-from graphkin.notation import PICOMETRE, largest, num, unless_rounding
-from graphkin.kinematics import Dyad, DriverGroup, GearGroup, Kinematics
 from graphkin.geometry import zcross as cross
 from graphkin.geometry import zdot as dot
-from graphkin.model import Prismatic, Revolute
-from graphkin.graphical.construction import Arrow, Construction, Line, Step, SubProblem, nice_scale
+from graphkin.graphical.construction import (
+    Arrow,
+    Construction,
+    Line,
+    Step,
+    SubProblem,
+    nice_scale,
+)
+from graphkin.kinematics import DriverGroup, Dyad, GearGroup, Kinematics
+from graphkin.model import GearMesh, PointForce, Prismatic, Revolute, Torque
+from graphkin.notation import PICOMETRE, largest, num, unless_rounding
 
 CLOSE = 1e-9
 """Relative tolerance of the closure check of a polygon."""
@@ -275,8 +283,6 @@ class _Builder:
             W = -1j * body.mass * self.mech.gravity
             load.add(W, G)
             parts.append(f"its weight {_n(abs(W))} N acts at G{link}")
-        from graphkin.model import PointForce, Torque
-        from graphkin.analytical.loads import applied_at
 
         for ld in self.mech.loads:
             if ld.link != link:
@@ -861,9 +867,6 @@ def construct_forces(kin: Kinematics, index: int = 0) -> Construction:
 
 def _geometry(kin: Kinematics, i: int) -> dict:
     """Plain-data geometry of position i, for drawing and handouts."""
-    from graphkin.model import GearMesh, PointForce, Torque
-    from graphkin.analytical.loads import applied_at, inertia
-
     mech = kin.mechanism
     points = {link.number: {name: _xy(complex(kin.z(link.number, name)[i])) for name in link.points} for link in mech.links}
     G = {link: _xy(complex(kin.z_G(link)[i])) for link in mech.moving}

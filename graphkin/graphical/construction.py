@@ -12,7 +12,9 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from graphkin.analytical.result import parse_force_name
 from graphkin.errors import GraphkinError
+from graphkin.model import GearMesh, Prismatic
 
 
 @dataclass(frozen=True)
@@ -255,8 +257,6 @@ class Construction:
         A prismatic pair's force is placed at the slider point; the couple it
         also transmits is in :attr:`couple` (see :meth:`couple_on`).
         """
-        from graphkin.model import GearMesh, Prismatic
-
         out = []
         for joint in self.mechanism.joints_of(link):
             other = (set(joint.links) - {link}).pop()
@@ -297,8 +297,6 @@ class Construction:
         return _force_of(self.forces, i, j)
 
     def __getitem__(self, name: str):
-        from graphkin.analytical.result import parse_force_name
-
         if name == self.driver_name:
             # As in ForceAnalysis: a torque is a number, a slider's force a vector.
             return self.effort if self.driver_vector is None else np.asarray(self.driver_vector)

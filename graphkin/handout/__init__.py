@@ -32,6 +32,9 @@ from pathlib import Path
 from graphkin.errors import GraphkinError
 from graphkin.files import check_destination, write_bytes
 from graphkin.handout.content import VERSIONS, build
+from graphkin.handout.html import render as page
+from graphkin.handout.markdown import render as md
+from graphkin.handout.typst import render as pdf
 
 FORMATS = {".pdf": "pdf", ".html": "html", ".htm": "html", ".md": "md"}
 """File suffixes a handout can be written to, and the format each means."""
@@ -64,16 +67,10 @@ def render(doc: dict, fmt: str, *, folder: str = "figures") -> tuple[bytes, dict
         For Markdown: the figures' folder, relative to the document.
     """
     if fmt == "pdf":
-        from graphkin.handout.typst import render as pdf
-
         return pdf(doc), {}
     if fmt == "html":
-        from graphkin.handout.html import render as page
-
         return page(doc).encode("utf-8"), {}
     if fmt == "md":
-        from graphkin.handout.markdown import render as md
-
         text, files = md(doc, folder)
         return text.encode("utf-8"), files
     raise GraphkinError(f"unknown handout format {fmt!r} (pdf, html or md)")

@@ -18,6 +18,8 @@ from concurrent.futures import ProcessPoolExecutor, as_completed
 from pathlib import Path
 
 from graphkin.errors import GraphkinError
+from graphkin.handout import build, write
+from graphkin.handout.content import subject
 
 CHUNK = 2
 """Students per task. Sending a task costs about a millisecond and a student's sheet and key nearly a second,
@@ -48,9 +50,6 @@ def file_stem(student: str) -> str:
 
 def _one(exercise: str, student: str, secret: str, versions: tuple, fmt: str, folder: str, Cs) -> tuple:
     """Make one student's handouts; (student, files written, error or "")."""
-    from graphkin.handout import build, write
-    from graphkin.handout.content import subject
-
     try:
         s = subject(exercise, student=student, secret=secret, Cs=Cs)
         written = []

@@ -47,10 +47,20 @@ from pathlib import Path
 
 import numpy as np
 
+from graphkin import catalog, exercises
+from graphkin.analytical.matrix import assemble
+from graphkin.cycle import sweep
 from graphkin.errors import GraphkinError
-from graphkin.notation import input_text
+from graphkin.exercises.exercise import set_field
+from graphkin.exercises.variants import Variant, pretty
+from graphkin.graphical import construct_forces
 from graphkin.handout import maths as M
 from graphkin.handout.figures import Picture
+from graphkin.handout.loops import groups
+from graphkin.model import Revolute
+from graphkin.notation import input_text
+from graphkin.report import cycle_data, solution
+from graphkin.units import to_si
 
 VERSIONS = ("key", "sheet", "blank")
 
@@ -141,16 +151,12 @@ class _Subject:
         """The graphical construction at position ``i`` (None where the linkage has no solution), built once."""
         key = f"construction-{i}"
         if key not in self.__dict__:
-            from graphkin.graphical import construct_forces
-
             self.__dict__[key] = construct_forces(self.result.kinematics, i) if self.result.valid[i] else None
         return self.__dict__[key]
 
     def data(self) -> dict:
         """:func:`graphkin.report.solution` of the worked positions, graphical route included (made once)."""
         if "_data" not in self.__dict__:
-            from graphkin.report import solution
-
             graphical = [None] * self.n
             for i in self.worked():
                 graphical[i] = self.construction(i)
@@ -185,8 +191,6 @@ class _Subject:
 
 def _read_raw(name: str) -> dict:
     """A problem file's data as written (units and all), for the table of given data."""
-    from graphkin import catalog
-
     path = catalog.path(name) if name in catalog.names() else Path(name)
     try:
         return tomllib.loads(path.read_text(encoding="utf-8"))
@@ -196,10 +200,6 @@ def _read_raw(name: str) -> dict:
 
 def subject(source, *, student=None, secret="", at=None, Cs=None):
     """Resolve what a handout is about: a problem (name or file) or, with ``student``, an exercise variant."""
-    from graphkin import catalog, exercises
-    from graphkin.exercises.exercise import set_field
-    from graphkin.exercises.variant import Variant
-
     if isinstance(source, Variant) or student is not None:
         if at is not None:
             raise GraphkinError("--at: an exercise's position is part of the student's data; leave --at out")
@@ -218,8 +218,6 @@ def subject(source, *, student=None, secret="", at=None, Cs=None):
                                 "(or a class with --roster FILE.csv)") from None
         raise
     if isinstance(at, str):
-        from graphkin.units import to_si
-
         dim = "angle" if problem.mechanism.driver.crank else "length"
         at = np.array([to_si(part.strip(), dim, field="--at", file="command line") for part in at.split(",")])
     elif at is not None:
@@ -349,8 +347,6 @@ def _paragraphs(text: str) -> list[str]:
 
 def _pretty(value) -> str:
     """A value of the problem file as written, in a book's notation (``"7.6 deg"`` → ``7.6°``)."""
-    from graphkin.exercises.variant import pretty
-
     if isinstance(value, str):
         return pretty(value)
     if isinstance(value, bool):
@@ -514,8 +510,6 @@ def _mechanism(doc: _Doc, s: _Subject, c, i: int):
 
 def _pick_point(s: _Subject, link: int) -> str:
     """The point the acceleration of G is taken from: a frame pivot if the link has one, else a shared pin."""
-    from graphkin.model import Revolute
-
     joints = [j for j in s.mech.joints_of(link) if isinstance(j, Revolute)]
     joints.sort(key=lambda j: (s.mech.frame not in j.links, min(set(j.links) - {link})))
     if joints:
@@ -524,8 +518,6 @@ def _pick_point(s: _Subject, link: int) -> str:
 
 
 def _kinematics(doc: _Doc, s: _Subject, entry: dict, i: int):
-    from graphkin.handout.loops import groups
-
     kin = s.result.kinematics
     doc.heading(2, "Position of every link" if s.static else "Kinematics")
     what = "position equations" if s.static else "position, velocity and acceleration equations"
@@ -672,8 +664,6 @@ def _matrix(doc: _Doc, s: _Subject, entry: dict, i: int):
 
 def _system(s: _Subject):
     if not hasattr(s, "_system"):
-        from graphkin.analytical.matrix import assemble
-
         s._system = assemble(s.result)
     return s._system
 
@@ -857,8 +847,6 @@ def _blank(doc: _Doc, s: _Subject, c, drawn: bool):
 # -- a whole cycle ------------------------------------------------------------------------------------
 def _cycle(doc: _Doc, s: _Subject):
     from graphkin import draw
-    from graphkin.cycle import sweep
-    from graphkin.report import cycle_data
 
     cycle = sweep(s.problem, s.cycle_positions)
     Cs = s.Cs if cycle.closed and not s.static else None  # a static analysis has no speed to keep steady

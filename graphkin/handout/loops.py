@@ -30,10 +30,10 @@ import numpy as np
 
 from graphkin.geometry import zcross as cross
 from graphkin.geometry import zdot as dot
+from graphkin.handout import maths as M
 from graphkin.kinematics import dyads as solver
 from graphkin.kinematics.structure import DriverGroup, Dyad, GearGroup
 from graphkin.model import Prismatic, Revolute
-from graphkin.handout import maths as M
 
 SIGMA = {
     "RRR": "σ = +1 puts {J2} to the left of the line {J1} → {J3}",

@@ -2,6 +2,6 @@
 
 from graphkin.kinematics.dyads import solve_kinematics
 from graphkin.kinematics.state import Kinematics
-from graphkin.kinematics.structure import Dyad, DriverGroup, GearGroup, decompose
+from graphkin.kinematics.structure import DriverGroup, Dyad, GearGroup, decompose
 
 __all__ = ["Dyad", "DriverGroup", "GearGroup", "Kinematics", "decompose", "solve_kinematics"]

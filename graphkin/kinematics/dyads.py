@@ -42,13 +42,13 @@ from typing import NamedTuple
 import numpy as np
 
 from graphkin.errors import ModelError
-from graphkin.model import Mechanism, Prismatic, Revolute
-from graphkin.ranges import MAX_POSITIONS, RANGES, as_array
 from graphkin.geometry import zcross as cross
 from graphkin.geometry import zdot as dot
-from graphkin.kinematics.state import Kinematics
 from graphkin.kinematics.plan import Plan, plan_of
-from graphkin.kinematics.structure import Dyad, DriverGroup, GearGroup
+from graphkin.kinematics.state import Kinematics
+from graphkin.kinematics.structure import DriverGroup, Dyad, GearGroup
+from graphkin.model import Mechanism, Prismatic, Revolute
+from graphkin.ranges import MAX_POSITIONS, RANGES, as_array
 
 DEAD_POINT = 1e-7
 """Relative size of the velocity determinant below which a position is a dead point.

@@ -24,8 +24,8 @@ from __future__ import annotations
 import weakref
 from functools import partial
 
-from graphkin.model import Mechanism
 from graphkin.kinematics.structure import decompose
+from graphkin.model import Mechanism
 
 
 def _parts(mech: Mechanism) -> list:

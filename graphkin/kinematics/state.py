@@ -14,7 +14,7 @@ import numpy as np
 
 from graphkin.geometry import as_xy, as_z
 from graphkin.geometry import zdot as dot
-from graphkin.model import Mechanism, Prismatic
+from graphkin.model import Mechanism, Prismatic, Revolute
 
 STILL = 1e-9
 """Relative sliding speed below which a sliding pair counts as still (no Coulomb friction)."""
@@ -136,8 +136,6 @@ class Kinematics:
 
     def anchor(self, link: int) -> str | None:
         """The pin link ``link`` is turned about when its angle is given: its revolute joint to a link located before it."""
-        from graphkin.model import Revolute
-
         located = {self.mechanism.frame}
         for g in self.groups:
             if link in g.links:

@@ -19,7 +19,6 @@ from graphkin.errors import ModelError
 from graphkin.model.link import _finite, _point
 from graphkin.ranges import check, check_array
 
-
 EDGE = 1e-12
 """Relative distance from an end of an :class:`Active` interval within which a position counts as on the end."""
 

@@ -16,10 +16,29 @@ from typing import Any, Mapping
 
 import numpy as np
 
-from graphkin.errors import GraphkinError, ModelError, ProblemFileError
-from graphkin.model import SENSES, Active, Driver, GearMesh, Link, Mechanism, PointForce, Prismatic, Revolute, Table, Torque
+from graphkin.analytical import solve_forces
+from graphkin.errors import GraphkinError, GraphkinWarning, ModelError, ProblemFileError
+from graphkin.files import read_text
+from graphkin.kinematics import decompose, solve_kinematics
+from graphkin.kinematics.structure import Dyad
+from graphkin.model import (
+    SENSES,
+    Active,
+    Driver,
+    GearMesh,
+    Link,
+    Mechanism,
+    PointForce,
+    Prismatic,
+    Revolute,
+    Table,
+    Torque,
+)
 from graphkin.model import mass as massprops
-from graphkin.ranges import complaint
+from graphkin.model.link import _finite
+from graphkin.problem.tables import parse_table, read_csv_beside
+from graphkin.ranges import as_array, check, complaint
+from graphkin.units import to_si, to_si_array, to_si_vector
 
 _TOP = {"title", "source", "notes", "analysis", "gravity", "frame", "links", "joints", "driver", "loads", "assembly",
         "given"}
@@ -107,9 +126,6 @@ class Problem:
         """
         from dataclasses import replace
 
-        from graphkin.model.link import _finite
-        from graphkin.ranges import check
-
         crank = self.mechanism.driver.crank
         rate = {"q_dot": _finite(q_dot, f"{self.name}: q_dot", "rad/s" if crank else "m/s"),
                 "q_ddot": _finite(self.q_ddot[0] if q_ddot is None else q_ddot, f"{self.name}: q_ddot",
@@ -137,8 +153,6 @@ class Problem:
         """
         from dataclasses import replace
 
-        from graphkin.model import Prismatic
-
         joints = tuple(replace(j, mu=mu) if isinstance(j, Prismatic) else j for j in self.mechanism.joints)
         if not any(isinstance(j, Prismatic) for j in joints):
             raise GraphkinError(f"{self.name}: it has no sliding pair to put friction on")
@@ -163,9 +177,6 @@ class Problem:
             graphkin's ranges, or the file's rates vary with position.
         """
         from dataclasses import replace
-
-        from graphkin.kinematics import solve_kinematics
-        from graphkin.ranges import as_array
 
         q, q_dot, q_ddot = self.q, self.q_dot, self.q_ddot
         if at is not None:
@@ -192,8 +203,6 @@ class Problem:
         at : float or array_like, shape (n,), optional
             Input positions θ [rad] or s [m] (see :meth:`kinematics`).
         """
-        from graphkin.analytical import solve_forces
-
         return solve_forces(self.kinematics(at))
 
 
@@ -230,8 +239,6 @@ class _Reader:
         ``kind="auto"`` takes the dimension's range (:data:`_KIND`); None
         checks none (the caller checks the sign first, with its own message).
         """
-        from graphkin.units import to_si
-
         x = to_si(value, dimension, field=where, file=self.file)
         self.ranged(x, value, _KIND.get(dimension) if kind == "auto" else kind, where)
         return x
@@ -245,8 +252,6 @@ class _Reader:
             raise self.fail(where, f"{_shown(raw)} {why}")
 
     def vec(self, value, dimension, where):
-        from graphkin.units import to_si_vector
-
         x, y = to_si_vector(value, dimension, field=where, file=self.file)
         kind = _KIND.get(dimension)
         if isinstance(value, dict):
@@ -257,8 +262,6 @@ class _Reader:
         return (x, y)
 
     def array(self, value, dimension, where):
-        from graphkin.units import to_si_array
-
         if isinstance(value, dict):
             # A range is linear: its ends bound every value in it. They are checked first, so that a start of
             # "1e9 deg" is named as such rather than as a step that gives too many points.
@@ -332,8 +335,6 @@ def load_problem(source: str | Path, *, name: str | None = None) -> Problem:
     ProblemFileError
         With the file, the field and what is wrong.
     """
-    from graphkin.files import read_text
-
     if not isinstance(source, (str, Path)) or not str(source):
         raise GraphkinError(f"load_problem takes the path of a problem file (a str or Path), got "
                             f"{type(source).__name__} {source!r}"
@@ -435,9 +436,6 @@ def build_problem(data: Mapping[str, Any], *, file: str = "<problem>", base: str
                           f"driver.{speed} (a static analysis uses it only to set such senses)")
     given = _given(rd, data.get("given", {}), mech, len(q), static)
     try:
-        from graphkin.kinematics import decompose
-        from graphkin.kinematics.structure import Dyad
-
         groups = decompose(mech)
     except ModelError as exc:
         raise rd.fail(_field_of(exc.at) or "joints", str(exc)) from None
@@ -575,8 +573,6 @@ def _joint(rd, t, where):
             if mu > 1:
                 import warnings
 
-                from graphkin.errors import GraphkinWarning
-
                 # Rubber on dry concrete reaches about 1; above it is more often a typing slip than a material.
                 warnings.warn(f"{rd.file}: {where}.mu: a friction coefficient of {mu:g} is unusually high "
                               "(dry metals on metals: 0.15 to 0.6); solving with it", GraphkinWarning, stacklevel=2)
@@ -671,8 +667,6 @@ def _load(rd, t, where, driver_kind):
 
 def _load_table(rd, t, where, kind, driver_kind):
     """A load's ``table`` (CSV text inline) or ``csv`` (a file beside the problem file), as a :class:`Table`."""
-    from graphkin.problem.tables import parse_table, read_csv_beside
-
     given = [k for k in ("table", "csv") if k in t]
     if not given:
         return None

@@ -23,6 +23,7 @@ from pathlib import Path
 import numpy as np
 
 from graphkin.errors import ProblemFileError
+from graphkin.units import to_si
 
 _HEADER = re.compile(r"^\s*(?P<name>[A-Za-z_][\w ]*?)\s*\[(?P<unit>[^\]]+)\]\s*$")
 
@@ -55,8 +56,6 @@ def parse_table(text: str, columns: dict[str, str], *, file: str, field: str, sh
         with the wrong number of cells, a cell that is not a finite number,
         or fewer than two rows.
     """
-    from graphkin.units import to_si
-
     where = f"{shown} " if shown else ""
 
     def fail(line: int | None, message: str):

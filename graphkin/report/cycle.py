@@ -15,7 +15,6 @@ from graphkin.kinematics.points import link_points
 from graphkin.notation import input_text
 from graphkin.report.plain import floats, number, peak
 
-
 STEEL = 7850.0
 """Density of steel [kg/m³], for the flywheel disk of the cycle summary."""
 

@@ -11,10 +11,20 @@ import math
 
 import numpy as np
 
-from graphkin.kinematics.points import link_points
 from graphkin import notation
-from graphkin.notation import PICOMETRE, RESIDUE, input_text, largest, num, unless_rounding
 from graphkin.analytical import ForceAnalysis
+from graphkin.analytical.loads import applied
+from graphkin.graphical import construct_forces
+from graphkin.kinematics.points import link_points
+from graphkin.model import PointForce
+from graphkin.notation import (
+    PICOMETRE,
+    RESIDUE,
+    input_text,
+    largest,
+    num,
+    unless_rounding,
+)
 
 
 def _vec(v):
@@ -23,8 +33,6 @@ def _vec(v):
 
 def constructions(result: ForceAnalysis) -> list:
     """The graphical construction of every position of a result (None where invalid)."""
-    from graphkin.graphical import construct_forces
-
     return [construct_forces(result.kinematics, i) if result.valid[i] else None for i in range(result.n)]
 
 
@@ -202,15 +210,11 @@ def _input_text(entry, crank, static=False):
 
 def _applied(kin) -> list:
     """Each external load with what it applies at every position (table, window and sense included)."""
-    from graphkin.analytical.loads import applied
-
     return [(ld, applied(kin, ld)) for ld in kin.mechanism.loads]
 
 
 def _load_entry(load, value) -> dict:
     """One external load at one position, as plain data: a force's vector [N] or a torque [N·m]."""
-    from graphkin.model import PointForce
-
     out = {"name": load.name, "link": load.link}
     if isinstance(load, PointForce):
         out.update(point=load.point, force=[float(value.real) + 0.0, float(value.imag) + 0.0])

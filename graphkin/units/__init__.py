@@ -163,6 +163,7 @@ _GLUED_TORQUE_RE = re.compile(r"^(?P<prefix>da|[kMmcd])?N(?P<length>m|mm|cm)$")
 _POWER_CHAIN_RE = re.compile(r"(?:\^|\*\*)[^*/^]*(?:\^|\*\*)")
 _MAX_UNIT_CHARS = 60
 # Cap on the length of a range table, to catch a mistyped step; also the most positions a sweep solves at once.
+from graphkin.files import write_text
 from graphkin.ranges import MAX_POSITIONS  # noqa: E402  (one limit for files, --n and the Python API)
 
 _MAX_RANGE_POINTS = MAX_POSITIONS
@@ -270,8 +271,6 @@ def _learn(ureg, unit, unit_text: str, dimension: str, x: float, si: float) -> N
     try:
         path = _factors_path()
         if path is not None:
-            from graphkin.files import write_text
-
             path.parent.mkdir(parents=True, exist_ok=True)
             write_text(path, json.dumps({"pint": _pint_stamp(),
                                          "factors": sorted([u, d, f] for (u, d), f in factors.items())}))
@@ -366,8 +365,6 @@ def _publish_registry(pint: Any, folder: Path) -> pint.UnitRegistry:
     """Build pint's disk cache in a temporary folder, move it into ``folder``, and read it back."""
     import shutil
     import tempfile
-
-    from graphkin.files import write_text
 
     folder.mkdir(parents=True, exist_ok=True)
     tmp = Path(tempfile.mkdtemp(dir=folder.parent, prefix=f".{folder.name}."))

@@ -67,7 +67,13 @@ import weakref
 
 import numpy as np
 
+from graphkin import exercises
+from graphkin.analytical import solve_forces
+from graphkin.cycle.sweep import Cycle, sweep
 from graphkin.errors import GraphkinError
+from graphkin.exercises.grading import grade_variant
+from graphkin.graphical import construct_forces
+from graphkin.notation import polar_text
 
 _log = logging.getLogger(__name__)
 
@@ -349,9 +355,7 @@ def _answers_the_browser(name: str, what: str):
 
 def _cell(v) -> str:
     """A force for the table, with a true minus: ``1972 N ∠ −73.78°`` (``0 N`` when there is none)."""
-    from graphkin.report import polar_text
-
-    return polar_text(v).replace("-", "−") if np.any(v) else "0 N"
+    return polar_text(v)
 
 
 def _table(construction, analytical, where: str = "") -> str:
@@ -715,8 +719,6 @@ class Explorer:
     # -- layout -----------------------------------------------------------------
     def _polygons_needed(self) -> int:
         """The most force polygons a construction draws, over a few positions of the range."""
-        from graphkin.graphical import construct_forces
-
         lo, hi = self.limits
         at = np.array([self._si(v) for v in np.linspace(lo, hi, 13)])
         try:
@@ -789,8 +791,6 @@ class Explorer:
     # -- the torque curve ---------------------------------------------------------
     def _sweep(self):
         """Solve the whole cycle at the current speed and draw the torque curve (once per speed)."""
-        from graphkin.cycle.sweep import Cycle, sweep
-
         if not self._original.given:
             self.problem = self._original.at_speed(self._q_dot())
         if self.crank:
@@ -882,7 +882,6 @@ class Explorer:
         Drawn ahead, the kernel reads its messages between two steps (see :meth:`_draw_ahead`).
         """
         from graphkin import draw
-        from graphkin.graphical import construct_forces
 
         q = self._si(value)
         c = a = None
@@ -890,7 +889,6 @@ class Explorer:
         try:
             kin = self.problem.kinematics(at=[q])
             c = construct_forces(kin, 0)
-            from graphkin.analytical import solve_forces
 
             a = solve_forces(kin)
         except GraphkinError as exc:
@@ -1161,8 +1159,6 @@ def exercise(name, student: str = "", *, secret: str = ""):
         Display it in a cell; ``box.answers`` (question id → text box), ``box.check()``
         and ``box.report`` (the last grading as plain data) are there for tests.
     """
-    from graphkin import exercises
-
     return ExerciseBox(exercises.load(name), student, secret)
 
 
@@ -1199,7 +1195,7 @@ class ExerciseBox:
             self.data.value = "<i>Type your id to get your own data.</i>"
             return
         try:
-            sheet = self.exercise.variant(student, self.secret).sheet()
+            sheet = exercises.variant(self.exercise, student, self.secret).sheet()
         except GraphkinError as exc:
             self.data.value = f"<span style='color:#b00'>{_escape(str(exc))}</span>"
             return
@@ -1209,13 +1205,11 @@ class ExerciseBox:
 
     def check(self) -> dict | None:
         """Grade what is in the boxes and show the feedback; returns the report (plain data)."""
-        from graphkin.exercises.grading import grade_variant
-
         student = self.student.value.strip()
         if not student:
             self.feedback.value = "<span style='color:#b00'>Type your id first.</span>"
             return None
-        variant = self.exercise.variant(student, self.secret)
+        variant = exercises.variant(self.exercise, student, self.secret)
         self.report = grade_variant(variant, {k: box.value for k, box in self.answers.items()})
         colour = {"correct": "#070", "slip": "#a60"}
         rows = "".join(f"<li><b>{q['id']}</b> <span style='color:{colour.get(q['verdict'], '#b00')}'>{q['verdict']}"

@@ -33,7 +33,12 @@ import re
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from graphkin import catalog
 from graphkin.errors import GraphkinError
+from graphkin.exercises import load
+from graphkin.exercises.batch import run_roster
+from graphkin.exercises.platforms import runtime
+from graphkin.exercises.variants import check_student
 from graphkin.files import check_destination, write_bytes
 
 PLATFORMS = ("otter", "nbgrader", "prairielearn", "gradescope")
@@ -85,8 +90,6 @@ class Bundle:
 
     def sample_key(self) -> dict:
         """The sample student's key (the answers an export's own solution types)."""
-        from graphkin.exercises.platforms import runtime
-
         return runtime.variant(self.exercise, self.sample, self.secret).key()
 
 
@@ -122,8 +125,6 @@ def vendor_files() -> dict[str, bytes]:
 
 def _exercise_files(ex) -> dict[str, str]:
     """The exercise file (and a non-catalog base problem) as the export carries them."""
-    from graphkin import catalog
-
     files = {f"{ex.id}.toml": ex.text}
     if ex.problem not in catalog.names():
         if Path(ex.problem).name != ex.problem or ex.problem == f"{ex.id}.toml":
@@ -147,10 +148,6 @@ def bundle(exercise, *, secret: str = "", students=None, progress=None) -> Bundl
     progress : callable, optional
         Called with the number of students done, as a batch goes.
     """
-    from graphkin.exercises import load
-    from graphkin.exercises.batch import run_roster
-    from graphkin.exercises.variant import check_student
-
     ex = load(exercise)
     sheets = {}
     roster = None

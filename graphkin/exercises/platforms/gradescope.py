@@ -37,7 +37,12 @@ import traceback
 import zipfile
 from pathlib import Path
 
+import graphkin
+from graphkin import __version__
 from graphkin.errors import GraphkinError
+from graphkin.exercises.platforms import requirements, runtime, vendor_files
+from graphkin.exercises.variants import check_student
+from graphkin.files import write_text
 
 ROOT_ENV = "GRAPHKIN_AUTOGRADER_ROOT"
 """Environment variable naming the autograder's root folder (Gradescope's is ``/autograder``)."""
@@ -210,8 +215,6 @@ def build(bundle) -> dict:
 
 def zip_members(bundle) -> dict[str, bytes]:
     """The files of the autograder zip, by their path inside it."""
-    from graphkin.exercises.platforms import requirements, vendor_files
-
     members = {
         "setup.sh": SETUP_SH,
         "run_autograder": RUN_AUTOGRADER,
@@ -229,8 +232,6 @@ def zip_members(bundle) -> dict[str, bytes]:
 
 def config(bundle) -> dict:
     """What ``grade.py`` reads: the exercise, the course secret and the roster (``None`` without one)."""
-    from graphkin import __version__
-
     return {
         "exercise": bundle.name,
         "exercise_file": bundle.exercise_file,
@@ -323,8 +324,6 @@ python3 -m json.tool --no-ensure-ascii try/results/results.json
 
 def readme(bundle) -> str:
     """The teacher's README: the files, the steps on Gradescope, what the machines need."""
-    from graphkin.exercises.platforms import requirements
-
     name = bundle.name
     total = sum(q.points for q in bundle.exercise.questions)
     questions = ", ".join(bundle.question_ids())
@@ -439,16 +438,12 @@ def run(root=None) -> dict:
 
 
 def _log_version() -> None:
-    import graphkin
-
     # The teacher reads this in Gradescope's output: the graded version is the exported one.
     print(f"graphkin {graphkin.__version__} from {Path(graphkin.__file__).parent}")
 
 
 def grade_submission(root: Path, exercise_file: Path, cfg: dict) -> dict:
     """The results of one submission (a ``SubmissionError`` becomes 0 points and its sentence)."""
-    from graphkin.exercises.platforms import runtime
-
     ex = runtime.exercise(exercise_file)
     try:
         users = read_metadata(root / "submission_metadata.json")
@@ -565,8 +560,6 @@ def _flatten(table: dict, prefix: str = "") -> dict:
 
 def _user_ids(user: dict) -> list[str]:
     """A submitter's usable ids, in order of preference: the roster's student id (``sid``), then the email."""
-    from graphkin.exercises.variant import check_student
-
     ids = []
     for key in ("sid", "email"):
         value = user.get(key)
@@ -596,8 +589,6 @@ def whom_to_grade(users: list[dict], claimed, roster) -> tuple[str, list[str]]:
     roster); else, with a roster, the first of ``sid``, ``email`` on it;
     without one, ``sid``, else ``email``.
     """
-    from graphkin.exercises.variant import check_student
-
     try:
         claim = check_student(claimed) if claimed is not None else None
     except GraphkinError:
@@ -638,8 +629,6 @@ def _test_name(question, limit: int = 100) -> str:
 
 def results_from_report(ex, report: dict, notes: list[str]) -> dict:
     """Gradescope's ``results.json`` for a graphkin grading report: one test per question."""
-    from graphkin.exercises.platforms import runtime
-
     asked = {q.id: q for q in ex.questions}
     tests = [{
         "name": _test_name(asked[r["id"]]),
@@ -659,8 +648,6 @@ def results_from_report(ex, report: dict, notes: list[str]) -> dict:
 
 def not_graded(exercise_file, reason: str) -> dict:
     """0 points, the reason as the submission's output, and every question listed at 0."""
-    from graphkin.exercises.platforms import runtime
-
     ex = runtime.exercise(exercise_file)
     tests = [{"name": _test_name(q), "score": 0.0, "max_score": q.points, "status": "failed",
               "output": f"{q.id}: not graded (see the message above).", "visibility": "visible"}
@@ -676,8 +663,6 @@ def _results(score: float, output: str, tests: list[dict]) -> dict:
 
 def write_results(path: Path, results: dict) -> None:
     """Write ``results.json`` atomically: Gradescope never reads half a file."""
-    from graphkin.files import write_text
-
     write_text(path, json.dumps(results, indent=2, ensure_ascii=False) + "\n", "results")
 
 

@@ -35,6 +35,10 @@ import os
 from pathlib import Path
 
 from graphkin.errors import GraphkinError
+from graphkin.exercises.answers import Unreadable, read_answer
+from graphkin.exercises.exercise import dimension_of
+from graphkin.exercises.grading import MESSAGES, _example
+from graphkin.exercises.platforms import requirements, runtime
 
 SECRET_VARIABLE = "GRAPHKIN_SECRET"
 """The environment variable the hidden tests read the course secret from while ``nbgrader autograde`` runs."""
@@ -95,8 +99,6 @@ def course_secret(exercise_file, student: str, sheets) -> str:
         If ``student`` is not on the roster (the sentence says so), or the
         secret does not give the student's sheet (outside autograde).
     """
-    from graphkin.exercises.platforms import runtime
-
     secret = os.environ.get(SECRET_VARIABLE, "")
     shown = runtime.sheet(exercise_file, student, sheets)["data"]
     if runtime.variant(exercise_file, student, secret).sheet()["data"] == shown:
@@ -120,11 +122,6 @@ def check_answer(exercise_file, qid: str, answer) -> None:
     unreadable, which earn nothing whatever the data; anything else passes,
     and the hidden test grades it. The answer is read as data, never run.
     """
-    from graphkin.exercises.answers import Unreadable, read_answer
-    from graphkin.exercises.exercise import dimension_of
-    from graphkin.exercises.grading import MESSAGES
-    from graphkin.exercises.platforms import runtime
-
     q = runtime.exercise(exercise_file).question(qid)
     value = runtime.answer_value(answer)
     if value is None or (isinstance(value, str) and not value.strip()):
@@ -274,9 +271,6 @@ def _question_text(bundle, q, variable: str) -> str:
 
 def _example_answer(bundle, q) -> str:
     """How to write an answer to ``q``: the grader's own example, a made-up number in the question's unit."""
-    from graphkin.exercises.grading import _example
-    from graphkin.exercises.platforms import runtime
-
     return _example(runtime.variant(bundle.exercise, bundle.sample, bundle.secret).expected(q))
 
 
@@ -341,8 +335,6 @@ c.CourseDirectory.course_id = "mechanics"
 
 def _readme(bundle) -> str:
     """The export's README: what each file is, then nbgrader's commands, step by step."""
-    from graphkin.exercises.platforms import requirements
-
     name = bundle.name
     files = [f"- `source/{name}/{name}.ipynb`: the source notebook (the sample answers of student "
              f"`{bundle.sample}` in solution regions, the grading in hidden tests).",

@@ -35,6 +35,10 @@ from functools import lru_cache
 from pathlib import Path
 
 from graphkin.errors import GraphkinError
+from graphkin.exercises.answers import Unreadable, read_answer
+from graphkin.exercises.exercise import dimension_of
+from graphkin.exercises.grading import MESSAGES
+from graphkin.exercises.platforms import requirements, runtime, vendor_files
 
 GRADESCOPE_METADATA = "/autograder/submission_metadata.json"
 """Where Gradescope puts the submission's metadata (who handed it in) on its grading machine."""
@@ -85,8 +89,6 @@ def check(exercise_file, student, qid: str, answer, secret: str = "", *, level: 
         raise AssertionError(f"{qid}: 0 points — {problem}")
     result = _graded(exercise_file, student, qid, answer, secret)
     if result["score"] < level * (1 - 1e-9):
-        from graphkin.exercises.platforms import runtime
-
         raise AssertionError(runtime.feedback_line(result))
 
 
@@ -101,11 +103,6 @@ def readable(exercise_file, qid: str, answer) -> None:
     AssertionError
         With the sentence ``graphkin exercise grade`` gives a missing or an unreadable answer.
     """
-    from graphkin.exercises.answers import Unreadable, read_answer
-    from graphkin.exercises.exercise import dimension_of
-    from graphkin.exercises.grading import MESSAGES
-    from graphkin.exercises.platforms import runtime
-
     value = runtime.answer_value(answer)
     if value is None or (isinstance(value, str) and not value.strip()):
         raise AssertionError(MESSAGES["missing"].format(name=qid))
@@ -118,8 +115,6 @@ def readable(exercise_file, qid: str, answer) -> None:
 
 def _student_problem(exercise_file, student, sheets, metadata) -> str | None:
     """Why this notebook cannot be graded under the id it carries (a sentence), or None."""
-    from graphkin.exercises.platforms import runtime
-
     if not isinstance(student, str) or not student.strip():
         return ("this notebook carries no student id: type yours in the STUDENT cell, in quotes, "
                 "as your teacher gave it")
@@ -155,15 +150,12 @@ def _graded(exercise_file, student, qid, answer, secret) -> dict:
     """graphkin's result for one answer; the credit-level cases of a question share one grading."""
     if isinstance(answer, (str, int, float)) and not isinstance(answer, bool):
         return _graded_cached(str(Path(exercise_file).resolve()), student, qid, type(answer), answer, secret)
-    from graphkin.exercises.platforms import runtime
 
     return runtime.grade_question(exercise_file, student, qid, answer, secret)
 
 
 @lru_cache(maxsize=256)
 def _graded_cached(exercise_file, student, qid, _type, answer, secret) -> dict:
-    from graphkin.exercises.platforms import runtime
-
     return runtime.grade_question(exercise_file, student, qid, answer, secret)
 
 
@@ -229,8 +221,6 @@ def build(bundle) -> dict:
         With a course secret but no roster: the student notebook would have
         to draw each student's data, and so carry the secret.
     """
-    from graphkin.exercises.platforms import requirements, vendor_files
-
     if bundle.secret and bundle.students is None:
         raise GraphkinError(
             "otter: a course secret needs --roster: the student notebook prints each student's data, so it would "
@@ -393,8 +383,6 @@ def _hidden_test(bundle, q, name: str, i: int, level: float) -> str:
 
 def _readme(bundle) -> str:
     """README.md of the export: the files, then otter's commands step by step."""
-    from graphkin.exercises.platforms import requirements
-
     name = bundle.name
     sheets = _sheets_file(bundle)
     others = "".join(f", `{f}`" for f in bundle.files if f != bundle.exercise_file)

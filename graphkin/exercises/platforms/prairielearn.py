@@ -35,6 +35,7 @@ import re
 import uuid
 
 from graphkin.errors import GraphkinError
+from graphkin.exercises.platforms import requirements, runtime, vendor_files
 
 TOPIC = "Kinetostatics"
 """The PrairieLearn topic of every exported question (listed in the course's ``infoCourse.json``)."""
@@ -100,8 +101,6 @@ def generate(data: dict, exercise_file: str, secret: str = "") -> None:
     key); ``correct_answers`` holds the key's answer texts, which
     PrairieLearn's answer panel shows. Neither holds the secret.
     """
-    from graphkin.exercises.platforms import runtime
-
     student = variant_student(data)
     key = runtime.variant(exercise_file, student, secret).key()
     names = {qid: name for name, qid in answer_names([q["id"] for q in key["questions"]]).items()}
@@ -127,8 +126,6 @@ def parse(data: dict, exercise_file: str, secret: str = "") -> None:
     answers are left to ``pl-string-input`` (blank is its own format error
     unless ``allow-blank`` is set; then graphkin grades it as missing).
     """
-    from graphkin.exercises.platforms import runtime
-
     student = _student_of(data)
     ex = runtime.exercise(exercise_file)
     for name, qid in answer_names([q.id for q in ex.questions]).items():
@@ -149,8 +146,6 @@ def grade(data: dict, exercise_file: str, secret: str = "") -> dict:
     under the answer); ``data["score"]`` is the points earned over the
     points, from 0 to 1. Returns graphkin's report.
     """
-    from graphkin.exercises.platforms import runtime
-
     ex = runtime.exercise(exercise_file)
     names = answer_names([q.id for q in ex.questions])
     answers = {qid: data["submitted_answers"].get(name) for name, qid in names.items()}
@@ -184,7 +179,6 @@ def figure(data: dict, exercise_file: str, secret: str = "") -> bytes:
     import io
 
     from graphkin import draw
-    from graphkin.exercises.platforms import runtime
 
     c = runtime.variant(exercise_file, _student_of(data), secret).construction
     if not c.valid:
@@ -213,8 +207,6 @@ def _pretty_unit(unit: str) -> str:
 
 def build(bundle) -> dict:
     """The export's files (relative path → text or bytes): one question folder, graphkin, a check, a README."""
-    from graphkin.exercises.platforms import vendor_files
-
     folder = f"questions/{bundle.name}"
     tree: dict = {
         f"{folder}/info.json": info_json(bundle),
@@ -476,8 +468,6 @@ def check_question_py(bundle) -> str:
 
 def readme(bundle) -> str:
     """README.md: what each file is, where it goes in the course repository, what the server needs."""
-    from graphkin.exercises.platforms import requirements
-
     name = bundle.name
     reqs = "\n".join(f"       {r}" for r in requirements())
     secret_line = ("The course secret is written into `server.py` (and nowhere else): keep the course repository "

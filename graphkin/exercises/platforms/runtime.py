@@ -14,20 +14,22 @@ from functools import lru_cache
 from pathlib import Path
 
 from graphkin.errors import GraphkinError
+from graphkin.exercises import load_exercise
+from graphkin.exercises.exercise import Exercise
+from graphkin.exercises.grading import grade_question as _grade_one
+from graphkin.exercises.grading import grade_variant
+from graphkin.exercises.sheets import format_sheet
+from graphkin.exercises.variants import check_student, make_variant
 
 
 @lru_cache(maxsize=16)
 def _load(path: str):
-    from graphkin.exercises import load_exercise
-
     p = Path(path)
     return load_exercise(p, name=p.stem)
 
 
 def exercise(path_or_exercise):
     """The exercise of an export (read once per process), from its file or as given."""
-    from graphkin.exercises.exercise import Exercise
-
     if isinstance(path_or_exercise, Exercise):
         return path_or_exercise
     return _load(str(Path(path_or_exercise).resolve()))
@@ -35,8 +37,6 @@ def exercise(path_or_exercise):
 
 def variant(path_or_exercise, student: str, secret: str = ""):
     """The student's variant (:class:`graphkin.exercises.Variant`)."""
-    from graphkin.exercises.variant import make_variant
-
     return make_variant(exercise(path_or_exercise), student, secret)
 
 
@@ -57,8 +57,6 @@ def sheet(path_or_exercise, student: str, sheets=None, secret: str = "") -> dict
     it never needs the course secret; an id that is not on the roster is an
     error that says so.
     """
-    from graphkin.exercises.variant import check_student
-
     student = check_student(student)
     if sheets is None:
         return variant(path_or_exercise, student, secret).sheet()
@@ -72,23 +70,17 @@ def sheet(path_or_exercise, student: str, sheets=None, secret: str = "") -> dict
 
 def sheet_text(path_or_exercise, student: str, sheets=None, secret: str = "") -> str:
     """The student's sheet as text (data and questions), for a notebook cell to print."""
-    from graphkin.exercises.sheets import format_sheet
-
     return format_sheet(sheet(path_or_exercise, student, sheets, secret))
 
 
 def grade(path_or_exercise, student: str, answers: dict, secret: str = "", *, reveal=None) -> dict:
     """Grade a student's answers (question id → value): the report of ``graphkin exercise grade --json``."""
-    from graphkin.exercises.grading import grade_variant
-
     answers = {k: answer_value(v) for k, v in dict(answers).items()}
     return grade_variant(variant(path_or_exercise, student, secret), answers, reveal=reveal)
 
 
 def grade_question(path_or_exercise, student: str, qid: str, answer, secret: str = "", *, reveal=None) -> dict:
     """Grade one answer: ``{"id", "verdict", "slip", "score", "max", "feedback", "answer"[, "expected"]}``."""
-    from graphkin.exercises.grading import grade_question as _grade_one
-
     v = variant(path_or_exercise, student, secret)
     q = v.exercise.question(qid)
     reveal = v.exercise.reveal if reveal is None else bool(reveal)
@@ -111,8 +103,6 @@ def identity_error(claimed, graded_as) -> str | None:
     the platform knows whom it grades. A submission that carries another
     student's id (a friend's variant, a friend's answers) scores nothing.
     """
-    from graphkin.exercises.variant import check_student
-
     try:
         claimed = check_student(claimed)
     except GraphkinError:

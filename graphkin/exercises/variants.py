@@ -23,9 +23,15 @@ from functools import cached_property
 
 import numpy as np
 
+from graphkin.cycle import sweep
 from graphkin.errors import GraphkinError
-from graphkin.notation import input_text
 from graphkin.exercises.exercise import CYCLE_KINDS, Exercise, Question, set_field
+from graphkin.exercises.grading import grade_variant
+from graphkin.exercises.quantities import _span, expected, question_data, undefined
+from graphkin.graphical import construct_forces
+from graphkin.notation import input_text
+from graphkin.problem import build_problem
+from graphkin.units import to_si
 
 MAX_ATTEMPTS = 64
 """Draws tried per student before the exercise is declared unusable."""
@@ -101,14 +107,10 @@ class Solved:
 
     @cached_property
     def construction(self):
-        from graphkin.graphical import construct_forces
-
         return construct_forces(self.result.kinematics, 0)
 
     @cached_property
     def cycle(self):
-        from graphkin.cycle import sweep
-
         return sweep(self.problem, self.exercise.positions)
 
     @cached_property
@@ -158,16 +160,12 @@ class Variant:
 
     def expected(self, q: Question):
         """The answer to question ``q`` (:class:`graphkin.exercises.quantities.Expected`), computed once."""
-        from graphkin.exercises.quantities import expected
-
         if ("question", q.id) not in self._memo:
             self._memo["question", q.id] = expected(self, q)
         return self._memo["question", q.id]
 
     def sheet(self) -> dict:
         """The student's exercise as plain data: the statement, their data and the questions; no answers."""
-        from graphkin.exercises.quantities import question_data
-
         intro = _fill(self.exercise.intro, self.data)
         return {"exercise": self.exercise.id, "title": self.exercise.title, "source": self.exercise.source,
                 "student": self.student, "intro": intro, "draw": self.exercise.draw,
@@ -186,8 +184,6 @@ class Variant:
 
     def grade(self, answers) -> dict:
         """Grade a student's answers (a mapping of question id to text); see :func:`graphkin.exercises.grade`."""
-        from graphkin.exercises.grading import grade_variant
-
         return grade_variant(self, answers)
 
 
@@ -204,9 +200,6 @@ def _choose(ex: Exercise, student: str, secret: str, attempt: int) -> tuple[Give
 
 
 def _build(ex: Exercise, data: tuple[Given, ...], student: str):
-    from graphkin.problem import build_problem
-    from graphkin.units import to_si
-
     base = dict(ex.base)
     Cs = ex.Cs
     for g in data:
@@ -251,7 +244,6 @@ def _unusable(ex: Exercise, solved: Solved) -> str | None:
     if max(loads + [0.0]) > 0 and largest > ex.max_force_ratio * max(loads):
         return (f"the joint forces are {largest / max(loads):.0f} times the largest load: the linkage is near a dead "
                 "point")
-    from graphkin.exercises.quantities import undefined
 
     for q in ex.questions:
         if q.kind not in CYCLE_KINDS:
@@ -262,8 +254,6 @@ def _unusable(ex: Exercise, solved: Solved) -> str | None:
 
 
 def _span_of(solved: Solved) -> float:
-    from graphkin.exercises.quantities import _span
-
     return _span(solved.construction) if solved.construction.valid else math.nan
 
 
