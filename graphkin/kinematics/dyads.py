@@ -500,9 +500,10 @@ def _rrr_step(plan: Plan, d: Dyad, sigma: int, index: int):
         D = X3 - X1
         dd2 = D.real * D.real
         dd2 += D.imag * D.imag
-        at_one = dd2 == 0  # equal arms folded onto each other: no direction to build the dyad on
+        at_one = dd2 == 0  # the outer pins coincide: no direction to build the dyad on
         if at_one.any():
-            st.fail(together, at_one)
+            # Equal arms fold onto each other and may turn about the pins; unequal arms cannot reach each other.
+            st.fail(together if abs(Lj - Lk) <= 1e-12 * max(Lj, Lk) else reach, at_one)
         t = half_c / dd2
         t += 0.5
         h2 = Lj2 / dd2
