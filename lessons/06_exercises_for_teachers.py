@@ -236,14 +236,14 @@ print(f"{len(by_data)} different data sets for {len(students)} students; the sam
 #
 # The `graphkin exercise` command does the same for a whole roster and writes one CSV row per
 # student. Here we run it from the notebook with `subprocess`, exactly as you would type it in a
-# terminal in the course folder (the helper runs `python -m graphkin.cli`, which is the `graphkin`
+# terminal in the course folder (the helper runs `python -m graphkin`, which is the `graphkin`
 # command). From a few hundred students on, the command spreads the work over all your cores.
 
 # %%
 def graphkin(*args, env=None):
     """Run `graphkin ARGS...` in the course folder and return what it printed."""
     print("$ graphkin", " ".join(args))
-    done = subprocess.run([sys.executable, "-m", "graphkin.cli", *args], cwd=folder, env=env,
+    done = subprocess.run([sys.executable, "-m", "graphkin", *args], cwd=folder, env=env,
                           capture_output=True, text=True, encoding="utf-8", check=True)
     if done.stderr:
         print(done.stderr.strip())
@@ -627,7 +627,7 @@ assert [q["expected"] for q in strict_reports[shown]["questions"]] == \
        [q["answer"]["text"] for q in keys[shown]["questions"]]
 assert all("expected" in q for q in exercises.grade(NAME, shown, handed_in[shown], SECRET, reveal=True)["questions"])
 # GRAPHKIN_SECRET: the CLI without --secret uses it; the Python functions don't read it.
-env_key = subprocess.run([sys.executable, "-m", "graphkin.cli", "exercise", "key", NAME, "--student", "s001",
+env_key = subprocess.run([sys.executable, "-m", "graphkin", "exercise", "key", NAME, "--student", "s001",
                           "--json"], env=course_env, capture_output=True, text=True, encoding="utf-8", check=True)
 assert json.loads(env_key.stdout) == keys["s001"]
 before = os.environ.get("GRAPHKIN_SECRET")

@@ -4,6 +4,7 @@ import json
 import math
 import subprocess
 import sys
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -110,8 +111,13 @@ def test_list(capsys):
         assert f"family: {catalog.family(name)}" in out  # each problem's family of mechanism (issue 13)
 
 
-def test_console_script_runs_the_default_example():
-    out = subprocess.run([sys.executable, "-m", "graphkin.cli", "solve", catalog.DEFAULT], capture_output=True, text=True)
+@pytest.mark.parametrize("command", [["-m", "graphkin"], "console script"])
+def test_console_script_and_python_m_run_the_default_example(command):
+    script = Path(sys.executable).with_name("graphkin")
+    if command == "console script" and not script.exists():
+        pytest.skip("graphkin is not installed as a console script beside this Python")
+    argv = [str(script)] if command == "console script" else [sys.executable, *command]
+    out = subprocess.run([*argv, "solve", catalog.DEFAULT], capture_output=True, text=True)
     assert out.returncode == 0 and "F12 = 7.559 N ∠ 0.00°" in out.stdout
 
 

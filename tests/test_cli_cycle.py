@@ -11,7 +11,8 @@ import pytest
 
 from graphkin import catalog
 from graphkin.cycle import joint_force_index, sweep
-from graphkin.cli import _Progress, main
+from graphkin.cli import main
+from graphkin.cli._common import Progress as _Progress
 from graphkin.report import DISK_THICKNESS, STEEL
 
 
@@ -139,7 +140,7 @@ def test_no_progress_line_in_a_log_file():
 
 def test_a_batch_of_figures_shows_a_progress_bar_on_a_terminal(monkeypatch, tmp_path):
     """One tick per position drawn, on stderr, when it is a terminal and the batch outlasts the delay."""
-    import graphkin.cli as cli
+    import graphkin.cli._common as cli
 
     class Terminal(io.StringIO):
         def isatty(self):

@@ -321,7 +321,7 @@ def test_floats_are_those_of_float_one_by_one():
 
 def test_building_the_parser_imports_nothing_heavy():
     r = _python("import sys\n"
-                "from graphkin.cli import _parser\n"
+                "from graphkin.cli import parser as _parser\n"
                 "_parser()\n"
                 "print(sorted(m for m in ('numpy', 'pint', 'matplotlib', 'ipywidgets', 'graphkin.exercises', 'socket',"
                 " 'subprocess') if m in sys.modules))")
@@ -331,7 +331,7 @@ def test_building_the_parser_imports_nothing_heavy():
 
 def test_numpy_is_loaded_with_one_blas_thread_and_the_environment_is_put_back():
     code = ("import os, sys\n"
-            "from graphkin.cli import _single_threaded_blas\n"
+            "from graphkin.cli._common import single_threaded_blas as _single_threaded_blas\n"
             "_single_threaded_blas()\n"
             "print('numpy' in sys.modules, os.environ.get('OPENBLAS_NUM_THREADS'))")
     env = {k: v for k, v in os.environ.items() if k not in ("OPENBLAS_NUM_THREADS", "GOTO_NUM_THREADS",

@@ -698,7 +698,7 @@ def test_the_slider_takes_most_of_the_row_with_the_box_beside_it():
 
 def test_graphkin_explore_with_a_bad_problem_is_one_line_and_exit_2():
     """Reported before Voilà starts (the browser test serves a real page and stops it with Ctrl-C)."""
-    r = subprocess.run([sys.executable, "-m", "graphkin.cli.explore", "no_such_problem", "--no-browser"],
+    r = subprocess.run([sys.executable, "-m", "graphkin", "explore", "no_such_problem", "--no-browser"],
                        capture_output=True, text=True, timeout=60)
     assert r.returncode == 2 and r.stdout == ""
     assert r.stderr.count("\n") == 1 and r.stderr.startswith("graphkin: error:") and "no_such_problem" in r.stderr

@@ -34,13 +34,7 @@ from graphkin.errors import GraphkinError
 from graphkin.geometry import zcross as cross
 from graphkin.geometry import zdot as dot
 from graphkin.kinematics import DriverGroup, Dyad, GearGroup, Kinematics
-from graphkin.kinematics.dyads import (
-    CHUNK,
-    _run,
-    deferred_kinematics,
-    prepare,
-    solve_columns,
-)
+from graphkin.kinematics.dyads import CHUNK, _run, deferred_kinematics, prepare, solve_columns
 from graphkin.kinematics.plan import Plan, plan_of
 from graphkin.model import Mechanism, Prismatic, Revolute
 

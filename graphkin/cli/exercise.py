@@ -148,9 +148,9 @@ def _progress(total: int, label: str):
     """A progress bar on stderr for a batch that takes more than a second (none when stderr is not a terminal)."""
     from tqdm import tqdm
 
-    from graphkin.cli import PROGRESS_DELAY
+    from graphkin.cli import _common
 
-    return tqdm(total=total, desc=f"graphkin: {label}", unit="student", delay=PROGRESS_DELAY, file=sys.stderr,
+    return tqdm(total=total, desc=f"graphkin: {label}", unit="student", delay=_common.PROGRESS_DELAY, file=sys.stderr,
                 leave=False, disable=None)
 
 

@@ -196,26 +196,3 @@ def _main_thread() -> bool:
     import threading
 
     return threading.current_thread() is threading.main_thread()
-
-
-def main(argv=None) -> int:
-    """``python -m graphkin.cli.explore PROBLEM``: the subcommand on its own (``graphkin explore`` is the same)."""
-    import argparse
-
-    parser = argparse.ArgumentParser(prog="graphkin")
-    add_parser(parser.add_subparsers(dest="command", required=True))
-    try:
-        args = parser.parse_args(["explore", *(sys.argv[1:] if argv is None else argv)])
-        return run(args)
-    except SystemExit as exc:
-        return exc.code if isinstance(exc.code, int) else 2
-    except GraphkinError as exc:
-        print(f"graphkin: error: {exc}", file=sys.stderr)
-        return 2
-    except KeyboardInterrupt:
-        print("graphkin: interrupted", file=sys.stderr)
-        return 130
-
-
-if __name__ == "__main__":  # pragma: no cover
-    sys.exit(main())

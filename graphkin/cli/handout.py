@@ -119,7 +119,7 @@ def _progress(total: int):
     """A progress bar on stderr for a batch that takes more than a second (none when stderr is not a terminal)."""
     from tqdm import tqdm
 
-    from graphkin.cli import PROGRESS_DELAY
+    from graphkin.cli import _common
 
-    return tqdm(total=total, desc="graphkin: handouts", unit="student", delay=PROGRESS_DELAY, file=sys.stderr,
+    return tqdm(total=total, desc="graphkin: handouts", unit="student", delay=_common.PROGRESS_DELAY, file=sys.stderr,
                 leave=False, disable=None)

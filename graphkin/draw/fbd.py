@@ -8,30 +8,9 @@ import numpy as np
 
 from graphkin.draw import style as _style
 from graphkin.draw.arrows import arc_points, arrow, moment_arrow, perp, unit
-from graphkin.draw.axes import (
-    MM,
-    Drawn,
-    had_content,
-    line,
-    new_axes,
-    points_per_unit,
-    set_limits,
-    setup_axes,
-)
-from graphkin.draw.labels import (
-    Labeler,
-    arrow_label_candidates,
-    measuring_renderer,
-    point_label_candidates,
-    text_size,
-)
-from graphkin.draw.mechanism import (
-    NEAR,
-    Geometry,
-    _label_points,
-    centre_of_mass,
-    draw_link_body,
-)
+from graphkin.draw.axes import MM, Drawn, had_content, line, new_axes, points_per_unit, set_limits, setup_axes
+from graphkin.draw.labels import Labeler, arrow_label_candidates, measuring_renderer, point_label_candidates, text_size
+from graphkin.draw.mechanism import NEAR, Geometry, _label_points, centre_of_mass, draw_link_body
 from graphkin.draw.scales import dimension, nice_round, scale_bar
 from graphkin.draw.text import sub
 from graphkin.model import Prismatic

@@ -8,16 +8,7 @@ import numpy as np
 
 from graphkin.draw import style as _style
 from graphkin.draw.arrows import arrow, perp, unit
-from graphkin.draw.axes import (
-    Drawn,
-    had_content,
-    line,
-    markers,
-    new_axes,
-    points_per_unit,
-    set_limits,
-    setup_axes,
-)
+from graphkin.draw.axes import Drawn, had_content, line, markers, new_axes, points_per_unit, set_limits, setup_axes
 from graphkin.draw.labels import Labeler, arrow_label_candidates, point_label_candidates
 from graphkin.draw.scales import nice_round, scale_bar
 from graphkin.draw.text import sub

@@ -27,14 +27,7 @@ from importlib import resources
 from pathlib import Path
 
 from graphkin.errors import GraphkinError
-from graphkin.exercises.exercise import (
-    SLIPS,
-    Exercise,
-    Question,
-    Vary,
-    load_exercise,
-    parse_exercise,
-)
+from graphkin.exercises.exercise import SLIPS, Exercise, Question, Vary, load_exercise, parse_exercise
 from graphkin.exercises.grading import grade_variant
 from graphkin.exercises.variants import MAX_ATTEMPTS, Variant, make_variant
 

@@ -21,13 +21,7 @@ from collections.abc import Mapping
 from graphkin.analytical.result import parse_force_name
 from graphkin.exercises.answers import Reading, Unreadable, read_answer
 from graphkin.exercises.exercise import CYCLE_KINDS, dimension_of
-from graphkin.exercises.quantities import (
-    Expected,
-    _distance,
-    _unit_text,
-    unit_factor,
-    value_of,
-)
+from graphkin.exercises.quantities import Expected, _distance, _unit_text, unit_factor, value_of
 
 #: Verdicts a question can get.
 VERDICTS = ("correct", "slip", "wrong", "unreadable", "missing")

@@ -5,13 +5,6 @@ draws what this builds.
 """
 
 from graphkin.graphical.build import construct_forces
-from graphkin.graphical.construction import (
-    Arrow,
-    Construction,
-    Line,
-    Step,
-    SubProblem,
-    nice_scale,
-)
+from graphkin.graphical.construction import Arrow, Construction, Line, Step, SubProblem, nice_scale
 
 __all__ = ["Arrow", "Construction", "Line", "Step", "SubProblem", "construct_forces", "nice_scale"]

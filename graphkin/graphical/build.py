@@ -49,14 +49,7 @@ from graphkin.analytical.loads import applied_at, inertia
 from graphkin.errors import GraphkinError
 from graphkin.geometry import zcross as cross
 from graphkin.geometry import zdot as dot
-from graphkin.graphical.construction import (
-    Arrow,
-    Construction,
-    Line,
-    Step,
-    SubProblem,
-    nice_scale,
-)
+from graphkin.graphical.construction import Arrow, Construction, Line, Step, SubProblem, nice_scale
 from graphkin.kinematics import DriverGroup, Dyad, GearGroup, Kinematics
 from graphkin.model import GearMesh, PointForce, Prismatic, Revolute, Torque
 from graphkin.notation import PICOMETRE, largest, num, unless_rounding

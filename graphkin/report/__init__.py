@@ -15,13 +15,7 @@ command                         data                                text
 ==============================  ==================================  ======================
 """
 
-from graphkin.report.cycle import (
-           DISK_THICKNESS,
-           STEEL,
-           cycle_data,
-           cycle_links,
-           format_cycle,
-)
+from graphkin.report.cycle import DISK_THICKNESS, STEEL, cycle_data, cycle_links, format_cycle
 from graphkin.report.flywheel import flywheel_data, format_flywheel
 from graphkin.report.solution import constructions, format_solution, solution
 

@@ -17,14 +17,7 @@ from graphkin.analytical.loads import applied
 from graphkin.graphical import construct_forces
 from graphkin.kinematics.points import link_points
 from graphkin.model import PointForce
-from graphkin.notation import (
-    PICOMETRE,
-    RESIDUE,
-    input_text,
-    largest,
-    num,
-    unless_rounding,
-)
+from graphkin.notation import PICOMETRE, RESIDUE, input_text, largest, num, unless_rounding
 
 
 def _vec(v):

@@ -415,7 +415,7 @@ def test_lesson_in_voila(voila_page, voila, workdir, timings, lesson):
 @pytest.mark.parametrize("problem", ["strip_cutter", "double_slider"])  # a crank (degrees) and a slider (mm)
 def test_graphkin_explore_serves_the_explorer_and_stops_on_ctrl_c(browser, timings, problem):
     """`graphkin explore PROBLEM`: one URL line, a working explorer, Ctrl-C → one line, exit 130, Voilà gone."""
-    proc = subprocess.Popen([sys.executable, "-m", "graphkin.cli.explore", problem, "--no-browser"],
+    proc = subprocess.Popen([sys.executable, "-m", "graphkin", "explore", problem, "--no-browser"],
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=ROOT)
     try:
         line = proc.stdout.readline()
@@ -444,7 +444,7 @@ def test_graphkin_explore_serves_the_explorer_and_stops_on_ctrl_c(browser, timin
 
 
 def test_graphkin_explore_bad_problem_is_one_line():
-    r = subprocess.run([sys.executable, "-m", "graphkin.cli.explore", "no_such_problem", "--no-browser"],
+    r = subprocess.run([sys.executable, "-m", "graphkin", "explore", "no_such_problem", "--no-browser"],
                        capture_output=True, text=True, cwd=ROOT, timeout=60)
     assert r.returncode == 2 and r.stdout == ""
     assert len(r.stderr.strip().splitlines()) == 1 and "no_such_problem" in r.stderr

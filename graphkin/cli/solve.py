@@ -1,0 +1,93 @@
+"""``graphkin solve PROBLEM``: both routes at the problem's positions (or ``--at``), as text or JSON, and figures."""
+
+from __future__ import annotations
+
+import sys
+
+from graphkin.cli import _common
+from graphkin.cli._common import batch_note, check_outputs, position_text, positions
+from graphkin.errors import GraphkinError
+
+
+def add_parser(sub) -> None:
+    """Add ``solve`` to the ``graphkin`` subcommands."""
+    s = sub.add_parser("solve", help="solve a problem: a catalog name or a TOML file")
+    s.add_argument("problem", help="catalog name (see 'graphkin list') or path to a problem file")
+    s.add_argument("--at", help="input position(s) with units, comma-separated, e.g. '124 deg,140 deg' or '200 mm'")
+    s.add_argument("--json", action="store_true", help="print the result as JSON in SI units (schema: docs/json.md)")
+    s.add_argument("--figure", metavar="FILE", help="write the side-by-side figure (.png, .svg or .pdf); "
+                   "with several positions, one file each, numbered")
+    s.add_argument("--steps", metavar="DIR", help="write the construction step by step, one PNG frame per step")
+
+
+def run(args) -> int:
+    """Carry out ``graphkin solve``; returns the exit code (2 if a position has no solution)."""
+    import numpy as np
+
+    from graphkin import catalog, report
+    from graphkin.files import json_text
+
+    check_outputs(args.figure, args.steps)
+    problem = catalog.load(args.problem)
+    result = problem.solve(positions(problem, args.at) if args.at is not None else None)
+    graphical = report.constructions(result)
+    if args.json:
+        print(json_text(report.solution(problem, result, graphical)))
+    else:
+        print(report.format_solution(problem, result, graphical))
+    if args.figure or args.steps:
+        _figures(problem, result, graphical, args.figure, args.steps, sys.stderr if args.json else sys.stdout)
+    bad = np.flatnonzero(~result.valid)
+    if len(bad):
+        # One line, however many positions fail: the first names the position and the reason.
+        i = bad[0]
+        more = f" (and {len(bad) - 1} more of the {result.n} positions)" if len(bad) > 1 else ""
+        print(f"graphkin: error: {problem.name}: {position_text(problem, result.kinematics.q[i])}: "
+              f"{result.reason(i)}{more}", file=sys.stderr)
+    return 2 if len(bad) else 0
+
+
+def _figures(problem, result, graphical, figure, steps, say):
+    """Write the side-by-side figure(s) and the step frames; say which files went where.
+
+    A batch that takes more than a second shows a tqdm progress bar on stderr,
+    one tick per position drawn. Each file is written whole or not at all
+    (:func:`graphkin.draw.save`); if the batch stops part-way (Ctrl-C, a full
+    disk), the one-line message says how many files were written and the last.
+    """
+    from pathlib import Path
+
+    from tqdm import tqdm
+
+    from graphkin import draw
+
+    many = result.n > 1
+    drawn = [(i, c) for i, c in enumerate(graphical) if c is not None and c.valid]
+    written: list[Path] = []
+    try:
+        for i, c in tqdm(drawn, desc="graphkin: drawing", unit="position", delay=_common.PROGRESS_DELAY, file=sys.stderr,
+                          leave=False, disable=None):  # disable=None: no bar when stderr is not a terminal
+            tag = f"_{i + 1}" if many else ""
+            if figure:
+                path = Path(figure)
+                path = path.with_name(f"{path.stem}{tag}{path.suffix}")
+                path.parent.mkdir(parents=True, exist_ok=True)
+                written.append(draw.save(draw.draw_solution(c, result), path))
+                tqdm.write(f"figure written to {path}", file=say)
+            if steps:
+                folder = Path(steps)
+                folder.mkdir(parents=True, exist_ok=True)
+                frames = []
+                for k, fig in enumerate(draw.draw_steps(c), start=1):
+                    frames.append(draw.save(fig, folder / f"{Path(problem.name).stem}{tag}_step{k:02d}.png"))
+                    written.append(frames[-1])
+                tqdm.write(f"{len(frames)} construction steps written to {folder}/ "
+                           f"({frames[0].name} … {frames[-1].name})" if frames else
+                           f"no construction steps to write for position {i + 1}", file=say)
+    except KeyboardInterrupt:
+        raise KeyboardInterrupt(batch_note(written)) from None
+    except OSError as exc:
+        where = exc.filename or (figure or steps)
+        raise GraphkinError(f"{where}: cannot be written ({exc.strerror or exc}); {batch_note(written)}") from None
+    except GraphkinError as exc:
+        raise GraphkinError(f"{exc}; {batch_note(written)}") from None
