@@ -73,10 +73,10 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 import pylinkage_side as ps  # noqa: E402
 
 import graphkin  # noqa: E402
-from graphkin.kinematics import solve_kinematics  # noqa: E402
-from graphkin.model import Driver, Link, Mechanism, Revolute  # noqa: E402
 from graphkin.analytical import solve  # noqa: E402
 from graphkin.analytical.matrix import solve_matrix  # noqa: E402
+from graphkin.kinematics import solve_kinematics  # noqa: E402
+from graphkin.model import Driver, Link, Mechanism, Revolute  # noqa: E402
 
 N_SIZES = ps.N_SIZES  # (360, 3600, 100_000)
 LOOP_SIZES = (360, 3600)  # the Python loop is extrapolated beyond these

@@ -7,7 +7,7 @@ code -- the crank's sin and cos, the circle intersection for B, the
 velocity and acceleration equations by Cramer's rule, the inertia loads of
 links 2, 3 and 4, the dyad's three joint forces and the crank's pivot force
 and driving torque -- with the same formulas as graphkin's vectorised
-solver (``graphkin/kinematics/dyads.py`` and ``graphkin/analytical/kinetostatics.py``),
+solver (``graphkin/kinematics/groups.py`` and ``graphkin/analytical/kinetostatics.py``),
 nothing cached between calls but the compiled function. It is what numpy's
 temporaries and per-call overhead cost graphkin: the time a compiled loop
 needs for the same numbers.

@@ -216,3 +216,40 @@ def as_array(value, what: str, kind: str, *, n: int | None = None) -> np.ndarray
         raise ModelError(f"{what} has {x.size} values for {n} positions: give one value, or one per position")
     check_array(x, kind, what)
     return np.broadcast_to(x, (n,)).copy() if n is not None else x
+
+
+def ndim(value) -> int:
+    """Number of array dimensions of ``value``; -1 for a ragged nest of lists that is no array at all."""
+    try:
+        return np.ndim(value)
+    except (ValueError, TypeError):
+        return -1
+
+
+def finite(value, what: str, unit: str = "") -> float:
+    """``value`` as a finite float, or a one-line ModelError naming ``what`` (and its unit)."""
+    unit = f" [{unit}]" if unit else ""
+    # bool is an int subclass; a student who passes True meant something else.
+    # A string ("5 kg") belongs in a problem file, where units are read; an array is many numbers, not one.
+    if isinstance(value, (bool, np.bool_, str, bytes)) or ndim(value) != 0:
+        raise ModelError(f"{what} must be a number{unit}, got {value!r}")
+    try:
+        x = float(value)
+    except (TypeError, ValueError):
+        raise ModelError(f"{what} must be a number{unit}, got {value!r}") from None
+    if not math.isfinite(x):
+        raise ModelError(f"{what} must be finite{unit}, got {value!r}")
+    return x
+
+
+def point(value, what: str, kind: str = "coordinate") -> tuple[float, float]:
+    """A pair (x, y) of finite floats inside the range of ``kind`` (:mod:`graphkin.ranges`)."""
+    unit = {"coordinate": "in metres", "force": "in newtons"}[kind]
+    # A string unpacks into two characters and an array into rows: neither is a pair of numbers.
+    if isinstance(value, (str, bytes)) or ndim(value) != 1:
+        raise ModelError(f"{what} must be a pair (x, y) {unit}, got {value!r}")
+    try:
+        x, y = value
+    except (TypeError, ValueError):
+        raise ModelError(f"{what} must be a pair (x, y) {unit}, got {value!r}") from None
+    return (check(finite(x, what + ".x"), kind, what + ".x"), check(finite(y, what + ".y"), kind, what + ".y"))

@@ -44,18 +44,7 @@ from hypothesis import assume
 from hypothesis import strategies as st
 
 from graphkin.kinematics import Dyad, decompose, solve_kinematics
-from graphkin.model import (
-    FRAME,
-    Active,
-    Driver,
-    GearMesh,
-    Link,
-    Mechanism,
-    PointForce,
-    Prismatic,
-    Revolute,
-    Torque,
-)
+from graphkin.model import FRAME, Active, Driver, GearMesh, Link, Mechanism, PointForce, Prismatic, Revolute, Torque
 
 TWO_PI = 2.0 * math.pi
 

@@ -10,8 +10,8 @@ import numpy as np
 import pytest
 
 from graphkin import catalog
-from graphkin.cli import main
 from graphkin.analytical.matrix import assemble, solve_matrix
+from graphkin.cli import main
 
 
 @pytest.mark.parametrize("name", catalog.names())

@@ -1,18 +1,18 @@
 """``graphkin cycle``: the summary equals the analysis API's numbers, --json, --figure, bad input."""
 
 import io
-import sys
 import json
 import math
 import re
+import sys
 
 import numpy as np
 import pytest
 
 from graphkin import catalog
-from graphkin.cycle import joint_force_index, sweep
 from graphkin.cli import main
 from graphkin.cli._common import Progress as _Progress
+from graphkin.cycle import joint_force_index, sweep
 from graphkin.report import DISK_THICKNESS, STEEL
 
 

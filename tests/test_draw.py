@@ -167,7 +167,8 @@ def test_every_force_and_couple_on_each_link_is_labelled(case):
 
 
 def test_labels_keep_clear_of_their_own_arrows(case):
-    from graphkin.draw.labels import measuring_renderer as renderer_of, segment_hits_box as _seg_hits_box
+    from graphkin.draw.labels import measuring_renderer as renderer_of
+    from graphkin.draw.labels import segment_hits_box as _seg_hits_box
 
     for link, d in case.fbd.items():
         r = renderer_of(d.ax.figure)
@@ -312,7 +313,9 @@ def test_labels_keep_off_the_scale_bar(key):
 
 def test_scale_bar_is_a_box_the_labeler_keeps_off():
     """The bar's numbers are measured by arithmetic (no text layout per draw): the box is where the text is drawn."""
-    from graphkin.draw.labels import Labeler, measuring_renderer as renderer_of, text_box as _text_box
+    from graphkin.draw.labels import Labeler
+    from graphkin.draw.labels import measuring_renderer as renderer_of
+    from graphkin.draw.labels import text_box as _text_box
     from graphkin.draw.scales import scale_bar
     from graphkin.draw.style import resolve
 

@@ -19,14 +19,14 @@ from types import MappingProxyType
 import numpy as np
 import pytest
 
-import graphkin.kinematics.dyads as dyads
 import graphkin.analytical.kinetostatics as kinetostatics
+import graphkin.kinematics.solver as dyads
+from graphkin.analytical import solve, solve_forces
+from graphkin.catalog import load as load_problem
+from graphkin.catalog import names as catalog_names
 from graphkin.kinematics import solve_kinematics
 from graphkin.kinematics.plan import cached_plans, plan_of
 from graphkin.model import Active, Driver, Link, Mechanism, PointForce, Revolute, Torque
-from graphkin.catalog import load as load_problem
-from graphkin.catalog import names as catalog_names
-from graphkin.analytical import solve, solve_forces
 
 FIELDS = ("theta", "omega", "alpha", "e", "O", "v_O", "a_O")
 

@@ -7,15 +7,14 @@ from __future__ import annotations
 import json
 import math
 import os
-from pathlib import Path
 
 import numpy as np
 import pytest
 
-from graphkin.cycle import size_flywheel
 from graphkin.cli import main
-from graphkin.errors import GraphkinError
+from graphkin.cycle import size_flywheel
 from graphkin.cycle.flywheel_file import load_flywheel, parse_flywheel
+from graphkin.errors import GraphkinError
 
 TURN = 2 * math.pi
 

@@ -12,9 +12,9 @@ import math
 import numpy as np
 from hypothesis import given, settings
 
-from graphkin.model import Driver, Link, Mechanism, PointForce, Revolute
 from graphkin.analytical import solve
 from graphkin.analytical.matrix import solve_matrix
+from graphkin.model import Driver, Link, Mechanism, PointForce, Revolute
 from tests.reference.soylemez_fourbar import soylemez_fourbar
 from tests.test_reference_soylemez_fourbar import crank_rockers
 

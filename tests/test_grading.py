@@ -9,9 +9,9 @@ from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
 from graphkin import exercises
+from graphkin.exercises.exercise import dimension_of
 from graphkin.exercises.grading import MESSAGES, grade_question
 from graphkin.exercises.quantities import expected, unit_factor
-from graphkin.exercises.exercise import dimension_of
 
 STUDENTS = st.text(st.characters(codec="utf-8", categories=("L", "N", "P", "Zs")), min_size=1, max_size=12).filter(
     lambda s: s.strip())

@@ -6,12 +6,12 @@ import numpy as np
 import pytest
 
 from graphkin import catalog
+from graphkin.analytical import solve
 from graphkin.geometry import cross
 from graphkin.graphical import construct_forces
 from graphkin.graphical.construction import Arrow, Step, nice_scale
 from graphkin.model import Driver, Link, Mechanism, PointForce, Prismatic, Revolute
 from graphkin.notation import polar
-from graphkin.analytical import solve
 
 
 def agree(c, r, i=0, rel=1e-9):

@@ -5,9 +5,9 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+from graphkin.analytical import solve_forces
 from graphkin.graphical import construct_forces
 from graphkin.kinematics import solve_kinematics
-from graphkin.analytical import solve_forces
 from tests.strategies import families, friction_families
 
 SETTINGS = settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])

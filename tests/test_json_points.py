@@ -20,13 +20,12 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from graphkin import catalog
-from graphkin.cycle import sweep
+from graphkin.analytical import solve_forces
 from graphkin.cli import main
-from graphkin.report import cycle_data
+from graphkin.cycle import sweep
 from graphkin.kinematics import solve_kinematics
 from graphkin.kinematics.points import link_points, point_motion, rigid_body
-from graphkin.report import cycle_links, solution
-from graphkin.analytical import solve_forces
+from graphkin.report import cycle_data, cycle_links, solution
 from tests.strategies import families, length_scale
 
 SETTINGS = settings(max_examples=30, deadline=None, suppress_health_check=[HealthCheck.too_slow])

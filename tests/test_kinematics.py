@@ -5,7 +5,7 @@
 - positions satisfy every joint's constraint (pins coincide, slider points
   lie on their guides, gears roll);
 - the assembly branch is continuous over a full crank cycle and means what
-  the docstring of :mod:`graphkin.kinematics.dyads` says;
+  the docstring of :mod:`graphkin.kinematics.groups` says;
 - positions that cannot be assembled give nan, ``valid`` False and a reason;
 - the Söylemez double-slider example.
 
@@ -39,13 +39,11 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+from graphkin.analytical import solve_forces
 from graphkin.kinematics import Dyad, decompose, solve_kinematics
 from graphkin.model import FRAME, Driver, GearMesh, Link, Mechanism, Prismatic, Revolute
-from graphkin.analytical import solve_forces
-
 from tests.strategies import crank_families, families, length_scale
 from tests.vectors import cross, dot, perp
-
 
 FD_STEP = 1e-3
 FD_RTOL = 1e-6
@@ -224,7 +222,7 @@ def _joint_point(kin, joint, link):
 def branch_signs(kin):
     """For each dyad with two assemblies: (label, σ asked for, sign found per position).
 
-    Meanings (docstring of graphkin.kinematics.dyads):
+    Meanings (docstring of graphkin.kinematics.groups):
     RRR: σ = +1 puts J2 left of J1 → J3;  RRP: J2 beyond the foot of the
     perpendicular from J1, along u;  RPR: u points from the guide link's pin
     to the slider link's pin.

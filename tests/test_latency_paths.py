@@ -1,7 +1,7 @@
 """The fast paths behind the command line's latency (issue 15) give what the slow ones gave.
 
 * A unit pint has converted once is converted again without pint, by pint's
-  own factor kept on disk (:data:`graphkin.units._FACTORS`): the same floats,
+  own factor kept on disk (:data:`graphkin.registries._FACTORS`): the same floats,
   and every error still pint's.
 * pint's parsed registry is kept on disk (:func:`graphkin.units.registry`): a
   damaged, missing or unwritable cache costs time, never a wrong number or an
@@ -31,10 +31,11 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from graphkin import units
+from graphkin.errors import ProblemFileError
 from graphkin.files import json_text
 from graphkin.report import cycle_data
 from graphkin.report.plain import floats as _floats
-from graphkin.errors import ProblemFileError
+from graphkin.units import checks, convert, registries
 
 REPO = Path(__file__).resolve().parents[1]
 # Units teachers write; each is learned from pint on its first use.
@@ -57,7 +58,7 @@ TABLE = sorted({
 def _own_cache(tmp_path_factory, monkeypatch):
     """Each test learns units into a cache folder of its own, never the user's."""
     monkeypatch.setenv("GRAPHKIN_CACHE_DIR", str(tmp_path_factory.mktemp("cache")))
-    monkeypatch.setattr(units, "_FACTORS", None)
+    monkeypatch.setattr(registries, "_FACTORS", None)
 
 
 def _python(code: str, **env) -> subprocess.CompletedProcess:
@@ -67,26 +68,26 @@ def _python(code: str, **env) -> subprocess.CompletedProcess:
 
 def _learned(unit, dimension):
     """The factor graphkin learns for ``unit`` from pint (by converting "1 unit" once), or None."""
-    units._CONVERTED.clear()
+    convert._CONVERTED.clear()
     try:
         units.to_si(f"1 {unit}", dimension, field="x", file="f.toml")
     except ProblemFileError:
         return None
-    return units._known_factors().get((unit, dimension))
+    return registries.known_factors().get((unit, dimension))
 
 
 def _convert(text, dimension, *, table=True):
     """``to_si`` with or without the learned factors: the value, or the error's message."""
-    saved = units._known_factors()
-    units._FACTORS = dict(saved) if table else {}
-    units._CONVERTED.clear()
+    saved = registries.known_factors()
+    registries._FACTORS = dict(saved) if table else {}
+    convert._CONVERTED.clear()
     try:
         return units.to_si(text, dimension, field="x", file="f.toml")
     except ProblemFileError as exc:
         return f"error: {exc}"
     finally:
-        units._FACTORS = saved
-        units._CONVERTED.clear()
+        registries._FACTORS = saved
+        convert._CONVERTED.clear()
 
 
 # -- units without pint --------------------------------------------------------------------------
@@ -95,13 +96,13 @@ def _convert(text, dimension, *, table=True):
 @pytest.mark.parametrize("unit, dimension", TABLE)
 def test_each_factor_is_pints_own_and_pint_accepts_the_unit(unit, dimension):
     ureg = units.registry()
-    parsed = units._parse_unit(unit, f"1 {unit}", "f.toml", "x")
-    units._check_unit(parsed, f"1 {unit}", dimension, "f.toml", "x")  # raises if pint would refuse it
+    parsed = checks.parse_unit(unit, f"1 {unit}", "f.toml", "x")
+    checks.check_unit(parsed, f"1 {unit}", dimension, "f.toml", "x")  # raises if pint would refuse it
     pint_factor = ureg.Quantity(1.0, parsed).m_as(units.SI_UNITS[dimension] or "dimensionless")
     assert _learned(unit, dimension) == pint_factor  # exactly: pint converts x as x * factor
     # Kept on disk: a fresh process reads it back without pint.
-    units._FACTORS = None
-    assert units._known_factors()[unit, dimension] == pint_factor
+    registries._FACTORS = None
+    assert registries.known_factors()[unit, dimension] == pint_factor
 
 
 @settings(max_examples=300, deadline=None)
@@ -130,20 +131,20 @@ def test_a_damaged_or_foreign_factor_file_is_only_time_lost(tmp_path, monkeypatc
     monkeypatch.setenv("GRAPHKIN_CACHE_DIR", str(tmp_path))
     path = tmp_path / "unit-factors.json"
     for text in ("garbage", "", json.dumps({"pint": "another", "factors": [["mm", "length", 1.0]]}),
-                 json.dumps({"pint": units._pint_stamp(), "factors": [["mm", "length", "0.001"], ["x", "nope", 1.0]]})):
+                 json.dumps({"pint": registries._pint_stamp(), "factors": [["mm", "length", "0.001"], ["x", "nope", 1.0]]})):
         path.write_text(text, encoding="utf-8")
-        units._FACTORS = None
-        assert units._known_factors() == {}
-        units._CONVERTED.clear()
+        registries._FACTORS = None
+        assert registries.known_factors() == {}
+        convert._CONVERTED.clear()
         assert units.to_si("250 mm", "length", field="x", file="f.toml") == 0.25
-        units._FACTORS = None
-        assert units._known_factors()[("mm", "length")] == 0.001  # written again, whole
+        registries._FACTORS = None
+        assert registries.known_factors()[("mm", "length")] == 0.001  # written again, whole
 
 
 def test_an_unwritable_cache_folder_is_skipped(tmp_path, monkeypatch):
     (tmp_path / "file").write_text("not a folder", encoding="utf-8")
     monkeypatch.setenv("GRAPHKIN_CACHE_DIR", str(tmp_path / "file" / "cache"))
-    units._CONVERTED.clear()
+    convert._CONVERTED.clear()
     assert units.to_si("3 kN", "force", field="x", file="f.toml") == 3000.0
 
 
@@ -189,20 +190,20 @@ def _cache(root: Path) -> Path:
 
 
 def test_the_cache_is_made_once_and_read_after(tmp_path, pint, plain):
-    first = units._cached_registry(pint, tmp_path)
+    first = registries._cached_registry(pint, tmp_path)
     folder = _cache(tmp_path)
-    names = json.loads((folder / units._PINT_MARKER).read_text())
+    names = json.loads((folder / registries._PINT_MARKER).read_text())
     assert names and all((folder / n).is_file() for n in names)
     assert [p.name for p in tmp_path.iterdir()] == [folder.name]  # no temporary folder left behind
     stamp = {n: (folder / n).stat().st_mtime_ns for n in names}
-    second = units._cached_registry(pint, tmp_path)
+    second = registries._cached_registry(pint, tmp_path)
     assert {n: (folder / n).stat().st_mtime_ns for n in names} == stamp  # read, not written again
     assert _factors(first) == _factors(second) == plain
 
 
 @pytest.mark.parametrize("damage", ["garbage", "truncated", "empty", "missing", "marker"])
 def test_a_damaged_cache_still_gives_the_same_numbers_and_is_mended(tmp_path, pint, plain, damage):
-    units._cached_registry(pint, tmp_path)
+    registries._cached_registry(pint, tmp_path)
     folder = _cache(tmp_path)
     pickles = sorted(folder.glob("*.pickle"))
     for p in pickles:
@@ -215,26 +216,26 @@ def test_a_damaged_cache_still_gives_the_same_numbers_and_is_mended(tmp_path, pi
     if damage == "missing":
         pickles[0].unlink()
     if damage == "marker":
-        (folder / units._PINT_MARKER).write_text("{not json")
-    assert _factors(units._cached_registry(pint, tmp_path)) == plain
+        (folder / registries._PINT_MARKER).write_text("{not json")
+    assert _factors(registries._cached_registry(pint, tmp_path)) == plain
     # Mended: the next process reads whole files again.
     for p in folder.glob("*.pickle"):
         import pickle
 
         pickle.loads(p.read_bytes())
-    assert _factors(units._cached_registry(pint, tmp_path)) == plain
+    assert _factors(registries._cached_registry(pint, tmp_path)) == plain
 
 
 def test_a_cache_folder_that_cannot_be_written_is_skipped(tmp_path, pint, plain):
     blocker = tmp_path / "a-file"
     blocker.write_text("in the way")
-    assert _factors(units._cached_registry(pint, blocker / "cache")) == plain  # mkdir fails: no cache
+    assert _factors(registries._cached_registry(pint, blocker / "cache")) == plain  # mkdir fails: no cache
     if os.geteuid() != 0:  # root writes anywhere
         ro = tmp_path / "read-only"
         ro.mkdir()
         ro.chmod(0o500)
         try:
-            assert _factors(units._cached_registry(pint, ro)) == plain
+            assert _factors(registries._cached_registry(pint, ro)) == plain
         finally:
             ro.chmod(0o700)
 
@@ -258,7 +259,7 @@ def test_processes_that_build_the_cache_at_once_all_get_a_registry(tmp_path):
     assert all(p.returncode == 0 for p in procs), [e for _, e in outs]
     assert {o.strip() for o, _ in outs} == {"94.24777960769379 865 N·mm"}
     folder = _cache(tmp_path)
-    assert all((folder / n).is_file() for n in json.loads((folder / units._PINT_MARKER).read_text()))
+    assert all((folder / n).is_file() for n in json.loads((folder / registries._PINT_MARKER).read_text()))
 
 
 # -- JSON ----------------------------------------------------------------------------------------

@@ -26,7 +26,7 @@ from hypothesis import strategies as st
 
 from graphkin.cli import main
 from graphkin.errors import GraphkinError, ModelError
-from graphkin.model import SENSES, PointForce, Table, Torque
+from graphkin.model import SENSES, PointForce, Table
 from graphkin.problem import load_problem, parse_problem
 from tests.strategies import families
 from tests.test_graphic_properties import check as graphical_equals_analytical

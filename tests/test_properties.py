@@ -37,15 +37,13 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+from graphkin.analytical import solve_forces
+from graphkin.analytical.matrix import assemble, solve_matrix
 from graphkin.errors import GraphkinError
 from graphkin.kinematics import solve_kinematics
 from graphkin.model import FRAME, GearMesh, Mechanism, PointForce, Prismatic, Revolute
-from graphkin.analytical import solve_forces
-from graphkin.analytical.matrix import assemble, solve_matrix
-
 from tests.strategies import families, friction_families, length_scale
 from tests.vectors import cross, dot, perp
-
 
 RTOL = 1e-9
 BATCH_RTOL = 1e-12  # same arithmetic on the same numbers: only rounding-order noise allowed

@@ -36,8 +36,8 @@ import numpy as np
 import pytest
 
 from graphkin import catalog
-from graphkin.report import constructions
 from graphkin.notation import polar
+from graphkin.report import constructions
 
 R, L, D, M, RPM, DP = 0.3, 1.2, 0.5, 250.0, 250.0, 0.35e6  # m, m, m, kg, rpm, Pa
 THETA = math.radians(60.0)

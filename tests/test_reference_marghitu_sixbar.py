@@ -149,7 +149,7 @@ def test_the_sub_problems_add_up_to_the_printed_moment(solved):
 
 def _links(result, name):
     """The (i, j) of a force name such as ``G32``."""
-    from graphkin.analytical.result import parse_force_name
+    from graphkin.model.names import parse_force_name
 
     return parse_force_name(result.mechanism, name)
 

@@ -19,13 +19,13 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from graphkin import catalog
+from graphkin.analytical import solve_forces
 from graphkin.cli import main
 from graphkin.graphical import construct_forces
 from graphkin.kinematics import solve_kinematics
 from graphkin.model import Driver, Mechanism, Prismatic
 from graphkin.problem import parse_problem
 from graphkin.report import constructions, format_solution, solution
-from graphkin.analytical import solve_forces
 from tests.strategies import families, length_scale
 from tests.test_properties import active, close, joint_point
 

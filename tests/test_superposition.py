@@ -26,10 +26,10 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from graphkin import catalog
+from graphkin.analytical import solve_forces
 from graphkin.graphical import construct_forces
 from graphkin.kinematics import solve_kinematics
 from graphkin.model import GearMesh, Prismatic
-from graphkin.analytical import solve_forces
 from tests.strategies import families, friction_families
 
 SETTINGS = settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])

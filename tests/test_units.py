@@ -13,15 +13,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from graphkin.errors import ProblemFileError
-from graphkin.units import (
-    DIMENSIONS,
-    SI_UNITS,
-    format_si,
-    registry,
-    to_si,
-    to_si_array,
-    to_si_vector,
-)
+from graphkin.units import DIMENSIONS, SI_UNITS, format_si, registry, to_si, to_si_array, to_si_vector
 
 FILE = "problems/slider_crank.toml"
 FIELD = "links[2].value"

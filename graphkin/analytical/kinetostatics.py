@@ -18,7 +18,7 @@ and reported invalid).
 The revolute crank and the RRR dyad have compiled steps (built once per
 mechanism, :mod:`graphkin.kinematics.plan`) that reuse the loop the kinematic
 pass solved; the other groups run the general code. A large batch is solved
-:data:`~graphkin.kinematics.dyads.CHUNK` positions at a time.
+:data:`~graphkin.kinematics.solver.CHUNK` positions at a time.
 """
 
 from __future__ import annotations
@@ -34,8 +34,9 @@ from graphkin.errors import GraphkinError
 from graphkin.geometry import zcross as cross
 from graphkin.geometry import zdot as dot
 from graphkin.kinematics import DriverGroup, Dyad, GearGroup, Kinematics
-from graphkin.kinematics.dyads import CHUNK, _run, deferred_kinematics, prepare, solve_columns
+from graphkin.kinematics.groups import solve_columns
 from graphkin.kinematics.plan import Plan, plan_of
+from graphkin.kinematics.solver import CHUNK, deferred_kinematics, prepare, run
 from graphkin.model import Mechanism, Prismatic, Revolute
 
 
@@ -241,7 +242,7 @@ def _rrr(plan: Plan, mech: Mechanism, d: Dyad):
     keys = ((min(a, j), max(a, j)), (min(j, k), max(j, k)), (min(b, k), max(b, k)))
 
     def from_kinematics(kin):
-        """The loop (see :func:`graphkin.kinematics.dyads._rrr_step`) from kinematics that do not have it."""
+        """The loop (see :func:`graphkin.kinematics.solver._rrr_step`) from kinematics that do not have it."""
         X1 = pa if a == frame else kin.O[a] + kin.e[a] * pa
         X3 = pb if b == frame else kin.O[b] + kin.e[b] * pb
         X2 = kin.O[k] + kin.e[k] * pk2
@@ -559,7 +560,7 @@ def solve(mech: Mechanism, q, q_dot=0.0, q_ddot=0.0, *, static: bool = False) ->
     with np.errstate(all="ignore"):
         for s in range(0, n, CHUNK):
             t = min(n, s + CHUNK)
-            st, valid = _run(plan, mech, q[s:t], q_dot[s:t], q_ddot[s:t], rates, angles=False)
+            st, valid = run(plan, mech, q[s:t], q_dot[s:t], q_ddot[s:t], rates, angles=False)
             st.static = static
             # The state has the per-link fields the compiled steps read; the general code wants Kinematics.
             kin = Kinematics(mech, st.q, st.q_dot, st.q_ddot, st.theta, st.omega, st.alpha, st.e, st.O, st.v_O,

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import re
 from dataclasses import dataclass, field
 from typing import Mapping
 
@@ -12,24 +11,7 @@ from graphkin.analytical.loads import Inertia, inertia
 from graphkin.errors import GraphkinError
 from graphkin.kinematics import Kinematics
 from graphkin.model import GearMesh, Prismatic
-
-_NAME = re.compile(r"^([FGT])(\d)(\d)$|^([FGT])_?(\d+),(\d+)$")
-
-
-def parse_force_name(mechanism, name: str) -> tuple[int, int]:
-    """Links (i, j) of a joint-force name: ``"F23"`` → (2, 3); checks the letter (F or G) fits the joint."""
-    m = _NAME.match(name) if isinstance(name, str) else None
-    if not m:
-        raise GraphkinError(f"{name!r} is not a force name like 'F23', 'G14' or {mechanism.driver.symbol!r}")
-    letter, i, j = (m.group(1), m.group(2), m.group(3)) if m.group(1) else (m.group(4), m.group(5), m.group(6))
-    i, j = int(i), int(j)
-    try:
-        joint = mechanism.joint_between(i, j)
-    except GraphkinError:
-        raise GraphkinError(f"{name!r}: links {i} and {j} share no joint") from None
-    if letter != joint.force_letter:
-        raise GraphkinError(f"{name!r}: the joint between links {i} and {j} is named {joint.force_letter}{i}{j}")
-    return i, j
+from graphkin.model.names import force_name, parse_force_name
 
 
 @dataclass(frozen=True)
@@ -110,9 +92,8 @@ class ForceAnalysis:
         return out + [self.driver_name]
 
     def name_of(self, i: int, j: int) -> str:
-        letter = self.mechanism.joint_between(i, j).force_letter
-        sep = "" if i < 10 and j < 10 else ","
-        return f"{letter}{i}{sep}{j}" if sep == "" else f"{letter}{i},{j}"
+        """The name of the force of link ``i`` on link ``j`` (:func:`graphkin.model.names.force_name`)."""
+        return force_name(self.mechanism, i, j)
 
     def __getitem__(self, name: str) -> np.ndarray:
         if name == self.driver_name:

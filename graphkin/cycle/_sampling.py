@@ -14,7 +14,7 @@ import numpy as np
 
 from graphkin.cycle._turn import TURN, closing_step
 from graphkin.errors import GraphkinError
-from graphkin.units import MAX_POSITIONS
+from graphkin.ranges import MAX_POSITIONS
 
 if TYPE_CHECKING:
     from graphkin.problem import Problem

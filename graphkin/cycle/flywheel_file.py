@@ -36,7 +36,7 @@ import numpy as np
 from graphkin.cycle.flywheel import size_flywheel
 from graphkin.errors import GraphkinError, ProblemFileError
 from graphkin.files import read_text
-from graphkin.problem import _Reader
+from graphkin.problem import FieldReader
 from graphkin.problem.tables import parse_table, read_csv_beside
 
 _TOP = {"title", "source", "notes", "flywheel", "driving", "resisting"}
@@ -125,7 +125,7 @@ def parse_flywheel(text: str, *, file: str = "<flywheel>", base: str | Path = ".
 
 def build_flywheel(data: Mapping[str, Any], *, file: str = "<flywheel>", base: str | Path = ".") -> FlywheelProblem:
     """Build a :class:`FlywheelProblem` from a flywheel file's tables already read into a dict."""
-    rd = _Reader(file)
+    rd = FieldReader(file)
     if not isinstance(data, Mapping):
         raise GraphkinError(f"build_flywheel takes a flywheel file's tables as a dict, got {type(data).__name__}")
     rd.table(dict(data), "", _TOP)
@@ -182,7 +182,7 @@ def build_flywheel(data: Mapping[str, Any], *, file: str = "<flywheel>", base: s
     return problem
 
 
-def _torque(rd: _Reader, t: dict, role: str, period: float, base):
+def _torque(rd: FieldReader, t: dict, role: str, period: float, base):
     """(curve (angles, torques) or None, constant or "mean" or None, words) of one ``[driving]``/``[resisting]`` table."""
     sources = [k for k in ("table", "csv", "torque") if k in t]
     if len(sources) != 1:

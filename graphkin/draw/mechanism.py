@@ -493,7 +493,7 @@ def draw_mechanism(construction, *, ax=None, labels=True, faint=False, emphasis=
         lab.dot(X, 3.6)
     # A length scale: the drawing is to scale, in mm.
     arr = np.asarray(extent, float)
-    lo, hi = arr.min(axis=0), arr.max(axis=0)
+    lo = arr.min(axis=0)
     value = nice_round(0.2 * geom.size)
     bar_at = np.array([lo[0], lo[1] - 0.1 * geom.size])
     drawn += scale_bar(ax, bar_at, value, value, s=s, unit_text="mm", tick=0.012 * geom.size, labeler=lab,

@@ -66,7 +66,7 @@ Rules:
   with other than two components, or whose components carry different
   units.
 
-pint is imported lazily, by :func:`graphkin.units.registry`, on the first
+pint is imported lazily, by :func:`graphkin.registry`, on the first
 answer that names a unit: importing this module does not load it. Parsed
 units are cached, so reading an answer takes a few microseconds once its unit
 has been seen.
@@ -96,8 +96,11 @@ import re
 from dataclasses import dataclass
 from typing import Any
 
-from graphkin import units
 from graphkin.errors import GraphkinError
+from graphkin.units import checks
+from graphkin.units.convert import POLAR_ZERO_RTOL
+from graphkin.units.dimensions import ANGLE_POWER, DIMENSIONS, SI_UNITS
+from graphkin.units.registries import registry
 
 __all__ = ["MAX_CHARS", "Reading", "Unreadable", "read_answer"]
 
@@ -108,10 +111,10 @@ MAX_CHARS = 200
 # A flywheel question asks for an energy; J, kJ and N*m are all right for it
 # (for a torque question J is not), so energy is told from torque here.
 _ENERGY = "energy"
-_ENERGY_DIMENSIONALITY = units.DIMENSIONS["torque"]  # [mass]*[length]**2/[time]**2
+_ENERGY_DIMENSIONALITY = DIMENSIONS["torque"]  # [mass]*[length]**2/[time]**2
 _POWER_DIMENSIONALITY = "[mass] * [length] ** 2 / [time] ** 3"
 # (graphkin.units may know energy too; the set does not mind.)
-_QUESTION_DIMENSIONS = frozenset(units.DIMENSIONS) | {_ENERGY}
+_QUESTION_DIMENSIONS = frozenset(DIMENSIONS) | {_ENERGY}
 
 # Number shown in "such as ..." hints, with the question's unit.
 _EXAMPLE_NUMBER = "27.06"
@@ -228,7 +231,7 @@ class Reading:
         ``"N*m"``); ``""`` for a bare number.
     dimension : str or None
         The dimension of the unit written: a key of
-        :data:`graphkin.units.DIMENSIONS` (angle powers respected, so
+        :data:`graphkin.DIMENSIONS` (angle powers respected, so
         ``rad/s`` is ``"angular_velocity"`` and ``Hz`` is not), ``"energy"``
         for J, kJ, W*s, ... (and for N*m when the question asks for an
         energy), ``"power"`` for W, N*m/s, ..., else pint's dimensionality,
@@ -291,7 +294,7 @@ def _unit(text: str) -> _Unit | _BadUnit:
     -------
     _Unit or _BadUnit
     """
-    ureg = units.registry()
+    ureg = registry()
     try:
         unit = ureg.parse_units(text)
         kind = _kind(ureg, unit)
@@ -310,7 +313,7 @@ def _unit(text: str) -> _Unit | _BadUnit:
 
 
 def _si_unit(kind: str) -> str | None:
-    si = {_ENERGY: "J", "power": "W"}.get(kind) or units.SI_UNITS.get(kind)
+    si = {_ENERGY: "J", "power": "W"}.get(kind) or SI_UNITS.get(kind)
     if si is None:
         return None
     return si or "dimensionless"
@@ -319,19 +322,19 @@ def _si_unit(kind: str) -> str | None:
 def _kind(ureg: Any, unit: Any) -> str:
     """Name what a unit measures, telling energy from torque and angles from ratios."""
     dim = unit.dimensionality
-    power = units._angle_power(unit)
+    power = checks.angle_power(unit)
     if power == 0 and dim == ureg.get_dimensionality(_ENERGY_DIMENSIONALITY):
         # pint finds J == N*m; the unit names tell energy from a moment.
-        names = (name for name, _ in units._unit_items(unit))
-        if any(units._is_energy_or_power(ureg, name) for name in names):
+        names = (name for name, _ in checks.unit_items(unit))
+        if any(checks.is_energy_or_power(ureg, name) for name in names):
             return _ENERGY
         return "torque"
     if power == 0 and dim == ureg.get_dimensionality(_POWER_DIMENSIONALITY):
         return "power"
-    for name, dimensionality in units.DIMENSIONS.items():
+    for name, dimensionality in DIMENSIONS.items():
         if (
             ureg.get_dimensionality(dimensionality) == dim
-            and units._ANGLE_POWER.get(name, 0) == power
+            and ANGLE_POWER.get(name, 0) == power
         ):
             return name
     text = "" if not dim else str(dim)
@@ -464,16 +467,16 @@ def _number(part: str, ctx: _Context, what: str) -> tuple[float, str]:
 def _check_unit_text(text: str, ctx: _Context, what: str) -> None:
     """Refuse, with a hint, unit texts pint would misread or should not see."""
     for token in _LETTERS_RE.findall(text):
-        m = units._GLUED_TORQUE_RE.match(token)
+        m = checks.GLUED_TORQUE.match(token)
         if m:
             fixed = f"{m['prefix'] or ''}N*{m['length']}"
             raise ctx.fail(
                 f'"{token}" is not read as newton-metres; write "{fixed}", '
                 f"such as {ctx.example(unit=fixed)}"
             )
-    if len(text) > units._MAX_UNIT_CHARS:
+    if len(text) > checks.MAX_UNIT_CHARS:
         raise ctx.fail(f"the unit is too long; {what}")
-    if units._POWER_CHAIN_RE.search(text):
+    if checks.POWER_CHAIN.search(text):
         raise ctx.fail('write one power per unit, such as "kg*m^2"')
     bare = text[2:] if text.startswith("1/") else text
     if _STRAY_NUMBER_RE.search(_EXPONENT_RE.sub("", bare)):
@@ -579,7 +582,7 @@ def _read_polar(magnitude: str, direction: str, ctx: _Context) -> Reading:
 def _polar_xy(r: float, a: float) -> tuple[float, float]:
     """Components of a polar vector; roundoff-sized ones are exactly 0.0 (90° gives x == 0.0)."""
     x, y = r * math.cos(a), r * math.sin(a)
-    small = units._POLAR_ZERO_RTOL * abs(r)
+    small = POLAR_ZERO_RTOL * abs(r)
     return (0.0 if abs(x) <= small else x, 0.0 if abs(y) <= small else y)
 
 
@@ -657,7 +660,7 @@ def read_answer(text: Any, *, dimension: str, unit: str) -> Reading:
         ``"(7.56, -25.98) N"`` (formats: see the module docstring). A real
         number is read as a bare number.
     dimension : str
-        The question's dimension: a key of :data:`graphkin.units.DIMENSIONS`
+        The question's dimension: a key of :data:`graphkin.DIMENSIONS`
         or ``"energy"``.
     unit : str
         The question's unit in pint spelling (``"N"``, ``"N*m"``, ``"deg"``,

@@ -17,11 +17,10 @@ from pathlib import Path
 from typing import Any
 
 from graphkin import catalog
-from graphkin.analytical.result import parse_force_name
 from graphkin.errors import GraphkinError, ProblemFileError
 from graphkin.files import read_text
-from graphkin.problem import _Reader as ProblemReader
-from graphkin.problem import build_problem
+from graphkin.model.names import parse_force_name
+from graphkin.problem import FieldReader, build_problem
 from graphkin.units import to_si
 
 _TOP = {"title", "source", "problem", "intro", "route", "vary", "questions", "partial", "positions", "flywheel",
@@ -218,7 +217,7 @@ class Exercise:
         raise GraphkinError(f"{self.id}: no question {qid!r} (questions: {', '.join(q.id for q in self.questions)})")
 
 
-class _Reader(ProblemReader):
+class _Reader(FieldReader):
     """The problem files' reader (file name in every message, unknown fields with a hint), with the
     two kinds of entry exercise files add."""
 

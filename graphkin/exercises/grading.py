@@ -18,10 +18,10 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping
 
-from graphkin.analytical.result import parse_force_name
 from graphkin.exercises.answers import Reading, Unreadable, read_answer
 from graphkin.exercises.exercise import CYCLE_KINDS, dimension_of
 from graphkin.exercises.quantities import Expected, _distance, _unit_text, unit_factor, value_of
+from graphkin.model.names import parse_force_name
 
 #: Verdicts a question can get.
 VERDICTS = ("correct", "slip", "wrong", "unreadable", "missing")
@@ -67,7 +67,7 @@ _DIMENSION_WORDS = {"force": "a force", "torque": "a torque", "length": "a lengt
                     "time": "a time", "density": "a density"}
 
 
-def _example(exp: Expected) -> str:
+def answer_example(exp: Expected) -> str:
     """How to write an answer to this question, with a made-up number (never the answer itself)."""
     q = exp.question
     u = _unit_text(q.unit)
@@ -207,7 +207,7 @@ def grade_question(variant, q, answer, *, reveal: bool = False) -> dict:
         words = _names(exp, variant)
         given = _DIMENSION_WORDS.get(r.dimension, r.dimension or "something else")
         msg = MESSAGES["dimension"].format(unit=_unit_text(r.unit), given=given, name=words["name"],
-                                           wanted=_DIMENSION_WORDS.get(dim, dim), right=right, example=_example(exp))
+                                           wanted=_DIMENSION_WORDS.get(dim, dim), right=right, example=answer_example(exp))
         share = variant.exercise.partial["dimension"]
         # A wrong dimension earns the share (0 by default) only when the number itself is right.
         number_right = r.number is not None and exp.form in ("scalar", "magnitude") and \
@@ -216,7 +216,7 @@ def grade_question(variant, q, answer, *, reveal: bool = False) -> dict:
     a = _comparable(exp, r)
     if isinstance(a, str) or a is None:
         key = a or "need_scalar"
-        return _verdict(exp, "wrong", None, 0.0, MESSAGES[key].format(name=q.find, example=_example(exp)), text, reveal)
+        return _verdict(exp, "wrong", None, 0.0, MESSAGES[key].format(name=q.find, example=answer_example(exp)), text, reveal)
     if exp.close(a):
         return _verdict(exp, "correct", None, q.points, MESSAGES["correct"], text, reveal)
     found = _slip(exp, a, variant)

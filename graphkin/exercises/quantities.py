@@ -14,8 +14,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from graphkin.analytical.result import parse_force_name
 from graphkin.exercises.exercise import Question, dimension_of
+from graphkin.model.names import parse_force_name
 from graphkin.notation import num, polar_text
 from graphkin.units import to_si
 

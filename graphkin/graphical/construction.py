@@ -12,9 +12,9 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from graphkin.analytical.result import parse_force_name
 from graphkin.errors import GraphkinError
 from graphkin.model import GearMesh, Prismatic
+from graphkin.model.names import force_name, parse_force_name
 
 
 @dataclass(frozen=True)
@@ -267,8 +267,7 @@ class Construction:
                 at = self.pitch_points[tuple(sorted(joint.links))]
             else:
                 at = self.points[link][joint.point]
-            letter = joint.force_letter
-            out.append(Arrow(f"{letter}{other}{link}", (float(F[0]), float(F[1])), False, at))
+            out.append(Arrow(force_name(self.mechanism, other, link), (float(F[0]), float(F[1])), False, at))
         return out
 
     def couple_on(self, link: int) -> float:
@@ -310,8 +309,7 @@ class Construction:
         """
         out = {}
         for (i, j), F in self.forces.items():
-            letter = self.mechanism.joint_between(i, j).force_letter
-            out[f"{letter}{i}{j}"] = tuple(F)
-            out[f"{letter}{j}{i}"] = (-F[0], -F[1])
+            out[force_name(self.mechanism, i, j)] = tuple(F)
+            out[force_name(self.mechanism, j, i)] = (-F[0], -F[1])
         out[self.driver_name] = self.effort if self.driver_vector is None else tuple(self.driver_vector)
         return out

@@ -569,7 +569,6 @@ def _inertia(doc: _Doc, s: _Subject, entry: dict, c, i: int):
     doc.heading(2, "Inertia loads")
     doc.text("d'Alembert: each moving link is in equilibrium under its loads, the joint forces, and its inertia "
              "force and torque.")
-    kin = s.result.kinematics
     for link, d in entry["links"].items():
         body = s.mech.link(int(link))
         if body.mass == 0:

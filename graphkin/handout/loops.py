@@ -1,6 +1,6 @@
 """The kinematics as a textbook writes it: each group's closed-form equations with the numbers substituted.
 
-The solver (:mod:`graphkin.kinematics.dyads`) locates the links group by
+The solver (:mod:`graphkin.kinematics.groups`) locates the links group by
 group — the driver, then each dyad or gear pair in the order
 :func:`graphkin.kinematics.decompose` gives — in closed form: a triangle for
 an RRR dyad, a line and a circle for an RRP dyad, an arcsine for an RPR
@@ -31,7 +31,7 @@ import numpy as np
 from graphkin.geometry import zcross as cross
 from graphkin.geometry import zdot as dot
 from graphkin.handout import maths as M
-from graphkin.kinematics import dyads as solver
+from graphkin.kinematics import groups as solver
 from graphkin.kinematics.structure import DriverGroup, Dyad, GearGroup
 from graphkin.model import Prismatic, Revolute
 
@@ -40,7 +40,7 @@ SIGMA = {
     "RRP": "σ = +1 puts {J2} on the far side, along u, of the foot of the perpendicular from {J1} to the guide",
     "RPR": "σ = +1 points the guide's direction u from the pin of the guide link to the pin of the slider",
 }
-"""What the assembly branch σ means for each dyad type (as in :mod:`graphkin.kinematics.dyads`)."""
+"""What the assembly branch σ means for each dyad type (as in :mod:`graphkin.kinematics.groups`)."""
 
 
 # -- the solver's state before a group ------------------------------------------------------------------
@@ -49,7 +49,7 @@ _FIELDS = ("e", "O", "v_O", "a_O", "theta", "omega", "alpha")
 
 def _state(kin):
     """The solver's scratch state for one position with only the frame located, for its own helpers."""
-    return solver._State(kin.mechanism, 1)
+    return solver.State(kin.mechanism, 1)
 
 
 def _locate(st, kin, i: int, links, fields=_FIELDS):
@@ -270,7 +270,7 @@ def _position_rrr(doc, st, d: Dyad, sigma: int):
     Lk = abs(st.p(d.k, P3) - st.p(d.k, P2))
     D = X3 - X1
     dd = abs(D)
-    # The triangle J1 J2 J3 as the solver solves it (dyads._positions): l along J1 → J3, h across it.
+    # The triangle J1 J2 J3 as the solver solves it (groups.positions): l along J1 → J3, h across it.
     l = (Lj ** 2 - Lk ** 2 + dd ** 2) / (2 * dd)
     h = math.sqrt(max(Lj ** 2 - l ** 2, 0.0))
     X2 = X1 + (l + 1j * sigma * h) * (D / dd)
@@ -294,8 +294,8 @@ def _position_rrr(doc, st, d: Dyad, sigma: int):
         M.row(_r(P2), M.op("="), _r(P1), M.op("+"), M.frac(M.row(M.i("l"), M.SP, _r(P1, P3), M.op("+"), M.i("h"), M.SP,
                                                              _kx(_r(P1, P3))), d_), M.op("="), _mm(X2)),
     )
-    e_j = _z(solver._bar(st, d.j, X1, X2, P1, P2))
-    e_k = _z(solver._bar(st, d.k, X2, X3, P2, P3))
+    e_j = _z(solver.bar(st, d.j, X1, X2, P1, P2))
+    e_k = _z(solver.bar(st, d.k, X2, X3, P2, P3))
     doc.equation(
         _angle_line(d.j, X1, X2, st.p(d.j, P2) - st.p(d.j, P1), P1, P2, float(np.angle(e_j))),
         _angle_line(d.k, X2, X3, st.p(d.k, P3) - st.p(d.k, P2), P2, P3, float(np.angle(e_k))),
@@ -304,18 +304,18 @@ def _position_rrr(doc, st, d: Dyad, sigma: int):
 
 def _line_of(st, J: Prismatic, link: int, e_link: complex, ref: str):
     """The solver's line (Y, u) on which point ``ref`` of ``link`` lies, and a name for Y."""
-    Y, u = solver._line(st, J, link, np.asarray([e_link]), ref)
-    own = solver._own_point(J, link)
+    Y, u = solver.line(st, J, link, np.asarray([e_link]), ref)
+    own = solver.own_point(J, link)
     other = J.guide if link == J.slider else J.slider
     # Y is the other link's point of the pair when ref is this link's own point of it (a pin on the slider).
-    name = solver._own_point(J, other) if st.p(link, own) == st.p(link, ref) else f"Y{J.point}"
+    name = solver.own_point(J, other) if st.p(link, own) == st.p(link, ref) else f"Y{J.point}"
     return _z(Y), _z(u), name
 
 
 def _position_rrp(doc, st, d: Dyad, sigma: int):
     P1, P2 = d.J1.point, d.J2.point
     J3 = d.J3
-    e_k = _z(solver._across(J3, d.k, st.e[d.b]))
+    e_k = _z(solver.across(J3, d.k, st.e[d.b]))
     Y, u, Yname = _line_of(st, J3, d.k, e_k, P2)
     X1 = _z(st.pos(d.a, P1))
     Lj = abs(st.p(d.j, P2) - st.p(d.j, P1))
@@ -341,7 +341,7 @@ def _position_rrp(doc, st, d: Dyad, sigma: int):
                                                        M.sqrt(M.row(_sq(mm(Lj)), M.op("−"), _sq(mm(e))))), u_,
               M.op("="), _mm(X2)),
     )
-    e_j = _z(solver._bar(st, d.j, X1, X2, P1, P2))
+    e_j = _z(solver.bar(st, d.j, X1, X2, P1, P2))
     doc.equation(_angle_line(d.j, X1, X2, st.p(d.j, P2) - st.p(d.j, P1), P1, P2, float(np.angle(e_j))))
 
 
@@ -386,22 +386,22 @@ def _position_rpr(doc, st, d: Dyad, sigma: int):
 def _position_meet(doc, st, d: Dyad, sigma: int):
     """RPP and PRP: the links' angles follow from the guides; a point lies on two lines at once."""
     if d.type == "RPP":
-        e_k = _z(solver._across(d.J3, d.k, st.e[d.b]))
-        e_j = _z(solver._across(d.J2, d.j, np.asarray([e_k])))
+        e_k = _z(solver.across(d.J3, d.k, st.e[d.b]))
+        e_j = _z(solver.across(d.J2, d.j, np.asarray([e_k])))
         # As the solver: link j is placed on its pin first, for the line of the pair J2 to be known.
         st.place(d.j, np.asarray([e_j]), st.pos(d.a, d.J1.point), d.J1.point)
-        ref = solver._own_point(d.J3, d.k)
+        ref = solver.own_point(d.J3, d.k)
         (Y1, u1, n1), (Y2, u2, n2) = _line_of(st, d.J2, d.k, e_k, ref), _line_of(st, d.J3, d.k, e_k, ref)
         angles = [_tied_angle(d.J3, d.k, d.b, float(np.angle(e_k))), _tied_angle(d.J2, d.j, d.k, float(np.angle(e_j)))]
         J_1, J_2 = d.J2, d.J3
     else:  # PRP
-        e_j = _z(solver._across(d.J1, d.j, st.e[d.a]))
-        e_k = _z(solver._across(d.J3, d.k, st.e[d.b]))
+        e_j = _z(solver.across(d.J1, d.j, st.e[d.a]))
+        e_k = _z(solver.across(d.J3, d.k, st.e[d.b]))
         ref = d.J2.point
         (Y1, u1, n1), (Y2, u2, n2) = _line_of(st, d.J1, d.j, e_j, ref), _line_of(st, d.J3, d.k, e_k, ref)
         angles = [_tied_angle(d.J1, d.j, d.a, float(np.angle(e_j))), _tied_angle(d.J3, d.k, d.b, float(np.angle(e_k)))]
         J_1, J_2 = d.J1, d.J3
-    X = _z(solver._meet(st, d, *(np.asarray([x]) for x in (Y1, u1, Y2, u2))))
+    X = _z(solver.meet(st, d, *(np.asarray([x]) for x in (Y1, u1, Y2, u2))))
     t = cross(Y2 - Y1, u2) / cross(u1, u2)
     u1_, u2_ = _u(J_1), _u(J_2)
     doc.text(f"Each link keeps its angle to the link it slides on, so both guides' directions are known; {ref} lies "
@@ -422,7 +422,7 @@ _POSITION = {"RRR": _position_rrr, "RRP": _position_rrp, "RPR": _position_rpr, "
 
 
 def _rates(doc, st, kin, i: int, d: Dyad):
-    """The loop J1 → J3 for velocities and accelerations, as the solver writes it (dyads._rates)."""
+    """The loop J1 → J3 for velocities and accelerations, as the solver writes it (groups.rates)."""
     # The solver's own loop (its arms, guides, tied angular velocities and unknowns), at this position.
     L = solver.loop(st, d)
     X1, X2, X3, r12, r23, A, B = (_z(x) for x in (L.X1, L.X2, L.X3, L.r12, L.r23, L.A, L.B))

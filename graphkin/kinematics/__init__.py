@@ -1,6 +1,6 @@
 """Position, velocity and acceleration of every link, vectorised over input positions."""
 
-from graphkin.kinematics.dyads import solve_kinematics
+from graphkin.kinematics.solver import solve_kinematics
 from graphkin.kinematics.state import Kinematics
 from graphkin.kinematics.structure import DriverGroup, Dyad, GearGroup, decompose
 

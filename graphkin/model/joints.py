@@ -14,8 +14,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from graphkin.errors import ModelError
-from graphkin.model.link import _finite
-from graphkin.ranges import check
+from graphkin.ranges import check, finite
 
 
 def _pair(links, what, at=("links",)):
@@ -103,8 +102,8 @@ class Prismatic:
         _pair((self.guide, self.slider), f"prismatic joint at {self.point}", ("slider",))
         for name in ("direction", "slider_direction"):
             what = f"prismatic joint at {self.point}: {name}"
-            object.__setattr__(self, name, check(_finite(getattr(self, name), what, "rad"), "angle", what))
-        mu = _finite(self.mu, f"prismatic joint at {self.point}: friction coefficient mu")
+            object.__setattr__(self, name, check(finite(getattr(self, name), what, "rad"), "angle", what))
+        mu = finite(self.mu, f"prismatic joint at {self.point}: friction coefficient mu")
         if mu < 0:
             raise ModelError(f"prismatic joint at {self.point}: friction coefficient mu must be ≥ 0, got {mu:g}")
         object.__setattr__(self, "mu", check(mu, "friction", f"prismatic joint at {self.point}: friction coefficient mu"))
@@ -148,7 +147,7 @@ class GearMesh:
         label = f"gear mesh {self.links[0]}–{self.links[1]}"
         if isinstance(self.radii, (str, bytes)) or not hasattr(self.radii, "__len__") or len(self.radii) != 2:
             raise ModelError(f"{label}: pitch radii must be two positive lengths [m], got {self.radii!r}")
-        r = tuple(_finite(x, f"{label}: pitch radius", "m") for x in self.radii)
+        r = tuple(finite(x, f"{label}: pitch radius", "m") for x in self.radii)
         if min(r) <= 0:
             raise ModelError(f"{label}: pitch radii must be two positive lengths, got {self.radii!r}")
         object.__setattr__(self, "radii", tuple(check(x, "length", f"{label}: pitch radius") for x in r))
@@ -156,7 +155,7 @@ class GearMesh:
             raise ModelError(f"{label}: centers must name the two gear centres, e.g. ('O2', 'O3'), got {self.centers!r}")
         for c in self.centers:
             _name(c, f"{label}: centre")
-        phi = _finite(self.pressure_angle, "gear mesh pressure angle")
+        phi = finite(self.pressure_angle, "gear mesh pressure angle")
         if not 0 <= phi < math.radians(45):
             raise ModelError(f"gear mesh {self.links[0]}–{self.links[1]}: pressure angle must be in [0°, 45°), "
                              f"got {math.degrees(phi):.12g}°", at=("pressure_angle",))

@@ -2,15 +2,12 @@
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field
 from types import MappingProxyType
 from typing import Mapping
 
-import numpy as np
-
 from graphkin.errors import ModelError
-from graphkin.ranges import check
+from graphkin.ranges import check, finite, point
 
 FRAME = 1
 """Link number of the frame (ground) unless a mechanism says otherwise: many books number it 1, others 0
@@ -18,43 +15,6 @@ FRAME = 1
 
 FRAME_NUMBERS = (0, 1)
 """The numbers a frame may carry: 1 (Norton, Söylemez) or 0 (books that write F01, M01)."""
-
-
-def _ndim(value) -> int:
-    """Number of array dimensions of ``value``; -1 for a ragged nest of lists that is no array at all."""
-    try:
-        return np.ndim(value)
-    except (ValueError, TypeError):
-        return -1
-
-
-def _finite(value, what: str, unit: str = "") -> float:
-    """``value`` as a finite float, or a one-line ModelError naming ``what`` (and its unit)."""
-    unit = f" [{unit}]" if unit else ""
-    # bool is an int subclass; a student who passes True meant something else.
-    # A string ("5 kg") belongs in a problem file, where units are read; an array is many numbers, not one.
-    if isinstance(value, (bool, np.bool_, str, bytes)) or _ndim(value) != 0:
-        raise ModelError(f"{what} must be a number{unit}, got {value!r}")
-    try:
-        x = float(value)
-    except (TypeError, ValueError):
-        raise ModelError(f"{what} must be a number{unit}, got {value!r}") from None
-    if not math.isfinite(x):
-        raise ModelError(f"{what} must be finite{unit}, got {value!r}")
-    return x
-
-
-def _point(value, what: str, kind: str = "coordinate") -> tuple[float, float]:
-    """A pair (x, y) of finite floats inside the range of ``kind`` (:mod:`graphkin.ranges`)."""
-    unit = {"coordinate": "in metres", "force": "in newtons"}[kind]
-    # A string unpacks into two characters and an array into rows: neither is a pair of numbers.
-    if isinstance(value, (str, bytes)) or _ndim(value) != 1:
-        raise ModelError(f"{what} must be a pair (x, y) {unit}, got {value!r}")
-    try:
-        x, y = value
-    except (TypeError, ValueError):
-        raise ModelError(f"{what} must be a pair (x, y) {unit}, got {value!r}") from None
-    return (check(_finite(x, what + ".x"), kind, what + ".x"), check(_finite(y, what + ".y"), kind, what + ".y"))
 
 
 @dataclass(frozen=True)
@@ -96,19 +56,19 @@ class Link:
         if not isinstance(self.points, Mapping):
             raise ModelError(f"{label} points must map names to (x, y) in metres, e.g. {{'A': (0, 0)}}, "
                              f"got {self.points!r}")
-        points = {str(k): _point(v, f"{label} point {k}") for k, v in dict(self.points).items()}
+        points = {str(k): point(v, f"{label} point {k}") for k, v in dict(self.points).items()}
         object.__setattr__(self, "points", MappingProxyType(points))
-        mass = _finite(self.mass, f"{label} mass")
+        mass = finite(self.mass, f"{label} mass")
         if mass < 0:
             raise ModelError(f"{label} mass must be ≥ 0 kg, got {mass:g} kg")
         check(mass, "mass", f"{label} mass")
-        I_G = _finite(self.I_G, f"{label} I_G")
+        I_G = finite(self.I_G, f"{label} I_G")
         if I_G < 0:
             raise ModelError(f"{label} I_G must be ≥ 0 kg·m², got {I_G:g} kg·m²")
         check(I_G, "moment_of_inertia", f"{label} I_G")
         object.__setattr__(self, "mass", mass)
         object.__setattr__(self, "I_G", I_G)
-        object.__setattr__(self, "G", _point(self.G, f"{label} G"))
+        object.__setattr__(self, "G", point(self.G, f"{label} G"))
 
     @property
     def label(self) -> str:
@@ -126,7 +86,7 @@ class Link:
     @classmethod
     def from_radius_of_gyration(cls, number, points, mass, G, k, name=""):
         """Build a link from its radius of gyration k [m]: I_G = m k²."""
-        k = _finite(k, f"link {number} radius of gyration")
+        k = finite(k, f"link {number} radius of gyration")
         if k < 0:
             raise ModelError(f"link {number} radius of gyration must be ≥ 0, got {k:g} m")
         check(k, "length0", f"link {number} radius of gyration")

@@ -16,8 +16,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from graphkin.errors import ModelError
-from graphkin.model.link import _finite, _point
-from graphkin.ranges import check, check_array
+from graphkin.ranges import check, check_array, finite, point
 
 EDGE = 1e-12
 """Relative distance from an end of an :class:`Active` interval within which a position counts as on the end."""
@@ -39,7 +38,7 @@ class Active:
         kind, unit = ("angle", "rad") if self.periodic else ("coordinate", "m")
         for name in ("start", "stop"):
             what = f"active window: {name}"
-            object.__setattr__(self, name, check(_finite(getattr(self, name), what, unit), kind, what))
+            object.__setattr__(self, name, check(finite(getattr(self, name), what, unit), kind, what))
 
     @property
     def width(self) -> float:
@@ -212,7 +211,7 @@ class PointForce:
 
     def __post_init__(self):
         what = f"force on link {self.link} at {self.point}"
-        object.__setattr__(self, "force", _point(self.force, what, "force"))
+        object.__setattr__(self, "force", point(self.force, what, "force"))
         if self.table is not None:
             if self.force == (0.0, 0.0):
                 raise ModelError(f"{what}: a tabulated force needs a direction, got a zero vector")
@@ -239,7 +238,7 @@ class Torque:
 
     def __post_init__(self):
         what = f"torque on link {self.link}"
-        object.__setattr__(self, "torque", check(_finite(self.torque, what, "N·m"), "torque", what))
+        object.__setattr__(self, "torque", check(finite(self.torque, what, "N·m"), "torque", what))
         if self.table is not None:
             check_array(self.table.value, "torque", f"{what}: table")
         _sense(self.sense, what)
@@ -255,7 +254,7 @@ Load = PointForce | Torque
 
 def standard_gravity(g: float) -> float:
     """Validate a gravitational acceleration g [m/s²] (acts along −y)."""
-    g = check(_finite(g, "gravity", "m/s²"), "acceleration", "gravity")
+    g = check(finite(g, "gravity", "m/s²"), "acceleration", "gravity")
     if g < 0:
         raise ModelError(f"gravity must be ≥ 0 m/s² (it acts along −y), got {g:g}")
     return g

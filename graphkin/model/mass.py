@@ -25,7 +25,7 @@ from shapely.geometry.polygon import orient
 from shapely.validation import explain_validity
 
 from graphkin.errors import ModelError
-from graphkin.model.link import _finite
+from graphkin.ranges import finite
 
 __all__ = [
     "MassProperties",
@@ -46,7 +46,7 @@ _EPS = float(np.finfo(float).eps)
 
 
 def _number(name: str, value, unit: str) -> float:
-    return _finite(value, name, unit)
+    return finite(value, name, unit)
 
 
 def _positive(name: str, value, unit: str) -> float:

@@ -32,7 +32,7 @@ class Mechanism:
         g [m/s²] acting along −y on every link's centre of mass; 0 to neglect.
     assembly : mapping of str to {+1, −1}
         Assembly branch σ of each dyad, keyed by the name of its middle joint
-        point (see :mod:`graphkin.kinematics.dyads`); +1 where not given.
+        point (see :mod:`graphkin.kinematics.groups`); +1 where not given.
     title, source : str
         What the problem is and where it comes from (book, example).
     frame : int

@@ -37,7 +37,7 @@ from pathlib import Path
 from graphkin.errors import GraphkinError
 from graphkin.exercises.answers import Unreadable, read_answer
 from graphkin.exercises.exercise import dimension_of
-from graphkin.exercises.grading import MESSAGES, _example
+from graphkin.exercises.grading import MESSAGES, answer_example
 from graphkin.exercises.platforms import requirements, runtime
 
 SECRET_VARIABLE = "GRAPHKIN_SECRET"
@@ -271,7 +271,7 @@ def _question_text(bundle, q, variable: str) -> str:
 
 def _example_answer(bundle, q) -> str:
     """How to write an answer to ``q``: the grader's own example, a made-up number in the question's unit."""
-    return _example(runtime.variant(bundle.exercise, bundle.sample, bundle.secret).expected(q))
+    return answer_example(runtime.variant(bundle.exercise, bundle.sample, bundle.secret).expected(q))
 
 
 def _answer_cell(variable: str, answer: str) -> str:

@@ -1,0 +1,151 @@
+"""A problem: a mechanism with its input motion (and kinematic values a book gives), ready to solve."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field, replace
+from typing import Any, Mapping
+
+import numpy as np
+
+from graphkin.analytical import solve_forces
+from graphkin.errors import GraphkinError
+from graphkin.kinematics import solve_kinematics
+from graphkin.model import Mechanism, Prismatic
+from graphkin.ranges import as_array, check, finite
+
+
+@dataclass(frozen=True)
+class Problem:
+    """A mechanism with its input motion, as read from a problem file.
+
+    Attributes
+    ----------
+    name : str
+        Catalog name or file path.
+    mechanism : Mechanism
+    q, q_dot, q_ddot : ndarray, shape (n,)
+        Input positions and rates, SI.
+    given : dict
+        Kinematic values the problem gives instead of deriving them, keyed
+        ``(link, "omega" | "alpha" | "a_G" | "v_G" | "theta")`` and
+        ``(link, "at", point)`` for a point's position [m] (see
+        :class:`graphkin.kinematics.Kinematics`).
+    title, source, notes : str
+    analysis : {"dynamic", "static"}
+        ``"static"`` leaves every inertia load out (masses are then needed
+        only for weights, and the input rates only give the sense of motion
+        for friction); ``"dynamic"`` (the default) includes them.
+    """
+
+    name: str
+    mechanism: Mechanism
+    q: np.ndarray
+    q_dot: np.ndarray
+    q_ddot: np.ndarray
+    given: Mapping[tuple[int, str], Any] = field(default_factory=dict)
+    title: str = ""
+    source: str = ""
+    notes: str = ""
+    analysis: str = "dynamic"
+
+    @property
+    def static(self) -> bool:
+        """True for a static force analysis (no inertia loads)."""
+        return self.analysis == "static"
+
+    @property
+    def input_name(self) -> str:
+        """``"theta"`` for a crank, ``"s"`` for a slider."""
+        return "theta" if self.mechanism.driver.crank else "s"
+
+    def at_speed(self, q_dot: float, q_ddot: float | None = None) -> "Problem":
+        """The same problem driven at a constant input rate (its title says so).
+
+        Parameters
+        ----------
+        q_dot : float
+            ω [rad/s] of a crank or v [m/s] of a slider, at every position.
+        q_ddot : float, optional
+            α [rad/s²] or a [m/s²]; by default the problem's own (first) value.
+
+        Examples
+        --------
+        >>> from graphkin import catalog
+        >>> fast = catalog.load("slider_crank_friction").at_speed(200.0)
+        >>> float(fast.q_dot[0])
+        200.0
+        """
+        crank = self.mechanism.driver.crank
+        rate = {"q_dot": finite(q_dot, f"{self.name}: q_dot", "rad/s" if crank else "m/s"),
+                "q_ddot": finite(self.q_ddot[0] if q_ddot is None else q_ddot, f"{self.name}: q_ddot",
+                                  "rad/s²" if crank else "m/s²")}
+        check(rate["q_dot"], "angular_velocity" if crank else "velocity", f"{self.name}: q_dot")
+        check(rate["q_ddot"], "angular_acceleration" if crank else "acceleration", f"{self.name}: q_ddot")
+        if self.given:
+            # Given ω, α, a_G or v_G belong to the file's speed; at another speed they would be silently wrong.
+            raise GraphkinError(f"{self.name}: it gives kinematic values ([given] in the file) that hold at its own"
+                                " speed only; remove them to let graphkin derive the motion at another speed")
+        m = len(self.q)
+        speed = f"{rate['q_dot'] * 30 / np.pi:.4g} rpm" if crank else f"{rate['q_dot']:.4g} m/s"
+        title = f"{self.title} (driven at {speed})" if self.title else ""
+        return replace(self, q_dot=np.full(m, rate["q_dot"]), q_ddot=np.full(m, rate["q_ddot"]), title=title)
+
+    def with_friction(self, mu: float) -> "Problem":
+        """The same problem with Coulomb coefficient μ (≥ 0) at every sliding pair; 0 removes friction.
+
+        Examples
+        --------
+        >>> from graphkin import catalog
+        >>> p = catalog.load("slider_crank_friction")
+        >>> round(float(p.with_friction(0.0).solve(at=[0.5]).effort[0]), 4) != round(float(p.solve(at=[0.5]).effort[0]), 4)
+        True
+        """
+        joints = tuple(replace(j, mu=mu) if isinstance(j, Prismatic) else j for j in self.mechanism.joints)
+        if not any(isinstance(j, Prismatic) for j in joints):
+            raise GraphkinError(f"{self.name}: it has no sliding pair to put friction on")
+        return replace(self, mechanism=replace(self.mechanism, joints=joints))
+
+    def kinematics(self, at=None):
+        """Kinematics at the file's positions, or at ``at``.
+
+        Parameters
+        ----------
+        at : float or array_like, shape (n,), optional
+            Input positions θ [rad] or s [m], instead of the file's.
+
+        Returns
+        -------
+        graphkin.kinematics.Kinematics
+
+        Raises
+        ------
+        GraphkinError
+            If ``at`` is not one number or a 1-D list of finite numbers within
+            graphkin's ranges, or the file's rates vary with position.
+        """
+        q, q_dot, q_ddot = self.q, self.q_dot, self.q_ddot
+        if at is not None:
+            crank = self.mechanism.driver.crank
+            at = as_array(at, f"{self.name}: at", "angle" if crank else "coordinate")
+            if len(set(self.q_dot)) > 1 or len(set(self.q_ddot)) > 1:
+                raise GraphkinError(f"{self.name}: its input rates vary with position, so it can only be solved at its own positions")
+            q, q_dot, q_ddot = at, np.full(len(at), self.q_dot[0]), np.full(len(at), self.q_ddot[0])
+        kin = solve_kinematics(self.mechanism, q, q_dot, q_ddot)
+        if self.given:
+            n = len(q)
+            given = {key: np.broadcast_to(np.asarray(v, dtype=float), (n, 2) if key[1] in ("a_G", "v_G", "at") else (n,))
+                     for key, v in self.given.items()}
+            kin = kin.with_given(given)
+        if self.static:
+            kin = replace(kin, static=True)
+        return kin
+
+    def solve(self, at=None):
+        """Force analysis (:class:`graphkin.analytical.ForceAnalysis`) at the file's positions or at ``at``.
+
+        Parameters
+        ----------
+        at : float or array_like, shape (n,), optional
+            Input positions θ [rad] or s [m] (see :meth:`kinematics`).
+        """
+        return solve_forces(self.kinematics(at))
