@@ -3,7 +3,7 @@ PYTHON ?= python3
 VENV   := .venv
 BIN    := $(VENV)/bin
 
-.PHONY: demo test e2e bench figures clean
+.PHONY: demo test check lint e2e bench figures clean
 
 $(BIN)/python:
 	$(PYTHON) -m venv $(VENV)
@@ -16,8 +16,20 @@ $(VENV)/.installed: pyproject.toml | $(BIN)/python
 demo: $(VENV)/.installed
 	$(BIN)/graphkin solve double_slider --figure build/double_slider.png
 
+# Every test, the lessons and the docstring examples, on every core (a module's tests stay on one worker, so an
+# expensive module fixture, such as a grading platform's run, is made once).
+PYTEST := $(BIN)/python -m pytest -q -n auto --dist loadfile
+
 test: $(VENV)/.installed
-	$(BIN)/python -m pytest -q --nbmake --nbmake-timeout=300 --doctest-modules graphkin tests lessons
+	$(PYTEST) --nbmake --nbmake-timeout=300 --doctest-modules graphkin tests lessons
+
+# All but the slow tests (real grading platforms, fuzzers, concurrency), and the linters: a quick check while working.
+check: $(VENV)/.installed lint
+	$(PYTEST) -m "not slow" --doctest-modules graphkin tests
+
+lint: $(VENV)/.installed
+	$(BIN)/ruff check graphkin tests benchmarks figures
+	$(BIN)/lint-imports
 
 # The lessons (cell by cell in JupyterLab, and in Voilà) and `graphkin explore` in a real browser:
 # Debian's chromium driven by Playwright's Python package. Root installs chromium where it is missing;

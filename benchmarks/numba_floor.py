@@ -2,7 +2,7 @@
 
 For information beside ``bench_fourbar.py``: the same crank-rocker
 (``pylinkage_side.FOURBAR``, open branch, 900 rpm) with the same masses
-(``bench_fourbar.fourbar()``), analysed position by position in compiled
+(``fourbar_linkage.fourbar()``), analysed position by position in compiled
 code -- the crank's sin and cos, the circle intersection for B, the
 velocity and acceleration equations by Cramer's rule, the inertia loads of
 links 2, 3 and 4, the dyad's three joint forces and the crank's pivot force
@@ -29,14 +29,13 @@ import numpy as np
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 import pylinkage_side as ps  # noqa: E402
+from fourbar_linkage import MECH  # noqa: E402
 
 N_SIZES = (360, 3600, 100_000, 1_000_000)
 
 
 def _constants():
-    """Lengths, masses and centres of mass of bench_fourbar.fourbar(), as numbers for the kernel."""
-    from bench_fourbar import MECH
-
+    """Lengths, masses and centres of mass of fourbar_linkage.fourbar(), as numbers for the kernel."""
     a1, a2, a3, a4 = (ps.FOURBAR[k] for k in ("a1", "a2", "a3", "a4"))
     l2, l3, l4 = (MECH.link(i) for i in (2, 3, 4))
     # G of the coupler from A, of the rocker from B0, in their own frames (x along AB, along B0B).
@@ -133,8 +132,6 @@ def floor(theta: np.ndarray, omega2: float = ps.OMEGA2, alpha2: float = 0.0) -> 
 
 def max_difference(n: int = 3600) -> float:
     """Largest difference from graphkin's solve over every output, relative to its largest value."""
-    from bench_fourbar import MECH
-
     from graphkin.analytical import solve
 
     theta = ps.crank_angles(n)

@@ -1,7 +1,143 @@
-"""graphkin: kinetostatics of planar machinery, analytically and graphically.
+"""graphkin: kinetostatics of planar machinery, analytically and graphically, for teaching.
 
-Importing graphkin loads numpy only; matplotlib, ipywidgets and pint are loaded
-by the layers that need them (drawing, widgets, problem files and the CLI).
+The public names, each loaded when first used (PEP 562), so ``import graphkin``
+loads nothing but this file; matplotlib, ipywidgets and pint are loaded by the
+parts that draw, show widgets and read units::
+
+    import graphkin as gk
+
+    p = gk.load("strip_cutter")                 # a catalog problem (or a TOML file)
+    r = p.solve()                               # the matrix method: every joint force, the driving torque
+    c = gk.construct_forces(r.kinematics, 0)    # the graphical route at the first position
+    gk.draw.draw_solution(c, r)                 # both routes side by side (loads matplotlib)
+    cycle = gk.sweep(p, 360)                    # a whole turn: torque curve, flywheel, joint-force index
+
+=====================  ==================================================================
+problems               :func:`load`, :func:`load_problem`, :func:`parse_problem`,
+                       :func:`build_problem`, :class:`Problem`, :mod:`catalog`
+the mechanism          :class:`Mechanism`, :class:`Link`, :class:`Revolute`,
+                       :class:`Prismatic`, :class:`GearMesh`, :class:`Driver`,
+                       :class:`PointForce`, :class:`Torque`, :class:`Table`, :mod:`mass`
+kinematics             :func:`solve_kinematics`, :class:`Kinematics`, :func:`decompose`
+the analytical route   :func:`solve_forces`, :class:`ForceAnalysis`, :func:`assemble`,
+                       :func:`solve_matrix`, :func:`inertia`
+the graphical route    :func:`construct_forces`, :class:`Construction`
+whole cycles           :func:`sweep`, :class:`Cycle`, :func:`size_flywheel`,
+                       :func:`joint_force_index`, :func:`static_problem`, :func:`load_flywheel`
+reports (plain data)   :mod:`report`, :func:`solution`, :func:`format_solution`,
+                       :func:`cycle_data`, :func:`format_cycle`
+printed notation       :func:`polar`, :func:`polar_text`, :func:`cross`
+drawings               :mod:`draw` (matplotlib)
+teaching               :mod:`exercises`, :mod:`handout`, :func:`explore`, :func:`exercise`
+errors                 :class:`GraphkinError`, :class:`ModelError`,
+                       :class:`ProblemFileError`, :class:`GraphkinWarning`
+=====================  ==================================================================
 """
 
+from __future__ import annotations
+
+import importlib
+from typing import TYPE_CHECKING
+
 __version__ = "0.1.0"
+
+_LAZY = {
+    # problems
+    "load": ("graphkin.catalog", "load"),
+    "load_problem": ("graphkin.problem", "load_problem"),
+    "parse_problem": ("graphkin.problem", "parse_problem"),
+    "build_problem": ("graphkin.problem", "build_problem"),
+    "Problem": ("graphkin.problem", "Problem"),
+    "catalog": ("graphkin.catalog", None),
+    # the mechanism
+    "Mechanism": ("graphkin.model", "Mechanism"),
+    "Link": ("graphkin.model", "Link"),
+    "Revolute": ("graphkin.model", "Revolute"),
+    "Prismatic": ("graphkin.model", "Prismatic"),
+    "GearMesh": ("graphkin.model", "GearMesh"),
+    "Driver": ("graphkin.model", "Driver"),
+    "PointForce": ("graphkin.model", "PointForce"),
+    "Torque": ("graphkin.model", "Torque"),
+    "Table": ("graphkin.model", "Table"),
+    "mass": ("graphkin.model.mass", None),
+    # kinematics
+    "solve_kinematics": ("graphkin.kinematics", "solve_kinematics"),
+    "Kinematics": ("graphkin.kinematics", "Kinematics"),
+    "decompose": ("graphkin.kinematics", "decompose"),
+    # the analytical route
+    "solve_forces": ("graphkin.analytical", "solve_forces"),
+    "ForceAnalysis": ("graphkin.analytical", "ForceAnalysis"),
+    "inertia": ("graphkin.analytical", "inertia"),
+    "assemble": ("graphkin.analytical.matrix", "assemble"),
+    "solve_matrix": ("graphkin.analytical.matrix", "solve_matrix"),
+    # the graphical route
+    "construct_forces": ("graphkin.graphical", "construct_forces"),
+    "Construction": ("graphkin.graphical", "Construction"),
+    # whole cycles
+    "sweep": ("graphkin.cycle", "sweep"),
+    "Cycle": ("graphkin.cycle", "Cycle"),
+    "size_flywheel": ("graphkin.cycle", "size_flywheel"),
+    "joint_force_index": ("graphkin.cycle", "joint_force_index"),
+    "static_problem": ("graphkin.cycle", "static_problem"),
+    "load_flywheel": ("graphkin.cycle.flywheel_file", "load_flywheel"),
+    # reports
+    "report": ("graphkin.report", None),
+    "solution": ("graphkin.report", "solution"),
+    "format_solution": ("graphkin.report", "format_solution"),
+    "cycle_data": ("graphkin.report", "cycle_data"),
+    "format_cycle": ("graphkin.report", "format_cycle"),
+    # printed notation
+    "polar": ("graphkin.notation", "polar"),
+    "polar_text": ("graphkin.notation", "polar_text"),
+    "cross": ("graphkin.geometry", "cross"),
+    # drawings, teaching
+    "draw": ("graphkin.draw", None),
+    "exercises": ("graphkin.exercises", None),
+    "handout": ("graphkin.handout", None),
+    "explore": ("graphkin.widgets", "explore"),
+    "exercise": ("graphkin.widgets", "exercise"),
+    # errors
+    "GraphkinError": ("graphkin.errors", "GraphkinError"),
+    "ModelError": ("graphkin.errors", "ModelError"),
+    "ProblemFileError": ("graphkin.errors", "ProblemFileError"),
+    "GraphkinWarning": ("graphkin.errors", "GraphkinWarning"),
+}
+"""Each public name: the module it lives in, and its name there (None: the module itself)."""
+
+__all__ = ["__version__", *sorted(_LAZY)]
+
+
+def __getattr__(name: str):
+    """Load a public name when it is first used (PEP 562)."""
+    try:
+        module, attr = _LAZY[name]
+    except KeyError:
+        raise AttributeError(f"module 'graphkin' has no attribute {name!r}") from None
+    value = importlib.import_module(module)
+    if attr is not None:
+        value = getattr(value, attr)
+    globals()[name] = value  # the next use finds it at once
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted({*globals(), *_LAZY})
+
+
+if TYPE_CHECKING:  # pragma: no cover - for type checkers and editors; at run time each name loads lazily
+    from graphkin import catalog, draw, exercises, handout, report
+    from graphkin.analytical import ForceAnalysis, inertia, solve_forces
+    from graphkin.analytical.matrix import assemble, solve_matrix
+    from graphkin.catalog import load
+    from graphkin.cycle import Cycle, joint_force_index, size_flywheel, static_problem, sweep
+    from graphkin.cycle.flywheel_file import load_flywheel
+    from graphkin.errors import GraphkinError, GraphkinWarning, ModelError, ProblemFileError
+    from graphkin.geometry import cross
+    from graphkin.graphical import Construction, construct_forces
+    from graphkin.kinematics import Kinematics, decompose, solve_kinematics
+    from graphkin.model import Driver, GearMesh, Link, Mechanism, PointForce, Prismatic, Revolute, Table, Torque
+    from graphkin.model import mass
+    from graphkin.notation import polar, polar_text
+    from graphkin.problem import Problem, build_problem, load_problem, parse_problem
+    from graphkin.report import cycle_data, format_cycle, format_solution, solution
+    from graphkin.widgets import exercise, explore

@@ -19,7 +19,7 @@ from pathlib import Path
 
 from graphkin.errors import GraphkinError
 from graphkin.handout import build, write
-from graphkin.handout.content import subject
+from graphkin.handout.document import subject
 
 CHUNK = 2
 """Students per task. Sending a task costs about a millisecond and a student's sheet and key nearly a second,

@@ -171,7 +171,7 @@ def groups(doc, kin, i: int, rates: bool = True) -> None:
     ----------
     doc
         Collects the blocks: ``heading(level, text)``, ``text(*runs)``,
-        ``equation(*lines)`` (:class:`graphkin.handout.content._Doc`).
+        ``equation(*lines)`` (:class:`graphkin.handout.document.Doc`).
     kin : graphkin.kinematics.Kinematics
         The solver's result; its ``groups`` give the order.
     i : int

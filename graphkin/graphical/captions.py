@@ -1,0 +1,55 @@
+"""How the construction's captions write things: sub-problem marks and labels, lists, forces and numbers.
+
+Captions are plain text (a hyphen-minus), written with :mod:`graphkin.notation`.
+"""
+
+from __future__ import annotations
+
+from graphkin.notation import num, polar_text
+
+_MARKS = ("′", "″", "‴", "⁗")
+
+
+_SUPERSCRIPT = str.maketrans("0123456789", "⁰¹²³⁴⁵⁶⁷⁸⁹")
+
+
+def mark(k: int) -> str:
+    """How sub-problem k (from 1) marks its forces: ′, ″, ‴, ⁗, then ⁽⁵⁾, ⁽⁶⁾, …"""
+    return _MARKS[k - 1] if k <= len(_MARKS) else f"⁽{str(k).translate(_SUPERSCRIPT)}⁾"
+
+
+def roman(k: int) -> str:
+    """Sub-problem k's label: I, II, III, IV, …
+
+    Examples
+    --------
+    >>> [roman(k) for k in (1, 4, 9, 14)]
+    ['I', 'IV', 'IX', 'XIV']
+    """
+    out = ""
+    for value, letters in ((1000, "M"), (900, "CM"), (500, "D"), (400, "CD"), (100, "C"), (90, "XC"), (50, "L"),
+                           (40, "XL"), (10, "X"), (9, "IX"), (5, "V"), (4, "IV"), (1, "I")):
+        while k >= value:
+            out, k = out + letters, k - value
+    return out
+
+
+def and_list(items) -> str:
+    """``"a"``, ``"a and b"``, ``"a, b and c"``."""
+    items = list(items)
+    return items[0] if len(items) == 1 else ", ".join(items[:-1]) + " and " + items[-1]
+
+
+def polar(z, scale: float = 0.0) -> str:
+    """A force as the captions print it: ``1290 N ∠ -123.45°`` (``0 N`` for none, or for rounding beside ``scale``)."""
+    z = complex(z)
+    return polar_text((z.real, z.imag), "N", scale=scale, minus="-")
+
+
+def number(x: float) -> str:
+    """A value in a caption: four significant figures, no exponent where none is needed (``50640``)."""
+    return num(x, minus="-")
+
+
+def sense(T: float) -> str:
+    return " (CCW)" if T > 0 else " (CW)" if T < 0 else ""

@@ -1,0 +1,187 @@
+"""A handout as it is built: the blocks in order (:class:`Doc`), and what it is about (:class:`Subject`).
+
+:func:`subject` reads a problem or a student's exercise once, solves it, and
+keeps the data (``graphkin solve --json``'s, :func:`graphkin.report.solution`)
+and the constructions that every section writes from.
+"""
+
+from __future__ import annotations
+
+import tomllib
+from pathlib import Path
+
+import numpy as np
+
+from graphkin import catalog, exercises
+from graphkin.errors import GraphkinError
+from graphkin.exercises.exercise import set_field
+from graphkin.exercises.variants import Variant
+from graphkin.graphical import construct_forces
+from graphkin.handout.figures import Picture
+from graphkin.notation import input_text
+from graphkin.report import solution
+from graphkin.units import to_si
+
+DEFAULT_CS = 0.05
+"""Coefficient of speed fluctuation for a whole cycle's flywheel when none is given (Norton: 0.01–0.05)."""
+
+
+def runs(x) -> list:
+    """A cell or list item as runs: a str or a math node is one run, a tuple holds several."""
+    return list(x) if isinstance(x, tuple) else [x]
+
+
+class Doc:
+    """Collects the blocks in order and numbers the figures."""
+
+    def __init__(self):
+        self.blocks: list[dict] = []
+        self.figures = 0
+
+    def heading(self, level: int, text: str):
+        self.blocks.append({"kind": "heading", "level": level, "text": text})
+
+    def text(self, *runs):
+        # A paragraph that ends with a colon introduces what follows: a page break between them would orphan it.
+        last = runs[-1] if runs else ""
+        self.blocks.append({"kind": "text", "runs": list(runs),
+                            "keep": isinstance(last, str) and last.rstrip().endswith(":")})
+
+    def items(self, items, ordered=False):
+        self.blocks.append({"kind": "list", "items": [runs(r) for r in items], "ordered": ordered})
+
+    def table(self, header, rows, align=None, caption=None):
+        self.blocks.append({"kind": "table", "header": [runs(h) for h in header],
+                            "rows": [[runs(c) for c in r] for r in rows],
+                            "align": align or "l" * len(header), "caption": caption})
+
+    def equation(self, *lines, small=False):
+        self.blocks.append({"kind": "equation", "lines": list(lines), "small": small})
+
+    def figure(self, pictures, caption: str) -> str:
+        """Add a figure; returns its name (``"Figure 3"``) for the text to refer to."""
+        self.figures += 1
+        label = f"Figure {self.figures}"
+        # A section that opens with a figure keeps its heading and any paragraphs before the figure on the
+        # figure's page: a heading alone at the foot of a page, its figure overleaf, is what a reader trips on.
+        lead = []
+        for b in reversed(self.blocks):
+            if b["kind"] != "text":
+                break
+            lead.append(b)
+        if len(lead) < len(self.blocks) and self.blocks[-1 - len(lead)]["kind"] == "heading":
+            for b in lead:
+                b["keep"] = True
+        self.blocks.append({"kind": "figure", "pictures": list(pictures), "caption": f"{label}. {caption}",
+                            "label": label})
+        return label
+
+    def space(self, height: float, label: str, math=None):
+        self.blocks.append({"kind": "space", "height": height, "label": label, "math": math})
+
+    def pagebreak(self):
+        self.blocks.append({"kind": "pagebreak"})
+
+
+# -- what the handout is about ---------------------------------------------------------
+class Subject:
+    """A problem (or a student's variant of an exercise) with everything solved once."""
+
+    def __init__(self, problem, raw: dict, *, variant=None, at=None, Cs=None):
+        self.problem = problem
+        self.raw = raw
+        self.variant = variant
+        self.mech = problem.mechanism
+        self.crank = self.mech.driver.crank
+        self.static = bool(getattr(problem, "static", False))
+        self.result = problem.solve(at)
+        self.n = self.result.n
+        self.whole_cycle = at is None and self.n > 1
+        ex = variant.exercise if variant is not None else None
+        self.Cs = Cs if Cs is not None else (variant.Cs if variant is not None and variant.Cs else DEFAULT_CS)
+        self.cycle_positions = ex.positions if ex is not None else None
+        self._pictures: dict[str, Picture] = {}
+
+    def construction(self, i: int):
+        """The graphical construction at position ``i`` (None where the linkage has no solution), built once."""
+        key = f"construction-{i}"
+        if key not in self.__dict__:
+            self.__dict__[key] = construct_forces(self.result.kinematics, i) if self.result.valid[i] else None
+        return self.__dict__[key]
+
+    def data(self) -> dict:
+        """:func:`graphkin.report.solution` of the worked positions, graphical route included (made once)."""
+        if "_data" not in self.__dict__:
+            graphical = [None] * self.n
+            for i in self.worked():
+                graphical[i] = self.construction(i)
+            self._data = solution(self.problem, self.result, graphical)
+        return self._data
+
+    def picture(self, key: str, draw, width: float = 1.0, alt: str = "", height: float = 80.0) -> Picture:
+        """The picture named ``key``, made once: a student's sheet and key share their drawings."""
+        if key not in self._pictures:
+            self._pictures[key] = Picture(key, draw, width, alt, height)
+        return self._pictures[key]
+
+    def worked(self) -> list[int]:
+        """The positions worked out in full: each one given, or over a cycle the design case.
+
+        Over a whole cycle the position of the largest |driving torque| (or
+        force) among the file's own positions is worked out: the one a
+        designer sizes the parts for.
+        """
+        r = self.result
+        if not self.whole_cycle:
+            return list(range(self.n))
+        effort = np.where(r.valid, np.abs(r.effort), -np.inf)
+        return [int(np.argmax(effort))] if np.isfinite(effort).any() else [0]
+
+    def where(self, i: int) -> str:
+        """``θ12 = 342°`` or ``s = 200 mm``: the input at position ``i``."""
+        q = float(self.result.kinematics.q[i])
+        d = self.mech.driver
+        return input_text(q, d.crank, d.input_symbol)
+
+
+def _read_raw(name: str) -> dict:
+    """A problem file's data as written (units and all), for the table of given data."""
+    path = catalog.path(name) if name in catalog.names() else Path(name)
+    try:
+        return tomllib.loads(path.read_text(encoding="utf-8"))
+    except (OSError, tomllib.TOMLDecodeError):  # already read once by load(): cannot fail here but for a race
+        return {}
+
+
+def subject(source, *, student=None, secret="", at=None, Cs=None):
+    """Resolve what a handout is about: a problem (name or file) or, with ``student``, an exercise variant."""
+    if isinstance(source, Variant) or student is not None:
+        if at is not None:
+            raise GraphkinError("--at: an exercise's position is part of the student's data; leave --at out")
+        v = source if isinstance(source, Variant) else exercises.variant(source, student, secret)
+        raw = dict(v.exercise.base)
+        for g in v.data:
+            for f in g.field:
+                if f != "flywheel.Cs":
+                    set_field(raw, f, g.value, copy=True)
+        return Subject(v.problem, raw, variant=v, Cs=Cs)
+    try:
+        problem = catalog.load(source)
+    except GraphkinError:
+        if source in exercises.names() or str(source).endswith(".toml") and _is_exercise(source):
+            raise GraphkinError(f"{source} is an exercise: give the student's id with --student ID "
+                                "(or a class with --roster FILE.csv)") from None
+        raise
+    if isinstance(at, str):
+        dim = "angle" if problem.mechanism.driver.crank else "length"
+        at = np.array([to_si(part.strip(), dim, field="--at", file="command line") for part in at.split(",")])
+    elif at is not None:
+        at = np.atleast_1d(np.asarray(at, dtype=float))
+    return Subject(problem, _read_raw(source), at=at, Cs=Cs)
+
+
+def _is_exercise(path) -> bool:
+    try:
+        return "questions" in tomllib.loads(Path(path).read_text(encoding="utf-8"))
+    except (OSError, tomllib.TOMLDecodeError, UnicodeDecodeError):
+        return False

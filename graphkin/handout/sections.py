@@ -1,0 +1,320 @@
+"""The sections that state the problem and its motion: the exercise, the given data, the questions, the sign
+convention, the mechanism, the kinematics of every link (as the loop equations), the inertia loads and the
+external loads."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from graphkin.exercises.variants import pretty
+from graphkin.handout import maths as M
+from graphkin.handout.document import Doc, Subject
+from graphkin.handout.figures import Picture
+from graphkin.handout.loops import groups
+from graphkin.model import Revolute
+
+
+# -- sections ----------------------------------------------------------------------------------
+def statement(doc: Doc, s: Subject, version: str):
+    v = s.variant
+    if v is not None and v.exercise.intro:
+        doc.heading(1, "The exercise")
+        for para in _paragraphs(v.sheet()["intro"]):
+            doc.text(para)
+    elif s.problem.notes and version == "key":
+        # The notes of a catalog file say what is asked (and sometimes the book's answers: key only).
+        doc.heading(1, "The problem")
+        for para in _paragraphs(s.problem.notes):
+            doc.text(para)
+    else:
+        doc.heading(1, "The problem")
+        how = ("a static force analysis: no inertia loads" if s.static else "inertia included (d'Alembert)")
+        doc.text(f"Find every joint force and the driving {'torque' if s.crank else 'force'} "
+                 f"{s.mech.driver.symbol}, {how}, both analytically and graphically.")
+
+
+def _paragraphs(text: str) -> list[str]:
+    return [" ".join(p.split()) for p in text.strip().split("\n\n") if p.strip()]
+
+
+def _pretty(value) -> str:
+    """A value of the problem file as written, in a book's notation (``"7.6 deg"`` → ``7.6°``)."""
+    if isinstance(value, str):
+        return pretty(value)
+    if isinstance(value, bool):
+        return "yes" if value else "no"
+    if isinstance(value, (int, float)):
+        return f"{value:g}"
+    if isinstance(value, list):
+        if len(value) == 2 and all(isinstance(x, str) for x in value):
+            return f"({_pretty(value[0])}, {_pretty(value[1])})"
+        return ", ".join(_pretty(x) for x in value)
+    if isinstance(value, dict):
+        if {"r", "angle"} <= value.keys():
+            return f"{_pretty(value['r'])} ∠ {_pretty(value['angle'])}"
+        if {"magnitude", "angle"} <= value.keys():
+            return f"{_pretty(value['magnitude'])} ∠ {_pretty(value['angle'])}"
+        if {"start", "stop"} <= value.keys():
+            step = f" in steps of {_pretty(value['step'])}" if "step" in value else ""
+            return f"{_pretty(value['start'])} to {_pretty(value['stop'])}{step}"
+        if {"from", "to"} <= value.keys():
+            return f"from {_pretty(value['from'])} to {_pretty(value['to'])}"
+        return ", ".join(f"{k} = {_pretty(x)}" for k, x in value.items())
+    return str(value)
+
+
+def _given_rows(raw: dict, frame_number: int) -> list[list[str]]:
+    """The problem file's data, one row per frame, link, joint, driver and load, in the file's units."""
+    rows = []
+    if raw.get("gravity") is not None:
+        rows.append(["gravity", _pretty(raw["gravity"])])
+    frame = raw.get("frame", {})
+    if frame.get("points"):
+        rows.append([f"frame (link {frame_number})", "; ".join(f"{k} = {_pretty(p)}" for k, p in frame["points"].items())])
+    for link in raw.get("links", []):
+        parts = [f"{k} = {_pretty(p)}" for k, p in link.get("points", {}).items()]
+        for key, label in (("mass", "m"), ("G", "G"), ("I_G", "I_G"), ("k", "k")):
+            if key in link:
+                parts.append(f"{label} = {_pretty(link[key])}")
+        if "shape" in link:
+            shape = dict(link["shape"])
+            kind = shape.pop("type", "shape")
+            parts.append(f"{kind} " + _pretty(shape) if shape else kind)
+        name = f"link {link.get('number', '?')}" + (f" ({link['name']})" if link.get("name") else "")
+        rows.append([name, "; ".join(parts)])
+    for j in raw.get("joints", []):
+        kind = j.get("type", "joint")
+        if kind == "revolute":
+            text = f"links {'–'.join(map(str, j.get('links', [])))} at {j.get('point', '?')}"
+        elif kind == "prismatic":
+            text = (f"slider {j.get('slider')} on guide {j.get('guide')} at {j.get('point')}, guide through "
+                    f"{j.get('through')} at {_pretty(j.get('direction', '0 deg'))}")
+            if "mu" in j:
+                text += f", μ = {_pretty(j['mu'])}"
+        else:
+            text = "; ".join(f"{k} = {_pretty(x)}" for k, x in j.items() if k != "type")
+        rows.append([f"{kind} joint", text])
+    d = raw.get("driver", {})
+    if d:
+        text = "; ".join(f"{k} = {_pretty(x)}" for k, x in d.items() if k not in ("type", "link"))
+        kind = f" ({d['type']})" if d.get("type") else ""
+        rows.append([f"driver, link {d.get('link', '?')}{kind}", text])
+    for ld in raw.get("loads", []):
+        where = f"on link {ld.get('link')}" + (f" at {ld['point']}" if "point" in ld else "")
+        value = _pretty(ld.get("force", ld.get("torque", "")))
+        if "table" in ld or "csv" in ld:
+            rows = [r for r in str(ld.get("table", "")).strip().splitlines()[1:] if r.strip() and r.strip()[0] != "#"]
+            value = (f"from the table in {ld['csv']}" if "csv" in ld else f"from a table of {len(rows)} rows")
+            if "direction" in ld:
+                value += f", along {_pretty(ld['direction'])}"
+        when = f", {_pretty(ld['active'])}" if "active" in ld else ""
+        if ld.get("sense", "fixed") != "fixed":
+            when += f", sense: {ld['sense']}"
+        rows.append([f"{ld.get('type', 'load')} {ld.get('name', '')}".strip(), f"{value} {where}{when}"])
+    for link, values in raw.get("given", {}).items():
+        rows.append([f"given, link {link}", "; ".join(f"{k} = {_pretty(x)}" for k, x in values.items())])
+    return rows
+
+
+def given(doc: Doc, s: Subject):
+    doc.heading(1, "Given")
+    v = s.variant
+    if v is not None and v.data:
+        doc.table(["your data", "value"], [[f"{g.label} {g.symbol}".strip() if g.label else g.symbol,
+                                             g.shown.split(" = ", 1)[1]] for g in v.data], "lr",
+                  caption="Your own values (the rest of the data below is the same for everyone)")
+    rows = _given_rows(s.raw, s.mech.frame)
+    if rows:
+        doc.table(["item", "data (units as in the problem file)"], rows, "ll")
+    if s.static:
+        doc.text("A static analysis: the links' masses play no part (no inertia loads), so none are needed.")
+        return
+    moving = [s.mech.link(k) for k in s.mech.moving]
+    rows = [[f"link {b.number}", M.qty(b.mass, "kg"), M.qty(b.I_G, "kg·m²"),
+             M.pair(np.asarray(b.G) * 1e3, "mm")] for b in moving]
+    doc.table(["link", ("mass ", M.i("m")), ("inertia about G, ", M.sym("I", "G")), "G in the link's frame"], rows,
+              "lrrr", caption="Mass properties used (the file's shapes and radii of gyration worked out: "
+                              "I_G = m k², or from the shape)")
+
+
+def questions(doc: Doc, s: Subject, answers: bool):
+    v = s.variant
+    sheet = v.key() if answers else v.sheet()
+    doc.heading(1, "Questions" if not answers else "Questions and answers")
+    rows = []
+    for q in sheet["questions"]:
+        unit = q["unit"].replace("*", "·").replace("^2", "²") or "no unit"
+        tol = f"{100 * q['tolerance']:g} %"
+        if q["form"] == "direction":
+            tol = "the step of the sweep" if q["part"] == "at" else f"{math.degrees(math.atan(q['tolerance'])):.2g}°"
+        row = [q["id"], q["ask"], f"{unit}, within {tol}, {q['points']:g} pt"]
+        if answers:
+            a = q["answer"]
+            row += [a["text"]]
+        rows.append(row)
+    header = ["id", "question", "unit, tolerance, points"] + (["answer"] if answers else [])
+    doc.table(header, rows, "llll" if answers else "lll")
+    if answers:
+        doc.items([f"{q['id']}: {q['answer']['hint']}" for q in sheet["questions"] if q["answer"].get("hint")])
+
+
+_CONVENTION: list[Picture] = []
+
+
+def _convention_picture() -> Picture:
+    """The sign convention's drawing: the same in every handout, so drawn once per process (a class's batch)."""
+    if not _CONVENTION:
+        from graphkin import draw
+
+        _CONVENTION.append(Picture("convention", lambda: draw.draw_sign_convention(), 0.5,
+                                   "x right, y up; angles, ω, α and torques positive counter-clockwise", 60))
+    return _CONVENTION[0]
+
+
+def convention(doc: Doc, s: Subject):
+    doc.heading(1, "Sign convention")
+    label = doc.figure([_convention_picture()], "The sign convention used throughout.")
+    items = [
+        ("Global x to the right, y up; angles, ω, α and torques are positive counter-clockwise (", label, ")."),
+        (M.sym("F", "ij"), " is the force of link i on link j, and ",
+         M.row(M.sym("F", "ji"), M.op("="), M.op("−"), M.sym("F", "ij")),
+         f". Link {s.mech.frame} is the frame. A sliding pair's reaction is written ", M.sym("G", "ij"), "."),
+        ("Inertia force ", M.row(M.op("−"), M.i("m"), M.sym("a", "G")), " at G, inertia torque ",
+         M.row(M.op("−"), M.sym("I", "G"), M.i("α")), "; their single resultant is offset from G by ",
+         M.row(M.i("h"), M.op("="), M.frac(M.absval(M.i("T")), M.absval(M.i("F")))),
+         " to the side that reproduces the torque's sense."),
+        ("Forces in polar form, as the books print them: magnitude ∠ direction in degrees from +x, "
+         "counter-clockwise positive.",),
+    ]
+    if s.static:
+        del items[2]  # no inertia loads in a static analysis
+    doc.items(items)
+
+
+def mechanism(doc: Doc, s: Subject, c, i: int):
+    from graphkin import draw
+
+    label = doc.figure([s.picture(f"mechanism-{i}", lambda: draw.draw_mechanism(c), 0.7,
+                                f"the mechanism at {s.where(i)}", 75)],
+                       f"The mechanism at {s.where(i)}, drawn to scale, with its centres of mass.")
+    doc.text(f"{label} shows the linkage at {s.where(i)}.")
+
+
+def _pick_point(s: Subject, link: int) -> str:
+    """The point the acceleration of G is taken from: a frame pivot if the link has one, else a shared pin."""
+    joints = [j for j in s.mech.joints_of(link) if isinstance(j, Revolute)]
+    joints.sort(key=lambda j: (s.mech.frame not in j.links, min(set(j.links) - {link})))
+    if joints:
+        return joints[0].point
+    return next(iter(s.mech.link(link).points))
+
+
+def kinematics(doc: Doc, s: Subject, entry: dict, i: int):
+    kin = s.result.kinematics
+    doc.heading(2, "Position of every link" if s.static else "Kinematics")
+    what = "position equations" if s.static else "position, velocity and acceleration equations"
+    doc.text("The solver locates the links group by group, in closed form: the driver first, then each dyad "
+             f"(two links joined to each other and to links already located) or gear pair. Each group's {what}, "
+             "with the numbers:")
+    groups(doc, kin, i, rates=not s.static)
+    doc.text("Every link at once (θ of a link is the angle of its own x-axis, the axis its points are given in):")
+    if s.static:
+        doc.table(["link", "θ [°]"], [[f"link {link}", M.n(M.fmt_fixed(math.degrees(d["theta"])))]
+                                      for link, d in entry["links"].items()], "lr")
+        return
+    rows = []
+    for link, d in entry["links"].items():
+        a = d["a_G"]
+        rows.append([f"link {link}", M.n(M.fmt_fixed(math.degrees(d["theta"]))), M.n(d["omega"]), M.n(d["alpha"]),
+                     M.pair(a), M.polar(M.size_of(a), M.angle_of(a), "")])
+    doc.table(["link", "θ [°]", "ω [rad/s]", "α [rad/s²]", (M.sym("a", "G"), " [m/s²]"),
+               (M.sym("a", "G"), " polar")], rows, "lrrrrr")
+    doc.text("Each centre of mass from a point P of the same link whose acceleration is known "
+             "(relative acceleration: tangential α k × r and normal −ω² r):")
+    for link, d in entry["links"].items():
+        link = int(link)
+        if s.mech.link(link).mass == 0:
+            continue
+        P = _pick_point(s, link)
+        aP = kin.acceleration(link, P)[i]
+        r = kin.G(link)[i] - kin.position(link, P)[i]
+        w, al = d["omega"], d["alpha"]
+        G = f"G{link}"
+        aG = M.sym("a", G)
+        if math.hypot(*r) < 1e-12:
+            doc.equation(M.row(aG, M.op("="), M.sym("a", P), M.op("="), M.pair(aP, "m/s²")))
+            continue
+        lines = [
+            M.row(aG, M.op("="), M.sym("a", P), M.op("+"), M.sym("α", str(link)), M.i("k"), M.op("×"),
+                  M.sym("r", f"{P}{G}"), M.op("−"), M.sup(M.sym("ω", str(link)), "2"), M.sym("r", f"{P}{G}")),
+            M.row(M.op("="), M.pair(aP), M.op("+"), M.paren(M.n(al)), M.pair((-r[1], r[0])), M.op("−"),
+                  M.sup(M.paren(M.n(w)), "2"), M.pair(r)),
+            M.row(M.op("="), M.pair(d["a_G"], "m/s²"), M.op("="),
+                  M.polar(M.size_of(d["a_G"]), M.angle_of(d["a_G"]), "m/s²")),
+        ]
+        doc.equation(*lines)
+    doc.text("with ", M.sym("r", "PG"), " in m, the vector from P to G, and ", M.row(M.i("k"), M.op("×"), M.i("r")),
+             " the vector r turned 90° counter-clockwise.")
+
+
+def inertia(doc: Doc, s: Subject, entry: dict, c, i: int):
+    doc.heading(2, "Inertia loads")
+    doc.text("d'Alembert: each moving link is in equilibrium under its loads, the joint forces, and its inertia "
+             "force and torque.")
+    for link, d in entry["links"].items():
+        body = s.mech.link(int(link))
+        if body.mass == 0:
+            doc.text(f"Link {link} is massless: no inertia loads.")
+            continue
+        a, F, T, h = d["a_G"], d["inertia_force"], d["inertia_torque"], d["h"]
+        Fi, Ti = M.sym("F", f"{link}i"), M.sym("T", f"{link}i")
+        lines = [
+            M.row(Fi, M.op("="), M.op("−"), M.sym("m", link), M.sym("a", f"G{link}"), M.op("="), M.op("−"),
+                  M.paren(M.qty(body.mass, "kg")), M.pair(a, "m/s²"), M.op("="), M.pair(F, "N"), M.op("="),
+                  M.polar(M.size_of(F), M.angle_of(F), "N")),
+            M.row(Ti, M.op("="), M.op("−"), M.sym("I", f"G{link}"), M.sym("α", link), M.op("="), M.op("−"),
+                  M.paren(M.qty(body.I_G, "kg·m²")), M.paren(M.qty(d["alpha"], "rad/s²")), M.op("="),
+                  M.qty(T, "N·m"), M.t(" (CCW)" if T > 0 else " (CW)" if T < 0 else "")),
+        ]
+        if h is not None:
+            lines.append(M.row(M.sym("h", link), M.op("="), M.frac(M.absval(Ti), M.absval(Fi)), M.op("="),
+                               M.frac(M.qty(abs(T), "N·m"), M.qty(M.size_of(F), "N")), M.op("="),
+                               M.qty(h * 1e3, "mm")))
+        doc.equation(*lines)
+        inert = c.inertia.get(int(link)) if c is not None and c.valid else None
+        if h is None:
+            doc.text(f"The inertia force of link {link} is zero: its inertia torque acts alone, as a couple.")
+        elif inert and inert.get("line_point") is not None:
+            G = np.asarray(c.G[int(link)])
+            e = np.asarray(F) / M.size_of(F)
+            off = np.asarray(inert["line_point"]) - G
+            off = off - np.dot(off, e) * e
+            if np.hypot(*off) <= 1e-12:
+                doc.text(f"The resultant R{link}i passes through G{link} (no inertia torque).")
+            else:
+                side = "left" if e[0] * off[1] - e[1] * off[0] > 0 else "right"
+                sense = "counter-clockwise" if T > 0 else "clockwise"
+                doc.text(f"The single resultant R{link}i = F{link}i acts on a line parallel to it at h{link} = ",
+                         M.qty(h * 1e3, "mm"), f" to the {side} of G{link} (looking along the force; from G{link} "
+                         f"towards ", M.n(M.fmt_fixed(M.angle_of(off))), "°), where its moment about "
+                         f"G{link} is {sense}, as T{link}i is.")
+
+
+def loads(doc: Doc, s: Subject, entry: dict):
+    """The external loads at this position, when any of them changes with the position (a table, a sense)."""
+    if not any(ld.varies for ld in s.mech.loads):
+        return  # the given data already says what they are
+    doc.heading(2, "External loads here")
+    rows = []
+    for ld in entry["loads"]:
+        name = M.name(ld["name"]) if ld["name"] else ("P" if "force" in ld else "T")
+        if "force" in ld:
+            value = (M.polar(M.size_of(ld["force"]), M.angle_of(ld["force"]), "N") if ld["acting"]
+                     else M.qty(0.0, "N"))
+            rows.append([name, f"link {ld['link']} at {ld['point']}", value])
+        else:
+            rows.append([name, f"link {ld['link']}", M.qty(ld["torque"], "N·m")])
+    doc.table(["load", "on", "value at this position"], rows, "llr",
+              caption="Each load at its value here: read off its table, and with the sense the motion gives it")

@@ -1,0 +1,40 @@
+"""What ``graphkin`` loads before it runs a command: building the parser imports nothing heavy, and numpy starts
+with one BLAS thread without changing the environment programs it starts see. Timings: ``benchmarks/bench_cli.py``."""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+REPO = Path(__file__).resolve().parents[2]
+
+
+def _python(code: str, **env) -> subprocess.CompletedProcess:
+    return subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=REPO,
+                          env={**os.environ, **env}, timeout=120)
+
+
+def test_building_the_parser_imports_nothing_heavy():
+    r = _python("import sys\n"
+                "from graphkin.cli import parser as _parser\n"
+                "_parser()\n"
+                "print(sorted(m for m in ('numpy', 'pint', 'matplotlib', 'ipywidgets', 'graphkin.exercises', 'socket',"
+                " 'subprocess') if m in sys.modules))")
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.strip() == "[]"
+
+
+def test_numpy_is_loaded_with_one_blas_thread_and_the_environment_is_put_back():
+    code = ("import os, sys\n"
+            "from graphkin.cli._common import single_threaded_blas as _single_threaded_blas\n"
+            "_single_threaded_blas()\n"
+            "print('numpy' in sys.modules, os.environ.get('OPENBLAS_NUM_THREADS'))")
+    env = {k: v for k, v in os.environ.items() if k not in ("OPENBLAS_NUM_THREADS", "GOTO_NUM_THREADS",
+                                                           "OMP_NUM_THREADS")}
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=REPO, env=env, timeout=60)
+    assert r.stdout.split() == ["True", "None"], r.stderr
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=REPO, timeout=60,
+                       env={**env, "OPENBLAS_NUM_THREADS": "2"})
+    assert r.stdout.split()[1] == "2", r.stderr  # the user's choice stands

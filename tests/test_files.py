@@ -1,0 +1,155 @@
+"""Every file graphkin writes is whole or absent (issue 12): concurrent writers, Ctrl-C mid-write, a batch cut short.
+
+Files are written to a temporary file in the same folder and moved into place
+with ``os.replace`` (:func:`graphkin.draw.save`, :mod:`graphkin.files`), so a
+reader sees the old file or the new one, never a mixture, and an interrupted
+write leaves no temporary file behind.
+"""
+
+from __future__ import annotations
+
+import os
+import signal
+import subprocess
+import sys
+import textwrap
+import time
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+import pytest
+
+GRAPHKIN = Path(sys.executable).with_name("graphkin")
+PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
+WRITERS = 8
+
+
+def valid_png(data: bytes) -> bool:
+    """A PNG that Pillow reads to the last pixel."""
+    import io
+
+    from PIL import Image
+
+    if not data.startswith(PNG_SIGNATURE):
+        return False
+    try:
+        with Image.open(io.BytesIO(data)) as im:
+            im.load()
+    except Exception:  # any reader error means a broken file; the assertion says which
+        return False
+    return True
+
+
+def valid_svg(data: bytes) -> bool:
+    """An SVG that parses as XML and whose root is <svg>."""
+    try:
+        root = ET.fromstring(data)
+    except ET.ParseError:
+        return False
+    return root.tag.endswith("svg")
+
+
+def temporaries(folder: Path) -> list[str]:
+    return sorted(n for n in os.listdir(folder) if n.endswith(".tmp"))
+
+
+# Each writer draws the double slider's side-by-side figure once, waits for the others, then saves it as PNG and
+# SVG to the same two paths, twice, as fast as it can.
+WRITER = textwrap.dedent("""
+    import sys, time
+    from pathlib import Path
+    from graphkin import catalog, draw
+    from graphkin.graphical import construct_forces
+
+    folder, me = Path(sys.argv[1]), sys.argv[2]
+    p = catalog.load("double_slider")
+    fig = draw.draw_solution(construct_forces(p.kinematics(), 0), p.solve())
+    (folder / f"ready_{me}").touch()
+    while not (folder / "go").exists():
+        time.sleep(0.005)
+    for _ in range(2):
+        draw.save(fig, folder / "out" / "same.png")
+        draw.save(fig, folder / "out" / "same.svg")
+""")
+
+
+@pytest.mark.slow
+def test_eight_writers_at_once_leave_a_valid_file(tmp_path):
+    out = tmp_path / "out"
+    out.mkdir()
+    procs = [subprocess.Popen([sys.executable, "-c", WRITER, str(tmp_path), str(k)], stderr=subprocess.PIPE)
+             for k in range(WRITERS)]
+    try:
+        deadline = time.monotonic() + 120
+        while len(list(tmp_path.glob("ready_*"))) < WRITERS:
+            assert all(p.poll() is None for p in procs), "a writer died before the start"
+            assert time.monotonic() < deadline
+            time.sleep(0.01)
+        (tmp_path / "go").touch()
+        # While they write, a reader keeps opening the two files: it must never see half of one.
+        reads = 0
+        while any(p.poll() is None for p in procs):
+            for name, valid in (("same.png", valid_png), ("same.svg", valid_svg)):
+                try:
+                    data = (out / name).read_bytes()
+                except FileNotFoundError:
+                    continue
+                reads += 1
+                assert valid(data), f"a reader saw a broken {name} ({len(data)} bytes)"
+            time.sleep(0.005)  # leave the two cores to the writers
+    finally:
+        for p in procs:
+            p.wait(timeout=120)
+    assert [p.returncode for p in procs] == [0] * WRITERS, [p.stderr.read().decode()[-500:] for p in procs]
+    assert reads > 0
+    assert valid_png((out / "same.png").read_bytes())
+    assert valid_svg((out / "same.svg").read_bytes())
+    assert sorted(os.listdir(out)) == ["same.png", "same.svg"]
+
+
+def _interrupt_when(args, folder: Path, prefix: str):
+    """Run ``graphkin ARGS`` in ``folder``; send SIGINT the moment a temporary file starting ``prefix`` appears."""
+    # Ctrl-C as at a terminal: a shell without job control starts a background job (`make test &`) with SIGINT
+    # ignored, and a child inherits that, so the signal would be dropped and the command run to its end.
+    proc = subprocess.Popen([str(GRAPHKIN), *args], cwd=folder, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
+                            text=True, preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
+    sent = False
+    while proc.poll() is None:
+        if any(n.startswith(prefix) for n in os.listdir(folder)):
+            proc.send_signal(signal.SIGINT)
+            sent = True
+            break
+        time.sleep(0.001)
+    err = proc.communicate(timeout=120)[1]
+    assert sent, f"the write never started: exit {proc.returncode}, {err!r}"
+    return proc.returncode, err
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("previous", [False, True], ids=["no-previous-file", "previous-file"])
+def test_ctrl_c_during_a_long_figure_write(tmp_path, previous):
+    # 200,000 positions: the sweep takes about a second, the SVG a few tenths more; SIGINT lands in the write.
+    figure = tmp_path / "big.svg"
+    old = b'<svg xmlns="http://www.w3.org/2000/svg" width="10" height="10"/>\n'
+    if previous:
+        figure.write_bytes(old)
+    code, err = _interrupt_when(["cycle", "strip_cutter", "--n", "200000", "--figure", "big.svg"], tmp_path,
+                                ".big.svg.")
+    assert code == 130, err
+    assert err == "graphkin: interrupted\n"
+    assert temporaries(tmp_path) == []
+    if previous:
+        assert figure.read_bytes() == old
+    else:
+        assert not figure.exists()
+
+
+def test_a_batch_cut_short_says_what_it_wrote(tmp_path):
+    # Eight positions, one figure each: SIGINT while the second is written leaves the first whole and says so.
+    at = ",".join(f"{a} deg" for a in range(10, 90, 10))
+    code, err = _interrupt_when(["solve", "strip_cutter", "--at", at, "--figure", "f.png"], tmp_path, ".f_2.png.")
+    assert code == 130
+    assert err.count("\n") == 1 and err.startswith("graphkin: interrupted: ")
+    assert "1 file was written before it stopped, the last f_1.png" in err
+    assert sorted(os.listdir(tmp_path)) == ["f_1.png"]
+    assert valid_png((tmp_path / "f_1.png").read_bytes())
