@@ -407,7 +407,8 @@ def main() -> int:
         cells = []
         for n in N_SIZES:
             t = T[key, n]
-            cells.append(f"{'n/a' if t is None else ('~' if key == '3' and n in extrapolated else '') + format(t / n * 1e9, ',.1f'):>19}")
+            text = "n/a" if t is None else ("~" if key == "3" and n in extrapolated else "") + format(t / n * 1e9, ",.1f")
+            cells.append(f"{text:>19}")
         print(f"{key:<3}{label:<{w}}" + "".join(cells))
     print("\nratios")
     for n in N_SIZES:

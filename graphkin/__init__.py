@@ -135,8 +135,7 @@ if TYPE_CHECKING:  # pragma: no cover - for type checkers and editors; at run ti
     from graphkin.geometry import cross
     from graphkin.graphical import Construction, construct_forces
     from graphkin.kinematics import Kinematics, decompose, solve_kinematics
-    from graphkin.model import Driver, GearMesh, Link, Mechanism, PointForce, Prismatic, Revolute, Table, Torque
-    from graphkin.model import mass
+    from graphkin.model import Driver, GearMesh, Link, Mechanism, PointForce, Prismatic, Revolute, Table, Torque, mass
     from graphkin.notation import polar, polar_text
     from graphkin.problem import Problem, build_problem, load_problem, parse_problem
     from graphkin.report import cycle_data, format_cycle, format_solution, solution

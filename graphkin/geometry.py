@@ -14,6 +14,16 @@ import numpy as np
 def cross(a, b):
     """z-component of the cross product a × b of (..., 2) arrays.
 
+    Parameters
+    ----------
+    a, b : array_like, shape (..., 2)
+        Plane vectors (x, y).
+
+    Returns
+    -------
+    ndarray, shape (...)
+        a_x b_y − a_y b_x.
+
     Examples
     --------
     >>> float(cross([1.0, 0.0], [0.0, 2.0]))

@@ -130,6 +130,17 @@ def fixed(x: float, places: int = 2, *, minus: str = MINUS) -> str:
 def polar(v) -> tuple[float, float]:
     """Magnitude and angle [deg] in (−180°, 180°] of a plane vector, as the books print it.
 
+    Parameters
+    ----------
+    v : (float, float)
+        The vector's components.
+
+    Returns
+    -------
+    size, angle : float
+        Its magnitude, and its direction [deg] from +x, CCW positive; rounding noise in a component
+        (1e-12 of the size) is taken as 0, so that 180° never prints as −180°.
+
     Examples
     --------
     >>> polar([-7.555, -1e-16])
@@ -161,6 +172,11 @@ def polar_text(v, unit: str = "N", digits: int = 4, *, scale: float = 0.0, minus
         not exactly zero.
     minus : str
         The minus sign (:data:`MINUS`, or ``"-"`` for plain text).
+
+    Returns
+    -------
+    str
+        Magnitude, unit and angle, e.g. ``27.06 N ∠ −73.78°``.
 
     Examples
     --------

@@ -38,18 +38,14 @@ import math
 
 import numpy as np
 
-import graphkin.catalog
-from graphkin.geometry import cross
-from graphkin.report import format_solution
-from graphkin.notation import polar
-from graphkin.analytical.matrix import assemble
+import graphkin as gk
 
 np.set_printoptions(precision=4, suppress=True)
 
 
 def show(v, unit="N", digits=4):
     """A plane vector as the books write it: magnitude ∠ angle."""
-    size, angle = polar(v)
+    size, angle = gk.polar(v)
     return f"{size:.{digits}g} {unit} ∠ {angle:.2f}°"
 
 
@@ -90,7 +86,7 @@ def show(v, unit="N", digits=4):
 # the example in Norton, *Design of Machinery*, §11.2 (the numbers are our own).
 
 # %%
-p = graphkin.catalog.load("single_link")
+p = gk.load("single_link")
 print(p.title)
 print(p.source)
 print(p.notes)
@@ -158,11 +154,11 @@ print(f"h   = {inert.h[0] * 1e3:.3f} mm")
 # \end{aligned}$$
 #
 # Keep the unknowns on the left and move everything known to the right-hand side: this is
-# $[A]\{x\} = \{b\}$. `assemble(bar_result)` builds it; `format(0)` prints it for position 0.
+# $[A]\{x\} = \{b\}$. `gk.assemble(bar_result)` builds it; `format(0)` prints it for position 0.
 # (A 2-D cross product is the scalar $a_x b_y - a_y b_x$.)
 
 # %%
-system = assemble(bar_result)
+system = gk.assemble(bar_result)
 print(system.format(0))
 
 # %% [markdown]
@@ -200,9 +196,9 @@ I_G = m * L**2 / 12
 I_O = I_G + m * (L / 2) ** 2
 rP = k.position(2, "P")[0]
 FP = np.array(mech.loads[0].force)
-T12_hand = I_O * alpha2 - cross(rP, FP)
+T12_hand = I_O * alpha2 - gk.cross(rP, FP)
 print(f"I_G = {I_G:.6f} kg·m², I_O = {I_O:.6f} kg·m² (= m L²/3 = {m * L**2 / 3:.6f})")
-print(f"I_O α = {I_O * alpha2:.4f} N·m,  r_P × F_P = {cross(rP, FP):.4f} N·m")
+print(f"I_O α = {I_O * alpha2:.4f} N·m,  r_P × F_P = {gk.cross(rP, FP):.4f} N·m")
 print(f"T12 by hand = {T12_hand:.4f} N·m,  graphkin = {bar_result['T12'][0]:.4f} N·m")
 
 # %% [markdown]
@@ -211,7 +207,7 @@ print(f"T12 by hand = {T12_hand:.4f} N·m,  graphkin = {bar_result['T12'][0]:.4f
 # $\vec F_{12} = m\vec a_G - \vec F_P$. Everything together, with textbook units:
 
 # %%
-print(format_solution(p, bar_result))
+print(gk.format_solution(p, bar_result))
 
 # %% [markdown]
 # ## 3. The double slider (Söylemez, §6.4)
@@ -221,7 +217,7 @@ print(format_solution(p, bar_result))
 # $A$ and $B$. The sliders are massless, there is no friction and no gravity.
 
 # %%
-p = graphkin.catalog.load("double_slider")
+p = gk.load("double_slider")
 mech = p.mechanism
 print(p.title)
 print(p.source)
@@ -307,7 +303,7 @@ print(f"h    = {i3.h[0] * 1e3:.2f} mm")
 # are rounding noise of a zero.
 
 # %%
-system = assemble(result)
+system = gk.assemble(result)
 print(system.format(0))
 
 # %%
@@ -357,7 +353,7 @@ for name, book, ours, unit in rows:
     if isinstance(book, tuple):
         ref = vec(*book)
         diff = np.linalg.norm(ours - ref) / np.linalg.norm(ref)
-        size, angle = polar(ours)
+        size, angle = gk.polar(ours)
         book_text, ours_text = f"{book[0]:g} ∠ {book[1]:g}°", f"{size:.4f} ∠ {angle:.2f}°"
     else:
         diff = abs(ours - book) / abs(book)
@@ -390,7 +386,7 @@ print("G14 =", show(result["G14"][0]), "      F43 =", show(result["F43"][0]))
 
 # %%
 r300 = p.solve(at=[0.3])
-print(format_solution(p, r300))
+print(gk.format_solution(p, r300))
 
 # %% [markdown]
 # An independent check, without any free-body diagram: with no friction the joint forces do no
@@ -418,7 +414,7 @@ ks = sweep.kinematics
 print(f"{'x_A [mm]':>9}{'θ3 [°]':>9}{'ω3 [rad/s]':>12}{'α3 [rad/s²]':>13}{'F12 [N]':>10}{'G12 [N]':>10}")
 for n, xa in enumerate(xs):
     print(f"{xa * 1e3:9.0f}{math.degrees(ks.theta[3][n]):9.2f}{ks.omega[3][n]:12.3f}{ks.alpha[3][n]:13.3f}"
-          f"{sweep.effort[n]:10.3f}{polar(sweep['G12'][n])[0]:10.3f}")
+          f"{sweep.effort[n]:10.3f}{gk.polar(sweep['G12'][n])[0]:10.3f}")
 
 # %% [markdown]
 # The driving force grows very fast as $x_A$ approaches the rod length (500 mm): the rod then
@@ -438,15 +434,14 @@ for n, xa in enumerate(xs):
 #
 # * give slider 2 an acceleration, e.g. `a = "3 m/s^2"`, and explain the sign of the change in $F_{12}$;
 # * in `single_link`, find the angular acceleration for which $T_{12} = 0$ (use the hand formula);
-# * make the rod's sliders heavy (e.g. `mass = "1 kg"` for link 4) and see which of the relations
+# * make the rod's sliders heavy (e.g. `gk.mass = "1 kg"` for link 4) and see which of the relations
 #   $\vec G_{12} = -\vec F_{3i}$, $\vec F_{12} = -\vec F_{43}$ still hold.
 
 # %%
-from graphkin.problem import parse_problem
 
-text = graphkin.catalog.path("double_slider").read_text()
+text = gk.catalog.path("double_slider").read_text()
 text = text.replace('v = "2 m/s"', 'v = "4 m/s"')  # edit here
-mine = parse_problem(text, file="my double slider")
+mine = gk.parse_problem(text, file="my double slider")
 mine_result = mine.solve()
 print(f"F12 = {mine_result.effort[0]:.4f} N   (v = 2 m/s gave {result.effort[0]:.4f} N)")
 print(f"ratio: {mine_result.effort[0] / result.effort[0]:.3f}")
@@ -480,8 +475,6 @@ print(f"ratio: {mine_result.effort[0] / result.effort[0]:.3f}")
 # can be run and tested as it is.)
 
 # %%
-from graphkin import exercises
-from graphkin.widgets import exercise
 
 student = "your-id"  # ← type your own id here
 
@@ -490,22 +483,22 @@ student = "your-id"  # ← type your own id here
 #
 # Work it out as in section 2: step 4 gives $T_{12}$ in one line, and the two force equations give
 # $\vec F_{12} = m\vec a_G - \vec F_P$. (To check your hand work with `graphkin`, change
-# `mass = "2 kg"` and `theta = "30 deg"` in the problem text, as in section 5.) Type each answer in
+# `gk.mass = "2 kg"` and `theta = "30 deg"` in the problem text, as in section 5.) Type each answer in
 # its box and press **Check**, as often as you like. Write a force as magnitude and direction,
 # `12.3 N at -45 deg` (or `12.3 N ∠ -45°`), or as components, `(8.7, -8.7) N`; a torque with its
 # sense, `4.5 N*m CW`.
 
 # %%
-exercise("single_link", student)
+gk.exercise("single_link", student)
 
 # %% [markdown]
 # If you prefer code to boxes, put your answers in a dictionary (question → answer as you would
-# type it) and print `exercises.check`: it gives the same feedback. Empty answers are reported as
+# type it) and print `gk.exercises.check`: it gives the same feedback. Empty answers are reported as
 # missing.
 
 # %%
 answers = {"F12": "", "T12": ""}  # e.g. "12.3 N at -45 deg" and "4.5 N*m CW"
-print(exercises.check("single_link", student, answers))
+print(gk.exercises.check("single_link", student, answers))
 
 # %% [markdown]
 # ### 6.2 The double slider, at your position and speed
@@ -515,7 +508,7 @@ print(exercises.check("single_link", student, answers))
 # speed `v` [m/s] and position `x` [m].
 
 # %%
-exercise("double_slider_forces", student)
+gk.exercise("double_slider_forces", student)
 
 # %% [markdown]
 # ### 6.3 What the feedback looks like
@@ -529,7 +522,7 @@ exercise("double_slider_forces", student)
 # %% jupyter={"source_hidden": true}
 def slipped_answers(name, student):
     """Answers to the double slider exercise with three typical slips, made from the key (for the demo only)."""
-    key = {q["id"]: q["answer"] for q in exercises.key(name, student)["questions"]}
+    key = {q["id"]: q["answer"] for q in gk.exercises.key(name, student)["questions"]}
     return {
         "F23": show(-np.array(key["F23"]["si"])),  # F32 = −F23 given for F23
         "F34": key["F34"]["text"],  # right
@@ -542,7 +535,7 @@ def slipped_answers(name, student):
 # %%
 demo = slipped_answers("double_slider_forces", "demo")
 print(demo)
-print(exercises.check("double_slider_forces", "demo", demo))
+print(gk.exercises.check("double_slider_forces", "demo", demo))
 
 # %% [markdown]
 # Each slip is named and earns half a point; the feedback says what to look at again but does not
@@ -610,7 +603,7 @@ assert math.isclose(mine_result.effort[0] / result.effort[0], 4.0)  # accelerati
 # ### Section 6: the demo student's slips are named
 
 # %%
-demo_report = {q["id"]: q for q in exercises.grade("double_slider_forces", "demo", demo)["questions"]}
+demo_report = {q["id"]: q for q in gk.exercises.grade("double_slider_forces", "demo", demo)["questions"]}
 assert demo_report["F23"]["verdict"] == "slip" and demo_report["F23"]["slip"] == "sign"
 assert demo_report["F34"]["verdict"] == "correct" and demo_report["G12"]["verdict"] == "correct"
 assert demo_report["F12"]["verdict"] == "slip" and demo_report["F12"]["slip"] == "sign"

@@ -45,18 +45,14 @@ import math
 
 import numpy as np
 
-from graphkin import catalog, draw
-from graphkin.geometry import cross
-from graphkin.graphical import construct_forces
-from graphkin.problem import parse_problem
-from graphkin.notation import polar
+import graphkin as gk
 
 np.set_printoptions(precision=4, suppress=True)
 
 
 def show(v, unit="N", digits=4):
     """A plane vector as the books write it: magnitude ∠ angle."""
-    size, angle = polar(v)
+    size, angle = gk.polar(v)
     return f"{size:.{digits}g} {unit} ∠ {angle:.2f}°"
 
 
@@ -74,7 +70,7 @@ def rel(a, b):
 
 def off_line(point, line):
     """Distance [m] of a point from a line of action (a graphkin Line: a point and a unit direction)."""
-    return abs(float(cross(np.subtract(point, line.point), line.direction)))
+    return abs(float(gk.cross(np.subtract(point, line.point), line.direction)))
 
 
 def steps_of(c, kind, link=None):
@@ -132,20 +128,20 @@ def steps_of(c, kind, link=None):
 # In a free body of link $j$ we draw the forces $\vec F_{ij}$ of its neighbours.
 
 # %%
-draw.draw_sign_convention().figure
+gk.draw.draw_sign_convention().figure
 
 # %% [markdown]
 # ## 2. The double slider, step by step (Söylemez §6.4)
 #
 # The same mechanism as in lesson 01: slider 2 moves along $x$ at 2 m/s, slider 4 along $y$, and
-# the rod 3 (500 mm, 5 kg) joins them. Only the rod has mass. `construct_forces` builds the
+# the rod 3 (500 mm, 5 kg) joins them. Only the rod has mass. `gk.construct_forces` builds the
 # graphical solution at one position of the kinematics and returns it as data: a list of
 # **steps**, each with a kind, a caption in words, the lines and points it draws, and its force
 # polygon.
 
 # %%
-p = catalog.load("double_slider")
-c = construct_forces(p.kinematics(), 0)
+p = gk.load("double_slider")
+c = gk.construct_forces(p.kinematics(), 0)
 r = p.solve()  # the analytical route, for comparison later
 
 for number, step in enumerate(c.steps, start=1):
@@ -156,7 +152,7 @@ for number, step in enumerate(c.steps, start=1):
 # We draw one frame per step and look at them in turn.
 
 # %%
-frames = draw.draw_steps(c)
+frames = gk.draw.draw_steps(c)
 print(len(frames), "frames for", len(c.steps), "steps")
 
 # %% [markdown]
@@ -179,7 +175,7 @@ G3 = np.array(c.G[3])
 print(f"F3i = {show(F3i)},  T3i = {T3i * 1e3:.1f} N·mm ({'CW' if T3i < 0 else 'CCW'})")
 print(f"h = |T3i|/|F3i| = {h * 1e3:.3f} mm   (book: 33.31 mm)")
 print(f"distance of G3 from the line of R3i: {off_line(G3, R3i_line) * 1e3:.3f} mm")
-print(f"moment of R3i about G3: {float(cross(np.subtract(R3i_line.point, G3), F3i)) * 1e3:.1f} N·mm"
+print(f"moment of R3i about G3: {float(gk.cross(np.subtract(R3i_line.point, G3), F3i)) * 1e3:.1f} N·mm"
       f"  (the inertia torque; the line passes {'left' if R3i_line.point[0] < G3[0] else 'right'} of G3)")
 
 # %% [markdown]
@@ -288,7 +284,7 @@ print(f"{'h':5}{f'{h * 1e3:.3f} mm':>22}{f'{r.inertia(3).h[0] * 1e3:.3f} mm':>22
 # (with the inertia resultant on its offset line and $h$ dimensioned) and the force polygons.
 
 # %%
-draw.draw_solution(c, r)
+gk.draw.draw_solution(c, r)
 
 # %% [markdown]
 # ## 3. A four-bar by superposition: the strip cutter (Söylemez §6.4.1)
@@ -301,11 +297,11 @@ draw.draw_solution(c, r)
 # two-force member and the simple recipe of section 2 does not apply directly.
 
 # %%
-p2 = catalog.load("strip_cutter")
+p2 = gk.load("strip_cutter")
 print(p2.title)
 print(p2.notes)
 r2 = p2.solve(at=[np.radians(140)])
-c2 = construct_forces(r2.kinematics, 0)
+c2 = gk.construct_forces(r2.kinematics, 0)
 
 for number, step in enumerate(c2.steps, start=1):
     print(f"Step {number:2} [{step.kind}] link {step.link}: {step.caption}")
@@ -339,7 +335,7 @@ for link in (3, 4):
     # Where the inertia resultant's line crosses the cutting force's line, R passes too.
     Li, u = np.array(lines[f"R{link}i"].point), np.array(lines[f"R{link}i"].direction)
     X, w = np.array(cut.at), np.array(cut.vector) / np.linalg.norm(cut.vector)
-    t = float(cross(X - Li, w) / cross(u, w))
+    t = float(gk.cross(X - Li, w) / gk.cross(u, w))
     crossing = Li + t * u
     print(f"        the two lines cross at {crossing * 1e3} mm; R{link} passes "
           f"{off_line(crossing, lines[f'R{link}']):.1e} m from there")
@@ -400,7 +396,7 @@ print("F23 =", show(F23), "   F34 =", show(F34), "   F14 =", show(F14))
 # All the steps on one sheet, in the order they are built:
 
 # %%
-draw.draw_step_grid(c2)
+gk.draw.draw_step_grid(c2)
 
 # %% [markdown]
 # ### The crank: a couple
@@ -438,7 +434,7 @@ for name in r2.names():
     print(f"{name:5}{g_text:>22}{a_text:>22}{diff:>11.1e}")
 
 # %%
-draw.draw_solution(c2, r2)
+gk.draw.draw_solution(c2, r2)
 
 # %% [markdown]
 # ### When superposition is *not* allowed: friction
@@ -455,9 +451,9 @@ draw.draw_solution(c2, r2)
 # slider of a slider-crank ($\mu = 0.2$), at $\theta_{12} = 60°$:
 
 # %%
-p3 = catalog.load("slider_crank_friction")
+p3 = gk.load("slider_crank_friction")
 r3 = p3.solve(at=[np.radians(60)])
-c3 = construct_forces(r3.kinematics, 0)
+c3 = gk.construct_forces(r3.kinematics, 0)
 note = next(s for s in steps_of(c3, "note") if s.caption.startswith("Friction"))
 print(note.caption)
 print()
@@ -483,10 +479,10 @@ from matplotlib.figure import Figure
 angles = [100, 140, 200]  # degrees: edit here
 fig = Figure(figsize=(4.2 * len(angles), 4.2))
 for ax, deg in zip(fig.subplots(1, len(angles)), angles):
-    ck = construct_forces(p2.kinematics(at=[np.radians(deg)]), 0)
+    ck = gk.construct_forces(p2.kinematics(at=[np.radians(deg)]), 0)
     I = {name: np.array(xy) for s in ck.steps for name, xy in s.points.items()}
     A_mm = np.array(ck.points[3]["A"]) * 1e3
-    draw.draw_mechanism(ck, ax=ax)
+    gk.draw.draw_mechanism(ck, ax=ax)
     ax.plot(*np.array([A_mm, I["I3"] * 1e3]).T, "--", color="tab:green")
     ax.plot(*(I["I3"] * 1e3), "o", color="tab:green")
     ax.annotate("I₃", I["I3"] * 1e3, textcoords="offset points", xytext=(5, 5), color="tab:green")
@@ -503,9 +499,9 @@ fig
 # for a uniform rod $I_G = mL^2/12$, so both $T_i$ and $\vec F_i$ are proportional to $m$.)
 
 # %%
-text = catalog.path("double_slider").read_text()
-heavy = parse_problem(text.replace('mass = "5 kg"', 'mass = "10 kg"'), file="heavy rod")  # edit here
-ch = construct_forces(heavy.kinematics(), 0)
+text = gk.catalog.path("double_slider").read_text()
+heavy = gk.parse_problem(text.replace('mass = "5 kg"', 'mass = "10 kg"'), file="heavy rod")  # edit here
+ch = gk.construct_forces(heavy.kinematics(), 0)
 print(f"h: {c.inertia[3]['h'] * 1e3:.3f} mm -> {ch.inertia[3]['h'] * 1e3:.3f} mm")
 print(f"F12: {c.effort:.4f} N -> {ch.effort:.4f} N")
 
@@ -515,9 +511,9 @@ print(f"F12: {c.effort:.4f} N -> {ch.effort:.4f} N")
 # gives $k$ directly; shrink link 3's from 268 mm to 150 mm and watch $h$, $I_3$ and $T_{12}$ change.
 
 # %%
-text = catalog.path("strip_cutter").read_text()
-compact = parse_problem(text.replace('k = "268 mm"', 'k = "150 mm"'), file="compact coupler")  # edit here
-cc = construct_forces(compact.kinematics(at=[np.radians(140)]), 0)
+text = gk.catalog.path("strip_cutter").read_text()
+compact = gk.parse_problem(text.replace('k = "268 mm"', 'k = "150 mm"'), file="compact coupler")  # edit here
+cc = gk.construct_forces(compact.kinematics(at=[np.radians(140)]), 0)
 for label, ck in (("k3 = 268 mm", c2), ("k3 = 150 mm", cc)):
     (three,) = steps_of(ck, "three-force", 3)
     print(f"{label}: h3 = {ck.inertia[3]['h'] * 1e3:7.1f} mm,  I3 = {np.array(three.points['I3']) * 1e3} mm,"
@@ -551,8 +547,6 @@ for label, ck in (("k3 = 268 mm", c2), ("k3 = 150 mm", cc)):
 # can be run and tested as it is.)
 
 # %%
-from graphkin import exercises
-from graphkin.widgets import exercise
 
 student = "your-id"  # ← type your own id here
 
@@ -563,23 +557,23 @@ student = "your-id"  # ← type your own id here
 # and speed (outside the cut). Find $\vec F_{3i}$, $T_{3i}$, the offset $h$ and the foot of the
 # perpendicular from $G_3$ to the resultant's line — on the side that turns the link the same way
 # as $T_{3i}$. Work by hand from the kinematics, or with `graphkin`:
-# `construct_forces(p2.at_speed(ω).kinematics(at=[θ]), 0).inertia[3]` holds them for the strip
+# `gk.construct_forces(p2.at_speed(ω).kinematics(at=[θ]), 0).inertia[3]` holds them for the strip
 # cutter of section 3 at your speed ω [rad/s] and angle θ [rad] (`line_point` is the foot).
 #
 # Write a force as `12.3 N at -45 deg` (or `12.3 N ∠ -45°`), a torque with its sense, `4.5 N*m CW`,
 # and a point as `(x, y) mm`. Press **Check** as often as you like.
 
 # %%
-exercise("inertia_resultant", student)
+gk.exercise("inertia_resultant", student)
 
 # %% [markdown]
 # If you prefer code to boxes, put your answers in a dictionary (question → answer as you would
-# type it) and print `exercises.check`: it gives the same feedback. Empty answers are reported as
+# type it) and print `gk.exercises.check`: it gives the same feedback. Empty answers are reported as
 # missing.
 
 # %%
 answers = {"F3i": "", "T3i": "", "h3": "", "line3": ""}  # e.g. "12.3 N at -45 deg", "4.5 N*m CW", ...
-print(exercises.check("inertia_resultant", student, answers))
+print(gk.exercises.check("inertia_resultant", student, answers))
 
 # %% [markdown]
 # ### 5.2 The double slider with a pencil and a ruler
@@ -600,14 +594,14 @@ print(exercises.check("inertia_resultant", student, answers))
 # %%
 from matplotlib.figure import Figure
 
-mine = exercises.variant("double_slider_graphical", student)
+mine = gk.exercises.variant("double_slider_graphical", student)
 print(f"student {mine.student}:", ", ".join(value.shown for value in mine.data))
 left, right = Figure(figsize=(11, 5)).subplots(1, 2)
-draw.draw_mechanism(mine.construction, ax=left)
-draw.draw_free_body(mine.construction, 3, ax=right, unknowns=False).figure
+gk.draw.draw_mechanism(mine.construction, ax=left)
+gk.draw.draw_free_body(mine.construction, 3, ax=right, unknowns=False).figure
 
 # %%
-exercise("double_slider_graphical", student)
+gk.exercise("double_slider_graphical", student)
 
 # %% [markdown]
 # ### 5.3 What the feedback looks like
@@ -620,9 +614,9 @@ exercise("double_slider_graphical", student)
 # %% jupyter={"source_hidden": true}
 def slipped_answers(name, student):
     """Answers to the inertia-resultant exercise with two typical slips, made from the key (for the demo only)."""
-    key = {q["id"]: q["answer"] for q in exercises.key(name, student)["questions"]}
+    key = {q["id"]: q["answer"] for q in gk.exercises.key(name, student)["questions"]}
     T = key["T3i"]["si"]
-    G3_demo = exercises.variant(name, student).problem.kinematics().G(3)[0]
+    G3_demo = gk.exercises.variant(name, student).problem.kinematics().G(3)[0]
     wrong_foot = (2 * G3_demo - np.array(key["line3"]["si"])) * 1e3  # the foot mirrored through G3 [mm]
     return {
         "F3i": key["F3i"]["text"],  # right
@@ -635,7 +629,7 @@ def slipped_answers(name, student):
 # %%
 demo = slipped_answers("inertia_resultant", "demo")
 print(demo)
-print(exercises.check("inertia_resultant", "demo", demo))
+print(gk.exercises.check("inertia_resultant", "demo", demo))
 
 # %% [markdown]
 # Each slip is named and earns half a point; the feedback says what to look at again but does not
@@ -664,7 +658,7 @@ assert math.isclose(h, abs(T3i) / np.linalg.norm(F3i))
 assert abs(h * 1e3 - 33.31) / 33.31 < 2e-3  # the book rounds before dividing
 assert math.isclose(off_line(G3, R3i_line), h)
 # The right side: the moment of R3i (on its line) about G3 is the inertia torque.
-assert math.isclose(float(cross(np.subtract(R3i_line.point, G3), F3i)), T3i)
+assert math.isclose(float(gk.cross(np.subtract(R3i_line.point, G3), F3i)), T3i)
 assert R3i_line.point[0] < G3[0]  # to the left of G3, as argued in step 1
 # Step 3: the point of concurrency.
 assert s3.kind == "three-force"
@@ -736,7 +730,7 @@ for name in r3.names():
 
 # %%
 for deg in (100, 200):  # "outside the cut, link 3 carries its inertia resultant only"
-    assert not construct_forces(p2.kinematics(at=[np.radians(deg)]), 0).external[3]
+    assert not gk.construct_forces(p2.kinematics(at=[np.radians(deg)]), 0).external[3]
 assert math.isclose(ch.inertia[3]["h"], c.inertia[3]["h"])
 assert math.isclose(ch.effort, 2 * c.effort)
 assert math.isclose(cc.inertia[3]["h"] / c2.inertia[3]["h"], (150 / 268) ** 2)
@@ -748,7 +742,7 @@ assert math.isclose(cc.inertia[3]["h"] / c2.inertia[3]["h"], (150 / 268) ** 2)
 given_gids = {a.get_gid() for a in right.patches}
 assert "fbd3:R3i" in given_gids  # the student sees R3i on its line ...
 assert not {"fbd3:F23", "fbd3:F43"} & given_gids  # ... but not the joint forces they measure
-demo_report = {q["id"]: q for q in exercises.grade("inertia_resultant", "demo", demo)["questions"]}
+demo_report = {q["id"]: q for q in gk.exercises.grade("inertia_resultant", "demo", demo)["questions"]}
 assert demo_report["F3i"]["verdict"] == "correct" and demo_report["h3"]["verdict"] == "correct"
 assert demo_report["T3i"]["verdict"] == "slip" and demo_report["T3i"]["slip"] == "sign"
 assert demo_report["line3"]["verdict"] == "slip" and demo_report["line3"]["slip"] == "wrong_side"

@@ -51,14 +51,8 @@ from dataclasses import replace
 import numpy as np
 from matplotlib.figure import Figure
 
-from graphkin import catalog, draw
-from graphkin.cycle import sweep
+import graphkin as gk
 from graphkin.cycle.sweep import SWITCH
-from graphkin.geometry import cross
-from graphkin.graphical import construct_forces
-from graphkin.problem import parse_problem
-from graphkin.notation import polar
-from graphkin.analytical.matrix import assemble
 
 np.set_printoptions(precision=4, suppress=True)
 
@@ -67,7 +61,7 @@ RPM = math.pi / 30  # rad/s per rpm
 
 def show(v, unit="N", digits=4):
     """A plane vector as the books write it: magnitude ∠ angle."""
-    size, angle = polar(v)
+    size, angle = gk.polar(v)
     return f"{size:.{digits}g} {unit} ∠ {angle:.2f}°"
 
 
@@ -97,7 +91,7 @@ def at_angle(cycle, degrees):
 # $A_0B_0 = 565$ mm, and explains why in its notes — read them:
 
 # %%
-p = catalog.load("strip_cutter")
+p = gk.load("strip_cutter")
 print(p.title)
 print(p.source)
 print(p.notes)
@@ -124,7 +118,7 @@ cut_angles = [124, 140, 156]
 fig = Figure(figsize=(13, 4.2))
 kin_cut = p.kinematics(at=np.radians(cut_angles))
 for n, (ax, a) in enumerate(zip(fig.subplots(1, 3), cut_angles)):
-    draw.draw_mechanism(construct_forces(kin_cut, n), ax=ax)
+    gk.draw.draw_mechanism(gk.construct_forces(kin_cut, n), ax=ax)
     gap = kin_cut.position(3, "C")[n] - kin_cut.position(4, "C")[n]
     ax.set_title(f"θ₁₂ = {a}°:  C₃ − C₄ = ({gap[0] * 1e3:.1f}, {gap[1] * 1e3:.1f}) mm", fontsize=10)
 fig
@@ -132,9 +126,9 @@ fig
 # %% [markdown]
 # ## 2. The whole cycle in one call
 #
-# `sweep(problem)` solves the force analysis at every position of the problem (here 180 crank
+# `gk.sweep(problem)` solves the force analysis at every position of the problem (here 180 crank
 # angles, 2° apart, as in the book's MathCad solution) in **one vectorised call** and returns a
-# `Cycle`: the `torque` curve, its `average` and `power`, `peaks()`, `polar(name)`,
+# `Cycle`: the `torque` curve, its `average` and `power`, `peaks()`, `gk.polar(name)`,
 # `shaking_force()`, `shaking_moment()` and `transmission_angle()`. The full `ForceAnalysis` is
 # `cycle.analysis`, with one row per position.
 #
@@ -144,7 +138,7 @@ fig
 # Sections 3 and 4 show why that matters.
 
 # %%
-cyc = sweep(p)
+cyc = gk.sweep(p)
 r = cyc.analysis
 print(f"{cyc.n} positions, closed turn: {cyc.closed}, all valid: {cyc.valid.all()}")
 print("forces:", r.names())
@@ -167,9 +161,9 @@ one_position = {}  # θ12 → (largest force difference, T12 by the three routes
 for a in (40, 140, 342):
     i = at_angle(cyc, a)
     one = p.solve(at=[math.radians(a)])
-    system = assemble(one)
+    system = gk.assemble(one)
     x = dict(zip(system.unknowns, np.linalg.solve(system.A[0], system.b[0])))
-    c = construct_forces(one.kinematics, 0)
+    c = gk.construct_forces(one.kinematics, 0)
     worst = 0.0
     for name in r.names()[:-1]:  # the joint forces
         F = r[name][i]
@@ -190,7 +184,7 @@ for a in (40, 140, 342):
 
 # %%
 no_cut = replace(p, mechanism=replace(mech, loads=()), title="strip cutter, no cutting force")
-cyc0 = sweep(no_cut)
+cyc0 = gk.sweep(no_cut)
 T0 = no_cut.solve(at=cyc.q).effort  # the no-cut torque at the positions of cyc
 on = mech.loads[0].active.mask(cyc.q)  # positions where the cutting force acts
 print(f"no-cut sweep: {cyc0.n} positions;  cutting force on at {on.sum()} of the {cyc.n} positions of cyc, "
@@ -238,14 +232,14 @@ print(f"the jumps: {jumps[0]:+.1f} N·m at 124°, {jumps[1]:+.1f} N·m at 156°"
 # before 124° and the first after it would be 2° apart.
 #
 # The plot: the whole cycle with the average (left), and a close-up of the cut (right).
-# `draw.draw_torque_curve` draws the curve and its average; we add the no-cut curve and shade the
+# `gk.draw.draw_torque_curve` draws the curve and its average; we add the no-cut curve and shade the
 # cut. Since the samples $\pm\varepsilon$ are a billionth of a radian apart, the line draws each
 # jump as a vertical step at the right angle, not as a ramp across a 2° step.
 
 # %%
 fig = Figure(figsize=(13, 4.6))
 ax1, ax2 = fig.subplots(1, 2)
-curve = draw.draw_torque_curve(cyc, ax=ax1).curves["torque"]
+curve = gk.draw.draw_torque_curve(cyc, ax=ax1).curves["torque"]
 for ax in (ax1, ax2):
     ax.plot(deg(cyc0.q), cyc0.torque, color="0.5", lw=1.0, ls="--", label="T₁₂ without the cut (inertia only)")
     ax.axvspan(124, 156, color="tab:orange", alpha=0.15, label="cutting force on")
@@ -341,7 +335,7 @@ print(f"sweep (180 + 4 samples, ±ε):     {cyc.average:.4f} N·m   ({cyc.averag
 # so whatever the trapezoid gets wrong there is at most $\varepsilon$ times the jump, about $10^{-7}$ J.
 # Every other step lies on one smooth piece of the curve, where the rule has its usual error
 # $\propto h^2$ (**second order**): half the step, a quarter of the error. Both claims, checked on
-# grids of $n$ equally spaced angles (`sweep(p, n)` adds its four samples to those):
+# grids of $n$ equally spaced angles (`gk.sweep(p, n)` adds its four samples to those):
 
 # %%
 print(f"{'n':>6}{'step':>8}{'plain grid':>12}{'error':>10}{'sweep':>11}{'error':>11}")
@@ -349,7 +343,7 @@ ns = (180, 360, 720, 1440, 2880)
 plain_err, sweep_err = [], []
 for n in ns:
     plain_err.append(p.solve(at=np.linspace(0, 2 * math.pi, n, endpoint=False)).effort.mean() - exact)
-    sweep_err.append(sweep(p, n).average - exact)
+    sweep_err.append(gk.sweep(p, n).average - exact)
     print(f"{n:6}{360 / n:7.3f}°{exact + plain_err[-1]:12.5f}{plain_err[-1]:10.5f}{exact + sweep_err[-1]:11.5f}"
           f"{sweep_err[-1]:11.1e}")
 r_plain, r_sweep = np.divide(plain_err[:-1], plain_err[1:]), np.divide(sweep_err[:-1], sweep_err[1:])
@@ -367,7 +361,7 @@ print(f"\nplain 2° grid + the missed half-jumps: {plain + missed / (2 * math.pi
 # The last line says the same thing once more: the sweep's average is the plain grid's plus exactly
 # the two missed half-jumps, and what is left (the first row of the sweep's error column) is the
 # ordinary $h^2$ error of the trapezoidal rule. **Lesson: an average or an energy taken from a
-# torque curve with jumps needs samples on both sides of each jump** — `sweep` puts them there for
+# torque curve with jumps needs samples on both sides of each jump** — `gk.sweep` puts them there for
 # every load that switches on or off; on a plain grid a finer step helps only slowly.
 #
 # ### Input power
@@ -406,7 +400,7 @@ print(f"largest |power sum| = {abs(residual).max():.1e} W  (largest |P| = {abs(c
 # A pin or a bearing is sized by the **largest** force it carries, and the direction matters too
 # (where a bushing wears, where a housing needs material). Söylemez shows the joint forces of the
 # cutter as **polar plots**: each force is drawn as a vector from the origin, and the curve is the
-# path of its tip over the cycle. `draw.draw_polar_forces` draws them from `cycle.polar(name)` and
+# path of its tip over the cycle. `gk.draw.draw_polar_forces` draws them from `cycle.polar(name)` and
 # marks each peak.
 #
 # Forces named as in the README: $\vec F_{12}$ is the frame's force on the crank at the bearing
@@ -414,7 +408,7 @@ print(f"largest |power sum| = {abs(residual).max():.1e} W  (largest |P| = {abs(c
 # $B$, $\vec F_{14}$ the frame's on the rocker at $B_0$.
 
 # %%
-d = draw.draw_polar_forces(cyc)
+d = gk.draw.draw_polar_forces(cyc)
 d.figure
 
 # %% [markdown]
@@ -432,7 +426,7 @@ print(f"largest |F12 − F23| over the cycle: {abs(r['F12'] - r['F23']).max():.0
 # 10 times finer, to see how much sampling can miss:
 
 # %%
-fine = sweep(p, 1800)
+fine = gk.sweep(p, 1800)
 pk_fine = fine.peaks()
 print(f"{'':4}{'peak |F| (2°)':>15}{'at θ12':>8}{'peak |F| (0.2°)':>17}{'at θ12':>8}{'in the cut?':>13}"
       f"{'largest in the cut':>22}")
@@ -475,21 +469,21 @@ print("peaks without the cut = peaks with it:", {n: f"{v.value:.0f} N" for n, v 
 S = cyc.shaking_force()
 M = cyc.shaking_moment()
 S_check = sum(r.inertia(j).F for j in mech.moving)
-M_check = sum(cross(kin.G(j), r.inertia(j).F) + r.inertia(j).T for j in mech.moving)
+M_check = sum(gk.cross(kin.G(j), r.inertia(j).F) + r.inertia(j).T for j in mech.moving)
 for load in mech.loads:
     act = load.active.mask(cyc.q)
     S_check = S_check + np.where(act[:, None], load.force, 0.0)
-    M_check = M_check + np.where(act, cross(kin.position(load.link, load.point), load.force), 0.0)
+    M_check = M_check + np.where(act, gk.cross(kin.position(load.link, load.point), load.force), 0.0)
 print(f"cycle.shaking_force() − the sum above: at most {abs(S - S_check).max():.0e} N;"
       f"  cycle.shaking_moment() − the sum above: at most {abs(M - M_check).max():.0e} N·m")
 
 size_S = np.hypot(S[:, 0], S[:, 1])
 iS, iM = int(np.argmax(size_S)), int(np.argmax(abs(M)))
-couple = cross(kin.position(3, "C") - kin.position(4, "C"), Fc3)
+couple = gk.cross(kin.position(3, "C") - kin.position(4, "C"), Fc3)
 print(f"largest shaking force  = {size_S[iS]:.0f} N at θ12 = {deg(cyc.q[iS]):g}°  ({show(S[iS])})")
 print(f"largest shaking moment = {M[iM]:.0f} N·m at θ12 = {deg(cyc.q[iM]):g}°")
 print(f"moment of the cutting pair during the cut: {couple[on].min():.1f} … {couple[on].max():.1f} N·m")
-shaking_fig = draw.draw_shaking(cyc)
+shaking_fig = gk.draw.draw_shaking(cyc)
 shaking_fig
 
 # %% [markdown]
@@ -547,23 +541,22 @@ fig
 #
 # ## 8. The interactive explorer
 #
-# `explore(problem)` builds a small app: a slider for the crank angle in whole degrees (with a box
+# `gk.explore(problem)` builds a small app: a slider for the crank angle in whole degrees (with a box
 # beside it to type one in), a box for the speed, and one picture with the mechanism, each link's
 # free body, the force polygons of the graphical construction, and the torque curve with a marker
 # at the current angle. Run the notebook in Jupyter and drag the slider — through the cut, watch
 # the cutting forces appear in the free bodies of links 3 and 4 and the polygons change shape.
 
 # %%
-from graphkin.widgets import explore
 
-ex = explore(p)
+ex = gk.explore(p)
 ex
 
 # %% [markdown]
 # The explorer can be driven from code too (that is how the checks at the end test it). Setting
 # the slider redraws everything; then `ex.construction` is the graphical solution it drew,
 # `ex.analytical` the matrix solution at the same position, and `ex.cycle` the sweep behind its
-# torque curve (`sweep(p, 360)`: 360 positions 1° apart, and the four at ±ε). All must agree with
+# torque curve (`gk.sweep(p, 360)`: 360 positions 1° apart, and the four at ±ε). All must agree with
 # each other and with our sweep. The cell sets the speed as well as the angles: what it prints
 # depends on nothing done with the explorer before it.
 
@@ -597,13 +590,11 @@ print(f"{len(ex.timings)} redraws, the last in {ex.timings[-1] * 1e3:.0f} ms")
 # Two exercises on the strip cutter, with **your own numbers**: every student id gets its own
 # speed, cutting force and crank angle, the same each time you run the notebook. Type the id your
 # teacher gave you between the quotes below, in place of `"your-id"`, and run the cells from here.
-# You can answer in the boxes and press **Check**, or in code with `exercises.check`. Either way the
+# You can answer in the boxes and press **Check**, or in code with `gk.exercises.check`. Either way the
 # grader reads numbers with their units as you would write them (`"120.5 N*m"`, `"120.5 N·m CCW"`,
 # `"35 deg"`) and, when an answer is off, tells you what kind of slip it looks like.
 
 # %%
-from graphkin import exercises
-from graphkin.widgets import exercise
 
 student = "your-id"  # ← type your own id here
 
@@ -614,37 +605,37 @@ student = "your-id"  # ← type your own id here
 # questions, and a box for each answer:
 
 # %%
-exercise("torque_curve", student)
+gk.exercise("torque_curve", student)
 
 # %% [markdown]
-# `exercises.variant(name, student).problem` is your machine as a `Problem`, just like `p`. Sweep it
-# at 1° steps, `sweep(my_cutter, 360)`, and read off what the questions ask with the tools of
+# `gk.exercises.variant(name, student).problem` is your machine as a `Problem`, just like `p`. Sweep it
+# at 1° steps, `gk.sweep(my_cutter, 360)`, and read off what the questions ask with the tools of
 # sections 3–5 (`peaks()`, `average`). Then type your answers in the boxes above, or fill them in
 # here and run the cell:
 
 # %%
-my_cutter = exercises.variant("torque_curve", student).problem
+my_cutter = gk.exercises.variant("torque_curve", student).problem
 # your work here: sweep my_cutter at 1° steps, then its peaks and its average
 answers = {"T_peak": "", "T_peak_at": "", "T_low": "", "T_avg": "", "F23_peak": ""}  # e.g. "123.4 N*m", "56 deg"
-print(exercises.check("torque_curve", student, answers))
+print(gk.exercises.check("torque_curve", student, answers))
 
 # %% [markdown]
 # ### What the feedback looks like
 #
 # A made-up student, `"example"`, found the size of the largest torque but gave it the wrong sense
 # (a minus sign: clockwise), got the average right, and left the other boxes empty. Their correct
-# answers come from `exercises.key`, the teacher's answer sheet (values in SI) — for another id than
+# answers come from `gk.exercises.key`, the teacher's answer sheet (values in SI) — for another id than
 # yours, so that nothing is given away:
 
 # %%
 demo = "example"
-key = {q["id"]: q["answer"]["si"] for q in exercises.key("torque_curve", demo)["questions"]}
+key = {q["id"]: q["answer"]["si"] for q in gk.exercises.key("torque_curve", demo)["questions"]}
 slipped = {"T_peak": f"{-key['T_peak']:.4g} N*m", "T_avg": f"{key['T_avg']:.4g} N*m"}  # T_peak: the wrong sense
-print(exercises.check("torque_curve", demo, slipped))
+print(gk.exercises.check("torque_curve", demo, slipped))
 
 # %% [markdown]
 # A slip earns part of the points (a sign slip, half) and says what to look at; a wrong answer earns
-# nothing. `exercises.grade(...)` gives the same report as plain data (score, and per question the
+# nothing. `gk.exercises.grade(...)` gives the same report as plain data (score, and per question the
 # verdict, the slip and the feedback), for your own records.
 #
 # ### Exercise 2: the forces during your cut
@@ -654,13 +645,13 @@ print(exercises.check("torque_curve", demo, slipped))
 # (`.solve()` solves your problem at your angle), or graphically as in lesson 02.
 
 # %%
-exercise("strip_cutter_cut", student)
+gk.exercise("strip_cutter_cut", student)
 
 # %%
-my_cut = exercises.variant("strip_cutter_cut", student).problem
+my_cut = gk.exercises.variant("strip_cutter_cut", student).problem
 # your work here: my_cut.solve() at your θ12, then read F23, F14 and T12
 answers = {"F23": "", "F14": "", "T12": ""}  # e.g. "1234 N ∠ -56.7°", "789 N", "12.3 N*m CW"
-print(exercises.check("strip_cutter_cut", student, answers))
+print(gk.exercises.check("strip_cutter_cut", student, answers))
 
 # %% [markdown]
 # ### More to try: change the speed and the cutting range
@@ -680,10 +671,10 @@ print(exercises.check("strip_cutter_cut", student, answers))
 
 # %%
 speed = 450  # edit here: the crank speed [rpm]
-text = catalog.path("strip_cutter").read_text()
+text = gk.catalog.path("strip_cutter").read_text()
 text = text.replace('from = "124 deg"', 'from = "124 deg"')  # edit here: the start of the cut
-mine = parse_problem(text, file="my strip cutter").at_speed(speed * RPM)
-cm = sweep(mine)
+mine = gk.parse_problem(text, file="my strip cutter").at_speed(speed * RPM)
+cm = gk.sweep(mine)
 w_mine = float(mine.q_dot[0])
 
 # The prediction: inertia part ∝ ω², cutting part unchanged.
@@ -706,7 +697,7 @@ for name, peak in cm.peaks().forces.items():
 
 fig = Figure(figsize=(6.4, 4.2))
 ax = fig.add_subplot()
-draw.draw_torque_curve(cm, ax=ax)
+gk.draw.draw_torque_curve(cm, ax=ax)
 ax.plot(deg(cyc.q), cyc.torque, color="0.6", lw=1.0, ls="--", label="original: 900 rpm, cut 124°–156°")
 ax.legend(fontsize=8)
 fig
@@ -721,7 +712,7 @@ fig
 # * set the speed to 100 rpm (a slow cutter): what is left of the torque curve? Compare the peak
 #   joint forces with the 2000 N cutting force;
 # * in the explorer, type a new speed into the speed box and watch the torque curve redraw;
-# * `draw.draw_cycle(cyc, Cs=0.05)` sizes a flywheel that keeps the speed within 5 % (Norton §11.11):
+# * `gk.draw.draw_cycle(cyc, Cs=0.05)` sizes a flywheel that keeps the speed within 5 % (Norton §11.11):
 #   compare the energy it must store with the 50 J done on the strip each turn.
 
 # %% [markdown]
@@ -837,39 +828,39 @@ for a in (140.0, 40.0, 130.0):
         assert np.allclose(ex.construction[name], r[name][i], rtol=1e-9, atol=1e-9)
     assert np.allclose(ex.marker.get_data(), [[a], [analytical]])  # the marker sits on the curve
 ex.slider.value = 140.0
-assert ex.cycle.n == 360 + 4 and math.isclose(ex.cycle.average, sweep(p, 360).average)
+assert ex.cycle.n == 360 + 4 and math.isclose(ex.cycle.average, gk.sweep(p, 360).average)
 
 # %% [markdown]
 # ### 9. Your turn
 
 # %%
 # The feedback example: a sign slip earns half the points, a right answer all, an empty box none.
-report = exercises.grade("torque_curve", demo, slipped)
+report = gk.exercises.grade("torque_curve", demo, slipped)
 verdict = {q["id"]: (q["verdict"], q["slip"], q["score"] / q["max"]) for q in report["questions"]}
 assert verdict["T_peak"] == ("slip", "sign", 0.5) and verdict["T_avg"] == ("correct", None, 1.0)
 assert all(verdict[q][0] == "missing" for q in ("T_peak_at", "T_low", "F23_peak"))
-assert exercises.check("torque_curve", demo, slipped).splitlines()[0].endswith(f"{report['score']:g} / 5 points")
+assert gk.exercises.check("torque_curve", demo, slipped).splitlines()[0].endswith(f"{report['score']:g} / 5 points")
 
 # The lesson's own tools give the answer key (for the id the notebook runs with).
-key1 = {q["id"]: q["answer"]["si"] for q in exercises.key("torque_curve", student)["questions"]}
-mine_cycle = sweep(my_cutter, 360)
+key1 = {q["id"]: q["answer"]["si"] for q in gk.exercises.key("torque_curve", student)["questions"]}
+mine_cycle = gk.sweep(my_cutter, 360)
 pk_mine = mine_cycle.peaks()
 assert math.isclose(pk_mine.effort_max.value, key1["T_peak"], rel_tol=1e-9)
 assert math.isclose(pk_mine.effort_max.at, key1["T_peak_at"], rel_tol=1e-9)
 assert math.isclose(pk_mine.effort_min.value, key1["T_low"], rel_tol=1e-9)
 assert math.isclose(mine_cycle.average, key1["T_avg"], rel_tol=1e-9)
 assert math.isclose(pk_mine.forces["F23"].value, key1["F23_peak"], rel_tol=1e-9)
-key2 = {q["id"]: q["answer"]["si"] for q in exercises.key("strip_cutter_cut", student)["questions"]}
+key2 = {q["id"]: q["answer"]["si"] for q in gk.exercises.key("strip_cutter_cut", student)["questions"]}
 r_cut = my_cut.solve()
 assert np.allclose(r_cut["F23"][0], key2["F23"], rtol=1e-9, atol=0)
 assert math.isclose(np.linalg.norm(r_cut["F14"][0]), key2["F14"], rel_tol=1e-9)
 assert math.isclose(r_cut["T12"][0], key2["T12"], rel_tol=1e-9)
 
 # The answer boxes: type an id, fill in the key's answers as it prints them, press Check; then a slip.
-box = exercise("torque_curve", "")
+box = gk.exercise("torque_curve", "")
 box.student.value = demo
-assert all(g["shown"] in box.data.value for g in exercises.make("torque_curve", demo)["data"])
-for q in exercises.key("torque_curve", demo)["questions"]:
+assert all(g["shown"] in box.data.value for g in gk.exercises.make("torque_curve", demo)["data"])
+for q in gk.exercises.key("torque_curve", demo)["questions"]:
     box.answers[q["id"]].value = q["answer"]["text"]
 assert box.check()["score"] == 5
 box.answers["T_peak"].value = slipped["T_peak"]

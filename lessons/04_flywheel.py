@@ -50,11 +50,7 @@ import numpy as np
 from IPython.display import Image
 from matplotlib.figure import Figure
 
-from graphkin import catalog, draw
-from graphkin.cycle import joint_force_index, size_flywheel, static_problem, sweep
-from graphkin.model import mass
-from graphkin.problem import parse_problem
-from graphkin.analytical.matrix import assemble
+import graphkin as gk
 
 np.set_printoptions(precision=4, suppress=True)
 TURN = 2 * math.pi
@@ -136,7 +132,7 @@ print(f"I_s = E / (C_s ω²) = {E_book:.2f} / ({Cs_book} × {omega_book:g}²) = 
 #
 # ## 2. The energy table on a curve you can integrate by hand
 #
-# `size_flywheel(theta, T, omega_avg=..., Cs=...)` does Norton's procedure on any sampled torque
+# `gk.size_flywheel(theta, T, omega_avg=..., Cs=...)` does Norton's procedure on any sampled torque
 # curve: trapezoidal average, crossings by linear interpolation, pulse areas by the trapezoidal
 # rule, the table, $E$ and $I_s$. Before we trust it on a linkage, we give it a curve whose answer
 # we know exactly (our own numbers, not a book's):
@@ -152,7 +148,7 @@ print(f"I_s = E / (C_s ω²) = {E_book:.2f} / ({Cs_book} × {omega_book:g}²) = 
 T0, a, b = 10.0, 20.0, 30.0
 n = 720
 theta = (np.arange(n) + 0.5) * TURN / n  # no sample falls exactly on a crossing
-f_hand = size_flywheel(theta, T0 + a * np.cos(theta) + b * np.sin(2 * theta), omega_avg=100.0, Cs=0.05)
+f_hand = gk.size_flywheel(theta, T0 + a * np.cos(theta) + b * np.sin(2 * theta), omega_avg=100.0, Cs=0.05)
 
 phi = math.asin(-a / (2 * b))  # −19.47°, where sin θ = −a/2b
 crossings = np.array([math.pi / 2, math.pi - phi, 3 * math.pi / 2, TURN + phi])  # 90°, 199.47°, 270°, 340.53°
@@ -174,14 +170,14 @@ print(f"E = {f_hand.E:.4f} J (by hand {E_exact:.4f} J = 160/3 J),  I_s = {f_hand
 # The worked machine of this lesson is the four-bar strip cutter of lesson 02 (Söylemez §6.4.1):
 # crank $A_0A$ at a constant 900 rpm, and a cutting force of 2000 N on the two blades at $C$ while
 # $124° < \theta_{12} < 156°$. The catalog file samples the turn every 2°, as the book's MathCad
-# solution does. `sweep(problem)` solves all of them at once — and four more, either side of 124°
+# solution does. `gk.sweep(problem)` solves all of them at once — and four more, either side of 124°
 # and of 156°, where the cut switches on and off (see below) — and returns a `Cycle`.
 
 # %%
-p = catalog.load("strip_cutter")
+p = gk.load("strip_cutter")
 print(p.title)
 print(p.notes)
-c = sweep(p)
+c = gk.sweep(p)
 omega = float(c.q_dot[0])
 peaks = c.peaks()
 print(f"{c.n} positions ({len(p.q)} from the file, 4 at the jumps), closed turn: {c.closed},"
@@ -221,17 +217,17 @@ print(f"T_avg = −W_cut/2π = {T_exact:.4f} N·m;   the sweep's trapezoidal ave
       f"  ({(c.average - T_exact) / T_exact:+.3%})")
 
 # %% [markdown]
-# The two agree to about 0.01 % — because `sweep` took care at the jumps. The cutting force
+# The two agree to about 0.01 % — because `gk.sweep` took care at the jumps. The cutting force
 # switches on at 124° and off at 156°, and the torque jumps there (lesson 03); the trapezoidal
 # rule assumes the curve is straight between samples. On the **plain** 2° grid of the file, the
 # samples at 124° and 156° have no cut (the interval is open), each jump is spread over a 2° step,
-# and the rule is only **first order**: half the step, half the error. `sweep` adds a sample
+# and the rule is only **first order**: half the step, half the error. `gk.sweep` adds a sample
 # $\varepsilon = 10^{-9}$ rad either side of each switching angle — 184 positions instead of 180 —
 # so each jump falls in a step at most $2\varepsilon$ wide (here $\varepsilon$, beside the file's own
 # sample at 124° or 156°), where the rule can miss no more than $\varepsilon$ times the jump. Every
 # other step lies on one smooth piece of the curve, and the rule is **second order** again: half
 # the step, a quarter of the error. We compare the two on grids of $n$ equally spaced
-# angles (`sweep(p, n)` adds its four samples to those), for the average and for the largest
+# angles (`gk.sweep(p, n)` adds its four samples to those), for the average and for the largest
 # energy swing $E$ that sizes the flywheel ($C_s = 0.05$; section 4 explains $E$).
 
 # %%
@@ -245,8 +241,8 @@ ns = (180, 360, 720, 1440, 2880, 5760)
 err_plain, err_sweep, E_plain, E_sweep = [], [], [], []
 for m in ns:
     grid = np.linspace(0.0, TURN, m, endpoint=False)
-    fp = size_flywheel(grid, p.solve(at=grid).effort, omega_avg=omega, Cs=0.05)  # the plain grid
-    fs = sweep(p, m).flywheel(0.05)  # the same grid and the four samples at the jumps
+    fp = gk.size_flywheel(grid, p.solve(at=grid).effort, omega_avg=omega, Cs=0.05)  # the plain grid
+    fs = gk.sweep(p, m).flywheel(0.05)  # the same grid and the four samples at the jumps
     err_plain.append(fp.T_avg - T_exact)
     err_sweep.append(fs.T_avg - T_exact)
     E_plain.append(fp.E)
@@ -279,7 +275,7 @@ print(f"E at 2°, relative to the finest sweep: plain {E_plain[0] / E_sweep[-1] 
 # ## 4. Crossings, pulses and the energy table
 #
 # `c.flywheel(Cs)` sizes a flywheel for the cycle's torque at its own ω (it calls
-# `size_flywheel`). We take $C_s = 0.05$, Norton's upper value. The table has Norton's columns:
+# `gk.size_flywheel`). We take $C_s = 0.05$, Norton's upper value. The table has Norton's columns:
 # the pulse from one crossing to the next, its area $\Delta E = \int (T - T_{avg})\,d\theta$, and
 # the running sum. Positive areas are energy the linkage takes from the shaft (the shaft slows);
 # negative areas are energy it gives back.
@@ -327,8 +323,8 @@ for first in range(len(f.areas)):
 
 # %%
 fig = Figure(figsize=(13, 4.6))
-draw.draw_torque_curve(c, flywheel=f, ax=fig.add_subplot(1, 2, 1))
-draw.draw_energy(f, ax=fig.add_subplot(1, 2, 2))
+gk.draw.draw_torque_curve(c, flywheel=f, ax=fig.add_subplot(1, 2, 1))
+gk.draw.draw_energy(f, ax=fig.add_subplot(1, 2, 2))
 fig.subplots_adjust(wspace=0.25)
 fig
 
@@ -364,7 +360,7 @@ print(f"E from the kinetic energy:    {E_energy:.3f} J   (fastest at {math.degre
 print(f"E from the 2° torque samples: {f.E:.3f} J   ({(f.E - E_energy) / E_energy:+.3%};"
       f" the plain 2° grid: {(E_plain[0] - E_energy) / E_energy:+.3%})")
 
-dense = sweep(p, 11520).flywheel(Cs)  # and graphkin's own procedure on a 1/32° grid
+dense = gk.sweep(p, 11520).flywheel(Cs)  # and graphkin's own procedure on a 1/32° grid
 print(f"E from the 1/32° torque samples: {dense.E:.3f} J   ({(dense.E - E_energy) / E_energy:+.3%})")
 
 # %% [markdown]
@@ -386,11 +382,11 @@ print(f"I_s = E / (C_s ω_avg²) = {f.I_s:.4f} kg·m²")
 # %% [markdown]
 # For the **same torque curve**, halving $C_s$ doubles $I_s$, and running the shaft at half the
 # speed needs four times the inertia (the flywheel stores $\tfrac12 I\omega^2$). We check this with
-# `size_flywheel` on the same samples:
+# `gk.size_flywheel` on the same samples:
 
 # %%
-f_half_Cs = size_flywheel(f.theta, f.T, omega_avg=f.omega_avg, Cs=Cs / 2)
-f_half_w = size_flywheel(f.theta, f.T, Cs=Cs, omega_avg=f.omega_avg / 2)
+f_half_Cs = gk.size_flywheel(f.theta, f.T, omega_avg=f.omega_avg, Cs=Cs / 2)
+f_half_w = gk.size_flywheel(f.theta, f.T, Cs=Cs, omega_avg=f.omega_avg / 2)
 print(f"C_s = {Cs / 2}: I_s = {f_half_Cs.I_s:.4f} kg·m²  (× {f_half_Cs.I_s / f.I_s:.4f})")
 print(f"ω/2:         I_s = {f_half_w.I_s:.4f} kg·m²  (× {f_half_w.I_s / f.I_s:.4f})")
 
@@ -423,8 +419,8 @@ print(f"cast-iron rim, R = {rim.mean_radius * 1e3:.0f} mm, t = {rim.thickness * 
 
 # %%
 m_hand = STEEL * math.pi * disk.radius**2 * disk.thickness
-ring = mass.hollow_cylinder(rim.inner_radius, rim.outer_radius, rim.thickness, CAST_IRON)
-print(f"m r²/2 = {0.5 * m_hand * disk.radius**2:.6f},  mass.disk: {mass.disk(disk.radius, disk.thickness, STEEL).I_G:.6f},"
+ring = gk.mass.hollow_cylinder(rim.inner_radius, rim.outer_radius, rim.thickness, CAST_IRON)
+print(f"m r²/2 = {0.5 * m_hand * disk.radius**2:.6f},  mass.disk: {gk.mass.disk(disk.radius, disk.thickness, STEEL).I_G:.6f},"
       f"  mass.hollow_cylinder: {ring.I_G:.6f},  I_s = {f.I_s:.6f} kg·m²")
 
 # %% [markdown]
@@ -560,12 +556,12 @@ fig
 # will be worse at speed). They suggest keeping it below about 2. Where the input can no longer
 # move the linkage (an *immovable* position) the index grows without bound.
 #
-# `joint_force_index(problem)` sets every mass and moment of inertia to zero (`static_problem`),
+# `gk.joint_force_index(problem)` sets every mass and moment of inertia to zero (`gk.static_problem`),
 # keeps the cutting forces, and divides the largest joint force by the largest external force
 # acting there (2000 N during the cut). Outside the cut there is no load and the index is undefined.
 
 # %%
-jfi = joint_force_index(p)
+jfi = gk.joint_force_index(p)
 defined = np.isfinite(jfi.index)
 print(f"index defined at {defined.sum()} positions (the cut), undefined at {len(jfi.unloaded)} (no load)")
 print(f"{'θ12':>7}{'JFI':>8}{'largest':>9}")
@@ -584,8 +580,8 @@ print(f"immovable positions: {list(jfi.immovable) or 'none'}")
 # cut upwards, $\vec F_{34} = \vec F_{23} + \vec F_{c3}$.
 
 # %%
-static = static_problem(p)
-system = assemble(static.solve(at=[jfi.peak.at]))
+static = gk.static_problem(p)
+system = gk.assemble(static.solve(at=[jfi.peak.at]))
 x = dict(zip(system.unknowns, np.linalg.solve(system.A[0], system.b[0])))
 pins = {name: math.hypot(x[name + "x"], x[name + "y"]) for name in ("F12", "F23", "F34", "F14")}
 print({name: round(v, 2) for name, v in pins.items()}, "N")
@@ -602,7 +598,7 @@ for name, pk in peaks.forces.items():
     print(f"{name}: peak {pk.value:7.1f} N = {pk.value / 2000:.2f} × the cutting force, at θ12 = {math.degrees(pk.at):.0f}°")
 
 fig = Figure(figsize=(6.4, 4.2))
-draw.draw_joint_force_index(jfi, ax=fig.add_subplot())
+gk.draw.draw_joint_force_index(jfi, ax=fig.add_subplot())
 fig
 
 # %% [markdown]
@@ -619,11 +615,11 @@ fig
 # immovable.
 
 # %%
-text = catalog.path("strip_cutter").read_text()
+text = gk.catalog.path("strip_cutter").read_text()
 crank = 'A = ["85 mm", "0 mm"]'
-long_crank = parse_problem(text.replace(crank, 'A = ["245 mm", "0 mm"]'), file="strip cutter, 245 mm crank")
-jfi_long = joint_force_index(long_crank)
-long_cycle = sweep(long_crank)
+long_crank = gk.parse_problem(text.replace(crank, 'A = ["245 mm", "0 mm"]'), file="strip cutter, 245 mm crank")
+jfi_long = gk.joint_force_index(long_crank)
+long_cycle = gk.sweep(long_crank)
 mu = np.degrees(long_cycle.transmission_angle())
 ok = np.isfinite(jfi_long.index)
 print(f"{'θ12':>7}{'JFI':>8}{'transmission angle':>20}")
@@ -649,7 +645,7 @@ q_long = jfi_long.q
 # %% [markdown]
 # ## 9. The interactive explorer
 #
-# `explore(problem)` puts the whole analysis behind two controls: a **slider** for the crank angle
+# `gk.explore(problem)` puts the whole analysis behind two controls: a **slider** for the crank angle
 # and a **speed** box. It draws the mechanism, each link's free body, the force polygons of the
 # graphical construction (lesson 02) and the driving torque over the cycle with a marker at the
 # current angle. Move the slider, or type another speed (the torque curve is re-swept).
@@ -657,23 +653,22 @@ q_long = jfi_long.q
 # section is what it showed when the notebook ran.)
 
 # %%
-from graphkin.widgets import explore
 
-ex = explore(p)
+ex = gk.explore(p)
 ex
 
 # %% [markdown]
 # A widget is code like any other, so we can drive it from a cell and check what it shows. First
 # the speed: 600 rpm. The explorer takes the problem at the new speed (`p.at_speed(ω)`, the same
 # problem at another constant crank speed) and re-sweeps the torque curve: `ex.cycle` is
-# `sweep(problem, ex.n)`, 360 angles and the four samples at the jumps. We build the same problem at
+# `gk.sweep(problem, ex.n)`, 360 angles and the four samples at the jumps. We build the same problem at
 # 600 rpm independently — by editing the speed line of the problem file — and sweep it.
 
 # %%
 ex.speed.value = 600
 speed_line = 'omega = "900 rpm"'
-p600 = parse_problem(text.replace(speed_line, 'omega = "600 rpm"'), file="strip cutter at 600 rpm")
-c600 = sweep(p600, ex.n)
+p600 = gk.parse_problem(text.replace(speed_line, 'omega = "600 rpm"'), file="strip cutter at 600 rpm")
+c600 = gk.sweep(p600, ex.n)
 print(f"explorer: {ex.cycle.n} positions at {ex.cycle.q_dot[0] / RPM:.1f} rpm;"
       f" largest difference from the independent sweep {np.abs(ex.cycle.torque - c600.torque).max():.1e} N·m")
 
@@ -688,7 +683,7 @@ print(f"explorer: {ex.cycle.n} positions at {ex.cycle.q_dot[0] / RPM:.1f} rpm;"
 # $I_s$ do.
 
 # %%
-c900 = sweep(p, ex.n)
+c900 = gk.sweep(p, ex.n)
 T_static = static.solve(at=c900.q).effort
 predicted = T_static + (600 / 900) ** 2 * (c900.torque - T_static)
 
@@ -751,13 +746,11 @@ Image(data=ex.image.value)  # exactly what the widget shows now
 # Two exercises on the strip cutter, with **your own numbers**: every student id gets its own
 # speed, coefficient of speed fluctuation and crank length, the same each time you run the notebook.
 # Type the id your teacher gave you between the quotes below, in place of `"your-id"`, and run the
-# cells from here. Answer in the boxes and press **Check**, or in code with `exercises.check`: the
+# cells from here. Answer in the boxes and press **Check**, or in code with `gk.exercises.check`: the
 # grader reads numbers with their units as you would write them (`"250 J"`, `"0.75 kg*m^2"`,
 # `"150 deg"`) and, when an answer is off, tells you what kind of slip it looks like.
 
 # %%
-from graphkin import exercises
-from graphkin.widgets import exercise
 
 student = "your-id"  # ← type your own id here
 
@@ -767,51 +760,51 @@ student = "your-id"  # ← type your own id here
 # Your cutter turns at its own average speed, and must keep its own $C_s$:
 
 # %%
-exercise("flywheel", student)
+gk.exercise("flywheel", student)
 
 # %% [markdown]
-# `exercises.variant(name, student).problem` is your machine as a `Problem`, just like `p`. Sweep it
-# at 1° steps, `sweep(my_cutter, 360)`, and size the flywheel as in sections 4–6 with **your** $C_s$
+# `gk.exercises.variant(name, student).problem` is your machine as a `Problem`, just like `p`. Sweep it
+# at 1° steps, `gk.sweep(my_cutter, 360)`, and size the flywheel as in sections 4–6 with **your** $C_s$
 # (it is in your data, not in the problem). Then type your answers in the boxes above, or fill them
 # in here and run the cell:
 
 # %%
-my_cutter = exercises.variant("flywheel", student).problem
+my_cutter = gk.exercises.variant("flywheel", student).problem
 # your work here: sweep my_cutter at 1° steps, then .flywheel(your C_s)
 answers = {"E": "", "I_s": ""}  # e.g. "123.4 J", "0.123 kg*m^2"
-print(exercises.check("flywheel", student, answers))
+print(gk.exercises.check("flywheel", student, answers))
 
 # %% [markdown]
 # ### What the feedback looks like
 #
 # A made-up student, `"example"`, worked out $E$ in kJ but wrote J after it (a factor of 1000), and
-# got $I_s$ right. Their correct answers come from `exercises.key`, the teacher's answer sheet
+# got $I_s$ right. Their correct answers come from `gk.exercises.key`, the teacher's answer sheet
 # (values in SI) — for another id than yours, so that nothing is given away:
 
 # %%
 demo = "example"
-key = {q["id"]: q["answer"]["si"] for q in exercises.key("flywheel", demo)["questions"]}
+key = {q["id"]: q["answer"]["si"] for q in gk.exercises.key("flywheel", demo)["questions"]}
 slipped = {"E": f"{key['E'] / 1000:.4g} J", "I_s": f"{key['I_s']:.4g} kg*m^2"}  # E: kJ written as J
-print(exercises.check("flywheel", demo, slipped))
+print(gk.exercises.check("flywheel", demo, slipped))
 
 # %% [markdown]
 # A slip earns part of the points (a power of ten, half) and says what to look at; a wrong answer
-# earns nothing. `exercises.grade(...)` gives the same report as plain data (score, and per question
+# earns nothing. `gk.exercises.grade(...)` gives the same report as plain data (score, and per question
 # the verdict, the slip and the feedback), for your own records.
 #
 # ### Exercise 2: the joint-force index of your cutter
 #
 # Your cutter has a crank of its own length. Find its joint-force index over the cut as in
-# section 8, at 1° steps: `joint_force_index(my_crank, 360)`.
+# section 8, at 1° steps: `gk.joint_force_index(my_crank, 360)`.
 
 # %%
-exercise("joint_force_index", student)
+gk.exercise("joint_force_index", student)
 
 # %%
-my_crank = exercises.variant("joint_force_index", student).problem
+my_crank = gk.exercises.variant("joint_force_index", student).problem
 # your work here: the joint-force index of my_crank at 1° steps, its peak and where it is
 answers = {"JFI": "", "JFI_at": ""}  # e.g. "1.234", "145 deg"
-print(exercises.check("joint_force_index", student, answers))
+print(gk.exercises.check("joint_force_index", student, answers))
 
 # %% [markdown]
 # ### More to try
@@ -918,7 +911,7 @@ assert math.isclose(f_half_Cs.I_s, 2 * f.I_s, rel_tol=1e-12) and math.isclose(f_
 assert math.isclose(f_half_w.I_s, 4 * f.I_s, rel_tol=1e-12)
 assert math.isclose(disk.mass, m_hand, rel_tol=1e-12)
 assert math.isclose(0.5 * m_hand * disk.radius**2, f.I_s, rel_tol=1e-12)  # I = m r²/2
-assert math.isclose(mass.disk(disk.radius, disk.thickness, STEEL).I_G, f.I_s, rel_tol=1e-12)
+assert math.isclose(gk.mass.disk(disk.radius, disk.thickness, STEEL).I_G, f.I_s, rel_tol=1e-12)
 assert math.isclose(ring.I_G, f.I_s, rel_tol=1e-12) and math.isclose(ring.m, rim.mass, rel_tol=1e-12)
 assert math.isclose(rim.outer_radius - rim.inner_radius, rim.width)
 assert math.isclose(disks[0.1].mass / disks[0.025].mass, 2.0, rel_tol=1e-12)  # 4 × t  →  2 × m
@@ -993,27 +986,27 @@ assert math.isclose(ex.construction.effort, c600.torque[i140], rel_tol=1e-9)
 
 # %%
 # The feedback example: E a factor 1000 off earns half the points, the right I_s all of them.
-report = exercises.grade("flywheel", demo, slipped)
+report = gk.exercises.grade("flywheel", demo, slipped)
 verdict = {q["id"]: (q["verdict"], q["slip"], q["score"] / q["max"]) for q in report["questions"]}
 assert verdict["E"] == ("slip", "power_of_ten", 0.5) and verdict["I_s"] == ("correct", None, 1.0)
-assert exercises.check("flywheel", demo, slipped).splitlines()[0].endswith(f"{report['score']:g} / 2 points")
+assert gk.exercises.check("flywheel", demo, slipped).splitlines()[0].endswith(f"{report['score']:g} / 2 points")
 
 # The lesson's own tools give the answer key (for the id the notebook runs with); C_s comes with the data.
-mine = exercises.variant("flywheel", student)
-assert f"Cs = {mine.Cs:g}" in [g["shown"] for g in exercises.make("flywheel", student)["data"]]
-key1 = {q["id"]: q["answer"]["si"] for q in exercises.key("flywheel", student)["questions"]}
-f_mine = sweep(my_cutter, 360).flywheel(mine.Cs)
+mine = gk.exercises.variant("flywheel", student)
+assert f"Cs = {mine.Cs:g}" in [g["shown"] for g in gk.exercises.make("flywheel", student)["data"]]
+key1 = {q["id"]: q["answer"]["si"] for q in gk.exercises.key("flywheel", student)["questions"]}
+f_mine = gk.sweep(my_cutter, 360).flywheel(mine.Cs)
 assert math.isclose(f_mine.E, key1["E"], rel_tol=1e-9) and math.isclose(f_mine.I_s, key1["I_s"], rel_tol=1e-9)
-key2 = {q["id"]: q["answer"]["si"] for q in exercises.key("joint_force_index", student)["questions"]}
-jfi_mine = joint_force_index(my_crank, 360)
+key2 = {q["id"]: q["answer"]["si"] for q in gk.exercises.key("joint_force_index", student)["questions"]}
+jfi_mine = gk.joint_force_index(my_crank, 360)
 assert math.isclose(jfi_mine.peak.value, key2["JFI"], rel_tol=1e-9)
 assert math.isclose(jfi_mine.peak.at, key2["JFI_at"], rel_tol=1e-9)
 
 # The answer boxes: type an id, fill in the key's answers as it prints them, press Check; then a slip.
-box = exercise("flywheel", "")
+box = gk.exercise("flywheel", "")
 box.student.value = demo
-assert all(g["shown"] in box.data.value for g in exercises.make("flywheel", demo)["data"])
-for q in exercises.key("flywheel", demo)["questions"]:
+assert all(g["shown"] in box.data.value for g in gk.exercises.make("flywheel", demo)["data"])
+for q in gk.exercises.key("flywheel", demo)["questions"]:
     box.answers[q["id"]].value = q["answer"]["text"]
 assert box.check()["score"] == 2
 box.answers["E"].value = slipped["E"]

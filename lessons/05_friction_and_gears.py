@@ -58,21 +58,14 @@ import math
 import numpy as np
 from matplotlib.figure import Figure
 
-from graphkin import catalog, draw
-from graphkin.cycle.sweep import sweep
-from graphkin.geometry import cross
-from graphkin.graphical import construct_forces
-from graphkin.problem import parse_problem
-from graphkin.notation import polar
-from graphkin.analytical.matrix import assemble
-from graphkin.widgets import explore
+import graphkin as gk
 
 np.set_printoptions(precision=4, suppress=True)
 
 
 def show(v, unit="N", digits=4):
     """A plane vector as the books write it: magnitude ∠ angle."""
-    size, angle = polar(v)
+    size, angle = gk.polar(v)
     return f"{size:.{digits}g} {unit} ∠ {angle:.2f}°"
 
 
@@ -84,13 +77,13 @@ def rel(a, b):
 
 def off_line(point, line):
     """Distance [m] of a point from a line of action (a graphkin Line: a point and a unit direction)."""
-    return abs(float(cross(np.subtract(point, line.point), line.direction)))
+    return abs(float(gk.cross(np.subtract(point, line.point), line.direction)))
 
 
 def tilt(F, normal):
     """Angle [deg] between a force and a unit normal, 0…90° (the sense along the normal ignored)."""
     F = np.asarray(F, float)
-    return math.degrees(math.atan2(abs(cross(normal, F)), abs(float(np.dot(F, normal)))))
+    return math.degrees(math.atan2(abs(gk.cross(normal, F)), abs(float(np.dot(F, normal)))))
 
 
 def steps_of(c, kind, link=None):
@@ -100,9 +93,9 @@ def steps_of(c, kind, link=None):
 
 def edited(name, old, new):
     """A catalog problem with one piece of its TOML text replaced, parsed again."""
-    text = catalog.path(name).read_text()
+    text = gk.catalog.path(name).read_text()
     assert text.count(old) == 1, f"{old!r} is not in {name}.toml exactly once"
-    return parse_problem(text.replace(old, new), file=f"{name} with {new}")
+    return gk.parse_problem(text.replace(old, new), file=f"{name} with {new}")
 
 
 # %% [markdown]
@@ -113,7 +106,7 @@ def edited(name, old, new):
 # force $F_P$ = 500 N pushes the slider to the left (−x), and the guide has friction $\mu = 0.2$.
 
 # %%
-p = catalog.load("slider_crank_friction")
+p = gk.load("slider_crank_friction")
 print(p.title)
 print(p.source)
 print(p.notes)
@@ -158,7 +151,7 @@ print(f"friction G14x = {G14[0]:+.3f} N: size μ|N14| = {mu * abs(N14):.3f} N, a
 # %% [markdown]
 # ### The matrix
 #
-# `assemble` writes the three equilibrium equations of every moving link (lesson 01). Compare it
+# `gk.assemble` writes the three equilibrium equations of every moving link (lesson 01). Compare it
 # with the lecture's list of equations:
 #
 # * the pin forces $\vec F_{12}$, $\vec F_{23}$, $\vec F_{34}$ each bring two columns (graphkin names
@@ -172,7 +165,7 @@ print(f"friction G14x = {G14[0]:+.3f} N: size μ|N14| = {mu * abs(N14):.3f} N, a
 #   $C_{14} = 0$. Dropping that row and column gives the lecture's 8 × 8 system.
 
 # %%
-system = assemble(r)
+system = gk.assemble(r)
 print(system.format(0))
 
 # %%
@@ -187,7 +180,7 @@ print(f"numpy's solution: N14 = {sol['N14']:.3f} N, C14 = {sol['C14']:.1e} N·m,
       f"   (graphkin: N14 = {N14:.3f} N, T12 = {r['T12'][0]:.4f} N·m)")
 
 # %% [markdown]
-# `assemble` took $\sigma$ from the answer (that is what the entry above shows). A student does not
+# `gk.assemble` took $\sigma$ from the answer (that is what the entry above shows). A student does not
 # know it in advance, so let us do the **assume-and-check** ourselves: put each sign into the
 # friction entry, solve, and see which assumption the answer confirms.
 
@@ -218,7 +211,7 @@ for s in (+1.0, -1.0):
 # `note` step says the assumption was confirmed.
 
 # %%
-c = construct_forces(k, 0)
+c = gk.construct_forces(k, 0)
 for number, step in enumerate(c.steps, start=1):
     print(f"Step {number:2} [{step.kind}] link {step.link}: {step.caption}")
 
@@ -255,7 +248,7 @@ for name in r.names():
 # bar also gives the drawing scale (1 mm = … N), to redraw it by hand.
 
 # %%
-sheet = draw.draw_solution(c, r)
+sheet = gk.draw.draw_solution(c, r)
 sheet
 
 # %% [markdown]
@@ -267,7 +260,7 @@ at = np.radians(np.arange(0, 360, 30))
 rs = p.solve(at=at)
 worst = 0.0
 for i, th in enumerate(at):
-    ci = construct_forces(rs.kinematics, i)
+    ci = gk.construct_forces(rs.kinematics, i)
     worst = max(worst, max(rel(ci[name], rs[name][i]) for name in rs.names()))
     print(f"θ12 = {math.degrees(th):5.0f}°: N14 = {rs.normal[(1, 4)][i]:8.2f} N, "
           f"T12 = {rs['T12'][i]:8.3f} N·m (analytical), {ci.effort:8.3f} N·m (graphical)")
@@ -286,7 +279,7 @@ p0 = p.with_friction(0.0)
 p0_file = edited("slider_crank_friction", "mu = 0.2", "mu = 0.0")
 
 n = 360
-cyc, cyc0 = sweep(p, n), sweep(p0, n)
+cyc, cyc0 = gk.sweep(p, n), gk.sweep(p0, n)
 
 deg = np.degrees(cyc.q)
 res, res0 = cyc.analysis, cyc0.analysis
@@ -447,12 +440,12 @@ print(f"stroke {stroke * 1e3:.2f} mm; μ max|N| · 2·stroke = {mu * np.abs(N).m
 # %% [markdown]
 # ### The interactive explorer
 #
-# `explore(problem)` shows the mechanism, each link's free body, every force polygon and the torque
+# `gk.explore(problem)` shows the mechanism, each link's free body, every force polygon and the torque
 # curve with a marker. Move the slider (crank angle) or change the speed. In a live notebook, watch
 # $\vec G_{14}$ lean the other way as the crank passes the dead centres near 4° and 188°.
 
 # %%
-ex = explore(p)
+ex = gk.explore(p)
 ex
 
 # %% [markdown]
@@ -479,7 +472,7 @@ for angle in (60.0, 150.0, 240.0, 330.0):
 # %%
 ex.speed.value = 600
 fast = edited("slider_crank_friction", 'omega = "300 rpm"', 'omega = "600 rpm"')
-fast_cycle = sweep(fast, n)
+fast_cycle = gk.sweep(fast, n)
 print(f"at 600 rpm: average T12 = {ex.cycle.average:.4f} N·m (explorer), {fast_cycle.average:.4f} N·m (own sweep)")
 ex.speed.value = 300  # back to the file's speed
 
@@ -493,7 +486,7 @@ ex.speed.value = 300  # back to the file's speed
 # CW rotation). Find the tooth force, the pivot forces and the driving torque $T_{12}$.
 
 # %%
-g = catalog.load("gearset")
+g = gk.load("gearset")
 print(g.title)
 print(g.source)
 print(g.notes)
@@ -551,7 +544,7 @@ for j in (2, 3):
 # moment arms. Six unknowns, six equations.
 
 # %%
-sys_g = assemble(rg)
+sys_g = gk.assemble(rg)
 print(sys_g.format(0))
 
 # %%
@@ -656,7 +649,7 @@ for new in ("14.5 deg", "25 deg"):
 # Gear 2 carries $\vec F_{32}$ and the inertia torque of a gear that speeds up; they reduce to one force, and the
 # driver step balances it.
 # %%
-cg = construct_forces(kg, 0)
+cg = gk.construct_forces(kg, 0)
 for number, step in enumerate(cg.steps, start=1):
     print(f"Step {number} [{step.kind}] link {step.link}: {step.caption}")
 
@@ -693,7 +686,7 @@ for name in rg.names():
     print(f"{name:5}{g_text:>24}{a_text:>24}{rel(gv, av):>11.1e}")
 
 # %%
-draw.draw_solution(cg, rg)
+gk.draw.draw_solution(cg, rg)
 
 # %% [markdown]
 # ### Power balance over a cycle
@@ -708,16 +701,16 @@ draw.draw_solution(cg, rg)
 # that is, power in = power to the load + rate of change of kinetic energy $I_{G2}\alpha_2\omega_2 + I_{G3}\alpha_3\omega_3$.
 
 # %%
-gcyc = sweep(g, 72)
+gcyc = gk.sweep(g, 72)
 ga = gcyc.analysis
-gk = ga.kinematics
+kin_g = ga.kinematics
 P_in = gcyc.power
-P_load = T13 * gk.omega[3]
-dEdt = I2 * gk.alpha[2] * gk.omega[2] + I3 * gk.alpha[3] * gk.omega[3]
+P_load = T13 * kin_g.omega[3]
+dEdt = I2 * kin_g.alpha[2] * kin_g.omega[2] + I3 * kin_g.alpha[3] * kin_g.omega[3]
 print(f"power in {P_in[0]:.3f} W = to the load {-P_load[0]:.3f} W + into kinetic energy {dEdt[0]:.3f} W")
 # The tooth force's power: the velocity of P is the same on both pitch circles.
-vP2 = gk.omega[2][:, None] * np.array([-R32[1], R32[0]])
-vP3 = gk.omega[3][:, None] * np.array([-R23[1], R23[0]])
+vP2 = kin_g.omega[2][:, None] * np.array([-R32[1], R32[0]])
+vP3 = kin_g.omega[3][:, None] * np.array([-R23[1], R23[0]])
 P_teeth = np.sum(ga["F23"] * vP3, axis=1) + np.sum(ga["F32"] * vP2, axis=1)
 print(f"the velocity of P on the two pitch circles differs by at most {np.abs(vP2 - vP3).max():.0e} m/s;"
       f" the two tooth forces take {np.abs(P_teeth).max():.0e} W together")
@@ -730,7 +723,7 @@ print(f"the velocity of P on the two pitch circles differs by at most {np.abs(vP
 
 # %%
 steady = edited("gearset", 'alpha = "50 rad/s^2"', 'alpha = "0 rad/s^2"')
-scyc = sweep(steady, 72)
+scyc = gk.sweep(steady, 72)
 sk = scyc.analysis.kinematics
 W_motor = 2 * math.pi * scyc.average
 dtheta3 = -2 * math.pi * r2 / r3
@@ -746,7 +739,7 @@ print(f"per turn of the gear: motor work {W_motor:.4f} J, work against the load 
 # with our own solve.
 
 # %%
-ex_g = explore(g)
+ex_g = gk.explore(g)
 ex_g
 
 # %%
@@ -779,13 +772,11 @@ for angle in (0.0, 90.0, 200.0):
 # coefficient of friction for the slider-crank, and its own speed, acceleration and load for the
 # gears, the same each time you run the notebook. Type the id your teacher gave you between the
 # quotes below, in place of `"your-id"`, and run the cells from here. Answer in the boxes and press
-# **Check**, or in code with `exercises.check`: the grader reads numbers with their units as you would
+# **Check**, or in code with `gk.exercises.check`: the grader reads numbers with their units as you would
 # write them (`"85.2 N ∠ 61.5°"`, `"20.4 N*m CW"`, `"410 N"`) and, when an answer is off, tells you
 # what kind of slip it looks like.
 
 # %%
-from graphkin import exercises
-from graphkin.widgets import exercise
 
 student = "your-id"  # ← type your own id here
 
@@ -796,36 +787,36 @@ student = "your-id"  # ← type your own id here
 # and coefficient of friction:
 
 # %%
-exercise("slider_crank_friction", student)
+gk.exercise("slider_crank_friction", student)
 
 # %% [markdown]
-# `exercises.variant(name, student).problem` is your machine as a `Problem`, just like `p`; `.solve()`
+# `gk.exercises.variant(name, student).problem` is your machine as a `Problem`, just like `p`; `.solve()`
 # solves it at your angle (section 1), or draw the polygons with the guide reaction tilted by your
 # friction angle. Then type your answers in the boxes above, or fill them in here and run the cell:
 
 # %%
-my_slider = exercises.variant("slider_crank_friction", student).problem
+my_slider = gk.exercises.variant("slider_crank_friction", student).problem
 # your work here: my_slider.solve(), then G14, |F34| and T12
 answers = {"G14": "", "F34": "", "T12": ""}  # e.g. "12.3 N ∠ 45.6°", "123 N", "1.23 N*m CCW"
-print(exercises.check("slider_crank_friction", student, answers))
+print(gk.exercises.check("slider_crank_friction", student, answers))
 
 # %% [markdown]
 # ### What the feedback looks like
 #
 # A made-up student, `"example"`, got the guide force the wrong way round — they gave the force of
 # the slider on the guide, $\vec G_{41} = -\vec G_{14}$ — and the torque right. Their correct answers
-# come from `exercises.key`, the teacher's answer sheet (values in SI) — for another id than yours,
+# come from `gk.exercises.key`, the teacher's answer sheet (values in SI) — for another id than yours,
 # so that nothing is given away:
 
 # %%
 demo = "example"
-key = {q["id"]: q["answer"]["si"] for q in exercises.key("slider_crank_friction", demo)["questions"]}
+key = {q["id"]: q["answer"]["si"] for q in gk.exercises.key("slider_crank_friction", demo)["questions"]}
 slipped = {"G14": show(-np.array(key["G14"])), "T12": f"{key['T12']:.4g} N*m"}  # G14: turned round
-print(exercises.check("slider_crank_friction", demo, slipped))
+print(gk.exercises.check("slider_crank_friction", demo, slipped))
 
 # %% [markdown]
 # A slip earns part of the points (a force turned round, half) and says what to look at; a wrong
-# answer earns nothing. `exercises.grade(...)` gives the same report as plain data (score, and per
+# answer earns nothing. `gk.exercises.grade(...)` gives the same report as plain data (score, and per
 # question the verdict, the slip and the feedback), for your own records.
 #
 # ### Exercise 2: your gear pair
@@ -834,13 +825,13 @@ print(exercises.check("slider_crank_friction", demo, slipped))
 # pinion: the tooth force, the bearing force on the gear and the driving torque.
 
 # %%
-exercise("gear_pair", student)
+gk.exercise("gear_pair", student)
 
 # %%
-my_gears = exercises.variant("gear_pair", student).problem
+my_gears = gk.exercises.variant("gear_pair", student).problem
 # your work here: my_gears.solve(), then |F23|, F12 and T12
 answers = {"F23": "", "F12": "", "T12": ""}  # e.g. "123 N", "123 N ∠ 45.6°", "12.3 N*m CCW"
-print(exercises.check("gear_pair", student, answers))
+print(gk.exercises.check("gear_pair", student, answers))
 
 # %% [markdown]
 # ### More to try
@@ -856,7 +847,7 @@ print(exercises.check("gear_pair", student, answers))
 
 # %%
 for m in (0.0, 0.1, 0.2, 0.4):  # edit here
-    cm = sweep(p.with_friction(m), n)
+    cm = gk.sweep(p.with_friction(m), n)
     if cm.valid.all():
         print(f"μ = {m:4}: work lost to friction per turn {2 * math.pi * (cm.average - cyc0.average):7.3f} J")
     else:
@@ -870,7 +861,7 @@ for m in (0.0, 0.1, 0.2, 0.4):  # edit here
 
 # %%
 mu_big = 3.0  # edit here
-locked = sweep(p.with_friction(mu_big), n)
+locked = gk.sweep(p.with_friction(mu_big), n)
 A_, B_ = locked.analysis.kinematics.position(3, "A"), locked.analysis.kinematics.position(3, "B")
 lean = np.degrees(np.arctan2(np.abs(B_[:, 1] - A_[:, 1]), np.abs(B_[:, 0] - A_[:, 0])))
 limit = 90 - math.degrees(math.atan(mu_big))
@@ -920,7 +911,7 @@ for name in r.names():  # both routes, force by force
     gv, av = c[name], r[name][0]
     assert rel(gv, av) < 1e-9, name
 for i, th in enumerate(at):  # the graphical route at other positions
-    ci = construct_forces(rs.kinematics, i)
+    ci = gk.construct_forces(rs.kinematics, i)
     assert ci.valid and not ci.warnings
 assert worst < 1e-9
 
@@ -931,7 +922,7 @@ assert worst < 1e-9
 assert math.isclose(omega, 300 * math.pi / 30)
 assert cyc.closed and cyc.valid.all() and cyc0.valid.all()
 assert cyc.n == cyc0.n == n  # the gas force acts all the time: no switching samples to add
-assert np.array_equal(sweep(p0_file, n).torque, cyc0.torque)
+assert np.array_equal(gk.sweep(p0_file, n).torque, cyc0.torque)
 assert all(getattr(j, "mu", 0.0) == 0.0 for j in p0.mechanism.joints) and guide.mu == mu > 0  # p is unchanged
 assert np.allclose(V_dead, 0, atol=1e-12)
 assert np.array_equal(np.round(np.degrees(dead)), [4, 188])  # "the dead centres near 4° and 188°"
@@ -980,7 +971,7 @@ for angle in (60.0, 150.0, 240.0, 330.0):
     assert f"{mine['T12'][0]:.5g}" in ex.status.value
 ex.speed.value = 600
 assert np.allclose(ex.cycle.torque, fast_cycle.torque)
-assert np.allclose(sweep(p.at_speed(2 * omega), n).torque, fast_cycle.torque)
+assert np.allclose(gk.sweep(p.at_speed(2 * omega), n).torque, fast_cycle.torque)
 assert math.isclose(ex.analytical["T12"][0], fast.solve(at=[math.radians(330)])["T12"][0])
 ex.speed.value = 300  # back to the file's speed
 
@@ -1063,30 +1054,30 @@ for angle in (0.0, 90.0, 200.0):
 assert round(math.degrees(math.atan(3.0)), 1) == 71.6 and round(90 - math.degrees(math.atan(3.0)), 1) == 18.4
 
 # The feedback example: a force turned round earns half the points, a right torque all, an empty box none.
-report = exercises.grade("slider_crank_friction", demo, slipped)
+report = gk.exercises.grade("slider_crank_friction", demo, slipped)
 verdict = {q["id"]: (q["verdict"], q["slip"], q["score"] / q["max"]) for q in report["questions"]}
 assert verdict["G14"] == ("slip", "sign", 0.5) and verdict["T12"] == ("correct", None, 1.0)
 assert verdict["F34"][0] == "missing"
-assert exercises.check("slider_crank_friction", demo, slipped).splitlines()[0].endswith(
+assert gk.exercises.check("slider_crank_friction", demo, slipped).splitlines()[0].endswith(
     f"{report['score']:g} / 3 points")
 
 # The lesson's own tools give the answer key (for the id the notebook runs with).
-key1 = {q["id"]: q["answer"]["si"] for q in exercises.key("slider_crank_friction", student)["questions"]}
+key1 = {q["id"]: q["answer"]["si"] for q in gk.exercises.key("slider_crank_friction", student)["questions"]}
 r_mine = my_slider.solve()
 assert np.allclose(r_mine["G14"][0], key1["G14"], rtol=1e-9, atol=0)
 assert math.isclose(np.linalg.norm(r_mine["F34"][0]), key1["F34"], rel_tol=1e-9)
 assert math.isclose(r_mine["T12"][0], key1["T12"], rel_tol=1e-9)
-key2 = {q["id"]: q["answer"]["si"] for q in exercises.key("gear_pair", student)["questions"]}
+key2 = {q["id"]: q["answer"]["si"] for q in gk.exercises.key("gear_pair", student)["questions"]}
 r_gears = my_gears.solve()
 assert math.isclose(np.linalg.norm(r_gears["F23"][0]), key2["F23"], rel_tol=1e-9)
 assert np.allclose(r_gears["F12"][0], key2["F12"], rtol=1e-9, atol=0)
 assert math.isclose(r_gears["T12"][0], key2["T12"], rel_tol=1e-9)
 
 # The answer boxes: type an id, fill in the key's answers as it prints them, press Check; then a slip.
-box = exercise("slider_crank_friction", "")
+box = gk.exercise("slider_crank_friction", "")
 box.student.value = demo
-assert all(g["shown"] in box.data.value for g in exercises.make("slider_crank_friction", demo)["data"])
-for q in exercises.key("slider_crank_friction", demo)["questions"]:
+assert all(g["shown"] in box.data.value for g in gk.exercises.make("slider_crank_friction", demo)["data"])
+for q in gk.exercises.key("slider_crank_friction", demo)["questions"]:
     box.answers[q["id"]].value = q["answer"]["text"]
 assert box.check()["score"] == 3
 box.answers["G14"].value = slipped["G14"]

@@ -51,8 +51,7 @@ from pathlib import Path
 import numpy as np
 from matplotlib.figure import Figure
 
-from graphkin import exercises
-from graphkin.errors import ProblemFileError
+import graphkin as gk
 from graphkin.exercises.quantities import value_of
 
 NAME = "strip_cutter_cut"     # the exercise of this lesson
@@ -66,8 +65,8 @@ folder = Path(workdir.name)
 # The catalog has ten exercises, on the problems of lessons 01–05:
 
 # %%
-for name in exercises.names():
-    print(f"{name:<26}{exercises.load(name).title}")
+for name in gk.exercises.names():
+    print(f"{name:<26}{gk.exercises.load(name).title}")
 
 # %% [markdown]
 # Each is a TOML file shipped inside the package. `importlib.resources` finds it whether graphkin
@@ -95,7 +94,7 @@ print(toml_file.read_text(encoding="utf-8"))
 # What the file allows, once read:
 
 # %%
-ex = exercises.load(NAME)
+ex = gk.exercises.load(NAME)
 for v in ex.vary:
     print(f"{v.symbol:>4} ({v.label}): {len(v.values)} values, {v.values[0]}, {v.values[1]}, …, {v.values[-1]}")
 print(f"     {math.prod(len(v.values) for v in ex.vary)} different data sets")
@@ -106,7 +105,7 @@ for q in ex.questions:
 # ### Writing your own
 #
 # Write the TOML in a file, or in a string while you try it out, and read it with
-# `exercises.parse_exercise`. Reading it checks everything: graphkin builds the base problem with
+# `gk.exercises.parse_exercise`. Reading it checks everything: graphkin builds the base problem with
 # the first, middle and last value of every range, so a mistake shows up now, not when the first
 # student asks. Here is a short exercise on the same machine, with the speed from a list, two points
 # for the torque and the rocker force in kN within 2 %:
@@ -141,8 +140,8 @@ unit = "kN"
 tolerance = "2 %"
 ask = "|F34|, the force of the coupler on the rocker at B [kN]"
 """
-mine = exercises.parse_exercise(MY_EXERCISE, id="cutter_speed")
-my_key = exercises.key(mine, "s001", secret=SECRET)
+mine = gk.exercises.parse_exercise(MY_EXERCISE, id="cutter_speed")
+my_key = gk.exercises.key(mine, "s001", secret=SECRET)
 print(my_key["intro"])
 for q in my_key["questions"]:
     print(f"  {q['id']}: {q['ask']}  →  key: {q['answer']['text']}")
@@ -155,8 +154,8 @@ for q in my_key["questions"]:
 
 # %%
 try:
-    exercises.parse_exercise(MY_EXERCISE.replace('tolerance = "2 %"', 'tolerence = "2 %"'), id="cutter_speed")
-except ProblemFileError as err:
+    gk.exercises.parse_exercise(MY_EXERCISE.replace('tolerance = "2 %"', 'tolerence = "2 %"'), id="cutter_speed")
+except gk.ProblemFileError as err:
     typo = str(err)
 print(typo)
 
@@ -178,13 +177,13 @@ with roster.open(encoding="utf-8") as f:
 print(len(students), "students:", ", ".join(students[:5]), "…")
 
 # %% [markdown]
-# A student's **sheet** (`exercises.make`) is the statement with their data and the questions, no
-# answers: that is what you hand out. The **key** (`exercises.key`) adds every answer, in SI and as
+# A student's **sheet** (`gk.exercises.make`) is the statement with their data and the questions, no
+# answers: that is what you hand out. The **key** (`gk.exercises.key`) adds every answer, in SI and as
 # the book prints it. Both depend on the course secret:
 
 # %%
-sheets = {s: exercises.make(NAME, s, secret=SECRET) for s in students}
-keys = {s: exercises.key(NAME, s, secret=SECRET) for s in students}
+sheets = {s: gk.exercises.make(NAME, s, secret=SECRET) for s in students}
+keys = {s: gk.exercises.key(NAME, s, secret=SECRET) for s in students}
 
 print(sheets["s001"]["intro"])
 
@@ -208,10 +207,10 @@ for s in students[:8]:
 # * another secret (next year's course) gives other data.
 
 # %%
-print("s001 again:        ", exercises.make(NAME, "s001", secret=SECRET) == sheets["s001"])
-print("' s001 ' (spaces): ", exercises.make(NAME, " s001 ", secret=SECRET)["data"] == sheets["s001"]["data"])
-print("'S001':            ", exercises.make(NAME, "S001", secret=SECRET)["data"] == sheets["s001"]["data"])
-next_year = {s: exercises.make(NAME, s, secret="mech-2026-autumn")["data"] for s in students}
+print("s001 again:        ", gk.exercises.make(NAME, "s001", secret=SECRET) == sheets["s001"])
+print("' s001 ' (spaces): ", gk.exercises.make(NAME, " s001 ", secret=SECRET)["data"] == sheets["s001"]["data"])
+print("'S001':            ", gk.exercises.make(NAME, "S001", secret=SECRET)["data"] == sheets["s001"]["data"])
+next_year = {s: gk.exercises.make(NAME, s, secret="mech-2026-autumn")["data"] for s in students}
 changed = sum(next_year[s] != sheets[s]["data"] for s in students)
 print(f"another secret: {changed} of {len(students)} students get other data")
 
@@ -316,7 +315,7 @@ rng = np.random.default_rng(2025)
 made = {}   # (student, question) → what we made: "correct", a slip, "wrong", "missing", "unreadable"
 rows = []
 for s in students:
-    v = exercises.variant(NAME, s, secret=SECRET)
+    v = gk.exercises.variant(NAME, s, secret=SECRET)
     row = {"student": s}
     for q in ex.questions:
         right, style = value_of(v.solved, q), int(rng.integers(3))
@@ -347,7 +346,7 @@ with answers_csv.open("w", newline="", encoding="utf-8") as f:
 print("".join(answers_csv.read_text(encoding="utf-8").splitlines(keepends=True)[:8]))
 
 # %% [markdown]
-# Grading a row is one call, `exercises.grade(exercise, student, answers, secret=...)`, where
+# Grading a row is one call, `gk.exercises.grade(exercise, student, answers, secret=...)`, where
 # `answers` maps each question id to the text typed. It returns the score and, per question, the
 # verdict (`correct`, `slip`, `wrong`, `unreadable`, `missing`), the slip it diagnosed, the points
 # and a sentence of feedback.
@@ -355,7 +354,7 @@ print("".join(answers_csv.read_text(encoding="utf-8").splitlines(keepends=True)[
 # %%
 with answers_csv.open(encoding="utf-8") as f:
     handed_in = {row["student"]: {q.id: row[q.id] for q in ex.questions} for row in csv.DictReader(f)}
-reports = {s: exercises.grade(NAME, s, handed_in[s], secret=SECRET) for s in handed_in}
+reports = {s: gk.exercises.grade(NAME, s, handed_in[s], secret=SECRET) for s in handed_in}
 scores = [r["score"] for r in reports.values()]
 top = sum(q.points for q in ex.questions)
 print(f"mean {np.mean(scores):.2f} / {top:g}; full marks: {scores.count(top)} of {len(scores)} students")
@@ -392,11 +391,11 @@ fig
 # earns none either, but its feedback says how to write it: you may want to let those students
 # hand in again.
 #
-# What a student sees, here one who slipped (`exercises.check` gives the report as text):
+# What a student sees, here one who slipped (`gk.exercises.check` gives the report as text):
 
 # %%
 shown = next(s for s in students if len({q["verdict"] for q in reports[s]["questions"]}) == 3)  # 3 verdicts
-print(exercises.check(NAME, shown, handed_in[shown], secret=SECRET))
+print(gk.exercises.check(NAME, shown, handed_in[shown], secret=SECRET))
 
 # %% [markdown]
 # The command line grades the whole CSV at once and writes one row per student: the score, and per
@@ -418,7 +417,7 @@ for g in grades[:4]:
 # The default shares of a question's points for each slip the grader can diagnose:
 
 # %%
-for slip, share in exercises.SLIPS.items():
+for slip, share in gk.exercises.SLIPS.items():
     print(f"{slip:<20}{share:g}")
 
 # %% [markdown]
@@ -433,8 +432,8 @@ sign = 0.25
 power_of_ten = 0.75
 no_inertia_torque = 0
 """
-strict = exercises.parse_exercise("reveal = true\n" + STRICT, id=NAME)
-strict_reports = {s: exercises.grade(strict, s, handed_in[s], secret=SECRET) for s in handed_in}
+strict = gk.exercises.parse_exercise("reveal = true\n" + STRICT, id=NAME)
+strict_reports = {s: gk.exercises.grade(strict, s, handed_in[s], secret=SECRET) for s in handed_in}
 strict_scores = [r["score"] for r in strict_reports.values()]
 print(f"mean score, default shares: {np.mean(scores):.3f}; with this [partial]: {np.mean(strict_scores):.3f}")
 
@@ -443,7 +442,7 @@ print(f"mean score, default shares: {np.mean(scores):.3f}; with this [partial]: 
 #
 # By default the report never shows the expected value, so that a student can try again. Put
 # `reveal = true` at the top of the file (as in `strict` above) once the deadline has passed, or
-# pass `reveal=True` to `exercises.grade` (`--reveal` on the command line) for one run. Each
+# pass `reveal=True` to `gk.exercises.grade` (`--reveal` on the command line) for one run. Each
 # question of the report then has an `expected` entry:
 
 # %%
@@ -453,7 +452,7 @@ for q in strict_reports[shown]["questions"]:
 # %% [markdown]
 # ### Keeping the secret out of the students' notebook
 #
-# Whoever has the secret can compute every key, with one call to `exercises.key`. So:
+# Whoever has the secret can compute every key, with one call to `gk.exercises.key`. So:
 #
 # * never write the secret in a notebook, a script or a repository you share. Put it in the
 #   environment of *your* terminal (`export GRAPHKIN_SECRET=...`, then start Jupyter from it). The
@@ -466,7 +465,7 @@ for q in strict_reports[shown]["questions"]:
 #   work use a secret, hand out the sheets, and grade yourself: the notebook check of lesson 03
 #   would give a student the data of the course *without* a secret, which aren't theirs.
 #
-# The command line with the secret in the environment gives the same key as `exercises.key` with
+# The command line with the secret in the environment gives the same key as `gk.exercises.key` with
 # `secret=SECRET` (compare s001's row in the table of section 2):
 
 # %%
@@ -482,7 +481,7 @@ secret = os.environ.get("GRAPHKIN_SECRET", "")   # how your own grading notebook
 # * Grading on a platform (otter-grader, nbgrader, PrairieLearn, Gradescope) is planned. Until then
 #   the CSV in and out of section 4 (or `--json`) is the way in.
 # * Try an exercise of your own: copy a catalog file, change the ranges and the questions, and read
-#   it with `exercises.load_exercise("my_exercise.toml")`. (`exercises.load` also takes a path, but
+#   it with `gk.exercises.load_exercise("my_exercise.toml")`. (`gk.exercises.load` also takes a path, but
 #   reads each file once per session: it won't see your edits until you restart the kernel.)
 
 # %% [markdown]
@@ -494,13 +493,13 @@ secret = os.environ.get("GRAPHKIN_SECRET", "")   # how your own grading notebook
 # ### 1. What an exercise is
 
 # %%
-assert len(exercises.names()) == 10 and NAME in exercises.names()
+assert len(gk.exercises.names()) == 10 and NAME in gk.exercises.names()
 assert [len(v.values) for v in ex.vary] == [15, 13, 11] and math.prod(len(v.values) for v in ex.vary) == 2145
 assert ex.vary[0].values[:2] == ("126 deg", "128 deg") and ex.vary[0].values[-1] == "154 deg"
 assert all(q.tolerance == 0.01 and q.points == 1 for q in ex.questions)
 assert [(q.id, q.part, q.unit) for q in ex.questions] == [("F23", "vector", "N"), ("F14", "magnitude", "N"),
                                                           ("T12", "value", "N*m")]
-assert exercises.load(str(toml_file)).vary == ex.vary   # the file found is the catalog's
+assert gk.exercises.load(str(toml_file)).vary == ex.vary   # the file found is the catalog's
 assert [v.values for v in mine.vary] == [("130 deg", "135 deg", "140 deg", "145 deg", "150 deg"),
                                          ("600 rpm", "900 rpm", "1200 rpm")]
 assert [(q.points, q.unit, q.tolerance) for q in mine.questions] == [(2, "N*m", 0.01), (1, "kN", 0.02)]
@@ -508,7 +507,7 @@ assert my_key["questions"][1]["answer"]["text"].endswith(" kN")
 assert "tolerence" in typo and "did you mean 'tolerance'" in typo
 # The id is the seed: the file saved as cutter_speed.toml gives the same data.
 (folder / "cutter_speed.toml").write_text(MY_EXERCISE, encoding="utf-8")
-assert exercises.make(str(folder / "cutter_speed.toml"), "s001", SECRET)["data"] == my_key["data"]
+assert gk.exercises.make(str(folder / "cutter_speed.toml"), "s001", SECRET)["data"] == my_key["data"]
 
 # %% [markdown]
 # ### 2. A roster, the sheets and the key
@@ -517,12 +516,12 @@ assert exercises.make(str(folder / "cutter_speed.toml"), "s001", SECRET)["data"]
 assert len(students) == 30 and len(set(students)) == 30
 assert all(keys[s]["data"] == sheets[s]["data"] for s in students)
 assert all("answer" not in q for s in students for q in sheets[s]["questions"])
-assert exercises.make(NAME, "s001", secret=SECRET) == sheets["s001"]
-assert exercises.make(NAME, " s001 ", secret=SECRET)["data"] == sheets["s001"]["data"]
-assert exercises.make(NAME, "S001", secret=SECRET)["data"] != sheets["s001"]["data"]
+assert gk.exercises.make(NAME, "s001", secret=SECRET) == sheets["s001"]
+assert gk.exercises.make(NAME, " s001 ", secret=SECRET)["data"] == sheets["s001"]["data"]
+assert gk.exercises.make(NAME, "S001", secret=SECRET)["data"] != sheets["s001"]["data"]
 assert changed == len(students)
 # A late student changes nobody's data; the roster's order doesn't matter.
-late = {s: exercises.make(NAME, s, secret=SECRET) for s in reversed(students + ["s031"])}
+late = {s: gk.exercises.make(NAME, s, secret=SECRET) for s in reversed(students + ["s031"])}
 assert all(late[s] == sheets[s] for s in students)
 assert twins == [["s013", "s025"]] and len(by_data) == 29
 assert round(100 * (1 - math.prod(1 - k / 2145 for k in range(30)))) == 18
@@ -562,7 +561,7 @@ assert as_made == len(made) == 90
 # "a few percent": T12 without the inertia torques, for the students of this roster.
 T12_off = []
 for s in students:
-    v = exercises.variant(NAME, s, secret=SECRET)
+    v = gk.exercises.variant(NAME, s, secret=SECRET)
     q = ex.question("T12")
     T12_off.append(abs(value_of(v.altered("no_inertia_torque"), q) / value_of(v.solved, q) - 1))
 assert sum(0.01 < d < 0.1 for d in T12_off) >= 5 and min(T12_off) < 0.01
@@ -579,7 +578,7 @@ for s in students:
         assert q["score"] == share * q["max"]
 # The student shown has a slip, and the feedback printed is their report.
 assert any(q["verdict"] == "slip" for q in reports[shown]["questions"])
-assert exercises.check(NAME, shown, handed_in[shown], secret=SECRET).splitlines()[0].endswith(
+assert gk.exercises.check(NAME, shown, handed_in[shown], secret=SECRET).splitlines()[0].endswith(
     f"{reports[shown]['score']:g} / {top:g} points")
 # The CLI's grades agree with the Python API for every student.
 assert [g["student"] for g in grades] == students
@@ -591,7 +590,7 @@ for g in grades:
         assert g[f"{q['id']} verdict"] == q["verdict"] + (f" ({q['slip']})" if q["slip"] else "")
         assert g[f"{q['id']} feedback"] == q["feedback"]
 # The formats quoted in the text: s001's answers in each style, and every style was handed in.
-v001 = exercises.variant(NAME, "s001", secret=SECRET)
+v001 = gk.exercises.variant(NAME, "s001", secret=SECRET)
 assert [typed(ex.question("F23"), value_of(v001.solved, ex.question("F23")), k) for k in range(3)] == \
     ["2643 N ∠ -126.57°", "(-1575, -2123) N", "2.643 kN at -126.6 deg"]
 assert [typed(ex.question("T12"), value_of(v001.solved, ex.question("T12")), k) for k in range(3)] == \
@@ -611,12 +610,12 @@ for row in rows:
 # ### 5. Partial credit, revealing answers, and the secret
 
 # %%
-assert exercises.SLIPS["sign"] == exercises.SLIPS["power_of_ten"] == 0.5
-assert exercises.SLIPS["no_inertia_torque"] == 0.25
+assert gk.exercises.SLIPS["sign"] == gk.exercises.SLIPS["power_of_ten"] == 0.5
+assert gk.exercises.SLIPS["no_inertia_torque"] == 0.25
 assert strict.reveal and not ex.reveal and strict.id == ex.id
-assert strict.partial == {**exercises.SLIPS, "sign": 0.25, "power_of_ten": 0.75, "no_inertia_torque": 0}
+assert strict.partial == {**gk.exercises.SLIPS, "sign": 0.25, "power_of_ten": 0.75, "no_inertia_torque": 0}
 for s in students:
-    assert exercises.make(strict, s, secret=SECRET) == sheets[s]   # the same data
+    assert gk.exercises.make(strict, s, secret=SECRET) == sheets[s]   # the same data
     for q_default, q_strict in zip(reports[s]["questions"], strict_reports[s]["questions"]):
         assert (q_default["verdict"], q_default["slip"]) == (q_strict["verdict"], q_strict["slip"])
         assert "expected" not in q_default and "expected" in q_strict
@@ -625,7 +624,7 @@ for s in students:
 assert np.mean(strict_scores) < np.mean(scores)
 assert [q["expected"] for q in strict_reports[shown]["questions"]] == \
        [q["answer"]["text"] for q in keys[shown]["questions"]]
-assert all("expected" in q for q in exercises.grade(NAME, shown, handed_in[shown], SECRET, reveal=True)["questions"])
+assert all("expected" in q for q in gk.exercises.grade(NAME, shown, handed_in[shown], SECRET, reveal=True)["questions"])
 # GRAPHKIN_SECRET: the CLI without --secret uses it; the Python functions don't read it.
 env_key = subprocess.run([sys.executable, "-m", "graphkin", "exercise", "key", NAME, "--student", "s001",
                           "--json"], env=course_env, capture_output=True, text=True, encoding="utf-8", check=True)
@@ -633,7 +632,7 @@ assert json.loads(env_key.stdout) == keys["s001"]
 before = os.environ.get("GRAPHKIN_SECRET")
 os.environ["GRAPHKIN_SECRET"] = SECRET
 try:
-    assert exercises.key(NAME, "s001") != keys["s001"]   # the Python default is no secret, whatever the environment
+    assert gk.exercises.key(NAME, "s001") != keys["s001"]   # the Python default is no secret, whatever the environment
 finally:
     if before is None:
         del os.environ["GRAPHKIN_SECRET"]
@@ -647,8 +646,8 @@ assert secret == (before or "")
 # %%
 draft = folder / "my_exercise.toml"
 draft.write_text(MY_EXERCISE, encoding="utf-8")
-assert exercises.load(str(draft)).questions[1].tolerance == 0.02
+assert gk.exercises.load(str(draft)).questions[1].tolerance == 0.02
 draft.write_text(MY_EXERCISE.replace('tolerance = "2 %"', 'tolerance = "3 %"'), encoding="utf-8")
-assert exercises.load(str(draft)).questions[1].tolerance == 0.02            # the copy read first
-assert exercises.load_exercise(draft).questions[1].tolerance == 0.03        # the file as it is now
-assert exercises.load_exercise(draft).id == "my_exercise"
+assert gk.exercises.load(str(draft)).questions[1].tolerance == 0.02            # the copy read first
+assert gk.exercises.load_exercise(draft).questions[1].tolerance == 0.03        # the file as it is now
+assert gk.exercises.load_exercise(draft).id == "my_exercise"

@@ -55,7 +55,7 @@ from pathlib import Path
 import numpy as np
 from matplotlib.figure import Figure
 
-from graphkin import exercises
+import graphkin as gk
 
 NAME = "strip_cutter_cut"     # the exercise of this lesson (lesson 06 shows how to write your own)
 SECRET = "mech-2025-autumn"   # a demo secret; a real one lives in $GRAPHKIN_SECRET, never in a notebook
@@ -155,7 +155,7 @@ def typed(q, si, kind):
 made = {}          # (student, question) → the kind of answer we made
 submissions = folder / "submissions"
 for s in students:
-    key = exercises.key(NAME, s, secret=SECRET)
+    key = gk.exercises.key(NAME, s, secret=SECRET)
     lines = []
     for q in key["questions"]:
         kind = str(rng.choice(KINDS, p=[0.7, 0.1, 0.06, 0.06, 0.04, 0.04]))
@@ -221,7 +221,7 @@ print(f"{len(results)} submissions graded in {elapsed:.1f} s "
 
 # %%
 slipper = next(s for s in students if any(made[s, q.id] in ("sign", "power_of_ten")
-                                          for q in exercises.load(NAME).questions) and s != copier)
+                                          for q in gk.exercises.load(NAME).questions) and s != copier)
 r = results[slipper]
 print(r["output"], "\n")
 for t in r["tests"]:
@@ -291,7 +291,7 @@ print("\n".join(sorted(str(p.relative_to(folder / "pl")) for p in (folder / "pl"
 # %% [markdown]
 # ## Checks (for the course maintainers)
 #
-# The platform's scores are graphkin's: grading the same answers files with `exercises.grade` gives
+# The platform's scores are graphkin's: grading the same answers files with `gk.exercises.grade` gives
 # the same score for every student. Every answer we made was named as we made it (a sign slip as
 # `sign`, a blank as `missing`, ...). The copier scored 0. The secret is in the autograder and
 # nowhere a student looks.
@@ -305,7 +305,7 @@ for s in students:
     if s == copier:
         assert results[s]["score"] == 0 and "each student answers their own variant" in results[s]["output"]
         continue
-    report = exercises.grade(NAME, s, answers, secret=SECRET)
+    report = gk.exercises.grade(NAME, s, answers, secret=SECRET)
     assert abs(results[s]["score"] - report["score"]) < 1e-12, s
     assert results[s]["extra_data"]["graphkin"] == json.loads(json.dumps(report)), s
     for q in report["questions"]:

@@ -57,7 +57,7 @@ def test_a_dead_centre_reads_as_zero_not_as_rounding():
 
 def test_large_forces_are_written_in_digits():
     """The engine's rod thrust at 60° from IDC (Khurmi & Gupta Ex. 15.7: 50.62 kN printed; graphkin's 50.641 kN and
-    its components are checked against the book in tests/test_reference_khurmi_engine.py) reads 50640 N."""
+    its components are checked against the book in tests/books/test_khurmi_engine.py) reads 50640 N."""
     text = _text_at("engine_gas_force", 60)
     assert "e+0" not in text.split("rel. diff")[0]
     assert re.search(r"F23 += \( *49440\.0331, +-10964\.1372\) N = 50640 N ∠ -12\.50°", text), text

@@ -512,6 +512,7 @@ def solve_forces(kin: Kinematics) -> ForceAnalysis:
     Returns
     -------
     ForceAnalysis
+        Every joint force and the driving effort at every position (nan where a position is not valid).
     """
     if not isinstance(kin, Kinematics):
         raise GraphkinError(f"solve_forces takes the Kinematics of a mechanism (solve_kinematics(...) or "

@@ -36,7 +36,21 @@ class Inertia:
 
 
 def inertia(kin: Kinematics, link: int) -> Inertia:
-    """Inertia force and torque of a link and their single equivalent resultant (zero in a static analysis)."""
+    """Inertia force and torque of a link and their single equivalent resultant (zero in a static analysis).
+
+    Parameters
+    ----------
+    kin : Kinematics
+        The motion (a_G and α of the link at every position).
+    link : int
+        The moving link.
+
+    Returns
+    -------
+    Inertia
+        ``F = −m a_G`` [N], ``T = −I_G α`` [N·m], the offset ``h = |T|/|F|`` [m] of the resultant's line from
+        G and a point on it, at every position.
+    """
     body = kin.mechanism.link(link)
     m, I_G = (0.0, 0.0) if kin.static else (body.mass, body.I_G)
     F = -m * kin.z_a_G(link) + 0.0

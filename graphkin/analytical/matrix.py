@@ -83,6 +83,11 @@ def assemble(result: ForceAnalysis) -> System:
     ----------
     result : ForceAnalysis
         Supplies the kinematics and the signs of friction and tooth forces.
+
+    Returns
+    -------
+    System
+        [A], {b} and the names of the unknowns and of the equations, per position.
     """
     kin = result.kinematics
     mech = kin.mechanism
@@ -163,6 +168,16 @@ def solve_matrix(result: ForceAnalysis) -> ForceAnalysis:
 
     A cross-check of :func:`graphkin.analytical.solve_forces` (and what the lessons
     show); it loops inside LAPACK over positions, so it is slower.
+
+    Parameters
+    ----------
+    result : ForceAnalysis
+        The closed-form solution whose kinematics and loads are assembled (:func:`assemble`).
+
+    Returns
+    -------
+    ForceAnalysis
+        The same forces, from ``numpy.linalg.solve`` of [A]{x} = {b} at every position.
     """
     system = assemble(result)
     x = system.solve()

@@ -60,7 +60,23 @@ def flywheel_path(name: str) -> Path:
 
 
 def load(name_or_path: str):
-    """A :class:`graphkin.problem.Problem` from a catalog name or a file path."""
+    """A :class:`graphkin.problem.Problem` from a catalog name or a file path.
+
+    Parameters
+    ----------
+    name_or_path : str or Path
+        A catalog name (:func:`names`, ``graphkin list``) or a problem file.
+
+    Returns
+    -------
+    Problem
+        The problem, read from its TOML file.
+
+    Examples
+    --------
+    >>> load("double_slider").title
+    'Double slider with a heavy connecting rod'
+    """
     if not isinstance(name_or_path, (str, Path)):
         raise GraphkinError(f"catalog.load takes a catalog name ({', '.join(names())}) or a file path, "
                             f"got {type(name_or_path).__name__} {name_or_path!r}")

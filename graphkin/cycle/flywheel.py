@@ -174,8 +174,8 @@ differ in the fourth digit, anything more is a slip (the shaft would speed
 up or slow down every cycle)."""
 
 
-def size_flywheel(theta, T=None, *, omega_avg: float, Cs: float | None = None, I: float | None = None,
-                  driving=None, resisting=None, period: float = TURN) -> "Flywheel":
+def size_flywheel(theta, T=None, *, driving=None, resisting=None, omega_avg: float, Cs: float | None = None,
+                  I: float | None = None, period: float = TURN) -> "Flywheel":
     """Size a flywheel for a turning-moment diagram (Norton §11.11), or find the fluctuation a given one leaves.
 
     The shaft carries a driving torque T_d(θ) (an engine, or a motor) and a
@@ -217,6 +217,8 @@ def size_flywheel(theta, T=None, *, omega_avg: float, Cs: float | None = None, I
     Returns
     -------
     Flywheel
+        The energy swing E, the system inertia I_s (or the C_s a given one leaves), the table of pulses
+        between the crossings, and the speed and acceleration over the cycle.
 
     Raises
     ------

@@ -94,6 +94,18 @@ class FlywheelProblem:
 def load_flywheel(source: str | Path, *, name: str | None = None) -> FlywheelProblem:
     """Read a flywheel file (TOML); a ``csv`` it names is read from the same folder.
 
+    Parameters
+    ----------
+    source : str or Path
+        The file.
+    name : str, optional
+        The name messages and reports show (default: the path).
+
+    Returns
+    -------
+    FlywheelProblem
+        The turning-moment diagram, its speed and what to find, in SI units.
+
     Raises
     ------
     ProblemFileError

@@ -89,7 +89,18 @@ class JointForceIndex:
 
 
 def static_problem(problem: "Problem") -> "Problem":
-    """The same problem with every link's mass and moment of inertia set to zero."""
+    """The same problem with every link's mass and moment of inertia set to zero.
+
+    Parameters
+    ----------
+    problem : Problem
+        The mechanism with its loads.
+
+    Returns
+    -------
+    Problem
+        Its external loads only: what the joint-force index is measured with.
+    """
     mech = problem.mechanism
     links = tuple(replace(link, mass=0.0, I_G=0.0) for link in mech.links)
     return replace(problem, mechanism=replace(mech, links=links), given={})
@@ -128,6 +139,8 @@ def joint_force_index(problem: "Problem", n: int | None = None, *, limit: float 
     Returns
     -------
     JointForceIndex
+        The index at every position, the joint that sets it, the load it is measured against, its peak and the
+        positions over the limit.
 
     Notes
     -----

@@ -49,6 +49,7 @@ def sweep(problem: "Problem", n: int | None = None, *, at=None) -> "Cycle":
     Parameters
     ----------
     problem : Problem
+        The mechanism, its input motion and loads.
     n : int, optional
         If given (crank drivers only), solve at n equally spaced crank angles
         θ = 2πk/n [rad] at the problem's constant ω and α; otherwise at the
@@ -63,6 +64,7 @@ def sweep(problem: "Problem", n: int | None = None, *, at=None) -> "Cycle":
     Returns
     -------
     Cycle
+        The force analysis at every position, with the cycle's peaks, averages, flywheel and polar data.
 
     Examples
     --------

@@ -473,7 +473,8 @@ def draw_energy(flywheel, *, ax=None, **style) -> Drawn:
     d.curves["energy"] = d.add(line(ax, x, flywheel.U, color=s.driver, lw=1.8, label=r"∫ (T − $\mathregular{T_{avg}}$) dθ"))
     Uc = crossing_energy(flywheel)
     xc = np.degrees(flywheel.crossings)
-    d.curves["crossings"] = d.add(markers(ax, xc, Uc, color=s.ink, ms=4.5, label=r"T = $\mathregular{T_{avg}}$ (crossings)", zorder=4))
+    d.curves["crossings"] = d.add(markers(ax, xc, Uc, color=s.ink, ms=4.5, zorder=4,
+                                          label=r"T = $\mathregular{T_{avg}}$ (crossings)"))
     if len(Uc):
         i_lo, i_hi = int(np.argmin(Uc)), int(np.argmax(Uc))
         lo, hi = float(Uc[i_lo]), float(Uc[i_hi])

@@ -81,10 +81,11 @@ Examples
 >>> r = read_answer("237.2 J", dimension="torque", unit="N*m")
 >>> r.value is None, r.dimension
 (True, 'energy')
->>> read_answer("12,5 N", dimension="force", unit="N")
-Traceback (most recent call last):
-...
-graphkin.exercises.answers.Unreadable: Could not read "12,5 N": write a number and a unit, such as "27.06 N" (use a decimal point).
+>>> try:
+...     read_answer("12,5 N", dimension="force", unit="N")
+... except Unreadable as exc:
+...     print(exc)
+Could not read "12,5 N": write a number and a unit, such as "27.06 N" (use a decimal point).
 """
 
 from __future__ import annotations

@@ -58,6 +58,7 @@ def construct_forces(kin: Kinematics, index: int = 0) -> Construction:
     Parameters
     ----------
     kin : Kinematics
+        The motion of every link (``problem.kinematics()`` or ``result.kinematics``).
     index : int
         Which of the kinematics' positions to construct.
 

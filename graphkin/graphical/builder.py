@@ -603,7 +603,8 @@ class Builder:
 
     def _check(self, step: Step):
         if step.closure() > CLOSE:
-            self.warnings.append(f"{step.caption.split(':')[0]}: the polygon fails to close by {step.closure():.2g} of its largest side")
+            self.warnings.append(f"{step.caption.split(':')[0]}: the polygon fails to close by {step.closure():.2g} "
+                                 "of its largest side")
         return step
 
     # -- the groups in turn ------------------------------------------------------

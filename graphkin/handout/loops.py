@@ -15,7 +15,7 @@ velocities and accelerations, read from the
 :class:`~graphkin.kinematics.Kinematics`), and every step uses the
 solver's own helpers (``_line``, ``_across``, ``_joint_points``, ``_bar``,
 ``_meet``, ``solve_columns``), so what is printed as a result is what the
-solver found (``tests/test_handout.py`` checks it to the printed digits).
+solver found (``tests/handout/test_handout.py`` checks it to the printed digits).
 
 Every result is an equation line that starts with the result's symbol and
 ends with its value (``ω3 = … = −4.364 rad/s``); two results on one line are

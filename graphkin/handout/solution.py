@@ -250,7 +250,10 @@ def cycle(doc: Doc, s: Subject):
                        "The driving torque over one turn with its average" +
                        (" and the pulses of T − T_avg with their energies." if f is not None else "."))
     theta = f"θ{s.mech.driver.frame}{s.mech.driver.link}"
-    where = lambda p: "—" if p["at"] is None else f"{theta} = {M.fmt(deg(p['at']), 5)}°"
+
+    def where(p):
+        return "—" if p["at"] is None else f"{theta} = {M.fmt(deg(p['at']), 5)}°"
+
     doc.table(["", "value", "at"], [
         ["peak", M.qty(e["max"]["value"], "N·m"), where(e["max"])],
         ["lowest", M.qty(e["min"]["value"], "N·m"), where(e["min"])],

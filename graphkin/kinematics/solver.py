@@ -446,6 +446,7 @@ def solve_kinematics(mech: Mechanism, q, q_dot=0.0, q_ddot=0.0) -> Kinematics:
     Parameters
     ----------
     mech : Mechanism
+        The linkage.
     q : array_like, shape (n,) or scalar
         Input coordinate: crank angle θ [rad] or slider position s [m].
     q_dot, q_ddot : float or array_like, shape (n,)

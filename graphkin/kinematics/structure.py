@@ -115,6 +115,16 @@ Group = DriverGroup | Dyad | GearGroup
 def decompose(mech: Mechanism) -> tuple[Group, ...]:
     """Order the mechanism's links into groups that can be located one by one.
 
+    Parameters
+    ----------
+    mech : Mechanism
+        The linkage.
+
+    Returns
+    -------
+    tuple of DriverGroup, Dyad or GearGroup
+        The driver first, then each group whose outer joints are on links located before it.
+
     Raises
     ------
     ModelError

@@ -25,7 +25,9 @@ class Mechanism:
     links : sequence of Link
         All links, the frame (number 1) included.
     joints : sequence of Revolute, Prismatic or GearMesh
+        The joints between them: pins, sliding pairs and gear meshes.
     driver : Driver
+        The input link and whether it is a crank or a slider.
     loads : sequence of PointForce or Torque
         External loads (inertia loads are added by the solver).
     gravity : float

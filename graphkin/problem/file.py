@@ -79,6 +79,18 @@ def _field_of(at: tuple) -> str:
 def load_problem(source: str | Path, *, name: str | None = None) -> Problem:
     """Read a problem file (a path, or a catalog name via :func:`graphkin.catalog.load`).
 
+    Parameters
+    ----------
+    source : str or Path
+        The file.
+    name : str, optional
+        The name messages and reports show (default: the path).
+
+    Returns
+    -------
+    Problem
+        The mechanism, its input motion and loads, in SI units.
+
     Raises
     ------
     ProblemFileError
@@ -107,6 +119,11 @@ def parse_problem(text: str, *, file: str = "<problem>", base: str | Path | None
     base : str or Path, optional
         The problem file's path: a load's ``csv`` table is read from its folder.
 
+    Returns
+    -------
+    Problem
+        The mechanism, its input motion and loads, in SI units.
+
     Raises
     ------
     ProblemFileError
@@ -133,6 +150,25 @@ def build_problem(data: Mapping[str, Any], *, file: str = "<problem>", base: str
 
     Exercises use it to solve a variant: the base file's data with some
     values replaced by the strings the student is shown.
+
+    Parameters
+    ----------
+    data : mapping
+        The file's tables and values, as ``tomllib`` reads them (units in strings).
+    file : str, optional
+        The name shown in messages.
+    base : str or Path, optional
+        The problem file's path: a load's ``csv`` table is read from its folder.
+
+    Returns
+    -------
+    Problem
+        The mechanism, its input motion and loads, in SI units.
+
+    Raises
+    ------
+    ProblemFileError
+        With the file, the field and what is wrong.
     """
     rd = FieldReader(file)
     rd.base = base
@@ -313,7 +349,8 @@ def _joint(rd, t, where):
     rd.table(t, where, _JOINT[kind])
     try:
         if kind == "revolute":
-            return Revolute(_pair(rd, rd.need(t, "links", where), f"{where}.links"), rd.text(rd.need(t, "point", where), f"{where}.point"))
+            return Revolute(_pair(rd, rd.need(t, "links", where), f"{where}.links"),
+                            rd.text(rd.need(t, "point", where), f"{where}.point"))
         if kind == "prismatic":
             mu = rd.si(t.get("mu", 0.0), "dimensionless", f"{where}.mu")
             if mu < 0:
@@ -362,7 +399,8 @@ def _motion(rd, d, kind, static=False):
                       f"(or write analysis = \"dynamic\")")
     rates = []
     for name, dim in zip(names[1:], dims[1:]):
-        r = rd.array(d.get(name, f"0 {'rad/s' if kind == 'crank' else 'm/s'}{'^2' if name in ('alpha', 'a') else ''}"), dim, f"driver.{name}")
+        none = f"0 {'rad/s' if kind == 'crank' else 'm/s'}{'^2' if name in ('alpha', 'a') else ''}"  # at rest
+        r = rd.array(d.get(name, none), dim, f"driver.{name}")
         if len(r) not in (1, len(q)):
             raise rd.fail(f"driver.{name}", f"has {len(r)} values for {len(q)} positions: give one value or one per position")
         rates.append(np.broadcast_to(r, q.shape).astype(float))

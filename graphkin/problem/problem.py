@@ -128,7 +128,8 @@ class Problem:
             crank = self.mechanism.driver.crank
             at = as_array(at, f"{self.name}: at", "angle" if crank else "coordinate")
             if len(set(self.q_dot)) > 1 or len(set(self.q_ddot)) > 1:
-                raise GraphkinError(f"{self.name}: its input rates vary with position, so it can only be solved at its own positions")
+                raise GraphkinError(f"{self.name}: its input rates vary with position, so it can only be solved at its "
+                                    "own positions")
             q, q_dot, q_ddot = at, np.full(len(at), self.q_dot[0]), np.full(len(at), self.q_ddot[0])
         kin = solve_kinematics(self.mechanism, q, q_dot, q_ddot)
         if self.given:

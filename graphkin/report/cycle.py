@@ -78,8 +78,16 @@ def cycle_data(cycle, Cs=None) -> dict:
     Parameters
     ----------
     cycle : graphkin.cycle.Cycle
+        The sweep (:func:`graphkin.cycle.sweep`).
     Cs : float, optional
         Coefficient of speed fluctuation: size a flywheel (its ``"flywheel"`` is null without it).
+
+    Returns
+    -------
+    dict
+        The driving effort, input power, joint forces and their peaks, shaking force and moment,
+        transmission angle, flywheel and joint-force index over the cycle, each as lists of floats
+        (None where a position is invalid); see ``docs/json.md``.
 
     Raises
     ------
@@ -152,7 +160,20 @@ def cycle_data(cycle, Cs=None) -> dict:
 
 
 def format_cycle(cycle, data: dict) -> str:
-    """The text summary of ``graphkin cycle``, with units, from :func:`cycle_data`."""
+    """The text summary of ``graphkin cycle``, with units, from :func:`cycle_data`.
+
+    Parameters
+    ----------
+    cycle : graphkin.cycle.Cycle
+        The sweep the data was made from.
+    data : dict
+        :func:`cycle_data` of it.
+
+    Returns
+    -------
+    str
+        What ``graphkin cycle`` prints.
+    """
     mech = cycle.problem.mechanism
     crank = mech.driver.crank
     unit = "N·m" if crank else "N"

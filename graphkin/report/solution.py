@@ -59,7 +59,8 @@ def _graphical(result: ForceAnalysis, c, i) -> dict:
         subproblems.append({"label": sp.label, "link": sp.link, "mark": sp.mark, "forces": sub_forces, "driver": driver})
     steps = [{"kind": s.kind, "caption": s.caption, "link": s.link, "sub": s.sub,
               "points": {k: list(v) for k, v in s.points.items()},
-              "lines": [{"name": l.name, "point": list(l.point), "direction": list(l.direction), "role": l.role} for l in s.lines],
+              "lines": [{"name": l.name, "point": list(l.point), "direction": list(l.direction), "role": l.role}
+                        for l in s.lines],
               "polygon": [{"name": a.name, "vector": list(a.vector), "known": a.known} for a in s.polygon],
               "values": {k: (list(v) if isinstance(v, tuple) else v) for k, v in s.values.items()}}
              for s in c.steps]
@@ -74,7 +75,9 @@ def solution(problem, result: ForceAnalysis, graphical: list | None = None) -> d
     Parameters
     ----------
     problem : graphkin.problem.Problem
+        The problem solved (its name, title and source head the data).
     result : ForceAnalysis
+        Its analytical solution.
     graphical : list of Construction, optional
         The graphical route per position (:func:`constructions`); included
         under ``"graphical"`` with the relative difference per force.
@@ -232,7 +235,22 @@ def _loads_text(entry) -> list[str]:
 
 
 def format_solution(problem, result: ForceAnalysis, graphical: list | None = None) -> str:
-    """The solution as text with textbook units (mm, degrees, N, N·m); both routes when ``graphical`` is given."""
+    """The solution as text with textbook units (mm, degrees, N, N·m); both routes when ``graphical`` is given.
+
+    Parameters
+    ----------
+    problem : graphkin.problem.Problem
+        The problem solved (its title, source and driver name the report).
+    result : ForceAnalysis
+        Its analytical solution.
+    graphical : list of Construction, optional
+        The graphical route per position (:func:`constructions`).
+
+    Returns
+    -------
+    str
+        What ``graphkin solve`` prints.
+    """
     data = solution(problem, result, graphical)
     crank = data["driver"]["kind"] == "crank"
     mech = result.mechanism

@@ -564,7 +564,8 @@ def props(work):
     (work / "not.json").write_text("{F12: 3}")
     (work / "list.json").write_text('["3 N"]')
     (work / "answers.json").write_text(json.dumps({"F12": "3 N"}))
-    return {"file": "a_file.txt", "dir": "a_dir", "png_dir": "plot.svg", "bad_toml": "bad.toml", "bad_exercise": "bad_exercise.toml",
+    return {"file": "a_file.txt", "dir": "a_dir", "png_dir": "plot.svg", "bad_toml": "bad.toml",
+            "bad_exercise": "bad_exercise.toml",
             "latin1_exercise": "latin1.toml", "roster": "roster.csv", "no_student_column": "no_student.csv",
             "empty_id": "empty_id.csv", "binary": "binary.bin", "utf16_roster": "roster16.csv",
             "not_json": "not.json", "json_list": "list.json", "answers": "answers.json",

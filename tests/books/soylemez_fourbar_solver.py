@@ -86,7 +86,7 @@ centre-of-mass accelerations; equations (1)–(5) and (7)–(9); the solution of
 (3) and (6) for F34x, F34y (Cramer's rule, determinant a3 a4 sin(θ14 − θ13));
 and the back-substitutions for G14, F23, G12.
 
-How this module is verified (``tests/test_reference_soylemez_fourbar.py``)
+How this module is verified (``tests/books/test_soylemez_fourbar.py``)
 ---------------------------------------------------------------------------
 Hypothesis draws random crank-rockers (both σ), masses, inertias, CG offsets,
 external forces, ω12 and α12, over a full crank cycle, and checks:

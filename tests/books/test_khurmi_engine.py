@@ -186,7 +186,7 @@ def test_the_rod_is_in_compression_and_the_engine_drives(solved):
 
 
 # -- the catalog's families (issue 13, item 8: `graphkin list` shows each problem's family) ----------------------
-# Kept here with the catalog problem this change adds; it belongs with tests/test_cli_and_catalog.py.
+# Kept here with the catalog problem this change adds; it belongs with tests/cli/test_solve_and_list.py.
 
 
 @pytest.mark.parametrize("name", catalog.names())

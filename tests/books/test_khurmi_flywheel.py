@@ -6,7 +6,8 @@ The data and the printed answers are those of the FOSSEE Python Textbook Compani
 worked examples, not the book's page, which was not available. Where the companion's printing rounds, truncates
 or errs, the test says how, and checks graphkin against a closed form written out here instead.
 
-Example 16.8 (p. 580), ``graphkin/catalog/flywheels/three_cylinder.toml`` (``graphkin flywheel three_cylinder``): a three-cylinder single-acting engine,
+Example 16.8 (p. 580), ``graphkin/catalog/flywheels/three_cylinder.toml`` (``graphkin flywheel three_cylinder``):
+a three-cylinder single-acting engine,
 cranks at 120°; each cylinder's torque a triangle from 0 at its dead centre up to 90 N·m at 60° and down to 0 at
 180°, nothing on the return stroke; 600 rpm; flywheel 12 kg, k = 80 mm (I = 0.0768 kg·m²). Closed form: the sum
 repeats every 120°, T = 45 + 0.75 θ° on 0–60°, 135 − 0.75 θ° on 60–120°, mean 67.5 N·m; T − T_mean is positive

@@ -1,4 +1,4 @@
-"""Self-checks of the textbook oracle ``tests/reference/soylemez_fourbar.py``.
+"""Self-checks of the textbook oracle ``tests/books/soylemez_fourbar_solver.py``.
 
 The oracle transcribes Söylemez §6.4.1 (with typos corrected, see its module
 docstring).  Here it is checked three independent ways:

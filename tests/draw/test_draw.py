@@ -516,7 +516,7 @@ def _baseline_drawings():
 @pytest.mark.parametrize("name", sorted(_baseline_drawings()))
 def test_figures_users_see_most_look_as_before(tmp_path, name):
     """Small PNG baselines in tests/baseline; after a deliberate change, regenerate with
-    ``GRAPHKIN_NEW_BASELINES=1 python -m pytest tests/test_draw.py -k look_as_before``."""
+    ``GRAPHKIN_NEW_BASELINES=1 python -m pytest tests/draw/test_draw.py -k look_as_before``."""
     import os
     from pathlib import Path
 

@@ -221,7 +221,7 @@ def _positions(problem, count=POSITIONS):
     slider-driven linkage assembles (as the explorer finds it)."""
     if problem.mechanism.driver.kind == "crank":
         return np.radians(np.arange(count) * 360.0 / count)
-    from graphkin.widgets import _assembling_span
+    from graphkin.widgets.controls import assembling_span as _assembling_span
 
     lo, hi = _assembling_span(problem, float(problem.q[0]), 360)
     return np.linspace(lo, hi, count + 2)[1:-1]

@@ -88,7 +88,8 @@ def test_graphical_equals_analytical_at_every_catalog_position(name):
 def massless_double_slider(load_point, force):
     links = [Link(1, {"O": (0, 0)}), Link(2, {"A": (0, 0)}), Link(3, {"A": (0, 0), "B": (0.5, 0), "M": (0.25, 0)}),
              Link(4, {"B": (0, 0)})]
-    joints = [Prismatic(1, 2, "A", "O", 0.0), Revolute((2, 3), "A"), Revolute((3, 4), "B"), Prismatic(1, 4, "B", "O", math.pi / 2)]
+    joints = [Prismatic(1, 2, "A", "O", 0.0), Revolute((2, 3), "A"), Revolute((3, 4), "B"),
+              Prismatic(1, 4, "B", "O", math.pi / 2)]
     return Mechanism(links, joints, Driver(2, "slider"), [PointForce(3, load_point, force, name="P")])
 
 

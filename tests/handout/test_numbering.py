@@ -19,8 +19,8 @@ pypdf = pytest.importorskip("pypdf")
 from graphkin import handout  # noqa: E402
 from graphkin.cli import main  # noqa: E402
 from graphkin.handout import maths as M  # noqa: E402
-from tests.handout.test_handout import _kinematics_blocks, _printed_results  # noqa: E402
 from tests.analytical.test_static_and_numbering import STATIC_FOURBAR  # noqa: E402
+from tests.handout.test_handout import _kinematics_blocks, _printed_results  # noqa: E402
 
 DYNAMIC_CYCLE = (STATIC_FOURBAR.replace('analysis = "static"', "")
                  .replace('theta = "60 deg"', 'theta = { start = "0 deg", stop = "360 deg", step = "10 deg" }\n'

@@ -1,6 +1,6 @@
 """Söylemez §6.4.1's closed-form four-bar solution against graphkin's solvers.
 
-The closed form (``tests/reference/soylemez_fourbar.py``) is implemented from
+The closed form (``tests/books/soylemez_fourbar_solver.py``) is implemented from
 the book independently of graphkin (its printed typos corrected there, each
 with evidence). Here, on random crank-rockers with random mass properties and
 external forces, both graphkin routes — dyad-by-dyad closed form and the
@@ -27,8 +27,10 @@ def graphkin_fourbar(p):
     links = [
         Link(1, {"A0": (0, 0), "B0": (p["a1"], 0)}),
         Link(2, {"A0": (0, 0), "A": (p["a2"], 0)}, p["m2"], polar(p["g2"], p["beta2"]), p["I2"]),
-        Link(3, {"A": (0, 0), "B": (p["a3"], 0), "P3": polar(p["f3"], p["gamma3"])}, p["m3"], polar(p["g3"], p["beta3"]), p["I3"]),
-        Link(4, {"B0": (0, 0), "B": (p["a4"], 0), "P4": polar(p["f4"], p["gamma4"])}, p["m4"], polar(p["g4"], p["beta4"]), p["I4"]),
+        Link(3, {"A": (0, 0), "B": (p["a3"], 0), "P3": polar(p["f3"], p["gamma3"])}, p["m3"], polar(p["g3"], p["beta3"]),
+             p["I3"]),
+        Link(4, {"B0": (0, 0), "B": (p["a4"], 0), "P4": polar(p["f4"], p["gamma4"])}, p["m4"], polar(p["g4"], p["beta4"]),
+             p["I4"]),
     ]
     joints = [Revolute((1, 2), "A0"), Revolute((2, 3), "A"), Revolute((3, 4), "B"), Revolute((1, 4), "B0")]
     loads = [PointForce(3, "P3", polar(p["F13"], p["phi3"]), name="F13"),

@@ -405,7 +405,8 @@ def test_soylemez_double_slider_kinematics():
         Link(3, {"A": (0, 0), "B": (0.5, 0)}, mass=5, G=(0.25, 0), I_G=5 * 0.25 / 12),
         Link(4, {"B": (0, 0)}),
     ]
-    joints = [Prismatic(1, 2, "A", "O", 0.0), Revolute((2, 3), "A"), Revolute((3, 4), "B"), Prismatic(1, 4, "B", "O", math.pi / 2)]
+    joints = [Prismatic(1, 2, "A", "O", 0.0), Revolute((2, 3), "A"), Revolute((3, 4), "B"),
+              Prismatic(1, 4, "B", "O", math.pi / 2)]
     mech = Mechanism(links, joints, Driver(2, "slider"))
     kin = solve_kinematics(mech, 0.2, 2.0, 0.0)
     rel = 1e-3  # the book prints 6 significant figures; 0.1 %

@@ -19,7 +19,6 @@ from graphkin import exercises
 from graphkin.errors import GraphkinError
 from graphkin.exercises.platforms import export, otter, runtime
 
-
 nbformat = pytest.importorskip("nbformat")
 
 EXERCISE = "strip_cutter_cut"

@@ -525,7 +525,7 @@ def test_a_new_speed_or_screen_while_drawing_ahead_leaves_no_frame_of_the_old_on
     want = ex.problem.solve(at=[math.radians(101)]).effort[0]
     assert f"{want:.5g}" in status and ex.problem.q_dot[0] == pytest.approx(450 * math.pi / 30)
     assert closed
-    size = ex._figure.canvas.get_width_height(physical=True)
+    size = ex._canvas.figure.canvas.get_width_height(physical=True)
     for frame in frames.values():
         with Image.open(io.BytesIO(frame.png)) as im:
             assert im.size == size  # every frame kept is of the new screen
@@ -576,6 +576,7 @@ def test_an_error_in_answering_the_browser_is_shown_in_the_status_line_and_one_f
     assert "a new position from the browser" in ex.status.value and "a fault in the sweep" in ex.status.value
 
 
+@pytest.mark.slow
 def test_messages_handled_on_another_thread_are_answered_on_the_explorers_own():
     """ipykernel 7 runs a comm's handler on a subshell's thread: JupyterLab's key presses came there while the
     main thread drew ahead, and a new speed on the main thread then met "generator already executing"."""
@@ -586,13 +587,13 @@ def test_messages_handled_on_another_thread_are_answered_on_the_explorers_own():
 
     ex = explore(catalog.load("strip_cutter"), n=SMALL)
     rendered_on = set()
-    render = ex._render
+    render = ex._canvas.render
 
     def recording():
         rendered_on.add(threading.get_ident())
         render()
 
-    ex._render = recording
+    ex._canvas.render = recording
 
     def subshell(values):  # what a subshell's thread does with a burst of key presses
         for v in values:
@@ -634,11 +635,11 @@ def test_a_figure_code_holds_is_put_back_at_the_position_shown_before_a_cell_run
             moved = ex._figure_at
             shell.events.trigger("pre_run_cell", None)  # the next cell is about to run
             # What that cell sees (the loop waits while a cell runs: nothing is drawn ahead meanwhile).
-            return fig, moved, ex._figure_at, ex._ahead_job, ex._marker.get_xdata()[0]
+            return fig, moved, ex._figure_at, ex._ahead_job, ex._canvas.marker.get_xdata()[0]
 
         fig, moved, at, job, marker = asyncio.run(session())
         assert moved != 100.0  # drawing ahead had drawn a neighbour on it
-        assert at == 100.0 and job is None and marker == 100.0 and fig is ex._figure
+        assert at == 100.0 and job is None and marker == 100.0 and fig is ex._canvas.figure
     finally:
         InteractiveShell.clear_instance()
 
@@ -716,11 +717,11 @@ def test_graphkin_explore_page_holds_the_problem_and_nothing_else():
 
 @pytest.mark.parametrize("name", catalog.names())
 def test_the_torque_panel_keeps_its_labels_inside_its_cell(name):
-    """The panel's pixels are cached by cell (Explorer.png): a tick or axis label outside it would be cut off."""
+    """The panel's pixels are cached by cell (Canvas.render): a tick or axis label outside it would be cut off."""
     ex = explore(catalog.load(name))  # the whole curve: the double slider's reaches ±50000 N near its dead ends
     fig = ex.figure
     renderer = fig.canvas.get_renderer()
-    cell = ex._torque_cell.transformed(fig.transFigure)
+    cell = ex._canvas.torque_cell.transformed(fig.transFigure)
     ax = ex.ax_torque
     assert ax.yaxis.label.get_text() and ax.xaxis.label.get_text() and ax.title.get_text()
     box = ax.get_tightbbox(renderer)  # what is drawn: labels, title, the tick labels inside the limits
@@ -730,7 +731,7 @@ def test_the_torque_panel_keeps_its_labels_inside_its_cell(name):
 def test_the_torque_curve_follows_the_frame_number_and_keeps_a_flat_curve_inside():
     """A book that numbers the frame 0 reads T01 on the curve; a gear pair's constant torque sits off the edge."""
     from graphkin.problem import parse_problem
-    from tests.test_handout_numbering import DYNAMIC_CYCLE
+    from tests.handout.test_numbering import DYNAMIC_CYCLE
 
     ex = Explorer(parse_problem(DYNAMIC_CYCLE, file="frame0.toml"))
     assert ex.ax_torque.get_ylabel().startswith("T01") and "T01" in ex.ax_torque.get_title()
