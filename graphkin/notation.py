@@ -34,6 +34,7 @@ Examples
 from __future__ import annotations
 
 import math
+import re
 
 MINUS = "\u2212"
 """The true minus sign, for text that is typeset."""
@@ -257,3 +258,46 @@ def position_text(q: float, crank: bool, symbol: str = "") -> str:
         if back == q:
             break
     return f"{name} = {text}{unit}"
+
+
+_SEED = re.compile(r"\s*\((?:seeds?|file)\s[^()]*\)")
+
+
+def citation(source: str) -> str:
+    """A source as one line for students: the book and the example, without the catalog's provenance.
+
+    The catalog's ``source`` says where a problem comes from down to the file it was read in (``(seed
+    000_….txt)``) and how (``…; data and answers as in the FOSSEE companion``): that is for the teacher. A
+    student's sheet cites the book: the text up to the first ``;`` or full stop, without a seed.
+
+    Examples
+    --------
+    >>> citation("Söylemez, Mechanisms, §6.4, double-slider example (seed 000_6a5b8db2377b79fc.txt)")
+    'Söylemez, Mechanisms, §6.4, double-slider example'
+    >>> citation("Khurmi & Gupta, Theory of Machines, Example 15.10 (p. 536); data as in the FOSSEE companion")
+    'Khurmi & Gupta, Theory of Machines, Example 15.10 (p. 536)'
+    """
+    text = _SEED.sub("", " ".join(str(source).split()))
+    for stop in ("; ", ". "):
+        # A full stop ends the sentence only where a capital follows (not "p. 536", "Ex. 6.1").
+        at = text.find(stop) if stop == "; " else next((m.start() for m in re.finditer(r"\.\s+(?=[A-Z])", text)
+                                                        if not re.search(r"\b(?:p|pp|Ex|ch|No|vol|ed)$",
+                                                                         text[:m.start()])), -1)
+        if at > 0:
+            text = text[:at]
+    return text.strip().rstrip(".,;:")
+
+
+_SIGN = re.compile(r"(?<![\w.)\]])-(?=\.?\d)")
+
+
+def typeset_minus(text: str) -> str:
+    """Text written for a terminal made fit to typeset: each hyphen-minus that is a number's sign becomes a
+    true minus (``T12 = -57.84 N·m``, ``∠ -124.29°``, ``(-57.84)``); hyphens in words stay (``two-force``).
+
+    Examples
+    --------
+    >>> typeset_minus("T3i = -379.4 N·m; F23 = 1972 N ∠ -124.29°; 166.8 + (-57.84); a two-force member")
+    'T3i = −379.4 N·m; F23 = 1972 N ∠ −124.29°; 166.8 + (−57.84); a two-force member'
+    """
+    return _SIGN.sub(MINUS, text)

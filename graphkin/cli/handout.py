@@ -2,7 +2,7 @@
 
 ::
 
-    graphkin handout PROBLEM [--at POS] [--key | --blank] -o out.pdf|out.html|out.md
+    graphkin handout PROBLEM [--at POS] [--key | --blank] [--detail compact|full] -o out.pdf|out.html|out.md
     graphkin handout EXERCISE --student ID [--secret S] [--key | --blank] -o out.pdf
     graphkin handout EXERCISE --roster roster.csv [--format pdf|html|md] [--key | --blank] -o DIR/
 
@@ -38,6 +38,9 @@ def add_parser(sub) -> None:
     version.add_argument("--key", action="store_true", help="everything: the worked solution (default for a problem)")
     version.add_argument("--blank", action="store_true", help="the free bodies to scale, with room to draw the "
                          "force polygons by hand (no answers)")
+    h.add_argument("--detail", choices=("compact", "full"), default="compact",
+                   help="a key as a textbook prints it (compact, the default), or every step walked through with "
+                        "the problem's notes on its source (full)")
     h.add_argument("--cs", type=float, metavar="CS", help="coefficient of speed fluctuation of a whole cycle's "
                    "flywheel (default: the exercise's, else 0.05)")
     h.add_argument("--format", choices=("pdf", "html", "md"), default=None,
@@ -63,7 +66,7 @@ def run(args) -> int:
         raise GraphkinError("--at: an exercise's position is part of the student's data; leave --at out")
     secret = _secret(args) if args.student else ""
     doc = handout.build(args.source, student=args.student, secret=secret, at=args.at, version=_version(args),
-                        Cs=args.cs)
+                        Cs=args.cs, detail=args.detail)
     written = handout.write(doc, args.output)
     extra = f" and {len(written) - 1} figures beside it" if len(written) > 1 else ""
     print(f"{doc['subtitle'].lower()} written to {written[-1]}{extra}", file=sys.stderr)

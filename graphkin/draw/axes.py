@@ -14,6 +14,8 @@ from matplotlib.transforms import TransformedPatchPath
 
 MM = 1e3
 """Metres to millimetres: every mechanism drawing is in mm."""
+PT_PER_MM = 72 / 25.4
+"""Typographic points per millimetre of paper."""
 
 
 class Drawn(list):
@@ -263,3 +265,34 @@ def set_limits(ax, pts, margin=0.08, existing=False):
 
 def had_content(ax) -> bool:
     return bool(ax.lines or ax.patches or ax.collections or ax.texts)
+
+
+def finish(ax, labeler, drawn, place: bool):
+    """Place a drawing's labels now, or leave them to whoever lays the figure out.
+
+    Labels are placed in display coordinates, so a drawing whose axes get
+    their printed size afterwards (:func:`graphkin.draw.paper.arrange`)
+    keeps its :class:`~graphkin.draw.labels.Labeler` on the axes and its
+    :class:`Drawn`, to be placed once the axes are where they will print.
+    """
+    if place:
+        labeler.place()
+        drawn += labeler.leaders
+    else:
+        ax._graphkin_labeler = labeler
+        ax._graphkin_drawn = drawn
+    return drawn
+
+
+def fit(ax, mm_per_unit: float, margin: float = 8.0):
+    """Size the figure of a lone axes so that one data unit prints ``mm_per_unit`` mm of paper.
+
+    The axes keep their limits and get exactly the size those limits take at that scale, with ``margin`` [mm]
+    of figure all round for labels that stand out; a figure saved cropped to what is drawn keeps the scale.
+    """
+    fig = ax.get_figure(root=True)
+    (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
+    w, h = abs(x1 - x0) * mm_per_unit, abs(y1 - y0) * mm_per_unit
+    W, H = w + 2 * margin, h + 2 * margin
+    fig.set_size_inches(W / 25.4, H / 25.4)
+    ax.set_position([margin / W, margin / H, w / W, h / H])

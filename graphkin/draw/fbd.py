@@ -8,7 +8,18 @@ import numpy as np
 
 from graphkin.draw import style as _style
 from graphkin.draw.arrows import arc_points, arrow, moment_arrow, perp, unit
-from graphkin.draw.axes import MM, Drawn, had_content, line, new_axes, points_per_unit, set_limits, setup_axes
+from graphkin.draw.axes import (
+    MM,
+    PT_PER_MM,
+    Drawn,
+    finish,
+    had_content,
+    line,
+    new_axes,
+    points_per_unit,
+    set_limits,
+    setup_axes,
+)
 from graphkin.draw.labels import Labeler, arrow_label_candidates, measuring_renderer, point_label_candidates, text_size
 from graphkin.draw.mechanism import NEAR, Geometry, _label_points, centre_of_mass, draw_link_body
 from graphkin.draw.scales import dimension, nice_round, scale_bar
@@ -98,8 +109,8 @@ def _color(kind, s):
     return {"unknown": s.unknown, "known": s.known, "inertia": s.known, "driver": s.driver}[kind]
 
 
-def draw_free_body(construction, link: int, *, ax=None, force_scale=None, title=True, unknowns=True,
-                   **style) -> Drawn:
+def draw_free_body(construction, link: int, *, ax=None, force_scale=None, title=True, unknowns=True, paper=None,
+                   bar=True, place=True, **style) -> Drawn:
     """The free-body diagram of one link.
 
     The link alone, every force on it as an arrow at its point of application
@@ -135,6 +146,15 @@ def draw_free_body(construction, link: int, *, ax=None, force_scale=None, title=
         effort). ``False`` leaves only what a student is given — the inertia
         resultant on its offset line, external loads, the scale bar — for an
         exercise in which they draw the polygon themselves.
+    paper : float, optional
+        Millimetres of paper per millimetre of the mechanism (1/k at 1:k), for a
+        drawing printed at a stated scale (:mod:`graphkin.draw.paper` sizes the
+        figure): sizes in points (arrowheads, gaps) are worked out for it.
+    bar : bool
+        Draw the force scale bar (a figure of several free bodies draws one for all).
+    place : bool
+        Place the labels now. False when the figure is laid out afterwards
+        (:func:`graphkin.draw.paper.arrange` places them once the axes have their printed size).
     **style
         Overrides of :class:`graphkin.draw.style.Style` fields.
 
@@ -156,8 +176,8 @@ def draw_free_body(construction, link: int, *, ax=None, force_scale=None, title=
     if link == mech.frame or link not in mech.moving:
         raise ValueError(f"link {link} is not a moving link of the mechanism (moving: {mech.moving})")
     if title:
-        title = f"Free body: {body.label}"
-        if _too_wide(ax, title, s, size=s.title_size, share=1.0):
+        title = title if isinstance(title, str) else f"Free body: {body.label}"
+        if not paper and _too_wide(ax, title, s, size=s.title_size, share=1.0):
             # A long link name in a small panel (the explorer's) would run into the next panel's title.
             title = title.replace(" (", "\n(", 1)
         ax.set_title(title, fontsize=s.title_size, color=s.ink)
@@ -209,7 +229,7 @@ def draw_free_body(construction, link: int, *, ax=None, force_scale=None, title=
     drawn.scale = force_scale
     ends = []
     placed = []
-    ppu = points_per_unit(ax, 1.4 * L)
+    ppu = paper * PT_PER_MM if paper else points_per_unit(ax, 1.4 * L)
     # Forces.
     for name, F, at, kind in loads["forces"]:
         F = np.asarray(F, float)
@@ -271,7 +291,7 @@ def draw_free_body(construction, link: int, *, ax=None, force_scale=None, title=
         lab.curve(arc, a.get_linewidth(), a.get_mutation_scale())
         extent += [X - 1.15 * r, X + 1.15 * r]
         text = f"{sub(name)} = {num(abs(T))} N·m {'CCW' if T > 0 else 'CW'}"
-        if _too_wide(ax, text, s):
+        if not paper and _too_wide(ax, text, s):
             # In a small panel (the explorer's) a long reading finds no spot clear of a long link: the unit and
             # the sense go on a second line.
             text = text.replace(" N·m ", "\nN·m ")
@@ -297,15 +317,21 @@ def draw_free_body(construction, link: int, *, ax=None, force_scale=None, title=
     arr = np.asarray(extent, float)
     lo, hi = arr.min(axis=0), arr.max(axis=0)
     span = float(np.max(hi - lo))
-    value = nice_round(0.22 * span * force_scale)
-    bar_at = np.array([lo[0], lo[1] - 0.1 * span])
-    drawn += scale_bar(ax, bar_at, value / force_scale, value, s=s, tick=0.012 * span, labeler=lab)
-    extent += [bar_at, bar_at + [value / force_scale, 0]]
+    if bar:
+        value = nice_round(0.22 * span * force_scale)
+        bar_at = np.array([lo[0], lo[1] - 0.1 * span])
+        drawn += scale_bar(ax, bar_at, value / force_scale, value, s=s, tick=0.012 * span, labeler=lab)
+        extent += [bar_at, bar_at + [value / force_scale, 0]]
     set_limits(ax, extent, margin=0.1, existing=existing)
-    _label_points(ax, geom, c, s, lab, drawn, False, None, only=link, near=NEAR / points_per_unit(ax, 1.2 * span))
-    lab.place()
-    drawn += lab.leaders
-    return drawn
+    if paper:
+        # Room for the labels around a small link, whatever its size on paper.
+        pad = 5.0 / paper
+        (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
+        ax.set_xlim(x0 - pad, x1 + pad)
+        ax.set_ylim(y0 - pad, y1 + pad)
+    near = NEAR / (ppu if paper else points_per_unit(ax, 1.2 * span))
+    _label_points(ax, geom, c, s, lab, drawn, False, None, only=link, near=near)
+    return finish(ax, lab, drawn, place)
 
 
 def _around(X, away, pads):

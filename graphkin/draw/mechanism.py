@@ -5,13 +5,15 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from matplotlib.patches import Circle, Polygon
+from matplotlib.patches import Circle, Polygon, Rectangle
 
 from graphkin.draw import style as _style
 from graphkin.draw.arrows import arc_points, perp, unit
 from graphkin.draw.axes import (
     MM,
+    PT_PER_MM,
     Drawn,
+    fit,
     had_content,
     line,
     markers,
@@ -24,6 +26,7 @@ from graphkin.draw.axes import (
 from graphkin.draw.labels import Labeler, point_label_candidates
 from graphkin.draw.scales import nice_round, scale_bar
 from graphkin.draw.text import sub
+from graphkin.graphical.paper import length_text
 from graphkin.model import GearMesh, Prismatic, Revolute
 
 PINION_TEETH = 16
@@ -399,7 +402,8 @@ def _rails(ax, geom: Geometry, j: Prismatic, s, out, labeler=None):
     return cl
 
 
-def draw_mechanism(construction, *, ax=None, labels=True, faint=False, emphasis=None, place=True, **style) -> Drawn:
+def draw_mechanism(construction, *, ax=None, labels=True, faint=False, emphasis=None, place=True, length_scale=None,
+                   room=False, bar=True, **style) -> Drawn:
     """Draw the mechanism to scale at the construction's position, in mm.
 
     Links are bars between their points (plates for ternary links), pins
@@ -424,6 +428,15 @@ def draw_mechanism(construction, *, ax=None, labels=True, faint=False, emphasis=
         Place the labels now. False when a drawing on top adds labels of its own and places them all
         (:func:`graphkin.draw.steps.draw_step_geometry` does): each placement lays every label out afresh,
         so placing the mechanism's alone first would be work thrown away.
+    length_scale : float, optional
+        k: print the drawing at 1:k (a true length of k mm printed 1 mm long; below 1, an enlargement). The
+        scale bar states it; on a figure of its own the figure is sized so that it prints at that scale
+        (:func:`graphkin.draw.paper.fit`); on a given ``ax``, the caller lays the figure out.
+    room : bool
+        Leave room for the points the construction finds (a point of concurrency), where a student draws the
+        lines of action to them; the points are not drawn.
+    bar : bool
+        Draw the length scale bar (a figure of several panels at one scale draws one for all).
     **style
         Overrides of :class:`graphkin.draw.style.Style` fields.
 
@@ -433,11 +446,13 @@ def draw_mechanism(construction, *, ax=None, labels=True, faint=False, emphasis=
         The artists; ``.labels`` maps point names to their texts.
     """
     s = _style.resolve(**style)
+    own = ax is None
     ax = new_axes(ax, (6.0, 4.5), s)
     existing = had_content(ax)
     setup_axes(ax)
     drawn = Drawn(ax)
     c = construction
+    paper = 1.0 / length_scale if length_scale else None
     if not c.points:
         t = ax.text(0.5, 0.5, f"No drawing: {c.reason or 'no geometry'}", transform=ax.transAxes, ha="center",
                     va="center", fontsize=s.label_size, color=s.unknown, wrap=True)
@@ -491,18 +506,34 @@ def draw_mechanism(construction, *, ax=None, labels=True, faint=False, emphasis=
         dot = markers(ax, *X, ms=3.6, color=s.ink, zorder=5.1, alpha=s.faint_alpha if faint else None)
         drawn.add(dot)
         lab.dot(X, 3.6)
+    if room:
+        centre = np.mean([p for d in geom.P.values() for p in d.values()], axis=0)
+        extent += [P for step in c.steps for P in (np.asarray(X, float) * MM for X in step.points.values())
+                   if np.all(np.isfinite(P)) and np.hypot(*(P - centre)) <= 3 * geom.size]
     # A length scale: the drawing is to scale, in mm.
     arr = np.asarray(extent, float)
     lo = arr.min(axis=0)
     value = nice_round(0.2 * geom.size)
-    bar_at = np.array([lo[0], lo[1] - 0.1 * geom.size])
-    drawn += scale_bar(ax, bar_at, value, value, s=s, unit_text="mm", tick=0.012 * geom.size, labeler=lab,
-                       alpha=s.faint_alpha if faint else None)
-    extent += [bar_at, bar_at + [value, 0.0]]
+    if paper:
+        # On paper a bar some 20–40 mm long reads best, whatever the scale.
+        value = nice_round(30.0 / paper)
+    if bar:
+        bar_at = np.array([lo[0], lo[1] - 0.1 * geom.size])
+        drawn += scale_bar(ax, bar_at, value, value, s=s, unit_text="mm", tick=0.012 * geom.size, labeler=lab,
+                           alpha=s.faint_alpha if faint else None,
+                           note=f"scale {length_text(length_scale)}" if paper else None)
+        extent += [bar_at, bar_at + [value, 0.0]]
     set_limits(ax, extent, margin=0.09, existing=existing)
+    if room:
+        # The room to draw in, framed: a worksheet's drawing area, kept whole when the figure is cropped.
+        drawn.add(ax.add_patch(Rectangle((0, 0), 1, 1, transform=ax.transAxes, fill=False, lw=0.6,
+                                         edgecolor=_style.GREY, zorder=0.5)))
+    if own and paper:
+        fit(ax, paper)
     if labels:
         view = float(np.max(np.ptp(np.asarray(extent, float), axis=0))) * 1.18
-        _label_points(ax, geom, c, s, lab, drawn, faint, emphasis, near=NEAR / points_per_unit(ax, view))
+        ppu = paper * PT_PER_MM if paper else points_per_unit(ax, view)
+        _label_points(ax, geom, c, s, lab, drawn, faint, emphasis, near=NEAR / ppu)
     if place:
         lab.place()
         drawn += lab.leaders

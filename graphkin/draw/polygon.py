@@ -8,7 +8,18 @@ import numpy as np
 
 from graphkin.draw import style as _style
 from graphkin.draw.arrows import arrow, perp, unit
-from graphkin.draw.axes import Drawn, had_content, line, markers, new_axes, points_per_unit, set_limits, setup_axes
+from graphkin.draw.axes import (
+    PT_PER_MM,
+    Drawn,
+    finish,
+    had_content,
+    line,
+    markers,
+    new_axes,
+    points_per_unit,
+    set_limits,
+    setup_axes,
+)
 from graphkin.draw.labels import Labeler, arrow_label_candidates, point_label_candidates
 from graphkin.draw.scales import nice_round, scale_bar
 from graphkin.draw.text import sub
@@ -30,7 +41,8 @@ def step_title(step, driver_name: str | None = None) -> str:
 
 
 def draw_force_polygon(step, *, scale: float, ax=None, origin=(0.0, 0.0), values=True, title=None,
-                       driver_name: str | None = None, scale_note=False, **style) -> Drawn:
+                       driver_name: str | None = None, scale_note=False, paper=None, bar=True, place=True,
+                       **style) -> Drawn:
     """Draw a step's force polygon, arrows tip to tail.
 
     Known loads are heavy with solid heads, the unknowns the step finds are
@@ -60,6 +72,13 @@ def draw_force_polygon(step, *, scale: float, ax=None, origin=(0.0, 0.0), values
         The driving effort's name (``"F12"``), drawn in the driver's colour.
     scale_note : bool
         Add the drawing scale to the scale bar's reading (``1 mm = 10 N``).
+    paper : float, optional
+        Millimetres of paper per unit of the drawing (1 when it is printed at
+        ``scale`` N per mm; :mod:`graphkin.draw.paper` sizes the figure).
+    bar : bool
+        Draw the scale bar (a figure of several polygons at one scale draws one for all).
+    place : bool
+        Place the labels now (see :func:`graphkin.draw.axes.finish`).
     **style
         Overrides of :class:`graphkin.draw.style.Style` fields.
 
@@ -94,7 +113,7 @@ def draw_force_polygon(step, *, scale: float, ax=None, origin=(0.0, 0.0), values
     verts = np.cumsum([start] + [np.asarray(a.vector, float) / scale for a, _ in shown], axis=0)
     span = float(np.max(np.ptp(verts, axis=0))) if len(verts) > 1 else 0.0
     span = span or 10.0
-    ppu = points_per_unit(ax, 1.5 * span)
+    ppu = paper * PT_PER_MM if paper else points_per_unit(ax, 1.5 * span)
     # One line? Then two lanes, LANE points either side of it.
     far = verts[int(np.argmax(np.hypot(*(verts - start).T)))]
     along = unit(far - start)
@@ -147,11 +166,18 @@ def draw_force_polygon(step, *, scale: float, ax=None, origin=(0.0, 0.0), values
         drawn.labels[name] = t
         drawn.add(t)
     lo = verts.min(axis=0)
-    value = nice_round(0.3 * span * scale)
-    bar_at = np.array([lo[0], lo[1] - 0.16 * span])
-    note = f"1 mm = {num(scale)} N" if scale_note else None
-    drawn += scale_bar(ax, bar_at, value / scale, value, s=s, tick=0.015 * span, labeler=lab, note=note)
-    set_limits(ax, list(verts) + [bar_at, bar_at + [value / scale, 0]], margin=0.2, existing=existing)
-    lab.place()
-    drawn += lab.leaders
-    return drawn
+    extent = list(verts)
+    if bar:
+        value = nice_round(0.3 * span * scale)
+        bar_at = np.array([lo[0], lo[1] - 0.16 * span])
+        note = f"1 mm = {num(scale)} N" if scale_note else None
+        drawn += scale_bar(ax, bar_at, value / scale, value, s=s, tick=0.015 * span, labeler=lab, note=note)
+        extent += [bar_at, bar_at + [value / scale, 0]]
+    set_limits(ax, extent, margin=0.2 if not paper else 0.0, existing=existing)
+    if paper:
+        # A margin of its own on paper: room for the labels around the polygon, whatever its size.
+        pad = 9.0 / paper
+        (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
+        ax.set_xlim(x0 - pad, x1 + pad)
+        ax.set_ylim(y0 - pad, y1 + pad)
+    return finish(ax, lab, drawn, place)

@@ -15,21 +15,11 @@ from graphkin.draw.labels import Labeler, point_label_candidates
 from graphkin.draw.mechanism import Geometry, draw_mechanism
 from graphkin.draw.polygon import draw_force_polygon, step_title
 from graphkin.draw.text import input_text, sub
+from graphkin.graphical.construction import STEP_TITLES
 from graphkin.notation import num
 
-KIND_TITLE = {
-    "resultant": "resultant of the known loads",
-    "two-force": "two-force member",
-    "three-force": "three-force member",
-    "line": "a known line of action",
-    "couple": "a couple balanced by a couple",
-    "polygon": "force polygon",
-    "superpose": "superposition",
-    "sub-problem": "a sub-problem of the superposition",
-    "readings": "what the sub-problem found",
-    "driver": "the input link",
-    "note": "note",
-}
+KIND_TITLE = STEP_TITLES
+"""A short title for each kind of step (:data:`graphkin.graphical.construction.STEP_TITLES`)."""
 
 FAR = 3.0
 """Points further than this many mechanism sizes from it are noted at the edge rather than drawn."""
@@ -40,13 +30,15 @@ def _wrap(text: str, width_in: float, size: float) -> str:
     return textwrap.fill(text, chars)
 
 
-def draw_step_geometry(construction, step, *, ax, **style) -> list:
+def draw_step_geometry(construction, step, *, ax, place=True, **style) -> list:
     """The step's lines of action and points, bold, on an axes that already shows the mechanism (in mm).
 
     Lines are drawn by role: a known load's line solid with an arrowhead for
     its sense, a known direction dashed, a found line dash-dot. Points far
     from the mechanism (a concurrency point nearly at infinity) are named in
-    a note instead of stretching the view. Returns the artists.
+    a note instead of stretching the view. With ``place=False`` the labels are
+    left for the figure's layout to place (:func:`graphkin.draw.paper.arrange`).
+    Returns the artists.
     """
     s = _style.resolve(**style)
     c = construction
@@ -108,6 +100,9 @@ def draw_step_geometry(construction, step, *, ax, **style) -> list:
                     color=s.found)
         out.append(t)
     set_limits(ax, extent, margin=0.1, existing=True)  # keeps the mechanism's own view (gears, ground)
+    if not place:
+        ax._graphkin_labeler = lab
+        return out
     lab.place()
     return out + lab.leaders
 

@@ -15,6 +15,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from graphkin.exercises.exercise import Question, dimension_of
+from graphkin.graphical.paper import reading_error
 from graphkin.model.names import parse_force_name
 from graphkin.notation import num, polar_text
 from graphkin.units import to_si
@@ -194,6 +195,26 @@ def _scale(solved, q: Question) -> float:
     return max(forces + [abs(c.effort) if kind == "driver_force" else 0.0])
 
 
+_READ = {"force": "force", "driver_force": "force", "inertia_force": "force", "concurrency": "length",
+         "h": "length", "driver_torque": "torque"}
+"""What a graphical answer of each kind is measured as on the worksheet."""
+
+
+def measured_as(q: Question) -> str | None:
+    """What a graphical answer is measured as on the worksheet (``"force"``, ``"length"``, ``"torque"``), or None."""
+    return _READ.get(q.kind) if q.route == "graphical" else None
+
+
+def measurable(solved, q: Question) -> float:
+    """The smallest error a graphical answer can be read to at the worksheet's printed scales [SI] (0 where the
+    kind is not measured off a drawing): :func:`graphkin.graphical.paper.reading_error`."""
+    what = measured_as(q)
+    c = solved.construction
+    if what is None or not c.valid:
+        return 0.0
+    return reading_error(c, what)
+
+
 def _span(c) -> float:
     """The mechanism's size at this position: the largest distance between two of its points [m]."""
     pts = np.array([p for link in c.points.values() for p in link.values()] or [(0.0, 0.0)])
@@ -278,6 +299,9 @@ def expected(variant, q: Question) -> Expected:
             slack = max(slack, float(np.max(grid)) if len(grid) else 0.0)
     else:
         floor = q.floor if q.floor is not None else 1e-3 * _scale(solved, q)
+        if q.route == "graphical":
+            # Measured off a printed drawing: no finer than a ruler reads at the worksheet's scales.
+            floor = max(floor, measurable(solved, q))
         size = _span(solved.construction) if form == "point" else abs(value)
         slack = max(q.tolerance * size, floor)
     hint = _hint(solved, q)

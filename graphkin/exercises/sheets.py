@@ -4,12 +4,14 @@ from __future__ import annotations
 
 import math
 
+from graphkin.notation import citation
+
 
 def format_sheet(sheet: dict) -> str:
     """A student's sheet (or key) as text."""
     lines = [sheet["title"], f"student: {sheet['student']}"]
     if sheet.get("source"):
-        lines.append(f"source: {sheet['source']}")
+        lines.append(f"source: {citation(sheet['source'])}")  # one line: the catalog's provenance is the teacher's
     if sheet.get("intro"):
         lines += ["", sheet["intro"].strip()]
     lines += ["", "Your data"]

@@ -162,6 +162,22 @@ def _force_of(forces: dict, i: int, j: int) -> np.ndarray:
     return F if i < j else -F
 
 
+STEP_TITLES = {
+    "resultant": "resultant of the known loads",
+    "two-force": "two-force member",
+    "three-force": "three-force member",
+    "line": "a known line of action",
+    "couple": "a couple balanced by a couple",
+    "polygon": "force polygon",
+    "superpose": "superposition",
+    "sub-problem": "a sub-problem of the superposition",
+    "readings": "what the sub-problem found",
+    "driver": "the input link",
+    "note": "note",
+}
+"""A short title for each kind of step, as a figure or a handout heads it."""
+
+
 def nice_scale(largest: float, length: float = 80.0) -> float:
     """A round force scale [N per mm of drawing] drawing ``largest`` [N] about ``length`` mm long.
 

@@ -31,7 +31,7 @@ from pathlib import Path
 
 from graphkin.errors import GraphkinError
 from graphkin.files import check_destination, write_bytes
-from graphkin.handout.content import VERSIONS, build
+from graphkin.handout.content import DETAILS, VERSIONS, build
 from graphkin.handout.html import render as page
 from graphkin.handout.markdown import render as md
 from graphkin.handout.typst import render as pdf
@@ -95,4 +95,4 @@ def write(doc: dict, path) -> list[Path]:
     return written
 
 
-__all__ = ["FORMATS", "VERSIONS", "build", "check_output", "format_of", "render", "write"]
+__all__ = ["DETAILS", "FORMATS", "VERSIONS", "build", "check_output", "format_of", "render", "write"]

@@ -42,16 +42,33 @@ cycle --json``); nothing is solved twice.
 from __future__ import annotations
 
 from graphkin.errors import GraphkinError
+from graphkin.graphical.paper import FIGURE_WIDTH, length_scale, mechanism_size
+from graphkin.handout import compact, scaled
 from graphkin.handout.document import Doc, Subject, subject
-from graphkin.handout.sections import convention, given, inertia, kinematics, loads, mechanism, questions, statement
-from graphkin.handout.solution import blank, cycle, forces, graphical, matrix
+from graphkin.handout.sections import (
+    convention,
+    given,
+    inertia,
+    kinematics,
+    loads,
+    mechanism,
+    notation,
+    own_data,
+    questions,
+    statement,
+)
+from graphkin.handout.solution import cycle, forces, graphical, matrix
+from graphkin.handout.worksheet import worksheet
+from graphkin.notation import citation
 
 VERSIONS = ("key", "sheet", "blank")
 """The versions of a handout: the worked solution, an exercise sheet, a worksheet with room to draw."""
+DETAILS = ("compact", "full")
+"""How much a key shows: as a textbook prints a solution (the default), or every step walked through."""
 
 
 # -- the document ---------------------------------------------------------------------------
-def build(source, *, student=None, secret="", at=None, version=None, Cs=None) -> dict:
+def build(source, *, student=None, secret="", at=None, version=None, Cs=None, detail="compact") -> dict:
     """The worked solution (or a student's sheet) as data, ready for any renderer.
 
     Parameters
@@ -68,13 +85,19 @@ def build(source, *, student=None, secret="", at=None, version=None, Cs=None) ->
         by default the problem's own (over a whole cycle: the position of
         the largest driving effort, and the cycle itself).
     version : {"key", "sheet", "blank"}, optional
-        ``"key"``: everything (the default for a problem); ``"sheet"``: the
+        ``"key"``: the solution (the default for a problem); ``"sheet"``: the
         data and the questions, no answers (the default for an exercise; for
-        a problem, the same as ``"blank"``); ``"blank"``: the sheet with the
-        free bodies drawn to the force scale and room to draw the polygons.
+        a problem, the same as ``"blank"``); ``"blank"``: a worksheet, with
+        the mechanism and the free bodies to scale and room to draw the polygons.
     Cs : float, optional
         Coefficient of speed fluctuation for the flywheel of a whole cycle
         (default: the exercise's, else :data:`DEFAULT_CS`).
+    detail : {"compact", "full"}
+        For a key: ``"compact"`` as a textbook prints a solution (the motion,
+        the inertia loads, the free bodies, the polygons with their equations,
+        the answers boxed); ``"full"`` every step walked through (the kinematics
+        loop by loop, the matrix [A]{x} = {b}, each step of the construction with
+        its own figure), with the problem's notes on its source.
 
     Returns
     -------
@@ -85,56 +108,124 @@ def build(source, *, student=None, secret="", at=None, version=None, Cs=None) ->
     version = version or ("sheet" if s.variant is not None else "key")
     if version not in VERSIONS:
         raise GraphkinError(f"version must be one of {', '.join(VERSIONS)}, got {version!r}")
+    if detail not in DETAILS:
+        raise GraphkinError(f"--detail must be one of {', '.join(DETAILS)}, got {detail!r}")
     if version == "sheet" and s.variant is None:
         version = "blank"  # a problem has no questions: its sheet is the blank worksheet
-    return _build(s, version)
+    return _build(s, version, detail)
 
 
-def _build(s: Subject, version: str) -> dict:
+def _build(s: Subject, version: str, detail: str) -> dict:
     doc = Doc()
     v = s.variant
     title = (v.exercise.title if v is not None else s.problem.title) or s.problem.name
     source = (v.exercise.source if v is not None else s.problem.source) or ""
+    full = detail == "full" and version == "key"
+    if not full:
+        # A student's page cites the book in one line; where the catalog read it is the teacher's (--detail full).
+        source = (s.problem.cite if v is None and s.problem.cite else "") or citation(source)
     what = {"key": "worked solution", "sheet": "exercise sheet", "blank": "worksheet"}[version]
     who = f"student {v.student}" if v is not None else ""
     worked = s.worked()
     out = {"title": title, "subtitle": ", ".join(x for x in (what.capitalize(), who) if x), "source": source,
-           "version": version, "problem": v.exercise.id if v is not None else s.problem.name,
+           "version": version, "detail": detail, "problem": v.exercise.id if v is not None else s.problem.name,
            "student": v.student if v is not None else None,
            "worked": [{"index": i, "q": float(s.result.kinematics.q[i]), "label": s.where(i)} for i in worked],
            "blocks": doc.blocks}
-    key = version == "key"
+    if full:
+        _full(doc, s, worked)
+    elif version == "key":
+        _compact(doc, s, worked)
+    elif version == "sheet" and not v.exercise.draw:
+        _sheet(doc, s, worked)
+    else:
+        _worksheet(doc, s, worked)
+    return out
+
+
+def _heading(doc: Doc, s: Subject, worked, i: int, word: str):
+    several = len(worked) > 1 or s.whole_cycle
+    doc.heading(1, f"{word} at {s.where(i)}" if several else word)
+
+
+def _compact(doc: Doc, s: Subject, worked):
+    statement(doc, s, "key", full=False, at=worked)
+    notation(doc, s)
+    given(doc, s, worked[0] if len(worked) == 1 else None)
+    if s.variant is not None:
+        questions(doc, s, answers=True)
     data = s.data()
-    statement(doc, s, version)
-    given(doc, s)
-    if v is not None:
-        questions(doc, s, answers=key)
-    convention(doc, s)
     for i in worked:
         entry = data["positions"][i]
-        c = s.construction(i)
-        doc.heading(1, f"{'Solution' if key else 'The position'} at {s.where(i)}"
-                    if len(worked) > 1 or s.whole_cycle else ("Solution" if key else "The position"))
+        _heading(doc, s, worked, i, "Solution")
         if not entry["valid"]:
             doc.text(f"The linkage has no solution here: {entry['reason']}.")
             continue
-        drawn = version == "blank" or (v is not None and v.exercise.draw)
-        if key or not drawn:  # the blank's figure of the free bodies shows the mechanism too
-            mechanism(doc, s, c, i)
-        if key:
-            kinematics(doc, s, entry, i)
-            if not s.static:
-                inertia(doc, s, entry, c, i)
-            loads(doc, s, entry)
-            matrix(doc, s, entry, i)
-            forces(doc, s, entry)
-            graphical(doc, s, entry, c)
-        else:
-            blank(doc, s, c, drawn=drawn)
-    if s.whole_cycle and s.crank and key:
+        compact.solution(doc, s, entry, s.construction(i), i)
+    if s.cycle_asked:
         cycle(doc, s)
-    elif s.whole_cycle and not key:
+
+
+def _full(doc: Doc, s: Subject, worked):
+    statement(doc, s, "key", full=True, at=worked)
+    given(doc, s, worked[0] if len(worked) == 1 else None)
+    if s.variant is not None:
+        questions(doc, s, answers=True)
+    convention(doc, s)
+    data = s.data()
+    for i in worked:
+        entry = data["positions"][i]
+        c = s.construction(i)
+        _heading(doc, s, worked, i, "Solution")
+        if not entry["valid"]:
+            doc.text(f"The linkage has no solution here: {entry['reason']}.")
+            continue
+        mechanism(doc, s, c, i)
+        kinematics(doc, s, entry, i)
+        if not s.static:
+            inertia(doc, s, entry, c, i)
+        loads(doc, s, entry)
+        matrix(doc, s, entry, i)
+        forces(doc, s, entry)
+        compact.crank_pin(doc, s, entry, i)
+        graphical(doc, s, entry, c, i)
+    if s.cycle_asked:
+        cycle(doc, s)
+
+
+def _sheet(doc: Doc, s: Subject, worked):
+    """An exercise's sheet: the statement, the student's data and their mechanism on the first page, then the
+    questions with room for the answers, then the rest of the data."""
+    statement(doc, s, "sheet", full=False, at=worked)
+    v = s.variant
+    own_data(doc, s)
+    for i in worked or [0]:
+        c = s.construction(i)
+        if c is not None and c.valid:
+            k = length_scale(mechanism_size(c), (FIGURE_WIDTH, 80.0))
+            doc.figure([scaled.mechanism(s, c, i, k)], f"Your mechanism at {s.where(i)}, drawn from your data. "
+                       + scaled.statement(k))
+    questions(doc, s, answers=False)
+    given(doc, s, worked[0] if len(worked) == 1 else None, own=False)
+    if s.whole_cycle and v.exercise.cycle:
         doc.heading(1, "Over the whole cycle")
-        doc.text(f"Solve every position of the file ({len(s.problem.q)} positions) and plot the driving "
-                 f"{'torque' if s.crank else 'force'} against the input; read off its extremes and mean.")
-    return out
+        n = s.cycle_positions or s.n
+        doc.text(f"Solve every position of the cycle ({n} positions) and plot the driving "
+                 f"{'torque' if s.crank else 'force'} against the input; read off what the questions ask.")
+
+
+def _worksheet(doc: Doc, s: Subject, worked):
+    v = s.variant
+    statement(doc, s, "blank", full=False, at=worked)
+    if v is not None:
+        own_data(doc, s)
+        questions(doc, s, answers=False)
+    given(doc, s, worked[0] if len(worked) == 1 else None, own=False)
+    data = s.data()
+    for i in worked:
+        entry = data["positions"][i]
+        _heading(doc, s, worked, i, "The position")
+        if not entry["valid"]:
+            doc.text(f"The linkage has no solution here: {entry['reason']}.")
+            continue
+        worksheet(doc, s, entry, s.construction(i), i, find=v is None)

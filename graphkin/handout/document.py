@@ -14,11 +14,11 @@ import numpy as np
 
 from graphkin import catalog, exercises
 from graphkin.errors import GraphkinError
-from graphkin.exercises.exercise import set_field
+from graphkin.exercises.exercise import CYCLE_KINDS, set_field
 from graphkin.exercises.variants import Variant
 from graphkin.graphical import construct_forces
 from graphkin.handout.figures import Picture
-from graphkin.notation import input_text
+from graphkin.notation import input_text, typeset_minus
 from graphkin.report import solution
 from graphkin.units import to_si
 
@@ -27,8 +27,9 @@ DEFAULT_CS = 0.05
 
 
 def runs(x) -> list:
-    """A cell or list item as runs: a str or a math node is one run, a tuple holds several."""
-    return list(x) if isinstance(x, tuple) else [x]
+    """A cell or list item as runs: a str or a math node is one run, a tuple holds several. A number's sign in
+    the text is a true minus (captions are written for terminals too, with a hyphen-minus)."""
+    return [typeset_minus(r) if isinstance(r, str) else r for r in (x if isinstance(x, tuple) else (x,))]
 
 
 class Doc:
@@ -41,19 +42,22 @@ class Doc:
     def heading(self, level: int, text: str):
         self.blocks.append({"kind": "heading", "level": level, "text": text})
 
-    def text(self, *runs):
+    def text(self, *parts):
         # A paragraph that ends with a colon introduces what follows: a page break between them would orphan it.
-        last = runs[-1] if runs else ""
-        self.blocks.append({"kind": "text", "runs": list(runs),
+        last = parts[-1] if parts else ""
+        self.blocks.append({"kind": "text", "runs": runs(parts),
                             "keep": isinstance(last, str) and last.rstrip().endswith(":")})
 
     def items(self, items, ordered=False):
         self.blocks.append({"kind": "list", "items": [runs(r) for r in items], "ordered": ordered})
 
-    def table(self, header, rows, align=None, caption=None):
+    def table(self, header, rows, align=None, caption=None, boxed=False, tall=False, small=False):
+        """``boxed``: framed, as a book boxes its answers; ``tall``: rows tall enough to write an answer in;
+        ``small``: a smaller type, for a table of many columns."""
         self.blocks.append({"kind": "table", "header": [runs(h) for h in header],
                             "rows": [[runs(c) for c in r] for r in rows],
-                            "align": align or "l" * len(header), "caption": caption})
+                            "align": align or "l" * len(header), "caption": caption, "boxed": boxed, "tall": tall,
+                            "small": small})
 
     def equation(self, *lines, small=False):
         self.blocks.append({"kind": "equation", "lines": list(lines), "small": small})
@@ -72,12 +76,13 @@ class Doc:
         if len(lead) < len(self.blocks) and self.blocks[-1 - len(lead)]["kind"] == "heading":
             for b in lead:
                 b["keep"] = True
-        self.blocks.append({"kind": "figure", "pictures": list(pictures), "caption": f"{label}. {caption}",
-                            "label": label})
+        self.blocks.append({"kind": "figure", "pictures": list(pictures),
+                            "caption": f"{label}. {typeset_minus(caption)}", "label": label})
         return label
 
-    def space(self, height: float, label: str, math=None):
-        self.blocks.append({"kind": "space", "height": height, "label": label, "math": math})
+    def space(self, height: float, label: str, math=None, width: float | None = None):
+        """Room to draw in by hand, ``height`` [mm] tall and ``width`` [mm] wide (None: the text width)."""
+        self.blocks.append({"kind": "space", "height": height, "label": label, "math": math, "width": width})
 
     def pagebreak(self):
         self.blocks.append({"kind": "pagebreak"})
@@ -118,10 +123,11 @@ class Subject:
             self._data = solution(self.problem, self.result, graphical)
         return self._data
 
-    def picture(self, key: str, draw, width: float = 1.0, alt: str = "", height: float = 80.0) -> Picture:
+    def picture(self, key: str, draw, width: float = 1.0, alt: str = "", height: float = 80.0,
+                natural=False) -> Picture:
         """The picture named ``key``, made once: a student's sheet and key share their drawings."""
         if key not in self._pictures:
-            self._pictures[key] = Picture(key, draw, width, alt, height)
+            self._pictures[key] = Picture(key, draw, width, alt, height, natural)
         return self._pictures[key]
 
     def worked(self) -> list[int]:
@@ -129,13 +135,25 @@ class Subject:
 
         Over a whole cycle the position of the largest |driving torque| (or
         force) among the file's own positions is worked out: the one a
-        designer sizes the parts for.
+        designer sizes the parts for. An exercise's key works out what its
+        questions ask: its position (the first of the problem's), or none
+        when every question is about the whole cycle.
         """
         r = self.result
+        v = self.variant
+        if v is not None:
+            return [] if all(q.kind in CYCLE_KINDS for q in v.exercise.questions) else [0]
         if not self.whole_cycle:
             return list(range(self.n))
         effort = np.where(r.valid, np.abs(r.effort), -np.inf)
         return [int(np.argmax(effort))] if np.isfinite(effort).any() else [0]
+
+    @property
+    def cycle_asked(self) -> bool:
+        """Whether the handout works out the whole cycle: a problem given over one, an exercise that asks about it."""
+        if not (self.whole_cycle and self.crank):
+            return False
+        return self.variant is None or self.variant.exercise.cycle
 
     def where(self, i: int) -> str:
         """``θ12 = 342°`` or ``s = 200 mm``: the input at position ``i``."""

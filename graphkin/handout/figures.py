@@ -31,10 +31,14 @@ class Picture:
         rather than filling a page.
     alt : str
         Alternative text: what the picture shows, for a reader who cannot see it.
+    natural : bool
+        Print the picture at its own size (a drawing at a stated scale: :mod:`graphkin.draw.paper` sized it
+        for the page), never scaled to ``width`` or ``height``: a scaled drawing's stated scale would be false.
     """
 
-    def __init__(self, key: str, draw, width: float = 1.0, alt: str = "", height: float = 80.0):
+    def __init__(self, key: str, draw, width: float = 1.0, alt: str = "", height: float = 80.0, natural=False):
         self.key, self.draw, self.width, self.alt, self.height = key, draw, width, alt, height
+        self.natural = natural
         self._svg: str | None = None
 
     def __repr__(self) -> str:
@@ -67,6 +71,14 @@ class Picture:
         return self._svg
 
 
+    def size(self) -> tuple[float, float]:
+        """Width and height [pt] the SVG states for itself (matplotlib writes them in points)."""
+        head = self.svg()[:2000]
+        w = re.search(r'<svg[^>]*\swidth="([0-9.]+)pt"', head, re.S)
+        h = re.search(r'<svg[^>]*\sheight="([0-9.]+)pt"', head, re.S)
+        return float(w[1]), float(h[1])
+
+
 _PROLOG = re.compile(r"^\s*<\?xml[^>]*\?>\s*(<!DOCTYPE[^>]*>\s*)?", re.S)
 _ID = re.compile(r'\bid="([^"]+)"')
 
@@ -82,6 +94,15 @@ def inline_svg(svg: str, prefix: str) -> str:
     svg = _PROLOG.sub("", svg)
     svg = re.sub(r"<metadata>.*?</metadata>\s*", "", svg, flags=re.S)
     svg = re.sub(r'\s+xmlns(:xlink)?="[^"]*"', "", svg)
+    # A figure of several panels may name two artists alike (each polygon's "polygon:F23"): in HTML every id is
+    # one element's, so a repeated name is numbered (such names are labels of artists, never referred to).
+    seen: dict = {}
+
+    def once(m):
+        n = seen[m[1]] = seen.get(m[1], 0) + 1
+        return m[0] if n == 1 else f'id="{m[1]}-{n}"'
+
+    svg = _ID.sub(once, svg)
     ids = set(_ID.findall(svg))
     if ids:
         svg = _ID.sub(lambda m: f'id="{prefix}-{m[1]}"', svg)

@@ -18,8 +18,8 @@ from graphkin.handout import maths as M
 from graphkin.handout.figures import inline_svg
 
 CSS = """
-body { font-family: "Libertinus Serif", "Linux Libertine", Georgia, serif; max-width: 52rem; margin: 2rem auto;
-       padding: 0 1rem; line-height: 1.45; color: #1a1a1a; }
+body { font-family: "Libertinus Serif", "Linux Libertine", Georgia, "DejaVu Serif", serif; max-width: 52rem;
+       margin: 2rem auto; padding: 0 1rem; line-height: 1.45; color: #1a1a1a; }
 header { text-align: center; margin-bottom: 2rem; }
 header h1 { margin-bottom: 0.2rem; }
 header .source { font-style: italic; font-size: 0.9rem; }
@@ -28,16 +28,35 @@ th, td { border: 1px solid #aaa; padding: 0.2rem 0.5rem; vertical-align: middle;
 th { background: #eee; }
 td.r, th.r { text-align: right; } td.c, th.c { text-align: center; }
 caption { caption-side: bottom; font-style: italic; font-size: 0.85rem; text-align: left; padding-top: 0.3rem; }
-math { font-family: "STIX Two Math", "Cambria Math", "Latin Modern Math", "New Computer Modern Math", math; }
-.eq { overflow-x: auto; margin: 0.5rem 0; }
+.boxed { display: inline-block; border: 2px solid #222; padding: 0.2rem 0.6rem; margin: 0.6rem 0; }
+/* A math font where the system has one (macOS, Windows, TeX Live, most Linux desktops); where it has none (DejaVu
+   alone), matrices and roots are drawn with borders below, so nothing needs a font's stretchy glyphs. */
+math { font-family: "STIX Two Math", "Cambria Math", "Latin Modern Math", "New Computer Modern Math",
+       "Libertinus Math", "DejaVu Math TeX Gyre", "TeX Gyre Termes Math", math, "DejaVu Serif", serif; }
+mtable.bmat, mtable.cmat { padding: 0.1em 0.4em; }
+mtable.bmat { background: linear-gradient(currentColor, currentColor) left top / 1px 100% no-repeat,
+  linear-gradient(currentColor, currentColor) left top / 0.3em 1px no-repeat,
+  linear-gradient(currentColor, currentColor) left bottom / 0.3em 1px no-repeat,
+  linear-gradient(currentColor, currentColor) right top / 1px 100% no-repeat,
+  linear-gradient(currentColor, currentColor) right top / 0.3em 1px no-repeat,
+  linear-gradient(currentColor, currentColor) right bottom / 0.3em 1px no-repeat; }
+mtable.cmat { border-left: 1px solid; border-right: 1px solid; border-radius: 0.6em / 1.2em; }
+mrow.radicand { border-top: 1px solid; padding-top: 0.1em; }
+.eq { overflow-x: auto; overflow-y: hidden; margin: 0.5rem 0; padding: 0.1rem 0; }
 .eq.small { font-size: 0.8rem; }
 figure { margin: 1rem 0; text-align: center; }
 figure .row { display: flex; gap: 1rem; align-items: center; justify-content: center; }
 figure svg { max-width: 100%; height: auto; }
 figcaption { font-size: 0.9rem; text-align: left; margin-top: 0.3rem; }
 .space { border: 1px solid #999; padding: 0.4rem; margin: 0.6rem 0; font-size: 0.9rem; }
-@media print { .pagebreak { break-after: page; } .space { break-inside: avoid; } figure { break-inside: avoid; }
-               h2, h3, h4, p.keep { break-after: avoid; } }
+/* Printed: A4 with the PDF's margins, so a drawing at its stated scale (its own size) fits the line; nothing
+   that one reads as a whole is split across two pages. */
+@page { size: A4; margin: 18mm 18mm 20mm 18mm; }
+@media print { body { max-width: none; margin: 0; padding: 0; font-size: 10pt; }
+               .pagebreak { break-after: page; }
+               .space, figure, .eq, table, .boxed, li { break-inside: avoid; }
+               h2, h3, h4, p.keep { break-after: avoid; }
+               .eq { overflow: visible; } }
 """
 
 
@@ -49,11 +68,38 @@ def _mathml(node, display: bool) -> str:
                             "pip install latex2mathml") from None
     out = convert(M.to_latex(node), display="block" if display else "inline")
     # HTML5 knows the MathML namespace: the address is dropped so that the file names none.
-    return re.sub(r'\s+xmlns="[^"]*"', "", out)
+    out = re.sub(r'\s+xmlns="[^"]*"', "", out)
+    return _borders(out)
+
+
+_FENCED = re.compile(r'<mrow><mo stretchy="true" fence="true" form="prefix">(\[|&#x0007B;)</mo>(<mtable>.*?</mtable>)'
+                     r'<mo stretchy="true" fence="true" form="postfix">(?:\]|&#x0007D;)</mo></mrow>', re.S)
+
+
+def _borders(mathml: str) -> str:
+    """Matrices' brackets and roots' bars drawn by CSS, not by a font's stretchy glyphs.
+
+    A browser stretches a bracket, or draws a root's bar, from the math font's MATH table; where the system has
+    no math font (DejaVu alone), a bracket stays one line tall beside a matrix of nine. Borders (the class
+    ``bmat``, ``cmat``, ``radicand`` in :data:`CSS`) look the same with any font.
+    """
+    def fence(m):
+        cls = "bmat" if m[1] == "[" else "cmat"
+        return m[2].replace("<mtable>", f'<mtable class="{cls}">', 1)
+
+    # Innermost first: a matrix inside another's cell is a whole <mtable>…</mtable> without a nested one.
+    while True:
+        new = _FENCED.sub(lambda m: fence(m) if "<mtable" not in m[2][7:] else m[0], mathml)
+        if new == mathml:
+            break
+        mathml = new
+    return mathml.replace("<msqrt>", '<mrow><mo>√</mo><mrow class="radicand">').replace("</msqrt>", "</mrow></mrow>")
+
 
 
 def _inline(runs) -> str:
-    return "".join(_html.escape(r, quote=False) if isinstance(r, str) else _mathml(r, False) for r in runs)
+    return "".join("<br>" if r == "\n" else _html.escape(r, quote=False) if isinstance(r, str) else _mathml(r, False)
+                   for r in runs)
 
 
 def _block(b: dict) -> str:
@@ -73,14 +119,17 @@ def _block(b: dict) -> str:
         body = "".join("<tr>" + "".join(f"<td{c}>{_inline(x)}</td>" for c, x in zip(cls, row)) + "</tr>"
                        for row in b["rows"])
         caption = f"<caption>{esc(b['caption'])}</caption>" if b.get("caption") else ""
-        return f"<table>{caption}<thead><tr>{head}</tr></thead><tbody>{body}</tbody></table>"
+        table = f"<table>{caption}<thead><tr>{head}</tr></thead><tbody>{body}</tbody></table>"
+        return f'<div class="boxed">{table}</div>' if b.get("boxed") else table
     if kind == "equation":
         small = " small" if b.get("small") else ""
         return "".join(f'<div class="eq{small}">{_mathml(line, True)}</div>' for line in b["lines"])
     if kind == "figure":
         pics = b["pictures"]
         total = sum(p.width for p in pics)
-        items = "".join(f'<div style="flex: {p.width / total:.3f} 1 0; max-width: {100 * p.width:.0f}%" role="img" '
+        items = "".join(f'<div class="natural" role="img" aria-label="{esc(p.alt)}">{inline_svg(p.svg(), p.key)}</div>'
+                        if p.natural else
+                        f'<div style="flex: {p.width / total:.3f} 1 0; max-width: {100 * p.width:.0f}%" role="img" '
                         f'aria-label="{esc(p.alt)}">{_sized(inline_svg(p.svg(), p.key), p.height)}</div>' for p in pics)
         return f'<figure><div class="row">{items}</div><figcaption>{esc(b["caption"])}</figcaption></figure>'
     if kind == "space":

@@ -21,7 +21,7 @@ def _text(s: str) -> str:
 
 
 def _inline(runs) -> str:
-    return "".join(_text(r) if isinstance(r, str) else f"${M.to_latex(r)}$" for r in runs)
+    return "".join("<br>" if r == "\n" else _text(r) if isinstance(r, str) else f"${M.to_latex(r)}$" for r in runs)
 
 
 def _block(b: dict, folder: str, files: dict) -> str:

@@ -9,12 +9,13 @@ An equation is plain data: nested lists whose first item names the node.
 ``["o", "="]``         an operator or punctuation: ``= + − · × ∠ ° , ;``
 ``["sub", b, s]``      b with subscript s
 ``["sup", b, s]``      b with superscript s
+``["subsup", b, s, p]``  b with subscript s and superscript p over it (F′₂₃)
 ``["frac", a, b]``     a over b
 ``["vec", a]``         a with an arrow over it (a vector)
 ``["abs", a]``         the absolute value: a between bars
 ``["sqrt", a]``        the square root of a
 ``["paren", a]``       (a), the parentheses as tall as a
-``["mat", rows, d]``   a matrix, rows of cells, delimiter ``"["`` or ``"("``
+``["mat", rows, d]``   a matrix, rows of cells, delimiter ``"["``, ``"("``, ``"{"`` or ``""`` (none)
 ``["row", *items]``    items one after the other
 ``["sp"]``             a thin space
 =====================  =====================================================
@@ -57,7 +58,7 @@ def fmt(x: float, digits: int = 4) -> str:
     >>> fmt(25.97834), fmt(-0.865942), fmt(7580.38), fmt(-0.0), fmt(123456.0), fmt(9.99996)
     ('25.98', '−0.8659', '7580', '0', '123500', '10')
     """
-    return notation.num(x, digits, nonfinite="—")
+    return notation.num(x, digits, nonfinite="—", power=True)
 
 
 def angle_of(v) -> float:
@@ -74,8 +75,11 @@ def i(name: str) -> list:
     return ["i", name]
 
 
+_POWER = re.compile(r"([−-]?[0-9.]+)×10\^([−-]?[0-9]+)")
+
+
 def n(value: float | str, digits: int = 4) -> list:
-    """A number node; a float is formatted with :func:`fmt`."""
+    """A number node; a float is formatted with :func:`fmt`. A power of ten is set as one: 5.347 × 10⁻⁵."""
     return ["n", value if isinstance(value, str) else fmt(value, digits)]
 
 
@@ -93,6 +97,11 @@ def sub(base, subscript) -> list:
 
 def sup(base, superscript) -> list:
     return ["sup", _node(base), _node(superscript, text=True)]
+
+
+def subsup(base, subscript, superscript) -> list:
+    """``base`` with a subscript and a superscript over it: F′₂₃ (a sub-problem's force)."""
+    return ["subsup", _node(base), _node(subscript, text=True), _node(superscript, text=True)]
 
 
 def frac(a, b) -> list:
@@ -139,7 +148,9 @@ def sym(letter: str, subscript: str | None = None) -> list:
     return i(letter) if not subscript else sub(i(letter), t(subscript))
 
 
-_NAME = re.compile(r"^([A-Za-z])_?([0-9][0-9A-Za-z,]*|[A-Z][0-9A-Za-z]*)([′″‴]?)$")
+_NAME = re.compile(r"^([A-Za-z])_?([0-9][0-9A-Za-z,]*|[A-Z][0-9A-Za-z]*)([′″‴⁗]|⁽[⁰¹²³⁴⁵⁶⁷⁸⁹]+⁾)?$")
+_PLAIN_DIGITS = str.maketrans("⁰¹²³⁴⁵⁶⁷⁸⁹⁽⁾", "0123456789()")
+_SUPERSCRIPT_DIGITS = str.maketrans("0123456789()", "⁰¹²³⁴⁵⁶⁷⁸⁹⁽⁾")
 
 
 def name(text: str) -> list:
@@ -152,8 +163,11 @@ def name(text: str) -> list:
     m = _NAME.match(text)
     if not m:
         return t(text)
-    # A superposition's part keeps its mark after the subscript: F23′ is F₂₃′.
-    return row(sym(m[1], m[2]), t(m[3])) if m[3] else sym(m[1], m[2])
+    # A superposition's part carries its mark as a superscript over the subscript, snug to the letter: F′₂₃,
+    # F⁗₂₃, F⁽⁵⁾₂₃ (the fifth and later marks spelled as superscript numbers).
+    if m[3]:
+        return subsup(i(m[1]), t(m[2]), t(m[3].translate(_PLAIN_DIGITS)))
+    return sym(m[1], m[2])
 
 
 def qty(value: float | str, unit: str, digits: int = 4) -> list:
@@ -190,6 +204,9 @@ _TYPST_OPS = {"·": "dot", "×": "times", "°": "degree", ",": "\\,", ";": "\\;"
               "/": "\\/", "∠": "thin ∠ thin", "Σ": "Σ"}
 
 
+_TYPST_PRIMES = {"′": "prime", "″": "prime.double", "‴": "prime.triple", "⁗": "prime.quad"}
+
+
 def _typst_text(s: str) -> str:
     return '"' + s.replace("\\", "\\\\").replace('"', '\\"') + '"'
 
@@ -202,6 +219,9 @@ def to_typst(node) -> str:
         return s if len(s) == 1 else f"italic({_typst_text(s)})"
     if kind == "n":
         text = node[1]
+        power = _POWER.fullmatch(text)
+        if power:
+            return f"{to_typst(['n', power[1]])} times 10^({to_typst(['n', power[2]])})"
         if not re.fullmatch(r"[−-]?[0-9.]+", text):
             return _typst_text(text)
         # A leading minus is the number's sign, not a subtraction: unary, so "∠ −73.78" is not spaced as "∠ − 73.78".
@@ -209,11 +229,15 @@ def to_typst(node) -> str:
     if kind == "t":
         return _typst_text(node[1])
     if kind == "o":
-        return _TYPST_OPS.get(node[1], node[1] if node[1] in "=+−<>≈∠→" else _typst_text(node[1]))
+        return _TYPST_OPS.get(node[1], node[1] if node[1] in "=+−<>≈∠→⇒±" else _typst_text(node[1]))
     if kind == "sub":
         return f"attach({to_typst(node[1])}, b: {to_typst(node[2])})"
     if kind == "sup":
         return f"attach({to_typst(node[1])}, t: {to_typst(node[2])})"
+    if kind == "subsup":
+        # Typst's own primes sit snug to the letter; the character ′ set as a superscript would float above it.
+        mark = _TYPST_PRIMES.get(node[3][1], to_typst(node[3])) if node[3][0] == "t" else to_typst(node[3])
+        return f"attach({to_typst(node[1])}, b: {to_typst(node[2])}, t: {mark})"
     if kind == "frac":
         return f"frac({to_typst(node[1])}, {to_typst(node[2])})"
     if kind == "vec":
@@ -225,7 +249,7 @@ def to_typst(node) -> str:
     if kind == "paren":
         return f"lr(( {to_typst(node[1])} ))"
     if kind == "mat":
-        delim = {"[": '"["', "(": '"("', "{": '"{"'}[node[2]]
+        delim = {"[": '"["', "(": '"("', "{": '"{"', "": "#none"}[node[2]]
         body = "; ".join(", ".join(to_typst(c) for c in r) for r in node[1])
         return f"mat(delim: {delim}, {body})"
     if kind == "row":
@@ -238,7 +262,7 @@ def to_typst(node) -> str:
 _GREEK = {"α": r"\alpha", "β": r"\beta", "γ": r"\gamma", "θ": r"\theta", "ω": r"\omega", "μ": r"\mu", "ρ": r"\rho",
           "σ": r"\sigma", "Σ": r"\Sigma", "Δ": r"\Delta", "τ": r"\tau", "φ": r"\varphi"}
 _LATEX_OPS = {"·": r"\cdot", "×": r"\times", "∠": r"\;\angle\;", "°": r"^{\circ}", "−": "-", ",": r",\ ", ";": ";",
-              "≈": r"\approx", "→": r"\rightarrow"}
+              "≈": r"\approx", "→": r"\rightarrow", "⇒": r"\Rightarrow", "±": r"\pm"}
 
 
 def _latex_text(s: str) -> str:
@@ -247,12 +271,24 @@ def _latex_text(s: str) -> str:
     return r"\text{" + s + "}"
 
 
+def _latex_mark(node) -> str:
+    """A sub-problem's mark as LaTeX: primes as \\prime (′ is no character LaTeX maths has), others as text."""
+    text = node[1] if node[0] == "t" else ""
+    primes = {"′": 1, "″": 2, "‴": 3, "⁗": 4}
+    if text in primes:
+        return r"\prime" * primes[text]
+    return to_latex(node)
+
+
 def to_latex(node) -> str:
     """The node as LaTeX math (for Markdown's ``$…$``, and MathML through ``latex2mathml``)."""
     kind = node[0]
     if kind == "i":
         return "".join(_GREEK.get(ch, ch) for ch in node[1]) if len(node[1]) == 1 else r"\mathit{" + node[1] + "}"
     if kind == "n":
+        power = _POWER.fullmatch(node[1])
+        if power:
+            return rf"{to_latex(['n', power[1]])} \times 10^{{{to_latex(['n', power[2]])}}}"
         text = node[1].replace(MINUS, "-")
         if not re.fullmatch(r"-?[0-9.]+", text):
             return _latex_text(node[1])
@@ -265,6 +301,8 @@ def to_latex(node) -> str:
         return f"{{{to_latex(node[1])}}}_{{{to_latex(node[2])}}}"
     if kind == "sup":
         return f"{{{to_latex(node[1])}}}^{{{to_latex(node[2])}}}"
+    if kind == "subsup":
+        return f"{{{to_latex(node[1])}}}_{{{to_latex(node[2])}}}^{{{_latex_mark(node[3])}}}"
     if kind == "frac":
         return rf"\frac{{{to_latex(node[1])}}}{{{to_latex(node[2])}}}"
     if kind == "vec":
@@ -278,7 +316,8 @@ def to_latex(node) -> str:
     if kind == "mat":
         # \left … \right rather than bmatrix: latex2mathml then marks the brackets as stretchy fences,
         # which browsers' MathML draws as tall as the matrix.
-        left, right = {"[": (r"\left[", r"\right]"), "(": (r"\left(", r"\right)"), "{": (r"\left\{", r"\right\}")}[node[2]]
+        left, right = {"[": (r"\left[", r"\right]"), "(": (r"\left(", r"\right)"), "{": (r"\left\{", r"\right\}"),
+                       "": ("", "")}[node[2]]
         body = r" \\ ".join(" & ".join(to_latex(c) for c in r) for r in node[1])
         return rf"{left}\begin{{matrix}} {body} \end{{matrix}}{right}"
     if kind == "row":
@@ -297,6 +336,8 @@ def to_text(node) -> str:
         return {",": ", ", "°": "°"}.get(node[1], f" {node[1]} ")
     if kind in ("sub", "sup"):
         return to_text(node[1]) + ("" if kind == "sub" else "^") + to_text(node[2])
+    if kind == "subsup":
+        return to_text(node[1]) + to_text(node[2]) + to_text(node[3]).translate(_SUPERSCRIPT_DIGITS)
     if kind == "frac":
         return f"({to_text(node[1])})/({to_text(node[2])})"
     if kind == "vec":

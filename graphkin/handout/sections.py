@@ -5,48 +5,98 @@ external loads."""
 from __future__ import annotations
 
 import math
+import re
 
 import numpy as np
 
 from graphkin.exercises.variants import pretty
+from graphkin.exercises.quantities import measured_as
+from graphkin.graphical.paper import (
+    FIGURE_WIDTH,
+    READING,
+    force_text,
+    length_scale,
+    length_text,
+    mechanism_size,
+    reading_error,
+    sheet_scales,
+)
 from graphkin.handout import maths as M
+from graphkin.handout import scaled
 from graphkin.handout.document import Doc, Subject
 from graphkin.handout.figures import Picture
 from graphkin.handout.loops import groups
 from graphkin.model import Revolute
+from graphkin.notation import num
 
 
 # -- sections ----------------------------------------------------------------------------------
-def statement(doc: Doc, s: Subject, version: str):
+def statement(doc: Doc, s: Subject, version: str, *, full: bool = False, at=()):
+    """What is asked: the exercise's statement with the student's values, the problem's notes (the full key,
+    for the teacher: they say how the catalog read the book), or the question in one sentence."""
     v = s.variant
     if v is not None and v.exercise.intro:
         doc.heading(1, "The exercise")
         for para in _paragraphs(v.sheet()["intro"]):
             doc.text(para)
-    elif s.problem.notes and version == "key":
-        # The notes of a catalog file say what is asked (and sometimes the book's answers: key only).
-        doc.heading(1, "The problem")
+        return
+    doc.heading(1, "The problem")
+    if full and s.problem.notes:
         for para in _paragraphs(s.problem.notes):
             doc.text(para)
+        return
+    how = ("a static force analysis: no inertia loads" if s.static else "inertia included (d'Alembert)")
+    what = f"the driving {'torque' if s.crank else 'force'} {s.mech.driver.symbol}"
+    if s.whole_cycle:
+        where = (f" Over the whole cycle, worked out in full at {s.where(at[0])}, where {what} is largest in size."
+                 if at else "")
+        doc.text(f"Find every joint force and {what}, {how}, both analytically and graphically.{where}")
     else:
-        doc.heading(1, "The problem")
-        how = ("a static force analysis: no inertia loads" if s.static else "inertia included (d'Alembert)")
-        doc.text(f"Find every joint force and the driving {'torque' if s.crank else 'force'} "
-                 f"{s.mech.driver.symbol}, {how}, both analytically and graphically.")
+        where = " and ".join(s.where(i) for i in at)
+        doc.text(f"At {where}, find every joint force and {what}, {how}, both analytically and graphically.")
+
+
+def notation(doc: Doc, s: Subject):
+    """The sign convention in one paragraph (the full key draws it)."""
+    doc.text("Notation: ", M.sym("F", "ij"), " is the force of link i on link j, ",
+             M.row(M.sym("F", "ji"), M.op("="), M.op("−"), M.sym("F", "ij")),
+             f". Link {s.mech.frame} is the frame. x to the right, y up; angles, ω, α and torques are positive "
+             "counter-clockwise; a force in polar form is its magnitude ∠ its direction from +x.")
 
 
 def _paragraphs(text: str) -> list[str]:
     return [" ".join(p.split()) for p in text.strip().split("\n\n") if p.strip()]
 
 
+_LONG = re.compile(r"(?<![\w.])(-?)(\d+\.\d+|\d+)(?:[eE]([-+]?\d+))?(?![\w.])")
+
+
+def _tidy(text: str) -> str:
+    """Numbers of a file's value as a handout prints them: 4 significant figures at most (``35342.917353`` →
+    ``35340``), a power of ten written out (``5.3466667e-5`` → ``5.347×10⁻⁵``) and a true minus."""
+
+    def one(m):
+        sign, digits, power = m[1], m[2], m[3]
+        significant = len(digits.replace(".", "").lstrip("0"))
+        if power is None and significant <= 4:
+            return (M.MINUS if sign else "") + digits
+        text = num(float(m[0]), 4, power=True)
+        return re.sub(r"\^([−-]?\d+)", lambda e: e[1].translate(_SUPERSCRIPT), text)
+
+    return _LONG.sub(one, text).replace("-", M.MINUS) if _LONG.search(text) else text
+
+
+_SUPERSCRIPT = str.maketrans("0123456789−-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻⁻")
+
+
 def _pretty(value) -> str:
     """A value of the problem file as written, in a book's notation (``"7.6 deg"`` → ``7.6°``)."""
     if isinstance(value, str):
-        return pretty(value)
+        return _tidy(pretty(value))
     if isinstance(value, bool):
         return "yes" if value else "no"
     if isinstance(value, (int, float)):
-        return f"{value:g}"
+        return _tidy(f"{value:g}")
     if isinstance(value, list):
         if len(value) == 2 and all(isinstance(x, str) for x in value):
             return f"({_pretty(value[0])}, {_pretty(value[1])})"
@@ -58,18 +108,45 @@ def _pretty(value) -> str:
             return f"{_pretty(value['magnitude'])} ∠ {_pretty(value['angle'])}"
         if {"start", "stop"} <= value.keys():
             step = f" in steps of {_pretty(value['step'])}" if "step" in value else ""
-            return f"{_pretty(value['start'])} to {_pretty(value['stop'])}{step}"
+            return f"from {_pretty(value['start'])} to {_pretty(value['stop'])}{step}"
         if {"from", "to"} <= value.keys():
             return f"from {_pretty(value['from'])} to {_pretty(value['to'])}"
-        return ", ".join(f"{k} = {_pretty(x)}" for k, x in value.items())
+        return ", ".join(f"{_SYMBOL.get(k, k)} = {_pretty(x)}" for k, x in value.items())
     return str(value)
 
 
-def _given_rows(raw: dict, frame_number: int) -> list[list[str]]:
+_SYMBOL = {"mass": "m", "theta": "θ", "omega": "ω", "alpha": "α", "s": "s", "v": "v", "a": "a", "mu": "μ",
+           "r": "r", "radius": "r", "width": "w", "height": "h", "thickness": "t", "length": "L", "density": "ρ"}
+"""A file's keys as the symbols a book writes."""
+
+
+def _driver_text(s: Subject, d: dict, i: int | None) -> str:
+    """The driver's data with a book's symbols: ``θ12 = 140°; ω12 = 900 rpm; α12 = 0 rad/s²``.
+
+    At a worked position (not over a whole cycle) the input is stated at that position: a file that lists
+    0°–358° worked out at 140° is worked out at 140°.
+    """
+    drv = s.mech.driver
+    ij = f"{drv.frame}{drv.link}"
+    names = ({"theta": f"θ{ij}", "omega": f"ω{ij}", "alpha": f"α{ij}"} if drv.crank else
+             {"s": "s", "v": "v", "a": "a"})
+    parts = []
+    for key, value in d.items():
+        if key in ("type", "link"):
+            continue
+        if key in ("theta", "s") and i is not None and not s.whole_cycle:
+            parts.append(s.where(i))
+            continue
+        parts.append(f"{names.get(key, key)} = {_pretty(value)}" if not isinstance(value, dict) or
+                     {"start", "stop"} > value.keys() else f"{names.get(key, key)} {_pretty(value)}")
+    return "; ".join(parts)
+
+
+def _given_rows(s: Subject, raw: dict, frame_number: int, i: int | None = None) -> list[list[str]]:
     """The problem file's data, one row per frame, link, joint, driver and load, in the file's units."""
     rows = []
     if raw.get("gravity") is not None:
-        rows.append(["gravity", _pretty(raw["gravity"])])
+        rows.append(["gravity", f"g = {_pretty(raw['gravity'])}, along −y"])
     frame = raw.get("frame", {})
     if frame.get("points"):
         rows.append([f"frame (link {frame_number})", "; ".join(f"{k} = {_pretty(p)}" for k, p in frame["points"].items())])
@@ -93,14 +170,15 @@ def _given_rows(raw: dict, frame_number: int) -> list[list[str]]:
                     f"{j.get('through')} at {_pretty(j.get('direction', '0 deg'))}")
             if "mu" in j:
                 text += f", μ = {_pretty(j['mu'])}"
+        elif kind == "gear":
+            text = "; ".join(f"{_SYMBOL.get(k, k)} = {_pretty(x)}" for k, x in j.items() if k != "type")
         else:
-            text = "; ".join(f"{k} = {_pretty(x)}" for k, x in j.items() if k != "type")
+            text = "; ".join(f"{_SYMBOL.get(k, k)} = {_pretty(x)}" for k, x in j.items() if k != "type")
         rows.append([f"{kind} joint", text])
     d = raw.get("driver", {})
     if d:
-        text = "; ".join(f"{k} = {_pretty(x)}" for k, x in d.items() if k not in ("type", "link"))
         kind = f" ({d['type']})" if d.get("type") else ""
-        rows.append([f"driver, link {d.get('link', '?')}{kind}", text])
+        rows.append([f"driver, link {d.get('link', '?')}{kind}", _driver_text(s, d, i)])
     for ld in raw.get("loads", []):
         where = f"on link {ld.get('link')}" + (f" at {ld['point']}" if "point" in ld else "")
         value = _pretty(ld.get("force", ld.get("torque", "")))
@@ -114,20 +192,27 @@ def _given_rows(raw: dict, frame_number: int) -> list[list[str]]:
             when += f", sense: {ld['sense']}"
         rows.append([f"{ld.get('type', 'load')} {ld.get('name', '')}".strip(), f"{value} {where}{when}"])
     for link, values in raw.get("given", {}).items():
-        rows.append([f"given, link {link}", "; ".join(f"{k} = {_pretty(x)}" for k, x in values.items())])
+        rows.append([f"given, link {link}", "; ".join(f"{_SYMBOL.get(k, k)} = {_pretty(x)}" for k, x in values.items())])
     return rows
 
 
-def given(doc: Doc, s: Subject):
-    doc.heading(1, "Given")
+def own_data(doc: Doc, s: Subject):
+    """A student's own values."""
     v = s.variant
     if v is not None and v.data:
         doc.table(["your data", "value"], [[f"{g.label} {g.symbol}".strip() if g.label else g.symbol,
                                              g.shown.split(" = ", 1)[1]] for g in v.data], "lr",
-                  caption="Your own values (the rest of the data below is the same for everyone)")
-    rows = _given_rows(s.raw, s.mech.frame)
+                  caption="Your own values (the rest of the data is the same for everyone)")
+
+
+def given(doc: Doc, s: Subject, i: int | None = None, own: bool = True):
+    doc.heading(1, "Given" if own else "The data")
+    if own:
+        own_data(doc, s)
+    rows = _given_rows(s, s.raw, s.mech.frame, i)
     if rows:
-        doc.table(["item", "data (units as in the problem file)"], rows, "ll")
+        doc.table(["item", "data"], rows, "ll", caption="Points in each link's own frame; angles from +x, "
+                  "counter-clockwise positive")
     if s.static:
         doc.text("A static analysis: the links' masses play no part (no inertia loads), so none are needed.")
         return
@@ -140,24 +225,46 @@ def given(doc: Doc, s: Subject):
 
 
 def questions(doc: Doc, s: Subject, answers: bool):
+    """The questions: with the answers and hints (a key), or with room for the student's answers (a sheet).
+
+    A graphical question's tolerance states both what the exercise allows and what a ruler reads at the
+    worksheet's printed scale (:func:`graphkin.graphical.paper.reading_error`): the grader allows the larger.
+    """
     v = s.variant
     sheet = v.key() if answers else v.sheet()
     doc.heading(1, "Questions" if not answers else "Questions and answers")
     rows = []
-    for q in sheet["questions"]:
-        unit = q["unit"].replace("*", "·").replace("^2", "²") or "no unit"
-        tol = f"{100 * q['tolerance']:g} %"
-        if q["form"] == "direction":
-            tol = "the step of the sweep" if q["part"] == "at" else f"{math.degrees(math.atan(q['tolerance'])):.2g}°"
-        row = [q["id"], q["ask"], f"{unit}, within {tol}, {q['points']:g} pt"]
-        if answers:
-            a = q["answer"]
-            row += [a["text"]]
+    c = v.construction if any(q.route == "graphical" for q in v.exercise.questions) else None
+    for q, data in zip(v.exercise.questions, sheet["questions"]):
+        unit = data["unit"].replace("*", "·").replace("^2", "²").replace("^3", "³") or "no unit"
+        tol = f"{100 * data['tolerance']:g} %"
+        if data["form"] == "direction":
+            tol = "the step of the sweep" if data["part"] == "at" else \
+                f"{math.degrees(math.atan(data['tolerance'])):.2g}°"
+        elif q.route == "graphical" and c is not None and c.valid:
+            tol += _reading(c, q)
+        row = [data["id"], data["ask"], f"{unit}, within {tol}, {data['points']:g} pt"]
+        row += [data["answer"]["text"]] if answers else [""]
         rows.append(row)
-    header = ["id", "question", "unit, tolerance, points"] + (["answer"] if answers else [])
-    doc.table(header, rows, "llll" if answers else "lll")
+    header = ["id", "question", "unit, tolerance, points", "answer" if answers else "your answer"]
+    doc.table(header, rows, "llll", tall=not answers, boxed=not answers)
     if answers:
         doc.items([f"{q['id']}: {q['answer']['hint']}" for q in sheet["questions"] if q["answer"].get("hint")])
+
+
+def _reading(c, q) -> str:
+    """`` or ±2.5 N (±0.5 mm at 1 mm = 5 N), the larger``: what a ruler reads at the worksheet's scale."""
+    what = measured_as(q)
+    error = reading_error(c, what) if what else 0.0
+    if not error > 0:
+        return ""
+    scales = sheet_scales(c)
+    if q.kind in ("concurrency", "h"):
+        return (f" or ±{M.fmt(error * 1e3)} mm (±{READING:g} mm on the drawing at {length_text(scales.length)}), "
+                "the larger")
+    if q.kind == "driver_torque":
+        return f" or ±{M.fmt(error)} N·m (a reading to ±{READING:g} mm on each drawing), the larger"
+    return f" or ±{M.fmt(error)} N (±{READING:g} mm at {force_text(scales.polygon)}), the larger"
 
 
 _CONVENTION: list[Picture] = []
@@ -194,11 +301,9 @@ def convention(doc: Doc, s: Subject):
 
 
 def mechanism(doc: Doc, s: Subject, c, i: int):
-    from graphkin import draw
-
-    label = doc.figure([s.picture(f"mechanism-{i}", lambda: draw.draw_mechanism(c), 0.7,
-                                f"the mechanism at {s.where(i)}", 75)],
-                       f"The mechanism at {s.where(i)}, drawn to scale, with its centres of mass.")
+    k = length_scale(mechanism_size(c), (FIGURE_WIDTH, 90.0))
+    label = doc.figure([scaled.mechanism(s, c, i, k)],
+                       f"The mechanism at {s.where(i)}, with its centres of mass. {scaled.statement(k)}")
     doc.text(f"{label} shows the linkage at {s.where(i)}.")
 
 
@@ -302,9 +407,10 @@ def inertia(doc: Doc, s: Subject, entry: dict, c, i: int):
                          f"G{link} is {sense}, as T{link}i is.")
 
 
-def loads(doc: Doc, s: Subject, entry: dict):
-    """The external loads at this position, when any of them changes with the position (a table, a sense)."""
-    if not any(ld.varies for ld in s.mech.loads):
+def loads(doc: Doc, s: Subject, entry: dict, always: bool = False):
+    """The external loads at this position, when any of them changes with the position (a table, a sense), or
+    ``always`` (a worksheet states every load it is worked with)."""
+    if not entry["loads"] or not (always or any(ld.varies for ld in s.mech.loads)):
         return  # the given data already says what they are
     doc.heading(2, "External loads here")
     rows = []

@@ -9,13 +9,14 @@ import numpy as np
 
 from graphkin.analytical.matrix import assemble
 from graphkin.cycle import sweep
+from graphkin.graphical.construction import STEP_TITLES
+from graphkin.graphical.paper import force_text, length_scale, length_text, mechanism_size
 from graphkin.handout import maths as M
+from graphkin.handout import scaled
+from graphkin.handout.compact import polygon_equation
 from graphkin.handout.document import Doc, Subject
+from graphkin.notation import unless_rounding
 from graphkin.report import cycle_data
-
-BLANK_SPACE = 75.0
-"""Height of the empty room left for each force polygon in the blank version [mm]."""
-
 
 def _clean(x, scale, rel=1e-12):
     """Values below ``rel`` × ``scale`` set to 0: rounding noise (1e-17 where a lever arm is zero) would hide
@@ -41,15 +42,46 @@ def matrix(doc: Doc, s: Subject, entry: dict, i: int):
              f"{', '.join(map(str, s.mech.moving))} in turn; one column per unknown. Force columns in N, "
              "moment rows in N·m (lever arms in m); {b} holds the known loads moved across "
              + ("(−ΣF_ext, −ΣM_ext; static: no inertia terms)." if s.static else "(m a_G − ΣF_ext, I_G α − ΣM_ext)."))
+    doc.text("The unknowns: ", *_definitions(s, system.unknowns))
     cells = [[M.n(v) for v in r] for r in A]
     unknowns = [_unknown(u) for u in system.unknowns]
-    doc.equation(M.row(M.mat(cells), M.column(unknowns), M.op("="), M.column([M.n(v) for v in b])), small=True)
+    # Each row named by the equation it is (link 3: ΣFx), to the left of the matrix.
+    labels = M.mat([[M.t(e.replace(": ", " "))] for e in system.equations], "")
+    doc.equation(M.row(labels, M.mat(cells), M.column(unknowns), M.op("="), M.column([M.n(v) for v in b])),
+                 small=True)
     doc.text("Solved:")
     rows = []
     for u, value in zip(system.unknowns, x):
         unit = "N·m" if u[0] in "CT" else "N"  # couples of sliding pairs and the crank's torque
         rows.append([_unknown(u), M.qty(value, unit)])
     doc.table(["unknown", "value"], rows, "lr")
+
+
+def _definitions(s: Subject, unknowns) -> list:
+    """What each kind of unknown of the matrix is, as runs of a sentence."""
+    out, seen = [], set()
+    for u in unknowns:
+        letter, rest = u[0], u[1:]
+        if u == s.mech.driver.symbol:
+            text = [M.name(u), f" the driving {'torque [N·m]' if s.crank else 'force along the guide [N]'}"]
+        elif letter == "F" and rest[-1:] in ("x", "y"):
+            if rest[:-1] in seen:
+                continue
+            seen.add(rest[:-1])
+            i, j = rest[0], rest[1:-1]
+            text = [M.sym("F", rest[:-1] + "x"), ", ", M.sym("F", rest[:-1] + "y"),
+                    f" the components of the force of link {i} on link {j} at their pin [N]"]
+        elif letter == "N":
+            text = [M.sym("N", rest), f" the normal force of the sliding pair of links {rest[0]} and {rest[1:]} "
+                    f"(across the guide, on link {rest[1:]}) [N]"]
+        elif letter == "C":
+            text = [M.sym("C", rest), f" the couple link {rest[0]} applies to link {rest[1:]} through their sliding "
+                    "pair [N·m]"]
+        else:
+            text = [M.sym(letter, rest), f" the tooth force of link {rest[0]} on link {rest[1:]}, along the "
+                    "pressure line [N]"]
+        out += (["; "] if out else []) + text
+    return out + ["."]
 
 
 def _system(s: Subject):
@@ -82,69 +114,61 @@ def forces(doc: Doc, s: Subject, entry: dict):
                  M.qty(p["friction"], "N"), f"; its line acts {where}.")
 
 
-def _polygon_equation(step) -> list:
-    items = []
-    for k, a in enumerate(step.polygon):
-        if k:
-            items.append(M.op("+"))
-        items.append(M.vec(M.name(a.name)))
-    return M.row(*items, M.op("="), M.n("0"))
-
-
-def graphical(doc: Doc, s: Subject, entry: dict, c):
-    from graphkin import draw
-    from graphkin.draw.steps import KIND_TITLE, draw_step_geometry
-
+def graphical(doc: Doc, s: Subject, entry: dict, c, i: int):
+    """The graphical route step by step, every figure at the scales it states."""
     g = entry.get("graphical", {})
     doc.heading(2, "The graphical route")
     if c is None or not c.valid:
         doc.text(f"The construction cannot be drawn here: {g.get('reason') or (c.reason if c else '')}.")
         return
-    scale = c.force_scale
-    doc.text("Force polygons are drawn to the scale 1 mm = ", M.qty(scale, "N"), ". The free bodies first, "
-             "every force on each link" + ("" if s.static else ", with the inertia resultant on its offset line")
-             + ":")
-    pics = [s.picture(f"fbd-{link}", lambda link=link: draw.draw_free_body(c, link), 1 / 3,
-                    f"free body of link {link}", 70) for link in s.mech.moving]
-    for k in range(0, len(pics), 3):
-        part = pics[k:k + 3]
-        links = s.mech.moving[k:k + 3]
-        doc.figure(part, "Free bodies of " + ", ".join(f"link {n}" for n in links) + ", with every force found.")
-    for k, step in enumerate(c.steps, start=1):
+    links = list(s.mech.moving)
+    k_fb, X_fb = scaled.free_body_scales(c, links)
+    doc.text("The free bodies first, every force on each link"
+             + ("" if s.static else ", with the inertia resultant on its offset line") + ":")
+    doc.figure([scaled.free_bodies(s, c, i, links, k_fb, X_fb)],
+               "Free bodies of every moving link, with every force found. " + scaled.statement(k_fb, X_fb))
+    drawn = [st for st in c.steps if st.kind not in _TEXT_ONLY and st.kind != "sub-problem"]
+    k = max([length_scale(mechanism_size(c, points=list(st.points.values())), _STEP_ROOM) for st in drawn] or [1.0])
+    X = scaled.polygon_scale(drawn, _POLYGON_ROOM)
+    doc.text(f"Each step below is drawn on the mechanism at {length_text(k)}, its polygon at {force_text(X)}.")
+    for n, step in enumerate(c.steps, start=1):
         sub = getattr(step, "sub", "")
         if step.kind == "sub-problem":
             # A book announces each sub-problem before its steps: a heading of its own.
             doc.heading(3, f"Sub-problem {sub}: only the loads on link {step.link}")
-            doc.text(f"Step {k}. {step.caption}")
+            doc.text(f"Step {n}. {step.caption}")
             continue
         if step.kind in _TEXT_ONLY:
-            doc.text(f"Step {k}. {step.caption}")
+            doc.text(f"Step {n}. {step.caption}")
             continue
         where = f"link {step.link}: " if step.link is not None else ""
-        title = KIND_TITLE.get(step.kind, step.kind)
-        doc.heading(3, f"Step {k}. {where}{title}" + (f" (sub-problem {sub})" if sub else ""))
-        pics = []
-        if _draws_geometry(step, s.mech.driver.link):
-            def geometry(step=step):
-                # The step places the mechanism's labels with its own: placing them alone first is work lost.
-                d = draw.draw_mechanism(c, faint=True, emphasis=step.link, place=False)
-                draw_step_geometry(c, step, ax=d.ax)
-                return d
-
-            pics.append(s.picture(f"step-{k}", geometry, 0.58 if step.polygon else 0.7,
-                                  f"step {k}: the lines of action", 75))
-        if step.polygon:
-            pics.append(s.picture(f"polygon-{k}", lambda step=step: draw.draw_force_polygon(
-                step, scale=scale, title=False, driver_name=c.driver_name), 0.4 if pics else 0.5,
-                f"step {k}: the force polygon", 75))
-        if pics:
-            doc.figure(pics, step.caption)
+        title = STEP_TITLES.get(step.kind, step.kind)
+        doc.heading(3, f"Step {n}. {where}{title}" + (f" (sub-problem {sub})" if sub else ""))
+        geometry = _draws_geometry(step, s.mech.driver.link)
+        if step.kind == "resultant":
+            total = scaled.resultant_step(c, step)
+            if total is not None:
+                # The resultant the later steps use, drawn as the sum it is (R3 = R3i + Fc3).
+                doc.figure([scaled.step(s, c, i, n, step, k, X, extra=total)],
+                           f"{step.caption} {scaled.statement(k, X)}")
+                continue
+        if geometry:
+            doc.figure([scaled.step(s, c, i, n, step, k, X)],
+                       f"{step.caption} {scaled.statement(k, X if step.polygon else None)}")
+        elif step.polygon:
+            doc.figure([scaled.polygons(s, f"polygon-{i}-{n}", [step], X, c.driver_name, [""])],
+                       f"{step.caption} {scaled.statement(None, X)}")
         else:
             doc.text(step.caption)
         if step.polygon:
-            doc.equation(_polygon_equation(step))
+            doc.equation(polygon_equation(step))
     _subproblems(doc, s, entry)
     _both_routes(doc, s, entry)
+
+
+_STEP_ROOM = (100.0, 85.0)
+"""Room for the mechanism's panel of a step's figure [mm] (its polygon goes beside it)."""
+_POLYGON_ROOM = (58.0, 80.0)
 
 
 _TEXT_ONLY = {"note", "readings"}
@@ -174,23 +198,26 @@ def _subproblems(doc: Doc, s: Subject, entry: dict):
         return
     r = s.result
     names = [r.name_of(a, b) for a, b in r.forces]
-    header = ["force"] + [f"sub-problem {sp['label']} (link {sp['link']})" for sp in subs] + ["sum"]
+    header = ["force"] + [(f"sub-problem {sp['label']}", "\n", f"(link {sp['link']})") for sp in subs] + ["sum"]
     rows = []
     for name in names:
-        rows.append([M.name(name)] + [M.polar(M.size_of(sp["forces"][name]), M.angle_of(sp["forces"][name]), "N")
-                                      for sp in subs]
-                    + [M.polar(M.size_of(g["forces"][name]), M.angle_of(g["forces"][name]), "N")])
+        rows.append([M.name(name)] + [_stacked(sp["forces"][name]) for sp in subs] + [_stacked(g["forces"][name])])
     unit = "N·m" if s.crank else "N"
     d = g["driver"]
     rows.append([M.name(d["name"])] + [M.qty(sp["driver"]["value"], unit) for sp in subs] + [M.qty(d["value"], unit)])
     doc.table(header, rows, "l" + "r" * (len(subs) + 1),
-              caption="Superposition: each sub-problem's forces and driving effort, and their sum")
+              caption="Superposition: each sub-problem's forces and driving effort, and their sum", small=len(subs) > 2)
 
 
-def _reldiff(d: float) -> str:
+def _stacked(F) -> tuple:
+    """A force in a narrow cell: its magnitude over its direction (a table of many columns stays in the page)."""
+    return (M.qty(M.size_of(F), "N"), "\n", M.row(M.op("∠"), M.n(M.fmt_fixed(M.angle_of(F))), M.op("°")))
+
+
+def _reldiff(d: float):
     if not math.isfinite(d):
         return "—"
-    return "0" if d == 0 else f"{d:.1e}".replace("-", M.MINUS)
+    return M.n(0.0) if d == 0 else M.n(d, 2)
 
 
 def _both_routes(doc: Doc, s: Subject, entry: dict):
@@ -211,25 +238,6 @@ def _both_routes(doc: Doc, s: Subject, entry: dict):
                       "so the two routes agree to rounding.")
     for w in g["warnings"]:
         doc.text(f"Warning: {w}")
-
-
-def blank(doc: Doc, s: Subject, c, drawn: bool):
-    from graphkin import draw
-
-    if c is None or not c.valid:
-        return
-    scale = c.force_scale
-    if drawn:
-        doc.heading(2, "Free bodies")
-        label = doc.figure([s.picture("given", lambda: draw.draw_given(c), 1.0,
-                                    "the mechanism and the free bodies with their known loads", 85)],
-                           "The free bodies to scale with the known loads ("
-                           + ("" if s.static else "the inertia resultant on its offset line, ")
-                           + "external loads) and the force scale; the joint forces are yours to find.")
-        doc.text("Draw the polygons at 1 mm = ", M.qty(scale, "N"), f" ({label}); step by step:")
-        for k, step in enumerate(c.steps, start=1):
-            if step.polygon:
-                doc.space(BLANK_SPACE, f"Step {k}. Force polygon of link {step.link}: ", _polygon_equation(step))
 
 
 # -- a whole cycle ------------------------------------------------------------------------------------
@@ -267,9 +275,11 @@ def cycle(doc: Doc, s: Subject):
         doc.text("Norton §11.11: the energy of each pulse of T − T_avg between its crossings of the average, "
                  "accumulated from the first crossing; E is the largest swing of the accumulated energy.")
         ends = fw["crossings"][1:] + fw["crossings"][:1]
+        # The pulses add up to zero over a turn: the last accumulated energy is 0 but for rounding (5.7e−14 J).
+        swing = max([abs(x) for x in fw["areas"]] + [0.0])
         rows = [[str(k + 1), M.n(M.fmt_fixed(deg(a) % 360, 1)), M.n(M.fmt_fixed(deg(b) % 360, 1)), M.n(area),
-                 M.n(acc)] for k, (a, b, area, acc) in enumerate(zip(fw["crossings"], ends, fw["areas"],
-                                                                      fw["accumulated"]))]
+                 M.n(unless_rounding(acc, swing))]
+                for k, (a, b, area, acc) in enumerate(zip(fw["crossings"], ends, fw["areas"], fw["accumulated"]))]
         doc.table(["pulse", "from θ [°]", "to θ [°]", "ΔE [J]", "accumulated [J]"], rows, "lrrrr",
                   caption="The energy table (after Norton Table 11-1)")
         d = fw["disk"]

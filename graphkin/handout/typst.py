@@ -30,7 +30,9 @@ def _string(text: str) -> str:
 def _inline(runs) -> str:
     out = []
     for r in runs:
-        if isinstance(r, str):
+        if r == "\n":
+            out.append(" \\ ")  # a line break inside a table's cell
+        elif isinstance(r, str):
             if r:
                 out.append(f"#{_string(r)}")
         else:
@@ -59,14 +61,26 @@ def _block(b: dict) -> str:
         align = ", ".join(_ALIGN[a] + " + horizon" for a in b["align"])
         head = ", ".join(f"[*{_inline(h)}*]" for h in b["header"])
         cells = ",\n  ".join(", ".join(f"[{_inline(c)}]" for c in row) for row in b["rows"])
-        table = (f"#table(columns: {cols}, align: ({align},), table.header({head}),\n  {cells},\n)")
+        inset = ", inset: (x: 5pt, y: 7pt)" if b.get("tall") else ""
+        table = (f"#table(columns: {cols}, align: ({align},){inset}, table.header({head}),\n  {cells},\n)")
         if b.get("caption"):
             table += f"\n#block(above: 0.4em)[#text(size: 8.5pt, style: \"italic\")[#{_string(b['caption'])}]]"
+        if b.get("small"):
+            table = f"#[#show table: set text(size: 7.5pt)\n{table}\n]"
+        if b.get("boxed"):
+            # The answers, boxed as a book boxes them: on one page, framed.
+            table = f"#block(stroke: 1.2pt, inset: 7pt, breakable: false)[\n{table}\n]"
         return table
     if kind == "equation":
         lines = [f"$ {M.to_typst(line)} $" for line in b["lines"]]
         body = "\n".join(_fit(x) for x in lines)
         return f"#text(size: 8pt)[{body}]" if b.get("small") else body
+    if kind == "figure" and all(p.natural for p in b["pictures"]):
+        # Printed at their own size: the scale a drawing states is the scale on the page.
+        images = [f"image(bytes({_string(p.svg())}), format: \"svg\", width: {p.size()[0]:.3f}pt, "
+                  f"alt: {_string(p.alt)})" for p in b["pictures"]]
+        body = images[0] if len(images) == 1 else ("stack(dir: ltr, spacing: 1em, " + ", ".join(images) + ")")
+        return f"#figure({body}, caption: [#{_string(b['caption'])}], numbering: none, supplement: none)"
     if kind == "figure":
         pics = b["pictures"]
         images = [f"image(bytes({_string(p.svg())}), format: \"svg\", width: 100%, height: {p.height:g}mm, "

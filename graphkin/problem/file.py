@@ -36,7 +36,7 @@ from graphkin.problem.problem import Problem
 from graphkin.problem.reader import FieldReader
 from graphkin.problem.tables import parse_table, read_csv_beside
 
-_TOP = {"title", "source", "notes", "analysis", "gravity", "frame", "links", "joints", "driver", "loads", "assembly",
+_TOP = {"title", "source", "cite", "notes", "analysis", "gravity", "frame", "links", "joints", "driver", "loads", "assembly",
         "given"}
 _ANALYSES = ("dynamic", "static")
 _LINK = {"number", "name", "points", "mass", "G", "I_G", "k", "shape"}
@@ -231,7 +231,7 @@ def build_problem(data: Mapping[str, Any], *, file: str = "<problem>", base: str
                           + (f"this mechanism's branches are chosen at {', '.join(branches)}" if branches else
                              "this mechanism has no dyad, so no branch to choose: leave out [assembly]"))
     return Problem(file, mech, q, q_dot, q_ddot, given, str(data.get("title", "")), str(data.get("source", "")),
-                   str(data.get("notes", "")), analysis)
+                   str(data.get("notes", "")), analysis, str(data.get("cite", "")))
 
 
 def _list(rd, data, key):

@@ -31,6 +31,9 @@ class Problem:
         ``(link, "at", point)`` for a point's position [m] (see
         :class:`graphkin.kinematics.Kinematics`).
     title, source, notes : str
+    cite : str
+        The source in one line for students (a handout's title block); empty: the first clause of ``source``
+        (:func:`graphkin.notation.citation`).
     analysis : {"dynamic", "static"}
         ``"static"`` leaves every inertia load out (masses are then needed
         only for weights, and the input rates only give the sense of motion
@@ -47,6 +50,7 @@ class Problem:
     source: str = ""
     notes: str = ""
     analysis: str = "dynamic"
+    cite: str = ""
 
     @property
     def static(self) -> bool:

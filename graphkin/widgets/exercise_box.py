@@ -16,6 +16,7 @@ from html import escape
 from graphkin import exercises
 from graphkin.errors import GraphkinError
 from graphkin.exercises.grading import grade_variant
+from graphkin.notation import citation
 
 
 def exercise(name, student: str = "", *, secret: str = ""):
@@ -57,7 +58,9 @@ class ExerciseBox:
         self.button.on_click(lambda _: self.check())
         self.student.observe(lambda _: self._show_data(), names="value")
         rows = [x for pair in zip(asks, self.answers.values()) for x in pair]
-        self.widget = w.VBox([w.HTML(f"<h4>{escape(exercise.title)}</h4>"), self.student, self.data, *rows,
+        # The source in one line, as a sheet cites it: where the catalog read the book is the teacher's.
+        cite = f"<div><i>{escape(citation(exercise.source))}</i></div>" if exercise.source else ""
+        self.widget = w.VBox([w.HTML(f"<h4>{escape(exercise.title)}</h4>{cite}"), self.student, self.data, *rows,
                               self.button, self.feedback])
         self._show_data()
 

@@ -42,20 +42,29 @@ def _main(argv) -> tuple[int, str, str]:
     return code, out.getvalue(), err.getvalue()
 
 
+DETAILS = ("compact", "full")
+
+
 @pytest.fixture(scope="module")
 def built(tmp_path_factory):
-    """Each problem's key: the document, its PDF, HTML and Markdown, and the ``solve --json`` of the problem."""
+    """Each problem's key, compact (the default) and full: the document, its PDF, HTML and Markdown, and the
+    ``solve --json`` of the problem. ``built[name]`` is the compact key, ``built[name, "full"]`` the full one."""
     folder = tmp_path_factory.mktemp("handouts")
     out = {}
     for name in PROBLEMS:
-        doc = handout.build(name)
-        paths = {fmt: folder / f"{name}.{fmt}" for fmt in ("pdf", "html", "md")}
-        for p in paths.values():
-            handout.write(doc, p)
         code, stdout, _ = _main(["solve", name, "--json"])
         assert code == 0
-        out[name] = {"doc": doc, "paths": paths, "json": json.loads(stdout),
+        data = json.loads(stdout)
+        for detail in DETAILS:
+            doc = handout.build(name, detail=detail)
+            paths = {fmt: folder / f"{name}_{detail}.{fmt}" for fmt in ("pdf", "html", "md")}
+            for p in paths.values():
+                handout.write(doc, p)
+            entry = {"doc": doc, "paths": paths, "json": data,
                      "pdf_text": "\n".join(page.extract_text() for page in pypdf.PdfReader(paths["pdf"]).pages)}
+            out[name, detail] = entry
+            if detail == "compact":
+                out[name] = entry
     return out
 
 
@@ -89,7 +98,6 @@ def _expected(entry: dict) -> dict[str, str]:
                     want[f"{name}{axis}"] = M.fmt(value)
     want[entry["driver"]["name"]] = M.fmt(entry["driver"]["value"])
     g = entry["graphical"]
-    want["force scale"] = M.fmt(g["force_scale_N_per_mm"])
     for name, F in g["forces"].items():
         want[f"graphical |{name}|"] = M.fmt(M.size_of(F))
     return want
@@ -104,9 +112,10 @@ def _missing(text: str, want: dict) -> dict:
     return {k: v for k, v in want.items() if v not in text}
 
 
+@pytest.mark.parametrize("detail", DETAILS)
 @pytest.mark.parametrize("name", PROBLEMS)
-def test_pdf_text_carries_the_numbers_of_solve_json(built, name):
-    b = built[name]
+def test_pdf_text_carries_the_numbers_of_solve_json(built, name, detail):
+    b = built[name, detail]
     want = _expected(_worked(b))
     assert len(want) > 20
     assert _missing(b["pdf_text"], want) == {}
@@ -131,12 +140,14 @@ def test_the_whole_cycle_carries_the_numbers_of_cycle_json(built):
             "disk radius": M.fmt(fw["disk"]["radius"] * 1e3), "JFI": M.fmt(jfi["peak"]["value"])}
     want |= {f"ΔE{k}": M.fmt(a) for k, a in enumerate(fw["areas"])}
     want |= {f"peak {k}": M.fmt(v["peak"]["value"]) for k, v in data["forces"].items()}
-    assert _missing(built["strip_cutter"]["pdf_text"], want) == {}
+    for detail in DETAILS:
+        assert _missing(built["strip_cutter", detail]["pdf_text"], want) == {}
 
 
+@pytest.mark.parametrize("detail", DETAILS)
 @pytest.mark.parametrize("name", PROBLEMS)
-def test_every_figure_named_in_the_text_is_present(built, name):
-    b = built[name]
+def test_every_figure_named_in_the_text_is_present(built, name, detail):
+    b = built[name, detail]
     text = b["pdf_text"]
     figures = [blk for blk in b["doc"]["blocks"] if blk["kind"] == "figure"]
     named = set(re.findall(r"Figure (\d+)", text))
@@ -275,7 +286,7 @@ def _check_groups(kin, i: int, blocks) -> set:
 @pytest.mark.parametrize("name, at", [("double_slider", None), ("strip_cutter", None),
                                       ("slider_crank_friction", "60 deg")])
 def test_each_group_s_equations_print_what_the_solver_computed(name, at):
-    doc = handout.build(name, at=at)
+    doc = handout.build(name, at=at, detail="full")
     s = handout.document.subject(name, at=at)
     kin, i = s.result.kinematics, doc["worked"][0]["index"]
     blocks = _kinematics_blocks(doc)
@@ -295,14 +306,14 @@ def test_each_group_s_equations_print_what_the_solver_computed(name, at):
 
 def test_the_double_slider_s_kinematics_are_the_book_s():
     """Söylemez's double slider: ω13 = 4.364 rad/s, α13 = 8.312 rad/s², B at y = 458.258 mm (the book rounds)."""
-    printed = dict(_printed_results(_kinematics_blocks(handout.build("double_slider"))))
+    printed = dict(_printed_results(_kinematics_blocks(handout.build("double_slider", detail="full"))))
     assert printed["ω3"] == "4.364 rad/s" and printed["rB"] == "(0, 458.3) mm"
     assert float(printed["α3"].split()[0]) == pytest.approx(8.312, abs=1.5e-3)
 
 
 @pytest.mark.parametrize("name", PROBLEMS)
 def test_pdf_text_carries_each_group_s_results(built, name):
-    b = built[name]
+    b = built[name, "full"]
     numbers = {n for _, value in _printed_results(_kinematics_blocks(b["doc"]))
                for n in re.findall(r"−?[0-9][0-9.]*(?:e−?[0-9]+)?", value)}
     assert len(numbers) > 10
@@ -384,10 +395,11 @@ def _heading_and_figure_pages(doc: dict, pdf) -> list[tuple[str, int, int]]:
     return out
 
 
+@pytest.mark.parametrize("detail", DETAILS)
 @pytest.mark.parametrize("name", PROBLEMS)
-def test_a_heading_is_on_the_page_of_its_figure(built, name):
-    pairs = _heading_and_figure_pages(built[name]["doc"], built[name]["paths"]["pdf"])
-    assert len(pairs) > 5
+def test_a_heading_is_on_the_page_of_its_figure(built, name, detail):
+    pairs = _heading_and_figure_pages(built[name, detail]["doc"], built[name, detail]["paths"]["pdf"])
+    assert len(pairs) > (5 if detail == "full" else 1)
     assert [p for p in pairs if p[1] != p[2]] == []
 
 
@@ -398,7 +410,7 @@ def test_the_heading_check_catches_a_heading_left_at_the_foot_of_a_page(built, m
     source = T.source
     loose = "#show heading: set block(sticky: false)\n"
     monkeypatch.setattr(T, "source", lambda d, **kw: loose + source(d, **kw).replace("sticky: true", "sticky: false"))
-    doc = built["strip_cutter"]["doc"]
+    doc = built["strip_cutter", "full"]["doc"]
     pairs = _heading_and_figure_pages(doc, T.render(doc))
     assert [p for p in pairs if p[1] != p[2]] != []
 
@@ -441,7 +453,7 @@ def _difference(a: np.ndarray, b: np.ndarray) -> float:
 
 
 def test_a_page_matches_its_baseline(built):
-    pdf = built["double_slider"]["paths"]["pdf"].read_bytes()
+    pdf = built["double_slider", "full"]["paths"]["pdf"].read_bytes()
     image = _page_image(pdf, BASELINE_PAGE)
     assert _difference(image, _baseline("double_slider", image)) < TOLERANCE
     # Robust to how the glyphs are smoothed: without any text antialiasing the page still matches.
@@ -453,7 +465,7 @@ def test_a_page_matches_its_baseline(built):
 def test_a_broken_layout_fails_the_page_comparison(built, monkeypatch, break_it):
     from graphkin.handout import typst as T
 
-    doc = dict(built["double_slider"]["doc"])
+    doc = dict(built["double_slider", "full"]["doc"])
     if break_it == "margins":
         source = T.source
         monkeypatch.setattr(T, "source", lambda d, **kw: source(d, **kw).replace("margin: (x: 18mm", "margin: (x: 20mm"))
@@ -491,9 +503,10 @@ class _Page(html.parser.HTMLParser):
         (self.styles if self._style else self.text).append(data)
 
 
+@pytest.mark.parametrize("detail", DETAILS)
 @pytest.mark.parametrize("name", PROBLEMS)
-def test_html_is_one_self_contained_file_with_the_same_numbers(built, name):
-    b = built[name]
+def test_html_is_one_self_contained_file_with_the_same_numbers(built, name, detail):
+    b = built[name, detail]
     page = b["paths"]["html"].read_text(encoding="utf-8")
     parsed = _Page()
     parsed.feed(page)
@@ -524,9 +537,10 @@ def test_the_same_handout_gives_the_same_bytes(built):
 
 
 # -- Markdown ----------------------------------------------------------------------------------------------------
+@pytest.mark.parametrize("detail", DETAILS)
 @pytest.mark.parametrize("name", PROBLEMS)
-def test_markdown_has_the_numbers_and_its_figures(built, name):
-    b = built[name]
+def test_markdown_has_the_numbers_and_its_figures(built, name, detail):
+    b = built[name, detail]
     path = b["paths"]["md"]
     text = path.read_text(encoding="utf-8")
     # In $…$ a number is LaTeX (-73.78, a negative one braced); in prose it has the true minus sign.
@@ -561,15 +575,19 @@ def test_an_exercise_sheet_has_no_answers_and_its_key_has_them(tmp_path):
 
 
 def test_blank_gives_the_free_bodies_to_scale_and_room_for_every_polygon():
+    from graphkin.graphical.paper import force_text, sheet_scales
+
     doc = handout.build("double_slider", version="blank")
     c = handout.document.subject("double_slider").construction(0)
     spaces = [b for b in doc["blocks"] if b["kind"] == "space"]
     assert len(spaces) == sum(1 for s in c.steps if s.polygon) > 0
-    assert all(b["height"] >= 50 for b in spaces)
+    assert all(b["height"] >= 80 for b in spaces)
     figures = [b for b in doc["blocks"] if b["kind"] == "figure"]
-    assert any(p.key == "given" for b in figures for p in b["pictures"])
-    text = json.dumps([b.get("runs", "") for b in doc["blocks"]], ensure_ascii=False, default=str)
-    assert M.fmt(c.force_scale) in text
+    keys = {p.key for b in figures for p in b["pictures"]}
+    assert {"sheet-mechanism-0", "free-bodies-0-given"} <= keys
+    text = json.dumps([b.get("runs", "") for b in doc["blocks"]] + [b.get("label", "") for b in spaces],
+                      ensure_ascii=False, default=str)
+    assert force_text(sheet_scales(c).polygon) in text
     # No answer: neither a joint force nor the driver's effort.
     assert M.fmt(abs(c.effort)) not in text
     assert not any(b["kind"] == "equation" for b in doc["blocks"])

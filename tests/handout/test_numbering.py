@@ -38,12 +38,12 @@ def _pdf_text(path) -> str:
     return "\n".join(page.extract_text() for page in pypdf.PdfReader(path).pages)
 
 
-def _handout(tmp_path_factory, name: str, text: str, suffix: str):
+def _handout(tmp_path_factory, name: str, text: str, suffix: str, detail: str = "full"):
     """A problem file written from ``text``, its key built and written as ``suffix``: (file, doc, output)."""
     folder = tmp_path_factory.mktemp(name)
     path = folder / f"{name}.toml"
     path.write_text(text, encoding="utf-8")
-    doc = handout.build(str(path))
+    doc = handout.build(str(path), detail=detail)
     out = folder / f"{name}{suffix}"
     handout.write(doc, out)
     return path, doc, out
@@ -53,6 +53,20 @@ def _handout(tmp_path_factory, name: str, text: str, suffix: str):
 def static_key(tmp_path_factory):
     path, doc, pdf = _handout(tmp_path_factory, "static0", STATIC_FOURBAR, ".pdf")
     return path, doc, _pdf_text(pdf)
+
+
+@pytest.fixture(scope="module")
+def static_compact(tmp_path_factory):
+    path, doc, pdf = _handout(tmp_path_factory, "static0c", STATIC_FOURBAR, ".pdf", detail="compact")
+    return path, doc, _pdf_text(pdf)
+
+
+def test_static_frame_zero_compact_key_names_the_frame_and_has_no_inertia(static_compact):
+    _, doc, text = static_compact
+    assert doc["worked"][0]["label"] == "θ01 = 60°"
+    assert "Link 0 is the frame" in text and "frame (link 0)" in text and "static force analysis" in text
+    for absent in ("Inertia loads", "inertia included", "inertia resultant", "Mass properties used", "Link 1 is the frame"):
+        assert absent not in text, absent
 
 
 def test_static_frame_zero_key_names_forces_as_the_book_does(static_key):
@@ -67,8 +81,9 @@ def test_static_frame_zero_key_names_forces_as_the_book_does(static_key):
     assert "Position of every link" in headings and "Kinematics" not in headings
 
 
-def test_static_frame_zero_key_carries_the_numbers_of_solve_json(static_key, capsys):
-    path, doc, text = static_key
+@pytest.mark.parametrize("key", ["static_key", "static_compact"])
+def test_static_frame_zero_key_carries_the_numbers_of_solve_json(key, request, capsys):
+    path, doc, text = request.getfixturevalue(key)
     data = _solve_json(path, capsys)
     assert data["analysis"] == "static" and data["frame"] == 0
     entry = data["positions"][0]
@@ -87,8 +102,11 @@ def test_static_frame_zero_key_carries_the_numbers_of_solve_json(static_key, cap
     for link, d in entry["links"].items():
         want[f"θ{link}"] = M.fmt_fixed(math.degrees(d["theta"]))
     assert {k: v for k, v in want.items() if v not in text} == {}
+    # The names as the book writes them: in the PDF's text, or set as mathematics (F₀₁ reads as 𝐹01 there).
+    maths = " ".join(M.to_text(r) for b in doc["blocks"] for r in b.get("runs", []) + b.get("lines", [])
+                     + [x for row in b.get("rows", []) for cell in row for x in cell] if isinstance(r, list))
     for name in ("F01", "F03", "T01"):
-        assert name in text
+        assert name in text or name in maths
 
 
 def test_static_kinematics_are_positions_only(static_key):

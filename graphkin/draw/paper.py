@@ -1,0 +1,279 @@
+"""Drawings printed at a stated scale: the free bodies at one force scale, the force polygons at one scale, a
+construction step beside its polygon; each figure sized so that it prints at the scales it states.
+
+A handout places these figures at their own size (never scaled to a share of the text width), so a length
+measured on the printed page with a ruler is the length the scale says: a true length of k mm prints 1 mm
+long at 1:k, and a force of X N prints 1 mm long at 1 mm = X N. Each figure ends with a scale bar for each of
+its scales, each stating its scale beside it (:func:`scale_strip`).
+
+The panels are drawn first with their labels left unplaced, then laid out in rows (:func:`arrange`) and given
+their printed size, and only then are the labels placed: where a label goes depends on how large the drawing
+prints.
+"""
+
+from __future__ import annotations
+
+from matplotlib.figure import Figure
+
+from graphkin.draw import style as _style
+from graphkin.draw.axes import PanelAxes, setup_axes
+from graphkin.draw.fbd import draw_free_body
+from graphkin.draw.labels import measuring_renderer
+from graphkin.draw.mechanism import draw_mechanism
+from graphkin.draw.polygon import draw_force_polygon, step_title
+from graphkin.draw.scales import nice_round, scale_bar
+from graphkin.draw.steps import draw_step_geometry
+from graphkin.draw.text import sub
+from graphkin.graphical.paper import FIGURE_WIDTH, force_text, length_text
+
+GAP = 5.0
+"""Room between two panels of a figure [mm]."""
+STRIP = 9.0
+"""Height of the strip of scale bars under a figure [mm]."""
+
+
+def _new_figure(width: float) -> Figure:
+    # 100 dpi, as every drawing of this package: the labels' sizes are measured at it.
+    return Figure(figsize=(width / 25.4, 100 / 25.4), dpi=100)
+
+
+def _box(ax, mm_per_unit: float) -> tuple[float, float]:
+    """Width and height [mm] the axes take on paper at ``mm_per_unit``."""
+    (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
+    return abs(x1 - x0) * mm_per_unit, abs(y1 - y0) * mm_per_unit
+
+
+def _title_size(ax) -> tuple[float, float]:
+    """Width and height [mm] of an axes' title as printed (0, 0 without one)."""
+    t = ax.title
+    if not t.get_text().strip():
+        return 0.0, 0.0
+    bb = t.get_window_extent(measuring_renderer(ax.figure))
+    return bb.width / ax.figure.dpi * 25.4, bb.height / ax.figure.dpi * 25.4 + 1.5
+
+
+def arrange(fig, panels, *, width: float = FIGURE_WIDTH, strip: float = 0.0, gap: float = GAP) -> float:
+    """Lay panels out in rows at their printed size, size the figure to them, and place their labels.
+
+    Parameters
+    ----------
+    fig : Figure
+    panels : list of (Axes, float)
+        Each axes, its limits final, and the millimetres of paper per data unit it prints at.
+    width : float
+        The figure's width [mm]; a row holds the panels that fit it, each row centred.
+    strip : float
+        Height [mm] left free under the rows (for :func:`scale_strip`).
+
+    Returns
+    -------
+    float
+        The figure's height [mm].
+    """
+    sizes = []
+    for ax, mm in panels:
+        w, h = _box(ax, mm)
+        tw, th = _title_size(ax)
+        sizes.append((w, h, max(w, tw), h + th))
+    rows, row, used = [], [], 0.0
+    for k, (_, _, pw, _) in enumerate(sizes):
+        if row and used + gap + pw > width:
+            rows.append(row)
+            row, used = [], 0.0
+        used += (gap if row else 0.0) + pw
+        row.append(k)
+    if row:
+        rows.append(row)
+    heights = [max(sizes[k][3] for k in r) for r in rows]
+    height = sum(heights) + gap * (len(rows) - 1) + strip + 2.0
+    fig.set_size_inches(width / 25.4, height / 25.4)
+    top = height - 1.0
+    for r, rh in zip(rows, heights):
+        used = sum(sizes[k][2] for k in r) + gap * (len(r) - 1)
+        x = max(0.0, (width - used) / 2)
+        for k in r:
+            w, h, pw, ph = sizes[k]
+            ax = panels[k][0]
+            # Below its title, centred in its column; the tallest panel of the row sets the row's height.
+            y = top - (ph - h) - h
+            ax.set_position([(x + (pw - w) / 2) / width, y / height, w / width, h / height])
+            x += pw + gap
+        top -= rh + gap
+    for ax, _ in panels:
+        lab = getattr(ax, "_graphkin_labeler", None)
+        if lab is not None:
+            lab.place()
+            drawn = getattr(ax, "_graphkin_drawn", None)
+            if drawn is not None:
+                drawn += lab.leaders
+    return height
+
+
+def scale_strip(fig, height: float, *, length_scale=None, force_scale=None, width: float = FIGURE_WIDTH,
+                **style) -> list:
+    """Scale bars along the foot of a figure: one per scale the figure is drawn at, each stating its scale.
+
+    A length bar reads ``0 — 100 mm  (scale 1:5)``, a force bar ``0 — 400 N  (1 mm = 20 N)``; each is as
+    long on paper as what it reads at its scale. Returns the artists.
+    """
+    s = _style.resolve(**style)
+    ax = fig.add_axes([0, 0.5 / height, 1, (STRIP - 1.0) / height], axes_class=PanelAxes)
+    setup_axes(ax)
+    # One data unit is one millimetre of paper here.
+    ax.set_xlim(0, width)
+    ax.set_ylim(0, STRIP - 1.0)
+    out = []
+    x = 4.0
+    y = (STRIP - 1.0) / 2
+    for k, X in ((length_scale, None), (None, force_scale)):
+        if k is None and X is None:
+            continue
+        if k is not None:
+            value = nice_round(30.0 * k)
+            length, unit, note = value / k, "mm", f"scale {length_text(k)}"
+        else:
+            value = nice_round(30.0 * X)
+            length, unit, note = value / X, "N", force_text(X)
+        out += scale_bar(ax, (x, y), length, value, s=s, unit_text=unit, tick=1.0, note=note)
+        x += length + 62.0
+    return out
+
+
+def _names(text: str) -> str:
+    """A title with every force or point name in it subscripted (``R3 = R3i + Fc3`` → R₃ = R₃ᵢ + F_c3)."""
+    return " ".join(sub(word) for word in text.split(" "))
+
+
+def draw_free_bodies(construction, links=None, *, length_scale: float, force_scale: float, unknowns=True,
+                     width: float = FIGURE_WIDTH, **style) -> Figure:
+    """Every free body of ``links`` at one length scale and one force scale, side by side, printed at them.
+
+    Parameters
+    ----------
+    construction : graphkin.graphical.Construction
+    links : sequence of int, optional
+        Default: every moving link.
+    length_scale : float
+        k: the links are printed at 1:k.
+    force_scale : float
+        X: every force is printed 1 mm long per X N, on every free body alike.
+    unknowns : bool
+        Draw the joint forces and the driver's effort (False: only the known loads, for a worksheet).
+    width : float
+        The figure's width [mm].
+
+    Returns
+    -------
+    Figure
+        Sized to print at the scales; its scale bars state them.
+    """
+    c = construction
+    links = list(c.mechanism.moving if links is None else links)
+    fig = _new_figure(width)
+    paper = 1.0 / length_scale
+    panels = []
+    for link in links:
+        ax = fig.add_axes([0, 0, 0.2, 0.2], axes_class=PanelAxes)
+        # In the drawing's units (mm of the mechanism), X N per printed mm is X / k N per mm drawn.
+        draw_free_body(c, link, ax=ax, force_scale=force_scale / length_scale, title=c.mechanism.link(link).label,
+                       unknowns=unknowns, paper=paper, bar=False, place=False, **style)
+        panels.append((ax, paper))
+    height = arrange(fig, panels, width=width, strip=STRIP)
+    scale_strip(fig, height, length_scale=length_scale, force_scale=force_scale, width=width, **style)
+    return fig
+
+
+def draw_polygons(steps, *, force_scale: float, titles=None, driver_name=None, width: float = FIGURE_WIDTH,
+                  **style) -> Figure:
+    """Force polygons at one force scale, side by side, printed at it.
+
+    Parameters
+    ----------
+    steps : sequence of graphkin.graphical.Step
+        Steps with a polygon.
+    force_scale : float
+        X: 1 mm of every polygon is X N.
+    titles : sequence of str, optional
+        Each polygon's title (default: its equation, :func:`graphkin.draw.polygon.step_title`).
+    driver_name : str, optional
+        The driving effort's name, drawn in the driver's colour.
+    width : float
+        The figure's width [mm].
+
+    Returns
+    -------
+    Figure
+    """
+    fig = _new_figure(width)
+    panels = []
+    for k, step in enumerate(steps):
+        ax = fig.add_axes([0, 0, 0.2, 0.2], axes_class=PanelAxes)
+        title = _names(titles[k]) if titles is not None else step_title(step)
+        draw_force_polygon(step, scale=force_scale, ax=ax, title=title, driver_name=driver_name, paper=1.0, bar=False,
+                           place=False, **style)
+        panels.append((ax, 1.0))
+    height = arrange(fig, panels, width=width, strip=STRIP)
+    scale_strip(fig, height, force_scale=force_scale, width=width, **style)
+    return fig
+
+
+def draw_step(construction, step, *, length_scale: float, force_scale: float, polygon=None,
+              width: float = FIGURE_WIDTH, **style) -> Figure:
+    """One step of the construction printed at scale: its lines of action on the mechanism (1:k), and beside it
+    its force polygon (1 mm = X N) when it has one, or ``polygon`` (a step whose polygon to draw there: a
+    resultant's sum, R3i + Fc3 − R3 = 0)."""
+    c = construction
+    fig = _new_figure(width)
+    paper = 1.0 / length_scale
+    ax = fig.add_axes([0, 0, 0.2, 0.2], axes_class=PanelAxes)
+    draw_mechanism(c, ax=ax, faint=True, emphasis=step.link, place=False, length_scale=length_scale, **style)
+    draw_step_geometry(c, step, ax=ax, place=False, **style)
+    panels = [(ax, paper)]
+    shown = polygon if polygon is not None else step if step.polygon else None
+    if shown is not None:
+        ax2 = fig.add_axes([0, 0, 0.2, 0.2], axes_class=PanelAxes)
+        draw_force_polygon(shown, scale=force_scale, ax=ax2, title=False, driver_name=c.driver_name, paper=1.0,
+                           bar=False, place=False, **style)
+        panels.append((ax2, 1.0))
+    height = arrange(fig, panels, width=width, strip=STRIP if shown is not None else 0.0)
+    if shown is not None:
+        scale_strip(fig, height, force_scale=force_scale, width=width, **style)
+    return fig
+
+
+def draw_constructions(construction, steps, *, length_scale: float, titles=None, width: float = FIGURE_WIDTH,
+                       **style) -> Figure:
+    """The lines of action of several steps, one panel each (the mechanism drawn faint under them), all at 1:k.
+
+    Parameters
+    ----------
+    construction : graphkin.graphical.Construction
+    steps : sequence of graphkin.graphical.Step
+        Typically the three-force members of the construction (of each sub-problem of a superposition).
+    length_scale : float
+        k: every panel is printed at 1:k.
+    titles : sequence of str, optional
+        A title over each panel.
+    width : float
+        The figure's width [mm].
+
+    Returns
+    -------
+    Figure
+    """
+    c = construction
+    fig = _new_figure(width)
+    paper = 1.0 / length_scale
+    s = _style.resolve(**style)
+    panels = []
+    for k, step in enumerate(steps):
+        ax = fig.add_axes([0, 0, 0.2, 0.2], axes_class=PanelAxes)
+        draw_mechanism(c, ax=ax, faint=True, emphasis=step.link, place=False, length_scale=length_scale, bar=False,
+                       **style)
+        draw_step_geometry(c, step, ax=ax, place=False, **style)
+        if titles is not None:
+            ax.set_title(_names(titles[k]), fontsize=s.title_size, color=s.ink)
+        panels.append((ax, paper))
+    height = arrange(fig, panels, width=width, strip=STRIP)
+    scale_strip(fig, height, length_scale=length_scale, width=width, **style)
+    return fig

@@ -1,0 +1,207 @@
+"""Scales for paper: the length scale 1:k of a drawing of the mechanism and the force scale 1 mm = X N of its
+forces, chosen so that the drawing fits the room a printed page gives it.
+
+On paper the scale *is* the graphical method: a student measures a side of a polygon with a ruler and reads
+the force off the scale. So a drawing is first given its room on the page (at most :data:`FIGURE_WIDTH` wide),
+then drawn at the largest standard scale that fits it there, and printed at that size (never shrunk to a share
+of the text width afterwards). Everything here is plain numbers: the drawing layer draws at these scales, the
+handouts state them, and the grader (:mod:`graphkin.exercises.quantities`) allows what can be read off a
+drawing printed at them (:data:`READING`).
+
+Examples
+--------
+>>> length_scale((1030.0, 460.0), (168.0, 90.0)), length_text(10.0), length_text(0.5)
+(10.0, '1:10', '2:1')
+>>> force_scale(2268.0, 60.0), force_text(50.0)
+(50.0, '1 mm = 50 N')
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from graphkin.notation import num
+
+PAGE_WIDTH = 210.0
+"""A4 [mm]."""
+PAGE_HEIGHT = 297.0
+MARGIN = 18.0
+"""Left and right margins of a handout's page [mm] (:mod:`graphkin.handout.typst` sets its page with them)."""
+TEXT_WIDTH = PAGE_WIDTH - 2 * MARGIN
+FIGURE_WIDTH = 168.0
+"""The widest a drawing may be, its labels included [mm]: the text width less a little for the crop's margin."""
+
+READING = 0.5
+"""What a student reads off a printed drawing with a ruler [mm]: half the smallest division of a school rule."""
+
+REDUCTIONS = (1.0, 2.0, 5.0, 10.0, 20.0, 50.0, 100.0, 200.0, 500.0, 1000.0)
+ENLARGEMENTS = (2.0, 5.0, 10.0, 20.0, 50.0)
+"""The standard scales of technical drawing (ISO 5455): 1:2, 1:5, 1:10, …, and 2:1, 5:1, 10:1, …"""
+
+LENGTH_SCALES = tuple(sorted([1.0 / e for e in ENLARGEMENTS] + list(REDUCTIONS)))
+"""Every length scale k (true length / printed length), the largest drawing first."""
+
+
+def length_scale(size, room) -> float:
+    """The largest standard length scale at which a drawing of ``size`` fits ``room``.
+
+    Parameters
+    ----------
+    size : float or (float, float)
+        The drawing's true extent [mm] (width, height; one number for both).
+    room : float or (float, float)
+        The room on paper [mm].
+
+    Returns
+    -------
+    float
+        k: a true length of k mm is printed 1 mm long (1:k); below 1, an enlargement (k = 0.5 is 2:1).
+    """
+    w, h = _pair(size)
+    W, H = _pair(room)
+    for k in LENGTH_SCALES:
+        if w / k <= W and h / k <= H:
+            return k
+    return LENGTH_SCALES[-1]
+
+
+def length_text(k: float) -> str:
+    """The length scale as a drawing states it: ``"1:5"``, ``"1:1"``, ``"2:1"``."""
+    if k >= 1:
+        return f"1:{num(k, 4)}"
+    return f"{num(1 / k, 4)}:1"
+
+
+def force_scale(largest, room) -> float:
+    """The smallest round force scale (1, 2, 5 × 10ⁿ N per mm) at which ``largest`` fits ``room``.
+
+    Parameters
+    ----------
+    largest : float or (float, float)
+        The size of what is drawn [N] (a force, or a polygon's width and height).
+    room : float or (float, float)
+        The room on paper [mm].
+
+    Returns
+    -------
+    float
+        X: 1 mm of drawing stands for X N.
+    """
+    w, h = _pair(largest)
+    W, H = _pair(room)
+    need = max(w / W, h / H)
+    if not need > 0 or not math.isfinite(need):
+        return 1.0
+    decade = 10.0 ** math.floor(math.log10(need))
+    for m in (1.0, 2.0, 5.0, 10.0):
+        if m * decade >= need * (1 - 1e-12):
+            return float(f"{m * decade:.12g}")  # 0.2, not 0.2000000000000001
+    return 10.0 * decade  # pragma: no cover
+
+
+def force_text(X: float) -> str:
+    """The force scale as a drawing states it: ``"1 mm = 20 N"``."""
+    return f"1 mm = {num(X, 4)} N"
+
+
+def _pair(x) -> tuple[float, float]:
+    if isinstance(x, (int, float)):
+        return float(x), float(x)
+    a, b = x
+    return float(a), float(b)
+
+
+# -- what is drawn, in true units ------------------------------------------------------------------------------
+def polygon_size(arrows) -> tuple[float, float]:
+    """Width and height [N] of a force polygon drawn tip to tail (its arrows, as a step holds them)."""
+    vectors = [np.asarray(a.vector, float) for a in arrows]
+    if not vectors:
+        return 0.0, 0.0
+    verts = np.cumsum([np.zeros(2)] + vectors, axis=0)
+    w, h = np.ptp(verts, axis=0)
+    return float(w), float(h)
+
+
+def mechanism_size(construction, *, points=None) -> tuple[float, float]:
+    """Width and height [mm] of a drawing of the mechanism at the construction's position.
+
+    ``points`` [m]: points the drawing also shows or leaves room for (a point of concurrency, where a student
+    draws lines of action to), those within three mechanism sizes (a drawing names a point further off
+    instead of showing it). The ground symbols, slider blocks and labels add a fifth of its size.
+    """
+    pts = np.array([p for link in construction.points.values() for p in link.values()] or [(0.0, 0.0)]) * 1e3
+    size = float(np.max(np.ptp(pts, axis=0))) if len(pts) > 1 else 1.0
+    if points:
+        centre = pts.mean(axis=0)
+        extra = [np.asarray(P, float) * 1e3 for P in points]
+        extra = [P for P in extra if np.all(np.isfinite(P)) and np.hypot(*(P - centre)) <= 3 * max(size, 1.0)]
+        if extra:
+            pts = np.vstack([pts, extra])
+    w, h = np.ptp(pts, axis=0)
+    pad = 0.2 * max(size, 1.0)
+    return float(w + pad), float(h + pad)
+
+
+# -- the scales of a student's worksheet ----------------------------------------------------------------------
+MECHANISM_ROOM = (FIGURE_WIDTH, 125.0)
+"""Room for the worksheet's drawing of the mechanism [mm]: large, with room to draw the lines of action."""
+POLYGON_ROOM = (150.0, 88.0)
+"""Room for one force polygon inside its box on a worksheet [mm]."""
+
+
+@dataclass(frozen=True)
+class SheetScales:
+    """The scales a worksheet prints its drawings at.
+
+    Attributes
+    ----------
+    length : float
+        k of the mechanism's drawing (1:k), where the lines of action are drawn.
+    polygon : float
+        X of the polygon boxes [N per mm]: every polygon of the construction fits its box at it.
+    """
+
+    length: float
+    polygon: float
+
+    def force_reading(self) -> float:
+        """What a force measured off a polygon can be read to [N]: :data:`READING` at the polygon scale."""
+        return READING * self.polygon
+
+    def length_reading(self) -> float:
+        """What a length measured off the mechanism's drawing can be read to [m]."""
+        return READING * self.length * 1e-3
+
+
+def sheet_scales(construction) -> SheetScales:
+    """The scales of a worksheet of this construction (the same for the sheet and for its grader)."""
+    points = [P for step in construction.steps for P in step.points.values()]
+    k = length_scale(mechanism_size(construction, points=points), MECHANISM_ROOM)
+    sizes = [polygon_size(step.polygon) for step in construction.steps if step.polygon]
+    X = max([force_scale(size, POLYGON_ROOM) for size in sizes] or [1.0])
+    return SheetScales(k, X)
+
+
+def reading_error(construction, what: str) -> float:
+    """What a student measuring on a worksheet printed at :func:`sheet_scales` can read a value to [SI].
+
+    ``what``: ``"force"`` (a side of a polygon, :data:`READING` at the polygon scale [N]), ``"length"`` (a
+    length or a point on the mechanism's drawing, :data:`READING` at its length scale [m]) or ``"torque"``
+    (the input's torque |R| d, each read to its own scale [N·m]; 0 where the construction has no crank arm).
+    A graphical question's tolerance is at least this: a finer one cannot be met with a ruler.
+    """
+    scales = sheet_scales(construction)
+    if what == "force":
+        return scales.force_reading()
+    if what == "length":
+        return scales.length_reading()
+    if what == "torque":
+        for step in construction.steps:
+            if step.kind == "driver" and not step.sub and "d" in step.values:
+                R = max((math.hypot(*a.vector) for a in step.polygon if a.known), default=0.0)
+                return scales.force_reading() * abs(step.values["d"]) + R * scales.length_reading()
+        return 0.0
+    raise ValueError(f"what must be 'force', 'length' or 'torque', got {what!r}")

@@ -1,0 +1,183 @@
+"""The handout's drawings at stated scales: which scales fit the page, and the pictures drawn at them.
+
+Each drawing of the mechanism, its free bodies or its force polygons is given its room on an A4 page first
+(:mod:`graphkin.graphical.paper`), then the largest standard scale that fits it there is chosen, and the
+picture is printed at its own size (:class:`graphkin.handout.figures.Picture` with ``natural=True``), so the
+scales it states (1:k, 1 mm = X N) are the scales on paper. A free-body figure draws every body at one force
+scale; a polygon figure every polygon at one force scale.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from graphkin.graphical import Arrow, Step
+from graphkin.graphical.paper import (
+    LENGTH_SCALES,
+    FIGURE_WIDTH,
+    force_scale,
+    force_text,
+    length_scale,
+    length_text,
+    mechanism_size,
+    polygon_size,
+)
+from graphkin.handout.document import Subject
+from graphkin.handout.figures import Picture
+
+FREE_BODY_ROOM = (FIGURE_WIDTH, 120.0)
+"""Room for a figure of every free body [mm]."""
+POLYGON_CELL = (74.0, 58.0)
+"""Room for one polygon in a key's figure of polygons [mm] (two side by side)."""
+GAP = 5.0
+
+
+def statement(k: float | None = None, X: float | None = None) -> str:
+    """The scales a caption states: ``"Scale 1:5; forces 1 mm = 20 N."``."""
+    parts = []
+    if k is not None:
+        parts.append(f"scale {length_text(k)}")
+    if X is not None:
+        parts.append(f"forces {force_text(X)}")
+    text = "; ".join(parts)
+    return text[:1].upper() + text[1:] + "." if text else ""
+
+
+def _bigger_k(k: float) -> float:
+    later = [x for x in LENGTH_SCALES if x > k * (1 + 1e-9)]
+    return later[0] if later else k
+
+
+def _bigger_X(X: float) -> float:
+    return force_scale(X * 1.0001, 1.0)
+
+
+# -- free bodies ---------------------------------------------------------------------------------------------------
+def _loads(c, link: int) -> list[tuple[np.ndarray, np.ndarray]]:
+    """(point [mm], force [N]) of every force a free body shows, known and found."""
+    out = [(np.asarray(a.at, float) * 1e3, np.asarray(a.vector, float)) for a in c.forces_on(link)]
+    out += [(np.asarray(a.at, float) * 1e3, np.asarray(a.vector, float)) for a in c.external.get(link, [])]
+    inert = c.inertia.get(link)
+    if inert is not None and math.hypot(*inert["F"]) > 0:
+        out.append((np.asarray(c.G[link], float) * 1e3, np.asarray(inert["F"], float)))
+    d = c.mechanism.driver
+    if d.link == link and not d.crank and c.driver_vector is not None:
+        joint = c.mechanism.joint_between(c.mechanism.frame, link)
+        out.append((np.asarray(c.points[link][joint.point], float) * 1e3, np.asarray(c.driver_vector, float)))
+    return out
+
+
+def free_body_size(c, link: int, k: float, X: float) -> tuple[float, float]:
+    """Width and height [mm] a free body takes printed at 1:k and 1 mm = X N, its margins and title included
+    (an estimate: each force drawn from its point, towards the link or away from it as the drawing does)."""
+    pts = [np.asarray(p, float) * 1e3 for p in c.points[link].values()]
+    if link in c.G:
+        pts.append(np.asarray(c.G[link], float) * 1e3)
+    centre = np.mean(pts, axis=0)
+    pts = [p / k for p in pts]
+    for P, F in _loads(c, link):
+        v = F / X
+        push = float(np.dot(F, centre - P)) > 0
+        pts.append(P / k - v if push else P / k + v)
+    pts = np.asarray(pts, float)
+    w, h = np.ptp(pts, axis=0)
+    # The labels around it (a "5 mm" margin each side in the drawing, and the labels beyond), and its title.
+    return float(max(w + 22.0, 40.0)), float(h + 26.0)
+
+
+def _rows_height(sizes, width: float) -> float:
+    rows, used, row_h, total = 0, 0.0, 0.0, 0.0
+    for w, h in sizes:
+        if used and used + GAP + w > width:
+            total += row_h + GAP
+            used, row_h = 0.0, 0.0
+        used += (GAP if used else 0.0) + w
+        row_h = max(row_h, h)
+        rows += 1
+    return total + row_h
+
+
+def free_body_scales(c, links, room=FREE_BODY_ROOM) -> tuple[float, float]:
+    """(k, X) for a figure of the free bodies of ``links``: the links about 55 mm at most, the largest force
+    about 40 mm, both made smaller together until the figure fits ``room``."""
+    size = max(float(np.max(np.ptp(np.asarray(list(c.points[n].values()), float) * 1e3, axis=0)))
+               if len(c.points[n]) > 1 else 10.0 for n in links)
+    largest = max([math.hypot(*F) for n in links for _, F in _loads(c, n)] + [1e-9])
+    k = length_scale(size, 55.0)
+    X = force_scale(largest, 40.0)
+    for _ in range(12):
+        if _rows_height([free_body_size(c, n, k, X) for n in links], room[0]) <= room[1]:
+            break
+        k, X = _bigger_k(k), _bigger_X(X)
+    return k, X
+
+
+# -- polygons -------------------------------------------------------------------------------------------------------
+def polygon_scale(steps, cell=POLYGON_CELL) -> float:
+    """One force scale for every polygon of ``steps``, each fitting ``cell``."""
+    return max([force_scale(polygon_size(st.polygon), cell) for st in steps if st.polygon] or [1.0])
+
+
+def resultant_step(c, step) -> Step | None:
+    """The sum a resultant step states (R3 = R3i + Fc3), as a polygon to draw: the known loads tip to tail and
+    the resultant closing it, reversed (R3i + Fc3 − R3 = 0). None when the link has one load only."""
+    link = step.link
+    parts = []
+    inert = c.inertia.get(link)
+    if inert is not None and math.hypot(*inert["F"]) > 0:
+        parts.append(Arrow(f"R{link}i", tuple(inert["F"]), True))
+    parts += [Arrow(a.name, tuple(a.vector), True) for a in c.external.get(link, [])]
+    if len(parts) < 2:
+        return None
+    total = np.sum([a.vector for a in parts], axis=0)
+    name = next((line.name for line in step.lines if line.name == f"R{link}"), f"R{link}")
+    return Step("polygon", f"{name} = " + " + ".join(a.name for a in parts), link,
+                polygon=tuple(parts) + (Arrow(f"−{name}", (-float(total[0]), -float(total[1])), False),))
+
+
+# -- pictures ---------------------------------------------------------------------------------------------------------
+def mechanism(s: Subject, c, i: int, k: float, *, room=False, key="mechanism") -> Picture:
+    from graphkin import draw
+
+    return s.picture(f"{key}-{i}", lambda: draw.draw_mechanism(c, length_scale=k, room=room), alt=
+                     f"the mechanism at {s.where(i)}, drawn at {length_text(k)}", natural=True)
+
+
+def free_bodies(s: Subject, c, i: int, links, k: float, X: float, *, unknowns=True) -> Picture:
+    from graphkin.draw import paper
+
+    return s.picture(f"free-bodies-{i}-{'all' if unknowns else 'given'}", lambda: paper.draw_free_bodies(
+        c, links, length_scale=k, force_scale=X, unknowns=unknowns),
+        alt=f"the free bodies at {length_text(k)}, forces at {force_text(X)}", natural=True)
+
+
+def polygons(s: Subject, key: str, steps, X: float, driver_name=None, titles=None) -> Picture:
+    from graphkin.draw import paper
+
+    return s.picture(key, lambda: paper.draw_polygons(steps, force_scale=X, driver_name=driver_name, titles=titles),
+                     alt=f"force polygons at {force_text(X)}", natural=True)
+
+
+def step(s: Subject, c, i: int, n: int, st, k: float, X: float, extra=None) -> Picture:
+    """Step ``n``'s lines of action at 1:k, and its polygon (or ``extra``, a resultant's sum) at 1 mm = X N."""
+    from graphkin.draw import paper
+
+    return s.picture(f"step-{i}-{n}", lambda: paper.draw_step(c, st, length_scale=k, force_scale=X, polygon=extra),
+                     alt=f"step {n} at {length_text(k)}", natural=True)
+
+
+def constructions(s: Subject, c, i: int, steps, k: float, titles=None) -> Picture:
+    from graphkin.draw import paper
+
+    return s.picture(f"construction-{i}", lambda: paper.draw_constructions(c, steps, length_scale=k, titles=titles),
+                     alt=f"the lines of action at {length_text(k)}", natural=True)
+
+
+def construction_scale(c, steps, width: float = FIGURE_WIDTH, height: float = 85.0) -> float:
+    """k for the mechanism with each step's lines of action, one panel per step, up to two panels a row."""
+    n = max(1, min(len(steps), 2))
+    w = (width - GAP * (n - 1)) / n - 4.0
+    sizes = [mechanism_size(c, points=list(st.points.values())) for st in steps] or [mechanism_size(c)]
+    return max(length_scale(size, (w, height)) for size in sizes)

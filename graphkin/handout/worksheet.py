@@ -1,0 +1,89 @@
+"""A worksheet a student can work: the position and every given stated, the mechanism at a stated scale with
+room to draw the lines of action, the free bodies with their known loads, a box per force polygon that holds
+it at the stated scale, what to find, and room for the answers.
+
+The scales are :func:`graphkin.graphical.paper.sheet_scales`'s, the ones the grader allows a reading error at
+(:data:`graphkin.graphical.paper.READING` on paper), so the sheet and the grading agree.
+"""
+
+from __future__ import annotations
+
+import math
+
+from graphkin.graphical.paper import POLYGON_ROOM, READING, force_text, length_text, sheet_scales
+from graphkin.handout import maths as M
+from graphkin.handout import scaled
+from graphkin.handout.compact import polygon_equation, worked_steps
+from graphkin.handout.document import Doc, Subject
+from graphkin.handout.sections import loads
+
+BOX = (POLYGON_ROOM[0] + 14.0, POLYGON_ROOM[1] + 16.0)
+"""A polygon's box [mm]: the room every polygon fits at the sheet's force scale, and a margin for its labels.
+All boxes are the same size: a box as large as its own polygon would tell the answer's size."""
+
+
+def givens(doc: Doc, s: Subject, entry: dict):
+    """Everything the position gives: each link's motion and inertia loads, and the loads acting here."""
+    doc.heading(2, "Given at this position")
+    if s.static:
+        doc.table(["link", "θ [°]"], [[f"link {link}", M.n(M.fmt_fixed(math.degrees(d["theta"])))]
+                                      for link, d in entry["links"].items()], "lr")
+    else:
+        rows = []
+        for link, d in entry["links"].items():
+            a, F, T, h = d["a_G"], d["inertia_force"], d["inertia_torque"], d["h"]
+            massless = s.mech.link(int(link)).mass == 0
+            rows.append([f"link {link}", M.n(M.fmt_fixed(math.degrees(d["theta"]))), M.n(d["omega"]), M.n(d["alpha"]),
+                         M.polar(M.size_of(a), M.angle_of(a), ""),
+                         "—" if massless else M.polar(M.size_of(F), M.angle_of(F), "N"),
+                         "—" if massless else M.qty(T, "N·m"),
+                         "—" if h is None else M.qty(h * 1e3, "mm")])
+        doc.table(["link", "θ [°]", "ω [rad/s]", "α [rad/s²]", (M.sym("a", "G"), " [m/s²]"),
+                   ("inertia force ", M.row(M.op("−"), M.i("m"), M.sym("a", "G"))),
+                   ("inertia torque ", M.row(M.op("−"), M.sym("I", "G"), M.i("α"))), ("offset ", M.i("h"))],
+                  rows, "lrrrrrrr", caption="The inertia force and torque of a link combine into one force of the "
+                  "same size on a line offset from G by h = |T|/|F|, to the side that reproduces the torque's sense")
+    loads(doc, s, entry, always=True)
+
+
+def worksheet(doc: Doc, s: Subject, entry: dict, c, i: int, *, find=True):
+    """A position's worksheet (its heading is the caller's)."""
+    givens(doc, s, entry)
+    if c is None or not c.valid:
+        return
+    scales = sheet_scales(c)
+    k = scales.length
+    doc.heading(2, "The mechanism")
+    doc.figure([scaled.mechanism(s, c, i, k, room=True, key="sheet-mechanism")],
+               f"The mechanism at {s.where(i)}, with room around it to draw the lines of action and find where they "
+               f"meet. Scale {length_text(k)}: measure a length and multiply it by {M.fmt(k)}.")
+    links = list(s.mech.moving)
+    k_fb, X_fb = scaled.free_body_scales(c, links)
+    doc.figure([scaled.free_bodies(s, c, i, links, k_fb, X_fb, unknowns=False)],
+               "The free bodies with the loads known before the construction ("
+               + ("" if s.static else "the inertia resultant on its line, ") + "external loads); the joint forces "
+               "are yours to find. " + scaled.statement(k_fb, X_fb))
+    X = scales.polygon
+    doc.heading(2, "Force polygons")
+    doc.text(f"Draw each polygon tip to tail at {force_text(X)}, each in its box (it fits at that scale), and "
+             f"measure the sides you find: a reading to ±{READING:g} mm is ±{M.fmt(READING * X)} N.")
+    sums = [scaled.resultant_step(c, st) for st in c.steps if st.kind == "resultant" and not getattr(st, "sub", "")]
+    steps = [st for st in sums if st is not None] + worked_steps(c)
+    for n, st in enumerate(steps, start=1):
+        label = f"Polygon {n}" + (f", link {st.link}" if st.link is not None else "") + \
+            (f" (sub-problem {st.sub})" if getattr(st, "sub", "") else "") + f", at {force_text(X)}: "
+        doc.space(BOX[1], label, polygon_equation(st), width=BOX[0])
+    if find:
+        answer_room(doc, s)
+
+
+def answer_room(doc: Doc, s: Subject):
+    """What to find, with an empty cell for each answer."""
+    r = s.result
+    rows = [[M.name(r.name_of(a, b)), "", ""] for a, b in r.forces]
+    d = s.mech.driver
+    rows.append([M.name(d.symbol), "", "(CCW or CW)" if d.crank else "(along the guide)"])
+    doc.heading(2, "Answers")
+    doc.table(["find", "magnitude", "direction [°] or sense"], rows, "lll",
+              caption="Every joint force (magnitude and direction) and the driving "
+                      + ("torque" if d.crank else "force") + ", read off your polygons", boxed=True, tall=True)
