@@ -24,6 +24,7 @@ import matplotlib  # noqa: E402
 matplotlib.use("Agg")
 
 from build import AT  # noqa: E402
+
 from graphkin import catalog, draw  # noqa: E402
 from graphkin.graphical import construct_forces  # noqa: E402
 

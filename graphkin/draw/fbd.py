@@ -20,8 +20,9 @@ from graphkin.draw.axes import (
     set_limits,
     setup_axes,
 )
+from graphkin.draw.geometry import Geometry
 from graphkin.draw.labels import Labeler, arrow_label_candidates, measuring_renderer, point_label_candidates, text_size
-from graphkin.draw.mechanism import NEAR, Geometry, _label_points, centre_of_mass, draw_link_body
+from graphkin.draw.mechanism import NEAR, _label_points, centre_of_mass, draw_link_body
 from graphkin.draw.scales import dimension, nice_round, scale_bar
 from graphkin.draw.text import sub
 from graphkin.model import Prismatic

@@ -227,7 +227,8 @@ def draw_step(construction, step, *, length_scale: float, force_scale: float, po
     paper = 1.0 / length_scale
     ax = fig.add_axes([0, 0, 0.2, 0.2], axes_class=PanelAxes)
     draw_mechanism(c, ax=ax, faint=True, emphasis=step.link, place=False, length_scale=length_scale, **style)
-    draw_step_geometry(c, step, ax=ax, place=False, **style)
+    # Its loads to the force scale the figure states (X N per printed mm is X / k per mm drawn).
+    draw_step_geometry(c, step, ax=ax, place=False, force_scale=force_scale / length_scale, **style)
     panels = [(ax, paper)]
     shown = polygon if polygon is not None else step if step.polygon else None
     if shown is not None:

@@ -173,11 +173,10 @@ def draw_force_polygon(step, *, scale: float, ax=None, origin=(0.0, 0.0), values
         note = f"1 mm = {num(scale)} N" if scale_note else None
         drawn += scale_bar(ax, bar_at, value / scale, value, s=s, tick=0.015 * span, labeler=lab, note=note)
         extent += [bar_at, bar_at + [value / scale, 0]]
-    set_limits(ax, extent, margin=0.2 if not paper else 0.0, existing=existing)
     if paper:
         # A margin of its own on paper: room for the labels around the polygon, whatever its size.
         pad = 9.0 / paper
-        (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
-        ax.set_xlim(x0 - pad, x1 + pad)
-        ax.set_ylim(y0 - pad, y1 + pad)
+        corners = np.asarray(extent, float)
+        extent += [corners.min(axis=0) - pad, corners.max(axis=0) + pad]
+    set_limits(ax, extent, margin=0.2 if not paper else 0.0, existing=existing)
     return finish(ax, lab, drawn, place)

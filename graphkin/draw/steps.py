@@ -10,9 +10,10 @@ from matplotlib.figure import Figure
 
 from graphkin.draw import style as _style
 from graphkin.draw.arrows import arrow, perp, unit
-from graphkin.draw.axes import MM, PanelAxes, markers, set_limits
+from graphkin.draw.axes import MM, PanelAxes, markers, points_per_unit, set_limits
+from graphkin.draw.geometry import Geometry
 from graphkin.draw.labels import Labeler, point_label_candidates
-from graphkin.draw.mechanism import Geometry, draw_mechanism
+from graphkin.draw.mechanism import draw_mechanism
 from graphkin.draw.polygon import draw_force_polygon, step_title
 from graphkin.draw.text import input_text, sub
 from graphkin.graphical.construction import STEP_TITLES
@@ -30,13 +31,24 @@ def _wrap(text: str, width_in: float, size: float) -> str:
     return textwrap.fill(text, chars)
 
 
-def draw_step_geometry(construction, step, *, ax, place=True, **style) -> list:
+def _magnitude(step, name: str) -> float:
+    """The size [N] of the load named ``name`` that a step found or combined (0 when it names none)."""
+    for key in (name, name.replace("R", "F", 1) if name.startswith("R") and name.endswith("i") else None):
+        v = step.values.get(key) if key else None
+        if isinstance(v, (tuple, list)) and len(v) == 2:
+            return math.hypot(*v)
+    return 0.0
+
+
+def draw_step_geometry(construction, step, *, ax, place=True, force_scale=None, **style) -> list:
     """The step's lines of action and points, bold, on an axes that already shows the mechanism (in mm).
 
     Lines are drawn by role: a known load's line solid with an arrowhead for
     its sense, a known direction dashed, a found line dash-dot. Points far
     from the mechanism (a concurrency point nearly at infinity) are named in
-    a note instead of stretching the view. With ``place=False`` the labels are
+    a note instead of stretching the view. With ``force_scale`` [N per mm of the
+    drawing's units] a known load is drawn to that scale on its line; without, its
+    sense is a head on the line. With ``place=False`` the labels are
     left for the figure's layout to place (:func:`graphkin.draw.paper.arrange`).
     Returns the artists.
     """
@@ -70,12 +82,21 @@ def draw_step_geometry(construction, step, *, ax, place=True, **style) -> list:
             # Show the line where it passes closest to the mechanism.
             P = P + d * float(np.dot(centre - P, d))
         extent.append(P)
-        if line.role == "resultant":
-            a = arrow(ax, P - d * 0.09 * geom.size, P + d * 0.09 * geom.size, color=color, lw=s.known_lw, s=s,
-                      zorder=4.5)
+        size = _magnitude(step, line.name)
+        if line.role == "resultant" and force_scale and size:
+            # The load itself, to the figure's force scale, on its line.
+            half = d * size / force_scale / 2
+            a = arrow(ax, P - half, P + half, color=color, lw=s.known_lw, s=s, zorder=4.5,
+                      pt_per_unit=points_per_unit(ax, 1.3 * geom.size))
             out.append(a)
-            # As an arrow, head and all: its head is wider than its shaft.
-            lab.arrow(P - d * 0.09 * geom.size, P + d * 0.09 * geom.size, a.get_linewidth(), a.get_mutation_scale())
+            lab.arrow(P - half, P + half, a.get_linewidth(), a.get_mutation_scale())
+            extent += [P - half, P + half]
+        elif line.role == "resultant":
+            # Its sense only, as a head on the line: a drawing with no force scale draws no force's length.
+            angle = math.degrees(math.atan2(d[1], d[0])) - 90
+            m = markers(ax, *P, marker=(3, 0, angle), ms=9, color=color, zorder=4.5)
+            out.append(m)
+            lab.dot(P, 9.0)
         n = perp(d)
         # The line itself: a label may cross it, at a price (the axline is drawn across the whole view).
         lab.segment(P - d * 3 * geom.size, P + d * 3 * geom.size, soft=True)

@@ -15,13 +15,12 @@ import numpy as np
 
 from graphkin.graphical import Arrow, Step
 from graphkin.graphical.paper import (
-    LENGTH_SCALES,
     FIGURE_WIDTH,
+    LENGTH_SCALES,
     force_scale,
     force_text,
     length_scale,
     length_text,
-    mechanism_size,
     polygon_size,
 )
 from graphkin.handout.document import Subject
@@ -175,9 +174,42 @@ def constructions(s: Subject, c, i: int, steps, k: float, titles=None) -> Pictur
                      alt=f"the lines of action at {length_text(k)}", natural=True)
 
 
+def _step_extent(c, step, k: float, X: float | None) -> tuple[float, float]:
+    """Width and height [mm, printed at 1:k] of a step's drawing on the mechanism: the mechanism, the points the
+    step finds (within three mechanism sizes, as drawn), and each known load on its line at 1 mm = X N."""
+    pts = [np.asarray(p, float) * 1e3 for d in c.points.values() for p in d.values()]
+    pts = np.asarray(pts, float)
+    centre, size = pts.mean(axis=0), float(np.max(np.ptp(pts, axis=0)))
+    out = list(pts)
+    for P in step.points.values():
+        P = np.asarray(P, float) * 1e3
+        if np.all(np.isfinite(P)) and np.hypot(*(P - centre)) <= 3 * size:
+            out.append(P)
+    for line in step.lines:
+        P, d = np.asarray(line.point, float) * 1e3, np.asarray(line.direction, float)
+        if np.hypot(*(P - centre)) > 3 * size:
+            P = P + d * float(np.dot(centre - P, d))
+        out.append(P)
+        F = step.values.get(line.name) or step.values.get(line.name.replace("R", "F", 1))
+        if X and line.role == "resultant" and isinstance(F, (tuple, list)):
+            half = d * math.hypot(*F) / X * k / 2
+            out += [P - half, P + half]
+    w, h = np.ptp(np.asarray(out, float), axis=0)
+    # The drawing's margins (a tenth each side, and the ground's and the labels' room) at its printed size.
+    return float(w * 1.25 / k + 16.0), float(h * 1.25 / k + 16.0)
+
+
+def step_scale(c, steps, X: float | None, room) -> float:
+    """The largest standard k at which every step's drawing on the mechanism fits ``room`` [mm]."""
+    W, H = room
+    for k in LENGTH_SCALES:
+        if all(w <= W and h <= H for w, h in (_step_extent(c, st, k, X) for st in steps)):
+            return k
+    return LENGTH_SCALES[-1]
+
+
 def construction_scale(c, steps, width: float = FIGURE_WIDTH, height: float = 85.0) -> float:
     """k for the mechanism with each step's lines of action, one panel per step, up to two panels a row."""
     n = max(1, min(len(steps), 2))
-    w = (width - GAP * (n - 1)) / n - 4.0
-    sizes = [mechanism_size(c, points=list(st.points.values())) for st in steps] or [mechanism_size(c)]
-    return max(length_scale(size, (w, height)) for size in sizes)
+    w = (width - GAP * (n - 1)) / n
+    return step_scale(c, steps, None, (w, height))

@@ -9,8 +9,8 @@ import re
 
 import numpy as np
 
-from graphkin.exercises.variants import pretty
 from graphkin.exercises.quantities import measured_as
+from graphkin.exercises.variants import pretty
 from graphkin.graphical.paper import (
     FIGURE_WIDTH,
     READING,

@@ -10,13 +10,14 @@ import numpy as np
 from graphkin.analytical.matrix import assemble
 from graphkin.cycle import sweep
 from graphkin.graphical.construction import STEP_TITLES
-from graphkin.graphical.paper import force_text, length_scale, length_text, mechanism_size
+from graphkin.graphical.paper import FIGURE_WIDTH, force_text, length_text
 from graphkin.handout import maths as M
 from graphkin.handout import scaled
 from graphkin.handout.compact import polygon_equation
 from graphkin.handout.document import Doc, Subject
 from graphkin.notation import unless_rounding
 from graphkin.report import cycle_data
+
 
 def _clean(x, scale, rel=1e-12):
     """Values below ``rel`` × ``scale`` set to 0: rounding noise (1e-17 where a lever arm is zero) would hide
@@ -128,8 +129,9 @@ def graphical(doc: Doc, s: Subject, entry: dict, c, i: int):
     doc.figure([scaled.free_bodies(s, c, i, links, k_fb, X_fb)],
                "Free bodies of every moving link, with every force found. " + scaled.statement(k_fb, X_fb))
     drawn = [st for st in c.steps if st.kind not in _TEXT_ONLY and st.kind != "sub-problem"]
-    k = max([length_scale(mechanism_size(c, points=list(st.points.values())), _STEP_ROOM) for st in drawn] or [1.0])
-    X = scaled.polygon_scale(drawn, _POLYGON_ROOM)
+    sums = [scaled.resultant_step(c, st) for st in drawn if st.kind == "resultant"]
+    X = scaled.polygon_scale(drawn + [st for st in sums if st is not None], _POLYGON_ROOM)
+    k = scaled.step_scale(c, [st for st in drawn if _draws_geometry(st, s.mech.driver.link)], X, _STEP_ROOM)
     doc.text(f"Each step below is drawn on the mechanism at {length_text(k)}, its polygon at {force_text(X)}.")
     for n, step in enumerate(c.steps, start=1):
         sub = getattr(step, "sub", "")
@@ -166,8 +168,8 @@ def graphical(doc: Doc, s: Subject, entry: dict, c, i: int):
     _both_routes(doc, s, entry)
 
 
-_STEP_ROOM = (100.0, 85.0)
-"""Room for the mechanism's panel of a step's figure [mm] (its polygon goes beside it)."""
+_STEP_ROOM = (FIGURE_WIDTH, 90.0)
+"""Room for the mechanism's panel of a step's figure [mm] (its polygon beside it, or under it if it must)."""
 _POLYGON_ROOM = (58.0, 80.0)
 
 
