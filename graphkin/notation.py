@@ -301,3 +301,25 @@ def typeset_minus(text: str) -> str:
     'T3i = −379.4 N·m; F23 = 1972 N ∠ −124.29°; 166.8 + (−57.84); a two-force member'
     """
     return _SIGN.sub(MINUS, text)
+
+
+_POWER = re.compile(r"(?<![\w.])(\d+(?:\.\d+)?)[eE]([-+−]?)0*(\d+)(?![\w.])")
+_SUPERSCRIPT = str.maketrans("0123456789−", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
+
+
+def typeset(text: str) -> str:
+    """Text written for a terminal made fit to typeset: a number's sign a true minus (:func:`typeset_minus`),
+    and a power of ten written out as a book prints it (``6.007e-5`` → ``6.007×10⁻⁵``, ``1e-6`` → ``10⁻⁶``).
+
+    Examples
+    --------
+    >>> typeset("T2i = -5.871e-05 N·m; I = 6.007e-5 kg·m²; 1e-6 m³; E6_1.m; 2e3 N")
+    'T2i = −5.871×10⁻⁵ N·m; I = 6.007×10⁻⁵ kg·m²; 10⁻⁶ m³; E6_1.m; 2×10³ N'
+    """
+
+    def power(m):
+        sign = MINUS if m[2] in ("-", MINUS) else ""
+        exponent = (sign + m[3]).translate(_SUPERSCRIPT)
+        return f"10{exponent}" if m[1] in ("1", "1.0") else f"{m[1]}×10{exponent}"
+
+    return typeset_minus(_POWER.sub(power, text))

@@ -278,3 +278,23 @@ def draw_constructions(construction, steps, *, length_scale: float, titles=None,
     height = arrange(fig, panels, width=width, strip=STRIP)
     scale_strip(fig, height, length_scale=length_scale, width=width, **style)
     return fig
+
+
+def plotted(draw, width: float, height: float) -> Figure:
+    """A plot (a curve over the cycle) drawn on a figure of the size it prints at, so that its labels print at
+    the sizes :mod:`graphkin.draw.style` gives them (never below 8 pt), not shrunk with the figure.
+
+    Parameters
+    ----------
+    draw : callable
+        ``draw(ax=ax)`` draws the plot on the axes it is given (``draw_torque_curve``, ``draw_energy``, …).
+    width, height : float
+        The figure's printed size [mm].
+
+    Returns
+    -------
+    Figure
+    """
+    fig = Figure(figsize=(width / 25.4, height / 25.4), dpi=100, layout="constrained")
+    draw(ax=fig.add_subplot())
+    return fig

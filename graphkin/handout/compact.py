@@ -18,7 +18,7 @@ from graphkin.handout import scaled
 from graphkin.handout.document import Doc, Subject
 from graphkin.handout.sections import loads
 from graphkin.model import Revolute
-from graphkin.notation import typeset_minus
+from graphkin.notation import typeset
 
 
 def solution(doc: Doc, s: Subject, entry: dict, c, i: int):
@@ -77,13 +77,15 @@ def inertia(doc: Doc, s: Subject, entry: dict):
                                M.frac(M.qty(abs(T), "N·m"), M.qty(M.size_of(F), "N")), M.op("="),
                                M.qty(h * 1e3, "mm")))
     if lines:
-        doc.text("d'Alembert: on each link the inertia force −m a_G at G and the inertia torque −I_G α combine into "
-                 "one force of the same size, on a line offset from G by h = |T|/|F| to the side that reproduces the "
-                 "torque's sense:")
+        doc.text("d'Alembert: on each link the inertia force ", M.row(M.op("−"), M.i("m"), M.sym("a", "G")),
+                 " at G and the inertia torque ", M.row(M.op("−"), M.sym("I", "G"), M.i("α")), " combine into one "
+                 "force of the same size, on a line offset from G by ",
+                 M.row(M.i("h"), M.op("="), M.frac(M.absval(M.i("T")), M.absval(M.i("F")))),
+                 " to the side that reproduces the torque's sense:")
         doc.equation(*lines)
     if still:
-        doc.text(f"Link{'s' if len(still) > 1 else ''} {', '.join(still)}: no inertia loads here (massless, or "
-                 "a_G = 0 and α = 0).")
+        doc.text(f"Link{'s' if len(still) > 1 else ''} {', '.join(still)}: no inertia loads here (massless, or ",
+                 M.row(M.sym("a", "G"), M.op("="), M.n(0)), " and ", M.row(M.i("α"), M.op("="), M.n(0)), ").")
 
 
 def worked_steps(c):
@@ -130,7 +132,9 @@ def graphical(doc: Doc, s: Subject, entry: dict, c, i: int):
         doc.figure([scaled.constructions(s, c, i, concurrent, k, titles)],
                    "The lines of action of each three-force member, and where they meet. " + scaled.statement(k))
         for st in concurrent:
-            doc.text(typeset_minus(f"{_construction_title(st)}: {st.caption}" if titles else st.caption))
+            # A caption that names its sub-problem and link ("In sub-problem I, link 3 is …") needs no title.
+            named = not titles or f"link {st.link}" in st.caption[:40].lower()
+            doc.text(typeset(st.caption if named else f"{_construction_title(st)}: {st.caption}"))
     steps = worked_steps(c)
     sums = [scaled.resultant_step(c, st) for st in c.steps if st.kind == "resultant" and not getattr(st, "sub", "")]
     sums = [st for st in sums if st is not None]

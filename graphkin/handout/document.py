@@ -18,7 +18,7 @@ from graphkin.exercises.exercise import CYCLE_KINDS, set_field
 from graphkin.exercises.variants import Variant
 from graphkin.graphical import construct_forces
 from graphkin.handout.figures import Picture
-from graphkin.notation import input_text, typeset_minus
+from graphkin.notation import input_text, typeset
 from graphkin.report import solution
 from graphkin.units import to_si
 
@@ -29,7 +29,7 @@ DEFAULT_CS = 0.05
 def runs(x) -> list:
     """A cell or list item as runs: a str or a math node is one run, a tuple holds several. A number's sign in
     the text is a true minus (captions are written for terminals too, with a hyphen-minus)."""
-    return [typeset_minus(r) if isinstance(r, str) else r for r in (x if isinstance(x, tuple) else (x,))]
+    return [typeset(r) if isinstance(r, str) else r for r in (x if isinstance(x, tuple) else (x,))]
 
 
 class Doc:
@@ -40,7 +40,7 @@ class Doc:
         self.figures = 0
 
     def heading(self, level: int, text: str):
-        self.blocks.append({"kind": "heading", "level": level, "text": text})
+        self.blocks.append({"kind": "heading", "level": level, "text": typeset(text)})
 
     def text(self, *parts):
         # A paragraph that ends with a colon introduces what follows: a page break between them would orphan it.
@@ -56,7 +56,8 @@ class Doc:
         ``small``: a smaller type, for a table of many columns."""
         self.blocks.append({"kind": "table", "header": [runs(h) for h in header],
                             "rows": [[runs(c) for c in r] for r in rows],
-                            "align": align or "l" * len(header), "caption": caption, "boxed": boxed, "tall": tall,
+                            "align": align or "l" * len(header), "caption": typeset(caption) if caption else caption,
+                            "boxed": boxed, "tall": tall,
                             "small": small})
 
     def equation(self, *lines, small=False):
@@ -77,7 +78,7 @@ class Doc:
             for b in lead:
                 b["keep"] = True
         self.blocks.append({"kind": "figure", "pictures": list(pictures),
-                            "caption": f"{label}. {typeset_minus(caption)}", "label": label})
+                            "caption": f"{label}. {typeset(caption)}", "label": label})
         return label
 
     def space(self, height: float, label: str, math=None, width: float | None = None):

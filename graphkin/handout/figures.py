@@ -40,18 +40,33 @@ class Picture:
         self.key, self.draw, self.width, self.alt, self.height = key, draw, width, alt, height
         self.natural = natural
         self._svg: str | None = None
+        self._figure = None
 
     def __repr__(self) -> str:
         return f"Picture({self.key!r})"
 
-    def svg(self) -> str:
-        """The figure as a standalone SVG document (text drawn as paths: no font needed to show it)."""
-        if self._svg is None:
+    def figure(self):
+        """The matplotlib Figure the picture draws, drawn on the first call (before :meth:`svg`, which lets it go).
+
+        Returns
+        -------
+        matplotlib.figure.Figure
+        """
+        if self._figure is None:
+            if self.draw is None:
+                raise ValueError(f"{self!r} is drawn and kept as SVG only")
             fig = self.draw()
             fig = getattr(fig, "ax", fig)              # a Drawn
             fig = getattr(fig, "figure", fig) if not hasattr(fig, "savefig") else fig
             if hasattr(fig, "get_figure"):
                 fig = fig.get_figure(root=True)
+            self._figure = fig
+        return self._figure
+
+    def svg(self) -> str:
+        """The figure as a standalone SVG document (text drawn as paths: no font needed to show it)."""
+        if self._svg is None:
+            fig = self.figure()
             from graphkin.draw import measuring_renderer as renderer_of
 
             # The drawing's own extent, measured with the drawing layer's shared renderer: bbox_inches="tight"
@@ -67,7 +82,7 @@ class Picture:
             with rc_context({"svg.hashsalt": f"graphkin-{self.key}"}), svg_text_laid_out_once():
                 fig.savefig(out, format="svg", bbox_inches=box, facecolor="white", metadata={"Date": None})
             self._svg = out.getvalue().decode("utf-8")
-            self.draw = None  # the figure and its data can go
+            self.draw = self._figure = None  # the figure and its data can go
         return self._svg
 
 

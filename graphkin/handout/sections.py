@@ -142,7 +142,33 @@ def _driver_text(s: Subject, d: dict, i: int | None) -> str:
     return "; ".join(parts)
 
 
-def _given_rows(s: Subject, raw: dict, frame_number: int, i: int | None = None) -> list[list[str]]:
+def _joined(parts) -> str | tuple:
+    """Parts of a cell joined by ``"; "``: text, or runs where a part is a symbol and its value (I_G, subscripted)."""
+    if all(isinstance(p, str) for p in parts):
+        return "; ".join(parts)
+    out: list = []
+    for k, p in enumerate(parts):
+        out += (["; "] if k else []) + (list(p) if isinstance(p, tuple) else [p])
+    return tuple(out)
+
+
+def _gear_text(j: dict) -> str:
+    """A gear mesh in words: ``gear 2 (pitch radius 100 mm, centre O2) meshes with gear 3 (pitch radius 40 mm,
+    centre O3); pressure angle φ = 20°``."""
+    links, centres, radii = j.get("links", []), j.get("centers", []), j.get("radii", [])
+    gears = []
+    for k, link in enumerate(links):
+        about = [f"pitch radius {_pretty(radii[k])}" if k < len(radii) else "",
+                 f"centre {centres[k]}" if k < len(centres) else ""]
+        about = ", ".join(x for x in about if x)
+        gears.append(f"gear {link}" + (f" ({about})" if about else ""))
+    text = " meshes with ".join(gears)
+    if "pressure_angle" in j:
+        text += f"; pressure angle φ = {_pretty(j['pressure_angle'])}"
+    return text
+
+
+def _given_rows(s: Subject, raw: dict, frame_number: int, i: int | None = None) -> list[list]:
     """The problem file's data, one row per frame, link, joint, driver and load, in the file's units."""
     rows = []
     if raw.get("gravity") is not None:
@@ -152,15 +178,16 @@ def _given_rows(s: Subject, raw: dict, frame_number: int, i: int | None = None) 
         rows.append([f"frame (link {frame_number})", "; ".join(f"{k} = {_pretty(p)}" for k, p in frame["points"].items())])
     for link in raw.get("links", []):
         parts = [f"{k} = {_pretty(p)}" for k, p in link.get("points", {}).items()]
-        for key, label in (("mass", "m"), ("G", "G"), ("I_G", "I_G"), ("k", "k")):
+        for key, label in (("mass", "m"), ("G", "G"), ("I_G", M.sym("I", "G")), ("k", "k")):
             if key in link:
-                parts.append(f"{label} = {_pretty(link[key])}")
+                parts.append((label, f" = {_pretty(link[key])}") if not isinstance(label, str) else
+                             f"{label} = {_pretty(link[key])}")
         if "shape" in link:
             shape = dict(link["shape"])
             kind = shape.pop("type", "shape")
             parts.append(f"{kind} " + _pretty(shape) if shape else kind)
         name = f"link {link.get('number', '?')}" + (f" ({link['name']})" if link.get("name") else "")
-        rows.append([name, "; ".join(parts)])
+        rows.append([name, _joined(parts)])
     for j in raw.get("joints", []):
         kind = j.get("type", "joint")
         if kind == "revolute":
@@ -171,7 +198,7 @@ def _given_rows(s: Subject, raw: dict, frame_number: int, i: int | None = None) 
             if "mu" in j:
                 text += f", μ = {_pretty(j['mu'])}"
         elif kind == "gear":
-            text = "; ".join(f"{_SYMBOL.get(k, k)} = {_pretty(x)}" for k, x in j.items() if k != "type")
+            text = _gear_text(j)
         else:
             text = "; ".join(f"{_SYMBOL.get(k, k)} = {_pretty(x)}" for k, x in j.items() if k != "type")
         rows.append([f"{kind} joint", text])
@@ -221,7 +248,7 @@ def given(doc: Doc, s: Subject, i: int | None = None, own: bool = True):
              M.pair(np.asarray(b.G) * 1e3, "mm")] for b in moving]
     doc.table(["link", ("mass ", M.i("m")), ("inertia about G, ", M.sym("I", "G")), "G in the link's frame"], rows,
               "lrrr", caption="Mass properties used (the file's shapes and radii of gyration worked out: "
-                              "I_G = m k², or from the shape)")
+                              "the inertia about G is m k², or the shape's)")
 
 
 def questions(doc: Doc, s: Subject, answers: bool):
@@ -275,8 +302,10 @@ def _convention_picture() -> Picture:
     if not _CONVENTION:
         from graphkin import draw
 
+        # Printed at its own size (about 100 mm wide), so its labels print at theirs.
         _CONVENTION.append(Picture("convention", lambda: draw.draw_sign_convention(), 0.5,
-                                   "x right, y up; angles, ω, α and torques positive counter-clockwise", 60))
+                                   "x right, y up; angles, ω, α and torques positive counter-clockwise", 60,
+                                   natural=True))
     return _CONVENTION[0]
 
 

@@ -39,15 +39,19 @@ def matrix(doc: Doc, s: Subject, entry: dict, i: int):
     x = system.solve()[i]
     x = _clean(x, np.abs(x).max(), 1e-9)
     doc.heading(2, "Equilibrium equations: the matrix method")
+    F_ext, M_ext = M.sym("F", "ext"), M.sym("M", "ext")
+    moved = (M.row(M.op("−"), M.op("Σ"), F_ext, M.op(","), M.op("−"), M.op("Σ"), M_ext) if s.static else
+             M.row(M.i("m"), M.sym("a", "G"), M.op("−"), M.op("Σ"), F_ext, M.op(","), M.SP, M.sym("I", "G"),
+                   M.i("α"), M.op("−"), M.op("Σ"), M_ext))
     doc.text(f"Three equations per moving link (ΣFx = 0, ΣFy = 0, ΣM about G = 0), links "
              f"{', '.join(map(str, s.mech.moving))} in turn; one column per unknown. Force columns in N, "
-             "moment rows in N·m (lever arms in m); {b} holds the known loads moved across "
-             + ("(−ΣF_ext, −ΣM_ext; static: no inertia terms)." if s.static else "(m a_G − ΣF_ext, I_G α − ΣM_ext)."))
+             "moment rows in N·m (lever arms in m); {b} holds the known loads moved across (", moved,
+             "; static: no inertia terms)." if s.static else ").")
     doc.text("The unknowns: ", *_definitions(s, system.unknowns))
     cells = [[M.n(v) for v in r] for r in A]
     unknowns = [_unknown(u) for u in system.unknowns]
     # Each row named by the equation it is (link 3: ΣFx), to the left of the matrix.
-    labels = M.mat([[M.t(e.replace(": ", " "))] for e in system.equations], "")
+    labels = M.mat([[_equation_name(e)] for e in system.equations], "")
     doc.equation(M.row(labels, M.mat(cells), M.column(unknowns), M.op("="), M.column([M.n(v) for v in b])),
                  small=True)
     doc.text("Solved:")
@@ -56,6 +60,16 @@ def matrix(doc: Doc, s: Subject, entry: dict, i: int):
         unit = "N·m" if u[0] in "CT" else "N"  # couples of sliding pairs and the crank's torque
         rows.append([_unknown(u), M.qty(value, unit)])
     doc.table(["unknown", "value"], rows, "lr")
+
+
+def _equation_name(equation: str) -> list:
+    """A row's name as the matrix prints it beside the row: ``"link 3: ΣM_G"`` → link 3 ΣM_G, G a subscript."""
+    link, _, what = equation.partition(": ")
+    base, _, subscript = what.partition("_")
+    if not subscript:
+        return M.row(M.t(f"{link} {base}"))
+    return M.row(M.t(f"{link} "), M.op(base[:1]), M.sym(base[1:], subscript)) if base[:1] == "Σ" else \
+        M.row(M.t(f"{link} "), M.sym(base, subscript))
 
 
 def _definitions(s: Subject, unknowns) -> list:
@@ -243,8 +257,15 @@ def _both_routes(doc: Doc, s: Subject, entry: dict):
 
 
 # -- a whole cycle ------------------------------------------------------------------------------------
+_PLOT = (160.0, 90.0)
+"""Printed size of the torque curve [mm]: drawn at it, so its labels print at their own sizes."""
+_SMALL_PLOT = (130.0, 72.0)
+"""Printed size of the energy and joint-force index plots [mm]."""
+
+
 def cycle(doc: Doc, s: Subject):
     from graphkin import draw
+    from graphkin.draw import paper
 
     cycle = sweep(s.problem, s.cycle_positions)
     Cs = s.Cs if cycle.closed and not s.static else None  # a static analysis has no speed to keep steady
@@ -255,8 +276,9 @@ def cycle(doc: Doc, s: Subject):
     doc.text(f"The same solution at every one of the {data['n']} positions (a load that switches on or off is "
              "sampled just before and just after its switching angle).")
     f = cycle.flywheel(Cs) if Cs is not None else None
-    label = doc.figure([s.picture("torque-curve", lambda: draw.draw_torque_curve(cycle, flywheel=f), 0.85,
-                                "the driving torque over the cycle", 85)],
+    label = doc.figure([s.picture("torque-curve", lambda: paper.plotted(
+        lambda ax: draw.draw_torque_curve(cycle, flywheel=f, ax=ax), *_PLOT), alt="the driving torque over the cycle",
+        natural=True)],
                        "The driving torque over one turn with its average" +
                        (" and the pulses of T − T_avg with their energies." if f is not None else "."))
     theta = f"θ{s.mech.driver.frame}{s.mech.driver.link}"
@@ -294,7 +316,8 @@ def cycle(doc: Doc, s: Subject):
                   M.op("="), M.qty(fw["I_s"], "kg·m²")))
         doc.text(f"A solid steel disk ({d['thickness'] * 1e3:g} mm thick, ρ = {d['density']:g} kg/m³, an assumption) "
                  "of that inertia has radius ", M.qty(d["radius"] * 1e3, "mm"), " and mass ", M.qty(d["mass"], "kg"), ".")
-        doc.figure([s.picture("energy", lambda: draw.draw_energy(f), 0.7, "the flywheel's energy over the cycle", 70)],
+        doc.figure([s.picture("energy", lambda: paper.plotted(lambda ax: draw.draw_energy(f, ax=ax), *_SMALL_PLOT),
+                              alt="the flywheel's energy over the cycle", natural=True)],
                    "The energy ∫(T − T_avg) dθ over the cycle: its largest swing is E.")
     jfi = data["joint_force_index"]
     doc.heading(2, "Joint-force index")
@@ -307,5 +330,6 @@ def cycle(doc: Doc, s: Subject):
                  "position. Peak ", M.n(jfi["peak"]["value"]), f"{u} at {where(jfi['peak'])} "
                  f"(limit {jfi['limit']:g}: {over}).")
         index = cycle.joint_force_index()
-        doc.figure([s.picture("jfi", lambda: draw.draw_joint_force_index(index), 0.7, "the joint-force index", 70)],
+        doc.figure([s.picture("jfi", lambda: paper.plotted(lambda ax: draw.draw_joint_force_index(index, ax=ax),
+                                                           *_SMALL_PLOT), alt="the joint-force index", natural=True)],
                    "The joint-force index over the cycle, with its limit.")

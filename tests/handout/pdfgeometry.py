@@ -234,3 +234,32 @@ def bars(fig: Figure, width: float, colour) -> list[float]:
             if len(sub) == 2:
                 out.append(float(np.linalg.norm(np.subtract(sub[1], sub[0]))) / MM)
     return out
+
+
+def text_across_rules(path) -> list[tuple[int, str, float]]:
+    """Characters that cross a table's vertical rule: (page, character, x of the rule [pt]).
+
+    A cell whose text is wider than its column runs over the rule into the next cell; read by pypdfium2's
+    character boxes against the thin vertical lines the page strokes.
+    """
+    import pypdfium2 as pdfium
+
+    reader, pdf = pypdf.PdfReader(path), pdfium.PdfDocument(path)
+    out = []
+    for k, page in enumerate(reader.pages):
+        rules = []
+        for p in paths(reader, page):
+            if p.stroke is None or p.fill is not None or p.width > 1.0:
+                continue
+            for sub in p.subpaths:
+                if len(sub) == 2 and abs(sub[0][0] - sub[1][0]) < 0.01 and abs(sub[0][1] - sub[1][1]) > 3:
+                    rules.append((sub[0][0], min(sub[0][1], sub[1][1]), max(sub[0][1], sub[1][1])))
+        text = pdf[k].get_textpage()
+        for i in range(text.count_chars()):
+            left, bottom, right, top = text.get_charbox(i)
+            if right - left < 0.3:
+                continue
+            for x, y0, y1 in rules:
+                if left + 0.2 < x < right - 0.2 and bottom < y1 and top > y0:
+                    out.append((k, text.get_text_range(i, 1), round(x, 1)))
+    return out

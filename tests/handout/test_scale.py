@@ -167,3 +167,33 @@ def test_the_test_catches_a_figure_shrunk_to_the_text_width(printed, tmp_path, m
 @pytest.mark.parametrize("case, pages", [("double_slider", 3), ("strip_cutter_140", 4)])
 def test_a_compact_key_is_as_long_as_a_textbook_s(printed, case, pages):
     assert len(pypdf.PdfReader(printed[case]["path"]).pages) <= pages
+
+
+LABEL_CASES = {
+    "strip_cutter": dict(),  # a whole cycle, compact: the torque curve, energy and joint-force index plots too
+    "strip_cutter_140_full": dict(at="140 deg", detail="full"),  # every step, the sign convention
+    "strip_cutter_140_blank": dict(at="140 deg", version="blank"),
+}
+
+
+@pytest.mark.parametrize("case", LABEL_CASES)
+def test_every_label_prints_at_8_pt_or_more(case, monkeypatch):
+    """Every picture prints at its own size (a drawing at its scales, a plot at the size it was drawn), so a
+    label's font size is its printed size: none below 8 pt. A figure shrunk to a share of the text width, as the
+    cycle's plots were (labels at 5–6 pt), is not printed at its own size and fails the first check."""
+    from matplotlib.text import Text
+
+    from graphkin.handout import sections
+
+    # The sign convention is drawn once a process and kept as SVG: a fresh one, to read its labels.
+    monkeypatch.setattr(sections, "_CONVENTION", [])
+    doc = handout.build("strip_cutter", **LABEL_CASES[case])
+    pictures = [p for b in doc["blocks"] if b["kind"] == "figure" for p in b["pictures"]]
+    assert pictures
+    small = []
+    for pic in pictures:
+        assert pic.natural, pic.key
+        texts = [t for t in pic.figure().findobj(Text) if t.get_visible() and t.get_text().strip()]
+        assert texts, pic.key
+        small += [(pic.key, t.get_text(), t.get_fontsize()) for t in texts if t.get_fontsize() < 8.0]
+    assert small == []
