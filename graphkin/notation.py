@@ -78,9 +78,10 @@ def num(x: float, digits: int = 4, *, minus: str = MINUS, zero: float = 0.0, non
         Values not larger than this in size are rounding residues: ``"0"``.
     nonfinite : str, optional
         What to print for nan or ±inf (default: Python's ``nan``, ``inf``).
-    power : bool
+    power : bool or "superscript"
         Write a power of ten as ``1.5×10^−5`` instead of ``1.5e−05`` (for
-        text a student reads as an answer).
+        text a student reads as an answer), or with ``"superscript"`` as
+        ``1.5×10⁻⁵`` (for a drawing's labels, as a book prints it).
 
     Returns
     -------
@@ -91,8 +92,8 @@ def num(x: float, digits: int = 4, *, minus: str = MINUS, zero: float = 0.0, non
     --------
     >>> num(25.97834), num(-0.865942), num(7580.38), num(-0.0), num(123456.0), num(9.99996)
     ('25.98', '−0.8659', '7580', '0', '123500', '10')
-    >>> num(1.5e-5, power=True), num(float("nan"), nonfinite="—")
-    ('1.5×10^−5', '—')
+    >>> num(1.5e-5, power=True), num(-5.871e-5, power="superscript"), num(float("nan"), nonfinite="—")
+    ('1.5×10^−5', '−5.871×10⁻⁵', '—')
     """
     x = float(x)
     if x == 0 or abs(x) <= zero:
@@ -107,7 +108,9 @@ def num(x: float, digits: int = 4, *, minus: str = MINUS, zero: float = 0.0, non
             text = f"{round(x, places):.{max(places, 0)}f}"
         elif power:
             mantissa, exponent = text.split("e")
-            text = f"{mantissa}×10^{int(exponent)}"
+            exponent = str(int(exponent))
+            # "superscript": as a drawing or a typeset page prints it (5.871×10⁻⁵); True: as one types it.
+            text = f"{mantissa}×10" + (exponent.translate(_SUPERSCRIPT) if power == "superscript" else f"^{exponent}")
     return text.replace("-", minus)
 
 
@@ -304,7 +307,7 @@ def typeset_minus(text: str) -> str:
 
 
 _POWER = re.compile(r"(?<![\w.])(\d+(?:\.\d+)?)[eE]([-+−]?)0*(\d+)(?![\w.])")
-_SUPERSCRIPT = str.maketrans("0123456789−", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
+_SUPERSCRIPT = str.maketrans("0123456789−-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻⁻")
 
 
 def typeset(text: str) -> str:

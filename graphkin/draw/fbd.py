@@ -264,7 +264,7 @@ def draw_free_body(construction, link: int, *, ax=None, force_scale=None, title=
         lab.segment(*ln, soft=True)
         h = inert["h"] or 0.0
         if h * MM > 1e-6 * L:
-            text = f"h = {num(h * MM)} mm" + (" (not to scale)" if broken else "")
+            text = f"h = {num(h * MM, power='superscript')} mm" + (" (not to scale)" if broken else "")
             # Points per mm of drawing, roughly (the view spans about 1.3 L): arrows go outside below ~16 pt.
             drawn += dimension(ax, lab, G, P, text, s=s, small=16 / ppu, color=s.ink, broken=broken)
             drawn.labels["h"] = drawn[-1]
@@ -291,7 +291,7 @@ def draw_free_body(construction, link: int, *, ax=None, force_scale=None, title=
         drawn.add(a)
         lab.curve(arc, a.get_linewidth(), a.get_mutation_scale())
         extent += [X - 1.15 * r, X + 1.15 * r]
-        text = f"{sub(name)} = {num(abs(T))} N·m {'CCW' if T > 0 else 'CW'}"
+        text = f"{sub(name)} = {num(abs(T), power='superscript')} N·m {'CCW' if T > 0 else 'CW'}"
         if not paper and _too_wide(ax, text, s):
             # In a small panel (the explorer's) a long reading finds no spot clear of a long link: the unit and
             # the sense go on a second line.

@@ -134,9 +134,22 @@ def scale_strip(fig, height: float, *, length_scale=None, force_scale=None, widt
         else:
             value = nice_round(30.0 * X)
             length, unit, note = value / X, "N", force_text(X)
-        out += scale_bar(ax, (x, y), length, value, s=s, unit_text=unit, tick=1.0, note=note)
-        x += length + 62.0
+        bar = scale_bar(ax, (x, y), length, value, s=s, unit_text=unit, tick=1.0, note=note)
+        over = _right(bar[-1]) - (width - 1.0)
+        if over > 0:
+            # Its reading would run past the figure's edge (and the page's margin): the bar moves left to fit.
+            for artist in bar:
+                artist.remove()
+            bar = scale_bar(ax, (x - over, y), length, value, s=s, unit_text=unit, tick=1.0, note=note)
+        out += bar
+        x = _right(bar[-1]) + 12.0
     return out
+
+
+def _right(text) -> float:
+    """Where a text of a figure ends [mm from the figure's left edge]."""
+    fig = text.get_figure(root=True)
+    return text.get_window_extent(measuring_renderer(fig)).x1 / fig.dpi * 25.4
 
 
 def _names(text: str) -> str:

@@ -154,7 +154,7 @@ def draw_force_polygon(step, *, scale: float, ax=None, origin=(0.0, 0.0), values
             away = side * (1 if float(np.dot(tip - tail, along)) > 0 else -1)
         elif np.hypot(*away) < 1e-9 * span:
             away = np.array([-(tip - tail)[1], (tip - tail)[0]]) * (1 if a.known else -1)
-        text = sub(a.name) + (f" = {num(math.hypot(*a.vector))} N" if values else "")
+        text = sub(a.name) + (f" = {num(math.hypot(*a.vector), power='superscript')} N" if values else "")
         color = s.driver if driver_name and a.name == driver_name else s.known if a.known else s.unknown
         t = lab.label(text, arrow_label_candidates(tail, tip, away, s.label_pad), color=color)
         drawn.labels[a.name] = t

@@ -107,7 +107,9 @@ def draw_step_geometry(construction, step, *, ax, place=True, force_scale=None, 
     for name, X in step.points.items():
         X = np.asarray(X, float) * MM
         if np.hypot(*(X - centre)) > FAR * geom.size:
-            far.append(f"{name} is off the drawing, at ({num(X[0])}, {num(X[1])}) mm")
+            # On two lines: a panel of a printed figure may be narrower than the sentence.
+            at = ", ".join(num(v, power="superscript") for v in X)
+            far.append(f"{name} is off the drawing,\nat ({at}) mm")
             continue
         m = markers(ax, *X, ms=6.5, mfc=s.found, mec="white", mew=0.8, zorder=6)
         out.append(m)

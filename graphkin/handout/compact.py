@@ -150,10 +150,15 @@ def graphical(doc: Doc, s: Subject, entry: dict, c, i: int):
                            *[x for k, a in enumerate(st.polygon[:-1]) for x in ([M.op("+")] if k else []) +
                              [M.vec(M.name(a.name))]],
                            M.op("="), M.polar(M.size_of(R), M.angle_of(R), "N")))
-    titles = [_polygon_title(st) for st in drawn]
-    label = doc.figure([scaled.polygons(s, f"polygons-{i}", drawn, X, c.driver_name, titles)],
-                       "The force polygons, tip to tail, each closing on its link's equilibrium. "
-                       + scaled.statement(None, X))
+    labels = []
+    # As many figures as it takes for each to fit a page (the shaper's thirteen polygons take two).
+    for n, group in enumerate(scaled.polygon_groups(drawn, X, [_polygon_title(st) for st in drawn])):
+        titles = [_polygon_title(st) for st in group]
+        key = f"polygons-{i}" + (f"-{n + 1}" if n else "")
+        labels.append(doc.figure([scaled.polygons(s, key, group, X, c.driver_name, titles)],
+                                 ("The force polygons, tip to tail, each closing on its link's equilibrium. " if not n
+                                  else "The force polygons, continued. ") + scaled.statement(None, X)))
+    label = labels[0] if len(labels) == 1 else f"Figures {labels[0].split()[-1]}–{labels[-1].split()[-1]}"
     doc.text(f"{label}, polygon by polygon:")
     lines = []
     for st in steps:

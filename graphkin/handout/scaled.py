@@ -25,6 +25,7 @@ from graphkin.graphical.paper import (
 )
 from graphkin.handout.document import Subject
 from graphkin.handout.figures import Picture
+from graphkin.model import GearMesh
 
 FREE_BODY_ROOM = (FIGURE_WIDTH, 120.0)
 """Room for a figure of every free body [mm]."""
@@ -68,12 +69,24 @@ def _loads(c, link: int) -> list[tuple[np.ndarray, np.ndarray]]:
     return out
 
 
-def free_body_size(c, link: int, k: float, X: float) -> tuple[float, float]:
-    """Width and height [mm] a free body takes printed at 1:k and 1 mm = X N, its margins and title included
-    (an estimate: each force drawn from its point, towards the link or away from it as the drawing does)."""
+def _outline(c, link: int) -> list[np.ndarray]:
+    """The points [mm] a drawing of ``link`` reaches: its points, its centre of mass, and a gear's teeth (its pitch
+    circle and a little more), which reach far beyond its one point, the centre."""
     pts = [np.asarray(p, float) * 1e3 for p in c.points[link].values()]
     if link in c.G:
         pts.append(np.asarray(c.G[link], float) * 1e3)
+    for mesh in c.mechanism.joints:
+        if isinstance(mesh, GearMesh) and link in mesh.links:
+            k = list(mesh.links).index(link)
+            centre, r = np.asarray(c.points[link][mesh.centers[k]], float) * 1e3, 1.15 * mesh.radii[k] * 1e3
+            pts += [centre + (r, 0.0), centre - (r, 0.0), centre + (0.0, r), centre - (0.0, r)]
+    return pts
+
+
+def free_body_size(c, link: int, k: float, X: float) -> tuple[float, float]:
+    """Width and height [mm] a free body takes printed at 1:k and 1 mm = X N, its margins and title included
+    (an estimate: each force drawn from its point, towards the link or away from it as the drawing does)."""
+    pts = _outline(c, link)
     centre = np.mean(pts, axis=0)
     pts = [p / k for p in pts]
     for P, F in _loads(c, link):
@@ -101,8 +114,8 @@ def _rows_height(sizes, width: float) -> float:
 def free_body_scales(c, links, room=FREE_BODY_ROOM) -> tuple[float, float]:
     """(k, X) for a figure of the free bodies of ``links``: the links about 55 mm at most, the largest force
     about 40 mm, both made smaller together until the figure fits ``room``."""
-    size = max(float(np.max(np.ptp(np.asarray(list(c.points[n].values()), float) * 1e3, axis=0)))
-               if len(c.points[n]) > 1 else 10.0 for n in links)
+    size = max(float(np.max(np.ptp(np.asarray(_outline(c, n), float), axis=0))) if len(_outline(c, n)) > 1
+               else 10.0 for n in links)
     largest = max([math.hypot(*F) for n in links for _, F in _loads(c, n)] + [1e-9])
     k = length_scale(size, 55.0)
     X = force_scale(largest, 40.0)
@@ -117,6 +130,40 @@ def free_body_scales(c, links, room=FREE_BODY_ROOM) -> tuple[float, float]:
 def polygon_scale(steps, cell=POLYGON_CELL) -> float:
     """One force scale for every polygon of ``steps``, each fitting ``cell``."""
     return max([force_scale(polygon_size(st.polygon), cell) for st in steps if st.polygon] or [1.0])
+
+
+POLYGON_FIGURE_HEIGHT = 225.0
+"""The tallest a figure of polygons may print [mm]: with its caption and a heading, it fits an A4 text block."""
+
+
+def polygon_groups(steps, X: float, titles, width: float = FIGURE_WIDTH, height: float = POLYGON_FIGURE_HEIGHT) -> list:
+    """``steps`` in groups, each a figure of polygons at 1 mm = X N that prints no taller than ``height`` [mm].
+
+    The rows are laid out as :func:`graphkin.draw.paper.arrange` lays them (as many panels as fit the width),
+    each panel its polygon's printed size and room for its labels around it, and no narrower than its title
+    (``titles``, one per step; an estimate: 1.9 mm a character at the title's 10.5 pt).
+    """
+    groups, group, used = [], [], 0.0
+    row, row_w, row_h = [], 0.0, 0.0
+    rows = []
+    for st, title in zip(steps, titles):
+        w, h = (np.array(polygon_size(st.polygon)) / X) + (36.0, 22.0)
+        w = max(w, 1.9 * len(title))
+        if row and row_w + GAP + w > width:
+            rows.append((row, row_h))
+            row, row_w, row_h = [], 0.0, 0.0
+        row.append(st)
+        row_w += (GAP if row_w else 0.0) + w
+        row_h = max(row_h, h)
+    if row:
+        rows.append((row, row_h))
+    for row, h in rows:
+        if group and used + GAP + h > height:
+            groups.append(group)
+            group, used = [], 0.0
+        group += row
+        used += (GAP if used else 0.0) + h
+    return groups + ([group] if group else [])
 
 
 def resultant_step(c, step) -> Step | None:

@@ -197,3 +197,16 @@ def test_every_label_prints_at_8_pt_or_more(case, monkeypatch):
         assert texts, pic.key
         small += [(pic.key, t.get_text(), t.get_fontsize()) for t in texts if t.get_fontsize() < 8.0]
     assert small == []
+
+
+@pytest.mark.parametrize("name", catalog.names())
+def test_every_picture_of_a_compact_key_fits_the_page(name):
+    """Printed at its own size, a picture must fit the text block: the gear pair's free bodies, sized from the
+    gears' centres alone, were drawn at 5:1 and ran off two pages."""
+    from graphkin.graphical.paper import PAGE_HEIGHT, TEXT_WIDTH
+
+    room = (TEXT_WIDTH * MM, (PAGE_HEIGHT - 18.0 - 20.0 - 15.0) * MM)  # the text block less a caption's lines
+    doc = handout.build(name)
+    sizes = [(p.key, p.size()) for b in doc["blocks"] if b["kind"] == "figure" for p in b["pictures"]]
+    assert sizes
+    assert [(key, w / MM, h / MM) for key, (w, h) in sizes if w > room[0] or h > room[1]] == []
