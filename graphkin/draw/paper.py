@@ -310,4 +310,8 @@ def plotted(draw, width: float, height: float) -> Figure:
     """
     fig = Figure(figsize=(width / 25.4, height / 25.4), dpi=100, layout="constrained")
     draw(ax=fig.add_subplot())
+    # The layout is made now, so that the picture's extent (measured before it is saved) is the laid-out one:
+    # a title or a legend laid out only when saving would be cut off.
+    fig.draw_without_rendering()
+    fig.set_layout_engine("none")
     return fig

@@ -141,14 +141,14 @@ def polygon_groups(steps, X: float, titles, width: float = FIGURE_WIDTH, height:
 
     The rows are laid out as :func:`graphkin.draw.paper.arrange` lays them (as many panels as fit the width),
     each panel its polygon's printed size and room for its labels around it, and no narrower than its title
-    (``titles``, one per step; an estimate: 1.9 mm a character at the title's 10.5 pt).
+    (``titles``, one per step; an estimate: 1.8 mm a character at the title's 10.5 pt).
     """
     groups, group, used = [], [], 0.0
     row, row_w, row_h = [], 0.0, 0.0
     rows = []
     for st, title in zip(steps, titles):
-        w, h = (np.array(polygon_size(st.polygon)) / X) + (36.0, 22.0)
-        w = max(w, 1.9 * len(title))
+        w, h = (np.array(polygon_size(st.polygon)) / X) + (18.0, 24.0)
+        w = max(w, 1.8 * len(title))
         if row and row_w + GAP + w > width:
             rows.append((row, row_h))
             row, row_w, row_h = [], 0.0, 0.0
