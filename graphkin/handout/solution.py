@@ -293,7 +293,9 @@ def cycle(doc: Doc, s: Subject):
     ], "lrl", caption=f"Driving torque {e['name']} ({label})")
     rows = [[M.name(k), M.qty(v["peak"]["value"], "N"), where(v["peak"])] for k, v in data["forces"].items()]
     doc.table(["joint force", "peak", "at"], rows, "lrl", caption="Peak joint forces over the cycle")
-    fw = data["flywheel"]
+    # An exercise's key answers what its questions ask: the flywheel and the joint-force index only if asked.
+    asked = {q.kind for q in s.variant.exercise.questions} if s.variant is not None else None
+    fw = data["flywheel"] if asked is None or asked & {"flywheel_E", "flywheel_I"} else None
     if fw is not None:
         doc.heading(2, "Flywheel")
         doc.text("Norton §11.11: the energy of each pulse of T − T_avg between its crossings of the average, "
@@ -320,6 +322,8 @@ def cycle(doc: Doc, s: Subject):
                               alt="the flywheel's energy over the cycle", natural=True)],
                    "The energy ∫(T − T_avg) dθ over the cycle: its largest swing is E.")
     jfi = data["joint_force_index"]
+    if asked is not None and "jfi_peak" not in asked:
+        return
     doc.heading(2, "Joint-force index")
     if not jfi["defined"]:
         doc.text(f"Not defined here: {jfi['reason']}")

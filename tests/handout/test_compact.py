@@ -24,6 +24,10 @@ def test_a_key_to_questions_about_the_whole_cycle_works_out_no_position():
     assert "Solution" not in _headings(doc) and "Over the whole cycle" in _headings(doc)
     assert not any(b["kind"] == "figure" and b["pictures"][0].key.startswith(("free-bodies", "polygons"))
                    for b in doc["blocks"])
+    # Nothing it does not ask: no flywheel, no joint-force index (the flywheel exercise's key has its flywheel).
+    assert not {"Flywheel", "Joint-force index"} & set(_headings(doc, 2))
+    flywheel = handout.build("flywheel", student="alice", secret=SECRET, version="key")
+    assert "Flywheel" in _headings(flywheel, 2)
 
 
 def test_a_key_to_questions_at_a_position_works_out_the_student_s_position():
