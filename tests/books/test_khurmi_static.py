@@ -66,9 +66,9 @@ def test_the_file_is_the_books_data(solved):
     assert np.hypot(*k.position(2, "C")[0]) == pytest.approx(R, rel=1e-12)
     assert np.hypot(*(k.position(3, "P")[0] - k.position(3, "C")[0])) == pytest.approx(N_RATIO * R, rel=1e-12)
     loads = {load.name: np.asarray(load.force) for load in problem.mechanism.loads}
-    assert -loads["F_L (gas)"][0] == pytest.approx(P * math.pi * D**2 / 4, rel=1e-10)  # to the file's 11 digits
-    assert loads["F_I (inertia, m_R a_P)"][0] == pytest.approx(M_R * A_P)
-    assert loads["R_F (friction)"][0] == pytest.approx(R_F)
+    assert -loads["FL (gas)"][0] == pytest.approx(P * math.pi * D**2 / 4, rel=1e-10)  # to the file's 11 digits
+    assert loads["FI (inertia of the reciprocating parts)"][0] == pytest.approx(M_R * A_P)
+    assert loads["RF (friction)"][0] == pytest.approx(R_F)
     # Together: the book's piston effort, towards the crank.
     assert -sum(loads.values())[0] == pytest.approx(book()["F_P"], rel=1e-10)
 
@@ -115,7 +115,7 @@ def test_static_equals_the_dynamic_problem_with_the_given_acceleration(solved, t
     text = text.replace('[[links]]\nnumber = 2\nname = "crank OC"\n', '[[links]]\nnumber = 2\nname = "crank OC"\nmass = "0 kg"\n')
     text = text.replace('name = "connecting rod CP"\n', 'name = "connecting rod CP"\nmass = "0 kg"\n')
     text = text.replace('theta = "30 deg"\n', 'theta = "30 deg"\nomega = "100 rpm"\n')  # any speed: only a_G matters
-    start = text.index('[[loads]]\ntype = "force"\nname = "F_I')
+    start = text.index('[[loads]]\ntype = "force"\nname = "FI')
     end = text.index("[[loads]]", start + 1)
     text = text[:start] + text[end:]
     text += '\n[given.4]\na_G = { magnitude = "36 m/s^2", angle = "180 deg" }\n'
