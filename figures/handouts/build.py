@@ -26,9 +26,10 @@ DPI = 110
 
 
 def polygon_page(pdf) -> int:
-    """The first page that shows a force polygon (its caption says so)."""
+    """The first page that shows the force polygons (a figure's caption says so)."""
     for k in range(len(pdf)):
-        if "Force polygon of link" in pdf[k].get_textpage().get_text_range():
+        text = pdf[k].get_textpage().get_text_range()
+        if "The force polygons, tip to tail" in text or "Force polygon of link" in text:
             return k
     return 0
 
