@@ -40,7 +40,7 @@ def _magnitude(step, name: str) -> float:
     return 0.0
 
 
-def draw_step_geometry(construction, step, *, ax, place=True, force_scale=None, **style) -> list:
+def draw_step_geometry(construction, step, *, ax, place=True, force_scale=None, narrow=False, **style) -> list:
     """The step's lines of action and points, bold, on an axes that already shows the mechanism (in mm).
 
     Lines are drawn by role: a known load's line solid with an arrowhead for
@@ -50,6 +50,7 @@ def draw_step_geometry(construction, step, *, ax, place=True, force_scale=None, 
     drawing's units] a known load is drawn to that scale on its line; without, its
     sense is a head on the line. With ``place=False`` the labels are
     left for the figure's layout to place (:func:`graphkin.draw.paper.arrange`).
+    ``narrow``: the axes is a narrow panel of a printed figure, so the note of a far point takes two lines.
     Returns the artists.
     """
     s = _style.resolve(**style)
@@ -107,9 +108,8 @@ def draw_step_geometry(construction, step, *, ax, place=True, force_scale=None, 
     for name, X in step.points.items():
         X = np.asarray(X, float) * MM
         if np.hypot(*(X - centre)) > FAR * geom.size:
-            # On two lines: a panel of a printed figure may be narrower than the sentence.
             at = ", ".join(num(v, power="superscript") for v in X)
-            far.append(f"{name} is off the drawing,\nat ({at}) mm")
+            far.append(f"{name} is off the drawing,{chr(10) if narrow else ' '}at ({at}) mm")
             continue
         m = markers(ax, *X, ms=6.5, mfc=s.found, mec="white", mew=0.8, zorder=6)
         out.append(m)
