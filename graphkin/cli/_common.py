@@ -45,8 +45,8 @@ def check_outputs(figure=None, steps=None) -> None:
 
     if figure:
         if Path(figure).suffix.lower() not in (".png", ".svg", ".pdf"):
-            raise GraphkinError(f"--figure {figure}: the file must end in .png, .svg or .pdf")
-        check_destination(figure, "--figure")
+            raise GraphkinError(f"-o {figure}: the figure's file must end in .png, .svg or .pdf")
+        check_destination(figure, "-o")
     if steps:
         check_folder(steps, "--steps")
 

@@ -18,7 +18,8 @@ def add_parser(sub) -> None:
                    "of each switching angle")
     c.add_argument("--cs", type=float, metavar="CS", help="coefficient of speed fluctuation: size a flywheel, e.g. 0.05")
     c.add_argument("--json", action="store_true", help="print every array as JSON in SI units (schema: docs/json.md)")
-    c.add_argument("--figure", metavar="FILE", help="write the cycle figure (.png, .svg or .pdf)")
+    c.add_argument("-o", "--output", "--figure", dest="figure", metavar="FILE",
+                   help="write the cycle figure (.png, .svg or .pdf) (--figure is the older name)")
 
 
 def run(args) -> int:
@@ -59,7 +60,7 @@ def run(args) -> int:
         with Progress(f"drawing {path.name}"):
             path.parent.mkdir(parents=True, exist_ok=True)
             draw.save(draw.draw_cycle(cycle, Cs=args.cs), path)
-        print(f"figure written to {path}", file=sys.stderr if args.json else sys.stdout)
+        print(f"figure written to {path}", file=sys.stderr)
     bad = np.flatnonzero(~cycle.valid)
     if len(bad):
         i = bad[0]

@@ -26,6 +26,7 @@ from graphkin.analytical import solve_forces
 from graphkin.cycle.sweep import Cycle, sweep
 from graphkin.errors import GraphkinError
 from graphkin.graphical import construct_forces
+from graphkin.optional import require
 from graphkin.widgets.canvas import PAGE_WIDTH, Canvas, force_table
 from graphkin.widgets.controls import make_controls, snap
 from graphkin.widgets.frames import AHEAD, MOST_AHEAD, DrawingAhead, Frame, to_the_end
@@ -134,6 +135,7 @@ class Explorer(DrawingAhead):
 
     def __init__(self, problem, *, n: int = 360, limits=None, dpi: int | None = None, halo: bool = False,
                  ahead: int = AHEAD):
+        require("ipywidgets", "the explorer")  # one line naming the extra, before anything else
         if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 2:
             raise GraphkinError(f"n must be a whole number of positions ≥ 2, got {n!r}")
         if dpi is not None and (isinstance(dpi, bool) or not isinstance(dpi, (int, np.integer)) or dpi < 10):
