@@ -9,6 +9,9 @@ from pathlib import Path
 
 from graphkin.errors import GraphkinError
 
+DOCS = "https://graphkin.github.io/graphkin"
+"""The documentation site (``make docs`` builds it; pyproject.toml's Documentation URL): the help points into it."""
+
 
 class Parser(argparse.ArgumentParser):
     """argparse, but a mistake on the command line is one line on stderr like every other error."""

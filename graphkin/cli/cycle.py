@@ -5,7 +5,7 @@ from __future__ import annotations
 import sys
 from pathlib import Path
 
-from graphkin.cli._common import Progress, check_outputs, position_text
+from graphkin.cli._common import DOCS, Progress, check_outputs, position_text
 from graphkin.errors import GraphkinError
 
 
@@ -17,7 +17,7 @@ def add_parser(sub) -> None:
                    "default: the problem's own positions); a load that switches on and off adds a sample either side "
                    "of each switching angle")
     c.add_argument("--cs", type=float, metavar="CS", help="coefficient of speed fluctuation: size a flywheel, e.g. 0.05")
-    c.add_argument("--json", action="store_true", help="print every array as JSON in SI units (schema: docs/json.md)")
+    c.add_argument("--json", action="store_true", help=f"print every array as JSON in SI units (schema: {DOCS}/json.html)")
     c.add_argument("-o", "--output", "--figure", dest="figure", metavar="FILE",
                    help="write the cycle figure (.png, .svg or .pdf) (--figure is the older name)")
 

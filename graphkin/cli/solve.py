@@ -5,7 +5,7 @@ from __future__ import annotations
 import sys
 
 from graphkin.cli import _common
-from graphkin.cli._common import batch_note, check_outputs, position_text, positions
+from graphkin.cli._common import DOCS, batch_note, check_outputs, position_text, positions
 from graphkin.errors import GraphkinError
 
 
@@ -14,7 +14,7 @@ def add_parser(sub) -> None:
     s = sub.add_parser("solve", help="solve a problem: a catalog name or a TOML file")
     s.add_argument("problem", help="catalog name (see 'graphkin list') or path to a problem file")
     s.add_argument("--at", help="input position(s) with units, comma-separated, e.g. '124 deg,140 deg' or '200 mm'")
-    s.add_argument("--json", action="store_true", help="print the result as JSON in SI units (schema: docs/json.md)")
+    s.add_argument("--json", action="store_true", help=f"print the result as JSON in SI units (schema: {DOCS}/json.html)")
     s.add_argument("-o", "--output", "--figure", dest="figure", metavar="FILE",
                    help="write the side-by-side figure (.png, .svg or .pdf); with several positions, one file each, "
                    "numbered (--figure is the older name)")
