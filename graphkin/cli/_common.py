@@ -9,8 +9,8 @@ from pathlib import Path
 
 from graphkin.errors import GraphkinError
 
-DOCS = "https://graphkin.github.io/graphkin"
-"""The documentation site (``make docs`` builds it; pyproject.toml's Documentation URL): the help points into it."""
+DOCS = "https://graphkin.github.io/graphkin/docs"
+"""The guide on the documentation site (``make docs``): docs/X.md is ``DOCS/X.html``; the help points into it."""
 
 
 class Parser(argparse.ArgumentParser):

@@ -178,7 +178,7 @@ class Explorer(DrawingAhead):
         self.slider.observe(self._on_slider, names="value")
         self.box.observe(self._on_box, names="value")
         self.speed.observe(self._on_speed, names="value")
-        self._screen.observe(self._on_screen, names="value")
+        self._screen.observe(self._on_screen, names="screen")
         self.update()
 
     # -- the thread ---------------------------------------------------------------
@@ -338,7 +338,7 @@ class Explorer(DrawingAhead):
         self._timer = self._first_wait = None
 
     # -- the screen -----------------------------------------------------------------
-    @answers_the_browser("_screen", "screen size")
+    @answers_the_browser("_screen", "screen size", trait="screen")
     def _on_screen(self, change, by_browser: bool):
         """The browser reports its pixel ratio and the width it gives the explorer: re-render to fit."""
         try:
