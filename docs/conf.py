@@ -5,6 +5,11 @@ lessons (lessons/*.ipynb) and the README keep the links they have on GitHub;
 ``include_patterns`` lists what is a page. The lessons are executed at build
 time (myst-nb), the API reference is made from the numpydoc docstrings, and
 the catalog page from the catalog itself (one section and figure per problem).
+
+Why Sphinx rather than MkDocs: graphkin's docstrings are numpydoc, which
+Sphinx reads natively (the numpydoc extension is numpy's own), myst-nb runs
+and renders the lessons from the same Markdown dialect as the guide, and
+the pydata theme is the one numpy, SciPy and matplotlib users know.
 """
 
 from __future__ import annotations
@@ -64,7 +69,7 @@ html_theme_options = {
     "footer_end": [],
 }
 html_static_path = []
-html_extra_path = ["docs/_extra"]  # the site's root index.html, which leads to docs/index.html
+html_extra_path = ["_extra"]  # relative to this folder  # the site's root index.html, which leads to docs/index.html
 html_last_updated_fmt = None
 html_show_sourcelink = False
 html_copy_source = False
