@@ -284,9 +284,9 @@ def draw_constructions(construction, steps, *, length_scale: float, titles=None,
         ax = fig.add_axes([0, 0, 0.2, 0.2], axes_class=PanelAxes)
         draw_mechanism(c, ax=ax, faint=True, emphasis=step.link, place=False, length_scale=length_scale, bar=False,
                        **style)
-        draw_step_geometry(c, step, ax=ax, place=False, narrow=True, **style)
         if titles is not None:
             ax.set_title(_names(titles[k]), fontsize=s.title_size, color=s.ink)
+        draw_step_geometry(c, step, ax=ax, place=False, narrow=True, **style)
         panels.append((ax, paper))
     height = arrange(fig, panels, width=width, strip=STRIP)
     scale_strip(fig, height, length_scale=length_scale, width=width, **style)

@@ -50,7 +50,8 @@ def draw_step_geometry(construction, step, *, ax, place=True, force_scale=None, 
     drawing's units] a known load is drawn to that scale on its line; without, its
     sense is a head on the line. With ``place=False`` the labels are
     left for the figure's layout to place (:func:`graphkin.draw.paper.arrange`).
-    ``narrow``: the axes is a narrow panel of a printed figure, so the note of a far point takes two lines.
+    ``narrow``: the axes is a panel of a printed figure, so the note of a far point goes in its title (after
+    the title the panel already has), where the figure's layout leaves room, rather than over the drawing.
     Returns the artists.
     """
     s = _style.resolve(**style)
@@ -109,7 +110,7 @@ def draw_step_geometry(construction, step, *, ax, place=True, force_scale=None, 
         X = np.asarray(X, float) * MM
         if np.hypot(*(X - centre)) > FAR * geom.size:
             at = ", ".join(num(v, power="superscript") for v in X)
-            far.append(f"{name} is off the drawing,{chr(10) if narrow else ' '}at ({at}) mm")
+            far.append(f"{name} is off the drawing, at ({at}) mm")
             continue
         m = markers(ax, *X, ms=6.5, mfc=s.found, mec="white", mew=0.8, zorder=6)
         out.append(m)
@@ -118,7 +119,12 @@ def draw_step_geometry(construction, step, *, ax, place=True, force_scale=None, 
         t = lab.label(sub(name), [spot for pad in (6.0, 12.0, 20.0)
                                   for spot in point_label_candidates(X, np.array([1.0, 1.0]), pad)], color=s.found)
         out.append(t)
-    if far:
+    if far and narrow:
+        # Under the panel's title, where the figure's layout leaves room for it, not over the drawing.
+        t = ax.set_title("\n".join([ax.get_title()] * bool(ax.get_title()) + far), fontsize=s.small_size,
+                         color=s.ink)
+        out.append(t)
+    elif far:
         t = ax.text(0.01, 0.01, "\n".join(far), transform=ax.transAxes, ha="left", va="bottom", fontsize=s.small_size,
                     color=s.found)
         out.append(t)
