@@ -280,7 +280,7 @@ def cycle(doc: Doc, s: Subject):
         lambda ax: draw.draw_torque_curve(cycle, flywheel=f, ax=ax), *_PLOT), alt="the driving torque over the cycle",
         natural=True)],
                        "The driving torque over one turn with its average" +
-                       (" and the pulses of T − T_avg with their energies." if f is not None else "."))
+                       (", and its pulses above and below the average with their energies." if f is not None else "."))
     theta = f"θ{s.mech.driver.frame}{s.mech.driver.link}"
 
     def where(p):
@@ -298,8 +298,9 @@ def cycle(doc: Doc, s: Subject):
     fw = data["flywheel"] if asked is None or asked & {"flywheel_E", "flywheel_I"} else None
     if fw is not None:
         doc.heading(2, "Flywheel")
-        doc.text("Norton §11.11: the energy of each pulse of T − T_avg between its crossings of the average, "
-                 "accumulated from the first crossing; E is the largest swing of the accumulated energy.")
+        doc.text("Norton §11.11: the energy of each pulse of ", M.row(M.i("T"), M.op("−"), M.sym("T", "avg")),
+                 " between its crossings of the average, accumulated from the first crossing; E is the largest "
+                 "swing of the accumulated energy.")
         ends = fw["crossings"][1:] + fw["crossings"][:1]
         # The pulses add up to zero over a turn: the last accumulated energy is 0 but for rounding (5.7e−14 J).
         swing = max([abs(x) for x in fw["areas"]] + [0.0])
@@ -320,7 +321,8 @@ def cycle(doc: Doc, s: Subject):
                  "of that inertia has radius ", M.qty(d["radius"] * 1e3, "mm"), " and mass ", M.qty(d["mass"], "kg"), ".")
         doc.figure([s.picture("energy", lambda: paper.plotted(lambda ax: draw.draw_energy(f, ax=ax), *_SMALL_PLOT),
                               alt="the flywheel's energy over the cycle", natural=True)],
-                   "The energy ∫(T − T_avg) dθ over the cycle: its largest swing is E.")
+                   "The energy taken from the shaft over the cycle (the torque less its average, integrated over the "
+                   "crank angle): its largest swing is E.")
     jfi = data["joint_force_index"]
     if asked is not None and "jfi_peak" not in asked:
         return

@@ -19,6 +19,7 @@ from graphkin.handout import maths as M
 SECRET = "course-secret"
 PROVENANCE = re.compile(r"(?i)\bseeds?\b|NOT FROM THE SOURCE|scribd|github|\.txt\b|FOSSEE|companion|catalog file")
 FILE_KEY = re.compile(r"\b[a-z]+_[a-z]+\w*\b")
+UNDERSCORE = re.compile(r"[A-Za-zΣ]_[A-Za-z]")
 POWER = re.compile(r"(?<![\w.])\d+(?:\.\d+)?[eE][-−+]?\d")
 NUMBER = re.compile(r"(?<![\w.])\d+(?:\.\d+)?(?![\w.])")
 
@@ -76,6 +77,8 @@ def test_a_problem_s_compact_key_and_worksheet_carry_no_provenance(name, version
     doc = handout.build(name, version=version)
     assert faults(lines(doc)) == []
     assert "\n" not in doc["source"] and doc["source"]
+    # Nor a symbol's underscore in plain text (T_avg, I_G): the handout sets those as mathematics.
+    assert [line for line in lines(doc) if UNDERSCORE.search(line)] == []
 
 
 @pytest.mark.parametrize("name, version", EXERCISES)
