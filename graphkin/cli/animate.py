@@ -52,6 +52,11 @@ def run(args) -> int:
         film = draw.animate(problem, frames=args.frames, fps=args.fps, polygons=args.polygons, dpi=args.dpi,
                             progress=bar.update)
     path = write(film, args.output, "-o")
+    if film.gaps:
+        # Written all the same: the frames that say where the linkage cannot close are worth showing.
+        q, why = film.gaps[0]
+        print(f"graphkin: warning: {problem.name}: {len(film.gaps)} of {len(film.frames)} frames have no solution, "
+              f"the first at {_common.position_text(problem, q)}: {why}", file=sys.stderr)
     w, h = film.size
     print(f"{len(film.frames)} frames ({w} × {h} px, {film.fps:g} fps, forces at 1 mm = {film.scale:g} N) "
           f"written to {path}", file=sys.stderr)

@@ -40,7 +40,7 @@ import numpy as np
 from graphkin.draw import films
 from graphkin.draw import style as _style
 from graphkin.draw.arrows import arrow, unit
-from graphkin.draw.axes import MM, PanelAxes, markers, points_per_unit
+from graphkin.draw.axes import MM, Drawn, PanelAxes, markers, points_per_unit
 from graphkin.draw.fbd import loads_on
 from graphkin.draw.labels import offset_text
 from graphkin.draw.mechanism import Geometry, draw_mechanism
@@ -79,6 +79,8 @@ class Animation:
         What it shows (the web page's title).
     scale : float
         The force scale [N per mm of the drawing] of every frame.
+    gaps : tuple of (float, str)
+        The frames with no solution, which say so: the crank angle [rad] and why.
     """
 
     frames: tuple
@@ -86,6 +88,7 @@ class Animation:
     size: tuple
     title: str = ""
     scale: float = math.nan
+    gaps: tuple = ()
 
     def save(self, path) -> Path:
         """Write the animation as ``.gif``, ``.mp4`` or ``.html``, chosen by the suffix, whole or not at all.
@@ -136,8 +139,9 @@ def animate(problem, path=None, *, frames: int = 72, fps: float = 24.0, polygons
     Raises
     ------
     GraphkinError
-        If the problem has no crank to turn, its speed varies or it gives
-        measured kinematics ([given]), or ``frames``, ``fps``, ``dpi`` or ``path`` is out of range.
+        If the problem has no crank to turn, its speed varies, it gives
+        measured kinematics ([given]) or no crank angle has a solution; or
+        ``frames``, ``fps``, ``dpi`` or ``path`` is out of range.
     """
     check_frames(frames)
     films.check_fps(fps)
@@ -147,6 +151,10 @@ def animate(problem, path=None, *, frames: int = 72, fps: float = 24.0, polygons
         raise GraphkinError(f"--dpi {dpi}: the resolution must be from 10 to 600 pixels per inch")
     kin = _kinematics(problem, frames)
     cs = [construct_forces(kin, i) for i in range(frames)]
+    gaps = tuple((c.q, c.reason) for c in cs if not (c.valid and c.points))
+    if len(gaps) == frames:
+        raise GraphkinError(f"{problem.name}: no crank angle of the turn has a solution, so there is nothing to "
+                            f"animate ({input_text(cs[0])}: {gaps[0][1]})")
     film = Film(cs, polygons=polygons, dpi=dpi, **style)
     pngs = []
     for c in cs:
@@ -154,7 +162,7 @@ def animate(problem, path=None, *, frames: int = 72, fps: float = 24.0, polygons
         if progress is not None:
             progress(1)
     title = f"{getattr(problem, 'title', '') or problem.name}: one turn of the crank"
-    anim = Animation(tuple(pngs), float(fps), film.pixels, title, film.scale)
+    anim = Animation(tuple(pngs), float(fps), film.pixels, title, film.scale, gaps)
     if path is not None:
         anim.save(path)
     return anim
@@ -228,6 +236,9 @@ class Film:
         The force scale of every frame [N per mm of the drawing].
     pixels : (int, int)
         A frame's width and height [px].
+    drawn : Drawn
+        The force arrows of the frame drawn last: ``.arrows`` and ``.ends`` (tail, tip [mm]) by name, the
+        mechanism's as ``"F23"``, the polygons' as ``"polygon3:F23"``.
     """
 
     def __init__(self, constructions, *, polygons: bool = False, dpi: float = 100, **style):
@@ -296,6 +307,7 @@ class Film:
         s, ax = self.s, self.ax
         for a in (ax, *self.ax_polygons.values(), *([self.ax_bar] if self.ax_bar else [])):
             _empty(a)
+        self.drawn = Drawn(ax)
         self.figure.texts.clear()
         if c.valid and c.points:
             draw_mechanism(c, ax=ax, labels=False, bar=False, **vars(s))
@@ -303,7 +315,7 @@ class Film:
                 self._force(ax, name, F, X)
             torque = f"   {sub(c.driver_name)} = {num(c.effort)} {'N·m' if c.mechanism.driver.crank else 'N'}"
             for link, pax in self.ax_polygons.items():
-                _polygon(pax, link, loads_on(c, link)["forces"], self.scale, s)
+                _polygon(pax, link, loads_on(c, link)["forces"], self.scale, s, self.drawn)
         else:
             torque = ""
             ax.text(0.5, 0.5, f"no solution here: {c.reason}", transform=ax.transAxes, ha="center", va="center",
@@ -324,7 +336,9 @@ class Film:
             return
         tip = X + F / self.scale
         ppu = points_per_unit(ax, max(np.ptp(self.view[0]), np.ptp(self.view[1])))
-        arrow(ax, X, tip, color=s.unknown, lw=s.unknown_lw, s=s, zorder=6, gid=f"force:{name}", pt_per_unit=ppu)
+        self.drawn.arrows[name] = arrow(ax, X, tip, color=s.unknown, lw=s.unknown_lw, s=s, zorder=6, gid=f"force:{name}",
+                                        pt_per_unit=ppu)
+        self.drawn.ends[name] = (tuple(X), tuple(tip))
         _name(ax, sub(name), tip, unit(F), s.label_size, s.unknown)
 
     def _bars(self):
@@ -380,7 +394,7 @@ def _polygon_views(good, links, scale):
     return views
 
 
-def _polygon(ax, link, forces, scale, s):
+def _polygon(ax, link, forces, scale, s, drawn):
     """A link's force polygon at the animation's force scale: the arrows tip to tail and their names (no sizes)."""
     forces = _polygon_loads(forces)
     verts = _vertices(forces, scale)
@@ -390,8 +404,10 @@ def _polygon(ax, link, forces, scale, s):
             continue
         known = kind in ("inertia", "known")
         color = s.driver if kind == "driver" else s.known if known else s.unknown
-        arrow(ax, tail, tip, color=color, lw=s.known_lw if known else s.unknown_lw, s=s, zorder=4.5,
-              gid=f"polygon{link}:{name}")
+        key = f"polygon{link}:{name.split(' ')[0]}"
+        drawn.arrows[key] = arrow(ax, tail, tip, color=color, lw=s.known_lw if known else s.unknown_lw, s=s, zorder=4.5,
+                                  gid=key)
+        drawn.ends[key] = (tuple(tail), tuple(tip))
         _name(ax, sub(name.split(" ")[0]), 0.5 * (tail + tip), unit(0.5 * (tail + tip) - centre), s.small_size, color)
     markers(ax, *verts[0], ms=6, mfc="none", mec=s.ink, mew=1.0, zorder=5)
     ax.set_title(f"Link {link}: " + " + ".join(sub(f[0].split(" ")[0]) for f in forces) + " = 0",
