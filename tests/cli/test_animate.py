@@ -80,14 +80,20 @@ def test_progress_bar_at_a_terminal_only(capsys, tmp_path, monkeypatch):
     (["strip_cutter"], ["-o", "required"]),
     (["double_slider", "-o", "a.gif"], ["double_slider", "slider"]),
     (["engine_gas_force", "-o", "a.mp4"], ["-o", "a.mp4", "ffmpeg"]),
+    (["{given}", "-o", "a.gif"], ["given.toml", "[given]", "no cycle"]),
 ])
 def test_bad_input_is_one_line_naming_it(capsys, tmp_path, monkeypatch, args, named):
+    from graphkin import catalog
+
     (tmp_path / "a_file.txt").write_text("x")
     (tmp_path / "b.gif").mkdir()
+    # Kinematics measured at one position hold there only.
+    given = catalog.path("engine_gas_force").read_text(encoding="utf-8") + '\n[given.3]\nomega = "4 rad/s"\n'
+    (tmp_path / "given.toml").write_text(given, encoding="utf-8")
     monkeypatch.chdir(tmp_path)
     monkeypatch.setenv("PATH", str(tmp_path / "b.gif"))  # no ffmpeg
     before = sorted(p.name for p in tmp_path.rglob("*"))
-    code, out, err = run(capsys, *[a.format(file="a_file.txt", dir="b.gif") for a in args])
+    code, out, err = run(capsys, *[a.format(file="a_file.txt", dir="b.gif", given="given.toml") for a in args])
     assert code == 2 and out == ""
     assert err.count("\n") == 1 and err.startswith("graphkin: error: ") and "Traceback" not in err, err
     for text in named:
