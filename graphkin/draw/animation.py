@@ -5,8 +5,10 @@ turn at the problem's constant speed, so equal steps of angle are equal steps
 of time), constructs each position graphically
 (:func:`graphkin.graphical.construct_forces`) and draws it: the mechanism to
 scale (:func:`~graphkin.draw.draw_mechanism`), the force of each joint as an
-arrow from the joint, and, with ``polygons=True``, each step's force polygon
-beside it. The caption gives the crank angle and the driving torque.
+arrow from the joint, and, with ``polygons=True``, each moving link's force
+polygon beside it. The caption gives the crank angle and the driving torque.
+It is the one drawing that solves: an animation shows a problem over a turn,
+not a result someone already has.
 
 Nothing jumps from one frame to the next: every frame has the same view (the
 union of every frame's own, found before any frame is drawn), one force
@@ -124,7 +126,7 @@ def animate(problem, path=None, *, frames: int = 72, fps: float = 24.0, polygons
     fps : float
         Frames per second, above 0 and at most :data:`graphkin.draw.films.MAX_FPS`.
     polygons : bool
-        Draw each step's force polygon beside the mechanism.
+        Draw each moving link's force polygon beside the mechanism.
     dpi : float
         Pixels per inch of a frame (a frame is :data:`WIDTH` inches wide, 1.45 times that with polygons).
     progress : callable, optional
