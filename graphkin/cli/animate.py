@@ -12,7 +12,8 @@ def add_parser(sub) -> None:
     a = sub.add_parser("animate", help="the mechanism moving over one turn with its joint forces (GIF, MP4, HTML)")
     a.add_argument("problem", help="catalog name (see 'graphkin list') or path to a problem file")
     a.add_argument("-o", "--output", metavar="FILE", required=True,
-                   help="the animation: .gif, .mp4 (needs ffmpeg) or .html (one file, plays with no network)")
+                   help="the animation: .gif, .mp4 (needs ffmpeg) or .html (one file, plays with no network); "
+                   f"see {_common.DOCS}/graphical.html#animations")
     a.add_argument("--frames", type=_number(int), default=72, metavar="N",
                    help="frames over one turn of the crank (default 72: a frame every 5°)")
     a.add_argument("--fps", type=_number(float), default=24.0, metavar="F", help="frames per second (default 24)")
