@@ -720,8 +720,8 @@ fig
 #
 # A curve over the cycle leaves the motion to the imagination. `gk.draw.animate` draws the cutter at
 # equally spaced crank angles, each joint force an arrow at one force scale for the whole turn (stated
-# on the frame), and plays them here; watch $F_{23}$ and $F_{34}$ swing as the blades meet the strip
-# at 124°. From a terminal, `graphkin animate strip_cutter -o cutter.gif` (or `.html`, or `.mp4` with
+# on the frame), and plays them here: from 124° to 156° the cutting forces appear on the blades and
+# $F_{23}$ shrinks while they act. From a terminal, `graphkin animate strip_cutter -o cutter.gif` (or `.html`, or `.mp4` with
 # ffmpeg; `--polygons` adds the force polygons) makes a file for a slide.
 
 # %%

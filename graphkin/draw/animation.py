@@ -5,14 +5,15 @@ turn at the problem's constant speed, so equal steps of angle are equal steps
 of time), constructs each position graphically
 (:func:`graphkin.graphical.construct_forces`) and draws it: the mechanism to
 scale (:func:`~graphkin.draw.draw_mechanism`), the force of each joint as an
-arrow from the joint, and, with ``polygons=True``, each moving link's force
+arrow from the joint, each known load (a cutting force, a weight) as an arrow
+from where it acts, and, with ``polygons=True``, each moving link's force
 polygon beside it. The caption gives the crank angle and the driving torque.
 It is the one drawing that solves: an animation shows a problem over a turn,
 not a result someone already has.
 
 Nothing jumps from one frame to the next: every frame has the same view (the
 union of every frame's own, found before any frame is drawn), one force
-scale for the whole turn (the largest joint force of the turn drawn
+scale for the whole turn (the largest force of the turn drawn
 :data:`LONGEST` of the mechanism's size long), and its length and force scale
 bars in one place. Positions where the linkage cannot be assembled are frames
 that say so.
@@ -56,7 +57,7 @@ from graphkin.model.names import force_name
 from graphkin.notation import num
 
 LONGEST = 0.35
-"""The largest joint force of the turn is drawn this fraction of the mechanism's size long."""
+"""The largest force of the turn (joint force or known load) is drawn this fraction of the mechanism's size long."""
 
 MAX_FRAMES = 3600
 """The most frames an animation has (0.1° steps)."""
@@ -211,6 +212,16 @@ def joint_forces(c):
     return out
 
 
+def loads(c):
+    """The known loads at a construction's position: (name, force [N], point [mm]) of each external force and weight.
+
+    The cutting force of the strip cutter, a gas force, a weight: what the
+    joint forces answer. Named without their note (``Fc3``, not ``Fc3 (cutting)``).
+    """
+    return [(a.name.split(" ")[0], np.asarray(a.vector, float), np.asarray(a.at, float) * MM)
+            for link in c.mechanism.moving for a in c.external.get(link, []) if a.at is not None]
+
+
 class Film:
     """One figure, drawn again for each position, with the view and the force scale of the whole turn fixed first.
 
@@ -240,7 +251,7 @@ class Film:
         A frame's width and height [px].
     drawn : Drawn
         The force arrows of the frame drawn last: ``.arrows`` and ``.ends`` (tail, tip [mm]) by name, the
-        mechanism's as ``"F23"``, the polygons' as ``"polygon3:F23"``.
+        mechanism's as ``"F23"`` (a known load ``"Fc3"``), the polygons' as ``"polygon3:F23"``.
     """
 
     def __init__(self, constructions, *, polygons: bool = False, dpi: float = 100, **style):
@@ -250,7 +261,7 @@ class Film:
 
         self.s = _style.resolve(**style)
         good = [c for c in constructions if c.valid and c.points]
-        largest = max([float(np.hypot(*F)) for c in good for _, F, _ in joint_forces(c)] + [0.0])
+        largest = max([float(np.hypot(*F)) for c in good for _, F, _ in joint_forces(c) + loads(c)] + [0.0])
         self.size = max([Geometry(c).size for c in good] + [1.0])
         self.scale = nice_scale(largest, LONGEST * self.size)
         links = list(good[0].mechanism.moving) if good and polygons else []
@@ -294,7 +305,7 @@ class Film:
             _empty(self.ax)
             draw_mechanism(c, ax=self.ax, labels=False, bar=False, **vars(self.s))
             (x0, x1), (y0, y1) = self.ax.get_xlim(), self.ax.get_ylim()
-            tips = [X + F / self.scale for _, F, X in joint_forces(c)]
+            tips = [X + F / self.scale for _, F, X in joint_forces(c) + loads(c)]
             pts = np.array([[x0, y0], [x1, y1], *tips]).reshape(-1, 2)
             lo, hi = np.minimum(lo, pts.min(axis=0)), np.maximum(hi, pts.max(axis=0))
         if not np.all(np.isfinite([*lo, *hi])):
@@ -315,6 +326,8 @@ class Film:
             draw_mechanism(c, ax=ax, labels=False, bar=False, **vars(s))
             for name, F, X in joint_forces(c):
                 self._force(ax, name, F, X)
+            for name, F, X in loads(c):
+                self._force(ax, name, F, X, known=True)
             torque = f"   {sub(c.driver_name)} = {num(c.effort)} {'N·m' if c.mechanism.driver.crank else 'N'}"
             for link, pax in self.ax_polygons.items():
                 _polygon(pax, link, loads_on(c, link)["forces"], self.scale, s, self.drawn)
@@ -332,16 +345,18 @@ class Film:
         self.figure.canvas.draw()
         return _png(self.figure)
 
-    def _force(self, ax, name, F, X):
+    def _force(self, ax, name, F, X, known=False):
+        """An arrow from the point the force acts at, in the colour of a found force (or of a known load)."""
         s = self.s
         if not float(np.hypot(*F)) > 1e-9 * self.scale:  # a joint that carries nothing here: no arrow, no name
             return
         tip = X + F / self.scale
         ppu = points_per_unit(ax, max(np.ptp(self.view[0]), np.ptp(self.view[1])))
-        self.drawn.arrows[name] = arrow(ax, X, tip, color=s.unknown, lw=s.unknown_lw, s=s, zorder=6, gid=f"force:{name}",
-                                        pt_per_unit=ppu)
+        color = s.known if known else s.unknown
+        self.drawn.arrows[name] = arrow(ax, X, tip, color=color, lw=s.known_lw if known else s.unknown_lw, s=s,
+                                        zorder=6, gid=f"force:{name}", pt_per_unit=ppu)
         self.drawn.ends[name] = (tuple(X), tuple(tip))
-        _name(ax, sub(name), tip, unit(F), s.label_size, s.unknown)
+        _name(ax, sub(name), tip, unit(F), s.label_size, color)
 
     def _bars(self):
         """The length and force scales, in the same place on every frame; every panel's view, fixed."""

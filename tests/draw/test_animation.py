@@ -15,7 +15,7 @@ from PIL import Image
 
 from graphkin import catalog, draw
 from graphkin.draw import films
-from graphkin.draw.animation import Film, joint_forces
+from graphkin.draw.animation import Film, joint_forces, loads
 from graphkin.draw.axes import MM
 from graphkin.errors import GraphkinError
 from graphkin.graphical import construct_forces
@@ -35,7 +35,7 @@ def film(cutter):
 
 @pytest.fixture(scope="module")
 def constructions(cutter):
-    kin = cutter.kinematics(at=np.linspace(0.0, 2 * np.pi, 6, endpoint=False))
+    kin = cutter.kinematics(at=np.linspace(0.0, 2 * np.pi, 8, endpoint=False))  # every 45°
     return [construct_forces(kin, i) for i in range(kin.n)]
 
 
@@ -45,7 +45,7 @@ def test_one_view_for_every_frame_holds_every_joint_and_arrow(constructions):
     for c in constructions:
         ax = f.draw(c).axes[0]
         views.add((ax.get_xlim(), ax.get_ylim()))
-        ends = [(X, X + F / f.scale) for _, F, X in joint_forces(c)]
+        ends = [(X, X + F / f.scale) for _, F, X in joint_forces(c) + loads(c)]
         reach += [p for pair in ends for p in pair]
         reach += [np.asarray(p) * MM for pts in c.points.values() for p in pts.values()]
     assert len(views) == 1
@@ -56,19 +56,22 @@ def test_one_view_for_every_frame_holds_every_joint_and_arrow(constructions):
 
 def test_one_force_scale_draws_every_arrow(constructions):
     f = Film(constructions, dpi=30)
-    largest = max(float(np.hypot(*F)) for c in constructions for _, F, _ in joint_forces(c))
+    largest = max(float(np.hypot(*F)) for c in constructions for _, F, _ in joint_forces(c) + loads(c))
     size = max(float(np.ptp(np.asarray([p for pts in c.points.values() for p in pts.values()]) * MM, axis=0).max())
                for c in constructions)
     # Round (1, 2 or 5 times a power of ten), and the largest force of the turn not longer than LONGEST of the size.
     mantissa = f.scale / 10 ** np.floor(np.log10(f.scale))
     assert min(abs(mantissa - m) for m in (1, 2, 5)) < 1e-9
     assert largest / f.scale <= 0.35 * size * 1.000001
+    cut = 0
     for c in constructions:
         f.draw(c)
-        for name, F, X in joint_forces(c):
+        cut += any(name == "Fc3" for name, _, _ in loads(c))
+        for name, F, X in joint_forces(c) + loads(c):
             tail, tip = np.asarray(f.drawn.ends[name])
             assert f.drawn.arrows[name] in f.ax.patches
             assert np.allclose(tail, X) and np.allclose(tip - tail, F / f.scale)
+    assert cut == 1  # the cutting force, drawn at 135°, the one frame inside the cut (124° to 156°)
     texts = [t.get_text() for t in f.figure.axes[0].texts]
     assert any(f"(1 mm = {f.scale:g} N)" in t for t in texts), texts
 
