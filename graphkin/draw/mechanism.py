@@ -273,7 +273,8 @@ def draw_mechanism(construction, *, ax=None, labels=True, faint=False, emphasis=
         Leave room for the points the construction finds (a point of concurrency), where a student draws the
         lines of action to them; the points are not drawn.
     bar : bool
-        Draw the length scale bar (a figure of several panels at one scale draws one for all).
+        Draw the length scale bar. False when the caller draws one for all (a figure of several panels at one
+        scale) or one that stays put (an animation).
     **style
         Overrides of :class:`graphkin.draw.style.Style` fields.
 
