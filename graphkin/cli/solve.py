@@ -32,7 +32,8 @@ def run(args) -> int:
     result = problem.solve(positions(problem, args.at) if args.at is not None else None)
     graphical = report.constructions(result)
     if args.json:
-        print(json_text(report.solution(problem, result, graphical)))
+        kinematic = report.kinematic_constructions(result.kinematics)
+        print(json_text(report.solution(problem, result, graphical, kinematic)))
     else:
         print(report.format_solution(problem, result, graphical))
     if args.figure or args.steps:
