@@ -35,6 +35,7 @@ from graphkin.graphical.construction import nice_scale
 from graphkin.graphical.motion import MotionConstruction, MotionStep, PolygonLine, Vector
 from graphkin.kinematics import DriverGroup, Dyad, GearGroup, Kinematics
 from graphkin.kinematics.groups import DEAD_POINT
+from graphkin.kinematics.plan import plan_of
 from graphkin.model import Prismatic, Revolute
 from graphkin.notation import polar_text
 
@@ -111,6 +112,52 @@ class _Side:
         self.turn, self.L, self.base, self.P, self.P_name, self.m, self.joint = turn, L, base, P, P_name, m, joint
 
 
+class _Fixed:
+    """What the polygons of a mechanism share at every position, worked out once (kept in its plan).
+
+    Attributes
+    ----------
+    points : dict of (int, str) to complex
+        Each named point in its link's own frame [m].
+    twice : set of str
+        Names carried by two moving links that are not pinned together there: two points, written with
+        the link (B3, B4).
+    images : dict of int to list
+        Per moving link, the image points: ``(key, symbol, image label, local point)``, key ``(link, name)``
+        for a named point and ``(link, None)`` for G.
+    size : float
+        The mechanism's size [m], for what counts as rounding in a caption.
+    """
+
+    def __init__(self, mech):
+        plan = plan_of(mech)
+        self.points = plan.points
+        carriers: dict[str, set] = {}
+        for n in mech.moving:
+            for name in mech.link(n).points:
+                carriers.setdefault(name, set()).add(n)
+        pinned = {(j.point, l) for j in mech.joints if isinstance(j, Revolute) for l in j.links}
+        self.twice = {name for name, ls in carriers.items() if len(ls) > 1 and not all((name, l) in pinned for l in ls)}
+        self.images = {}
+        for n in mech.moving:
+            body = mech.link(n)
+            rows = []
+            for name in body.points:
+                s = f"{name}{n}" if name in self.twice else name
+                rows.append(((n, name), s, s.lower(), self.points[n, name]))
+            rows.append(((n, None), f"G{n}", f"g{n}", complex(*body.G)))
+            self.images[n] = rows
+        self.size = sum(max(abs(complex(*p)) for p in link.points.values()) for link in mech.links) or 1.0
+
+
+def _fixed(mech) -> _Fixed:
+    compiled = plan_of(mech).compiled
+    fixed = compiled.get("polygons")
+    if fixed is None:
+        fixed = compiled["polygons"] = _Fixed(mech)
+    return fixed
+
+
 class _Polygons:
     """Builds both polygons of one position, group by group; the velocity pass first, then the acceleration."""
 
@@ -118,51 +165,42 @@ class _Polygons:
         self.kin, self.i = kin, i
         self.mech = mech = kin.mechanism
         self.frame = mech.frame
+        self.fixed = _fixed(mech)
         self.motion = {self.frame: _Motion(0j, 0j, 0.0, 0j, 0.0)}
         self.steps: list[MotionStep] = []
         self.v_img = {"o": (0.0, 0.0)}
         self.a_img = {"o′": (0.0, 0.0)}
+        self.velocity, self.acceleration = {}, {}
         self._O = {n: complex(kin.O[n][i]) for n in mech.moving}
         self._e = {n: complex(kin.e[n][i]) for n in mech.moving}
-        # A name on two moving links that are not pinned together there is two points: write it with the link.
-        carriers: dict[str, set] = {}
-        for n in mech.moving:
-            for name in mech.link(n).points:
-                carriers.setdefault(name, set()).add(n)
         # What a residue of rounding is beside, in the captions: the input's speed over the mechanism's size.
-        size = max(abs(self.pos(l.number, name)) for l in mech.links for name in l.points) or 1.0
+        size = self.fixed.size
         w, al = abs(float(kin.q_dot[i])), abs(float(kin.q_ddot[i]))
         self.v_ref = w * size if mech.driver.crank else w
         self.a_ref = (w * w + al) * size if mech.driver.crank else al + w * w / size
-        pinned = {(j.point, l) for j in mech.joints if isinstance(j, Revolute) for l in j.links}
-        self._twice = {name for name, ls in carriers.items() if len(ls) > 1 and not all((name, l) in pinned for l in ls)}
 
     # -- positions and names --------------------------------------------------------------------------------
     def pos(self, link: int, name: str) -> complex:
-        x, y = self.mech.link(link).point(name)
+        p = self.fixed.points[link, name]
         if link == self.frame:
-            return complex(x, y)
-        return self._O[link] + self._e[link] * complex(x, y)
-
-    def G(self, link: int) -> complex:
-        x, y = self.mech.link(link).G
-        return self._O[link] + self._e[link] * complex(x, y)
+            return p
+        return self._O[link] + self._e[link] * p
 
     def sym(self, link: int, name: str) -> str:
-        return f"{name}{link}" if name in self._twice else name
+        return f"{name}{link}" if name in self.fixed.twice else name
 
     def text(self, z, unit: str) -> str:
         """A vector of a polygon in a caption, its rounding residue written as 0."""
-        return polar_text(_xy(z), unit, scale=self.v_ref if unit == V else self.a_ref, minus="-")
+        return polar_text((z.real, z.imag), unit, scale=self.v_ref if unit == V else self.a_ref, minus="-")
 
     # -- recording ------------------------------------------------------------------------------------------
     def step(self, polygon, kind, caption, links, vectors=(), lines=(), points=None, values=None):
         n = len(self.steps)
-        vecs = tuple(Vector(name, _xy(t), _xy(h), known, n) for name, t, h, known in vectors)
-        pts = {k: _xy(z) for k, z in (points or {}).items()}
+        vecs = tuple([Vector(name, (t.real, t.imag), (h.real, h.imag), known, n) for name, t, h, known in vectors])
+        pts = {k: (z.real, z.imag) for k, z in points.items()} if points else {}
         (self.v_img if polygon == "velocity" else self.a_img).update(pts)
         self.steps.append(MotionStep(polygon, kind, caption, tuple(links), vecs,
-                                     tuple(PolygonLine(name, _xy(Q), _xy(d)) for name, Q, d in lines), pts,
+                                     tuple([PolygonLine(name, (Q.real, Q.imag), (d.real, d.imag)) for name, Q, d in lines]), pts,
                                      values or {}))
 
     # -- the driver -----------------------------------------------------------------------------------------
@@ -206,37 +244,42 @@ class _Polygons:
         self.image_acceleration(link)
 
     # -- images ---------------------------------------------------------------------------------------------
-    def _image_points(self, link):
-        body = self.mech.link(link)
-        pts = [(self.sym(link, name), self.pos(link, name)) for name in body.points]
-        return pts + [(f"G{link}", self.G(link))]
-
     def image_velocity(self, link: int):
         m = self.motion[link]
-        pts = self._image_points(link)
-        found = {s.lower(): m.vel(P) for s, P in pts}
+        O, e = (0j, 1 + 0j) if link == self.frame else (self._O[link], self._e[link])
+        vectors, found, listed = [], {}, []
+        for key, s, label, p in self.fixed.images[link]:
+            v = m.vel(O + e * p)
+            found[label] = v
+            vectors.append((f"v_{s}", 0j, v, "found"))
+            listed.append(f"v_{s} = {self.text(v, V)}")
+            if key is not None:
+                self.velocity[key] = v
         if m.w == 0:
-            how = f"link {link} translates (ω{link} = 0): every point has the same velocity, its image is one point"
+            how = f"Link {link} translates (ω{link} = 0): every point has the same velocity, its image is one point"
         else:
-            how = (f"velocity image of link {link}: its shape turned 90° {_sense(m.w)} and scaled by "
+            how = (f"Velocity image of link {link}: its shape turned 90° {_sense(m.w)} and scaled by "
                    f"|ω{link}| = {number(abs(m.w))} rad/s")
-        listed = ", ".join(f"v_{s} = {self.text(found[s.lower()], V)}" for s, _ in pts)
-        self.step("velocity", "image", f"{how[0].upper()}{how[1:]}: {listed}.", (link,),
-                  [(f"v_{s}", 0j, found[s.lower()], "found") for s, _ in pts], points=found)
+        self.step("velocity", "image", f"{how}: {', '.join(listed)}.", (link,), vectors, points=found)
 
     def image_acceleration(self, link: int):
         m = self.motion[link]
-        pts = self._image_points(link)
-        found = {f"{s.lower()}′": m.acc(P) for s, P in pts}
+        O, e = (0j, 1 + 0j) if link == self.frame else (self._O[link], self._e[link])
+        vectors, found, listed = [], {}, []
+        for key, s, label, p in self.fixed.images[link]:
+            a = m.acc(O + e * p)
+            found[label + "′"] = a
+            vectors.append((f"a_{s}", 0j, a, "found"))
+            listed.append(f"a_{s} = {self.text(a, A)}")
+            if key is not None:
+                self.acceleration[key] = a
         if m.w == 0 and m.al == 0:
-            how = f"link {link} translates (ω{link} = α{link} = 0): its acceleration image is one point"
+            how = f"Link {link} translates (ω{link} = α{link} = 0): its acceleration image is one point"
         else:
             turn = math.degrees(math.atan2(m.al, -m.w * m.w))
-            how = (f"acceleration image of link {link}: its shape turned {number(turn)}° (atan2(α{link}, -ω{link}²)) "
+            how = (f"Acceleration image of link {link}: its shape turned {number(turn)}° (atan2(α{link}, -ω{link}²)) "
                    f"and scaled by √(ω{link}⁴ + α{link}²) = {number(math.hypot(m.w * m.w, m.al))} 1/s²")
-        listed = ", ".join(f"a_{s} = {self.text(found[s.lower() + '′'], A)}" for s, _ in pts)
-        self.step("acceleration", "image", f"{how[0].upper()}{how[1:]}: {listed}.", (link,),
-                  [(f"a_{s}", 0j, found[s.lower() + "′"], "found") for s, _ in pts], points=found)
+        self.step("acceleration", "image", f"{how}: {', '.join(listed)}.", (link,), vectors, points=found)
 
     # -- dyads ----------------------------------------------------------------------------------------------
     def sides(self, d: Dyad):
@@ -506,14 +549,10 @@ def construct_kinematics(kin: Kinematics, index: int = 0) -> MotionConstruction:
         b.step("velocity" if not any(s.polygon == "acceleration" for s in b.steps) else "acceleration", "note",
                f"{exc}.", ())
         return MotionConstruction(mech, index, q, tuple(b.steps), valid=False, reason=str(exc))
-    velocity, acceleration, v_G, a_G = {}, {}, {}, {}
-    for link in mech.moving:
-        m = b.motion[link]
-        for name in mech.link(link).points:
-            P = b.pos(link, name)
-            velocity[link, name], acceleration[link, name] = _xy(m.vel(P)), _xy(m.acc(P))
-        G = b.G(link)
-        v_G[link], a_G[link] = _xy(m.vel(G)), _xy(m.acc(G))
+    velocity = {key: (z.real, z.imag) for key, z in b.velocity.items() if key[1] is not None}
+    acceleration = {key: (z.real, z.imag) for key, z in b.acceleration.items() if key[1] is not None}
+    v_G = {link: (z.real, z.imag) for (link, name), z in b.velocity.items() if name is None}
+    a_G = {link: (z.real, z.imag) for (link, name), z in b.acceleration.items() if name is None}
     omega = {link: float(m.w) for link, m in b.motion.items()}
     alpha = {link: float(m.al) for link, m in b.motion.items()}
     top_v = max([math.hypot(*v) for v in b.v_img.values()] + [0.0])

@@ -9,8 +9,6 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
-
 from graphkin.graphical import InstantCentres, MotionConstruction, construct_kinematics, instant_centres
 from graphkin.kinematics import Kinematics
 
@@ -31,18 +29,27 @@ def _polygon(c: MotionConstruction, which: str) -> dict:
 
 
 def _difference(c: MotionConstruction, kin: Kinematics) -> dict:
-    """Largest |polygon − analytical| of each kind, over the largest analytical value of that kind."""
+    """Largest |polygon − analytical| of each kind, over the largest analytical value of that kind.
+
+    The analytical values are worked out at this position only (rigid-body motion of each link's frame),
+    so that the data of n positions costs n times one, not n².
+    """
     i, mech = c.index, c.mechanism
     out = {}
-    for kind, ours, theirs in (("velocity", c.velocity, kin.velocity), ("acceleration", c.acceleration, kin.acceleration)):
-        exact = {key: theirs(*key)[i] for key in ours}
-        scale = max([float(np.hypot(*x)) for x in exact.values()] + [0.0])
-        diff = max([float(np.hypot(*np.subtract(ours[k], exact[k]))) for k in ours] + [0.0])
+    motion = {l: (complex(kin.O[l][i]), complex(kin.e[l][i]), complex(kin.v_O[l][i]), complex(kin.a_O[l][i]),
+                  float(kin.omega[l][i]), float(kin.alpha[l][i])) for l in mech.moving}
+    exact_v, exact_a = {}, {}
+    for (l, name) in c.velocity:
+        O, e, v_O, a_O, w, al = motion[l]
+        r = e * complex(*mech.link(l).point(name))
+        exact_v[l, name], exact_a[l, name] = v_O + 1j * w * r, a_O + (1j * al - w * w) * r
+    for kind, ours, exact in (("velocity", c.velocity, exact_v), ("acceleration", c.acceleration, exact_a)):
+        scale = max([abs(z) for z in exact.values()] + [0.0])
+        diff = max([abs(complex(*ours[k]) - exact[k]) for k in ours] + [0.0])
         out[kind] = diff / scale if scale else diff
-    for kind, ours, theirs in (("omega", c.omega, kin.omega), ("alpha", c.alpha, kin.alpha)):
-        links = mech.moving
-        scale = max(abs(float(theirs[l][i])) for l in links)
-        diff = max(abs(ours[l] - float(theirs[l][i])) for l in links)
+    for kind, ours, column in (("omega", c.omega, 4), ("alpha", c.alpha, 5)):
+        scale = max(abs(m[column]) for m in motion.values())
+        diff = max(abs(ours[l] - m[column]) for l, m in motion.items())
         out[kind] = diff / scale if scale else diff
     return out
 
