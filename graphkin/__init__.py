@@ -140,8 +140,14 @@ if TYPE_CHECKING:  # pragma: no cover - for type checkers and editors; at run ti
     from graphkin.cycle.flywheel_file import load_flywheel
     from graphkin.errors import GraphkinError, GraphkinWarning, ModelError, ProblemFileError
     from graphkin.geometry import cross
-    from graphkin.graphical import (Construction, InstantCentres, MotionConstruction, construct_forces,
-                                    construct_kinematics, instant_centres)
+    from graphkin.graphical import (
+        Construction,
+        InstantCentres,
+        MotionConstruction,
+        construct_forces,
+        construct_kinematics,
+        instant_centres,
+    )
     from graphkin.kinematics import Kinematics, decompose, solve_kinematics
     from graphkin.model import Driver, GearMesh, Link, Mechanism, PointForce, Prismatic, Revolute, Table, Torque, mass
     from graphkin.notation import polar, polar_text

@@ -17,8 +17,8 @@ from graphkin.analytical.loads import applied
 from graphkin.graphical import construct_forces
 from graphkin.kinematics.points import link_points
 from graphkin.model import PointForce
-from graphkin.report.polygons import graphical_kinematics_data
 from graphkin.notation import PICOMETRE, RESIDUE, input_text, largest, num, unless_rounding
+from graphkin.report.polygons import graphical_kinematics_data
 
 
 def _vec(v):
