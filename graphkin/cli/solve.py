@@ -18,6 +18,9 @@ def add_parser(sub) -> None:
     s.add_argument("--figure", metavar="FILE", help="write the side-by-side figure (.png, .svg or .pdf); "
                    "with several positions, one file each, numbered")
     s.add_argument("--steps", metavar="DIR", help="write the construction step by step, one PNG frame per step")
+    s.add_argument("--polygons", action="store_true",
+                   help="with --figure, also write the velocity and acceleration polygons to scale "
+                        "(1 mm = X m/s, 1 mm = Y m/s²), as FILE_polygons")
 
 
 def run(args) -> int:
@@ -28,6 +31,8 @@ def run(args) -> int:
     from graphkin.files import json_text
 
     check_outputs(args.figure, args.steps)
+    if args.polygons and not args.figure:
+        raise GraphkinError("--polygons draws beside the figure: give --figure FILE too")
     problem = catalog.load(args.problem)
     result = problem.solve(positions(problem, args.at) if args.at is not None else None)
     graphical = report.constructions(result)
@@ -37,7 +42,8 @@ def run(args) -> int:
     else:
         print(report.format_solution(problem, result, graphical))
     if args.figure or args.steps:
-        _figures(problem, result, graphical, args.figure, args.steps, sys.stderr if args.json else sys.stdout)
+        _figures(problem, result, graphical, args.figure, args.steps, sys.stderr if args.json else sys.stdout,
+                 polygons=args.polygons)
     bad = np.flatnonzero(~result.valid)
     if len(bad):
         # One line, however many positions fail: the first names the position and the reason.
@@ -48,7 +54,7 @@ def run(args) -> int:
     return 2 if len(bad) else 0
 
 
-def _figures(problem, result, graphical, figure, steps, say):
+def _figures(problem, result, graphical, figure, steps, say, *, polygons=False):
     """Write the side-by-side figure(s) and the step frames; say which files went where.
 
     A batch that takes more than a second shows a tqdm progress bar on stderr,
@@ -75,6 +81,14 @@ def _figures(problem, result, graphical, figure, steps, say):
                 path.parent.mkdir(parents=True, exist_ok=True)
                 written.append(draw.save(draw.draw_solution(c, result), path))
                 tqdm.write(f"figure written to {path}", file=say)
+                if polygons:
+                    from graphkin.graphical import construct_kinematics
+
+                    motion = construct_kinematics(result.kinematics, i)
+                    more = path.with_name(f"{path.stem}_polygons{path.suffix}")
+                    written.append(draw.save(draw.draw_motion_polygons(motion), more))
+                    tqdm.write(f"velocity and acceleration polygons written to {more} (1 mm = "
+                               f"{motion.velocity_scale:g} m/s, 1 mm = {motion.acceleration_scale:g} m/s²)", file=say)
             if steps:
                 folder = Path(steps)
                 folder.mkdir(parents=True, exist_ok=True)
