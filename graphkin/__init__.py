@@ -24,7 +24,7 @@ the analytical route   :func:`solve_forces`, :class:`ForceAnalysis`, :func:`asse
 the graphical route    :func:`construct_forces`, :class:`Construction`,
                        :func:`construct_kinematics`, :class:`MotionConstruction`
                        (velocity and acceleration polygons), :func:`instant_centres`,
-                       :class:`InstantCentres`
+                       :class:`InstantCentres`, :func:`kinematics_from_polygons`
 whole cycles           :func:`sweep`, :class:`Cycle`, :func:`size_flywheel`,
                        :func:`joint_force_index`, :func:`static_problem`, :func:`load_flywheel`
 reports (plain data)   :mod:`report`, :func:`solution`, :func:`format_solution`,
@@ -80,6 +80,7 @@ _LAZY = {
     "MotionConstruction": ("graphkin.graphical", "MotionConstruction"),
     "instant_centres": ("graphkin.graphical", "instant_centres"),
     "InstantCentres": ("graphkin.graphical", "InstantCentres"),
+    "kinematics_from_polygons": ("graphkin.graphical", "kinematics_from_polygons"),
     # whole cycles
     "sweep": ("graphkin.cycle", "sweep"),
     "Cycle": ("graphkin.cycle", "Cycle"),
@@ -147,6 +148,7 @@ if TYPE_CHECKING:  # pragma: no cover - for type checkers and editors; at run ti
         construct_forces,
         construct_kinematics,
         instant_centres,
+        kinematics_from_polygons,
     )
     from graphkin.kinematics import Kinematics, decompose, solve_kinematics
     from graphkin.model import Driver, GearMesh, Link, Mechanism, PointForce, Prismatic, Revolute, Table, Torque, mass

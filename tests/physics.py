@@ -13,7 +13,7 @@ import pytest
 from hypothesis import HealthCheck, settings
 
 from graphkin.analytical import solve_forces
-from graphkin.graphical import construct_forces, construct_kinematics, instant_centres
+from graphkin.graphical import construct_forces, construct_kinematics, instant_centres, kinematics_from_polygons
 from graphkin.kinematics import solve_kinematics
 from graphkin.model import FRAME, GearMesh, Mechanism, PointForce, Prismatic, Revolute
 from tests.strategies import length_scale
@@ -333,5 +333,26 @@ def polygons_equal_analytical(case):
             assert w == pytest.approx(kin.omega[l][i], rel=0, abs=RTOL * w_scale)
         if not ic.missing:
             assert set(ic.omega) == set(links)
+        checked += 1
+    return checked
+
+
+def forces_from_polygons_equal_analytical(case):
+    """The force route with its inertia loads from the polygons gives the analytical forces and driving effort."""
+    mech, q, q_dot, q_ddot = case
+    kin = solve_kinematics(mech, q, q_dot, q_ddot)
+    r = solve_forces(kin)
+    p = solve_forces(kinematics_from_polygons(kin))
+    checked = 0
+    for i in np.flatnonzero(r.valid):
+        assert p.valid[i], p.reason(i)
+        scale = max(np.abs(r.force(*k)[i]).max() for k in r.forces)
+        for key in r.forces:
+            np.testing.assert_allclose(p.force(*key)[i], r.force(*key)[i], rtol=0, atol=RTOL * max(scale, 1e-300))
+        effort_scale = max(abs(r.effort[i]), scale * 1e-3)
+        assert p.effort[i] == pytest.approx(r.effort[i], rel=0, abs=10 * RTOL * effort_scale)
+        c = construct_forces(p.kinematics, int(i))
+        assert c.valid, c.reason
+        assert c.effort == pytest.approx(r.effort[i], rel=0, abs=10 * RTOL * effort_scale)
         checked += 1
     return checked

@@ -543,6 +543,12 @@ def construct_kinematics(kin: Kinematics, index: int = 0) -> MotionConstruction:
     if not kin.valid[index]:
         return MotionConstruction(mech, index, q, valid=False, reason=kin.reason(index))
     b = _Polygons(kin, index)
+    if kin.given:
+        # Values a problem gives (measured off its drawing) are what the force route uses; the polygons are the
+        # construction from the input motion, so say which of the two the reader is looking at.
+        named = sorted({f"{k[1]} of link {k[0]}" for k in kin.given if k[1] != "at"})
+        b.step("velocity", "note", f"The problem gives {', '.join(named) or 'point positions'} instead of deriving "
+               "them; these polygons are constructed from the input motion and may differ from those values.", ())
     try:
         b.run()
     except Degenerate as exc:

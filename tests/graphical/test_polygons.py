@@ -9,7 +9,7 @@ import pytest
 
 from graphkin import catalog
 from graphkin.errors import GraphkinError
-from graphkin.graphical import construct_kinematics, instant_centres
+from graphkin.graphical import construct_kinematics, instant_centres, kinematics_from_polygons
 from graphkin.kinematics import solve_kinematics
 from graphkin.model import Driver, Link, Mechanism, Revolute
 
@@ -118,3 +118,16 @@ def test_a_slider_centre_is_at_infinity_across_its_guide():
         if hasattr(joint, "guide") and kin.mechanism.frame in joint.links:
             d = ic.at_infinity[tuple(sorted(joint.links))]
             assert abs(d[0] * math.cos(joint.direction) + d[1] * math.sin(joint.direction)) < 1e-12
+
+
+def test_given_values_are_named_in_a_note():
+    kin = catalog.load("double_slider").kinematics()
+    given = kin.with_given({(3, "omega"): kin.omega[3] * 1.01})
+    c = construct_kinematics(given, 0)
+    assert c.valid and c.steps[0].kind == "note" and "omega of link 3" in c.steps[0].caption
+
+
+def test_polygon_kinematics_refuse_given_values():
+    kin = catalog.load("double_slider").kinematics()
+    with pytest.raises(GraphkinError, match="already carry given values"):
+        kinematics_from_polygons(kin.with_given({(3, "omega"): kin.omega[3]}))

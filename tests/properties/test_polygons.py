@@ -8,7 +8,7 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from tests.physics import SETTINGS, polygons_equal_analytical
+from tests.physics import SETTINGS, forces_from_polygons_equal_analytical, polygons_equal_analytical
 from tests.strategies import families
 
 
@@ -17,3 +17,10 @@ from tests.strategies import families
 @given(data=st.data())
 def test_polygons_equal_analytical(family, data):
     assert polygons_equal_analytical(data.draw(families[family])) > 0
+
+
+@SETTINGS
+@pytest.mark.parametrize("family", sorted(families))
+@given(data=st.data())
+def test_forces_from_the_polygons_equal_analytical(family, data):
+    assert forces_from_polygons_equal_analytical(data.draw(families[family])) > 0
