@@ -20,7 +20,7 @@ def add_parser(sub) -> None:
     s.add_argument("--steps", metavar="DIR", help="write the construction step by step, one PNG frame per step")
     s.add_argument("--polygons", action="store_true",
                    help="with --figure, also write the velocity and acceleration polygons to scale "
-                        "(1 mm = X m/s, 1 mm = Y m/s²), as FILE_polygons")
+                        "(1 mm = X m/s, 1 mm = Y m/s²), as FILE_polygons; with --steps, their steps too")
 
 
 def run(args) -> int:
@@ -31,8 +31,8 @@ def run(args) -> int:
     from graphkin.files import json_text
 
     check_outputs(args.figure, args.steps)
-    if args.polygons and not args.figure:
-        raise GraphkinError("--polygons draws beside the figure: give --figure FILE too")
+    if args.polygons and not (args.figure or args.steps):
+        raise GraphkinError("--polygons draws beside the figure or the steps: give --figure FILE or --steps DIR too")
     problem = catalog.load(args.problem)
     result = problem.solve(positions(problem, args.at) if args.at is not None else None)
     graphical = report.constructions(result)
@@ -67,6 +67,7 @@ def _figures(problem, result, graphical, figure, steps, say, *, polygons=False):
     from tqdm import tqdm
 
     from graphkin import draw
+    from graphkin.graphical import construct_kinematics
 
     many = result.n > 1
     drawn = [(i, c) for i, c in enumerate(graphical) if c is not None and c.valid]
@@ -82,8 +83,6 @@ def _figures(problem, result, graphical, figure, steps, say, *, polygons=False):
                 written.append(draw.save(draw.draw_solution(c, result), path))
                 tqdm.write(f"figure written to {path}", file=say)
                 if polygons:
-                    from graphkin.graphical import construct_kinematics
-
                     motion = construct_kinematics(result.kinematics, i)
                     more = path.with_name(f"{path.stem}_polygons{path.suffix}")
                     written.append(draw.save(draw.draw_motion_polygons(motion), more))
@@ -93,6 +92,11 @@ def _figures(problem, result, graphical, figure, steps, say, *, polygons=False):
                 folder = Path(steps)
                 folder.mkdir(parents=True, exist_ok=True)
                 frames = []
+                if polygons:
+                    # The polygons come first: they give the inertia loads the force construction starts from.
+                    for k, fig in enumerate(draw.draw_motion_steps(construct_kinematics(result.kinematics, i)), 1):
+                        frames.append(draw.save(fig, folder / f"{Path(problem.name).stem}{tag}_polygons{k:02d}.png"))
+                        written.append(frames[-1])
                 for k, fig in enumerate(draw.draw_steps(c), start=1):
                     frames.append(draw.save(fig, folder / f"{Path(problem.name).stem}{tag}_step{k:02d}.png"))
                     written.append(frames[-1])

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import textwrap
 
 import numpy as np
 from matplotlib.figure import Figure
@@ -20,7 +21,7 @@ UNITS = {"velocity": "m/s", "acceleration": "m/s²"}
 
 
 def draw_motion_polygon(construction, polygon: str = "velocity", *, scale: float | None = None, ax=None,
-                        values: bool = True, title=None, **style) -> Drawn:
+                        values: bool = True, title=None, upto: int | None = None, **style) -> Drawn:
     """Draw the velocity or acceleration polygon of a position to a stated scale.
 
     The pole is a ring; each vector a step draws is an arrow (known ones heavy with solid heads, those whose
@@ -41,6 +42,9 @@ def draw_motion_polygon(construction, polygon: str = "velocity", *, scale: float
         Write each drawn vector's size next to its name.
     title : str or False, optional
         The axes title; by default the polygon's name and scale.
+    upto : int, optional
+        Draw the polygon as it stands after step ``upto`` of ``construction.steps`` (the view stays that of
+        the whole polygon, so that frames of successive steps line up).
     **style
         Overrides of :class:`graphkin.draw.style.Style` fields.
 
@@ -70,9 +74,12 @@ def draw_motion_polygon(construction, polygon: str = "velocity", *, scale: float
     if title:
         ax.set_title(title, fontsize=s.title_size, color=s.ink)
     lab = Labeler(ax, s)
-    steps = [st for st in construction.steps if st.polygon == polygon]
-    images = {name: np.asarray(p, float) / scale for name, p in construction.images[polygon].items()}
-    pts = list(images.values())
+    steps = [st for k, st in enumerate(construction.steps) if st.polygon == polygon and (upto is None or k <= upto)]
+    pole_name = "o" if polygon == "velocity" else "o′"
+    every = {name: np.asarray(p, float) / scale for name, p in construction.images[polygon].items()}
+    shown = {pole_name} | {name for st in steps for name in st.points}
+    images = {name: p for name, p in every.items() if name in shown}
+    pts = list(every.values())
     span = float(np.max(np.ptp(np.asarray(pts), axis=0))) if len(pts) > 1 else 0.0
     span = span or 10.0
     ppu = points_per_unit(ax, 1.5 * span)
@@ -112,7 +119,7 @@ def draw_motion_polygon(construction, polygon: str = "velocity", *, scale: float
             drawn.ends[v.name] = (tuple(tail), tuple(tip))
             drawn.add(art)
             lab.arrow(tail, tip, art.get_linewidth(), art.get_mutation_scale())
-    pole = images["o" if polygon == "velocity" else "o′"]
+    pole = images[pole_name]
     drawn += [markers(ax, *pole, ms=8, mfc="none", mec=s.ink, mew=1.0, zorder=5)]
     lab.dot(pole, 9.0)
     centre = np.mean(np.asarray(pts), axis=0)
@@ -167,3 +174,33 @@ def draw_motion_polygons(construction, *, velocity_scale: float | None = None,
     draw_motion_polygon(construction, "velocity", scale=velocity_scale, ax=left, **style)
     draw_motion_polygon(construction, "acceleration", scale=acceleration_scale, ax=right, **style)
     return fig
+
+
+def draw_motion_steps(construction, **style) -> list[Figure]:
+    """The polygons step by step: one frame per step, the polygon as it stands, the step's caption under it.
+
+    Parameters
+    ----------
+    construction : graphkin.graphical.MotionConstruction
+        The polygons of one position.
+    **style
+        Overrides of :class:`graphkin.draw.style.Style` fields.
+
+    Returns
+    -------
+    list of matplotlib.figure.Figure
+        One per step, in order; each polygon at the construction's scale throughout.
+    """
+    if not construction.valid:
+        raise GraphkinError(f"there are no polygons to draw at this position: {construction.reason}")
+    s = _style.resolve(**style)
+    frames = []
+    for k, step in enumerate(construction.steps):
+        fig = Figure(figsize=(6.0, 6.4), dpi=100)
+        ax = fig.add_axes((0.05, 0.3, 0.9, 0.62))
+        draw_motion_polygon(construction, step.polygon, ax=ax, upto=k, values=False,
+                            title=f"Step {k + 1}: {step.polygon} polygon, {step.kind}", **style)
+        fig.text(0.05, 0.26, textwrap.fill(step.caption, 95), ha="left", va="top", fontsize=s.small_size,
+                 color=s.ink, wrap=True)
+        frames.append(fig)
+    return frames

@@ -406,12 +406,14 @@ class _Polygons:
                 coriolis = 2j * wm * v_rel
                 direction = self.guide(s.joint)
                 c_name, r_name = f"a^c_{x}{k}", f"a^r_{x}{k}"
+                # The two links of a sliding pair turn together: the guide's ω is the one the books name.
+                g = s.joint.guide
                 if wm == 0 or v_rel == 0:
-                    why = f"ω{s.m} = 0" if wm == 0 else f"v_{x}{k} = 0"
+                    why = f"ω{g} = 0" if wm == 0 else f"v_{x}{k} = 0"
                     rule = f"{c_name} = 0 ({why})"
                 else:
-                    rule = (f"{c_name} = 2 ω{s.m} v_{x}{k} = {number(abs(coriolis))} m/s², v_{x}{k} turned 90° "
-                            f"{_sense(wm)} (the sense of ω{s.m})")
+                    rule = (f"{c_name} = 2 ω{g} v_{x}{k} = {number(abs(coriolis))} m/s², v_{x}{k} turned 90° "
+                            f"{_sense(wm)} (the sense of ω{g})")
                 phrases.append(f"a_{x} = a_{k} + {c_name} + {r_name}: {rule}; {r_name} along the guide")
                 vectors += [(f"a_{k}", 0j, Q0, "size and direction"), (c_name, Q0, Q0 + coriolis, "size and direction")]
                 values[c_name] = abs(coriolis)

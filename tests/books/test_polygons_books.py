@@ -70,7 +70,7 @@ def test_marghitu_shaper_polygons(shaper):
 
 def test_marghitu_shaper_coriolis_is_2_omega_v_turned_with_omega(shaper):
     """The Coriolis vector of the acceleration polygon is 2 ω v_rel, v_rel (from the velocity polygon) turned 90°
-    in the sense of the guide's ω (the lever 3 turns CCW, so the turn is CCW)."""
+    in the sense of the guide's ω (the slot is in lever 3, which turns CCW)."""
     c = shaper
     v_rel = next(v for v in c.vectors("velocity") if v.name.startswith("v_B3B2") and v.known == "direction")
     a_c = next(v for v in c.vectors("acceleration") if v.name.startswith("a^c_"))
@@ -78,4 +78,4 @@ def test_marghitu_shaper_coriolis_is_2_omega_v_turned_with_omega(shaper):
     expected = 2 * w * complex(*v_rel.vector) * 1j
     assert a_c.vector == pytest.approx((expected.real, expected.imag), rel=1e-12, abs=1e-12 * abs(expected))
     step = next(s for s in c.steps if s.polygon == "acceleration" and s.kind == "dyad" and "RPR" in s.caption)
-    assert "turned 90° CCW (the sense of ω2)" in step.caption
+    assert "turned 90° CCW (the sense of ω3)" in step.caption

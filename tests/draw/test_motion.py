@@ -70,3 +70,28 @@ def test_polygons_without_a_figure_is_one_clear_line(capsys):
     code = main(["solve", "shaper_six_bar", "--polygons"])
     err = capsys.readouterr().err
     assert code != 0 and "--figure" in err and err.count("\n") == 1
+
+
+def test_one_frame_per_step_each_with_its_caption(shaper):
+    frames = draw.draw_motion_steps(shaper)
+    assert len(frames) == len(shaper.steps)
+    for fig, step in zip(frames, shaper.steps):
+        texts = " ".join(t.get_text() for t in fig.texts).replace("\n", " ")
+        assert step.caption.split(":")[0] in texts
+
+
+def test_a_frame_draws_only_what_its_step_has_reached(shaper):
+    first_dyad = next(k for k, s in enumerate(shaper.steps) if s.kind == "dyad")
+    before = draw.draw_motion_polygon(shaper, "velocity", upto=first_dyad - 1)
+    after = draw.draw_motion_polygon(shaper, "velocity", upto=first_dyad)
+    (found,) = shaper.steps[first_dyad].points
+    assert found not in before.labels and found in after.labels
+    assert before.ax.get_xlim() == pytest.approx(after.ax.get_xlim())
+
+
+def test_solve_steps_with_polygons_writes_their_frames_first(tmp_path, capsys):
+    assert main(["solve", "double_slider", "--steps", str(tmp_path), "--polygons"]) == 0
+    names = sorted(p.name for p in tmp_path.iterdir())
+    polygons = [n for n in names if "_polygons" in n]
+    assert polygons and len(polygons) == len(construct_kinematics(catalog.load("double_slider").kinematics(), 0).steps)
+    assert f"({polygons[0]} …" in capsys.readouterr().out
