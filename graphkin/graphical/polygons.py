@@ -255,7 +255,9 @@ class _Polygons:
             listed.append(f"v_{s} = {self.text(v, V)}")
             if key is not None:
                 self.velocity[key] = v
-        if m.w == 0:
+        if m.w == 0 and m.v == 0:
+            how = f"Link {link} is at rest (ω{link} = 0, no velocity): its image is the pole"
+        elif m.w == 0:
             how = f"Link {link} translates (ω{link} = 0): every point has the same velocity, its image is one point"
         else:
             how = (f"Velocity image of link {link}: its shape turned 90° {_sense(m.w)} and scaled by "
@@ -273,7 +275,9 @@ class _Polygons:
             listed.append(f"a_{s} = {self.text(a, A)}")
             if key is not None:
                 self.acceleration[key] = a
-        if m.w == 0 and m.al == 0:
+        if m.w == 0 and m.al == 0 and m.a == 0:
+            how = f"Link {link} has no acceleration (ω{link} = α{link} = 0): its image is the pole"
+        elif m.w == 0 and m.al == 0:
             how = f"Link {link} translates (ω{link} = α{link} = 0): its acceleration image is one point"
         else:
             turn = math.degrees(math.atan2(m.al, -m.w * m.w))

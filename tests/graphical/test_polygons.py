@@ -131,3 +131,13 @@ def test_polygon_kinematics_refuse_given_values():
     kin = catalog.load("double_slider").kinematics()
     with pytest.raises(GraphkinError, match="already carry given values"):
         kinematics_from_polygons(kin.with_given({(3, "omega"): kin.omega[3]}))
+
+
+def test_a_mechanism_at_rest_has_the_pole_for_every_image():
+    kin = catalog.load("engine_static_khurmi").kinematics()
+    assert float(kin.q_dot[0]) == 0
+    c = construct_kinematics(kin, 0)
+    assert c.valid
+    for step in c.steps:
+        if step.kind == "image" and step.polygon == "velocity":
+            assert "at rest" in step.caption and all(p == (0.0, 0.0) for p in step.points.values())
