@@ -9,13 +9,16 @@ its image ``p`` (``p′``) in the polygon, and the vector from the pole to the i
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import NamedTuple
 
 from graphkin.errors import GraphkinError
 
 
-@dataclass(frozen=True)
-class Vector:
+class Vector(NamedTuple):
     """One vector of a polygon, from ``tail`` to ``tip`` (both measured from the pole).
+
+    A named tuple rather than a frozen dataclass: as immutable, and a position's polygons hold dozens, which
+    a tuple makes several times faster.
 
     Attributes
     ----------
@@ -43,9 +46,8 @@ class Vector:
         return (self.tip[0] - self.tail[0], self.tip[1] - self.tail[1])
 
 
-@dataclass(frozen=True)
-class PolygonLine:
-    """A line drawn in a polygon, on which an image point must lie.
+class PolygonLine(NamedTuple):
+    """A line drawn in a polygon, on which an image point must lie (a named tuple, as :class:`Vector`).
 
     Attributes
     ----------
