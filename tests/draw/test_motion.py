@@ -63,13 +63,13 @@ def test_solve_figure_with_polygons_writes_them(tmp_path, capsys):
     out = tmp_path / "shaper.png"
     assert main(["solve", "shaper_six_bar", "--figure", str(out), "--polygons"]) == 0
     assert (tmp_path / "shaper_polygons.png").stat().st_size > 0
-    assert "1 mm = " in capsys.readouterr().out
+    assert "1 mm = " in capsys.readouterr().err
 
 
 def test_polygons_without_a_figure_is_one_clear_line(capsys):
     code = main(["solve", "shaper_six_bar", "--polygons"])
     err = capsys.readouterr().err
-    assert code != 0 and "--figure" in err and err.count("\n") == 1
+    assert code != 0 and "-o FILE" in err and err.count("\n") == 1
 
 
 def test_one_frame_per_step_each_with_its_caption(shaper):
@@ -94,4 +94,4 @@ def test_solve_steps_with_polygons_writes_their_frames_first(tmp_path, capsys):
     names = sorted(p.name for p in tmp_path.iterdir())
     polygons = [n for n in names if "_polygons" in n]
     assert polygons and len(polygons) == len(construct_kinematics(catalog.load("double_slider").kinematics(), 0).steps)
-    assert f"({polygons[0]} …" in capsys.readouterr().out
+    assert f"({polygons[0]} …" in capsys.readouterr().err

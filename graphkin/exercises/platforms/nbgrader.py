@@ -39,6 +39,7 @@ from graphkin.exercises.answers import Unreadable, read_answer
 from graphkin.exercises.exercise import dimension_of
 from graphkin.exercises.grading import MESSAGES, answer_example
 from graphkin.exercises.platforms import requirements, runtime
+from graphkin.optional import require
 
 SECRET_VARIABLE = "GRAPHKIN_SECRET"
 """The environment variable the hidden tests read the course secret from while ``nbgrader autograde`` runs."""
@@ -150,6 +151,7 @@ def build(bundle) -> dict:
         With a course secret but no roster: the student's notebook would
         need the secret to draw the student's data.
     """
+    require("nbformat", "an export to nbgrader")
     if bundle.secret and not bundle.sheets:
         raise GraphkinError("nbgrader with a course secret needs a roster (--roster CSV): the student's notebook "
                             "prints the student's data from the roster's sheets; without them it would need the "

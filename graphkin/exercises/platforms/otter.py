@@ -39,6 +39,7 @@ from graphkin.exercises.answers import Unreadable, read_answer
 from graphkin.exercises.exercise import dimension_of
 from graphkin.exercises.grading import MESSAGES
 from graphkin.exercises.platforms import requirements, runtime, vendor_files
+from graphkin.optional import require
 
 GRADESCOPE_METADATA = "/autograder/submission_metadata.json"
 """Where Gradescope puts the submission's metadata (who handed it in) on its grading machine."""
@@ -221,6 +222,7 @@ def build(bundle) -> dict:
         With a course secret but no roster: the student notebook would have
         to draw each student's data, and so carry the secret.
     """
+    require("nbformat", "an export to otter")
     if bundle.secret and bundle.students is None:
         raise GraphkinError(
             "otter: a course secret needs --roster: the student notebook prints each student's data, so it would "
