@@ -306,10 +306,13 @@ def polygons_equal_analytical(case):
         links = mech.moving
         v = {(l, n): kin.velocity(l, n)[i] for l in links for n in mech.link(l).points}
         a = {(l, n): kin.acceleration(l, n)[i] for l in links for n in mech.link(l).points}
-        v_scale = max(np.hypot(*x) for x in v.values())
-        a_scale = max(np.hypot(*x) for x in a.values())
+        # The scales of the position's motion: the named points' and G's, and what the links' turning gives across
+        # the mechanism (a pitch point is no named point; a gear's named points may all sit on its pivot).
+        size = length_scale(mech)
         w_scale = max(abs(kin.omega[l][i]) for l in links)
         al_scale = max(abs(kin.alpha[l][i]) + kin.omega[l][i] ** 2 for l in links)
+        v_scale = max([np.hypot(*x) for x in v.values()] + [np.hypot(*kin.v_G(l)[i]) for l in links]) + w_scale * size
+        a_scale = max([np.hypot(*x) for x in a.values()] + [np.hypot(*kin.a_G(l)[i]) for l in links]) + al_scale * size
         for key in v:
             np.testing.assert_allclose(c.velocity[key], v[key], rtol=0, atol=RTOL * v_scale)
             np.testing.assert_allclose(c.acceleration[key], a[key], rtol=0, atol=RTOL * a_scale)

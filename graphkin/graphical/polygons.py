@@ -65,10 +65,6 @@ class _Motion:
         return self.a + (1j * self.al - self.w * self.w) * (P - self.X)
 
 
-def _xy(z) -> tuple[float, float]:
-    return (float(z.real), float(z.imag))
-
-
 def _sense(w: float) -> str:
     return "CCW" if w > 0 else "CW"
 
