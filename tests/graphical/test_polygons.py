@@ -6,12 +6,16 @@ import math
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from graphkin import catalog
 from graphkin.errors import GraphkinError
 from graphkin.graphical import construct_kinematics, instant_centres, kinematics_from_polygons
-from graphkin.kinematics import solve_kinematics
-from graphkin.model import Driver, Link, Mechanism, Revolute
+from graphkin.kinematics import Dyad, GearGroup, decompose, solve_kinematics
+from graphkin.model import Driver, GearMesh, Link, Mechanism, Prismatic, Revolute
+from tests.physics import polygons_equal_analytical
+from tests.strategies import Case
 
 
 def _four_bar(d: float) -> Mechanism:
@@ -141,3 +145,38 @@ def test_a_mechanism_at_rest_has_the_pole_for_every_image():
     for step in c.steps:
         if step.kind == "image" and step.polygon == "velocity":
             assert "at rest" in step.caption and all(p == (0.0, 0.0) for p in step.points.values())
+
+
+def _slotted_crank(y0: float, offset: float) -> Mechanism:
+    """Crank 2 with a slot along it (offset from O2), block 3 in the slot pinned at P to slider 4 on a frame
+    guide at height y0: a PRP dyad, which no family of tests/strategies.py draws."""
+    return Mechanism([Link(1, {"O2": (0, 0), "S": (0, y0)}), Link(2, {"O2": (0, 0), "T": (0, offset)}),
+                      Link(3, {"P": (0, 0)}), Link(4, {"P": (0, 0)})],
+                     [Revolute((1, 2), "O2"), Prismatic(2, 3, "P", "T", 0.0), Revolute((3, 4), "P"),
+                      Prismatic(1, 4, "P", "S", 0.0)], Driver(2))
+
+
+@settings(max_examples=40, deadline=None)
+@given(theta=st.floats(0.35, 2.8), y0=st.floats(0.2, 2.0), offset=st.floats(-0.1, 0.1),
+       w=st.floats(-50, 50).filter(lambda x: abs(x) > 0.1), al=st.floats(-500, 500))
+def test_a_prp_dyad_equals_analytical(theta, y0, offset, w, al):
+    mech = _slotted_crank(y0, offset)
+    assert [g.type for g in decompose(mech) if isinstance(g, Dyad)] == ["PRP"]
+    assert polygons_equal_analytical(Case(mech, np.array([theta]), np.array([w]), np.array([al]))) == 1
+
+
+def _geared_four_bar() -> Mechanism:
+    """A four-bar whose coupler 3 carries a gear (centre A) meshing with gear 5 pivoted on the crank at D: a gear
+    on a moving carrier, which no family of tests/strategies.py draws."""
+    return Mechanism([Link(1, {"O2": (0, 0), "O4": (1.0, 0)}), Link(2, {"O2": (0, 0), "A": (0.25, 0), "D": (0.55, 0)}),
+                      Link(3, {"A": (0, 0), "B": (1.0, 0)}), Link(4, {"O4": (0, 0), "B": (0.8, 0)}),
+                      Link(5, {"D": (0, 0)}, G=(0.05, 0.02))],
+                     [Revolute((1, 2), "O2"), Revolute((2, 3), "A"), Revolute((3, 4), "B"), Revolute((1, 4), "O4"),
+                      Revolute((2, 5), "D"), GearMesh((3, 5), ("A", "D"), (0.1, 0.2))], Driver(2))
+
+
+@pytest.mark.parametrize("theta", [0.3, 1.7, 3.5, 5.2])
+def test_a_gear_on_a_moving_carrier_equals_analytical(theta):
+    mech = _geared_four_bar()
+    assert any(isinstance(g, GearGroup) and g.b == 2 for g in decompose(mech))
+    assert polygons_equal_analytical(Case(mech, np.array([theta]), np.array([12.0]), np.array([-30.0]))) == 1
