@@ -14,6 +14,7 @@ divide by w.
 
 from __future__ import annotations
 
+import cmath
 import math
 from dataclasses import dataclass, field
 from itertools import combinations
@@ -70,18 +71,28 @@ class InstantCentres:
     reason: str = ""
 
 
-def _unit(p: np.ndarray) -> np.ndarray:
-    return p / np.linalg.norm(p)
+# Homogeneous points and lines are plain 3-tuples: a mechanism has a few dozen pairs, and tuples are several
+# times faster than small numpy arrays here.
+def _cross(p, q) -> tuple[float, float, float]:
+    return (p[1] * q[2] - p[2] * q[1], p[2] * q[0] - p[0] * q[2], p[0] * q[1] - p[1] * q[0])
 
 
-def _line(p: np.ndarray, q: np.ndarray):
+def _norm(p) -> float:
+    return math.sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2])
+
+
+def _unit(p) -> tuple[float, float, float]:
+    size = _norm(p)
+    return (p[0] / size, p[1] / size, p[2] / size)
+
+
+def _line(p, q):
     """The line through two homogeneous points, or None where they are the same point."""
-    line = np.cross(p, q)
-    size = np.linalg.norm(line)
-    return None if size <= SAME else line / size
+    line = _cross(p, q)
+    return None if _norm(line) <= SAME else _unit(line)
 
 
-def _where(P: np.ndarray, size: float) -> str:
+def _where(P, size: float) -> str:
     if abs(P[2]) <= SAME:
         return f"at infinity, in the direction ({number(P[0])}, {number(P[1])})"
     return f"at ({number(P[0] / P[2] * size * 1e3)}, {number(P[1] / P[2] * size * 1e3)}) mm"
@@ -112,16 +123,19 @@ def instant_centres(kin: Kinematics, index: int = 0) -> InstantCentres:
         return InstantCentres(mech, i, valid=False, reason=kin.reason(i))
     frame = mech.frame
 
+    O = {n: complex(kin.O[n][i]) for n in mech.moving}
+    e = {n: complex(kin.e[n][i]) for n in mech.moving}
+
     def pos(link, name):
         x, y = mech.link(link).point(name)
-        return complex(x, y) if link == frame else complex(kin.O[link][i] + kin.e[link][i] * complex(x, y))
+        return complex(x, y) if link == frame else O[link] + e[link] * complex(x, y)
 
     size = max(abs(pos(link.number, name)) for link in mech.links for name in link.points) or 1.0
 
-    def hom(z: complex) -> np.ndarray:
-        return _unit(np.array([z.real / size, z.imag / size, 1.0]))
+    def hom(z: complex):
+        return _unit((z.real / size, z.imag / size, 1.0))
 
-    known: dict[frozenset, np.ndarray] = {}
+    known: dict[frozenset, tuple] = {}
     steps = []
     for joint in mech.joints:
         a, b = joint.links
@@ -129,8 +143,8 @@ def instant_centres(kin: Kinematics, index: int = 0) -> InstantCentres:
             P = hom(pos(a, joint.point))
             how = f"the pin {joint.point}"
         elif isinstance(joint, Prismatic):
-            u = (1 + 0j if joint.guide == frame else complex(kin.e[joint.guide][i])) * np.exp(1j * joint.direction)
-            P = np.array([-u.imag, u.real, 0.0])
+            u = (1 + 0j if joint.guide == frame else e[joint.guide]) * cmath.exp(1j * joint.direction)
+            P = (-u.imag, u.real, 0.0)
             how = f"at infinity, perpendicular to the guide at {joint.point}"
         elif isinstance(joint, GearMesh):
             (ca, cb), (ra, _) = joint.centers, joint.radii
@@ -160,8 +174,8 @@ def instant_centres(kin: Kinematics, index: int = 0) -> InstantCentres:
                 if line is None:
                     continue
                 for other, via in lines:
-                    P = np.cross(line, other)
-                    if np.linalg.norm(P) > SAME:
+                    P = _cross(line, other)
+                    if _norm(P) > SAME:
                         P = _unit(P)
                         known[frozenset((a, b))] = P
                         lo, hi = min(a, b), max(a, b)
@@ -184,7 +198,7 @@ def instant_centres(kin: Kinematics, index: int = 0) -> InstantCentres:
         fields[g.link] = (q_dot * size / I12[2], complex(I12[0], I12[1]), I12[2])
     else:
         # A driving slider translates: w = 0 and X = i v, so that v(P) = -iX is v at every point.
-        fields[g.link] = (1.0, 1j * q_dot * np.exp(1j * g.joint.direction), 0.0)
+        fields[g.link] = (1.0, 1j * q_dot * cmath.exp(1j * g.joint.direction), 0.0)
     progress = True
     while progress:
         progress = False
@@ -216,7 +230,7 @@ def instant_centres(kin: Kinematics, index: int = 0) -> InstantCentres:
             v = 1j * Om * (pos(link, name) / size * w - X)
             velocity[link, name] = (float(v.real), float(v.imag))
         gx, gy = mech.link(link).G
-        G = complex(kin.O[link][i] + kin.e[link][i] * complex(gx, gy))
+        G = O[link] + e[link] * complex(gx, gy)
         v = 1j * Om * (G / size * w - X)
         v_G[link] = (float(v.real), float(v.imag))
     centres, infinite = {}, {}
