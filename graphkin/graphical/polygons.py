@@ -248,7 +248,8 @@ class _Polygons:
             v = m.vel(O + e * p)
             found[label] = v
             vectors.append((f"v_{s}", 0j, v, "found"))
-            listed.append(f"v_{s} = {self.text(v, V)}")
+            if label not in self.v_img:  # a point a step before has found is not read off again
+                listed.append(f"v_{s} = {self.text(v, V)}")
             if key is not None:
                 self.velocity[key] = v
         if m.w == 0 and m.v == 0:
@@ -258,7 +259,8 @@ class _Polygons:
         else:
             how = (f"Velocity image of link {link}: its shape turned 90° {_sense(m.w)} and scaled by "
                    f"|ω{link}| = {number(abs(m.w))} rad/s")
-        self.step("velocity", "image", f"{how}: {', '.join(listed)}.", (link,), vectors, points=found)
+        self.step("velocity", "image", f"{how}: {', '.join(listed)}." if listed else f"{how}.", (link,), vectors,
+                  points=found)
 
     def image_acceleration(self, link: int):
         m = self.motion[link]
@@ -268,7 +270,8 @@ class _Polygons:
             a = m.acc(O + e * p)
             found[label + "′"] = a
             vectors.append((f"a_{s}", 0j, a, "found"))
-            listed.append(f"a_{s} = {self.text(a, A)}")
+            if label + "′" not in self.a_img:
+                listed.append(f"a_{s} = {self.text(a, A)}")
             if key is not None:
                 self.acceleration[key] = a
         if m.w == 0 and m.al == 0 and m.a == 0:
@@ -279,7 +282,8 @@ class _Polygons:
             turn = math.degrees(math.atan2(m.al, -m.w * m.w))
             how = (f"Acceleration image of link {link}: its shape turned {number(turn)}° (atan2(α{link}, -ω{link}²)) "
                    f"and scaled by √(ω{link}⁴ + α{link}²) = {number(math.hypot(m.w * m.w, m.al))} 1/s²")
-        self.step("acceleration", "image", f"{how}: {', '.join(listed)}.", (link,), vectors, points=found)
+        self.step("acceleration", "image", f"{how}: {', '.join(listed)}." if listed else f"{how}.", (link,), vectors,
+                  points=found)
 
     # -- dyads ----------------------------------------------------------------------------------------------
     def sides(self, d: Dyad):
