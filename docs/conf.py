@@ -3,7 +3,8 @@
 The source folder is the repository itself, so that the guide (docs/), the
 lessons (lessons/*.ipynb) and the README keep the links they have on GitHub;
 ``include_patterns`` lists what is a page. The lessons are executed at build
-time (myst-nb), the API reference is made from the numpydoc docstrings, and
+time (myst-nb), the formulas become MathML as it is built (docs/mathml.py),
+the API reference is made from the numpydoc docstrings, and
 the catalog page from the catalog itself (one section and figure per problem).
 
 Why Sphinx rather than MkDocs: graphkin's docstrings are numpydoc, which
@@ -35,9 +36,9 @@ extensions = [
     "myst_nb",
     "sphinx.ext.autodoc",
     "sphinx.ext.autosummary",
-    "sphinx.ext.mathjax",
     "numpydoc",
     "catalog_page",
+    "mathml",  # formulas as MathML, drawn by the browser: no script from a CDN (docs/mathml.py)
 ]
 
 # -- MyST and the notebooks ---------------------------------------------------------------------------------
@@ -60,6 +61,7 @@ numpydoc_validation_checks = set()  # checked in tests/test_namespace.py, on the
 
 # -- HTML ------------------------------------------------------------------------------------------------------
 html_theme = "pydata_sphinx_theme"
+html_math_renderer = "mathml"
 html_title = f"graphkin {version}"
 html_theme_options = {
     "navigation_with_keys": False,
@@ -68,7 +70,8 @@ html_theme_options = {
     "footer_start": ["copyright"],
     "footer_end": [],
 }
-html_static_path = []
+html_static_path = ["_static"]
+html_css_files = ["graphkin.css"]  # MathML display formulas in the theme
 html_extra_path = ["_extra"]  # relative to this folder  # the site's root index.html, which leads to docs/index.html
 html_last_updated_fmt = None
 html_show_sourcelink = False
