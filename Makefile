@@ -82,6 +82,7 @@ bench: $(VENV)/.installed
 	$(BIN)/python benchmarks/bench_export.py
 	$(BIN)/python benchmarks/bench_handout.py
 	$(BIN)/python benchmarks/bench_cli.py
+	$(BIN)/python benchmarks/bench_animate.py
 
 clean:
 	rm -rf $(VENV) build *.egg-info

@@ -67,6 +67,7 @@ def test_the_core_install_has_no_notebook_stack(core):
     (["handout", "double_slider", "-o", "h.pdf"], ""),
     (["exercise", "export", "single_link", "--to", "gradescope", "-o", "gs"], ""),
     (["exercise", "export", "single_link", "--to", "prairielearn", "-o", "pl"], ""),
+    (["animate", "strip_cutter", "-o", "a.gif", "--frames", "3", "--dpi", "20"], "3 frames"),
 ])
 def test_the_core_commands_run_without_any_extra(core, tmp_path, argv, expect):
     r = _run(core, *argv, cwd=tmp_path)

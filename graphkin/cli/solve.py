@@ -19,7 +19,7 @@ def add_parser(sub) -> None:
                    help="write the side-by-side figure (.png, .svg or .pdf); with several positions, one file each, "
                    "numbered (--figure is the older name)")
     s.add_argument("--steps", metavar="DIR", help="write the construction step by step, one PNG frame per step")
-    s.add_argument("--polygons", action="store_true",
+    s.add_argument("--motion-polygons", dest="polygons", action="store_true",
                    help="with -o/--figure, also write the velocity and acceleration polygons to scale "
                         "(1 mm = X m/s, 1 mm = Y m/s²), as FILE_polygons; with --steps, their steps too")
 
@@ -33,7 +33,7 @@ def run(args) -> int:
 
     check_outputs(args.figure, args.steps)
     if args.polygons and not (args.figure or args.steps):
-        raise GraphkinError("--polygons draws beside the figure or the steps: give -o FILE or --steps DIR too")
+        raise GraphkinError("--motion-polygons draws beside the figure or the steps: give -o FILE or --steps DIR too")
     problem = catalog.load(args.problem)
     result = problem.solve(positions(problem, args.at) if args.at is not None else None)
     graphical = report.constructions(result)

@@ -61,13 +61,13 @@ def test_a_bad_scale_is_one_clear_line(shaper, scale):
 
 def test_solve_figure_with_polygons_writes_them(tmp_path, capsys):
     out = tmp_path / "shaper.png"
-    assert main(["solve", "shaper_six_bar", "--figure", str(out), "--polygons"]) == 0
+    assert main(["solve", "shaper_six_bar", "--figure", str(out), "--motion-polygons"]) == 0
     assert (tmp_path / "shaper_polygons.png").stat().st_size > 0
     assert "1 mm = " in capsys.readouterr().err
 
 
 def test_polygons_without_a_figure_is_one_clear_line(capsys):
-    code = main(["solve", "shaper_six_bar", "--polygons"])
+    code = main(["solve", "shaper_six_bar", "--motion-polygons"])
     err = capsys.readouterr().err
     assert code != 0 and "-o FILE" in err and err.count("\n") == 1
 
@@ -90,7 +90,7 @@ def test_a_frame_draws_only_what_its_step_has_reached(shaper):
 
 
 def test_solve_steps_with_polygons_writes_their_frames_first(tmp_path, capsys):
-    assert main(["solve", "double_slider", "--steps", str(tmp_path), "--polygons"]) == 0
+    assert main(["solve", "double_slider", "--steps", str(tmp_path), "--motion-polygons"]) == 0
     names = sorted(p.name for p in tmp_path.iterdir())
     polygons = [n for n in names if "_polygons" in n]
     assert polygons and len(polygons) == len(construct_kinematics(catalog.load("double_slider").kinematics(), 0).steps)
