@@ -38,8 +38,9 @@ from graphkin.exercises.exercise import CYCLE_KINDS, dimension_of
 from graphkin.exercises.notebooks import NotData
 from graphkin.exercises.quantities import Expected, _distance, _unit_text, unit_factor
 
-#: Verdicts a question can get.
-VERDICTS = ("correct", "slip", "wrong", "unreadable", "missing")
+#: Verdicts a question can get ("refused": the whole submission is not graded as this student's, e.g. it
+#: carries another student's id; every question then says why).
+VERDICTS = ("correct", "slip", "wrong", "unreadable", "missing", "refused")
 
 _TORQUE_KINDS = ("driver_torque", "inertia_torque", "peak_torque", "lowest_torque", "average_torque")
 
@@ -234,37 +235,38 @@ class _Fit:
     other: str | None = None  # the classmate, for other_data
 
 
-def _transforms(exp: Expected, words: dict):
-    """The slips an answer shows by a transformation of the answer itself: (slip, message, answer → what the
-    right answer would then be, extra words)."""
+def _transforms(exp: Expected):
+    """The slips an answer shows by a transformation of the answer itself: (slip, message, undo, make, extra
+    words), where ``undo`` takes the slipped answer back to the right one and ``make`` makes the slip."""
     q, form = exp.question, exp.form
     out = []
     if form == "vector":
         force = q.kind == "force"
-        out += [("sign", "sign_force" if force else "sign_value", lambda a: -a, {}),
-                ("swapped", "swapped", lambda a: complex(a.imag, a.real), {}),
-                ("angle_from_y", "angle_from_y", lambda a: a * 1j, {}),
-                ("clockwise", "clockwise", lambda a: a.conjugate(), {})]
+        out += [("sign", "sign_force" if force else "sign_value", lambda a: -a, lambda a: -a, {}),
+                ("swapped", "swapped", lambda a: complex(a.imag, a.real), lambda a: complex(a.imag, a.real), {}),
+                ("angle_from_y", "angle_from_y", lambda a: a * 1j, lambda a: a * -1j, {}),
+                ("clockwise", "clockwise", lambda a: a.conjugate(), lambda a: a.conjugate(), {})]
     elif form == "scalar":
         msg = "sign_torque" if q.kind in _TORQUE_KINDS else "sign_value"
-        out.append(("sign", msg, lambda a: -a, {}))
+        out.append(("sign", msg, lambda a: -a, lambda a: -a, {}))
     elif form == "magnitude":
-        out.append(("sign", "sign_magnitude", lambda a: -a, {}))
+        out.append(("sign", "sign_magnitude", lambda a: -a, lambda a: -a, {}))
     elif form == "direction":
         if q.part == "direction":  # a crank angle where a peak occurs has no "opposite": only a force's direction
-            out.append(("opposite", "opposite" if q.kind == "force" else "opposite_other", lambda a: a + math.pi, {}))
-            out += [("swapped", "swapped", lambda a: math.pi / 2 - a, {}),
-                    ("angle_from_y", "angle_from_y", lambda a: a + math.pi / 2, {}),
-                    ("clockwise", "clockwise", lambda a: -a, {})]
+            out += [("opposite", "opposite" if q.kind == "force" else "opposite_other", lambda a: a + math.pi,
+                     lambda a: a + math.pi, {}),
+                    ("swapped", "swapped", lambda a: math.pi / 2 - a, lambda a: math.pi / 2 - a, {}),
+                    ("angle_from_y", "angle_from_y", lambda a: a + math.pi / 2, lambda a: a - math.pi / 2, {}),
+                    ("clockwise", "clockwise", lambda a: -a, lambda a: -a, {})]
         for factor, wrong, right in ((180 / math.pi, "radians", "degrees"), (math.pi / 180, "degrees", "radians")):
-            out.append(("degrees_radians", "degrees_radians", lambda a, f=factor: a * f,
+            out.append(("degrees_radians", "degrees_radians", lambda a, f=factor: a * f, lambda a, f=factor: a / f,
                         {"wrong": wrong, "right": right}))
     if form in ("scalar", "magnitude", "vector", "point"):
         for k in (3, -3, 6, -6):
-            out.append(("power_of_ten", "power_of_ten", lambda a, k=k: a / 10.0**k,
+            out.append(("power_of_ten", "power_of_ten", lambda a, k=k: a / 10.0**k, lambda a, k=k: a * 10.0**k,
                         {"factor": f"10^{abs(k)}", "way": "large" if k > 0 else "small"}))
     if form == "point" and exp.anchor is not None:
-        out.append(("wrong_side", "wrong_side", lambda a: 2 * exp.anchor - a, {}))
+        out.append(("wrong_side", "wrong_side", lambda a: 2 * exp.anchor - a, lambda a: 2 * exp.anchor - a, {}))
     return out
 
 
@@ -274,9 +276,10 @@ def _fits(exp: Expected, a, variant, classmates: Classmates | None) -> list[_Fit
     words = variant.words(q)
     fits = []
     if exp.slack > 0 and (e or form in ("direction", "point")):
-        for slip, msg, undo, extra in _transforms(exp, words):
-            # A slip that leaves the right answer (nearly) where it is cannot be told from it.
-            if _distance(form, undo(e), e) <= 2 * exp.slack:
+        for slip, msg, undo, make, extra in _transforms(exp):
+            # A slip that leaves the right answer where it is (the sign of a value within its slack of 0, the
+            # components of a vector at 45°) cannot be told from it.
+            if exp.close(make(e)):
                 continue
             d = _distance(form, undo(a), e)
             if d <= exp.slack:

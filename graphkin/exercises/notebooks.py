@@ -168,6 +168,30 @@ def read_notebook(path) -> dict:
     return data
 
 
+_UNSEEN = object()
+
+
+def typed_in_kernel(variable: str):
+    """What the latest cell run in this IPython kernel assigned to ``variable``, read as the grader reads it.
+
+    A notebook's own check cell calls it, so that a student learns before handing in that an answer typed
+    as a calculation (``F23 = f"{x} N"``) will not be read. Returns :class:`NotData`, the literal, or
+    None when no cell run so far assigns it (or outside IPython).
+    """
+    try:
+        from IPython import get_ipython
+    except ImportError:
+        return None
+    shell = get_ipython()
+    history = shell.user_ns.get("In", []) if shell is not None else []
+    for source in reversed(history if isinstance(history, list) else []):
+        if isinstance(source, str) and variable in source:
+            value = _cell_assignments(source).get(variable, _UNSEEN)
+            if value is not _UNSEEN:
+                return value
+    return None
+
+
 def notebook_answers(notebook, variables: Mapping[str, str], student_variable: str = STUDENT_VARIABLE):
     """The id and the answers a notebook holds, read as data.
 
@@ -203,4 +227,4 @@ def notebook_answers(notebook, variables: Mapping[str, str], student_variable: s
 
 
 __all__ = ["MAX_CELL_CHARS", "MAX_NOTEBOOK_BYTES", "NotData", "RESERVED", "STUDENT_VARIABLE", "answer_variables",
-           "notebook_answers", "read_notebook"]
+           "notebook_answers", "read_notebook", "typed_in_kernel"]
