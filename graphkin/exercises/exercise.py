@@ -8,7 +8,6 @@ be solved fails when it is loaded, not when the first student asks.
 
 from __future__ import annotations
 
-import difflib
 import hashlib
 import re
 import tomllib
@@ -19,6 +18,7 @@ from typing import Any
 
 from graphkin import catalog
 from graphkin.errors import GraphkinError, ProblemFileError
+from graphkin.exercises.symbols import symbol_problem
 from graphkin.files import read_text
 from graphkin.model.names import parse_force_name
 from graphkin.problem import FieldReader, build_problem
@@ -500,44 +500,16 @@ def parse_exercise(text: str, *, file: str = "<exercise>", id: str = "exercise",
         raise rd.fail("decimal_comma", f"must be true or false, got {decimal_comma!r}")
     intro = rd.string(data, "intro", "", "")
     symbols = [v.symbol for v in vary]
-    check_symbols(rd, "intro", intro, symbols)
-    for i, q in enumerate(questions):
-        check_symbols(rd, f"questions[{i}].ask", q.ask, symbols)
+    for where, statement in [("intro", intro)] + [(f"questions[{i}].ask", q.ask) for i, q in enumerate(questions)]:
+        slip = symbol_problem(statement, symbols)
+        if slip:
+            raise rd.fail(where, slip)
     return Exercise(id, rd.string(data, "title", ""), rd.string(data, "source", "", ""), intro,
                     problem, base, tuple(vary), questions, partial, positions, Cs, reveal,
                     rd.number(data, "max_force_ratio", "", 20.0, low=1.0),
                     rd.number(data, "max_speed_ratio", "", 5.0, low=1.0), draw, file,
                     hashlib.sha256("\x1f".join((id, text, base_text)).encode("utf-8")).hexdigest(), text, base_text,
                     decimal_comma)
-
-
-# In a statement, {symbol} is the student's value, {{ and }} a brace; anything else in braces is a slip.
-_BRACES = re.compile(r"\{\{|\}\}|\{([^{}]*)\}|[{}]")
-
-
-def check_symbols(rd: _Reader, field: str, text: str, symbols) -> None:
-    """Every ``{name}`` of a statement must be a varied symbol; a lone brace is written ``{{`` or ``}}``."""
-    for m in _BRACES.finditer(text):
-        if m[0] in ("{{", "}}") or m[1] in symbols:
-            continue
-        known = ", ".join(f"{{{s}}}" for s in symbols) or "none: the exercise varies nothing"
-        if m[1] is None:
-            raise rd.fail(field, f"has a lone {m[0]!r} (at character {m.start() + 1}); write {m[0] * 2} for a brace "
-                                 f"(the symbols are {known})")
-        close = difflib.get_close_matches(m[1], symbols, n=1)
-        hint = f" (did you mean {{{close[0]}}}?)" if close else ""
-        raise rd.fail(field, f"{{{m[1]}}} is not a symbol of [vary]{hint}; the symbols are {known}, and {{{{ and }}}} "
-                             "write a brace")
-
-
-def fill_symbols(text: str, values: dict) -> str:
-    """A statement with each ``{symbol}`` replaced by its value and ``{{``, ``}}`` by a brace."""
-    def one(m: re.Match) -> str:
-        if m[0] in ("{{", "}}"):
-            return m[0][0]
-        return values.get(m[1], m[0]) if m[1] is not None else m[0]
-
-    return _BRACES.sub(one, text)
 
 
 _TOKEN = re.compile(r"([A-Za-z_]\w*)|\[(\d+)\]")

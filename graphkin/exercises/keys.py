@@ -30,9 +30,10 @@ import json
 from pathlib import Path
 
 from graphkin.errors import GraphkinError
-from graphkin.exercises.exercise import Exercise, Question, fill_symbols, parse_exercise
+from graphkin.exercises.exercise import Exercise, Question, parse_exercise
 from graphkin.exercises.grading import RESOLVED_SLIPS, Classmates, _may, grade_variant
 from graphkin.exercises.quantities import Expected, question_data
+from graphkin.exercises.symbols import fill_symbols
 from graphkin.exercises.variants import check_student, make_variant, pretty
 
 FORMAT = "graphkin-keys-1"

@@ -25,9 +25,10 @@ import numpy as np
 
 from graphkin.cycle import sweep
 from graphkin.errors import GraphkinError
-from graphkin.exercises.exercise import CYCLE_KINDS, Exercise, Question, fill_symbols, set_field
+from graphkin.exercises.exercise import CYCLE_KINDS, Exercise, Question, set_field
 from graphkin.exercises.grading import grade_variant
 from graphkin.exercises.quantities import _span, expected, message_words, question_data, undefined, value_of
+from graphkin.exercises.symbols import fill_symbols
 from graphkin.graphical import construct_forces
 from graphkin.notation import input_text
 from graphkin.problem import build_problem
