@@ -176,7 +176,7 @@ _NUMBER_RE = re.compile(
 _NOT_FINITE_RE = re.compile(r"[+-]? ?(?:nan|inf(?:inity)?)(?![^\W\d_])", re.IGNORECASE)
 _DECIMAL_COMMA_RE = re.compile(r"\d,\d")
 # A number written with commas: "1,29", "1,352", "12,345,678", "12,352.5".
-_COMMA_NUMBER_RE = re.compile(r"(?<![\w.,])\d+(?:,\d+)+(?:\.\d+)?(?![\w,])")
+_COMMA_NUMBER_RE = re.compile(r"(?<![\w.,])\d+(?:,\d+)+(?:\.\d+)?(?:[eE][+-]?\d+)?(?![\w,])")
 _THOUSANDS_RE = re.compile(r"\d{1,3}(?:,\d{3})+(?:\.\d+)?")
 # Spaces around operators go; a space left between two units multiplies.
 _OPERATOR_SPACES_RE = re.compile(r" ?([*/^()]) ?")
@@ -619,21 +619,21 @@ def _commas(text: str, ctx: _Context) -> str:
     """Decimal commas as points ("1,29" → "1.29") where the exercise reads them; other commas in a
     number (a thousands separator, or a decimal comma the exercise does not read) refused with a sentence."""
     def fix(m: re.Match) -> str:
-        number = m[0]
+        number, exponent = re.fullmatch(r"([^eE]*)(.*)", m[0]).groups()
         plain = number.replace(",", "")
-        if _THOUSANDS_RE.fullmatch(number) and (number.count(",") > 1 or "." in number):
+        if _THOUSANDS_RE.fullmatch(number) and (number.count(",") > 1 or "." in number) and not exponent:
             raise ctx.fail(f'write {plain} without a thousands separator')
         if number.count(",") > 1 or "." in number:
-            return number  # a list of numbers, not one: the caller says how to write a vector
+            return m[0]  # a list of numbers, not one: the caller says how to write a vector
         whole, frac = number.split(",")
-        if len(frac) == 3:
+        if len(frac) == 3 and not exponent:
             if ctx.comma:
                 raise ctx.fail(f'"{number}" could be {whole}.{frac} or {plain}: write {whole}.{frac} (a decimal '
                                f'point) or {plain} (no separator)')
             raise ctx.fail(f"write {plain} without a thousands separator, or {whole}.{frac} with a decimal point")
         if not ctx.comma:
             raise ctx.fail(f"{ctx.scalar_advice()} (use a decimal point)")
-        return f"{whole}.{frac}"
+        return f"{whole}.{frac}{exponent}"
 
     return _COMMA_NUMBER_RE.sub(fix, text)
 

@@ -18,10 +18,6 @@ MAX_ROSTER = 100_000
 """The most rows a class file may have."""
 
 
-def _line_of(text: str, index: int) -> int:
-    return text.count("\n", 0, index) + 1
-
-
 def read_class_csv(path, what: str) -> list[dict]:
     """The rows of a class CSV (a roster, or answers) with a ``student`` column, ids normalised.
 
@@ -46,11 +42,12 @@ def read_class_csv(path, what: str) -> list[dict]:
         student named twice.
     """
     text = read_text(path, what)
-    nul = text.find("\x00")
+    nul = text.find("\x00")  # (read_text refuses a file with NUL bytes; standard input is checked here)
     if nul >= 0:
-        raise GraphkinError(f"{what} {path}: line {_line_of(text, nul)}: a NUL byte; the file is not plain text "
-                            "(save it as CSV, UTF-8)")
-    reader = csv.DictReader(io.StringIO(text))
+        raise GraphkinError(f"{what} {path}: line {text.count(chr(10), 0, nul) + 1}: a NUL byte; the file is not "
+                            "plain text (save it as CSV, UTF-8)")
+    # strict: a broken quote is an error at its line, not a field that runs to the end of the file.
+    reader = csv.DictReader(io.StringIO(text), strict=True)
     rows = []
     try:
         for row in reader:
