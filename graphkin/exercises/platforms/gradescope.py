@@ -42,6 +42,7 @@ from pathlib import Path
 import graphkin
 from graphkin import __version__
 from graphkin.errors import GraphkinError
+from graphkin.exercises.answer_files import json_answers, toml_answers
 from graphkin.exercises.keys import Keys, keys_text
 from graphkin.exercises.platforms import requirements, runtime, vendor_files
 from graphkin.exercises.variants import check_student
@@ -554,17 +555,24 @@ def read_answers(path: Path) -> dict:
     except UnicodeDecodeError:
         raise SubmissionError(f"{name} is not text in UTF-8: save it as plain text (UTF-8), one line per "
                               f"question, for example {EXAMPLE_LINE}.") from None
+    # Read as data; a whole number too long to convert stays text, that one answer's problem.
     if path.suffix.lower() == ".json":
         try:
-            answers = json.loads(text)
+            answers = json_answers(text)
         except json.JSONDecodeError as exc:
             raise SubmissionError(f"{name} is not valid JSON ({exc.msg} at line {exc.lineno}, column {exc.colno}). "
                                   'Write one object, for example {"F23": "27.06 N ∠ −73.78°"}.') from None
+        except ValueError as exc:
+            raise SubmissionError(f"{name} cannot be read ({exc}). Write one object, for example "
+                                  '{"F23": "27.06 N ∠ −73.78°"}.') from None
     else:
         try:
-            answers = tomllib.loads(text)
+            answers = toml_answers(text)
         except tomllib.TOMLDecodeError as exc:
             raise SubmissionError(f"{name} is not valid TOML ({exc}). Write one line per question, the answer "
+                                  f"between double quotes, for example {EXAMPLE_LINE}.") from None
+        except ValueError as exc:
+            raise SubmissionError(f"{name} cannot be read ({exc}). Write one line per question, the answer "
                                   f"between double quotes, for example {EXAMPLE_LINE}.") from None
     if not isinstance(answers, dict):
         raise SubmissionError(f"{name} must hold question ids and answers, for example {EXAMPLE_LINE}.")

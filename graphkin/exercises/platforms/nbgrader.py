@@ -11,7 +11,7 @@ directory, then runs ``nbgrader generate_assignment`` and, once the submissions 
 - each question has an autograder test cell worth the question's points. Its visible part only checks
   that the answer can be read.
 
-**Grading never runs the student's code.** nbgrader grades by running the notebook in a kernel, where
+**The grade never depends on the student's code.** nbgrader grades by running the notebook in a kernel, where
 the student's code runs beside the tests. The export's ``nbgrader_config.example.py`` puts
 :func:`read_as_data` first among ``Autograde.autograde_preprocessors``: before nbgrader's ``Execute``,
 it reads the notebook as data (the literals assigned to ``STUDENT`` and to each answer's variable),
@@ -19,8 +19,10 @@ grades them in a separate, isolated Python process with the precomputed keys
 (``graphkin-keys/<name>.json`` in the course directory, beside ``source/``; never the secret), and
 rewrites the notebook nbgrader then runs: the id and the answers as literals, each test cell as the
 feedback line and the score, and any other cell the student wrote as comments. nbgrader's ``Execute``
-then runs nothing the student wrote, and records the score each test cell ends with (nbgrader's partial
-credit). The student's id is the one nbgrader grades under; a notebook carrying another's scores 0.
+then runs nothing the student wrote in the notebook, and :func:`write_grades`, after it, sets each test
+cell's output to graphkin's feedback line and score, whatever the kernel printed: nbgrader records that
+number (its partial credit). The student's id is the one nbgrader grades under; a notebook carrying
+another's scores 0.
 
 A test cell's hidden part fails loudly when the preprocessor was not configured: under ``nbgrader
 autograde`` it stops the kernel, so nbgrader keeps no grade rather than one the notebook decided.
@@ -45,6 +47,12 @@ KEYS_FOLDER = "graphkin-keys"
 
 PREPROCESSOR = "graphkin.exercises.platforms.nbgrader.read_as_data"
 """The importable name of :func:`read_as_data`, as ``nbgrader_config.py`` lists it."""
+
+GRADE_WRITER = "graphkin.exercises.platforms.nbgrader.write_grades"
+"""The importable name of :func:`write_grades`, as ``nbgrader_config.py`` lists it (after ``Execute``)."""
+
+GRADES = "graphkin_grades"
+"""The key of nbgrader's resources under which :func:`read_as_data` leaves the grades for :func:`write_grades`."""
 
 TIMEOUT = 60
 """Seconds nbgrader's ``Execute`` gives each cell (``c.Execute.timeout``; the notebook has a few cells)."""
@@ -98,6 +106,9 @@ def read_as_data(nb, resources):
     claimed, answers = notebook_answers(nb, names)
     report = grade_submissions(keys, [submission(str(info.get("student")), answers, claimed)])[0]
     results = {r["id"]: r for r in report["questions"]}
+    resources[GRADES] = {"tests": {_grade_id("test", r["id"]): (runtime.feedback_line(r), float(r["score"]))
+                                   for r in report["questions"]},
+                         "sheet": runtime.summary(report)}
     by_grade_id = {_grade_id("answer", q): q for q in qids}
     tests = {_grade_id("test", q): q for q in qids}
     for cell in nb.cells:
@@ -119,6 +130,53 @@ def read_as_data(nb, resources):
             lines = cell.source.splitlines() or [""]
             cell.source = "# not run when graded: answers are read from the notebook as data\n" + \
                 "\n".join("# " + line for line in lines)
+    return nb, resources
+
+
+def write_grades(nb, resources):
+    """nbgrader preprocessor, after ``Execute``: each test cell's output is graphkin's feedback line and score.
+
+    nbgrader scores a test cell by its output (the number it ends with). :func:`read_as_data` left the
+    kernel only literals to run, but the kernel starts in the folder nbgrader copied the submission into,
+    where a student can hand in extra files (a ``json.py`` that Python imports before the real one).
+    Whatever the kernel printed, the outputs of graphkin's test cells are set here from the report of the
+    isolated grading, so the grade nbgrader saves never depends on the kernel; the sheet cell shows whom
+    the notebook was graded as and their data; every other output is dropped, so nothing the kernel
+    printed reaches the feedback students get back.
+
+    Parameters
+    ----------
+    nb : nbformat.NotebookNode
+        The notebook as ``Execute`` left it.
+    resources : dict
+        nbgrader's resources, carrying :func:`read_as_data`'s grades (absent for other assignments,
+        whose notebooks pass through unchanged).
+
+    Returns
+    -------
+    nb, resources
+    """
+    import nbformat
+
+    grades = resources.get(GRADES)
+    if not grades:
+        return nb, resources
+    tests = grades["tests"]
+    for cell in nb.cells:
+        if cell.get("cell_type") != "code":
+            continue
+        gid = cell.get("metadata", {}).get("nbgrader", {}).get("grade_id", "")
+        if gid in tests:
+            line, score = tests[gid]
+            cell.outputs = [nbformat.v4.new_output("stream", name="stdout", text=line + "\n"),
+                            nbformat.v4.new_output("execute_result", data={"text/plain": repr(score)},
+                                                   execution_count=cell.get("execution_count"))]
+        elif gid == "sheet":
+            cell.outputs = [nbformat.v4.new_output("stream", name="stdout", text=grades["sheet"] + "\n")]
+        else:
+            # Nothing the kernel printed reaches the feedback students get back (it ran in a folder holding
+            # their files, beside the course's keys).
+            cell.outputs = []
     return nb, resources
 
 
@@ -313,9 +371,11 @@ def config_lines() -> list[str]:
         "# graphkin's notebooks are graded read as data: its preprocessor comes before nbgrader's Execute, grades",
         "# the answers in a process of its own, and leaves the kernel nothing of the student's to run. (It passes",
         "# the notebooks of other assignments, which have no graphkin-keys/<assignment>.json, through unchanged.)",
+        "# After Execute, its grade writer sets each test cell's output from that grading, whatever the kernel did.",
         "c.Autograde.autograde_preprocessors = [",
         f"    {PREPROCESSOR!r},",
         '    "nbgrader.preprocessors.Execute",',
+        f"    {GRADE_WRITER!r},",
         '    "nbgrader.preprocessors.IgnorePattern",',
         '    "nbconvert.preprocessors.ClearMetadataPreprocessor",',
         '    "nbgrader.preprocessors.LimitOutput",',
@@ -470,5 +530,6 @@ def _indent(text: str) -> str:
     return "".join(f"   {line}\n" for line in text.splitlines())
 
 
-__all__ = ["KEYS_FOLDER", "PREPROCESSOR", "STUDENT_VARIABLE", "TIMEOUT", "build", "check_answer", "config_lines",
-           "course_root", "not_read_as_data", "read_as_data", "readme_commands", "variables"]
+__all__ = ["GRADES", "GRADE_WRITER", "KEYS_FOLDER", "PREPROCESSOR", "STUDENT_VARIABLE", "TIMEOUT", "build",
+           "check_answer", "config_lines", "course_root", "not_read_as_data", "read_as_data", "readme_commands",
+           "variables", "write_grades"]

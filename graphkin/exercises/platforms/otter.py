@@ -167,18 +167,8 @@ class Plugin:
                 # Gradescope may render an output as HTML: what the student typed is quoted escaped.
                 tcr.message = None if passed else html.escape(text, quote=False)
             test_file.update_score(r["score"])
-        results.set_output(html.escape(summary(report), quote=False))
+        results.set_output(html.escape(runtime.summary(report), quote=False))
         results.set_plugin_data("graphkin", report)
-
-
-def summary(report: dict) -> str:
-    """The results' opening lines: whom the notebook was graded as, the score, the student's data."""
-    lines = [f"Graded as student {report['student']!r}: {report['score']:g} / {report['max']:g} points."]
-    if report.get("refused"):
-        lines.append(f"Not graded: {report['refused']}")
-    if report.get("data"):
-        lines.append("Your data: " + ", ".join(report["data"]) + ".")
-    return "\n".join(lines)
 
 
 def _out_of_time(limit: int):
@@ -533,4 +523,4 @@ def _indent(text: str) -> str:
 
 
 __all__ = ["PLUGIN", "Plugin", "TIMEOUT", "VENDOR", "build", "graded_by_plugin", "keys_file", "readable",
-           "readme_commands", "summary", "variable"]
+           "readme_commands", "variable"]

@@ -126,6 +126,22 @@ def feedback_line(result: dict) -> str:
     return line
 
 
+def summary(report: dict) -> str:
+    """A graded notebook's opening lines: whom it was graded as, the score, the student's data.
+
+    Parameters
+    ----------
+    report : dict
+        A report of :func:`graphkin.exercises.platforms.isolated.grade_one` (points, no unit).
+    """
+    lines = [f"Graded as student {report['student']!r}: {report['score']:g} / {report['max']:g} points."]
+    if report.get("refused"):
+        lines.append(f"Not graded: {report['refused']}")
+    if report.get("data"):
+        lines.append("Your data: " + ", ".join(report["data"]) + ".")
+    return "\n".join(lines)
+
+
 def identity_error(claimed, graded_as) -> str | None:
     """Why a submission must not be graded under ``graded_as`` when it carries ``claimed``; None when they agree.
 
@@ -144,4 +160,4 @@ def identity_error(claimed, graded_as) -> str | None:
 
 
 __all__ = ["answer_value", "exercise", "feedback_line", "grade", "grade_question", "identity_error",
-           "readable_problem", "sheet", "sheet_text", "variant"]
+           "readable_problem", "sheet", "sheet_text", "summary", "variant"]

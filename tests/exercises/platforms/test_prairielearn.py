@@ -136,7 +136,7 @@ def served(export) -> dict:
         "key": key,
         "sign": {**key, "T12": flip_sense(key["T12"])},
         "blank": {**key, "F14": ""},
-        "unreadable": {**key, "F14": "12,5 N"},
+        "unreadable": {**key, "F14": "1,352 N"},
     }}
     return run_driver(export, scenarios)
 
@@ -212,8 +212,9 @@ def test_blank_is_left_to_pl_string_input_and_graded_missing_if_it_gets_through(
 
 def test_unreadable_answer_is_a_format_error_not_a_grade(served):
     g = served["graded"]["unreadable"]
-    assert g["format_errors"] == {"F14": 'Could not read "12,5 N": write a number and a unit, such as "27.06 N" '
-                                         "(use a decimal point)."}
+    # A comma that could be a decimal comma or a thousands separator is neither guessed nor graded.
+    assert g["format_errors"] == {"F14": 'Could not read &quot;1,352 N&quot;: &quot;1,352&quot; could be 1.352 or '
+                                         "1352: write 1.352 (a decimal point) or 1352 (no separator)."}
     # Not graded: PrairieLearn keeps what the element left (and does not count the attempt).
     assert g["partial_scores"]["F14"] == {"score": 0.0, "weight": 1}
 
