@@ -353,11 +353,14 @@ def _report_rows(reports) -> list[dict]:
 
 
 def _collect(args) -> int:
-    from graphkin.exercises.platforms.collect import class_table, find_results
+    from graphkin.exercises.platforms.collect import class_table, find_results, repeated
 
     if args.output:
         check_destination(args.output, "-o")
     rows = class_table(find_results(args.results))
+    for student, files in repeated(rows).items():
+        _note(f"student {student!r} was graded in {len(files)} files ({', '.join(files)}): the id typed in a "
+              "notebook decides whom it is graded as, so check who handed each one in")
     text = json_text(rows) if args.json else _csv(rows)
     _emit(text, args.output)
     return 0

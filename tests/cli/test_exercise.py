@@ -253,8 +253,16 @@ def test_collect_makes_one_class_table(capsys, tmp_path):
         (folder / "results.json").write_text(json.dumps({"tests": tests, "output": output}), encoding="utf-8")
     (tmp_path / "results" / "junk").mkdir()
     (tmp_path / "results" / "junk" / "results.json").write_text('{"tests": []}', encoding="utf-8")
-    code, out, _ = run(capsys, "exercise", "collect", str(tmp_path / "results"))
+    code, out, err = run(capsys, "exercise", "collect", str(tmp_path / "results"))
     rows = list(csv.DictReader(io.StringIO(out)))
     assert code == 0 and [r["student"] for r in rows] == ["s1", "s2", ""]
     assert (rows[0]["F23"], rows[0]["T12"], rows[0]["max"]) == ("2.0", "1.0", "3")
     assert "no graphkin summary" in rows[2]["error"]
+    assert "graded in" not in err
+    # A second notebook graded as s1 (its id typed by someone else, say): the table keeps both, with a note.
+    (tmp_path / "results" / "nb9").mkdir()
+    (tmp_path / "results" / "nb9" / "results.json").write_text(json.dumps(
+        {"tests": [], "output": "Graded as student 's1': 0 / 3 points."}), encoding="utf-8")
+    code, out, err = run(capsys, "exercise", "collect", str(tmp_path / "results"))
+    assert code == 0 and [r["student"] for r in csv.DictReader(io.StringIO(out))] == ["s1", "s1", "s2", ""]
+    assert "student 's1' was graded in 2 files" in err and "nb9" in err

@@ -76,4 +76,14 @@ def class_table(files) -> list[dict]:
     return sorted(rows, key=lambda r: (r["student"] == "", r["student"], r["file"]))
 
 
-__all__ = ["class_table", "find_results", "row_of", "student_of"]
+def repeated(rows: list[dict]) -> dict[str, list[str]]:
+    """Students graded in more than one results file (student → the files): under ``otter run`` the id typed
+    in a notebook decides whom it is graded as, so two files for one student need a look."""
+    files: dict[str, list[str]] = {}
+    for r in rows:
+        if r["student"]:
+            files.setdefault(r["student"], []).append(r["file"])
+    return {s: f for s, f in files.items() if len(f) > 1}
+
+
+__all__ = ["class_table", "find_results", "repeated", "row_of", "student_of"]

@@ -137,6 +137,9 @@ def served(export) -> dict:
         "sign": {**key, "T12": flip_sense(key["T12"])},
         "blank": {**key, "F14": ""},
         "unreadable": {**key, "F14": "1,352 N"},
+        # HTML and script in answers: PrairieLearn renders format errors and feedback as HTML.
+        "html": {**key, "F14": '<img src=x onerror="alert(1)">', "T12": "<script>alert('x')</script> N*m"},
+        "html_graded": {**key, "F14": "1 N <b>", "T12": "12 N*m <i>"},
     }}
     return run_driver(export, scenarios)
 
@@ -290,3 +293,16 @@ def test_drawn_exercise_serves_its_figure(tmp_path):
                               "graded": {"key": key_answers("pl-1", DRAWN)}})
     assert served["figure"]["head"] == "89504e470d0a1a0a" and served["figure"]["bytes"] > 10_000
     assert served["graded"]["key"]["score"] == 1.0
+
+
+def test_html_in_an_answer_is_escaped_in_format_errors_and_feedback(served):
+    """A tag a student types comes back as text: escaped once, never as markup."""
+    errors = served["graded"]["html"]["format_errors"]
+    assert set(errors) == {"F14", "T12"}
+    assert "&lt;img src=x onerror=&quot;alert(1)&quot;&gt;" in errors["F14"]
+    assert "&lt;script&gt;alert(&#x27;x&#x27;)&lt;/script&gt;" in errors["T12"]
+    graded = served["graded"]["html_graded"]
+    shown = json.dumps(graded, ensure_ascii=False)
+    for raw in ("<img", "<script", "<b>", "<i>"):
+        assert raw not in json.dumps(errors, ensure_ascii=False) and raw not in shown
+    assert "&lt;b&gt;" in graded["format_errors"].get("F14", "") + graded["feedback"].get("F14", "")
