@@ -338,7 +338,7 @@ for s in students:
     if s == copier:
         assert results[s]["score"] == 0 and "each student answers their own variant" in results[s]["output"]
         continue
-    report = gk.exercises.grade(NAME, s, answers, secret=SECRET)
+    report = gk.exercises.grade(NAME, s, answers, secret=SECRET, classmates=students)   # as the autograder does
     assert abs(results[s]["score"] - report["score"]) < 1e-12, s
     assert results[s]["extra_data"]["graphkin"] == json.loads(json.dumps(report)), s
     for q in report["questions"]:

@@ -28,6 +28,7 @@ import cmath
 import math
 import sys
 import traceback
+from collections import Counter
 from collections.abc import Mapping
 from dataclasses import dataclass
 
@@ -46,6 +47,10 @@ _TORQUE_KINDS = ("driver_torque", "inertia_torque", "peak_torque", "lowest_torqu
 
 #: Slips found by solving the variant again as the student did.
 RESOLVED_SLIPS = ("rpm_as_rad_s", "no_inertia_torque", "no_inertia_force")
+
+#: How many of a sheet's answers one classmate's data must explain before the grader names them: one answer
+#: near one classmate's is as likely a slip of the student's own.
+CORROBORATE = 2
 
 #: Two candidates are "about as near" when their distances differ by less than this share of a slack.
 TIE = 0.1
@@ -171,6 +176,17 @@ class Classmates:
 
     def __len__(self) -> int:
         return len({s for ids in self._ids.values() for s in ids})
+
+    def only(self, students) -> Classmates:
+        """The same class, with only ``students``' answers."""
+        keep = set(students)
+        out = Classmates({})
+        for qid, ids in self._ids.items():
+            mask = np.array([s in keep for s in ids], dtype=bool)
+            if mask.any():
+                out._ids[qid] = [s for s, m in zip(ids, mask) if m]
+                out._values[qid] = self._values[qid][mask]
+        return out
 
     def nearest(self, exp: Expected, student: str, a) -> tuple[float, str] | None:
         """The classmate whose answer ``a`` fits best, as (distance in their slack, their id); None if none fits."""
@@ -447,7 +463,9 @@ def _grade(variant, q, exp: Expected, answer, reveal: bool, classmates) -> dict:
         msg += MESSAGES["tie"].format(others=" and ".join(SLIP_WORDS.get(t.slip, t.slip) for t in ties))
     if fit.slip == "other_data":
         return _verdict(exp, "wrong", "other_data", 0.0, msg, text, reveal, other=fit.other)
-    return _verdict(exp, "slip", fit.slip, q.points * variant.exercise.partial[fit.slip], msg, text, reveal)
+    # A classmate's data about as near as the slip: named in the feedback, and for the teacher here.
+    other = {"other": t.other for t in ties if t.slip == "other_data"}
+    return _verdict(exp, "slip", fit.slip, q.points * variant.exercise.partial[fit.slip], msg, text, reveal, **other)
 
 
 def echo(answer, limit: int = _ECHO_CHARS) -> str:
@@ -490,7 +508,9 @@ def grade_variant(variant, answers, *, reveal: bool | None = None, classmates: C
     reveal : bool, optional
         Show the expected value of every question (default: the exercise's ``reveal``).
     classmates : Classmates, optional
-        The class's answers: an answer that fits another student's data earns nothing and says so.
+        The class's answers: an answer that fits another student's data earns nothing and says so, when
+        that student's data explain at least :data:`CORROBORATE` of the sheet's answers (or all of them,
+        for a sheet of fewer questions).
 
     Returns
     -------
@@ -503,17 +523,25 @@ def grade_variant(variant, answers, *, reveal: bool | None = None, classmates: C
     reveal = ex.reveal if reveal is None else bool(reveal)
     if not isinstance(answers, Mapping):
         answers = {}
-    results = []
-    for q in ex.questions:
-        # Whatever the sheet holds (a list, a table, null) goes to the reader as it is: it refuses what is not
-        # text or a number with a sentence, rather than the grader guessing at str(value).
-        raw = answers.get(q.id)
-        results.append(grade_question(variant, q, raw, reveal=reveal, classmates=classmates))
+    # Whatever the sheet holds (a list, a table, null) goes to the reader as it is: it refuses what is not text
+    # or a number with a sentence, rather than the grader guessing at str(value).
+    results = [grade_question(variant, q, answers.get(q.id), reveal=reveal, classmates=classmates)
+               for q in ex.questions]
+    if classmates is not None:
+        named = Counter(r["other"] for r in results if r.get("other"))
+        need = min(CORROBORATE, len(ex.questions))
+        if any(n < need for n in named.values()):
+            # One answer near one classmate's is as likely a slip of one's own (each classmate's answer has its
+            # 1 % of slack, and a class covers much of the range): grade again with only the classmates whose
+            # data explain several of this sheet's answers.
+            kept = classmates.only(s for s, n in named.items() if n >= need)
+            results = [grade_question(variant, q, answers.get(q.id), reveal=reveal, classmates=kept)
+                       for q in ex.questions]
     known = {q.id for q in ex.questions}
     ignored = sorted(echo(k, 100) for k in answers if k not in known)[:50]
     return {"exercise": ex.id, "student": variant.student, "score": round(sum(r["score"] for r in results), 10),
             "max": sum(q.points for q in ex.questions), "questions": results, "ignored": ignored}
 
 
-__all__ = ["CLOSE", "Classmates", "MESSAGES", "RESOLVED_SLIPS", "SLIP_WORDS", "TIE", "VERDICTS", "answer_example",
+__all__ = ["CLOSE", "CORROBORATE", "Classmates", "MESSAGES", "RESOLVED_SLIPS", "SLIP_WORDS", "TIE", "VERDICTS", "answer_example",
            "echo", "grade_question", "grade_variant"]

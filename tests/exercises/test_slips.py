@@ -228,3 +228,19 @@ def test_grading_a_whole_sheet_of_anything_never_raises():
     v = exercises.variant("double_slider_forces", "s001")
     report = grade_variant(v, {q.id: bad for q, bad in zip(v.exercise.questions, HOSTILE)})
     assert report["score"] == 0 and len(report["questions"]) == len(v.exercise.questions)
+
+
+def test_one_answer_near_one_classmates_is_not_called_theirs():
+    """With a class, one answer within a classmate's slack is as likely the student's own slip: the sheet is
+    told "another student's data" only when the same classmate's data explain at least two of its answers."""
+    ex = exercises.load("strip_cutter_cut")
+    class_ = [f"s{i:03d}" for i in range(1, 9)]
+    own = {q["id"]: q["answer"]["text"] for q in exercises.key(ex, "s001")["questions"]}
+    theirs = {q["id"]: q["answer"]["text"] for q in exercises.key(ex, "s002")["questions"]}
+    one = exercises.grade(ex, "s001", {**own, "F14": theirs["F14"]}, classmates=class_)
+    f14 = next(q for q in one["questions"] if q["id"] == "F14")
+    assert f14["slip"] != "other_data" and "another student" not in f14["feedback"]
+    assert f14["score"] == exercises.grade(ex, "s001", {**own, "F14": theirs["F14"]})["questions"][1]["score"]
+    two = exercises.grade(ex, "s001", {**own, "F14": theirs["F14"], "T12": theirs["T12"]}, classmates=class_)
+    named = {q["id"]: (q["slip"], q.get("other")) for q in two["questions"]}
+    assert named["F14"] == named["T12"] == ("other_data", "s002") and named["F23"] == (None, None)

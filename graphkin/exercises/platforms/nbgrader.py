@@ -457,10 +457,13 @@ def _readme(bundle) -> str:
     config = "\n".join(f"    {line}" for line in config_lines())
     return f"""# {bundle.exercise.title}: nbgrader
 
-Exported by graphkin for nbgrader (tried with nbgrader 0.9.6). **Grading never runs the student's code**:
-graphkin's preprocessor reads each handed-in notebook as a file (the text assigned to `STUDENT` and to
-each answer), grades those answers in a separate Python process that holds the keys, and leaves nbgrader's
-kernel only the answers as literals and each test cell's feedback line and score.
+Exported by graphkin for nbgrader (tried with nbgrader 0.9.6). **The grade never comes from the student's
+code**: graphkin's preprocessor reads each handed-in notebook as a file (the text assigned to `STUDENT` and
+to each answer), grades those answers in a separate Python process that holds the keys, and leaves
+nbgrader's kernel only the answers as literals; after the kernel, its grade writer sets each test cell's
+output to graphkin's feedback line and score. Files a student hands in beside the notebook still sit in
+the folder the kernel starts in (nbgrader copies them), where Python may import them: autograde in a
+container, or as a user that cannot write the course directory.
 
 ## Files
 

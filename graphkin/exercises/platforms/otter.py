@@ -8,7 +8,7 @@ Otter has one seed per class, not one per student, so nothing here asks it for r
 student's data come from their id, as in ``graphkin exercise make``: the notebook asks for the id
 (``STUDENT``) and prints the student's sheet from the roster's sheets.
 
-**Grading never runs the student's code.** Otter grades by running the notebook and its tests in one
+**Grading never runs the student's notebook.** Otter grades by running the notebook and its tests in one
 kernel, where a notebook can replace any function a test calls. The export registers :class:`Plugin`
 with otter instead, which, before otter runs anything:
 
@@ -463,7 +463,7 @@ def _readme(bundle) -> str:
 # {bundle.exercise.title}: otter-grader
 
 Made by `graphkin exercise export` for the exercise `{name}`. Each student types their id into the notebook
-and gets their own data. **Grading never runs the student's code**: graphkin's otter plugin reads each
+and gets their own data. **Grading never runs the student's notebook**: graphkin's otter plugin reads each
 handed-in notebook as a file (the text assigned to `STUDENT` and to each answer), grades those answers in a
 separate Python process that holds the keys, and writes graphkin's score and feedback into otter's results.
 Otter's kernel runs only those answers, typed back as literals.

@@ -30,6 +30,7 @@ NAME = "strip_cutter_cut"
 SECRET = "gs-course-secret-2025"
 ROSTER = ["s001", "s002", "s003"]
 VISIBILITY = {"hidden", "after_due_date", "after_published", "visible"}
+MARKER = "gs-env-marker-77a1"
 
 
 @pytest.fixture(scope="module")
@@ -78,13 +79,16 @@ def run_autograder(export: Path, tmp_path: Path, files: dict, users: list[dict],
     meta = {"id": 99, "created_at": "2025-03-01T10:00:00.000000-08:00", "assignment": {"id": 5, "title": "HW"},
             "submission_method": "upload", "users": users, "previous_submissions": []}
     (root / "submission_metadata.json").write_text(json.dumps(meta), encoding="utf-8")
-    env = dict(os.environ, GRAPHKIN_AUTOGRADER_ROOT=str(root), GRAPHKIN_PYTHON=python or sys.executable)
+    # The grading machine's environment holds the secret and a marker: neither may come back.
+    env = dict(os.environ, GRAPHKIN_AUTOGRADER_ROOT=str(root), GRAPHKIN_PYTHON=python or sys.executable,
+               GRAPHKIN_SECRET=SECRET, GRAPHKIN_MARKER=MARKER)
     proc = subprocess.run(["bash", str(root / "source" / "run_autograder")], cwd=root, env=env,
                           capture_output=True, text=True, timeout=120)
     assert proc.returncode == 0, proc.stderr
     results = json.loads((root / "results" / "results.json").read_text(encoding="utf-8"))
     check_schema(results)
-    assert SECRET not in json.dumps(results, ensure_ascii=False)
+    shown = json.dumps(results, ensure_ascii=False)
+    assert SECRET not in shown and MARKER not in shown and MARKER not in proc.stdout
     return results, proc.stdout, root
 
 

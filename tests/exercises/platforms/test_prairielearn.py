@@ -306,3 +306,10 @@ def test_html_in_an_answer_is_escaped_in_format_errors_and_feedback(served):
     for raw in ("<img", "<script", "<b>", "<i>"):
         assert raw not in json.dumps(errors, ensure_ascii=False) and raw not in shown
     assert "&lt;b&gt;" in graded["format_errors"].get("F14", "") + graded["feedback"].get("F14", "")
+
+
+def test_nothing_secret_in_what_the_student_gets_back(served):
+    """params, correct answers shown after grading, scores, feedback and format errors: no secret in any."""
+    for label, data in served["graded"].items():
+        assert SECRET not in json.dumps(data, ensure_ascii=False), label
+    assert SECRET not in json.dumps(served["first"], ensure_ascii=False)
