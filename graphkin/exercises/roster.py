@@ -46,6 +46,9 @@ def read_class_csv(path, what: str) -> list[dict]:
     if nul >= 0:
         raise GraphkinError(f"{what} {path}: line {text.count(chr(10), 0, nul) + 1}: a NUL byte; the file is not "
                             "plain text (save it as CSV, UTF-8)")
+    # A field may be as long as the file: one 1 MB answer is that answer's problem (the reader refuses it with
+    # a sentence), not the whole class file's (csv refuses fields over 128 kB by default).
+    csv.field_size_limit(max(csv.field_size_limit(), min(len(text) + 1, 2**31 - 1)))
     # strict: a broken quote is an error at its line, not a field that runs to the end of the file.
     reader = csv.DictReader(io.StringIO(text), strict=True)
     rows = []

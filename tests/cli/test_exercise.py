@@ -266,3 +266,16 @@ def test_collect_makes_one_class_table(capsys, tmp_path):
     code, out, err = run(capsys, "exercise", "collect", str(tmp_path / "results"))
     assert code == 0 and [r["student"] for r in csv.DictReader(io.StringIO(out))] == ["s1", "s1", "s2", ""]
     assert "student 's1' was graded in 2 files" in err and "nb9" in err
+
+
+def test_one_long_answer_in_a_class_csv_voids_nothing_else(capsys, tmp_path):
+    key = {q["id"]: q["answer"]["text"] for q in exercises.key("single_link", "s1")["questions"]}
+    with open(tmp_path / "a.csv", "w", newline="", encoding="utf-8") as f:
+        w = csv.writer(f)
+        w.writerows([["student", "F12", "T12"], ["s1", "y" * 1_000_000, key["T12"]], ["s2", "1 N", "1 N*m"]])
+    code, out, err = run(capsys, "exercise", "grade", "single_link", "--answers", str(tmp_path / "a.csv"), "--json")
+    assert code == 0, err
+    s1, s2 = json.loads(out)
+    verdicts = {q["id"]: q["verdict"] for q in s1["questions"]}
+    assert verdicts == {"F12": "unreadable", "T12": "correct"} and s2["student"] == "s2"
+    assert "too long (1000000 characters" in s1["questions"][0]["feedback"]
