@@ -26,6 +26,7 @@ from __future__ import annotations
 import argparse
 import sys
 
+from graphkin import __version__
 from graphkin.cli import cycle, exercise, explore, flywheel, handout, listing, solve
 from graphkin.cli._common import Parser, one_line_warnings, single_threaded_blas
 from graphkin.errors import GraphkinError
@@ -38,6 +39,7 @@ COMMANDS = {"list": listing, "solve": solve, "cycle": cycle, "exercise": exercis
 def parser() -> argparse.ArgumentParser:
     """The ``graphkin`` command's parser, with every command's subparser."""
     p = Parser(prog="graphkin", description="Kinetostatics of planar machinery.")
+    p.add_argument("--version", action="version", version=f"graphkin {__version__}")
     sub = p.add_subparsers(dest="command", required=True)
     for module in COMMANDS.values():
         module.add_parser(sub)

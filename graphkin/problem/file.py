@@ -49,8 +49,8 @@ _DRIVER = {
     "crank": {"type", "link", "theta", "omega", "alpha"},
     "slider": {"type", "link", "s", "v", "a"},
 }
-_LOAD = {"force": {"type", "link", "point", "force", "direction", "table", "csv", "sense", "active", "name"},
-         "torque": {"type", "link", "torque", "table", "csv", "sense", "active", "name"}}
+_LOAD = {"force": {"type", "link", "point", "force", "direction", "table", "csv", "decimal", "sense", "active", "name"},
+         "torque": {"type", "link", "torque", "table", "csv", "decimal", "sense", "active", "name"}}
 _GIVEN = {"omega", "alpha", "a_G", "v_G", "theta", "points"}
 _SHAPES = {
     "rod": {"type", "from", "to"},
@@ -455,6 +455,7 @@ def _load(rd, t, where, driver_kind):
 def _load_table(rd, t, where, kind, driver_kind):
     """A load's ``table`` (CSV text inline) or ``csv`` (a file beside the problem file), as a :class:`Table`."""
     given = [k for k in ("table", "csv") if k in t]
+    decimal = rd.decimal(t, where)
     if not given:
         return None
     if len(given) == 2:
@@ -474,7 +475,7 @@ def _load_table(rd, t, where, kind, driver_kind):
             raise rd.fail(field, "a CSV table is read from the problem file's folder: load the problem from its file "
                           "(load_problem), or give the table inline with table = \"\"\"…\"\"\"")
         text, shown = read_csv_beside(t["csv"], rd.base, file=rd.file, field=field)
-    cols = parse_table(text, columns, file=rd.file, field=field, shown=shown)
+    cols = parse_table(text, columns, file=rd.file, field=field, shown=shown, decimal=decimal)
     try:
         return Table(cols[x], cols[kind], periodic=driver_kind == "crank", source=shown or "")
     except ModelError as exc:

@@ -53,7 +53,7 @@ MEASURE = """async (root) => {
   const box = (sel) => { const e = root.querySelector(sel); return e && e.getBoundingClientRect().toJSON(); };
   return {ratio: window.devicePixelRatio, natural: img.naturalWidth, shown: img.getBoundingClientRect().width,
           png_dpi: dpi, root: root.getBoundingClientRect().width,
-          said: root.querySelector('.graphkin-screen input').value,
+          said: (root.querySelector('.graphkin-screen [data-said], .graphkin-screen[data-said]') || {dataset: {}}).dataset.said,
           track: box('.graphkin-position .noUi-target'), number: box('.graphkin-position-box input')};
 }"""
 
@@ -149,7 +149,8 @@ def check_explorer(page, root, name: str) -> dict:
             "r => { const i = r.querySelector('img.graphkin-image'); return JSON.stringify({natural: i.naturalWidth,"
             " shown: i.getBoundingClientRect().width, ratio: devicePixelRatio, root: r.getBoundingClientRect().width,"
             " host: r.parentElement.getBoundingClientRect().width, css: i.style.width,"
-            " said: r.querySelector('.graphkin-screen input').value}) }"))
+            " said: (r.querySelector('.graphkin-screen [data-said], .graphkin-screen[data-said]') || {dataset: {}})"
+            ".dataset.said}) }"))
     root.evaluate(WATCH)
     m = root.evaluate(MEASURE)
     said = json.loads(m["said"])  # what the probe in the page told the kernel
@@ -245,7 +246,7 @@ def check_explorer(page, root, name: str) -> dict:
 def _explorer_names(nb_path) -> list[str]:
     cells = json.loads(nb_path.read_text(encoding="utf-8"))["cells"]
     code = "\n".join("".join(c["source"]) for c in cells if c["cell_type"] == "code")
-    return re.findall(r"^(\w+) = explore\(", code, re.M)
+    return re.findall(r"^(\w+) = (?:gk\.)?explore\(", code, re.M)
 
 
 def _explorers_in(nb_path) -> int:

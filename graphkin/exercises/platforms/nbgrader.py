@@ -41,6 +41,7 @@ from graphkin.exercises.keys import keys_text
 from graphkin.exercises.notebooks import STUDENT_VARIABLE, answer_variables, notebook_answers
 from graphkin.exercises.platforms import requirements, runtime
 from graphkin.exercises.platforms.isolated import grade_submissions, submission
+from graphkin.optional import require
 
 KEYS_FOLDER = "graphkin-keys"
 """The folder of the course directory (beside ``source/``) holding each assignment's keys, ``<assignment>.json``."""
@@ -234,6 +235,7 @@ def build(bundle) -> dict:
         With a course secret but no roster: the student's notebook would
         need the secret to draw the student's data.
     """
+    require("nbformat", "an export to nbgrader")
     if bundle.secret and not bundle.sheets:
         raise GraphkinError("nbgrader with a course secret needs a roster (--roster CSV): the student's notebook "
                             "prints the student's data from the roster's sheets, and grading uses the roster's "

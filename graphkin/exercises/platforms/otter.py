@@ -41,6 +41,7 @@ from graphkin.exercises.keys import keys_text
 from graphkin.exercises.notebooks import STUDENT_VARIABLE, answer_variables, notebook_answers
 from graphkin.exercises.platforms import requirements, runtime, vendor_files
 from graphkin.exercises.platforms.isolated import grade_submissions, submission
+from graphkin.optional import require
 
 VENDOR = "vendor"
 """The folder of the export (and of the student's and the autograder's folders) holding graphkin itself."""
@@ -230,6 +231,7 @@ def build(bundle) -> dict:
         With a course secret but no roster: the student notebook would have to draw each student's
         data, and the autograder grade any id; both need the secret.
     """
+    require("nbformat", "an export to otter")
     if bundle.secret and bundle.students is None:
         raise GraphkinError(
             "otter: a course secret needs --roster: the student notebook prints each student's data from the "
