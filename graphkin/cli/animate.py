@@ -52,8 +52,6 @@ def run(args) -> int:
     with bar:
         film = draw.animate(problem, frames=args.frames, fps=args.fps, polygons=args.polygons, dpi=args.dpi,
                             progress=bar.update)
-        # The count reached, shown before the bar goes: tqdm skips a tick that comes within its refresh interval.
-        bar.refresh()
     path = write(film, args.output, "-o")
     if film.gaps:
         # Written all the same: the frames that say where the linkage cannot close are worth showing.
