@@ -152,3 +152,20 @@ def test_a_graphical_tolerance_is_what_a_ruler_reads_at_the_printed_scale():
     mark = {g["id"]: g for g in inside["questions"]}[q["id"]]
     assert mark["verdict"] == "correct" and mark["score"] == mark["max"], mark
     assert {g["id"]: g for g in outside["questions"]}[q["id"]]["verdict"] != "correct"
+
+
+def test_an_exercise_sheet_shows_the_student_s_own_mechanism_first():
+    """An exercise sheet described the mechanism in words and tables only: it now draws the student's mechanism
+    from their data (their crank angle), at a stated scale, before the questions, with nothing found on it."""
+    v = exercises.variant(exercises.load("strip_cutter_cut"), "alice", "course-secret")
+    theta = next(g for g in v.data if g.symbol == "θ12").shown
+    doc = handout.build("strip_cutter_cut", student="alice", secret="course-secret")
+    kinds = [(b["kind"], b.get("text")) for b in doc["blocks"]]
+    first = next(k for k, b in enumerate(doc["blocks"]) if b["kind"] == "figure")
+    assert first < kinds.index(("heading", "Questions"))
+    figure = doc["blocks"][first]
+    assert [p.key for p in figure["pictures"]] == ["mechanism-0"]
+    assert f"Your mechanism at {theta}, drawn from your data. Scale 1:" in figure["caption"]
+    # Nothing found is drawn on the sheet: no free body with its forces, no polygon.
+    keys = [p.key for b in doc["blocks"] if b["kind"] == "figure" for p in b["pictures"]]
+    assert not any(key.startswith(("free-bodies", "polygons", "step")) for key in keys), keys
