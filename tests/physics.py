@@ -51,10 +51,19 @@ def _lohi(joint):
 
 
 def pitch_point(kin, mesh: GearMesh, link: int):
-    """Pitch point of a mesh: on the line of centres, r_link from link's centre."""
+    """Pitch point of a mesh: on the line of centres where the pitch circles touch.
+
+    External: between the centres, r_link from link's centre. Internal: on the far side of the pinion's centre
+    from the annulus's, the annulus's pitch radius from its centre.
+    """
     k = mesh.links.index(link)
     Ck = kin.position(link, mesh.centers[k])
     Cj = kin.position(mesh.links[1 - k], mesh.centers[1 - k])
+    if mesh.internal:
+        ring = int(np.argmax(mesh.radii))
+        C_ring, C_pinion = (Ck, Cj) if ring == k else (Cj, Ck)
+        u = (C_pinion - C_ring) / np.linalg.norm(C_pinion - C_ring, axis=-1)[:, None]
+        return C_ring + max(mesh.radii) * u
     e = (Cj - Ck) / np.linalg.norm(Cj - Ck, axis=-1)[:, None]
     return Ck + mesh.radii[k] * e
 

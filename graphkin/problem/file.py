@@ -43,7 +43,7 @@ _LINK = {"number", "name", "points", "mass", "G", "I_G", "k", "shape"}
 _JOINT = {
     "revolute": {"type", "links", "point"},
     "prismatic": {"type", "guide", "slider", "point", "through", "direction", "slider_direction", "mu"},
-    "gear": {"type", "links", "centers", "radii", "pressure_angle"},
+    "gear": {"type", "links", "centers", "radii", "pressure_angle", "internal"},
 }
 _DRIVER = {
     "crank": {"type", "link", "theta", "omega", "alpha"},
@@ -373,9 +373,13 @@ def _joint(rd, t, where):
         centers = rd.need(t, "centers", where)
         if not isinstance(centers, list) or len(centers) != 2:
             raise rd.fail(f"{where}.centers", "must name the two gear centres, e.g. [\"O2\", \"O3\"]")
+        internal = t.get("internal", False)
+        if not isinstance(internal, bool):
+            raise rd.fail(f"{where}.internal", f"must be true (an annulus with teeth inside, and a pinion) or false, got "
+                          f"{internal!r}")
         return GearMesh(_pair(rd, rd.need(t, "links", where), f"{where}.links"), tuple(centers),
                         tuple(rd.si(r, "length", f"{where}.radii[{i}]", "length") for i, r in enumerate(radii)),
-                        rd.si(t.get("pressure_angle", "20 deg"), "angle", f"{where}.pressure_angle"))
+                        rd.si(t.get("pressure_angle", "20 deg"), "angle", f"{where}.pressure_angle"), internal)
     except ProblemFileError:
         raise
     except ModelError as exc:
