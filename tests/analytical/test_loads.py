@@ -34,6 +34,7 @@ from tests.physics import (
     _solve,
     balance,
     close,
+    frictionless,
     graphical_equals_analytical,
     load_value,
     power_terms,
@@ -300,8 +301,6 @@ def test_every_link_balances_with_varying_loads(family, data):
 def test_power_balances_with_varying_loads(family, data):
     """Input + the varying loads' power (a table's value times the velocity; a resistance's always ≤ 0) = dT/dt."""
     case = data.draw(varying(family))
-    from tests.properties.test_equilibrium import frictionless
-
     mech = frictionless(case.mechanism)
     kin, r = _solve(case, mech)
     P, dT, scale = power_terms(kin, r)

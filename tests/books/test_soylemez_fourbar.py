@@ -22,10 +22,7 @@ import pytest
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
-try:  # `python -m pytest` from the project root
-    from tests.books.soylemez_fourbar_solver import RESULT_KEYS, soylemez_fourbar
-except ImportError:  # plain `pytest` (rootdir-relative import of tests/)
-    from reference.soylemez_fourbar import RESULT_KEYS, soylemez_fourbar
+from tests.books.soylemez_fourbar_solver import RESULT_KEYS, soylemez_fourbar
 
 RTOL = 1e-9  # equilibrium / power balance / closed-form identities
 # Finite differences: five-point central stencils in time, with the step

@@ -245,7 +245,7 @@ def check_explorer(page, root, name: str) -> dict:
 def _explorer_names(nb_path) -> list[str]:
     cells = json.loads(nb_path.read_text(encoding="utf-8"))["cells"]
     code = "\n".join("".join(c["source"]) for c in cells if c["cell_type"] == "code")
-    return re.findall(r"^(\w+) = explore\(", code, re.M)
+    return re.findall(r"^(\w+) = (?:gk\.)?explore\(", code, re.M)
 
 
 def _explorers_in(nb_path) -> int:

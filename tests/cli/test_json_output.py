@@ -1,0 +1,57 @@
+"""Every command's ``--json`` is JSON a strict parser takes: no NaN or Infinity (a number that is not finite is null).
+
+Python's own ``json.loads`` accepts ``NaN`` and ``Infinity``, which JSON does not have; the parser here
+refuses them, as a browser's ``JSON.parse`` or a grading platform would.
+"""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+
+from graphkin.cli import main
+
+
+def _strict(text: str):
+    def refuse(name):
+        raise ValueError(f"{name} is not JSON")
+
+    return json.loads(text, parse_constant=refuse)
+
+
+def _json_of(capsys, *argv):
+    code = main(list(argv))
+    out, err = capsys.readouterr()
+    assert code in (0, 2), err
+    return _strict(out)
+
+
+@pytest.mark.parametrize("argv", [
+    ["solve", "double_slider", "--json"],
+    ["solve", "strip_cutter", "--at", "0 deg,140 deg", "--json"],  # the cutting force off, then on
+    ["solve", "engine_static_khurmi", "--json"],
+    ["cycle", "strip_cutter", "--n", "36", "--cs", "0.05", "--json"],
+    ["cycle", "double_slider", "--json"],  # a slider: no flywheel, no transmission angle (null)
+    ["flywheel", "three_cylinder", "--json"],
+    ["exercise", "make", "inertia_resultant", "--student", "s1", "--json"],
+    ["exercise", "key", "torque_curve", "--student", "s1", "--json"],
+])
+def test_every_command_writes_strict_json(capsys, argv):
+    data = _json_of(capsys, *argv)
+    assert data
+
+
+def test_a_value_that_is_not_finite_is_null_not_nan(capsys):
+    """The joint-force index is undefined (nan) where no load acts: null in the JSON."""
+    data = _json_of(capsys, "cycle", "strip_cutter", "--n", "36", "--json")
+    values = data["joint_force_index"]["values"]
+    assert None in values and all(v is None or isinstance(v, float) for v in values)
+
+
+def test_a_grade_report_is_strict_json(capsys, tmp_path):
+    answers = tmp_path / "answers.json"
+    answers.write_text(json.dumps({"F23": "nan N", "T12": "inf N*m"}), encoding="utf-8")
+    data = _json_of(capsys, "exercise", "grade", "double_slider_forces", "--student", "s1", "--answers",
+                    str(answers), "--json")
+    assert {q["id"] for q in data["questions"]} >= {"F23"}
