@@ -15,6 +15,8 @@ DEFAULT = "double_slider"
 FAMILIES = {
     "double_slider": "double slider (PRRP), driven by a slider",
     "engine_gas_force": "slider-crank engine with a gas force",
+    "engine_double_acting_khurmi": "double-acting steam engine: pressures on both faces and a piston rod, clockwise, "
+                                   "with a flywheel's forward step",
     "engine_static_khurmi": "slider-crank, static: a gas force (with friction and a given inertia) on the piston",
     "gearset": "spur gear pair",
     "shaper_six_bar": "six-bar quick-return: crank, block on a slotted lever, ram (R-RTR-RRT), with gravity",

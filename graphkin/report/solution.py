@@ -185,6 +185,8 @@ def solution(problem, result: ForceAnalysis, graphical: list | None = None) -> d
     points = {link: link_points(kin, link) for link in mech.moving}
     v_G = {link: np.asarray(kin.v_G(link), dtype=float) for link in mech.moving}
     applied = _applied(kin)
+    forward = getattr(problem, "forward", None)
+    step = forward.step(result.effort, kin.q_dot) if forward is not None else None
     for i in range(result.n):
         entry = {
             "index": i,
@@ -228,6 +230,8 @@ def solution(problem, result: ForceAnalysis, graphical: list | None = None) -> d
                 driver["vector"] = _vec(result.driver_force()[i])
             entry.update(links=links, forces=forces, prismatic=prismatic, driver=driver,
                          loads=[_load_entry(ld, value[i]) for ld, value in applied])
+            if step is not None:
+                entry["forward"] = {"I": forward.I, **{key: float(v[i]) for key, v in step.items()}}
         if graphical is not None:
             entry["graphical"] = _graphical(result, graphical[i], i)
         positions.append(entry)
@@ -403,6 +407,11 @@ def format_solution(problem, result: ForceAnalysis, graphical: list | None = Non
             T = unless_rounding(d["value"], biggest)  # 0 at a dead centre
             sense = "CCW" if T > 0 else "CW" if T < 0 else ""
             out.append(f"  Driver: {d['name']} = {T:.4f} N·m {sense}".rstrip())  # no sense at a dead centre
+            if "forward" in entry:
+                f = entry["forward"]
+                out.append(f"  Forward step: I α = T_driving + T_resisting (CCW positive), I = {f['I']:.6g} kg·m²: "
+                           f"T_driving = −{d['name']} = {num(f['T_driving'], minus='-')} N·m, T_resisting = "
+                           f"{num(f['T_resisting'], minus='-')} N·m, α = {num(f['alpha'], minus='-')} rad/s²")
         else:
             out.append(f"  Driver: {d['name']} = {polar_text(d['vector'])} ({d['value']:.4f} N along the guide)")
         if "graphical" in entry:

@@ -7,6 +7,8 @@ can pass by testing an unchanged file.
 
 from __future__ import annotations
 
+from importlib.resources import files
+
 import pytest
 
 from graphkin.cli import main
@@ -48,7 +50,55 @@ link = 3
 torque = "10 N*m"
 '''
 
-BASES = {"epicyclic": EPICYCLIC}
+ENGINE = (files("graphkin.catalog") / "engine_double_acting_khurmi.toml").read_text(encoding="utf-8")
+"""Pressures on both faces, θ from the inner dead centre, a clockwise crank, a forward step (Khurmi Ex. 15.12)."""
+
+SLIDER_PLACED = """title = "Slider-crank driven by its piston, placed by the crank's angle"
+analysis = "static"
+[frame]
+points = { O = ["0 mm", "0 mm"] }
+[[links]]
+number = 2
+points = { O = ["0 mm", "0 mm"], C = ["51 mm", "0 mm"] }
+[[links]]
+number = 3
+points = { C = ["0 mm", "0 mm"], P = ["200 mm", "0 mm"] }
+[[links]]
+number = 4
+points = { P = ["0 mm", "0 mm"] }
+[[joints]]
+type = "revolute"
+links = [1, 2]
+point = "O"
+[[joints]]
+type = "revolute"
+links = [2, 3]
+point = "C"
+[[joints]]
+type = "revolute"
+links = [3, 4]
+point = "P"
+[[joints]]
+type = "prismatic"
+guide = 1
+slider = 4
+point = "P"
+through = "O"
+direction = "0 deg"
+[driver]
+type = "slider"
+link = 4
+place = { link = 2, theta = "60 deg" }
+[assembly]
+C = -1
+[[loads]]
+type = "power"
+link = 2
+power = "1 kW"
+speed = "100 rpm"
+"""
+
+BASES = {"epicyclic": EPICYCLIC, "engine": ENGINE, "slider": SLIDER_PLACED}
 
 P = pytest.param
 CASES = [
@@ -58,6 +108,52 @@ CASES = [
     P("epicyclic", "radii = [\"150 mm\", \"60 mm\"]", "radii = [\"60 mm\", \"60 mm\"]",
       ["joints[2].radii", "annulus larger"], id="internal-equal-radii"),
     P("epicyclic", "centers = [\"O\", \"C\"]", "centers = [\"O\", \"Q\"]", ["joints[2]", "Q"], id="gear-centre-unknown"),
+    # -- a pressure on a piston --------------------------------------------------------------------------------
+    P("engine", 'bore = "250 mm"\n', '', ["loads[0].bore", "missing"], id="pressure-no-bore"),
+    P("engine", 'rod = "50 mm"', 'rod = "300 mm"', ["loads[0].rod", "thinner than the bore"], id="pressure-rod-too-thick"),
+    P("engine", 'pressure = "550 kN/m^2"', 'pressure = "550 kN"', ["loads[0].pressure", "pressure"],
+      id="pressure-wrong-dimension"),
+    P("engine", 'pressure = "550 kN/m^2"\n', '', ["loads[0].pressure", "give the pressure once"], id="pressure-missing"),
+    P("engine", 'back_pressure = "70 kN/m^2"', 'back_pressure = "70 kN/m^2"\nside = "head"',
+      ["loads[0].side", "cover"], id="pressure-side-unknown"),
+    P("engine", 'direction = "180 deg"\n', '', ["loads[0].direction", "missing"], id="pressure-no-direction"),
+    P("engine", 'pressure = "550 kN/m^2"', 'pressure = "550 kN/m^2"\ntable = """\nangle [deg], pressure [MPa]\n0, 1\n180, 0\n"""',
+      ["loads[0].pressure", "not pressure and table"], id="pressure-and-table"),
+    P("engine", 'name = "F_L (steam)"', 'name = "F_L (steam)"\nsense = "opposes motion"', ["loads[0].sense", "unknown"],
+      id="pressure-field-of-another-type"),
+    # -- a power at a speed ------------------------------------------------------------------------------------
+    P("slider", 'power = "1 kW"', 'power = "-1 kW"', ["loads[0].power", "≥ 0"], id="power-negative"),
+    P("slider", 'power = "1 kW"', 'power = "1 N*m"', ["loads[0].power", "power"], id="power-wrong-dimension"),
+    P("slider", 'speed = "100 rpm"\n', '', ["loads[0].speed", "missing"], id="power-no-speed"),
+    P("slider", 'speed = "100 rpm"', 'speed = "0 rpm"', ["loads[0].speed", "not be zero"], id="power-zero-speed"),
+    P("slider", 'speed = "100 rpm"', 'speed = "100 rpm"\nrole = "braking"', ["loads[0].role", "resisting"],
+      id="power-role-unknown"),
+    # -- the crank angle from a dead centre, the sense of rotation ---------------------------------------------
+    P("engine", 'from = "inner dead centre"', 'from = "IDC"', ["driver.from", "inner dead centre"], id="from-unknown"),
+    P("engine", 'sense = "clockwise"', 'sense = "cw"', ["driver.sense", "clockwise"], id="sense-unknown"),
+    P("engine", 'omega = "120 rpm"', 'omega = "-120 rpm"', ["driver.omega", "≥ 0"], id="sense-and-negative-omega"),
+    P("epicyclic", 'theta = "30 deg"', 'theta = "30 deg"\nfrom = "inner dead centre"', ["driver.from", "slider-crank"],
+      id="from-without-a-slider-crank"),
+    # -- a slider placed by a link's angle ---------------------------------------------------------------------
+    P("slider", 'place = { link = 2, theta = "60 deg" }', 'place = { link = 2, theta = "60 deg" }\ns = "100 mm"',
+      ["driver.place", "not both"], id="place-and-s"),
+    P("slider", 'place = { link = 2, theta = "60 deg" }', 'place = { link = 7, theta = "60 deg" }',
+      ["driver.place.link", "moving link"], id="place-link-unknown"),
+    P("slider", 'place = { link = 2, theta = "60 deg" }', 'place = { link = 3, theta = "60 deg" }',
+      ["driver.place.theta", "never stands at"], id="place-angle-never-reached"),
+    P("slider", 'place = { link = 2, theta = "60 deg" }', 'place = { link = 2, angle = "60 deg" }',
+      ["driver.place", "angle"], id="place-field-unknown"),
+    # -- the forward step --------------------------------------------------------------------------------------
+    P("engine", 'mass = "60 kg"\nk = "0.6 m"', 'k = "0.6 m"', ["forward.mass", "missing"], id="forward-no-mass"),
+    P("engine", 'mass = "60 kg"\nk = "0.6 m"', 'I = "0 kg*m^2"', ["forward.I", "> 0"], id="forward-zero-inertia"),
+    P("engine", 'mass = "60 kg"\nk = "0.6 m"', 'I = "2 kg*m^2"\nk = "0.6 m"', ["forward.k", "not both"],
+      id="forward-I-and-k"),
+    P("engine", 'power = "20 kW"', 'power = "20 kW"\ntorque = "5 N*m"', ["forward.torque", "not both"],
+      id="forward-power-and-torque"),
+    P("engine", 'power = "20 kW"', 'torque = "-5 N*m"', ["forward.torque", "≥ 0"], id="forward-negative-torque"),
+    P("engine", 'power = "20 kW"', 'power = "20 kg"', ["forward.power", "power"], id="forward-power-wrong-dimension"),
+    P("slider", 'C = -1', 'C = -1\n[forward]\nI = "1 kg*m^2"\ntorque = "1 N*m"', ["forward", "crank"],
+      id="forward-on-a-slider"),
 ]
 
 
