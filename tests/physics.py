@@ -15,7 +15,7 @@ from hypothesis import HealthCheck, settings
 from graphkin.analytical import solve_forces
 from graphkin.graphical import construct_forces
 from graphkin.kinematics import solve_kinematics
-from graphkin.model import FRAME, GearMesh, Mechanism, PointForce, Prismatic, Revolute
+from graphkin.model import FRAME, GearMesh, Mechanism, PointForce, Prismatic, Revolute, SpringForce
 from tests.strategies import length_scale
 from tests.vectors import cross, dot, perp
 
@@ -113,6 +113,11 @@ def load_value(kin, load):
     "working stroke" keeps it only where it resists (F·v < 0).
     """
     on = active(kin, load)
+    if isinstance(load, SpringForce):
+        # Hooke's law along the spring: k (L − L0) towards the other end.
+        d = kin.position(load.anchor_link, load.anchor_point) - kin.position(load.link, load.point)
+        L = np.hypot(d[:, 0], d[:, 1])
+        return on[:, None] * load.rate * (L - load.free_length)[:, None] * d / L[:, None]
     if isinstance(load, PointForce):
         u = np.asarray(load.force, dtype=float)
         if load.table is not None:

@@ -45,7 +45,20 @@ from hypothesis import assume
 from hypothesis import strategies as st
 
 from graphkin.kinematics import Dyad, decompose, solve_kinematics
-from graphkin.model import FRAME, Active, Driver, GearMesh, Link, Mechanism, PointForce, Prismatic, Revolute, Torque
+from graphkin.model import (
+    FRAME,
+    Active,
+    Driver,
+    GearMesh,
+    Link,
+    Mechanism,
+    PointForce,
+    Prismatic,
+    Revolute,
+    SpringForce,
+    Torque,
+    spring,
+)
 
 TWO_PI = 2.0 * math.pi
 
@@ -160,10 +173,21 @@ def _mu(draw, friction, hi=0.35):
 # --------------------------------------------------------------------------
 # loads, gravity, rates
 # --------------------------------------------------------------------------
-def _loads(draw, moving, scale, periodic, q_range):
+def _loads(draw, moving, scale, periodic, q_range, links=()):
     loads = []
     for i in range(draw(st.integers(0, 3))):
         link = draw(st.sampled_from(moving))
+        if links and draw(st.integers(0, 3)) == 0:  # a linear spring from P{link} to a point of another link
+            own = next(lk for lk in links if lk.number == link).points
+            # Not to a pin this link shares (the load point may shrink onto it: a spring of no length has no line).
+            ends = [(lk, p) for lk in links if lk.number != link for p in sorted(lk.points) if p not in own]
+            if not ends:
+                continue
+            other, anchor = draw(st.sampled_from(ends))
+            rate = draw(_floats(0.0, 2000.0)) / scale
+            free = draw(st.one_of(st.just(0.0), _floats(0.05, 2.0))) * scale  # graphkin refuses L0 below 1 µm
+            loads += spring((link, other.number), (f"P{link}", anchor), rate, free, frame=FRAME, name=f"S{i}")
+            continue
         active = None
         if draw(st.integers(0, 3)) == 0:  # sometimes over part of the cycle only
             lo, hi = q_range
@@ -303,7 +327,9 @@ def _relabel(mech: Mechanism, m) -> Mechanism:
             joints.append(dataclasses.replace(j, guide=m[j.guide], slider=m[j.slider]))
         else:
             joints.append(dataclasses.replace(j, links=tuple(m[i] for i in j.links)))
-    loads = [dataclasses.replace(load, link=m[load.link]) for load in mech.loads]
+    loads = [dataclasses.replace(load, link=m[load.link], **({"anchor_link": m[load.anchor_link]}
+                                                            if isinstance(load, SpringForce) else {}))
+             for load in mech.loads]
     driver = Driver(m[mech.driver.link], mech.driver.kind)
     return Mechanism(links, joints, driver, loads, mech.gravity, dict(mech.assembly), mech.title)
 
@@ -315,7 +341,7 @@ def _finish(draw, links, joints, driver, assembly, q_range, periodic, scale, tit
         links,
         joints,
         driver,
-        loads=[*_loads(draw, moving, scale, periodic, q_range), *loads],
+        loads=[*_loads(draw, moving, scale, periodic, q_range, links), *loads],
         gravity=_gravity(draw),
         assembly=assembly,
         title=title,

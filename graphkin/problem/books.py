@@ -12,7 +12,7 @@ import math
 import numpy as np
 
 from graphkin.kinematics import solve_kinematics
-from graphkin.model import PointForce, Prismatic, Revolute, Table, Torque
+from graphkin.model import PointForce, Prismatic, Revolute, Table, Torque, spring
 from graphkin.problem.problem import Forward
 from graphkin.problem.tables import load_table
 
@@ -218,3 +218,21 @@ def power(rd, t, where, link, active, name, motion):
         raise rd.fail(f"{where}.speed", "must not be zero: a power at rest is no torque (T = P/ω)")
     T = (P / omega) * (-1.0 if role == "resisting" else 1.0)
     return Torque(link, T, active, name or f"{P / 1e3:.6g} kW {role}")
+
+
+def spring_loads(rd, t, where, frame):
+    """A linear spring between two points (``type = "spring"``) as the forces on its moving ends."""
+    links = t.get("links")
+    if not isinstance(links, list) or len(links) != 2:
+        raise rd.fail(f"{where}.links", f"must be the two links the spring's ends are fixed to, e.g. [1, 3], got "
+                      f"{links!r}")
+    links = [rd.whole(n, f"{where}.links[{i}]") for i, n in enumerate(links)]
+    if links[0] == links[1]:
+        raise rd.fail(f"{where}.links", f"a spring joins two links; both ends are on link {links[0]}")
+    points = t.get("points")
+    if not isinstance(points, list) or len(points) != 2 or not all(isinstance(p, str) for p in points):
+        raise rd.fail(f"{where}.points", f"must name the point of each link the spring is fixed to, e.g. "
+                      f"[\"Q\", \"B\"], got {points!r}")
+    k = rd.si(rd.need(t, "rate", where), "stiffness", f"{where}.rate")
+    L0 = rd.si(rd.need(t, "free_length", where), "length", f"{where}.free_length", "length0")
+    return spring(links, points, k, L0, frame=frame, name=str(t.get("name", "")))

@@ -42,7 +42,8 @@ _LOAD = {"force": {"type", "link", "point", "force", "direction", "table", "csv"
          "torque": {"type", "link", "torque", "table", "csv", "sense", "active", "name"},
          "pressure": {"type", "link", "point", "bore", "rod", "pressure", "back_pressure", "side", "direction", "table",
                       "csv", "active", "name"},
-         "power": {"type", "link", "power", "speed", "role", "active", "name"}}
+         "power": {"type", "link", "power", "speed", "role", "active", "name"},
+         "spring": {"type", "links", "points", "rate", "free_length", "name"}}
 _GIVEN = {"omega", "alpha", "a_G", "v_G", "theta", "points"}
 _SHAPES = {
     "rod": {"type", "from", "to"},
@@ -183,7 +184,12 @@ def build_problem(data: Mapping[str, Any], *, file: str = "<problem>", base: str
     driver = Driver(rd.whole(rd.need(d, "link", "driver"), "driver.link"), kind)
     q, q_dot, q_ddot = _motion(rd, d, kind, static)
     motion = (driver.link, q_dot) if kind == "crank" else None
-    loads = [_load(rd, t, f"loads[{i}]", kind, motion) for i, t in enumerate(_list(rd, data, "loads"))]
+    loads, origin = [], []  # a spring puts a load on each moving end: origin[k] is the file's index of loads[k]
+    for i, t in enumerate(_list(rd, data, "loads")):
+        found = _load(rd, t, f"loads[{i}]", kind, motion, frame.number)
+        found = found if isinstance(found, list) else [found]
+        loads += found
+        origin += [i] * len(found)
     gravity = rd.si(data["gravity"], "acceleration", "gravity", None) if "gravity" in data else 0.0
     if gravity < 0:
         raise rd.fail("gravity", f"must be ≥ 0 (g acts along −y; write its size), got {data['gravity']!r}")
@@ -197,7 +203,10 @@ def build_problem(data: Mapping[str, Any], *, file: str = "<problem>", base: str
         mech = Mechanism(links, joints, driver, loads, gravity, assembly,
                          title=str(data.get("title", "")), source=str(data.get("source", "")), frame=frame.number)
     except ModelError as exc:
-        raise rd.fail(_field_of(exc.at), str(exc)) from None
+        at = exc.at
+        if at and at[0] == "loads" and len(at) > 1:
+            at = ("loads", origin[at[1]], *at[2:])
+        raise rd.fail(_field_of(at), str(exc)) from None
     for key in assembly:
         points = {j.point for j in joints if not isinstance(j, GearMesh)}
         if key not in points:
@@ -210,7 +219,7 @@ def build_problem(data: Mapping[str, Any], *, file: str = "<problem>", base: str
                       + ' (for a linkage at rest or at negligible speed write analysis = "static")')
     for k, load in enumerate(loads):
         if load.sense != "fixed" and not np.any(q_dot):
-            raise rd.fail(f"loads[{k}].sense", f"{load.sense!r} follows the motion, but the input does not move: give "
+            raise rd.fail(f"loads[{origin[k]}].sense", f"{load.sense!r} follows the motion, but the input does not move: give "
                           f"driver.{speed} (a static analysis uses it only to set such senses)")
     given = _given(rd, data.get("given", {}), mech, len(q), static)
     try:
@@ -426,7 +435,7 @@ def _motion(rd, d, kind, static=False):
     return q, rates[0], rates[1]
 
 
-def _load(rd, t, where, driver_kind, motion=None):
+def _load(rd, t, where, driver_kind, motion=None, frame=1):
     kind = rd.table(t, where, set().union(*_LOAD.values())).get("type")
     kinds = ", ".join(repr(k) for k in _LOAD)
     if kind is None:
@@ -434,6 +443,8 @@ def _load(rd, t, where, driver_kind, motion=None):
     if kind not in _LOAD:
         raise rd.fail(f"{where}.type", f"must be one of {kinds}, got {kind!r}")
     rd.table(t, where, _LOAD[kind])
+    if kind == "spring":
+        return books.spring_loads(rd, t, where, frame)
     link = rd.whole(rd.need(t, "link", where), f"{where}.link")
     active = None
     if "active" in t:

@@ -98,7 +98,21 @@ power = "1 kW"
 speed = "100 rpm"
 """
 
-BASES = {"epicyclic": EPICYCLIC, "engine": ENGINE, "slider": SLIDER_PLACED}
+SPRING = SLIDER_PLACED.replace("""[[loads]]
+type = "power"
+link = 2
+power = "1 kW"
+speed = "100 rpm"
+""", """[[loads]]
+type = "spring"
+links = [1, 2]
+points = ["O", "C"]
+rate = "2 N/mm"
+free_length = "40 mm"
+""")
+"""A spring from the crank pin to the crank's pivot on the frame."""
+
+BASES = {"epicyclic": EPICYCLIC, "engine": ENGINE, "slider": SLIDER_PLACED, "spring": SPRING}
 
 P = pytest.param
 CASES = [
@@ -143,6 +157,21 @@ CASES = [
       ["driver.place.theta", "never stands at"], id="place-angle-never-reached"),
     P("slider", 'place = { link = 2, theta = "60 deg" }', 'place = { link = 2, angle = "60 deg" }',
       ["driver.place", "angle"], id="place-field-unknown"),
+    # -- a spring ----------------------------------------------------------------------------------------------
+    P("spring", 'links = [1, 2]\npoints', 'links = [2]\npoints', ["loads[0].links", "two links"], id="spring-one-link"),
+    P("spring", 'links = [1, 2]\npoints', 'links = [2, 2]\npoints', ["loads[0].links", "both ends"], id="spring-same-link"),
+    P("spring", 'links = [1, 2]\npoints', 'links = [1, 9]\npoints', ["loads[0]", "9"], id="spring-unknown-link"),
+    P("spring", 'points = ["O", "C"]', 'points = ["O", "Z"]', ["loads[0].point", "Z"], id="spring-unknown-point"),
+    P("spring", 'points = ["O", "C"]', 'points = ["Z", "C"]', ["loads[0].points", "Z"], id="spring-unknown-anchor"),
+    P("spring", 'points = ["O", "C"]', 'points = "OC"', ["loads[0].points", "point of each link"],
+      id="spring-points-not-a-list"),
+    P("spring", 'rate = "2 N/mm"', 'rate = "2 N"', ["loads[0].rate", "stiffness"], id="spring-rate-wrong-dimension"),
+    P("spring", 'rate = "2 N/mm"', 'rate = "-2 N/mm"', ["loads[0].rate", "negative"], id="spring-negative-rate"),
+    P("spring", 'free_length = "40 mm"\n', '', ["loads[0].free_length", "missing"], id="spring-no-free-length"),
+    P("spring", 'free_length = "40 mm"', 'free_length = "-40 mm"', ["loads[0].free_length", "negative"],
+      id="spring-negative-free-length"),
+    P("spring", 'free_length = "40 mm"', 'free_length = "40 mm"\nsense = "opposes motion"', ["loads[0].sense", "unknown"],
+      id="spring-sense"),
     # -- the forward step --------------------------------------------------------------------------------------
     P("engine", 'mass = "60 kg"\nk = "0.6 m"', 'k = "0.6 m"', ["forward.mass", "missing"], id="forward-no-mass"),
     P("engine", 'mass = "60 kg"\nk = "0.6 m"', 'I = "0 kg*m^2"', ["forward.I", "> 0"], id="forward-zero-inertia"),
