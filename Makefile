@@ -3,7 +3,7 @@ PYTHON ?= python3
 VENV   := .venv
 BIN    := $(VENV)/bin
 
-.PHONY: demo test check lint e2e bench figures clean
+.PHONY: demo test check lint docs e2e bench figures clean
 
 $(BIN)/python:
 	$(PYTHON) -m venv $(VENV)
@@ -13,8 +13,13 @@ $(VENV)/.installed: pyproject.toml | $(BIN)/python
 	$(BIN)/python -m pip install --quiet -e '.[test]'
 	touch $@
 
-demo: $(VENV)/.installed
-	$(BIN)/graphkin solve double_slider --figure build/double_slider.png
+# The demo needs the core only: what `pip install graphkin` gives.
+$(VENV)/.core: pyproject.toml | $(BIN)/python
+	$(BIN)/python -m pip install --quiet -e .
+	touch $@
+
+demo: $(VENV)/.core
+	$(BIN)/graphkin solve double_slider -o build/double_slider.png
 
 # Every test, the lessons and the docstring examples, on every core (a module's tests stay on one worker, so an
 # expensive module fixture, such as a grading platform's run, is made once).
@@ -23,13 +28,23 @@ PYTEST := $(BIN)/python -m pytest -q -n auto --dist loadfile
 test: $(VENV)/.installed
 	$(PYTEST) --nbmake --nbmake-timeout=300 --doctest-modules graphkin tests lessons
 
-# All but the slow tests (real grading platforms, fuzzers, concurrency), and the linters: a quick check while working.
+# All but the slow tests (real grading platforms, fuzzers, concurrency, figure overlaps), and the linters: a quick check while working.
 check: $(VENV)/.installed lint
 	$(PYTEST) -m "not slow" --doctest-modules graphkin tests
 
 lint: $(VENV)/.installed
 	$(BIN)/ruff check graphkin tests benchmarks figures
 	$(BIN)/lint-imports
+
+# The documentation site: the guide (docs/), the lessons run as it is built, the API from the docstrings.
+# Warnings are errors, so a broken link between pages or a lesson that fails stops the build.
+$(VENV)/.docs: $(VENV)/.installed
+	$(BIN)/python -m pip install --quiet -e '.[test,docs]'
+	touch $@
+
+docs: $(VENV)/.docs
+	$(BIN)/python -m sphinx -W --keep-going -j auto -q -b html -c docs . build/docs
+	@echo "the site is in build/docs (open build/docs/index.html)"
 
 # The lessons (cell by cell in JupyterLab, and in Voilà) and `graphkin explore` in a real browser:
 # Debian's chromium driven by Playwright's Python package. Root installs chromium where it is missing;
@@ -66,6 +81,7 @@ bench: $(VENV)/.installed
 	$(BIN)/python benchmarks/bench_export.py
 	$(BIN)/python benchmarks/bench_handout.py
 	$(BIN)/python benchmarks/bench_cli.py
+	$(BIN)/python benchmarks/bench_animate.py
 
 clean:
 	rm -rf $(VENV) build *.egg-info

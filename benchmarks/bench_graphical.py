@@ -12,21 +12,29 @@ part is matplotlib's rasteriser, at 100 dpi).
 from __future__ import annotations
 
 import gc
+import importlib.util
 import io
 import sys
 import time
 from pathlib import Path
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "figures"))
-
 import matplotlib  # noqa: E402
 
 matplotlib.use("Agg")
 
-from build import AT  # noqa: E402
 from graphkin import catalog, draw  # noqa: E402
 from graphkin.graphical import construct_forces  # noqa: E402
 
+
+def _figure_positions() -> dict:
+    # figures/build.py by its path: a module named "build" on sys.path would shadow (or be shadowed by) PyPA's build.
+    spec = importlib.util.spec_from_file_location("_figures_build", Path(__file__).resolve().parents[1] / "figures" / "build.py")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module.AT
+
+
+AT = _figure_positions()
 AIM_MS = 150.0
 
 

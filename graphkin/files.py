@@ -168,7 +168,8 @@ def read_text(path: str | Path, what: str, *, shown: str | None = None) -> str:
     if data[:2] in (b"\xff\xfe", b"\xfe\xff"):
         raise GraphkinError(f"{what} {name}: is UTF-16 text; save it as UTF-8")
     if b"\x00" in data:
-        raise GraphkinError(f"{what} {name}: is not a text file (it holds NUL bytes)")
+        line = data.count(b"\n", 0, data.index(b"\x00")) + 1
+        raise GraphkinError(f"{what} {name}: line {line}: a NUL byte; this is not a text file (save it as UTF-8 text)")
     try:
         return data.decode("utf-8-sig")
     except UnicodeDecodeError as exc:

@@ -41,6 +41,7 @@ import csv
 import json
 import math
 import os
+import re
 import subprocess
 import sys
 import tempfile
@@ -274,7 +275,10 @@ print(graphkin("exercise", "make", NAME, "--student", "s001", "--secret", SECRET
 #   (`variant.altered("no_inertia_torque")`), and the answer read off it with `value_of`.
 #
 # A wrong answer is 5 to 15 % off; an unreadable one is "see my drawing", "?", or the right answer
-# with a decimal comma. Answers are typed as students type them; s001's F23 and T12, for instance,
+# written with a comma that could be a decimal comma or a thousands separator (`2,643 N`: 2.643 or
+# 2643?), which the grader refuses to guess, with a sentence. (A plain decimal comma, `216,6 N·m`, is
+# read, unless the exercise says `decimal_comma = false`.) Answers are typed as students type them;
+# s001's F23 and T12, for instance,
 # as `2643 N ∠ -126.57°`, `(-1575, -2123) N` or `2.643 kN at -126.6 deg`, and `216.6 N·m CCW`,
 # `216.6 N*m` or `0.2166 kN·m`.
 
@@ -308,7 +312,7 @@ def slipped(variant, q, slip):
 
 SLIPS_MADE = {"F23": ["sign", "no_inertia_torque"], "F14": ["no_inertia_torque"],
               "T12": ["sign", "power_of_ten", "no_inertia_torque"]}
-GARBAGE = ["see my drawing", "?", "comma"]   # "comma": the right answer with a decimal comma
+GARBAGE = ["see my drawing", "?", "comma"]   # "comma": the right answer as "2,643" (2.643 or 2643?)
 
 # %%
 rng = np.random.default_rng(2025)
@@ -332,8 +336,9 @@ for s in students:
             answer = ""
         else:
             answer = str(rng.choice(GARBAGE))
-            if answer == "comma":
-                answer = next(t for t in (typed(q, right, k) for k in range(3)) if "." in t).replace(".", ",")
+            if answer == "comma":   # a thousands comma in the first number of four digits or more, else "?"
+                four = [t for t in (typed(q, right, k) for k in range(3)) if re.search(r"(?<![\d.])\d{4}", t)]
+                answer = re.sub(r"(?<![\d.])(\d)(\d{3})(?!\d)", r"\1,\2", four[0], count=1) if four else "?"
         made[s, q.id] = what
         row[q.id] = answer
     rows.append(row)
@@ -478,8 +483,9 @@ secret = os.environ.get("GRAPHKIN_SECRET", "")   # how your own grading notebook
 #
 # * `docs/exercises.md` is the reference: every field of an exercise file, what
 #   students may type, how a slip is diagnosed, and the commands.
-# * Grading on a platform (otter-grader, nbgrader, PrairieLearn, Gradescope) is planned. Until then
-#   the CSV in and out of section 4 (or `--json`) is the way in.
+# * Grading on a platform (otter-grader, nbgrader, PrairieLearn, Gradescope): lesson 07, and
+#   `docs/platforms/` for each platform, with what a student can and cannot learn or do there. The
+#   CSV in and out of section 4 (or `--json`) works with any other tool.
 # * Try an exercise of your own: copy a catalog file, change the ranges and the questions, and read
 #   it with `gk.exercises.load_exercise("my_exercise.toml")`. (`gk.exercises.load` also takes a path, but
 #   reads each file once per session: it won't see your edits until you restart the kernel.)
@@ -599,6 +605,11 @@ typed_text = " ".join(row[q] for row in rows for q in ids)
 assert all(form in typed_text for form in (" N ∠ ", ") N", " kN at ", " N·m CCW", " N*m", " kN·m"))
 assert {row[q] for row in rows for q in ids if made[row["student"], q] == "unreadable"} >= {"see my drawing", "?"}
 assert any("," in row[q] and "(" not in row[q] for row in rows for q in ids if made[row["student"], q] == "unreadable")
+# A comma that could go either way is refused with a sentence; a plain decimal comma is read.
+comma_report = gk.exercises.grade(NAME, "s001", {"F14": "2,643 N", "T12": "216,6 N·m CCW"}, secret=SECRET)
+comma_verdicts = {q["id"]: (q["verdict"], q["feedback"]) for q in comma_report["questions"]}
+assert comma_verdicts["F14"][0] == "unreadable" and "could be 2.643 or 2643" in comma_verdicts["F14"][1]
+assert comma_verdicts["T12"][0] == "correct"
 # "wrong" is 5 to 15 % off (for the scalar and magnitude answers, read back from the text).
 for row in rows:
     for q in ex.questions:

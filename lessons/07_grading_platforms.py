@@ -30,7 +30,7 @@
 # 4. each submission graded by the real `run_autograder`, in a folder laid out as Gradescope lays
 #    out `/autograder`;
 # 5. the spread of scores and the most frequent slips, from the `results.json` files;
-# 6. the other three platforms, in one paragraph each.
+# 6. the other three platforms, in one paragraph each, and why a notebook cannot grade itself.
 #
 # Everything happens in a temporary folder, deleted when the kernel stops. The simulated class uses
 # a fixed random seed, so the numbers are the same every time; the checks at the end make sure the
@@ -111,7 +111,8 @@ print("\nautograder.zip holds:", ", ".join(top))
 # * `autograder.zip` is what you upload under *Configure Autograder*. Its `setup.sh` installs a Python
 #   with graphkin's requirements when Gradescope builds the image; `run_autograder` grades one
 #   submission; graphkin itself travels in `vendor/`, so the grade comes from the version you
-#   exported, and `config.json` holds the secret and the roster. **It never goes to students.**
+#   exported. `keys.json` holds the roster's **keys**, each student's answers computed here with the
+#   secret; the secret itself is in no file of the export. **The zip never goes to students.**
 # * `student_template/answers.toml` is what students fill in and upload, one line per question:
 
 # %%
@@ -269,19 +270,51 @@ fig
 # next commands, and `docs/platforms/` has each one step by step.
 #
 # * **otter-grader** (`--to otter`): an assignment notebook with the student's id, a cell that
-#   prints their data, one answer cell per question and hidden tests. `otter assign` makes the
-#   student notebook and the autograder; `otter run` grades, and a failed test's message is
-#   graphkin's feedback. Partial credit comes from one test case per credit level.
-# * **nbgrader** (`--to nbgrader`): a source notebook for your course directory;
-#   `nbgrader generate_assignment`, then `nbgrader autograde`. Each question's test cell prints
-#   the feedback and ends in the score (nbgrader's partial credit); a notebook carrying another
-#   student's id than the one nbgrader grades it under scores 0.
+#   prints their data and one answer cell per question. `otter assign` makes the student notebook
+#   and the autograder; `otter run` grades, through graphkin's otter plugin (below), and
+#   `graphkin exercise collect` makes one class table of the `results.json` files.
+# * **nbgrader** (`--to nbgrader`): a source notebook for your course directory and two lines for
+#   `nbgrader_config.py`; `nbgrader generate_assignment`, then `nbgrader autograde`. Each question's
+#   test cell shows graphkin's feedback and ends in the score (nbgrader's partial credit); a notebook
+#   carrying another student's id than the one nbgrader grades it under scores 0.
 # * **PrairieLearn** (`--to prairielearn`): a question folder (`info.json`, `question.html`,
 #   `server.py`) and graphkin under `serverFilesCourse/`. `generate` draws a variant per
 #   PrairieLearn variant; `grade` writes graphkin's feedback per answer box.
 #
-# For the notebook platforms, give `--roster`: the student notebook then carries each student's
-# data (never the answers), and the course secret stays in the hidden tests.
+# With a course secret, the notebook platforms need `--roster`: the student notebook then carries
+# each student's data (never the answers), and grading carries the roster's keys, never the secret.
+#
+# **Why a notebook cannot grade itself.** otter and nbgrader grade by running the student's notebook,
+# and code in a notebook can replace any function a test calls. So graphkin never lets it: otter's
+# plugin and nbgrader's preprocessor read the handed-in notebook **as a file**, take the text
+# assigned to `STUDENT` and to each answer (literals only; nothing is run), grade those answers in a
+# separate Python process that holds the keys, and write the grade themselves. You can do the same
+# on your own machine with `graphkin exercise grade --keys`. Here is a notebook that tries to give
+# itself full marks, graded as the platforms grade it (the otter export writes the keys file):
+
+# %%
+import nbformat  # noqa: E402  (here, because only this cell writes a notebook)
+
+graphkin("exercise", "export", NAME, "--to", "otter", "-o", "otter", "--roster", "roster.csv", "--secret", SECRET)
+forger = students[1]
+forged = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(c) for c in [
+    f"STUDENT = {forger!r}",
+    # Replace graphkin's grader with one that says "correct" to everything...
+    "import graphkin.exercises.grading as g\n"
+    "g.grade_question = lambda *a, **k: {'verdict': 'correct', 'score': 1.0}",
+    # ... and answer anything at all, or compute the answer from the course's files.
+    'F23 = "1 N ∠ 0°"', 'F14 = "1 N"', 'T12 = open("otter/strip_cutter_cut-keys.json").read()',
+]])
+nbformat.write(forged, folder / "forged.ipynb")
+print(graphkin("exercise", "grade", NAME, "--keys", "otter/strip_cutter_cut-keys.json", "--answers", "forged.ipynb"))
+
+# %% [markdown]
+# It scores what its answers earn: nothing. The line that replaced the grader never ran, and the
+# answer written as code was not read (its feedback says to type the answer as text). The tests of
+# `tests/exercises/platforms/` hand in a dozen such notebooks to the real otter and nbgrader, and
+# `docs/platforms/` says, for each platform, what a student can and cannot learn or do.
+#
+# PrairieLearn's export is a question folder:
 
 # %%
 graphkin("exercise", "export", NAME, "--to", "prairielearn", "-o", "pl", "--secret", SECRET)
@@ -293,8 +326,8 @@ print("\n".join(sorted(str(p.relative_to(folder / "pl")) for p in (folder / "pl"
 #
 # The platform's scores are graphkin's: grading the same answers files with `gk.exercises.grade` gives
 # the same score for every student. Every answer we made was named as we made it (a sign slip as
-# `sign`, a blank as `missing`, ...). The copier scored 0. The secret is in the autograder and
-# nowhere a student looks.
+# `sign`, a blank as `missing`, ...). The copier scored 0. The secret is in no file of the export;
+# the autograder holds the keys. The forged notebook scored 0.
 
 # %%
 import tomllib  # noqa: E402  (here, because only the checks read the answers files back)
@@ -305,7 +338,7 @@ for s in students:
     if s == copier:
         assert results[s]["score"] == 0 and "each student answers their own variant" in results[s]["output"]
         continue
-    report = gk.exercises.grade(NAME, s, answers, secret=SECRET)
+    report = gk.exercises.grade(NAME, s, answers, secret=SECRET, classmates=students)   # as the autograder does
     assert abs(results[s]["score"] - report["score"]) < 1e-12, s
     assert results[s]["extra_data"]["graphkin"] == json.loads(json.dumps(report)), s
     for q in report["questions"]:
@@ -313,7 +346,12 @@ for s in students:
             made[s, q["id"]], made[s, q["id"]])
         assert (q["slip"] or q["verdict"]) == want, (s, q["id"], q["verdict"], q["slip"], made[s, q["id"]])
 assert sum(counts.values()) == sum(kind != "correct" for (s, _), kind in made.items() if s != copier)
-assert SECRET in (source / "config.json").read_text(encoding="utf-8")
+assert (source / "keys.json").is_file() and "secret" not in json.loads((source / "config.json").read_text())
+assert not [p for p in source.rglob("*") if p.is_file() and SECRET.encode() in p.read_bytes()]
+forged_grade = next(csv.DictReader(graphkin("exercise", "grade", NAME, "--keys", "otter/strip_cutter_cut-keys.json",
+                                            "--answers", "forged.ipynb").splitlines()))
+assert (forged_grade["student"], float(forged_grade["score"])) == (forger, 0.0)
+assert forged_grade["T12 verdict"] == "unreadable" and "as text" in forged_grade["T12 feedback"]
 for p in (export / "student_template", export / "README.md"):
     files = [p] if p.is_file() else list(p.rglob("*"))
     assert all(SECRET not in f.read_text(encoding="utf-8") for f in files if f.is_file())

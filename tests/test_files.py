@@ -149,7 +149,36 @@ def test_a_batch_cut_short_says_what_it_wrote(tmp_path):
     at = ",".join(f"{a} deg" for a in range(10, 90, 10))
     code, err = _interrupt_when(["solve", "strip_cutter", "--at", at, "--figure", "f.png"], tmp_path, ".f_2.png.")
     assert code == 130
-    assert err.count("\n") == 1 and err.startswith("graphkin: interrupted: ")
-    assert "1 file was written before it stopped, the last f_1.png" in err
+    lines = err.splitlines()  # what was written, as it was written (stderr: messages), then the interruption
+    assert lines[-1].startswith("graphkin: interrupted: ") and lines[:-1] == ["figure written to f_1.png"]
+    assert "1 file was written before it stopped, the last f_1.png" in lines[-1]
     assert sorted(os.listdir(tmp_path)) == ["f_1.png"]
     assert valid_png((tmp_path / "f_1.png").read_bytes())
+
+
+@pytest.mark.parametrize("argv, name", [
+    (["exercise", "key", "gear_pair", "--student", "s1", "--secret", "k", "--json", "-o"], "key.json"),
+    (["solve", "double_slider", "-o"], "out.png"),
+    (["cycle", "double_slider", "-o"], "out.svg"),
+    (["handout", "double_slider", "-o"], "out.md"),
+])
+def test_a_failed_write_names_the_users_path_not_the_temporary_file(tmp_path, monkeypatch, capsys, argv, name):
+    # A disk that fills as the file is moved into place: the error must name the file the user asked for.
+    import errno
+
+    from graphkin import cli
+
+    def disk_full(src, dst):
+        raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC), str(src))
+
+    monkeypatch.setattr(os, "replace", disk_full)
+    target = tmp_path / name
+    code = cli.main([*argv, str(target)])
+    err = capsys.readouterr().err
+    assert code == 2, err
+    # The file asked for, or (a handout) the first of its figures beside it: a path the user chose.
+    named = err.removeprefix("graphkin: error: ").split(": cannot be written")[0].split(" ", 1)[1]
+    assert named == str(target) or Path(named).parent == tmp_path / f"{target.stem}_figures", err
+    assert f": cannot be written ({os.strerror(errno.ENOSPC)})" in err, err
+    assert ".tmp" not in err, err
+    assert [f for f in tmp_path.rglob("*") if f.is_file()] == [], "a file or temporary file was left behind"

@@ -8,6 +8,7 @@
 ``explore``    the explorer as a web page (:mod:`graphkin.cli.explore`)
 ``handout``    worked solutions and worksheets (:mod:`graphkin.cli.handout`)
 ``flywheel``   a flywheel from a turning-moment diagram (:mod:`graphkin.cli.flywheel`)
+``animate``    the mechanism moving with its forces, as GIF, MP4 or HTML (:mod:`graphkin.cli.animate`)
 =============  =====================================================================
 
 Each command module has ``add_parser(subparsers)`` and ``run(args) -> exit
@@ -26,18 +27,20 @@ from __future__ import annotations
 import argparse
 import sys
 
-from graphkin.cli import cycle, exercise, explore, flywheel, handout, listing, solve
+from graphkin import __version__
+from graphkin.cli import animate, cycle, exercise, explore, flywheel, handout, listing, solve
 from graphkin.cli._common import Parser, one_line_warnings, single_threaded_blas
 from graphkin.errors import GraphkinError
 
 COMMANDS = {"list": listing, "solve": solve, "cycle": cycle, "exercise": exercise, "explore": explore,
-            "handout": handout, "flywheel": flywheel}
+            "handout": handout, "flywheel": flywheel, "animate": animate}
 """Each command and the module that carries it out, in the order ``graphkin --help`` lists them."""
 
 
 def parser() -> argparse.ArgumentParser:
     """The ``graphkin`` command's parser, with every command's subparser."""
     p = Parser(prog="graphkin", description="Kinetostatics of planar machinery.")
+    p.add_argument("--version", action="version", version=f"graphkin {__version__}")
     sub = p.add_subparsers(dest="command", required=True)
     for module in COMMANDS.values():
         module.add_parser(sub)

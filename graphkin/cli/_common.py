@@ -9,6 +9,9 @@ from pathlib import Path
 
 from graphkin.errors import GraphkinError
 
+DOCS = "https://graphkin.github.io/graphkin/docs"
+"""The guide on the documentation site (``make docs``): docs/X.md is ``DOCS/X.html``; the help points into it."""
+
 
 class Parser(argparse.ArgumentParser):
     """argparse, but a mistake on the command line is one line on stderr like every other error."""
@@ -45,8 +48,8 @@ def check_outputs(figure=None, steps=None) -> None:
 
     if figure:
         if Path(figure).suffix.lower() not in (".png", ".svg", ".pdf"):
-            raise GraphkinError(f"--figure {figure}: the file must end in .png, .svg or .pdf")
-        check_destination(figure, "--figure")
+            raise GraphkinError(f"-o {figure}: the figure's file must end in .png, .svg or .pdf")
+        check_destination(figure, "-o")
     if steps:
         check_folder(steps, "--steps")
 

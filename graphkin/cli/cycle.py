@@ -5,7 +5,7 @@ from __future__ import annotations
 import sys
 from pathlib import Path
 
-from graphkin.cli._common import Progress, check_outputs, position_text
+from graphkin.cli._common import DOCS, Progress, check_outputs, position_text
 from graphkin.errors import GraphkinError
 
 
@@ -17,8 +17,9 @@ def add_parser(sub) -> None:
                    "default: the problem's own positions); a load that switches on and off adds a sample either side "
                    "of each switching angle")
     c.add_argument("--cs", type=float, metavar="CS", help="coefficient of speed fluctuation: size a flywheel, e.g. 0.05")
-    c.add_argument("--json", action="store_true", help="print every array as JSON in SI units (schema: docs/json.md)")
-    c.add_argument("--figure", metavar="FILE", help="write the cycle figure (.png, .svg or .pdf)")
+    c.add_argument("--json", action="store_true", help=f"print every array as JSON in SI units (schema: {DOCS}/json.html)")
+    c.add_argument("-o", "--output", "--figure", dest="figure", metavar="FILE",
+                   help="write the cycle figure (.png, .svg or .pdf) (--figure is the older name)")
 
 
 def run(args) -> int:
@@ -59,7 +60,7 @@ def run(args) -> int:
         with Progress(f"drawing {path.name}"):
             path.parent.mkdir(parents=True, exist_ok=True)
             draw.save(draw.draw_cycle(cycle, Cs=args.cs), path)
-        print(f"figure written to {path}", file=sys.stderr if args.json else sys.stdout)
+        print(f"figure written to {path}", file=sys.stderr)
     bad = np.flatnonzero(~cycle.valid)
     if len(bad):
         i = bad[0]

@@ -45,10 +45,21 @@ def add_parser(sub) -> None:
                            "draw on (the mechanism and the free bodies to scale, without the forces to find) as "
                            ".png, .svg or .pdf")
         if action == "grade":
-            a.add_argument("--answers", required=True, metavar="FILE",
-                           help="JSON {question id: answer} for --student ('-' reads stdin), "
-                                "or a CSV with a 'student' column and one column per question")
+            a.add_argument("--answers", required=True, metavar="FILE", nargs="+",
+                           help="JSON {question id: answer} for --student ('-' reads stdin); a CSV with a "
+                                "'student' column and one column per question; or handed-in notebooks (.ipynb), "
+                                "read as data, never run")
+            a.add_argument("--keys", metavar="FILE", help="grade with the precomputed keys an export wrote (no secret "
+                           "needed): the grade the platform gave")
+            a.add_argument("--student-from", choices=("notebook", "folder"), default="notebook",
+                           help="for notebooks: the id in the notebook's STUDENT (default), or the folder above the "
+                                "assignment's, as nbgrader lays out submitted/<student>/<assignment>/ (then the "
+                                "notebook's STUDENT must match it)")
             a.add_argument("--reveal", action="store_true", help="show the expected value of every question")
+    c = esub.add_parser("collect", help="one class table from the results.json files of otter run (or Gradescope)")
+    c.add_argument("results", nargs="+", metavar="PATH", help="results.json files, or folders holding them")
+    c.add_argument("--json", action="store_true", help="print plain data as JSON")
+    c.add_argument("-o", "--output", metavar="FILE", help="write to FILE instead of standard output")
     x = esub.add_parser("export", help="everything a grading platform needs: otter-grader, nbgrader, "
                         "PrairieLearn or Gradescope")
     x.add_argument("exercise", help="catalog name (see 'graphkin exercise list') or path to an exercise file")
@@ -64,7 +75,8 @@ def add_parser(sub) -> None:
 def run(args) -> int:
     """Run ``graphkin exercise ACTION``; returns the exit code."""
     code = _run(args)
-    if code == 0 and args.action in ("key", "grade", "export") and not _secret(args):
+    if code == 0 and args.action in ("key", "grade", "export") and not _secret(args) and \
+            not getattr(args, "keys", None):
         # Said once the work is done: a command that fails prints its one error line and nothing else.
         print("graphkin: note: no course secret (--secret or GRAPHKIN_SECRET): students can compute these keys "
               "themselves", file=sys.stderr)
@@ -90,6 +102,8 @@ def _run(args) -> int:
         return 0
     if args.action == "export":
         return _export(args)
+    if args.action == "collect":
+        return _collect(args)
     if args.output:
         check_destination(args.output, "-o")
     figure = getattr(args, "figure", None)
@@ -188,58 +202,165 @@ def _csv(rows: list[dict]) -> str:
 
 
 def _answers_json(path) -> dict:
+    from graphkin.exercises.answer_files import json_answers
+
     text = read_text(path, "answers")
     name = "standard input" if str(path) == "-" else path
     try:
-        data = json.loads(text)
+        data = json_answers(text)
     except json.JSONDecodeError as exc:
         raise GraphkinError(f"answers {name}: not valid JSON ({exc.msg} at line {exc.lineno}, column {exc.colno}); "
                             'write {"F23": "27.06 N ∠ -73.78°", ...}') from None
+    except ValueError as exc:
+        raise GraphkinError(f"answers {name}: cannot be read ({exc})") from None
     if not isinstance(data, dict):
         raise GraphkinError(f'answers {name}: must be a JSON object of question id to answer, e.g. {{"F23": "27.06 N"}}')
     return data
 
 
+def _note(text: str) -> None:
+    print(f"graphkin: note: {text}", file=sys.stderr)
+
+
+def _ids_and_lines(items, limit: int = 10) -> str:
+    shown = ", ".join(items[:limit])
+    return shown + (f" and {len(items) - limit} more" if len(items) > limit else "")
+
+
 def _grade(ex, args, secret) -> int:
     from graphkin import exercises
-    from graphkin.exercises.batch import run_roster
     from graphkin.exercises.grading import grade_variant
-    from graphkin.exercises.roster import read_class_csv, read_roster
+    from graphkin.exercises.keys import Keys
+    from graphkin.exercises.roster import read_roster
     from graphkin.exercises.sheets import format_report
 
     reveal = True if args.reveal else None
+    keys = _keys(ex, args.keys) if args.keys else None
+    files = args.answers
     if args.student:
-        answers = _answers_json(args.answers)
-        report = grade_variant(exercises.variant(ex, args.student, secret), answers, reveal=reveal)
+        if len(files) != 1:
+            raise GraphkinError("--answers: with --student, give one JSON file of that student's answers")
+        answers = _answers_json(files[0])
+        v = keys.variant(args.student) if keys else exercises.variant(ex, args.student, secret)
+        report = grade_variant(v, answers, reveal=reveal, classmates=keys.classmates() if keys else None)
         text = json_text(report) if args.json else format_report(report)
         _emit(text, args.output)
         return 0
-    rows = read_class_csv(args.answers, "answers")
-    if args.roster:
-        wanted = set(read_roster(args.roster))
-        rows = [r for r in rows if r["student"] in wanted]
-    answers = [{k: v for k, v in row.items() if k != "student" and k is not None} for row in rows]
-    with _progress(len(rows), "grading") as bar:
-        reports = run_roster(ex, "grade", [row["student"] for row in rows], secret, answers=answers, reveal=reveal,
-                             progress=bar.update)
-    if args.json:
-        text = json_text(reports)
+    roster = read_roster(args.roster) if args.roster else None
+    if all(str(f).lower().endswith(".ipynb") for f in files):
+        subs = _notebook_submissions(ex, files, args.student_from)
+    elif len(files) == 1:
+        subs = _csv_submissions(files[0], roster)
     else:
-        flat = []
-        for r in reports:
-            if "error" in r:
-                flat.append(r)
-                continue
-            row = {"student": r["student"], "score": r["score"], "max": r["max"]}
-            for q in r["questions"]:
-                row[q["id"]] = q["score"]
-                row[f"{q['id']} verdict"] = q["verdict"] + (f" ({q['slip']})" if q["slip"] else "")
-                row[f"{q['id']} feedback"] = q["feedback"]
-                if "expected" in q:
-                    row[f"{q['id']} expected"] = q["expected"]
-            flat.append(row)
-        text = _csv(flat)
+        raise GraphkinError("--answers: give one CSV of the class's answers, or handed-in notebooks (.ipynb)")
+    class_ids = roster if roster is not None else list(dict.fromkeys(s["student"] for s in subs))
+    if keys is None:
+        # The class's keys, made here with the secret: the same grade as the platform's, which carried them.
+        from graphkin.exercises.batch import run_roster
+        from graphkin.exercises.keys import make_keys
+
+        usable = [r for r in run_roster(ex, "entry", class_ids, secret) if "entry" in r]
+        keys = Keys(make_keys(ex, [r["student"] for r in usable], secret, entries=[r["entry"] for r in usable]))
+    with _progress(len(subs), "grading") as bar:
+        reports = []
+        for sub in subs:
+            reports.append(_graded(keys, sub, reveal))
+            bar.update(1)
+    text = json_text(reports) if args.json else _csv(_report_rows(reports))
     _emit(text, args.output)
     return 0
 
 
+def _keys(ex, path):
+    from graphkin.exercises.keys import Keys
+
+    keys = Keys(path)
+    if keys.exercise.id != ex.id or keys.exercise.text != ex.text:
+        raise GraphkinError(f"--keys {path}: these are the keys of {keys.exercise.id!r} as exported, not of "
+                            f"{ex.file}; give the exercise file the export carried")
+    return keys
+
+
+def _graded(keys, sub: dict, reveal) -> dict:
+    from graphkin.exercises.grading import grade_variant
+    from graphkin.exercises.platforms.isolated import grade_one
+
+    if "claimed" in sub:  # a notebook: refused, with a sentence, if its id is not usable or not the graded one's
+        return grade_one(keys, sub["student"], sub["answers"], sub["claimed"], reveal=reveal)
+    try:
+        variant = keys.variant(sub["student"])
+    except GraphkinError as exc:
+        return {"student": sub["student"], "error": str(exc)}
+    return grade_variant(variant, sub["answers"], reveal=reveal, classmates=keys.classmates())
+
+
+def _csv_submissions(path, roster) -> list[dict]:
+    from graphkin.exercises.roster import read_class_csv
+
+    rows = read_class_csv(path, "answers")
+    if roster is not None:
+        wanted = set(roster)
+        off = [f"{r['student']} (line {r['#line']})" for r in rows if r["student"] not in wanted]
+        if off:
+            _note(f"answers {path}: {len(off)} student{'s are' if len(off) > 1 else ' is'} not on the roster and "
+                  f"{'were' if len(off) > 1 else 'was'} not graded: {_ids_and_lines(off)}")
+        have = {r["student"] for r in rows}
+        absent = [s for s in roster if s not in have]
+        if absent:
+            _note(f"answers {path}: no answers from {len(absent)} roster student{'s' if len(absent) > 1 else ''}: "
+                  f"{_ids_and_lines(absent)}")
+        rows = [r for r in rows if r["student"] in wanted]
+    return [{"student": r["student"],
+             "answers": {k: v for k, v in r.items() if k not in ("student", "#line") and k is not None}}
+            for r in rows]
+
+
+def _notebook_submissions(ex, files, student_from: str) -> list[dict]:
+    """Each handed-in notebook read as data: whom it is graded as, the id it carries, its answers."""
+    from graphkin.exercises.notebooks import answer_variables, notebook_answers, read_notebook
+
+    names = answer_variables([q.id for q in ex.questions])
+    subs = []
+    for f in files:
+        claimed, answers = notebook_answers(read_notebook(f), names)
+        if student_from == "folder":
+            # nbgrader's submitted/<student>/<assignment>/<notebook>.ipynb
+            parts = Path(f).resolve().parts
+            if len(parts) < 3:
+                raise GraphkinError(f"--student-from folder: {f} is not in <student>/<assignment>/")
+            subs.append({"student": parts[-3], "claimed": claimed, "answers": answers, "file": str(f)})
+        else:
+            subs.append({"student": claimed if isinstance(claimed, str) else "", "claimed": claimed,
+                         "answers": answers, "file": str(f)})
+    return subs
+
+
+def _report_rows(reports) -> list[dict]:
+    flat = []
+    for r in reports:
+        if "error" in r:
+            flat.append(r)
+            continue
+        row = {"student": r["student"], "score": r["score"], "max": r["max"]}
+        for q in r["questions"]:
+            row[q["id"]] = q["score"]
+            row[f"{q['id']} verdict"] = q["verdict"] + (f" ({q['slip']})" if q["slip"] else "")
+            row[f"{q['id']} feedback"] = q["feedback"]
+            if "expected" in q:
+                row[f"{q['id']} expected"] = q["expected"]
+        flat.append(row)
+    return flat
+
+
+def _collect(args) -> int:
+    from graphkin.exercises.platforms.collect import class_table, find_results, repeated
+
+    if args.output:
+        check_destination(args.output, "-o")
+    rows = class_table(find_results(args.results))
+    for student, files in repeated(rows).items():
+        _note(f"student {student!r} was graded in {len(files)} files ({', '.join(files)}): the id typed in a "
+              "notebook decides whom it is graded as, so check who handed each one in")
+    text = json_text(rows) if args.json else _csv(rows)
+    _emit(text, args.output)
+    return 0

@@ -77,7 +77,6 @@ def notebook(source: str, title: str) -> dict:
 
 def run(args) -> int:
     """Carry out ``graphkin explore``; returns the exit code (130 after Ctrl-C)."""
-    import importlib.util
     import subprocess
     import tempfile
 
@@ -85,8 +84,10 @@ def run(args) -> int:
 
     problem = catalog.load(args.problem)  # a bad name or file: GraphkinError, before anything starts
     source = args.problem if args.problem in catalog.names() else str(Path(args.problem).resolve())
-    if importlib.util.find_spec("voila") is None:
-        raise GraphkinError("graphkin explore needs Voilà: pip install voila (or pip install 'graphkin[e2e]')")
+    from graphkin.optional import available, missing
+
+    if not available("voila"):
+        raise missing("voila", "graphkin explore")
     if not 0 <= args.port < 65536:
         raise GraphkinError(f"--port must be 0–65535, got {args.port}")
     port = args.port or _free_port()

@@ -12,14 +12,16 @@ prints as one line with exit code 2.
 
 from __future__ import annotations
 
+from graphkin.cli._common import DOCS
+
 
 def add_parser(sub) -> None:
     """Add ``flywheel`` to the ``graphkin`` subcommands."""
     f = sub.add_parser("flywheel", help="size a flywheel from a turning-moment diagram (engine torque against angle), "
                        "no mechanism needed")
-    f.add_argument("file", help="a flywheel file (TOML; see docs/problem-files.md, 'Flywheel files'), or a catalog "
+    f.add_argument("file", help=f"a flywheel file (TOML; see {DOCS}/problem-files.html, 'Flywheel files'), or a catalog "
                    "flywheel's name (graphkin list)")
-    f.add_argument("--json", action="store_true", help="print the result as JSON in SI units (schema: docs/json.md)")
+    f.add_argument("--json", action="store_true", help=f"print the result as JSON in SI units (schema: {DOCS}/json.html)")
 
 
 def run(args) -> int:

@@ -5,7 +5,7 @@ from __future__ import annotations
 import sys
 
 from graphkin.cli import _common
-from graphkin.cli._common import batch_note, check_outputs, position_text, positions
+from graphkin.cli._common import DOCS, batch_note, check_outputs, position_text, positions
 from graphkin.errors import GraphkinError
 
 
@@ -14,9 +14,10 @@ def add_parser(sub) -> None:
     s = sub.add_parser("solve", help="solve a problem: a catalog name or a TOML file")
     s.add_argument("problem", help="catalog name (see 'graphkin list') or path to a problem file")
     s.add_argument("--at", help="input position(s) with units, comma-separated, e.g. '124 deg,140 deg' or '200 mm'")
-    s.add_argument("--json", action="store_true", help="print the result as JSON in SI units (schema: docs/json.md)")
-    s.add_argument("--figure", metavar="FILE", help="write the side-by-side figure (.png, .svg or .pdf); "
-                   "with several positions, one file each, numbered")
+    s.add_argument("--json", action="store_true", help=f"print the result as JSON in SI units (schema: {DOCS}/json.html)")
+    s.add_argument("-o", "--output", "--figure", dest="figure", metavar="FILE",
+                   help="write the side-by-side figure (.png, .svg or .pdf); with several positions, one file each, "
+                   "numbered (--figure is the older name)")
     s.add_argument("--steps", metavar="DIR", help="write the construction step by step, one PNG frame per step")
 
 
@@ -38,7 +39,7 @@ def run(args) -> int:
     else:
         print(report.format_solution(problem, result, graphical))
     if args.figure or args.steps:
-        _figures(problem, result, graphical, args.figure, args.steps, sys.stderr if args.json else sys.stdout)
+        _figures(problem, result, graphical, args.figure, args.steps)
     bad = np.flatnonzero(~result.valid)
     if len(bad):
         # One line, however many positions fail: the first names the position and the reason.
@@ -49,7 +50,7 @@ def run(args) -> int:
     return 2 if len(bad) else 0
 
 
-def _figures(problem, result, graphical, figure, steps, say):
+def _figures(problem, result, graphical, figure, steps):
     """Write the side-by-side figure(s) and the step frames; say which files went where.
 
     A batch that takes more than a second shows a tqdm progress bar on stderr,
@@ -75,7 +76,7 @@ def _figures(problem, result, graphical, figure, steps, say):
                 path = path.with_name(f"{path.stem}{tag}{path.suffix}")
                 path.parent.mkdir(parents=True, exist_ok=True)
                 written.append(draw.save(draw.draw_solution(c, result), path))
-                tqdm.write(f"figure written to {path}", file=say)
+                tqdm.write(f"figure written to {path}", file=sys.stderr)
             if steps:
                 folder = Path(steps)
                 folder.mkdir(parents=True, exist_ok=True)
@@ -85,7 +86,7 @@ def _figures(problem, result, graphical, figure, steps, say):
                     written.append(frames[-1])
                 tqdm.write(f"{len(frames)} construction steps written to {folder}/ "
                            f"({frames[0].name} … {frames[-1].name})" if frames else
-                           f"no construction steps to write for position {i + 1}", file=say)
+                           f"no construction steps to write for position {i + 1}", file=sys.stderr)
     except KeyboardInterrupt:
         raise KeyboardInterrupt(batch_note(written)) from None
     except OSError as exc:

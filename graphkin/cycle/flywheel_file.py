@@ -41,7 +41,7 @@ from graphkin.problem.tables import parse_table, read_csv_beside
 
 _TOP = {"title", "source", "notes", "flywheel", "driving", "resisting"}
 _FLYWHEEL = {"omega_avg", "Cs", "I", "period"}
-_TORQUE = {"table", "csv", "torque", "cylinders", "phase"}
+_TORQUE = {"table", "csv", "decimal", "torque", "cylinders", "phase"}
 _COLUMNS = {"angle": "angle", "torque": "torque"}
 
 
@@ -197,6 +197,7 @@ def build_flywheel(data: Mapping[str, Any], *, file: str = "<flywheel>", base: s
 def _torque(rd: FieldReader, t: dict, role: str, period: float, base):
     """(curve (angles, torques) or None, constant or "mean" or None, words) of one ``[driving]``/``[resisting]`` table."""
     sources = [k for k in ("table", "csv", "torque") if k in t]
+    decimal = rd.decimal(t, role)
     if len(sources) != 1:
         raise rd.fail(f"{role}.{sources[1]}" if sources else role,
                       "give exactly one of table (inline), csv (a file beside this one) and torque (a constant or "
@@ -216,7 +217,7 @@ def _torque(rd: FieldReader, t: dict, role: str, period: float, base):
     else:
         text, shown = read_csv_beside(t["csv"], base, file=rd.file, field=f"{role}.csv")
         where = f"{role}.csv"
-    cols = parse_table(text, _COLUMNS, file=rd.file, field=where, shown=shown)
+    cols = parse_table(text, _COLUMNS, file=rd.file, field=where, shown=shown, decimal=decimal)
     angle, torque = cols["angle"], cols["torque"]
     for k in range(len(torque)):
         rd.ranged(torque[k], f"{torque[k]:g} N·m", "torque", f"{where} (row {k + 1})")

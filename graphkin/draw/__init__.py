@@ -41,9 +41,10 @@ _LATER = {
     **dict.fromkeys(("draw_cycle", "draw_energy", "draw_joint_force_index", "draw_polar_forces", "draw_shaking",
                      "draw_torque_curve"), "cycle"),
     **dict.fromkeys(("draw_step_grid", "draw_steps"), "steps"),
+    **dict.fromkeys(("Animation", "animate"), "animation"),
 }
 """Drawings imported when first asked for: the cycle plots bring graphkin.cycle and matplotlib's tickers
-(~20 ms that ``graphkin solve --figure`` does not need)."""
+(~20 ms that ``graphkin solve --figure`` does not need); the animation its writers."""
 
 
 def __getattr__(name):
@@ -144,8 +145,8 @@ def _tight_box(fig, dpi: float, pad: float):
 
 
 __all__ = [
-    "Drawn", "FORMATS", "comparison_rows", "draw_cycle", "draw_energy", "draw_force_polygon", "draw_free_body",
-    "draw_given", "draw_joint_force_index", "draw_mechanism", "draw_polar_forces", "draw_shaking", "draw_sign_convention",
-    "draw_solution", "draw_step_grid", "draw_steps", "draw_torque_curve", "loads_on", "measuring_renderer", "save",
-    "style",
+    "Animation", "Drawn", "FORMATS", "animate", "comparison_rows", "draw_cycle", "draw_energy", "draw_force_polygon",
+    "draw_free_body", "draw_given", "draw_joint_force_index", "draw_mechanism", "draw_polar_forces", "draw_shaking",
+    "draw_sign_convention", "draw_solution", "draw_step_grid", "draw_steps", "draw_torque_curve", "loads_on",
+    "measuring_renderer", "save", "style",
 ]

@@ -316,7 +316,7 @@ def _pulses(ax, d, flywheel, s):
 # -- joint forces in polar form --------------------------------------------------------------------
 
 def draw_polar_forces(cycle, names=None, *, ax=None, **style) -> Drawn:
-    """Joint forces over the cycle in polar form: magnitude |F| [N] against direction (Söylemez §6.4.1).
+    """Joint forces over the cycle in polar form: magnitude ``|F|`` [N] against direction (Söylemez §6.4.1).
 
     Each curve is the locus of the tip of the force vector drawn from the
     origin, one point per position: its angle is the force's direction from

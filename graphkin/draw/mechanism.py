@@ -377,7 +377,8 @@ def _rails(ax, geom: Geometry, j: Prismatic, s, out, labeler=None):
     return cl
 
 
-def draw_mechanism(construction, *, ax=None, labels=True, faint=False, emphasis=None, place=True, **style) -> Drawn:
+def draw_mechanism(construction, *, ax=None, labels=True, faint=False, emphasis=None, place=True, bar=True,
+                   **style) -> Drawn:
     """Draw the mechanism to scale at the construction's position, in mm.
 
     Links are bars between their points (plates for ternary links), pins
@@ -402,6 +403,8 @@ def draw_mechanism(construction, *, ax=None, labels=True, faint=False, emphasis=
         Place the labels now. False when a drawing on top adds labels of its own and places them all
         (:func:`graphkin.draw.steps.draw_step_geometry` does): each placement lays every label out afresh,
         so placing the mechanism's alone first would be work thrown away.
+    bar : bool
+        Draw the length scale under the drawing. False when the caller draws one that stays put (an animation).
     **style
         Overrides of :class:`graphkin.draw.style.Style` fields.
 
@@ -475,14 +478,12 @@ def draw_mechanism(construction, *, ax=None, labels=True, faint=False, emphasis=
         dot = markers(ax, *X, ms=3.6, color=s.ink, zorder=5.1, alpha=s.faint_alpha if faint else None)
         drawn.add(dot)
         lab.dot(X, 3.6)
-    # A length scale: the drawing is to scale, in mm.
-    arr = np.asarray(extent, float)
-    lo = arr.min(axis=0)
-    value = nice_round(0.2 * geom.size)
-    bar_at = np.array([lo[0], lo[1] - 0.1 * geom.size])
-    drawn += scale_bar(ax, bar_at, value, value, s=s, unit_text="mm", tick=0.012 * geom.size, labeler=lab,
-                       alpha=s.faint_alpha if faint else None)
-    extent += [bar_at, bar_at + [value, 0.0]]
+    if bar:  # a length scale: the drawing is to scale, in mm
+        lo, value = np.asarray(extent, float).min(axis=0), nice_round(0.2 * geom.size)
+        bar_at = np.array([lo[0], lo[1] - 0.1 * geom.size])
+        drawn += scale_bar(ax, bar_at, value, value, s=s, unit_text="mm", tick=0.012 * geom.size, labeler=lab,
+                           alpha=s.faint_alpha if faint else None)
+        extent += [bar_at, bar_at + [value, 0.0]]
     set_limits(ax, extent, margin=0.09, existing=existing)
     if labels:
         view = float(np.max(np.ptp(np.asarray(extent, float), axis=0))) * 1.18

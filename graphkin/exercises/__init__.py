@@ -28,7 +28,7 @@ from pathlib import Path
 
 from graphkin.errors import GraphkinError
 from graphkin.exercises.exercise import SLIPS, Exercise, Question, Vary, load_exercise, parse_exercise
-from graphkin.exercises.grading import grade_variant
+from graphkin.exercises.grading import Classmates, grade_variant
 from graphkin.exercises.variants import MAX_ATTEMPTS, Variant, make_variant
 
 __all__ = ["Exercise", "Question", "Vary", "Variant", "SLIPS", "MAX_ATTEMPTS", "names", "load", "load_exercise",
@@ -84,15 +84,22 @@ def key(exercise: str | Exercise, student: str, secret: str = "") -> dict:
     return variant(exercise, student, secret).key()
 
 
-def grade(exercise: str | Exercise, student: str, answers, secret: str = "", *, reveal: bool | None = None) -> dict:
+def grade(exercise: str | Exercise, student: str, answers, secret: str = "", *, reveal: bool | None = None,
+          classmates=None) -> dict:
     """Grade a student's answers (question id → text as typed) to their variant.
 
     Returns plain data: ``score``, ``max`` and per question the verdict
     (``correct``, ``slip``, ``wrong``, ``unreadable``, ``missing``), the slip
     diagnosed, the points and a sentence of feedback; the expected value only
-    where the exercise (or ``reveal``) allows it.
+    where the exercise (or ``reveal``) allows it. With ``classmates`` (the
+    class's ids), an answer that fits another student's data earns nothing and
+    is named as such (slip ``other_data``; ``other`` names the classmate).
     """
-    return grade_variant(variant(exercise, student, secret), answers, reveal=reveal)
+    ex = load(exercise)
+    if classmates is not None and not isinstance(classmates, Classmates):
+        classmates = Classmates({s: {q.id: v.expected(q).value for q in ex.questions if v.expected(q).undefined is None}
+                                 for s, v in ((s, make_variant(ex, s, secret)) for s in classmates)})
+    return grade_variant(variant(ex, student, secret), answers, reveal=reveal, classmates=classmates)
 
 
 def check(exercise: str | Exercise, student: str, answers, secret: str = "", *, reveal: bool | None = None) -> str:

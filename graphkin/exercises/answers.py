@@ -175,14 +175,18 @@ _NUMBER_RE = re.compile(
 )
 _NOT_FINITE_RE = re.compile(r"[+-]? ?(?:nan|inf(?:inity)?)(?![^\W\d_])", re.IGNORECASE)
 _DECIMAL_COMMA_RE = re.compile(r"\d,\d")
+# A number written with commas: "1,29", "1,352", "12,345,678", "12,352.5".
+_COMMA_NUMBER_RE = re.compile(r"(?<![\w.,])\d+(?:,\d+)+(?:\.\d+)?(?:[eE][+-]?\d+)?(?![\w,])")
+_THOUSANDS_RE = re.compile(r"\d{1,3}(?:,\d{3})+(?:\.\d+)?")
 # Spaces around operators go; a space left between two units multiplies.
 _OPERATOR_SPACES_RE = re.compile(r" ?([*/^()]) ?")
 _EXPONENT_RE = re.compile(r"(?:\^|\*\*)[+-]?\d+(?:\.\d+)?")
 # A number inside the unit text (after its powers are removed): "12 5 N".
 _STRAY_NUMBER_RE = re.compile(r"(?:^|[*/()+-])\.?\d")
 _LETTERS_RE = re.compile(r"[^\W\d_]+")
-# Units joined by "-" or "." ("N-m", "N.m"), as some books print them.
-_JOINED_UNITS_RE = re.compile(r"[^\W\d_]([-.])[^\W\d_]")
+# Units joined by "-" or "." ("N-m", "N.m", "ft-lbf"), as many books print them: a product.
+_JOINED_UNITS_RE = re.compile(r"(?<=[^\W\d_])[-.](?=[^\W\d_])")
+_WORD_RE = re.compile(r"[^\W\d_]+")
 # What may reach pint: unit names with integer powers of one or two digits,
 # "*", "/", brackets and "%", optionally after "1/". Possessive quantifiers
 # keep the match linear on any text.
@@ -387,8 +391,19 @@ def _superscript(m: re.Match) -> str:
 
 
 def _unit_text(rest: str) -> str:
-    """Normalise the unit part: no spaces around operators, a space multiplies."""
-    return _OPERATOR_SPACES_RE.sub(r"\1", rest.strip()).replace(" ", "*")
+    """Normalise the unit part: no spaces around operators; a space, "-" or "." between units multiplies.
+
+    ``N m``, ``N-m``, ``N.m`` and ``N*m`` are one unit; so are ``ft-lbf`` and ``in·lbf``. ``Nm``, ``kNm``
+    and ``Nmm`` (which pint would read as nanometres, or not at all) are newton-metres.
+    """
+    text = _OPERATOR_SPACES_RE.sub(r"\1", rest.strip()).replace(" ", "*")
+    text = _JOINED_UNITS_RE.sub("*", text)
+    return _WORD_RE.sub(_unglue, text)
+
+
+def _unglue(m: re.Match) -> str:
+    glued = checks.GLUED_TORQUE.match(m[0])
+    return f"{glued['prefix'] or ''}N*{glued['length']}" if glued else m[0]
 
 
 def _shown(text: str) -> str:
@@ -403,13 +418,14 @@ def _shown(text: str) -> str:
 
 
 class _Context:
-    """The answer being read and the question, for messages."""
+    """The answer being read, the question, and whether a decimal comma is read; for messages."""
 
-    __slots__ = ("raw", "q")
+    __slots__ = ("raw", "q", "comma")
 
-    def __init__(self, raw: str, q: _Question):
+    def __init__(self, raw: str, q: _Question, comma: bool = True):
         self.raw = raw
         self.q = q
+        self.comma = comma
 
     def example(self, number: str = _EXAMPLE_NUMBER, unit: str | None = None) -> str:
         unit = self.q.unit if unit is None else unit
@@ -467,14 +483,6 @@ def _number(part: str, ctx: _Context, what: str) -> tuple[float, str]:
 
 def _check_unit_text(text: str, ctx: _Context, what: str) -> None:
     """Refuse, with a hint, unit texts pint would misread or should not see."""
-    for token in _LETTERS_RE.findall(text):
-        m = checks.GLUED_TORQUE.match(token)
-        if m:
-            fixed = f"{m['prefix'] or ''}N*{m['length']}"
-            raise ctx.fail(
-                f'"{token}" is not read as newton-metres; write "{fixed}", '
-                f"such as {ctx.example(unit=fixed)}"
-            )
     if len(text) > checks.MAX_UNIT_CHARS:
         raise ctx.fail(f"the unit is too long; {what}")
     if checks.POWER_CHAIN.search(text):
@@ -483,9 +491,6 @@ def _check_unit_text(text: str, ctx: _Context, what: str) -> None:
     if _STRAY_NUMBER_RE.search(_EXPONENT_RE.sub("", bare)):
         raise ctx.fail(ctx.scalar_advice().replace("a number", "one number", 1))
     if not _UNIT_TEXT_RE.fullmatch(text):
-        joined = _JOINED_UNITS_RE.search(text)
-        if joined:
-            raise ctx.fail(f'multiply units with "*", such as "N*m", not "{joined[1]}"')
         raise ctx.fail(f"could not read the unit; {what}")
 
 
@@ -517,7 +522,30 @@ def _quantity(part: str, ctx: _Context, what: str) -> tuple[float, str, _Unit | 
     text = _unit_text(rest)
     if not text:
         return x, "", None
-    return x, text, _parse_unit(text, ctx, what)
+    try:
+        return x, text, _parse_unit(text, ctx, what)
+    except Unreadable:
+        _trailing_words(rest, ctx)
+        raise
+
+
+def _trailing_words(rest: str, ctx: _Context) -> None:
+    """Refuse, naming them, words after a unit that reads ("12 N approx", "251 N*m CCW about A0")."""
+    words = rest.split()
+    for k in range(len(words) - 1, 0, -1):
+        head = _unit_text(" ".join(words[:k]))
+        if not _UNIT_TEXT_RE.fullmatch(head) or checks.POWER_CHAIN.search(head) or \
+                len(head) > checks.MAX_UNIT_CHARS or not isinstance(_unit(head), _Unit):
+            continue
+        tail = words[k:]
+        sense = _SENSE_RE.search(" " + tail[0])
+        if sense is not None and len(tail) > 1:
+            tail = tail[1:]
+        if not tail[0][:1].isalpha():
+            return  # a second number ("1290 N 1.29 kN"): the reader's own sentence says to write one
+        shown = _shown(" ".join(tail))
+        example = ctx.example(unit=f"{ctx.q.unit} CCW".strip()) if sense is not None else ctx.example()
+        raise ctx.fail(f'"{shown}" after the unit is not part of an answer: write only the value, such as {example}')
 
 
 def _to_si(x: float, u: _Unit | None, ctx: _Context) -> float | None:
@@ -587,13 +615,50 @@ def _polar_xy(r: float, a: float) -> tuple[float, float]:
     return (0.0 if abs(x) <= small else x, 0.0 if abs(y) <= small else y)
 
 
-def _read_vector(body: str, outer: str, ctx: _Context) -> Reading:
-    what = f"write two components in brackets, such as {ctx.vector_example()}"
-    parts = re.split(r" ?[,;] ?", body.strip())
+def _commas(text: str, ctx: _Context) -> str:
+    """Decimal commas as points ("1,29" → "1.29") where the exercise reads them; other commas in a
+    number (a thousands separator, or a decimal comma the exercise does not read) refused with a sentence."""
+    def fix(m: re.Match) -> str:
+        number, exponent = re.fullmatch(r"([^eE]*)(.*)", m[0]).groups()
+        plain = number.replace(",", "")
+        if _THOUSANDS_RE.fullmatch(number) and (number.count(",") > 1 or "." in number) and not exponent:
+            raise ctx.fail(f'write {plain} without a thousands separator')
+        if number.count(",") > 1 or "." in number:
+            return m[0]  # a list of numbers, not one: the caller says how to write a vector
+        whole, frac = number.split(",")
+        if len(frac) == 3 and not exponent:
+            if ctx.comma:
+                raise ctx.fail(f'"{number}" could be {whole}.{frac} or {plain}: write {whole}.{frac} (a decimal '
+                               f'point) or {plain} (no separator)')
+            raise ctx.fail(f"write {plain} without a thousands separator, or {whole}.{frac} with a decimal point")
+        if not ctx.comma:
+            raise ctx.fail(f"{ctx.scalar_advice()} (use a decimal point)")
+        return f"{whole}.{frac}{exponent}"
+
+    return _COMMA_NUMBER_RE.sub(fix, text)
+
+
+def _components(body: str, ctx: _Context, what: str) -> list[str]:
+    """The two components of a bracketed vector: split at ";", else at its one comma, else (decimal
+    commas) at its one ", "."""
+    body = body.strip()
+    if ";" in body:
+        parts = [_commas(p.strip(), ctx) for p in body.split(";")]
+    else:
+        parts = [p.strip() for p in body.split(",")]
+        if len(parts) != 2 and ctx.comma and len(body.split(", ")) == 2:
+            parts = [_commas(p.strip(), ctx) for p in body.split(", ")]
     if len(parts) != 2:
         if _DECIMAL_COMMA_RE.search(body):
-            what += " (use a decimal point)"
+            what += (' (with decimal commas, put ";" between the components, such as "(7,56; -25,98)")'
+                     if ctx.comma else " (use a decimal point)")
         raise ctx.fail(f"a planar vector has two components; {what}")
+    return parts
+
+
+def _read_vector(body: str, outer: str, ctx: _Context) -> Reading:
+    what = f"write two components in brackets, such as {ctx.vector_example()}"
+    parts = _components(body, ctx, what)
     (x, x_text, x_unit), (y, y_text, y_unit) = (_quantity(p, ctx, what) for p in parts)
     outer_text = _unit_text(outer)
     if x_text != y_text:
@@ -651,7 +716,7 @@ def _read_number(value: Any, q: _Question) -> Reading:
     )
 
 
-def read_answer(text: Any, *, dimension: str, unit: str) -> Reading:
+def read_answer(text: Any, *, dimension: str, unit: str, decimal_comma: bool = True) -> Reading:
     """Read a student's typed answer into SI numbers.
 
     Parameters
@@ -667,6 +732,10 @@ def read_answer(text: Any, *, dimension: str, unit: str) -> Reading:
         The question's unit in pint spelling (``"N"``, ``"N*m"``, ``"deg"``,
         ``"kg*m^2"``, ``""`` for a dimensionless number): used for a bare
         number and in the messages' examples.
+    decimal_comma : bool
+        Whether a decimal comma is read (``"1,29 kN"``; the exercise's
+        ``decimal_comma``). Either way a comma that could separate
+        thousands (``"1,352"``) is refused with a sentence.
 
     Returns
     -------
@@ -703,7 +772,7 @@ def read_answer(text: Any, *, dimension: str, unit: str) -> Reading:
     if not isinstance(text, str):
         return _read_number(text, q)
     raw = text.strip()
-    ctx = _Context(raw, q)
+    ctx = _Context(raw, q, decimal_comma)
     if not raw:
         raise Unreadable(f"The answer is empty: {ctx.scalar_advice()}.")
     if len(raw) > MAX_CHARS:
@@ -718,9 +787,8 @@ def read_answer(text: Any, *, dimension: str, unit: str) -> Reading:
             raise ctx.fail(ctx.sense_advice())
         body = vector["a"] if vector["a"] is not None else vector["b"]
         return _read_vector(body, vector["unit"], ctx)
+    body = _commas(body, ctx)
     if "," in body:
-        if _DECIMAL_COMMA_RE.search(body):
-            raise ctx.fail(f"{ctx.scalar_advice()} (use a decimal point)")
         raise ctx.fail(f"write a vector in brackets, such as {ctx.vector_example()}")
     parts = _POLAR_RE.split(body)
     if len(parts) == 1:

@@ -18,7 +18,8 @@ from concurrent.futures import ProcessPoolExecutor
 
 from graphkin.errors import GraphkinError
 from graphkin.exercises.exercise import Exercise
-from graphkin.exercises.grading import grade_variant
+from graphkin.exercises.grading import Classmates, grade_variant
+from graphkin.exercises.keys import student_entry
 from graphkin.exercises.variants import make_variant
 
 PARALLEL_FROM = 200
@@ -28,7 +29,7 @@ _CHUNK = 50
 _WORKERS: list[ProcessPoolExecutor] = []
 
 
-def _one(exercise: Exercise, action: str, student: str, secret: str, answers, reveal):
+def _one(exercise: Exercise, action: str, student: str, secret: str, answers, reveal, classmates):
     try:
         v = make_variant(exercise, student, secret)
     except GraphkinError as exc:
@@ -37,13 +38,17 @@ def _one(exercise: Exercise, action: str, student: str, secret: str, answers, re
         return v.sheet()
     if action == "key":
         return v.key()
-
-    return grade_variant(v, answers or {}, reveal=reveal)
+    if action == "values":
+        return {"student": v.student, "values": {q.id: v.expected(q).value for q in exercise.questions
+                                                 if v.expected(q).undefined is None}}
+    if action == "entry":
+        return {"student": v.student, "entry": student_entry(v)}
+    return grade_variant(v, answers or {}, reveal=reveal, classmates=classmates)
 
 
 def _chunk(args):
-    exercise, action, items, secret, reveal = args
-    return [_one(exercise, action, student, secret, answers, reveal) for student, answers in items]
+    exercise, action, items, secret, reveal, classmates = args
+    return [_one(exercise, action, student, secret, answers, reveal, classmates) for student, answers in items]
 
 
 def _workers(n: int) -> list[ProcessPoolExecutor]:
@@ -62,13 +67,14 @@ def _shutdown():
 
 
 def run_roster(exercise: Exercise, action: str, students, secret: str = "", *, answers=None, reveal=None,
-               workers: int | None = None, progress=None) -> list[dict]:
+               workers: int | None = None, progress=None, classmates=None) -> list[dict]:
     """Sheets (``"make"``), keys (``"key"``) or grades (``"grade"``) for every student, in order.
 
     Parameters
     ----------
     exercise : Exercise
-    action : {"make", "key", "grade"}
+    action : {"make", "key", "grade", "entry"}
+        ``"entry"`` gives each student's :func:`graphkin.exercises.keys.student_entry` (for a keys file).
     students : sequence of str
     secret : str
     answers : sequence of mapping, optional
@@ -79,6 +85,9 @@ def run_roster(exercise: Exercise, action: str, students, secret: str = "", *, a
         Processes to use (default: every core, for rosters of :data:`PARALLEL_FROM` or more).
     progress : callable, optional
         Called with the number of students just finished (e.g. a tqdm bar's ``update``).
+    classmates : sequence of str, optional
+        For ``"grade"``: the class, whose answers an answer may fit (default: the students graded). An
+        empty sequence grades each student on their own.
 
     Returns
     -------
@@ -90,20 +99,34 @@ def run_roster(exercise: Exercise, action: str, students, secret: str = "", *, a
     answers = list(answers) if answers is not None else [None] * len(students)
     items = list(zip(students, answers))
     cores = workers or os.cpu_count() or 1
+    cls = None
+    if action == "grade":
+        # The class's answers first (each worker keeps the variants it makes, so grading reuses them).
+        class_ids = students if classmates is None else list(classmates)
+        if class_ids:
+            values = _run(exercise, "values", [(s, None) for s in class_ids], secret, None, None, cores, None)
+            cls = Classmates({r["student"]: r["values"] for r in values if "values" in r})
+    return _run(exercise, action, items, secret, reveal, cls, cores, progress)
+
+
+def _run(exercise, action, items, secret, reveal, classmates, cores, progress) -> list[dict]:
     if cores == 1 or len(items) < PARALLEL_FROM:
         out: list[dict] = []
         for i in range(0, len(items), _CHUNK):
-            out.extend(_chunk((exercise, action, items[i:i + _CHUNK], secret, reveal)))
+            out.extend(_chunk((exercise, action, items[i:i + _CHUNK], secret, reveal, classmates)))
             if progress:
                 progress(len(items[i:i + _CHUNK]))
         return out
     out = [None] * len(items)
     futures = []
+    # The same student goes to the same worker in every pass: position in the roster modulo the workers, by id.
+    order = {s: k for k, s in enumerate(dict.fromkeys(s for s, _ in items))}
     for k, pool in enumerate(_workers(cores)):
-        index = list(range(k, len(items), cores))
+        index = [j for j, (s, _) in enumerate(items) if order[s] % cores == k]
         for i in range(0, len(index), _CHUNK):
             part = index[i:i + _CHUNK]
-            futures.append((part, pool.submit(_chunk, (exercise, action, [items[j] for j in part], secret, reveal))))
+            futures.append((part, pool.submit(_chunk, (exercise, action, [items[j] for j in part], secret, reveal,
+                                                       classmates))))
     for part, future in futures:
         for j, result in zip(part, future.result()):
             out[j] = result

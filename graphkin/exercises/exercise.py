@@ -18,13 +18,14 @@ from typing import Any
 
 from graphkin import catalog
 from graphkin.errors import GraphkinError, ProblemFileError
+from graphkin.exercises.symbols import symbol_problem
 from graphkin.files import read_text
 from graphkin.model.names import parse_force_name
 from graphkin.problem import FieldReader, build_problem
 from graphkin.units import to_si
 
 _TOP = {"title", "source", "problem", "intro", "route", "vary", "questions", "partial", "positions", "flywheel",
-        "reveal", "max_force_ratio", "max_speed_ratio", "draw"}
+        "reveal", "max_force_ratio", "max_speed_ratio", "draw", "decimal_comma"}
 _VARY = {"field", "from", "to", "step", "values", "label"}
 _QUESTION = {"id", "ask", "find", "part", "unit", "tolerance", "floor", "points", "route"}
 _FLYWHEEL = {"Cs"}
@@ -39,6 +40,10 @@ SLIPS: dict[str, float] = {
     "no_inertia_torque": 0.25,  # −I_G α left out
     "no_inertia_force": 0.25,   # −m a_G left out
     "wrong_side": 0.5,      # the inertia resultant offset by h to the wrong side of G
+    "swapped": 0.5,         # a vector's x and y components swapped (its angle measured clockwise from +y)
+    "angle_from_y": 0.5,    # a vector's angle measured from +y instead of +x
+    "clockwise": 0.5,       # a vector's angle measured clockwise from +x
+    "direction": 0.25,      # a vector's size right, its direction wrong
     "dimension": 0.0,       # a unit of another quantity (J for a torque, N for N·m)
 }
 
@@ -175,6 +180,9 @@ class Exercise:
         (the crank pin's speed ω·span, or the driving slider's speed).
     draw : bool
         Whether the student is given the free bodies drawn to scale (graphical exercises).
+    decimal_comma : bool
+        Whether answers may use a decimal comma (``"1,29 kN"``); a comma that could separate
+        thousands (``"1,352"``) is refused with a sentence either way.
     file : str
     fingerprint : str
         SHA-256 of the id, the exercise file and the base problem file: two
@@ -204,6 +212,7 @@ class Exercise:
     fingerprint: str = ""
     text: str = ""
     base_text: str = ""
+    decimal_comma: bool = True
 
     @property
     def cycle(self) -> bool:
@@ -390,8 +399,10 @@ def load_exercise(source: str | Path, *, name: str | None = None) -> Exercise:
     return parse_exercise(text, file=file, id=name or path.stem, folder=path.parent)
 
 
-def parse_exercise(text: str, *, file: str = "<exercise>", id: str = "exercise", folder: Path | None = None) -> Exercise:
-    """Build an :class:`Exercise` from TOML text (relative problem paths from ``folder``)."""
+def parse_exercise(text: str, *, file: str = "<exercise>", id: str = "exercise", folder: Path | None = None,
+                   problems: dict | None = None) -> Exercise:
+    """Build an :class:`Exercise` from TOML text (relative problem paths from ``folder``, or the text of a
+    problem file from ``problems``, file name → text, as an export's keys carry it)."""
     rd = _Reader(file)
     try:
         data = tomllib.loads(text)
@@ -399,14 +410,17 @@ def parse_exercise(text: str, *, file: str = "<exercise>", id: str = "exercise",
         raise rd.fail("", f"is not valid TOML ({exc})") from None
     rd.table(data, "", _TOP)
     problem = rd.string(data, "problem", "")
-    if problem in catalog.names():
-        base_path = catalog.path(problem)
+    if problems and problem in problems:
+        base_text = problems[problem]
     else:
-        base_path = (folder or Path(".")) / problem
-        if not base_path.is_file():
-            raise rd.fail("problem", f"{problem!r} is neither a catalog problem ({', '.join(catalog.names())}) nor a file")
-
-    base_text = read_text(base_path, "problem", shown=str(base_path))
+        if problem in catalog.names():
+            base_path = catalog.path(problem)
+        else:
+            base_path = (folder or Path(".")) / problem
+            if not base_path.is_file():
+                raise rd.fail("problem", f"{problem!r} is neither a catalog problem ({', '.join(catalog.names())}) "
+                                         "nor a file")
+        base_text = read_text(base_path, "problem", shown=str(base_path))
     try:
         base = tomllib.loads(base_text)
     except tomllib.TOMLDecodeError as exc:
@@ -481,11 +495,21 @@ def parse_exercise(text: str, *, file: str = "<exercise>", id: str = "exercise",
     draw = data.get("draw", route == "graphical")
     if not isinstance(draw, bool):
         raise rd.fail("draw", f"must be true or false, got {draw!r}")
-    return Exercise(id, rd.string(data, "title", ""), rd.string(data, "source", "", ""), rd.string(data, "intro", "", ""),
+    decimal_comma = data.get("decimal_comma", True)
+    if not isinstance(decimal_comma, bool):
+        raise rd.fail("decimal_comma", f"must be true or false, got {decimal_comma!r}")
+    intro = rd.string(data, "intro", "", "")
+    symbols = [v.symbol for v in vary]
+    for where, statement in [("intro", intro)] + [(f"questions[{i}].ask", q.ask) for i, q in enumerate(questions)]:
+        slip = symbol_problem(statement, symbols)
+        if slip:
+            raise rd.fail(where, slip)
+    return Exercise(id, rd.string(data, "title", ""), rd.string(data, "source", "", ""), intro,
                     problem, base, tuple(vary), questions, partial, positions, Cs, reveal,
                     rd.number(data, "max_force_ratio", "", 20.0, low=1.0),
                     rd.number(data, "max_speed_ratio", "", 5.0, low=1.0), draw, file,
-                    hashlib.sha256("\x1f".join((id, text, base_text)).encode("utf-8")).hexdigest(), text, base_text)
+                    hashlib.sha256("\x1f".join((id, text, base_text)).encode("utf-8")).hexdigest(), text, base_text,
+                    decimal_comma)
 
 
 _TOKEN = re.compile(r"([A-Za-z_]\w*)|\[(\d+)\]")

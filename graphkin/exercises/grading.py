@@ -1,32 +1,62 @@
 """Grading: each answer against the key, and a diagnosis of the slip when it is not right.
 
-An answer within the question's tolerance earns full marks. Otherwise the
-grader asks which common slip would have produced it, by testing the answer
-against the correct value transformed: the sign or sense reversed, a power of
-ten, degrees for radians, a direction turned by 180°, the speed in rpm used as
-rad/s, the inertia torque or force left out (the variant re-solved without
-them), the inertia resultant on the wrong side of G. A diagnosed slip earns
-the share of the points the exercise sets (:data:`graphkin.exercises.exercise.SLIPS`)
-and a sentence that says what went wrong and which step to revisit.
+An answer within the question's tolerance earns full marks. Otherwise the grader asks which common
+slip would have produced it. Every slip it knows is a candidate value: the right answer with the sign
+or sense reversed, a power of ten off, degrees for radians, a direction turned by 180°, a vector's
+components swapped or its angle measured from +y or clockwise, the inertia resultant on the wrong side
+of G, the variant re-solved with the speed in rpm used as rad/s or without the inertia torque or force,
+and (when the grader is given the class) every classmate's answer. Each candidate has a slack (the
+question's tolerance of that value); of those within their slack, the **nearest** wins, measured in
+slacks. When two are about as near (within a tenth of a slack), the one worth more is given and the
+feedback names the other too. An answer that fits another student's data earns nothing and is named as
+such. A vector whose size is right but whose direction is not is named with its degrees off; any other
+wrong answer gets how far off it is (%, degrees, or mm) and the step of its route to revisit, or, when
+it is close, to carry more digits.
 
-The grader never raises on anything a student typed and never evaluates it:
-answers are read as data by :mod:`graphkin.exercises.answers`.
+The grader never raises on anything a student typed and never evaluates it: answers are read as data
+by :mod:`graphkin.exercises.answers` (and, from a notebook, by :mod:`graphkin.exercises.notebooks`).
+
+It asks a variant for four things only, so the same code grades a live
+:class:`graphkin.exercises.Variant` and a student's precomputed key
+(:class:`graphkin.exercises.keys.KeyedVariant`): ``expected(q)``, ``slip_value(q, slip)``,
+``words(q)`` and its ``exercise``.
 """
 
 from __future__ import annotations
 
+import cmath
 import math
+import sys
+import traceback
+from collections import Counter
 from collections.abc import Mapping
+from dataclasses import dataclass
+
+import numpy as np
 
 from graphkin.exercises.answers import Reading, Unreadable, read_answer
 from graphkin.exercises.exercise import CYCLE_KINDS, dimension_of
-from graphkin.exercises.quantities import Expected, _distance, _unit_text, unit_factor, value_of
-from graphkin.model.names import parse_force_name
+from graphkin.exercises.notebooks import NotData
+from graphkin.exercises.quantities import Expected, _distance, _unit_text, unit_factor
 
-#: Verdicts a question can get.
-VERDICTS = ("correct", "slip", "wrong", "unreadable", "missing")
+#: Verdicts a question can get ("refused": the whole submission is not graded as this student's, e.g. it
+#: carries another student's id; every question then says why).
+VERDICTS = ("correct", "slip", "wrong", "unreadable", "missing", "refused")
 
 _TORQUE_KINDS = ("driver_torque", "inertia_torque", "peak_torque", "lowest_torque", "average_torque")
+
+#: Slips found by solving the variant again as the student did.
+RESOLVED_SLIPS = ("rpm_as_rad_s", "no_inertia_torque", "no_inertia_force")
+
+#: How many of a sheet's answers one classmate's data must explain before the grader names them: one answer
+#: near one classmate's is as likely a slip of the student's own.
+CORROBORATE = 2
+
+#: Two candidates are "about as near" when their distances differ by less than this share of a slack.
+TIE = 0.1
+
+#: A wrong answer within this many slacks of the right one is a rounding slip, not a wrong method.
+CLOSE = 2.5
 
 #: The feedback catalogue: one sentence (or two) per slip; ``{name}`` is the quantity, ``{hint}`` the step.
 MESSAGES = {
@@ -53,11 +83,39 @@ MESSAGES = {
                          "include the d'Alembert force at G. Revisit {hint}."),
     "wrong_side": ("The offset h is right but on the wrong side of G: the resultant must turn the link the same way "
                    "as the inertia torque T = −I_G α ({sense}). Revisit {hint}."),
+    "swapped": ("The x and y components are swapped (or the angle is measured clockwise from +y): x is along the "
+                "horizontal axis, to the right, y along the vertical, up, and angles are measured from +x."),
+    "angle_from_y": ("The size is right but the angle is measured from +y: angles are measured from +x, "
+                     "counter-clockwise positive (yours is 90° short)."),
+    "clockwise": ("The size is right but the angle is measured clockwise: angles are measured from +x, "
+                  "counter-clockwise positive."),
+    "direction": "The size is right but the direction is {degrees}° off. Revisit {hint}.",
+    "other_data": ("This is the answer for another student's data, not yours: work with the values on your own "
+                   "sheet."),
+    "tie": " It fits {others} about as well; it is graded as the one worth more.",
     "dimension": ("{unit} is a unit of {given}, but {name} is {wanted}, measured in {right} (e.g. \"{example}\")."),
     "need_vector": "Give both the size and the direction of {name}, e.g. \"{example}\" or as components \"(x, y) N\".",
     "need_scalar": "Give one number with its unit for {name}, e.g. \"{example}\".",
+    "not_data": ("{name} must be typed as text in quotes, e.g. {name} = \"{example}\": the notebook is read as a "
+                 "file, not run, so {what} is not an answer."),
     "wrong": "Not within {tolerance} of the answer{off}. Revisit {hint}.",
     "wrong_nohint": "Not within {tolerance} of the answer{off}.",
+    "close": ("Close, but not within {tolerance} of the answer{off}: carry four significant figures through every "
+              "step and round only the answer."),
+    "close_graphical": ("Close, but not within {tolerance} of the answer{off}: draw the construction larger and "
+                        "measure its lines more carefully."),
+    "error": ("This answer could not be graded because of an error in the grader, not in the answer; your "
+              "teacher can read why in the grader's log."),
+}
+
+#: A slip in a few words, for the sentence that names a tie.
+SLIP_WORDS = {
+    "sign": "the sign reversed", "opposite": "the direction turned by 180°", "power_of_ten": "a power of ten off",
+    "degrees_radians": "degrees and radians mixed up", "rpm_as_rad_s": "the speed in rpm used as rad/s",
+    "no_inertia_torque": "the inertia torque left out", "no_inertia_force": "the inertia force left out",
+    "wrong_side": "the offset on the wrong side of G", "swapped": "the components swapped",
+    "angle_from_y": "the angle measured from +y", "clockwise": "the angle measured clockwise",
+    "other_data": "another student's data",
 }
 
 _DIMENSION_WORDS = {"force": "a force", "torque": "a torque", "length": "a length", "angle": "an angle",
@@ -65,6 +123,9 @@ _DIMENSION_WORDS = {"force": "a force", "torque": "a torque", "length": "a lengt
                     "power": "a power", "mass": "a mass", "velocity": "a velocity", "acceleration": "an acceleration",
                     "angular_velocity": "an angular velocity", "angular_acceleration": "an angular acceleration",
                     "time": "a time", "density": "a density"}
+
+# How much of an answer the report echoes (the feedback quotes at most the reader's short excerpt).
+_ECHO_CHARS = 120
 
 
 def answer_example(exp: Expected) -> str:
@@ -83,6 +144,78 @@ def answer_example(exp: Expected) -> str:
     return f"12.3{u}"
 
 
+class Classmates:
+    """The other students' answers to each question, to tell an answer worked from other data.
+
+    Parameters
+    ----------
+    answers : mapping of str to mapping of str to float or complex
+        Student id → question id → the key's value (SI; vectors and points complex, angles in rad).
+    """
+
+    def __init__(self, answers: Mapping):
+        self._ids: dict[str, list[str]] = {}
+        self._values: dict[str, np.ndarray] = {}
+        for student, values in answers.items():
+            for qid, value in values.items():
+                if value is None or (isinstance(value, float) and not math.isfinite(value)):
+                    continue
+                self._ids.setdefault(qid, []).append(student)
+                self._values.setdefault(qid, []).append(value)
+        self._values = {qid: np.asarray(v) for qid, v in self._values.items()}
+
+    @classmethod
+    def from_keys(cls, keys) -> Classmates:
+        """From keys as :func:`graphkin.exercises.key` gives them (entries with an ``error`` are passed over)."""
+        answers = {}
+        for key in keys:
+            if "error" in key:
+                continue
+            answers[key["student"]] = {q["id"]: _si_value(q["answer"]["si"]) for q in key["questions"]}
+        return cls(answers)
+
+    def __len__(self) -> int:
+        return len({s for ids in self._ids.values() for s in ids})
+
+    def only(self, students) -> Classmates:
+        """The same class, with only ``students``' answers."""
+        keep = set(students)
+        out = Classmates({})
+        for qid, ids in self._ids.items():
+            mask = np.array([s in keep for s in ids], dtype=bool)
+            if mask.any():
+                out._ids[qid] = [s for s, m in zip(ids, mask) if m]
+                out._values[qid] = self._values[qid][mask]
+        return out
+
+    def nearest(self, exp: Expected, student: str, a) -> tuple[float, str] | None:
+        """The classmate whose answer ``a`` fits best, as (distance in their slack, their id); None if none fits."""
+        qid = exp.question.id
+        if qid not in self._values:
+            return None
+        values = self._values[qid]
+        if exp.form == "direction":
+            d = np.abs(np.remainder(a - values + np.pi, 2 * np.pi) - np.pi)
+            own = np.abs(np.remainder(exp.value - values + np.pi, 2 * np.pi) - np.pi)
+            slack = np.full(len(values), exp.slack)
+        else:
+            d, own = np.abs(a - values), np.abs(exp.value - values)
+            slack = np.full(len(values), exp.slack) if exp.form == "point" else \
+                np.maximum(exp.slack, exp.question.tolerance * np.abs(values))
+        # A classmate with the same answer as this student (the same data, or data that give the same) is not
+        # "other data": the answer is right for this student too.
+        fits = (d <= slack) & (own > exp.slack) & (np.asarray(self._ids[qid]) != student)
+        if not fits.any():
+            return None
+        ratio = np.where(fits, d / np.where(slack > 0, slack, 1.0), np.inf)
+        k = int(np.argmin(ratio))
+        return float(ratio[k]), self._ids[qid][k]
+
+
+def _si_value(si):
+    return complex(*si) if isinstance(si, list) else si
+
+
 def _comparable(exp: Expected, r: Reading):
     """The reading in the expected value's form (SI), or the name of what is missing."""
     form = exp.form
@@ -97,80 +230,91 @@ def _comparable(exp: Expected, r: Reading):
     return r.value
 
 
-def _verdict(exp: Expected, verdict: str, slip: str | None, score: float, feedback: str, answer: str, reveal: bool):
+def _verdict(exp: Expected, verdict: str, slip: str | None, score: float, feedback: str, answer: str, reveal: bool,
+             **extra):
     q = exp.question
     out = {"id": q.id, "verdict": verdict, "slip": slip, "score": score, "max": q.points, "feedback": feedback,
-           "answer": answer}
+           "answer": answer, **extra}
     if reveal:
         out["expected"] = exp.text
     return out
 
 
-def _names(exp: Expected, variant):
-    """Words for the messages: the quantity's name, its reverse, the links, the sense."""
-    q = exp.question
-    # A force or torque by its textbook name (F23, T12); a cycle quantity by its question id (T_peak).
-    name = q.find if q.kind in ("force", "driver_torque", "driver_force", "inertia_force", "inertia_torque") else q.id
-    other, i, j = name, "", ""
-    if q.kind == "force":
-        i, j = parse_force_name(variant.problem.mechanism, q.find)
-        other = f"{q.find[0]}{j}{i}"
-    sense = ""
-    if q.kind in _TORQUE_KINDS and isinstance(exp.value, float):
-        sense = "counter-clockwise (positive)" if exp.value > 0 else "clockwise (negative)"
-    if q.kind == "h":
-        T = float(variant.solved.result.inertia(q.link).T[0])
-        sense = "counter-clockwise" if T > 0 else "clockwise"
-    # Step captions end with a full stop; the messages put their own.
-    return {"name": name, "other": other, "i": i, "j": j, "sense": sense,
-            "hint": (exp.hint or "the solution").rstrip(".")}
+@dataclass(frozen=True)
+class _Fit:
+    """A slip that explains an answer: its name, how near (in its slack), the words of its message."""
+
+    slip: str
+    ratio: float
+    words: dict
+    msg: str
+    other: str | None = None  # the classmate, for other_data
 
 
-def _slip(exp: Expected, a, variant) -> tuple[str, dict] | None:
-    """The slip that turns the right answer into ``a``, with words for its message; None if none does."""
-    q, form, e = exp.question, exp.form, exp.value
-    words = _names(exp, variant)
-    # Sign or sense: F_ji for F_ij, CW for CCW, a negative magnitude.
-    if form in ("scalar", "vector") and e and exp.close(-a):
-        if q.kind == "force" and form == "vector":
-            return "sign", {**words, "msg": "sign_force"}
-        if q.kind in _TORQUE_KINDS:
-            return "sign", {**words, "msg": "sign_torque"}
-        return "sign", {**words, "msg": "sign_value"}
-    if form == "magnitude" and e and exp.close(-a):
-        return "sign", {**words, "msg": "sign_magnitude"}
-    if form == "direction":
-        # A crank angle where a peak occurs has no "opposite": only a direction of a force does.
-        if q.part == "direction" and exp.close(a + math.pi):
-            return "opposite", {**words, "msg": "opposite" if q.kind == "force" else "opposite_other"}
+def _transforms(exp: Expected):
+    """The slips an answer shows by a transformation of the answer itself: (slip, message, undo, make, extra
+    words), where ``undo`` takes the slipped answer back to the right one and ``make`` makes the slip."""
+    q, form = exp.question, exp.form
+    out = []
+    if form == "vector":
+        force = q.kind == "force"
+        out += [("sign", "sign_force" if force else "sign_value", lambda a: -a, lambda a: -a, {}),
+                ("swapped", "swapped", lambda a: complex(a.imag, a.real), lambda a: complex(a.imag, a.real), {}),
+                ("angle_from_y", "angle_from_y", lambda a: a * 1j, lambda a: a * -1j, {}),
+                ("clockwise", "clockwise", lambda a: a.conjugate(), lambda a: a.conjugate(), {})]
+    elif form == "scalar":
+        msg = "sign_torque" if q.kind in _TORQUE_KINDS else "sign_value"
+        out.append(("sign", msg, lambda a: -a, lambda a: -a, {}))
+    elif form == "magnitude":
+        out.append(("sign", "sign_magnitude", lambda a: -a, lambda a: -a, {}))
+    elif form == "direction":
+        if q.part == "direction":  # a crank angle where a peak occurs has no "opposite": only a force's direction
+            out += [("opposite", "opposite" if q.kind == "force" else "opposite_other", lambda a: a + math.pi,
+                     lambda a: a + math.pi, {}),
+                    ("swapped", "swapped", lambda a: math.pi / 2 - a, lambda a: math.pi / 2 - a, {}),
+                    ("angle_from_y", "angle_from_y", lambda a: a + math.pi / 2, lambda a: a - math.pi / 2, {}),
+                    ("clockwise", "clockwise", lambda a: -a, lambda a: -a, {})]
         for factor, wrong, right in ((180 / math.pi, "radians", "degrees"), (math.pi / 180, "degrees", "radians")):
-            if exp.close(a * factor):
-                return "degrees_radians", {**words, "wrong": wrong, "right": right}
-    if form in ("scalar", "magnitude", "vector", "point") and e:
+            out.append(("degrees_radians", "degrees_radians", lambda a, f=factor: a * f, lambda a, f=factor: a / f,
+                        {"wrong": wrong, "right": right}))
+    if form in ("scalar", "magnitude", "vector", "point"):
         for k in (3, -3, 6, -6):
-            if exp.close(a / 10.0**k):
-                return "power_of_ten", {**words, "factor": f"10^{abs(k)}", "way": "large" if k > 0 else "small"}
-    if form == "point" and exp.anchor is not None and exp.close(2 * exp.anchor - a):
-        return "wrong_side", words
-    for slip in ("rpm_as_rad_s", "no_inertia_torque", "no_inertia_force"):
+            out.append(("power_of_ten", "power_of_ten", lambda a, k=k: a / 10.0**k, lambda a, k=k: a * 10.0**k,
+                        {"factor": f"10^{abs(k)}", "way": "large" if k > 0 else "small"}))
+    if form == "point" and exp.anchor is not None:
+        out.append(("wrong_side", "wrong_side", lambda a: 2 * exp.anchor - a, lambda a: 2 * exp.anchor - a, {}))
+    return out
+
+
+def _fits(exp: Expected, a, variant, classmates: Classmates | None) -> list[_Fit]:
+    """Every slip that explains ``a`` within its slack, nearest first."""
+    q, form, e = exp.question, exp.form, exp.value
+    words = variant.words(q)
+    fits = []
+    if exp.slack > 0 and (e or form in ("direction", "point")):
+        for slip, msg, undo, make, extra in _transforms(exp):
+            # A slip that leaves the right answer where it is (the sign of a value within its slack of 0, the
+            # components of a vector at 45°) cannot be told from it.
+            if exp.close(make(e)):
+                continue
+            d = _distance(form, undo(a), e)
+            if d <= exp.slack:
+                fits.append(_Fit(slip, d / exp.slack, {**words, **extra}, msg))
+    for slip in RESOLVED_SLIPS:
         if not _may(q, slip):
             continue
-        solved = variant.altered(slip)
-        if solved is None:
-            continue
-        try:
-            other = value_of(solved, q)
-        except Exception:  # the altered problem may not solve (e.g. a dead point at the wrong speed)
-            continue
+        other = variant.slip_value(q, slip)
         if other is None or exp.close(other):  # the slip leaves this answer unchanged: it cannot be told apart
             continue
-        if _distance_ok(exp, a, other):
-            extra = {}
-            if slip == "rpm_as_rad_s":
-                rpm = float(variant.problem.q_dot[0]) * 30 / math.pi
-                extra = {"rpm": f"{rpm:.4g}", "omega": f"{float(variant.problem.q_dot[0]):.4g}"}
-            return slip, {**words, **extra}
-    return None
+        slack = _slack_of(exp, other)
+        d = _distance(form, a, other)
+        if slack > 0 and d <= slack:
+            fits.append(_Fit(slip, d / slack, words, slip))
+    if classmates is not None:
+        near = classmates.nearest(exp, variant.student, a)
+        if near is not None:
+            fits.append(_Fit("other_data", near[0], words, "other_data", near[1]))
+    return sorted(fits, key=lambda f: f.ratio)
 
 
 def _may(q, slip: str) -> bool:
@@ -178,36 +322,126 @@ def _may(q, slip: str) -> bool:
     if slip == "rpm_as_rad_s":
         return True
     # Leaving out an inertia load makes the inertia questions themselves zero or undefined: a wrong answer
-    # there is not that slip.
     # there is not that slip. Over the cycle they are not tried (a sweep per slip, for little diagnosis).
     return q.kind not in ("inertia_force", "inertia_torque", "h") and q.kind not in CYCLE_KINDS
 
 
-def _distance_ok(exp: Expected, a, other) -> bool:
-    """Whether ``a`` is the slipped value ``other``, to the question's tolerance of that value."""
-    slack = exp.slack
-    if exp.form not in ("direction", "point") and abs(exp.value) > 0:
-        slack = max(slack, exp.question.tolerance * abs(other))
-    return _distance(exp.form, a, other) <= slack
+def _slack_of(exp: Expected, other) -> float:
+    """The slack of a slipped value ``other``: the question's tolerance of that value (at least the answer's)."""
+    if exp.form in ("direction", "point") or not abs(exp.value) > 0:
+        return exp.slack
+    return max(exp.slack, exp.question.tolerance * abs(other))
 
 
-def grade_question(variant, q, answer, *, reveal: bool = False) -> dict:
-    """Grade one answer; never raises on the answer, whatever it is."""
+def _credit(exercise, slip: str) -> float:
+    return 0.0 if slip == "other_data" else exercise.partial.get(slip, 0.0)
+
+
+def _diagnose(exp: Expected, a, variant, classmates) -> tuple[_Fit, list[_Fit]] | None:
+    """The slip to name (the nearest, or of the about-as-near ones the one worth more) and the others as near."""
+    fits = _fits(exp, a, variant, classmates)
+    if not fits:
+        return None
+    near = [f for f in fits if f.ratio - fits[0].ratio <= TIE]
+    # One fit per slip: the same slip may fit twice (×10³ and ×10⁶ are never both near; a tie of one slip with
+    # itself says nothing).
+    seen, unique = set(), []
+    for f in near:
+        if f.slip not in seen:
+            seen.add(f.slip)
+            unique.append(f)
+    ex = variant.exercise
+    chosen = max(unique, key=lambda f: (_credit(ex, f.slip), -f.ratio))
+    return chosen, [f for f in unique if f is not chosen]
+
+
+def _off(exp: Expected, a) -> str:
+    """How far off a wrong answer is, in words: ``" (yours is +19.5 % off)"``."""
+    e = exp.value
+    if exp.form in ("scalar", "magnitude") and e:
+        return f" (yours is {100 * (a - e) / abs(e):+.1f} % off)".replace("-", "−")
+    if exp.form == "vector" and e:
+        size = 100 * (abs(a) - abs(e)) / abs(e)
+        turn = math.degrees(abs(cmath.phase(a / e))) if a else 180.0
+        return f" (yours: the size is {size:+.1f} % off, the direction {turn:.1f}° off)".replace("-", "−")
+    if exp.form == "direction":
+        return f" (yours is {math.degrees(_distance('direction', a, e)):.1f}° off)"
+    if exp.form == "point":
+        return f" (yours is {1000 * abs(a - e):.3g} mm away)"
+    return ""
+
+
+def _tolerance_text(exp: Expected) -> str:
+    q = exp.question
+    if exp.form == "direction":
+        return f"{math.degrees(exp.slack):.2g}°"
+    tol = f"{100 * q.tolerance:g} %"
+    if exp.form == "point":
+        tol = f"{1000 * exp.slack:.3g} mm ({tol} of the mechanism's size)"
+    return tol
+
+
+def _wrong(exp: Expected, a, variant, text: str, reveal: bool) -> dict:
+    """A wrong answer's verdict: the size right (a vector), close (rounding), or how far off and where to look."""
+    q = exp.question
+    words = variant.words(q)
+    tol, off = _tolerance_text(exp), _off(exp, a)
+    if exp.form == "vector" and exp.value and abs(abs(a) - abs(exp.value)) <= exp.slack:
+        degrees = f"{math.degrees(abs(cmath.phase(a / exp.value))):.1f}" if a else "180"
+        msg = MESSAGES["direction"].format(degrees=degrees, hint=words["hint"])
+        return _verdict(exp, "slip", "direction", q.points * variant.exercise.partial["direction"], msg, text, reveal)
+    if exp.slack > 0 and _distance(exp.form, a, exp.value) <= CLOSE * exp.slack:
+        msg = MESSAGES["close_graphical" if q.route == "graphical" else "close"].format(tolerance=tol, off=off)
+        return _verdict(exp, "wrong", None, 0.0, msg, text, reveal)
+    hint = exp.hint.rstrip(".") if exp.hint else ""
+    msg = MESSAGES["wrong" if hint else "wrong_nohint"].format(tolerance=tol, off=off, hint=hint)
+    return _verdict(exp, "wrong", None, 0.0, msg, text, reveal)
+
+
+def grade_question(variant, q, answer, *, reveal: bool = False, classmates: Classmates | None = None) -> dict:
+    """Grade one answer; never raises on the answer, whatever it is.
+
+    Parameters
+    ----------
+    variant : Variant or KeyedVariant
+        The student's variant (live, or from precomputed keys).
+    q : Question
+    answer : object
+        What the student gave: text, a number, None (unanswered), or
+        :class:`graphkin.exercises.notebooks.NotData`; anything else is refused with a sentence.
+    reveal : bool
+        Show the expected value.
+    classmates : Classmates, optional
+        The class's answers: an answer that fits another student's data is named as such.
+    """
     exp = variant.expected(q)
+    try:
+        return _grade(variant, q, exp, answer, reveal, classmates)
+    except Exception:  # a bug in the grader must not void this answer's neighbours, nor show a traceback
+        print(f"graphkin: grading {q.id} of {variant.student!r} failed:", file=sys.stderr)
+        traceback.print_exc(file=sys.stderr)
+        return _verdict(exp, "unreadable", None, 0.0, MESSAGES["error"], echo(answer), reveal)
+
+
+def _grade(variant, q, exp: Expected, answer, reveal: bool, classmates) -> dict:
     if answer is None or (isinstance(answer, str) and not answer.strip()):
         return _verdict(exp, "missing", None, 0.0, MESSAGES["missing"].format(name=q.id), "", reveal)
+    if isinstance(answer, NotData):
+        msg = MESSAGES["not_data"].format(name=q.id, example=answer_example(exp), what=answer.reason)
+        return _verdict(exp, "unreadable", None, 0.0, msg, echo(answer), reveal)
     dim = dimension_of(q.kind, q.part)
     try:
-        r = read_answer(answer, dimension=dim, unit=q.unit)
+        r = read_answer(answer, dimension=dim, unit=q.unit, decimal_comma=variant.exercise.decimal_comma)
     except Unreadable as exc:
-        return _verdict(exp, "unreadable", None, 0.0, str(exc), _shown(answer), reveal)
-    text = r.text
+        return _verdict(exp, "unreadable", None, 0.0, str(exc), echo(answer), reveal)
+    text = echo(r.text)
     if r.value is None and r.vector is None and not r.bare:
         right = _unit_text(q.unit) or "no unit"
-        words = _names(exp, variant)
+        words = variant.words(q)
         given = _DIMENSION_WORDS.get(r.dimension, r.dimension or "something else")
-        msg = MESSAGES["dimension"].format(unit=_unit_text(r.unit), given=given, name=words["name"],
-                                           wanted=_DIMENSION_WORDS.get(dim, dim), right=right, example=answer_example(exp))
+        msg = MESSAGES["dimension"].format(unit=echo(_unit_text(r.unit), 40), given=given, name=words["name"],
+                                           wanted=_DIMENSION_WORDS.get(dim, dim), right=right,
+                                           example=answer_example(exp))
         share = variant.exercise.partial["dimension"]
         # A wrong dimension earns the share (0 by default) only when the number itself is right.
         number_right = r.number is not None and exp.form in ("scalar", "magnitude") and \
@@ -216,65 +450,98 @@ def grade_question(variant, q, answer, *, reveal: bool = False) -> dict:
     a = _comparable(exp, r)
     if isinstance(a, str) or a is None:
         key = a or "need_scalar"
-        return _verdict(exp, "wrong", None, 0.0, MESSAGES[key].format(name=q.find, example=answer_example(exp)), text, reveal)
+        return _verdict(exp, "wrong", None, 0.0, MESSAGES[key].format(name=q.find, example=answer_example(exp)), text,
+                        reveal)
     if exp.close(a):
         return _verdict(exp, "correct", None, q.points, MESSAGES["correct"], text, reveal)
-    found = _slip(exp, a, variant)
-    if found is not None:
-        slip, words = found
-        msg = MESSAGES[words.pop("msg", slip)].format(**words)
-        return _verdict(exp, "slip", slip, q.points * variant.exercise.partial[slip], msg, text, reveal)
-    off = ""
-    if exp.form in ("scalar", "magnitude") and exp.value:
-        off = f" (yours is {100 * (a - exp.value) / abs(exp.value):+.1f} % off)".replace("-", "−")
-    tol = f"{100 * q.tolerance:g} %" if exp.form != "direction" else f"{math.degrees(exp.slack):.2g}°"
-    if exp.form == "point":
-        tol = f"{1000 * exp.slack:.3g} mm ({tol} of the mechanism's size)"
-    msg = MESSAGES["wrong" if exp.hint else "wrong_nohint"].format(tolerance=tol, off=off, hint=exp.hint.rstrip("."))
-    return _verdict(exp, "wrong", None, 0.0, msg, text, reveal)
+    found = _diagnose(exp, a, variant, classmates)
+    if found is None:
+        return _wrong(exp, a, variant, text, reveal)
+    fit, ties = found
+    msg = MESSAGES[fit.msg].format(**fit.words)
+    if ties:
+        msg += MESSAGES["tie"].format(others=" and ".join(SLIP_WORDS.get(t.slip, t.slip) for t in ties))
+    if fit.slip == "other_data":
+        return _verdict(exp, "wrong", "other_data", 0.0, msg, text, reveal, other=fit.other)
+    # A classmate's data about as near as the slip: named in the feedback, and for the teacher here.
+    other = {"other": t.other for t in ties if t.slip == "other_data"}
+    return _verdict(exp, "slip", fit.slip, q.points * variant.exercise.partial[fit.slip], msg, text, reveal, **other)
 
 
-def _shown(answer) -> str:
-    """An unreadable answer as text for the report (at most 200 characters)."""
-    return (answer if isinstance(answer, str) else repr(answer))[:200]
+def echo(answer, limit: int = _ECHO_CHARS) -> str:
+    """An answer as the report repeats it: printable text on one line, at most ``limit`` characters.
+
+    Control and bidirectional-override characters become U+FFFD; a huge integer is described, never
+    converted to text (Python refuses to print one of more than 4300 digits).
+    """
+    if isinstance(answer, NotData):
+        return f"({answer.reason}, not text)"
+    if isinstance(answer, bool) or answer is None:
+        return repr(answer)
+    if isinstance(answer, int) and abs(answer).bit_length() > 300:
+        return f"(a whole number of about {int(abs(answer).bit_length() * 0.30103) + 1} digits)"
+    text = answer if isinstance(answer, str) else _safe_repr(answer)
+    text = "".join(c if c.isprintable() else "\N{REPLACEMENT CHARACTER}" for c in text[:limit + 1])
+    return text if len(text) <= limit else text[:limit - 1] + "…"
+
+
+def _safe_repr(value) -> str:
+    try:
+        return repr(value)[:_ECHO_CHARS + 1]
+    except Exception:  # a huge integer inside a list, say
+        return f"(a {type(value).__name__})"
 
 
 def _factor(q) -> float:
     return unit_factor(q.unit, dimension_of(q.kind, q.part))
 
 
-def grade_variant(variant, answers, *, reveal: bool | None = None) -> dict:
+def grade_variant(variant, answers, *, reveal: bool | None = None, classmates: Classmates | None = None) -> dict:
     """Grade a student's answers to their variant.
 
     Parameters
     ----------
-    variant : graphkin.exercises.variants.Variant
+    variant : graphkin.exercises.variants.Variant or graphkin.exercises.keys.KeyedVariant
     answers : mapping of str to str
         Question id → the answer as typed. Missing ids score 0; unknown ids
         are listed under ``"ignored"``.
     reveal : bool, optional
         Show the expected value of every question (default: the exercise's ``reveal``).
+    classmates : Classmates, optional
+        The class's answers: an answer that fits another student's data earns nothing and says so, when
+        that student's data explain at least :data:`CORROBORATE` of the sheet's answers (or all of them,
+        for a sheet of fewer questions).
 
     Returns
     -------
     dict
         ``{"exercise", "student", "score", "max", "questions": [{"id", "verdict",
-        "slip", "score", "max", "feedback", "answer"[, "expected"]}], "ignored"}``.
+        "slip", "score", "max", "feedback", "answer"[, "expected"][, "other"]}], "ignored"}``;
+        ``other`` names the classmate whose data an answer fits (for the teacher; the feedback does not).
     """
     ex = variant.exercise
     reveal = ex.reveal if reveal is None else bool(reveal)
     if not isinstance(answers, Mapping):
         answers = {}
-    results = []
-    for q in ex.questions:
-        # Whatever the sheet holds (a list, a table, null) goes to the reader as it is: it refuses what is not
-        # text or a number with a sentence, rather than the grader guessing at str(value).
-        raw = answers.get(q.id)
-        results.append(grade_question(variant, q, raw, reveal=reveal))
+    # Whatever the sheet holds (a list, a table, null) goes to the reader as it is: it refuses what is not text
+    # or a number with a sentence, rather than the grader guessing at str(value).
+    results = [grade_question(variant, q, answers.get(q.id), reveal=reveal, classmates=classmates)
+               for q in ex.questions]
+    if classmates is not None:
+        named = Counter(r["other"] for r in results if r.get("other"))
+        need = min(CORROBORATE, len(ex.questions))
+        if any(n < need for n in named.values()):
+            # One answer near one classmate's is as likely a slip of one's own (each classmate's answer has its
+            # 1 % of slack, and a class covers much of the range): grade again with only the classmates whose
+            # data explain several of this sheet's answers.
+            kept = classmates.only(s for s, n in named.items() if n >= need)
+            results = [grade_question(variant, q, answers.get(q.id), reveal=reveal, classmates=kept)
+                       for q in ex.questions]
     known = {q.id for q in ex.questions}
-    ignored = sorted(str(k)[:100] for k in answers if k not in known)[:50]
+    ignored = sorted(echo(k, 100) for k in answers if k not in known)[:50]
     return {"exercise": ex.id, "student": variant.student, "score": round(sum(r["score"] for r in results), 10),
             "max": sum(q.points for q in ex.questions), "questions": results, "ignored": ignored}
 
 
-__all__ = ["MESSAGES", "VERDICTS", "grade_question", "grade_variant"]
+__all__ = ["CLOSE", "CORROBORATE", "Classmates", "MESSAGES", "RESOLVED_SLIPS", "SLIP_WORDS", "TIE", "VERDICTS", "answer_example",
+           "echo", "grade_question", "grade_variant"]

@@ -15,6 +15,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from graphkin.exercises.exercise import Question, dimension_of
+from graphkin.kinematics import DriverGroup, decompose
 from graphkin.model.names import parse_force_name
 from graphkin.notation import num, polar_text
 from graphkin.units import to_si
@@ -222,8 +223,35 @@ def _step_hint(n: int, step) -> str:
     return f"step {n} of the construction: {step.caption}"
 
 
+def _analytical_hint(solved, q: Question) -> str:
+    """The step of the analytical solution that gives ``q``: the inertia loads first, then each group's
+    equilibrium from the last group to the driver (the order the closed-form solve takes)."""
+    kind = q.kind
+    if kind in ("inertia_force", "inertia_torque", "h"):
+        then = "; then h = |T_i|/|F_i|, offset to the side that turns the link as T_i does" if kind == "h" else ""
+        return (f"step 1 of the analytical solution: link {q.link}'s inertia loads, F_i = −m a_G and T_i = −I_G α, "
+                f"from its accelerations{then}")
+    mech = solved.problem.mechanism
+    groups = list(reversed(decompose(mech)))
+    if kind in ("driver_torque", "driver_force"):
+        want = None
+    else:
+        i, j = parse_force_name(mech, q.find)
+        want = {i, j}
+    for n, g in enumerate(groups, 2):
+        if isinstance(g, DriverGroup) and want is None:
+            return (f"step {n} of the analytical solution: the equilibrium of the driver (link {g.links[0]}): ΣF = 0 "
+                    f"and ΣM = 0 about its pivot, with the forces of the links it drives, give {q.find}")
+        if want is not None and any(set(joint.links) == want for joint in g.joints):
+            links = " and ".join(map(str, g.links))
+            return (f"step {n} of the analytical solution: the equilibrium of the {g.label} (ΣF = 0 and ΣM = 0 for "
+                    f"link{'s' if len(g.links) > 1 else ''} {links}, solved together: their rows of [A]{{x}} = {{b}})")
+    return "the equilibrium equations ΣF = 0, ΣM = 0 of every link (the rows of [A]{x} = {b})"
+
+
 def _hint(solved, q: Question) -> str:
-    """The construction step or the equations a student should revisit for ``q``."""
+    """The step of the question's route a student should revisit for ``q``: a step of the graphical
+    construction on the graphical route, a step of the analytical solution on the analytical one."""
     kind = q.kind
     if kind in ("peak_torque", "lowest_torque", "average_torque"):
         return "the driving torque at every crank angle of the cycle (sweep), then its extremes and mean"
@@ -234,6 +262,8 @@ def _hint(solved, q: Question) -> str:
                 "I_s = E / (C_s ω_avg²)")
     if kind == "jfi_peak":
         return "the static joint forces (masses set to zero) divided by the external load (Norton §11.12)"
+    if q.route == "analytical" and kind != "concurrency":
+        return _analytical_hint(solved, q)
     c = solved.construction
     want = {"force": q.find, "driver_torque": q.find, "driver_force": q.find}.get(kind)
     for n, step in enumerate(c.steps, 1):
@@ -246,10 +276,33 @@ def _hint(solved, q: Question) -> str:
             return _step_hint(n, step)
         if kind == "concurrency" and f"I{q.link}" in step.points:
             return _step_hint(n, step)
-    if kind == "force":
+    # The force is not drawn in a step of its own (it closes a polygon as the reaction of another, say).
+    return "the force polygons of the construction, each closed tip to tail" if kind == "force" else ""
+
+
+_TORQUE_KINDS = ("driver_torque", "inertia_torque", "peak_torque", "lowest_torque", "average_torque")
+
+
+def message_words(solved, q: Question, exp: Expected) -> dict:
+    """The words grading messages use for ``q``: its name, its reverse (F32 for F23), the links, the sense,
+    the step to revisit, and the crank speed (for a speed read in the wrong unit). Plain data."""
+    # A force or torque by its textbook name (F23, T12); a cycle quantity by its question id (T_peak).
+    name = q.find if q.kind in ("force", "driver_torque", "driver_force", "inertia_force", "inertia_torque") else q.id
+    other, i, j = name, "", ""
+    if q.kind == "force":
         i, j = parse_force_name(solved.problem.mechanism, q.find)
-        return f"the equilibrium of link {j} (ΣF = 0, ΣM = 0: its rows of [A]{{x}} = {{b}})"
-    return ""
+        other = f"{q.find[0]}{j}{i}"
+    sense = ""
+    if q.kind in _TORQUE_KINDS and isinstance(exp.value, float):
+        sense = "counter-clockwise (positive)" if exp.value > 0 else "clockwise (negative)"
+    if q.kind == "h":
+        T = float(solved.result.inertia(q.link).T[0])
+        sense = "counter-clockwise" if T > 0 else "clockwise"
+    omega = float(np.ravel(solved.problem.q_dot)[0]) if np.size(solved.problem.q_dot) else 0.0
+    # Step captions end with a full stop; the messages put their own.
+    return {"name": name, "other": other, "i": str(i), "j": str(j), "sense": sense,
+            "hint": (exp.hint or "the solution").rstrip("."), "rpm": f"{omega * 30 / math.pi:.4g}",
+            "omega": f"{omega:.4g}"}
 
 
 def undefined(solved, q: Question) -> str | None:
@@ -284,6 +337,6 @@ def expected(variant, q: Question) -> Expected:
     anchor = None
     if q.kind == "h" and q.part == "point":
         anchor = complex(*solved.result.kinematics.G(q.link)[0])
-    torque = q.kind in ("driver_torque", "inertia_torque", "peak_torque", "lowest_torque", "average_torque")
+    torque = q.kind in _TORQUE_KINDS
     text = format_value(form, value, q.unit, dim, torque=torque and form == "scalar")
     return Expected(q, form, value, slack, text, hint, anchor)

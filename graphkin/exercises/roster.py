@@ -1,4 +1,9 @@
-"""Class files: a roster of student ids, and a class's answers, as CSV with a ``student`` column."""
+"""Class files: a roster of student ids, and a class's answers, as CSV with a ``student`` column.
+
+Every id is normalised as the variants normalise it (:func:`graphkin.exercises.variants.check_student`:
+Unicode NFC, runs of white space as one space, none at either end), so ``"s001 "`` and ``"s001"`` are one
+student, and a file naming a student twice is refused. Every error names the file and the line.
+"""
 
 from __future__ import annotations
 
@@ -6,6 +11,7 @@ import csv
 import io
 
 from graphkin.errors import GraphkinError
+from graphkin.exercises.variants import check_student
 from graphkin.files import read_text
 
 MAX_ROSTER = 100_000
@@ -13,7 +19,7 @@ MAX_ROSTER = 100_000
 
 
 def read_class_csv(path, what: str) -> list[dict]:
-    """The rows of a class CSV (a roster, or answers) with a ``student`` column, ids trimmed.
+    """The rows of a class CSV (a roster, or answers) with a ``student`` column, ids normalised.
 
     Parameters
     ----------
@@ -25,33 +31,54 @@ def read_class_csv(path, what: str) -> list[dict]:
     Returns
     -------
     list of dict
-        One dict per row, column name -> text, with the id under ``"student"``.
+        One dict per row, column name -> text, with the id under ``"student"`` and the row's line in the
+        file under ``"#line"`` (a name no question id can have).
 
     Raises
     ------
     GraphkinError
-        A file that cannot be read, is not CSV, has no ``student`` column or
-        more than :data:`MAX_ROSTER` rows, or a row with an empty id.
+        Naming the file and the line: a file that cannot be read or is not CSV (a NUL byte, a broken
+        quote), no ``student`` column, more than :data:`MAX_ROSTER` rows, an empty or unusable id, or a
+        student named twice.
     """
     text = read_text(path, what)
+    nul = text.find("\x00")  # (read_text refuses a file with NUL bytes; standard input is checked here)
+    if nul >= 0:
+        raise GraphkinError(f"{what} {path}: line {text.count(chr(10), 0, nul) + 1}: a NUL byte; the file is not "
+                            "plain text (save it as CSV, UTF-8)")
+    # A field may be as long as the file: one 1 MB answer is that answer's problem (the reader refuses it with
+    # a sentence), not the whole class file's (csv refuses fields over 128 kB by default).
+    csv.field_size_limit(max(csv.field_size_limit(), min(len(text) + 1, 2**31 - 1)))
+    # strict: a broken quote is an error at its line, not a field that runs to the end of the file.
+    reader = csv.DictReader(io.StringIO(text), strict=True)
+    rows = []
     try:
-        reader = csv.DictReader(io.StringIO(text))
-        rows = []
         for row in reader:
+            row["#line"] = reader.line_num
             rows.append(row)
             if len(rows) > MAX_ROSTER:
                 raise GraphkinError(f"{what} {path}: more than {MAX_ROSTER} rows")
     except csv.Error as exc:
-        raise GraphkinError(f"{what} {path}: not a readable CSV ({exc})") from None
-    fields = [f.strip().lower() for f in reader.fieldnames or []]
+        raise GraphkinError(f"{what} {path}: line {reader.line_num}: not readable as CSV ({exc})") from None
+    fields = [(f or "").strip().lower() for f in reader.fieldnames or []]
     if "student" not in fields:
         raise GraphkinError(f"{what} {path}: needs a header row with a 'student' column "
                             f"(found: {', '.join(reader.fieldnames or []) or 'no header'})")
     key = (reader.fieldnames or [])[fields.index("student")]
-    for n, row in enumerate(rows, start=2):
-        if not (row.get(key) or "").strip():
+    seen: dict[str, int] = {}
+    for row in rows:
+        n = row["#line"]
+        raw = row.pop(key) or ""
+        if not raw.strip():
             raise GraphkinError(f"{what} {path}: line {n}: the student id is empty")
-        row["student"] = row.pop(key).strip()
+        try:
+            student = check_student(raw)
+        except GraphkinError as exc:
+            raise GraphkinError(f"{what} {path}: line {n}: {exc}") from None
+        if student in seen:
+            raise GraphkinError(f"{what} {path}: line {n}: student {student!r} is already on line {seen[student]}")
+        seen[student] = n
+        row["student"] = student
     return rows
 
 

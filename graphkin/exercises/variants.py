@@ -27,7 +27,8 @@ from graphkin.cycle import sweep
 from graphkin.errors import GraphkinError
 from graphkin.exercises.exercise import CYCLE_KINDS, Exercise, Question, set_field
 from graphkin.exercises.grading import grade_variant
-from graphkin.exercises.quantities import _span, expected, question_data, undefined
+from graphkin.exercises.quantities import _span, expected, message_words, question_data, undefined, value_of
+from graphkin.exercises.symbols import fill_symbols
 from graphkin.graphical import construct_forces
 from graphkin.notation import input_text
 from graphkin.problem import build_problem
@@ -164,6 +165,28 @@ class Variant:
             self._memo["question", q.id] = expected(self, q)
         return self._memo["question", q.id]
 
+    def slip_value(self, q: Question, slip: str):
+        """The answer to ``q`` of a student who made ``slip`` (a re-solved one: ``rpm_as_rad_s``,
+        ``no_inertia_torque``, ``no_inertia_force``); None where the slip does not apply or does not solve."""
+        if ("slip value", q.id, slip) not in self._memo:
+            value = None
+            solved = self.altered(slip)
+            if solved is not None:
+                try:
+                    value = value_of(solved, q)
+                except Exception:  # the altered problem may not solve (e.g. a dead point at the wrong speed)
+                    value = None
+                if isinstance(value, float) and not math.isfinite(value):
+                    value = None
+            self._memo["slip value", q.id, slip] = value
+        return self._memo["slip value", q.id, slip]
+
+    def words(self, q: Question) -> dict:
+        """The words of ``q``'s grading messages (:func:`graphkin.exercises.quantities.message_words`)."""
+        if ("words", q.id) not in self._memo:
+            self._memo["words", q.id] = message_words(self.solved, q, self.expected(q))
+        return self._memo["words", q.id]
+
     def sheet(self) -> dict:
         """The student's exercise as plain data: the statement, their data and the questions; no answers."""
         intro = _fill(self.exercise.intro, self.data)
@@ -171,7 +194,7 @@ class Variant:
                 "student": self.student, "intro": intro, "draw": self.exercise.draw,
                 "data": [{"symbol": g.symbol, "label": g.label, "value": g.value, "shown": g.shown}
                          for g in self.data],
-                "questions": [question_data(q) for q in self.exercise.questions]}
+                "questions": [{**question_data(q), "ask": _fill(q.ask, self.data)} for q in self.exercise.questions]}
 
     def key(self) -> dict:
         """The sheet with every answer: its value in SI and as the book prints it, and the tolerance."""
@@ -188,9 +211,8 @@ class Variant:
 
 
 def _fill(text: str, data) -> str:
-    """Replace ``{symbol}`` in an exercise's statement by the student's value."""
-    values = {g.symbol: pretty(g.value) for g in data}
-    return re.sub(r"\{([^{}\s]+)\}", lambda m: values.get(m[1], m[0]), text)
+    """Replace ``{symbol}`` in an exercise's statement by the student's value (``{{`` and ``}}`` by a brace)."""
+    return fill_symbols(text, {g.symbol: pretty(g.value) for g in data})
 
 
 def _choose(ex: Exercise, student: str, secret: str, attempt: int) -> tuple[Given, ...]:

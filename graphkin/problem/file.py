@@ -38,10 +38,10 @@ _DRIVER = {
     "crank": {"type", "link", "theta", "omega", "alpha", "from", "sense"},
     "slider": {"type", "link", "s", "v", "a", "place"},
 }
-_LOAD = {"force": {"type", "link", "point", "force", "direction", "table", "csv", "sense", "active", "name"},
-         "torque": {"type", "link", "torque", "table", "csv", "sense", "active", "name"},
+_LOAD = {"force": {"type", "link", "point", "force", "direction", "table", "csv", "decimal", "sense", "active", "name"},
+         "torque": {"type", "link", "torque", "table", "csv", "decimal", "sense", "active", "name"},
          "pressure": {"type", "link", "point", "bore", "rod", "pressure", "back_pressure", "side", "direction", "table",
-                      "csv", "active", "name"},
+                      "csv", "decimal", "active", "name"},
          "power": {"type", "link", "power", "speed", "role", "active", "name"},
          "spring": {"type", "links", "points", "rate", "free_length", "name"}}
 _GIVEN = {"omega", "alpha", "a_G", "v_G", "theta", "points"}

@@ -7,6 +7,7 @@ import math
 from pathlib import Path
 
 from graphkin.errors import ProblemFileError
+from graphkin.problem.tables import DECIMALS
 from graphkin.ranges import complaint
 from graphkin.units import to_si, to_si_array, to_si_vector
 
@@ -91,6 +92,21 @@ class FieldReader:
         elif not isinstance(value, dict):
             self.ranged(q[0], value, kind, where)
         return q
+
+    def decimal(self, t: dict, where: str) -> str:
+        """A table's declared decimal separator, ``t["decimal"]``: ``"."`` (the default) or ``","``.
+
+        Only a table (``table`` or ``csv``) has numbers to read with it.
+        """
+        if "decimal" not in t:
+            return "."
+        if "table" not in t and "csv" not in t:
+            raise self.fail(f"{where}.decimal", "is the decimal separator of a table: give it beside table or csv")
+        value = t["decimal"]
+        if value not in DECIMALS:
+            raise self.fail(f"{where}.decimal", f'must be "." or "," (the decimal separator of the table\'s numbers), '
+                            f"got {value!r}")
+        return value
 
     def whole(self, value, where) -> int:
         if isinstance(value, bool) or not isinstance(value, int):

@@ -8,12 +8,13 @@ over the problem's own positions, or where its linkage assembles
 Each widget carries a CSS class (``graphkin-explorer``, ``graphkin-position``,
 ``graphkin-position-box``, ``graphkin-speed``, ``graphkin-status``,
 ``graphkin-table``, ``graphkin-image``, ``graphkin-screen``) for the browser
-test and for the probe: a hidden image whose script reports the screen's
-pixel ratio and the width the page gives the explorer in the hidden text box
-``graphkin-screen``.
+test. The hidden probe ``graphkin-screen`` (:func:`screen_probe`, an
+anywidget) reports the screen's pixel ratio and the width the page gives the
+explorer through its own widget messages (no script is injected into the
+page).
 
-ipywidgets is imported inside the functions that make widgets: importing this
-module does not load it.
+ipywidgets and anywidget are imported inside the functions that make
+widgets: importing this module does not load them.
 """
 
 from __future__ import annotations
@@ -87,23 +88,58 @@ def degree_controls():
     return DegreeSlider, DegreeBox
 
 
-# A hidden image that fails to load runs its onerror handler, standard ipywidgets' only way to run
-# a line of JavaScript: it writes the screen's pixel ratio and the width the page gives the explorer
-# into the explorer's hidden text box, as if typed, and again when that width changes.
-_PROBE = ("<img src='data:,' alt='' style='display:none' onerror=\"(function probe(img, tries) {"
-          "var root = img.closest('.graphkin-explorer');"
-          "var box = root && root.querySelector('.graphkin-screen input');"
-          "if (!box || !root.parentElement) { if (tries < 100) setTimeout(probe, 100, img, tries + 1); return; }"
-          "var host = root.parentElement;"
-          "function report() {"
-          "var width = Math.round(host.getBoundingClientRect().width);"
-          "var said = JSON.stringify({ratio: window.devicePixelRatio || 1, width: width});"
-          "if (width > 0 && box.value !== said) {"
-          "box.value = said; box.dispatchEvent(new Event('input', {bubbles: true})); } }"
-          "report();"
-          "if (window.ResizeObserver) { var wait;"
-          "new ResizeObserver(function () { clearTimeout(wait); wait = setTimeout(report, 250); }).observe(host); }"
-          "})(this, 0)\">")
+PROBE_ESM = """
+function render({ model, el }) {
+  // The screen's pixel ratio and the width the page gives the explorer (the parent of its box), told to
+  // the kernel as the probe's own state, and again when that width changes.
+  let tries = 0, wait = null, observer = null;
+  function report(host) {
+    const width = Math.round(host.getBoundingClientRect().width);
+    const said = JSON.stringify({ ratio: window.devicePixelRatio || 1, width: width });
+    el.dataset.said = said;
+    if (width > 0 && model.get("screen") !== said) {
+      model.set("screen", said);
+      model.save_changes();
+    }
+  }
+  function start() {
+    const root = el.closest(".graphkin-explorer");
+    const host = root && root.parentElement;
+    if (!host) {
+      if (tries++ < 100) setTimeout(start, 100);  // not in the page yet
+      return;
+    }
+    report(host);
+    if (window.ResizeObserver) {
+      observer = new ResizeObserver(() => { clearTimeout(wait); wait = setTimeout(() => report(host), 250); });
+      observer.observe(host);
+    }
+  }
+  start();
+  return () => { if (observer) observer.disconnect(); clearTimeout(wait); };
+}
+export default { render };
+"""
+"""The probe's script: an anywidget module that reports the screen through the widget's own state."""
+
+
+@functools.cache
+def screen_probe():
+    """The class of the explorer's screen probe: a widget with a ``screen`` trait its script writes.
+
+    Its script (:data:`PROBE_ESM`) runs in the browser as the widget's own
+    module (anywidget): the screen's pixel ratio and the width the page gives
+    the explorer reach the kernel as a change of ``screen`` (JSON text), by the
+    widget's own messages.
+    """
+    import anywidget
+    import traitlets
+
+    class ScreenProbe(anywidget.AnyWidget):
+        _esm = PROBE_ESM
+        screen = traitlets.Unicode("").tag(sync=True)
+
+    return ScreenProbe
 
 
 def snap(value: float, limits: tuple[float, float], step: float) -> float:
@@ -127,8 +163,8 @@ class Controls:
     value : float
         The problem's own position [deg or mm], on the step.
     slider, box, speed, image, status, table : ipywidgets.DOMWidget
-    screen : ipywidgets.Text
-        Hidden: the probe writes the screen's pixel ratio and the page's width into it.
+    screen : ScreenProbe
+        Hidden: its ``screen`` is the screen's pixel ratio and the page's width, as the browser reports them.
     widget : ipywidgets.VBox
         Everything, for display.
     """
@@ -210,14 +246,13 @@ def make_controls(problem, at_speed, n: int, limits=None) -> Controls:
     image = W.Image(format="png", layout=W.Layout(max_width="100%", height="auto"))
     status = W.HTML(layout=W.Layout(flex="1 1 auto"))
     table = W.HTML()
-    screen = W.Text(layout=W.Layout(display="none"))
-    probe = W.HTML(_PROBE, layout=W.Layout(display="none"))
+    screen = screen_probe()(layout=W.Layout(display="none"))
     for widget, name in ((slider, "position"), (box, "position-box"), (speed, "speed"),
                          (status, "status"), (table, "table"), (image, "image"),
                          (screen, "screen")):
         widget.add_class(f"graphkin-{name}")  # for the browser test and for the probe
     widget = W.VBox([W.HBox([slider, box], layout=W.Layout(width="100%", align_items="center")),
                      W.HBox([speed, status], layout=W.Layout(width="100%", align_items="center")),
-                     table, image, probe, screen])
+                     table, image, screen])
     widget.add_class("graphkin-explorer")
     return Controls(limits, step, value, slider, box, speed, image, status, table, screen, widget)

@@ -16,6 +16,7 @@ from html import escape
 from graphkin import exercises
 from graphkin.errors import GraphkinError
 from graphkin.exercises.grading import grade_variant
+from graphkin.optional import require
 
 
 def exercise(name, student: str = "", *, secret: str = ""):
@@ -43,7 +44,7 @@ class ExerciseBox:
     """The widgets of :func:`exercise`: the student types an id, reads their data, answers, and checks."""
 
     def __init__(self, exercise, student: str, secret: str):
-        import ipywidgets as w
+        w = require("ipywidgets", "the exercise box")
 
         self.exercise, self.secret, self.report = exercise, secret, None
         self.student = w.Text(value=student, description="Your id", placeholder="e.g. your student number")

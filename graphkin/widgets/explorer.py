@@ -26,6 +26,7 @@ from graphkin.analytical import solve_forces
 from graphkin.cycle.sweep import Cycle, sweep
 from graphkin.errors import GraphkinError
 from graphkin.graphical import construct_forces
+from graphkin.optional import require
 from graphkin.widgets.canvas import PAGE_WIDTH, Canvas, force_table
 from graphkin.widgets.controls import make_controls, snap
 from graphkin.widgets.frames import AHEAD, MOST_AHEAD, DrawingAhead, Frame, to_the_end
@@ -134,6 +135,7 @@ class Explorer(DrawingAhead):
 
     def __init__(self, problem, *, n: int = 360, limits=None, dpi: int | None = None, halo: bool = False,
                  ahead: int = AHEAD):
+        require("ipywidgets", "the explorer")  # one line naming the extra, before anything else
         if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 2:
             raise GraphkinError(f"n must be a whole number of positions ≥ 2, got {n!r}")
         if dpi is not None and (isinstance(dpi, bool) or not isinstance(dpi, (int, np.integer)) or dpi < 10):
@@ -176,7 +178,7 @@ class Explorer(DrawingAhead):
         self.slider.observe(self._on_slider, names="value")
         self.box.observe(self._on_box, names="value")
         self.speed.observe(self._on_speed, names="value")
-        self._screen.observe(self._on_screen, names="value")
+        self._screen.observe(self._on_screen, names="screen")
         self.update()
 
     # -- the thread ---------------------------------------------------------------
@@ -336,7 +338,7 @@ class Explorer(DrawingAhead):
         self._timer = self._first_wait = None
 
     # -- the screen -----------------------------------------------------------------
-    @answers_the_browser("_screen", "screen size")
+    @answers_the_browser("_screen", "screen size", trait="screen")
     def _on_screen(self, change, by_browser: bool):
         """The browser reports its pixel ratio and the width it gives the explorer: re-render to fit."""
         try:

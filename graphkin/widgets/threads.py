@@ -17,8 +17,8 @@ def running_loop():
         return None
 
 
-def answers_the_browser(name: str, what: str):
-    """Decorate the observer of the control ``name`` (``what`` it holds, for people).
+def answers_the_browser(name: str, what: str, trait: str = "value"):
+    """Decorate the observer of the control ``name`` (``what`` it holds, for people; its ``trait`` observed).
 
     The observer is called as ``observer(self, change, by_browser)``, where
     ``by_browser`` tells a value the browser sent from one that code set
@@ -42,7 +42,7 @@ def answers_the_browser(name: str, what: str):
     def decorate(observer):
         @functools.wraps(observer)
         def observe(self, change):
-            by_browser = "value" in getattr(self, name)._property_lock
+            by_browser = trait in getattr(self, name)._property_lock
             home = self._home_loop if threading.get_ident() != self._home else None
             if home is not None and home.is_running():
                 home.call_soon_threadsafe(self._answer, observer, change, by_browser, what, True)

@@ -89,9 +89,9 @@ def test_json_arrays_have_n_entries(capsys, cycle):
 
 def test_figure_is_written(capsys, tmp_path):
     path = tmp_path / "out" / "cycle.png"
-    code, out, _ = run(capsys, "strip_cutter", "--n", "36", "--cs", "0.05", "--figure", str(path))
+    code, out, err = run(capsys, "strip_cutter", "--n", "36", "--cs", "0.05", "--figure", str(path))
     assert code == 0 and path.stat().st_size > 10_000
-    assert f"figure written to {path}" in out
+    assert f"figure written to {path}" in err and "written" not in out  # a message, not data: on stderr
 
 
 @pytest.mark.parametrize("argv, message", [

@@ -110,6 +110,17 @@ def test_roster_make_key_grade(capsys, tmp_path):
     ("a.json:{}", ["exercise", "grade", "single_link", "--student", "s", "--answers", "A", "-o", "DIR"], "is a folder"),
     ("a.json:{}", ["exercise", "make", "single_link", "--student", "s", "-o", "FILE/x.txt"], "is a file"),
     ("bad.toml:title = 'x'\nproblem = 'single_link'\n", ["exercise", "make", "A", "--student", "s"], "questions"),
+    ("r.csv:student\ns1\ns2\x00x\ns3\n", ["exercise", "key", "single_link", "--roster", "A"], "line 3: a NUL byte"),
+    ("r.csv:student\ns1\ns2\ns1 \n", ["exercise", "key", "single_link", "--roster", "A"],
+     "line 4: student 's1' is already on line 2"),
+    ("r.csv:student\ns1\n\"s2\n", ["exercise", "key", "single_link", "--roster", "A"],
+     "line 2: not readable as CSV (unexpected end of data)"),
+    ("r.csv:student\ns1\n" + "x" * 101 + "\n", ["exercise", "key", "single_link", "--roster", "A"],
+     "line 3: student id must be printable text of at most 100 characters"),
+    ("a.csv:student,T12\ns1,1 N*m\ns1,2 N*m\n", ["exercise", "grade", "single_link", "--answers", "A"],
+     "answers A: line 3: student 's1' is already on line 2"),
+    ("k.json:{}", ["exercise", "grade", "single_link", "--keys", "A", "--answers", "x.csv"], "not graphkin keys"),
+    ("a.ipynb:{}", ["exercise", "grade", "single_link", "--answers", "A"], "not a notebook"),
 ])
 def test_bad_input_is_one_line_and_exit_2(capsys, tmp_path, setup, args, expected):
     target = None
@@ -121,6 +132,7 @@ def test_bad_input_is_one_line_and_exit_2(capsys, tmp_path, setup, args, expecte
     (tmp_path / "FILE").write_text("x")
     args = [str(target) if a == "A" else str(tmp_path / a) if a in ("DIR", "FILE/x.txt", "missing.json") else a
             for a in args]
+    expected = expected.replace("answers A", f"answers {target}")
     code, out, err = run(capsys, *args)
     assert code == 2, (out, err)
     lines = [l for l in err.splitlines() if not l.startswith("graphkin: note")]
@@ -144,3 +156,126 @@ def test_make_figure_draws_what_the_student_is_given(capsys, tmp_path):
     assert "fbd3:R3i" in svg and "fbd3:F23" not in svg and "fbd3:F43" not in svg
     code, _, err = run(capsys, "exercise", "make", "torque_curve", "--student", "s1", "--figure", str(tmp_path / "x.jpg"))
     assert code == 2 and ".png, .svg or .pdf" in err
+
+
+def test_a_5000_digit_answer_is_that_answers_problem_not_a_traceback(capsys, tmp_path):
+    key = {q["id"]: q["answer"]["text"] for q in exercises.key("single_link", "s1")["questions"]}
+    (tmp_path / "a.json").write_text('{"F12": 1' + "0" * 5000 + ', "T12": "' + key["T12"] + '"}', encoding="utf-8")
+    code, out, err = run(capsys, "exercise", "grade", "single_link", "--student", "s1", "--answers",
+                         str(tmp_path / "a.json"), "--json")
+    assert code == 0 and "Traceback" not in err
+    verdicts = {q["id"]: q["verdict"] for q in json.loads(out)["questions"]}
+    assert verdicts == {"F12": "unreadable", "T12": "correct"}
+
+
+def test_ids_are_trimmed_unknown_ids_are_reported_and_absent_ones_too(capsys, tmp_path):
+    (tmp_path / "roster.csv").write_text("student\ns1\ns2\ns3\n", encoding="utf-8")
+    (tmp_path / "a.csv").write_text("student,T12\n s1 ,1 N*m\ns9,2 N*m\ns2\u00a0,3 N*m\n", encoding="utf-8")
+    code, out, err = run(capsys, "exercise", "grade", "single_link", "--answers", str(tmp_path / "a.csv"),
+                         "--roster", str(tmp_path / "roster.csv"))
+    assert code == 0
+    assert [g["student"] for g in csv.DictReader(io.StringIO(out))] == ["s1", "s2"]
+    assert "1 student is not on the roster and was not graded: s9 (line 3)" in err
+    assert "no answers from 1 roster student: s3" in err
+
+
+def _notebook(tmp_path, name, cells):
+    import nbformat
+
+    nb = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(c) for c in cells])
+    path = tmp_path / name
+    path.parent.mkdir(parents=True, exist_ok=True)
+    nbformat.write(nb, path)
+    return path
+
+
+def test_grade_handed_in_notebooks_read_as_data(capsys, tmp_path):
+    key = {q["id"]: q["answer"]["text"] for q in exercises.key("single_link", "s1", "k")["questions"]}
+    good = _notebook(tmp_path, "good.ipynb", ['STUDENT = "s1"', f"F12 = {key['F12']!r}",
+                                              "import graphkin.exercises.grading as g; g.grade_question = None",
+                                              f"T12 = {key['T12']!r}"])
+    sly = _notebook(tmp_path, "sly.ipynb", ['STUDENT = "s2"', "F12 = open('keys.json').read()",
+                                            f"T12 = {key['T12']!r}"])
+    anon = _notebook(tmp_path, "anon.ipynb", ["STUDENT = ...", f"T12 = {key['T12']!r}"])
+    code, out, err = run(capsys, "exercise", "grade", "single_link", "--secret", "k", "--json", "--answers",
+                         str(good), str(sly), str(anon))
+    assert code == 0, err
+    reports = json.loads(out)
+    assert [r["student"] for r in reports] == ["s1", "s2", ""]
+    assert reports[0]["score"] == 2
+    f12 = reports[1]["questions"][0]
+    assert f12["verdict"] == "unreadable" and "must be typed as text in quotes" in f12["feedback"]
+    assert reports[2]["refused"].startswith("This notebook carries no student id")
+
+
+def test_grade_nbgrader_folders_checks_the_notebooks_id(capsys, tmp_path):
+    key = {q["id"]: q["answer"]["text"] for q in exercises.key("single_link", "alice")["questions"]}
+    for student, claimed in (("alice", "alice"), ("carol", "alice")):
+        _notebook(tmp_path, f"submitted/{student}/hw/hw.ipynb", [f"STUDENT = {claimed!r}",
+                                                                 f"T12 = {key['T12']!r}"])
+    (tmp_path / "roster.csv").write_text("student\nalice\ncarol\n", encoding="utf-8")
+    code, out, err = run(capsys, "exercise", "grade", "single_link", "--json", "--student-from", "folder",
+                         "--roster", str(tmp_path / "roster.csv"), "--answers",
+                         *sorted(str(p) for p in tmp_path.glob("submitted/*/hw/hw.ipynb")))
+    alice, carol = json.loads(out)
+    assert alice["student"] == "alice" and alice["questions"][1]["verdict"] == "correct"
+    assert carol["score"] == 0 and "carries the student id 'alice' but was handed in by 'carol'" in carol["refused"]
+
+
+def test_grade_with_keys_is_grade_with_the_secret(capsys, tmp_path):
+    from graphkin.exercises.keys import keys_text, make_keys
+
+    roster = ["s1", "s2", "s3"]
+    (tmp_path / "k.json").write_text(keys_text(make_keys(exercises.load("gear_pair"), roster, "k")), encoding="utf-8")
+    (tmp_path / "roster.csv").write_text("student\n" + "\n".join(roster) + "\n", encoding="utf-8")
+    keys = {s: {q["id"]: q["answer"]["text"] for q in exercises.key("gear_pair", s, "k")["questions"]} for s in roster}
+    rows = [{"student": "s1", **keys["s1"]}, {"student": "s2", **keys["s3"]}, {"student": "s3", "T12": "1 N*m"}]
+    with open(tmp_path / "a.csv", "w", newline="", encoding="utf-8") as f:
+        w = csv.DictWriter(f, fieldnames=["student", "F23", "F12", "T12"])
+        w.writeheader()
+        w.writerows(rows)
+    common = ["exercise", "grade", "gear_pair", "--answers", str(tmp_path / "a.csv"), "--json"]
+    _, with_keys, _ = run(capsys, *common, "--keys", str(tmp_path / "k.json"))
+    _, with_secret, _ = run(capsys, *common, "--secret", "k", "--roster", str(tmp_path / "roster.csv"))
+    assert json.loads(with_keys) == json.loads(with_secret)
+    s2 = json.loads(with_keys)[1]
+    assert {q["slip"] for q in s2["questions"]} == {"other_data"} and s2["score"] == 0
+
+
+def test_collect_makes_one_class_table(capsys, tmp_path):
+    for i, (student, score) in enumerate((("s2", 1.5), ("s1", 3.0))):
+        folder = tmp_path / "results" / f"nb{i}"
+        folder.mkdir(parents=True)
+        tests = [{"name": "Public Tests", "output": "..."},
+                 {"name": "F23", "score": score - 1, "max_score": 1}, {"name": "T12: the torque", "score": 1.0,
+                                                                      "max_score": 2}]
+        output = f"Graded as student {student!r}: {score:g} / 3 points."
+        (folder / "results.json").write_text(json.dumps({"tests": tests, "output": output}), encoding="utf-8")
+    (tmp_path / "results" / "junk").mkdir()
+    (tmp_path / "results" / "junk" / "results.json").write_text('{"tests": []}', encoding="utf-8")
+    code, out, err = run(capsys, "exercise", "collect", str(tmp_path / "results"))
+    rows = list(csv.DictReader(io.StringIO(out)))
+    assert code == 0 and [r["student"] for r in rows] == ["s1", "s2", ""]
+    assert (rows[0]["F23"], rows[0]["T12"], rows[0]["max"]) == ("2.0", "1.0", "3")
+    assert "no graphkin summary" in rows[2]["error"]
+    assert "graded in" not in err
+    # A second notebook graded as s1 (its id typed by someone else, say): the table keeps both, with a note.
+    (tmp_path / "results" / "nb9").mkdir()
+    (tmp_path / "results" / "nb9" / "results.json").write_text(json.dumps(
+        {"tests": [], "output": "Graded as student 's1': 0 / 3 points."}), encoding="utf-8")
+    code, out, err = run(capsys, "exercise", "collect", str(tmp_path / "results"))
+    assert code == 0 and [r["student"] for r in csv.DictReader(io.StringIO(out))] == ["s1", "s1", "s2", ""]
+    assert "student 's1' was graded in 2 files" in err and "nb9" in err
+
+
+def test_one_long_answer_in_a_class_csv_voids_nothing_else(capsys, tmp_path):
+    key = {q["id"]: q["answer"]["text"] for q in exercises.key("single_link", "s1")["questions"]}
+    with open(tmp_path / "a.csv", "w", newline="", encoding="utf-8") as f:
+        w = csv.writer(f)
+        w.writerows([["student", "F12", "T12"], ["s1", "y" * 1_000_000, key["T12"]], ["s2", "1 N", "1 N*m"]])
+    code, out, err = run(capsys, "exercise", "grade", "single_link", "--answers", str(tmp_path / "a.csv"), "--json")
+    assert code == 0, err
+    s1, s2 = json.loads(out)
+    verdicts = {q["id"]: q["verdict"] for q in s1["questions"]}
+    assert verdicts == {"F12": "unreadable", "T12": "correct"} and s2["student"] == "s2"
+    assert "too long (1000000 characters" in s1["questions"][0]["feedback"]

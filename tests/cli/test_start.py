@@ -38,3 +38,24 @@ def test_numpy_is_loaded_with_one_blas_thread_and_the_environment_is_put_back():
     r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=REPO, timeout=60,
                        env={**env, "OPENBLAS_NUM_THREADS": "2"})
     assert r.stdout.split()[1] == "2", r.stderr  # the user's choice stands
+
+
+def test_every_page_the_help_points_to_is_a_page_of_the_guide():
+    # `--help` names DOCS/X.html; the site is built from docs/X.md (docs/conf.py), so each must exist.
+    import re
+
+    from graphkin.cli import parser as _parser
+    from graphkin.cli._common import DOCS
+
+    def helps(p):
+        yield p.format_help()
+        for action in p._actions:
+            if isinstance(action.choices, dict):  # a command's subcommands
+                for sub in action.choices.values():
+                    yield from helps(sub)
+
+    text = " ".join(" ".join(h.split()) for h in helps(_parser()))
+    pages = set(re.findall(re.escape(DOCS) + r"/([\w/-]+)\.html", text.replace(" ", "")))
+    assert pages >= {"json", "problem-files"}, pages
+    missing = sorted(p for p in pages if not (REPO / "docs" / f"{p}.md").exists())
+    assert not missing, f"--help points to pages the site does not have: {missing}"

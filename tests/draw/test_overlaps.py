@@ -38,6 +38,9 @@ from matplotlib.patches import FancyArrowPatch  # noqa: E402
 from graphkin import catalog, draw  # noqa: E402
 from graphkin.graphical import construct_forces  # noqa: E402
 
+# Lays out every catalog figure at 12 positions (the longest file of the suite): make test runs it, make check does not.
+pytestmark = pytest.mark.slow
+
 TOL = 1.5
 """How far [px, at the figures' 100 dpi] a text's box may run into another box or onto an outline.
 

@@ -53,7 +53,7 @@ MEASURE = """async (root) => {
   const box = (sel) => { const e = root.querySelector(sel); return e && e.getBoundingClientRect().toJSON(); };
   return {ratio: window.devicePixelRatio, natural: img.naturalWidth, shown: img.getBoundingClientRect().width,
           png_dpi: dpi, root: root.getBoundingClientRect().width,
-          said: root.querySelector('.graphkin-screen input').value,
+          said: (root.querySelector('.graphkin-screen [data-said], .graphkin-screen[data-said]') || {dataset: {}}).dataset.said,
           track: box('.graphkin-position .noUi-target'), number: box('.graphkin-position-box input')};
 }"""
 
@@ -149,7 +149,8 @@ def check_explorer(page, root, name: str) -> dict:
             "r => { const i = r.querySelector('img.graphkin-image'); return JSON.stringify({natural: i.naturalWidth,"
             " shown: i.getBoundingClientRect().width, ratio: devicePixelRatio, root: r.getBoundingClientRect().width,"
             " host: r.parentElement.getBoundingClientRect().width, css: i.style.width,"
-            " said: r.querySelector('.graphkin-screen input').value}) }"))
+            " said: (r.querySelector('.graphkin-screen [data-said], .graphkin-screen[data-said]') || {dataset: {}})"
+            ".dataset.said}) }"))
     root.evaluate(WATCH)
     m = root.evaluate(MEASURE)
     said = json.loads(m["said"])  # what the probe in the page told the kernel

@@ -270,3 +270,23 @@ def test_cycle_keys_match_the_analysis_layer():
     assert key["T_peak"] == cycle.peaks().effort_max.value
     assert key["T_peak_at"] == cycle.peaks().effort_max.at
     assert key["T_avg"] == cycle.average
+
+
+def test_an_unknown_name_in_braces_is_an_error_naming_it():
+    text = exercises.path("strip_cutter_cut").read_text(encoding="utf-8")
+    with pytest.raises(ProblemFileError, match=r"intro: \{Fp\} is not a symbol of \[vary\] \(did you mean \{Fc\}\?\)"):
+        exercises.parse_exercise(text.replace("{Fc}", "{Fp}"), id="x")
+    with pytest.raises(ProblemFileError, match=r"questions\[0\]\.ask: \{θ\} is not a symbol"):
+        exercises.parse_exercise(text.replace('ask = "F23, the force', 'ask = "At {θ}, F23, the force'), id="x")
+    with pytest.raises(ProblemFileError, match="a lone '}'"):
+        exercises.parse_exercise(text.replace("{Fc} acts", "{Fc}} acts"), id="x")
+
+
+def test_braces_are_written_doubled_and_symbols_fill_asks_too():
+    text = exercises.path("strip_cutter_cut").read_text(encoding="utf-8")
+    text = text.replace("find the forces below", "solve [A]{{x}} = {{b}}")
+    text = text.replace('ask = "F23, the force', 'ask = "At {θ12}, F23, the force')
+    sheet = exercises.make(exercises.parse_exercise(text, id="strip_cutter_cut"), "s001")
+    assert "solve [A]{x} = {b}" in sheet["intro"]
+    shown = sheet["data"][0]["shown"].split(" = ")[1]
+    assert sheet["questions"][0]["ask"].startswith(f"At {shown}, F23")

@@ -514,7 +514,7 @@ def test_a_new_speed_or_screen_while_drawing_ahead_leaves_no_frame_of_the_old_on
         status = ex.status.value
         await _until(lambda: ex._ahead_job is not None)
         job = ex._ahead_job[1]
-        ex._screen.value = json.dumps({"ratio": 2, "width": 1200})  # what the page reports
+        ex._screen.screen = json.dumps({"ratio": 2, "width": 1200})  # what the page reports
         closed = job.gi_frame is None
         await _until(lambda: {100.0, 102.0} <= set(ex._frames) and ex._figure_at == 101.0 or
                      len(ex._frames) >= 3, seconds=20.0)
@@ -666,13 +666,13 @@ def test_the_figure_is_rendered_for_the_screen_the_browser_reports():
 
     ex = explore(catalog.load("strip_cutter"), n=SMALL)
     assert ex.figure.dpi == widgets.CSS_DPI  # before a browser reports: 100 dpi
-    ex._screen.set_state({"value": json.dumps({"ratio": 2, "width": 1000})})
+    ex._screen.set_state({"screen": json.dumps({"ratio": 2, "width": 1000})})
     width_in, height_in = ex.figure.get_size_inches()
     assert width_in == pytest.approx(10.0) and ex.figure.dpi == 200
     assert ex.image.layout.width == "1000px"  # 100 screen pixels per inch, 200 image pixels per inch
     png = Image.open(io.BytesIO(ex.image.value))
     assert png.size[0] == round(width_in * 200) and png.info["dpi"] == pytest.approx((200, 200), abs=0.01)
-    ex._screen.set_state({"value": "not what the probe writes"})  # ignored
+    ex._screen.set_state({"screen": "not what the probe writes"})  # ignored
     assert ex.figure.dpi == 200
 
 

@@ -37,6 +37,7 @@ from graphkin import catalog
 from graphkin.errors import GraphkinError
 from graphkin.exercises import load
 from graphkin.exercises.batch import run_roster
+from graphkin.exercises.keys import make_keys
 from graphkin.exercises.platforms import runtime
 from graphkin.exercises.variants import check_student
 from graphkin.files import check_destination, write_bytes
@@ -79,6 +80,17 @@ class Bundle:
     students: tuple | None
     sheets: dict = field(default_factory=dict)
     sample: str = SAMPLE_STUDENT
+    _memo: dict = field(default_factory=dict, repr=False, compare=False)
+
+    def keys(self) -> dict:
+        """The roster's precomputed keys (:func:`graphkin.exercises.keys.make_keys`), what grading carries in
+        place of the secret; without a roster (and so without a secret), keys that draw from the id."""
+        if "keys" not in self._memo:
+            entries = None
+            if self.students is not None:
+                entries = [r["entry"] for r in run_roster(self.exercise, "entry", list(self.students), self.secret)]
+            self._memo["keys"] = make_keys(self.exercise, self.students, self.secret, entries=entries)
+        return self._memo["keys"]
 
     @property
     def exercise_file(self) -> str:

@@ -10,9 +10,10 @@ What the export writes (``build``):
 
 - ``autograder.zip``, for *Configure Autograder*: ``setup.sh`` (a Python of at
   least 3.11 in a virtual environment, with graphkin's requirements),
-  ``run_autograder``, ``grade.py``, ``config.json`` (the exercise's name, the
-  course secret and the roster, if any), the exercise file and graphkin itself
-  under ``vendor/`` (the grade comes from the version that was exported);
+  ``run_autograder``, ``grade.py``, ``config.json`` (the exercise's name and the
+  roster, if any), ``keys.json`` (the roster's precomputed keys, never the course
+  secret), the exercise file and graphkin itself under ``vendor/`` (the grade
+  comes from the version that was exported);
 - ``student_template/answers.toml``, the file students fill in and upload;
 - ``sample_submission/``, the first roster student's key answers and a
   metadata file, to try the autograder on the teacher's machine;
@@ -21,8 +22,9 @@ What the export writes (``build``):
 What runs on Gradescope (:func:`run`, called by ``grade.py``): find the one
 answers file (TOML or JSON, read as data, never run), take the submitter's
 id from the metadata (``sid``, else ``email``), refuse a file that carries
-another student's id, grade with :func:`runtime.grade` and write one
-Gradescope test per question. Whatever goes wrong, a ``results.json`` is
+another student's id, grade with the keys and write one Gradescope test per
+question (every output marked ``"output_format": "text"``, so Gradescope shows
+what a student typed as text, never as HTML). Whatever goes wrong, a ``results.json`` is
 written: 0 points and a sentence the student can act on.
 """
 
@@ -40,6 +42,8 @@ from pathlib import Path
 import graphkin
 from graphkin import __version__
 from graphkin.errors import GraphkinError
+from graphkin.exercises.answer_files import json_answers, toml_answers
+from graphkin.exercises.keys import Keys, keys_text
 from graphkin.exercises.platforms import requirements, runtime, vendor_files
 from graphkin.exercises.variants import check_student
 from graphkin.files import write_text
@@ -53,11 +57,15 @@ VENV = "/opt/graphkin-venv"
 """Where ``setup.sh`` makes the Python environment that ``run_autograder`` uses."""
 
 CONFIG = "config.json"
-"""The file in the zip that carries the exercise's name, the secret and the roster."""
+"""The file in the zip that carries the exercise's name and the roster."""
+
+KEYS = "keys.json"
+"""The file in the zip that carries the precomputed keys (:mod:`graphkin.exercises.keys`)."""
 
 ANSWER_SUFFIXES = (".toml", ".json")
-MAX_ANSWERS_BYTES = 100_000
-"""Largest answers file read: a few lines of text; anything bigger is not one."""
+MAX_ANSWERS_BYTES = 20_000_000
+"""Largest answers file read. One over-long answer is that answer's problem (it is refused with a sentence,
+the others are graded); only a file larger than this is refused whole."""
 
 EXAMPLE_LINE = 'F23 = "27.06 N ∠ −73.78°"'
 """How one answer is written in answers.toml, quoted in the messages students read."""
@@ -130,7 +138,7 @@ rm -f "$ROOT/results/results.json"
 if [ ! -s "$ROOT/results/results.json" ]; then
   echo "graphkin: grade.py wrote no results.json (Python: $PYTHON)" >&2
   cat > "$ROOT/results/results.json" <<'EOF'
-{{"score": 0.0, "output": "The autograder could not start, so this submission was not graded. Your teacher can see why in the autograder's output; submit again once they have fixed it.", "visibility": "visible", "stdout_visibility": "hidden", "tests": []}}
+{{"score": 0.0, "output": "The autograder could not start, so this submission was not graded. Your teacher can see why in the autograder's output; submit again once they have fixed it.", "output_format": "text", "visibility": "visible", "stdout_visibility": "hidden", "tests": []}}
 EOF
 fi
 exit 0
@@ -139,8 +147,8 @@ exit 0
 GRADE_PY = f'''\
 """Gradescope runs this, through run_autograder, once per submission: graphkin grades the answers file.
 
-Everything it needs travelled in the autograder zip: the exercise file, {CONFIG} (the course
-secret and the roster) and graphkin itself under vendor/. vendor/ goes first on the path, so the
+Everything it needs travelled in the autograder zip: the exercise file, {CONFIG} (the roster),
+{KEYS} (the roster's keys; never the course secret) and graphkin itself under vendor/. vendor/ goes first on the path, so the
 grade comes from the graphkin that was exported, whatever else the image has installed.
 """
 
@@ -162,6 +170,7 @@ def cannot_start(root, exc):
                   "why in the autograder's output; submit again once they have fixed it.",
         "visibility": "visible",
         "stdout_visibility": "hidden",
+        "output_format": "text",
         "tests": [],
     }}
     print(f"graphkin could not be imported: {{type(exc).__name__}}: {{exc}}")
@@ -201,9 +210,13 @@ def build(bundle) -> dict:
         ``autograder.zip`` (bytes), ``README.md``, ``student_template/answers.toml``,
         ``sample_submission/answers.toml`` and ``sample_submission/submission_metadata.json``.
     """
+    if bundle.secret and bundle.students is None:
+        raise GraphkinError("gradescope: a course secret needs --roster: the autograder grades with the roster's "
+                            "precomputed keys, so that the zip never carries the secret")
     sample = bundle.sample_key()
     answers = {q["id"]: q["answer"]["text"] for q in sample["questions"]}
     return {
+        **bundle.files,
         "autograder.zip": autograder_zip(zip_members(bundle)),
         "README.md": readme(bundle),
         "student_template/answers.toml": answers_toml(bundle, None, None),
@@ -221,6 +234,7 @@ def zip_members(bundle) -> dict[str, bytes]:
         "grade.py": GRADE_PY,
         "requirements.txt": "\n".join(requirements()) + "\n",
         CONFIG: json.dumps(config(bundle), indent=2, ensure_ascii=False, sort_keys=True) + "\n",
+        KEYS: keys_text(bundle.keys()),
     }
     for name, text in bundle.files.items():
         if name in members:
@@ -231,12 +245,11 @@ def zip_members(bundle) -> dict[str, bytes]:
 
 
 def config(bundle) -> dict:
-    """What ``grade.py`` reads: the exercise, the course secret and the roster (``None`` without one)."""
+    """What ``grade.py`` reads besides the keys: the exercise and the roster (``None`` without one)."""
     return {
         "exercise": bundle.name,
         "exercise_file": bundle.exercise_file,
         "title": bundle.exercise.title,
-        "secret": bundle.secret,
         "roster": list(bundle.students) if bundle.students else None,
         "graphkin": __version__,
     }
@@ -307,6 +320,16 @@ def sample_metadata(bundle) -> dict:
     }
 
 
+def readme_commands(bundle) -> dict[str, str]:
+    """The README's shell commands, by step, exactly as printed (the tests run them as they are)."""
+    return {"make": f"graphkin exercise make {bundle.exercise_file} --roster roster.csv -o sheets.csv\n",
+            "try": local_try_commands()}
+
+
+def _indent(text: str, spaces: int) -> str:
+    return "".join(" " * spaces + line + "\n" for line in text.splitlines())
+
+
 def local_try_commands() -> str:
     """The shell commands that run the autograder on the sample submission, in a folder laid out as Gradescope's.
 
@@ -329,7 +352,8 @@ def readme(bundle) -> str:
     questions = ", ".join(bundle.question_ids())
     roster = (f"the roster given to the export ({len(bundle.students)} students; the autograder refuses an id "
               "that is not on it)" if bundle.students else
-              "no roster (any id is graded; give `--roster` to the export to have ids checked)")
+              "no roster and no course secret (any id is graded, and anyone with graphkin can compute any key; "
+              "give `--roster` and a secret to the export for graded work)")
     reqs = "\n".join(f"- `{r}`" for r in requirements())
     if bundle.students:
         test_on_gradescope = (f"To test on Gradescope, upload `sample_submission/answers.toml` as a submission of "
@@ -339,7 +363,7 @@ def readme(bundle) -> str:
     else:
         test_on_gradescope = (f"To test on Gradescope, submit as yourself: the data are drawn from your own id "
                               f"(your SID, else your email), so type the answers of "
-                              f"`graphkin exercise key {name} --student YOUR_ID --secret ...` into "
+                              f"`graphkin exercise key {bundle.exercise_file} --student YOUR_ID` into "
                               "`student_template/answers.toml` (or leave some wrong, to see the feedback).")
     return f"""\
 # {bundle.exercise.title}: Gradescope autograder
@@ -350,7 +374,8 @@ Exported by graphkin for the exercise `{name}` (questions {questions}; {total:g}
 
 | file | what it is | who sees it |
 |---|---|---|
-| `autograder.zip` | the autograder: `setup.sh`, `run_autograder`, `grade.py`, `config.json` (the course secret, the roster), `{bundle.exercise_file}`, `requirements.txt` and graphkin itself under `vendor/` | you and Gradescope only: it holds the course secret |
+| `autograder.zip` | the autograder: `setup.sh`, `run_autograder`, `grade.py`, `config.json` (the roster), `keys.json` (every roster student's answers, computed here; never the course secret), `{bundle.exercise_file}`, `requirements.txt` and graphkin itself under `vendor/` | you and Gradescope only: it holds the keys |
+| `{bundle.exercise_file}`{''.join(f', `{f}`' for f in bundle.files if f != bundle.exercise_file)} | the exercise, for the commands below | you |
 | `student_template/answers.toml` | the file students fill in and upload: one line per question, `{EXAMPLE_LINE}` | students |
 | `sample_submission/answers.toml` | the key answers of student `{bundle.sample}`, to test the autograder | you only: it holds answers |
 | `sample_submission/submission_metadata.json` | Gradescope's metadata for that student, to run the autograder on your machine | you |
@@ -366,9 +391,8 @@ Exported by graphkin for the exercise `{name}` (questions {questions}; {total:g}
    (SID) of the course roster, or the email where a student has no SID. With a CSV whose `student` column
    holds those ids, this prints every student's data (`--student ID` prints one student's sheet):
 
-       graphkin exercise make {name} --roster roster.csv --secret "$GRAPHKIN_SECRET"
-
-   (the same secret as the export, or the data will not match). A student uploads
+{_indent(readme_commands(bundle)['make'], 7)}
+   (with `GRAPHKIN_SECRET` set to the secret of the export, or the data will not match). A student uploads
    `student_template/answers.toml`, filled in; `answers.json` (`{{"F23": "27.06 N ∠ −73.78°"}}`) works too.
 4. {test_on_gradescope}
 
@@ -444,7 +468,8 @@ def _log_version() -> None:
 
 def grade_submission(root: Path, exercise_file: Path, cfg: dict) -> dict:
     """The results of one submission (a ``SubmissionError`` becomes 0 points and its sentence)."""
-    ex = runtime.exercise(exercise_file)
+    keys = Keys(root / "source" / KEYS)
+    ex = keys.exercise
     try:
         users = read_metadata(root / "submission_metadata.json")
         path = find_answers(root / "submission")
@@ -455,7 +480,7 @@ def grade_submission(root: Path, exercise_file: Path, cfg: dict) -> dict:
             claimed = answers.pop("student", None)
         if isinstance(claimed, str) and not claimed.strip():
             claimed = None  # the template's blank id: no claim
-        student, notes = whom_to_grade(users, claimed, cfg.get("roster"))
+        student, notes = whom_to_grade(users, claimed, keys.roster)
     except SubmissionError as exc:
         return not_graded(exercise_file, str(exc))
     print(f"graded as: {student!r}")
@@ -463,9 +488,8 @@ def grade_submission(root: Path, exercise_file: Path, cfg: dict) -> dict:
         wrong = runtime.identity_error(claimed, student)
         if wrong:
             return not_graded(exercise_file, wrong[0].upper() + wrong[1:] + ".")
-    secret = cfg.get("secret", "")
-    report = runtime.grade(exercise_file, student, answers, secret)
-    shown = [d["shown"] for d in runtime.sheet(exercise_file, student, secret=secret)["data"]]
+    report = keys.grade(student, answers)
+    shown = [d["shown"] for d in keys.variant(student).sheet()["data"]]
     if shown:
         notes.insert(0, "Your data: " + ", ".join(shown) + ".")
     if report.get("ignored"):
@@ -531,17 +555,24 @@ def read_answers(path: Path) -> dict:
     except UnicodeDecodeError:
         raise SubmissionError(f"{name} is not text in UTF-8: save it as plain text (UTF-8), one line per "
                               f"question, for example {EXAMPLE_LINE}.") from None
+    # Read as data; a whole number too long to convert stays text, that one answer's problem.
     if path.suffix.lower() == ".json":
         try:
-            answers = json.loads(text)
+            answers = json_answers(text)
         except json.JSONDecodeError as exc:
             raise SubmissionError(f"{name} is not valid JSON ({exc.msg} at line {exc.lineno}, column {exc.colno}). "
                                   'Write one object, for example {"F23": "27.06 N ∠ −73.78°"}.') from None
+        except ValueError as exc:
+            raise SubmissionError(f"{name} cannot be read ({exc}). Write one object, for example "
+                                  '{"F23": "27.06 N ∠ −73.78°"}.') from None
     else:
         try:
-            answers = tomllib.loads(text)
+            answers = toml_answers(text)
         except tomllib.TOMLDecodeError as exc:
             raise SubmissionError(f"{name} is not valid TOML ({exc}). Write one line per question, the answer "
+                                  f"between double quotes, for example {EXAMPLE_LINE}.") from None
+        except ValueError as exc:
+            raise SubmissionError(f"{name} cannot be read ({exc}). Write one line per question, the answer "
                                   f"between double quotes, for example {EXAMPLE_LINE}.") from None
     if not isinstance(answers, dict):
         raise SubmissionError(f"{name} must hold question ids and answers, for example {EXAMPLE_LINE}.")
@@ -636,6 +667,7 @@ def results_from_report(ex, report: dict, notes: list[str]) -> dict:
         "max_score": r["max"],
         "status": "passed" if r["verdict"] == "correct" else "failed",
         "output": runtime.feedback_line(r),
+        "output_format": "text",
         "visibility": "visible",
     } for r in report["questions"]]
     summary = f"{ex.title}\nGraded as student {report['student']!r}: {report['score']:g} / {report['max']:g} points."
@@ -650,14 +682,17 @@ def not_graded(exercise_file, reason: str) -> dict:
     """0 points, the reason as the submission's output, and every question listed at 0."""
     ex = runtime.exercise(exercise_file)
     tests = [{"name": _test_name(q), "score": 0.0, "max_score": q.points, "status": "failed",
-              "output": f"{q.id}: not graded (see the message above).", "visibility": "visible"}
+              "output": f"{q.id}: not graded (see the message above).", "output_format": "text",
+              "visibility": "visible"}
              for q in ex.questions]
     return _results(0.0, f"{ex.title}\nNot graded: {reason}", tests)
 
 
 def _results(score: float, output: str, tests: list[dict]) -> dict:
     # stdout carries the traceback of a failure and the graded id: for the teacher, not the student.
-    return {"score": score, "output": output, "visibility": "visible", "stdout_visibility": "hidden",
+    # "text": Gradescope shows the output as typed, so what a student typed never becomes HTML on the page.
+    return {"score": score, "output": output, "output_format": "text", "visibility": "visible",
+            "stdout_visibility": "hidden",
             "tests": tests}
 
 

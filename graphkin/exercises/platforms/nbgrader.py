@@ -1,135 +1,220 @@
-"""nbgrader: a source notebook for a course directory.
+"""nbgrader: a source notebook for a course directory, and a preprocessor that grades it read as data.
 
-``build(bundle)`` writes ``source/<name>/``, which the teacher copies into
-their nbgrader course directory, then runs ``nbgrader generate_assignment``
-and, once the submissions are collected, ``nbgrader autograde``. The
-notebook is made of nbgrader's own cell types:
+``build(bundle)`` writes ``source/<name>/``, which the teacher copies into their nbgrader course
+directory, then runs ``nbgrader generate_assignment`` and, once the submissions are collected,
+``nbgrader autograde``. The notebook is made of nbgrader's own cell types:
 
-- the student types their id into ``STUDENT`` (a solution cell, so it stays
-  editable) and a locked cell prints their sheet from the roster's sheets
-  that travel with the notebook, so the student's copy needs no secret;
-- each answer is a solution cell (``F23 = "3226 N ∠ −114.32°"`` between
-  ``### BEGIN SOLUTION`` and ``### END SOLUTION``, the sample student's key);
-- each question has an autograder test cell worth the question's points.
-  Its visible part only checks that the answer can be read. Its hidden part
-  checks the id nbgrader grades under against ``STUDENT``, grades the answer
-  with :func:`graphkin.exercises.platforms.runtime.grade_question`, prints
-  the feedback line and ends with the score: nbgrader takes a test cell's
-  last value as its score (partial credit).
+- the student types their id into ``STUDENT`` (a solution cell, so it stays editable) and a locked
+  cell prints their sheet from the roster's sheets that travel with the notebook;
+- each answer is a solution cell (``F23 = "3226 N ∠ −114.32°"`` between ``### BEGIN SOLUTION`` and
+  ``### END SOLUTION``, the sample student's key);
+- each question has an autograder test cell worth the question's points. Its visible part only checks
+  that the answer can be read.
 
-The course secret is not written into the notebook at all, not even into
-the hidden tests: nbgrader puts the hidden tests back into the autograded
-notebook, and ``nbgrader generate_feedback`` shows them to the student (an
-open nbgrader issue, jupyter/nbgrader#917). The hidden tests read it from
-``$GRAPHKIN_SECRET`` while ``nbgrader autograde`` runs, and check it
-against the roster's sheets (:func:`course_secret`).
+**The grade never depends on the student's code.** nbgrader grades by running the notebook in a kernel, where
+the student's code runs beside the tests. The export's ``nbgrader_config.example.py`` puts
+:func:`read_as_data` first among ``Autograde.autograde_preprocessors``: before nbgrader's ``Execute``,
+it reads the notebook as data (the literals assigned to ``STUDENT`` and to each answer's variable),
+grades them in a separate, isolated Python process with the precomputed keys
+(``graphkin-keys/<name>.json`` in the course directory, beside ``source/``; never the secret), and
+rewrites the notebook nbgrader then runs: the id and the answers as literals, each test cell as the
+feedback line and the score, and any other cell the student wrote as comments. nbgrader's ``Execute``
+then runs nothing the student wrote in the notebook, and :func:`write_grades`, after it, sets each test
+cell's output to graphkin's feedback line and score, whatever the kernel printed: nbgrader records that
+number (its partial credit). The student's id is the one nbgrader grades under; a notebook carrying
+another's scores 0.
 
-The three functions above :func:`build` run inside the notebook's kernel.
+A test cell's hidden part fails loudly when the preprocessor was not configured: under ``nbgrader
+autograde`` it stops the kernel, so nbgrader keeps no grade rather than one the notebook decided.
 """
 
 from __future__ import annotations
 
 import json
-import keyword
 import os
+import tomllib
 from pathlib import Path
 
 from graphkin.errors import GraphkinError
-from graphkin.exercises.answers import Unreadable, read_answer
-from graphkin.exercises.exercise import dimension_of
-from graphkin.exercises.grading import MESSAGES, answer_example
+from graphkin.exercises.grading import answer_example
+from graphkin.exercises.keys import keys_text
+from graphkin.exercises.notebooks import STUDENT_VARIABLE, answer_variables, notebook_answers
 from graphkin.exercises.platforms import requirements, runtime
+from graphkin.exercises.platforms.isolated import grade_submissions, submission
+from graphkin.optional import require
 
-SECRET_VARIABLE = "GRAPHKIN_SECRET"
-"""The environment variable the hidden tests read the course secret from while ``nbgrader autograde`` runs."""
+KEYS_FOLDER = "graphkin-keys"
+"""The folder of the course directory (beside ``source/``) holding each assignment's keys, ``<assignment>.json``."""
 
-STUDENT_VARIABLE = "STUDENT"
-"""The notebook variable that holds the id the student typed."""
+PREPROCESSOR = "graphkin.exercises.platforms.nbgrader.read_as_data"
+"""The importable name of :func:`read_as_data`, as ``nbgrader_config.py`` lists it."""
+
+GRADE_WRITER = "graphkin.exercises.platforms.nbgrader.write_grades"
+"""The importable name of :func:`write_grades`, as ``nbgrader_config.py`` lists it (after ``Execute``)."""
+
+GRADES = "graphkin_grades"
+"""The key of nbgrader's resources under which :func:`read_as_data` leaves the grades for :func:`write_grades`."""
+
+TIMEOUT = 60
+"""Seconds nbgrader's ``Execute`` gives each cell (``c.Execute.timeout``; the notebook has a few cells)."""
 
 SCHEMA_VERSION = 3
 """The version of nbgrader's cell metadata (nbgrader 0.6 to 0.9)."""
 
 _BEGIN, _END = "### BEGIN SOLUTION", "### END SOLUTION"
 _BEGIN_HIDDEN, _END_HIDDEN = "### BEGIN HIDDEN TESTS", "### END HIDDEN TESTS"
+_READ = "  # read from your notebook as data"
 
 
 # ---------------------------------------------------------------------------
-# Run by the notebook's cells, on the students' and the grader's machines
+# Run by nbgrader autograde, in nbgrader's own process (never in the kernel)
 
 
-def graded_as(claimed):
-    """The student id nbgrader grades this notebook under; outside ``nbgrader autograde``, ``claimed``.
+def course_root(resources) -> Path:
+    """The course directory of the notebook nbgrader is autograding.
 
-    nbgrader does not hand the student's id to the kernel, but it runs the
-    notebook in ``autograded/<student>/<assignment>/`` (its default
-    ``CourseDirectory.directory_structure``) and sets ``NBGRADER_EXECUTION``
-    to ``"autograde"``; the folder above the working directory is the
-    student. ``$NBGRADER_STUDENT``, when set, takes precedence (for a course
-    with another directory structure, graded one student at a time).
+    nbgrader runs it in ``autograded/<student>/<assignment>/`` (its default
+    ``CourseDirectory.directory_structure``), three folders below the course directory.
+    """
+    path = Path((resources.get("metadata") or {}).get("path") or ".").resolve()
+    return path.parents[2] if len(path.parents) > 2 else Path.cwd()
+
+
+def read_as_data(nb, resources):
+    """nbgrader preprocessor: grade the notebook read as data, and leave it nothing of the student's to run.
 
     Parameters
     ----------
-    claimed : object
-        What the notebook's ``STUDENT`` holds: returned as it is when the
-        notebook is not being autograded (a student's own run, or ``nbgrader
-        validate``), so the identity check passes there.
+    nb : nbformat.NotebookNode
+        The submitted notebook, after nbgrader's sanitizing (locked cells restored).
+    resources : dict
+        nbgrader's resources; ``resources["nbgrader"]`` names the student and the assignment.
+
+    Returns
+    -------
+    nb, resources
+        The notebook with the id and each answer as literals, each test cell printing graphkin's feedback
+        line and ending in the score, every other cell of the student's commented out. A notebook of an
+        assignment without keys (not graphkin's) is returned as it is.
     """
-    explicit = os.environ.get("NBGRADER_STUDENT", "").strip()
-    if explicit:
-        return explicit
-    if os.environ.get("NBGRADER_EXECUTION") == "autograde":
-        return Path.cwd().parent.name
-    return claimed
+    info = resources.get("nbgrader") or {}
+    keys = course_root(resources) / KEYS_FOLDER / f"{info.get('assignment')}.json"
+    if not keys.is_file():
+        return nb, resources
+    data = json.loads(keys.read_text(encoding="utf-8"))
+    qids = [q["id"] for q in tomllib.loads(data["exercise"]["text"])["questions"]]
+    names = answer_variables(qids)
+    claimed, answers = notebook_answers(nb, names)
+    report = grade_submissions(keys, [submission(str(info.get("student")), answers, claimed)])[0]
+    results = {r["id"]: r for r in report["questions"]}
+    resources[GRADES] = {"tests": {_grade_id("test", r["id"]): (runtime.feedback_line(r), float(r["score"]))
+                                   for r in report["questions"]},
+                         "sheet": runtime.summary(report)}
+    by_grade_id = {_grade_id("answer", q): q for q in qids}
+    tests = {_grade_id("test", q): q for q in qids}
+    for cell in nb.cells:
+        if cell.get("cell_type") != "code":
+            continue
+        meta = cell.get("metadata", {}).get("nbgrader", {})
+        gid = meta.get("grade_id", "")
+        if gid == "student":
+            cell.source = f"{STUDENT_VARIABLE} = {_python_literal(claimed)}{_READ}"
+        elif gid in by_grade_id:
+            qid = by_grade_id[gid]
+            cell.source = f"{names[qid]} = {_python_literal(answers[qid])}{_READ}"
+        elif gid in tests:
+            r = results[tests[gid]]
+            cell.source = ("# graded by graphkin from your notebook read as data\n"
+                           f"print({runtime.feedback_line(r)!r})\n{float(r['score'])!r}")
+        elif not (meta.get("locked") and not meta.get("solution")):
+            # A cell the student wrote or could edit: kept for the teacher to read, never run.
+            lines = cell.source.splitlines() or [""]
+            cell.source = "# not run when graded: answers are read from the notebook as data\n" + \
+                "\n".join("# " + line for line in lines)
+    return nb, resources
 
 
-def course_secret(exercise_file, student: str, sheets) -> str:
-    """The course secret for grading ``student``: ``$GRAPHKIN_SECRET``, checked against the roster's sheet.
+def write_grades(nb, resources):
+    """nbgrader preprocessor, after ``Execute``: each test cell's output is graphkin's feedback line and score.
 
-    The variant drawn with the secret must give the data the student was
-    shown (their sheet in ``sheets``). Otherwise every answer would be graded
-    against data the student never saw, and nbgrader records an erroring
-    test cell as 0 without a word; so under ``nbgrader autograde`` the kernel
-    is stopped after writing the reason to the terminal: nbgrader then
-    reports the submission as failed and keeps no grade for it. Elsewhere
-    (``nbgrader validate`` of the source notebook) it raises.
+    nbgrader scores a test cell by its output (the number it ends with). :func:`read_as_data` left the
+    kernel only literals to run, but the kernel starts in the folder nbgrader copied the submission into,
+    where a student can hand in extra files (a ``json.py`` that Python imports before the real one).
+    Whatever the kernel printed, the outputs of graphkin's test cells are set here from the report of the
+    isolated grading, so the grade nbgrader saves never depends on the kernel; the sheet cell shows whom
+    the notebook was graded as and their data; every other output is dropped, so nothing the kernel
+    printed reaches the feedback students get back.
 
-    Raises
-    ------
-    GraphkinError
-        If ``student`` is not on the roster (the sentence says so), or the
-        secret does not give the student's sheet (outside autograde).
+    Parameters
+    ----------
+    nb : nbformat.NotebookNode
+        The notebook as ``Execute`` left it.
+    resources : dict
+        nbgrader's resources, carrying :func:`read_as_data`'s grades (absent for other assignments,
+        whose notebooks pass through unchanged).
+
+    Returns
+    -------
+    nb, resources
     """
-    secret = os.environ.get(SECRET_VARIABLE, "")
-    shown = runtime.sheet(exercise_file, student, sheets)["data"]
-    if runtime.variant(exercise_file, student, secret).sheet()["data"] == shown:
-        return secret
-    why = (f"{SECRET_VARIABLE} is not set" if not secret else
-           f"${SECRET_VARIABLE} is not the secret this assignment was exported with")
-    message = (f"graphkin: cannot grade {student!r}: {why}, so the data it draws differs from the student's sheet; "
-               f"run {SECRET_VARIABLE}=<the course secret> nbgrader autograde <assignment>")
+    import nbformat
+
+    grades = resources.get(GRADES)
+    if not grades:
+        return nb, resources
+    tests = grades["tests"]
+    for cell in nb.cells:
+        if cell.get("cell_type") != "code":
+            continue
+        gid = cell.get("metadata", {}).get("nbgrader", {}).get("grade_id", "")
+        if gid in tests:
+            line, score = tests[gid]
+            cell.outputs = [nbformat.v4.new_output("stream", name="stdout", text=line + "\n"),
+                            nbformat.v4.new_output("execute_result", data={"text/plain": repr(score)},
+                                                   execution_count=cell.get("execution_count"))]
+        elif gid == "sheet":
+            cell.outputs = [nbformat.v4.new_output("stream", name="stdout", text=grades["sheet"] + "\n")]
+        else:
+            # Nothing the kernel printed reaches the feedback students get back (it ran in a folder holding
+            # their files, beside the course's keys).
+            cell.outputs = []
+    return nb, resources
+
+
+def _python_literal(value) -> str:
+    """A value as a Python literal for the rewritten notebook (text and numbers; anything else None)."""
+    if isinstance(value, str):
+        return repr(value)
+    if isinstance(value, (int, float)) and not isinstance(value, bool) and abs(value) < 1e300:
+        return repr(value)
+    return "None"
+
+
+def not_read_as_data() -> None:
+    """The hidden part of a test cell: reached only when :func:`read_as_data` did not rewrite the notebook.
+
+    Under ``nbgrader autograde`` the grade would come from a kernel that ran the student's code, so the
+    kernel is stopped after a sentence on the terminal: nbgrader reports the submission as failed and
+    keeps no grade. Elsewhere (``nbgrader validate`` of the source notebook) it does nothing.
+    """
     if os.environ.get("NBGRADER_EXECUTION") == "autograde":
-        # The kernel's own stderr reaches the terminal that runs nbgrader; the cell's output would not.
+        message = (f"graphkin: this notebook must be graded read as data: add {PREPROCESSOR!r} first to "
+                   "c.Autograde.autograde_preprocessors in nbgrader_config.py (see the export's "
+                   "nbgrader_config.example.py), then run nbgrader autograde again")
         os.write(2, (message + "\n").encode("utf-8"))
         os._exit(3)
-    raise GraphkinError(message)
 
 
-def check_answer(exercise_file, qid: str, answer) -> None:
-    """The visible test: an answer is given and can be read (whether it is right is not told).
+def check_answer(exercise_file, qid: str, answer, variable: str | None = None) -> None:
+    """The visible test: an answer is given, typed as text, and can be read (whether it is right is not told).
 
-    Raises ``AssertionError`` (what nbgrader's *Validate* reports) with the
-    grader's own sentence for an answer that would be graded missing or
-    unreadable, which earn nothing whatever the data; anything else passes,
-    and the hidden test grades it. The answer is read as data, never run.
+    Raises ``AssertionError`` (what nbgrader's *Validate* reports) with the grader's own sentence for an
+    answer that would be graded missing or unreadable, which earn nothing whatever the data; anything else
+    passes. The answer is read as data, never run.
     """
-    q = runtime.exercise(exercise_file).question(qid)
-    value = runtime.answer_value(answer)
-    if value is None or (isinstance(value, str) and not value.strip()):
-        raise AssertionError(MESSAGES["missing"].format(name=qid))
-    try:
-        read_answer(value, dimension=dimension_of(q.kind, q.part), unit=q.unit)
-    except Unreadable as exc:
-        raise AssertionError(str(exc)) from None
+    problem = runtime.readable_problem(exercise_file, qid, answer, variable)
+    if problem:
+        raise AssertionError(problem)
     print(f"{qid}: your answer can be read; it is graded after you hand in.")
 
 
@@ -150,16 +235,18 @@ def build(bundle) -> dict:
         With a course secret but no roster: the student's notebook would
         need the secret to draw the student's data.
     """
+    require("nbformat", "an export to nbgrader")
     if bundle.secret and not bundle.sheets:
         raise GraphkinError("nbgrader with a course secret needs a roster (--roster CSV): the student's notebook "
-                            "prints the student's data from the roster's sheets; without them it would need the "
-                            "secret, which students must not see")
+                            "prints the student's data from the roster's sheets, and grading uses the roster's "
+                            "precomputed keys; neither carries the secret")
     name = bundle.name
     folder = f"source/{name}"
     tree = {f"{folder}/{file}": text for file, text in bundle.files.items()}
     if bundle.sheets:
         tree[f"{folder}/{_sheets_file(bundle)}"] = json.dumps(bundle.sheets, ensure_ascii=False, indent=1) + "\n"
     tree[f"{folder}/{name}.ipynb"] = _notebook(bundle)
+    tree[f"{KEYS_FOLDER}/{name}.json"] = keys_text(bundle.keys())
     tree["nbgrader_config.example.py"] = _config_example()
     tree["README.md"] = _readme(bundle)
     return tree
@@ -169,26 +256,10 @@ def _sheets_file(bundle) -> str | None:
     return f"{bundle.name}-sheets.json" if bundle.sheets else None
 
 
-_TAKEN = {STUDENT_VARIABLE, "runtime", "check_answer", "course_secret", "graded_as"}
-"""Names the notebook's own cells use: no answer may be typed into one of them."""
-
-
 def variables(bundle) -> dict[str, str]:
-    """Question id → the notebook variable the student types the answer into.
-
-    The id itself when it is a Python name the notebook does not use
-    (``F23``); else ``answer_`` and the id with dots as underscores
-    (``peak.at`` → ``answer_peak_at``, ``runtime`` → ``answer_runtime``).
-    """
-    names = {}
-    for qid in bundle.question_ids():
-        ok = qid.isidentifier() and not keyword.iskeyword(qid) and qid not in _TAKEN and not qid.startswith("_")
-        names[qid] = qid if ok else "answer_" + qid.replace(".", "_")
-    clash = sorted({v for v in names.values() if list(names.values()).count(v) > 1})
-    if clash:
-        raise GraphkinError(f"{bundle.name}: question ids give the same notebook variable {', '.join(clash)}; "
-                            "rename one of them")
-    return names
+    """Question id → the notebook variable the student types the answer into
+    (:func:`graphkin.exercises.notebooks.answer_variables`)."""
+    return answer_variables(bundle.question_ids())
 
 
 def _grade_id(prefix: str, qid: str) -> str:
@@ -279,33 +350,15 @@ def _answer_cell(variable: str, answer: str) -> str:
 
 
 def _test_cell(bundle, qid: str, variable: str) -> str:
-    """The autograder test: a visible readability check, then the hidden grading that ends in the score."""
+    """The autograder test: a visible readability check; the hidden part only stops an autograde that did not
+    read the notebook as data (:func:`read_as_data` replaces the whole cell with the grade)."""
     file = _literal(bundle.exercise_file)
-    if bundle.secret:  # (an export with a secret always has the roster's sheets: build() sees to it)
-        secret = (f"course_secret({file}, _graded, {_literal(_sheets_file(bundle))})  "
-                  f"# ${SECRET_VARIABLE}, checked against the sheet")
-        imports = "from graphkin.exercises.platforms.nbgrader import course_secret, graded_as"
-    else:
-        # No secret: every variant is drawn from the id alone, whatever $GRAPHKIN_SECRET holds.
-        secret = '""  # this export has no course secret'
-        imports = "from graphkin.exercises.platforms.nbgrader import graded_as"
     return f"""# Checks only that {variable} can be read, not whether it is right.
 from graphkin.exercises.platforms.nbgrader import check_answer
-check_answer({file}, {_literal(qid)}, {variable})
+check_answer({file}, {_literal(qid)}, {variable}, {_literal(variable)})
 {_BEGIN_HIDDEN}
-from graphkin.exercises.platforms import runtime
-{imports}
-_graded = graded_as({STUDENT_VARIABLE})  # whom nbgrader grades (its folder), whatever the notebook says
-_refused = runtime.identity_error({STUDENT_VARIABLE}, _graded)
-if _refused:
-    print(_refused)
-    _score = 0.0
-else:
-    _secret = {secret}
-    _result = runtime.grade_question({file}, _graded, {_literal(qid)}, {variable}, _secret)
-    print(runtime.feedback_line(_result))
-    _score = _result["score"]
-_score  # the last value is the cell's score: nbgrader's partial credit
+from graphkin.exercises.platforms.nbgrader import not_read_as_data
+not_read_as_data()  # graphkin grades this notebook read as data, before nbgrader runs it
 {_END_HIDDEN}"""
 
 
@@ -314,8 +367,32 @@ def _literal(text: str) -> str:
     return json.dumps(text, ensure_ascii=False)
 
 
+def config_lines() -> list[str]:
+    """The lines a course's ``nbgrader_config.py`` needs for graphkin's notebooks (the tests run them)."""
+    return [
+        "# graphkin's notebooks are graded read as data: its preprocessor comes before nbgrader's Execute, grades",
+        "# the answers in a process of its own, and leaves the kernel nothing of the student's to run. (It passes",
+        "# the notebooks of other assignments, which have no graphkin-keys/<assignment>.json, through unchanged.)",
+        "# After Execute, its grade writer sets each test cell's output from that grading, whatever the kernel did.",
+        "c.Autograde.autograde_preprocessors = [",
+        f"    {PREPROCESSOR!r},",
+        '    "nbgrader.preprocessors.Execute",',
+        f"    {GRADE_WRITER!r},",
+        '    "nbgrader.preprocessors.IgnorePattern",',
+        '    "nbconvert.preprocessors.ClearMetadataPreprocessor",',
+        '    "nbgrader.preprocessors.LimitOutput",',
+        '    "nbgrader.preprocessors.SaveAutoGrades",',
+        '    "nbgrader.preprocessors.AssignLatePenalties",',
+        '    "nbgrader.preprocessors.CheckCellMetadata",',
+        "]",
+        "# A time limit per cell, so that no notebook holds up the class.",
+        f"c.Execute.timeout = {TIMEOUT}",
+    ]
+
+
 def _config_example() -> str:
-    return '''"""An example nbgrader_config.py for a course that grades graphkin's exercises.
+    lines = "\n".join(config_lines())
+    return f'''"""An example nbgrader_config.py for a course that grades graphkin's exercises.
 
 Named nbgrader_config.example.py so that it never replaces your own: merge
 what you lack into your course's nbgrader_config.py.
@@ -327,75 +404,123 @@ c = get_config()  # noqa: F821 (nbgrader defines it)
 # c.CourseDirectory.db_url).
 c.CourseDirectory.course_id = "mechanics"
 
-# graphkin's hidden tests read the student's id from the folder nbgrader grades in,
-# autograded/<student>/<assignment>/: keep nbgrader's default directory structure,
-#   c.CourseDirectory.directory_structure = "{nbgrader_step}/{student_id}/{assignment_id}"
+{lines}
+
+# graphkin finds an assignment's keys in graphkin-keys/ of the course directory, from the folder nbgrader
+# autogrades in, autograded/<student>/<assignment>/: keep nbgrader's default directory structure,
+#   c.CourseDirectory.directory_structure = "{{nbgrader_step}}/{{student_id}}/{{assignment_id}}"
 '''
+
+
+def readme_commands(bundle) -> dict[str, str]:
+    """The README's shell commands, by step, exactly as printed (the tests run them as they are).
+
+    They run in the course directory, with the export in ``export/`` beside the course's files.
+    """
+    name = bundle.name
+    return {
+        "setup": (f"mkdir -p source && cp -r export/source/{name} source/\n"
+                  f"mkdir -p {KEYS_FOLDER} && cp export/{KEYS_FOLDER}/{name}.json {KEYS_FOLDER}/\n"),
+        "generate": f"nbgrader generate_assignment {name}\n",
+        "autograde": f"nbgrader autograde {name}\nnbgrader export\n",
+        "feedback": f"nbgrader generate_feedback {name}\n",
+        "regrade": (f"graphkin exercise grade export/source/{name}/{bundle.exercise_file} --keys "
+                    f"{KEYS_FOLDER}/{name}.json --answers submitted/*/{name}/{name}.ipynb --student-from folder "
+                    "-o regraded.csv\n"),
+    }
 
 
 def _readme(bundle) -> str:
     """The export's README: what each file is, then nbgrader's commands, step by step."""
     name = bundle.name
+    cmd = readme_commands(bundle)
     files = [f"- `source/{name}/{name}.ipynb`: the source notebook (the sample answers of student "
-             f"`{bundle.sample}` in solution regions, the grading in hidden tests).",
-             f"- `source/{name}/{bundle.exercise_file}`: the exercise; the notebook reads it, on the students' "
-             "machines and when grading."]
+             f"`{bundle.sample}` in solution regions; the test cells).",
+             f"- `source/{name}/{bundle.exercise_file}`: the exercise; the notebook reads it to print the sheet and "
+             "to check that an answer can be read."]
     files += [f"- `source/{name}/{f}`: the exercise's base problem." for f in bundle.files if f != bundle.exercise_file]
     if bundle.sheets:
         files.append(f"- `source/{name}/{_sheets_file(bundle)}`: each roster student's sheet (data and questions, "
                      "no answers); the student's notebook prints its own from it.")
-    files += ["- `nbgrader_config.example.py`: an example configuration, to merge into your own "
-              "`nbgrader_config.py` (named so that it never replaces yours).",
+    files += [f"- `{KEYS_FOLDER}/{name}.json`: the **keys**: each roster student's answers, computed with the "
+              "course secret (which they do not hold). Teachers only: it goes into the course directory, never "
+              "into `source/` (whatever is there is released).",
+              "- `nbgrader_config.example.py`: the configuration graphkin needs (its preprocessor, a time limit per "
+              "cell), to merge into your own `nbgrader_config.py` (named so that it never replaces yours).",
               "- `README.md`: this file."]
-    secret_env = f"{SECRET_VARIABLE}=<the course secret> " if bundle.secret else ""
     if bundle.secret:
-        secret_note = (f"The course secret is in none of these files. The hidden tests read it from "
-                       f"`${SECRET_VARIABLE}` while `nbgrader autograde` runs; without it (or with another one) "
-                       "autograde stops with `graphkin: cannot grade ...` and keeps no grade.")
+        secret_note = "The course secret is in none of these files: grading uses the keys."
     else:
         secret_note = ("This export has no course secret: anyone with graphkin can compute any student's key "
                        "from their id.")
     reqs = "\n".join(f"    {r}" for r in requirements())
     first = bundle.exercise.questions[0]
     typed = f"{variables(bundle)[first.id]} = {_literal(_example_answer(bundle, first))}"
+    config = "\n".join(f"    {line}" for line in config_lines())
     return f"""# {bundle.exercise.title}: nbgrader
 
-Exported by graphkin for nbgrader (tried with nbgrader 0.9.6).
+Exported by graphkin for nbgrader (tried with nbgrader 0.9.6). **The grade never comes from the student's
+code**: graphkin's preprocessor reads each handed-in notebook as a file (the text assigned to `STUDENT` and
+to each answer), grades those answers in a separate Python process that holds the keys, and leaves
+nbgrader's kernel only the answers as literals; after the kernel, its grade writer sets each test cell's
+output to graphkin's feedback line and score. Files a student hands in beside the notebook still sit in
+the folder the kernel starts in (nbgrader copies them), where Python may import them: autograde in a
+container, or as a user that cannot write the course directory.
 
 ## Files
 
 {chr(10).join(files)}
 
-{secret_note}
+{secret_note} See `docs/platforms/nbgrader.md` in graphkin for what students can and cannot learn or do.
 
 ## Steps
 
-In your nbgrader course directory (the folder with `nbgrader_config.py`). Put your environment's
-`bin` folder first on `PATH`: nbgrader runs `alembic` from `PATH` for its gradebook, and without
-it `nbgrader generate_assignment` fails with `FileNotFoundError: ... 'alembic'`.
+In your nbgrader course directory (the folder with `nbgrader_config.py`), with this export copied into it
+as `export/`. Put your environment's `bin` folder first on `PATH`: nbgrader runs `alembic` from `PATH` for
+its gradebook, and without it `nbgrader generate_assignment` fails with `FileNotFoundError: ... 'alembic'`.
 
-1. Copy `source/{name}/` into the course's `source/` folder (and, if you have no
-   `nbgrader_config.py` yet, `nbgrader_config.example.py` as `nbgrader_config.py`).
-2. `nbgrader generate_assignment {name}`: writes the students' copy in `release/{name}/`
-   (no answers, no hidden tests).
-3. Release and collect as usual (`nbgrader release_assignment {name}` and
-   `nbgrader collect {name}`, or your hub's or LMS's way): submissions go to
-   `submitted/<student>/{name}/{name}.ipynb`.
-4. `{secret_env}nbgrader autograde {name}` (students missing from the gradebook are added).
-5. `nbgrader export`: `grades.csv`, one row per student and assignment; per-question scores
-   are in the formgrader and the gradebook.
-6. `nbgrader generate_feedback {name}` if you return feedback: it shows each test cell's
-   feedback line, and also the hidden tests' code (no key and no secret are in it).
+1. Add graphkin's lines to `nbgrader_config.py` (they are in `nbgrader_config.example.py`):
+
+{config}
+
+2. Copy the assignment and its keys into the course:
+
+   ```sh
+{_indent(cmd['setup'])}   ```
+
+3. Write the students' copy in `release/{name}/` (no answers, no hidden tests):
+
+   ```sh
+{_indent(cmd['generate'])}   ```
+
+4. Release and collect as usual (`nbgrader release_assignment {name}` and `nbgrader collect {name}`, or
+   your hub's or LMS's way): submissions go to `submitted/<student>/{name}/{name}.ipynb`.
+
+5. Grade, and write `grades.csv` (one row per student and assignment; per-question scores are in the
+   formgrader and the gradebook):
+
+   ```sh
+{_indent(cmd['autograde'])}   ```
+
+6. If you return feedback (each test cell shows graphkin's feedback line; no key, no secret):
+
+   ```sh
+{_indent(cmd['feedback'])}   ```
+
+7. Grade the same notebooks again outside nbgrader, read as data (the scores are those of step 5):
+
+   ```sh
+{_indent(cmd['regrade'])}   ```
 
 ## What students see
 
 The notebook: they type their id (`{STUDENT_VARIABLE} = "..."`), run the next cell to print their
 own data and the questions, type each answer as text (`{typed}`), and the cell
-under each answer tells them only whether it can be read. After autograde each test cell prints one
-line, e.g. `T12: slip (sign), 0.5 / 1 — The size is right but the sense is wrong: ...`, and scores
-that share of the question's points. A notebook whose `{STUDENT_VARIABLE}` is not the student nbgrader
-grades it as scores 0 on every question, with the sentence
-`this submission carries the student id '...' but was handed in by '...'`.
+under each answer tells them only whether it can be read (and whether it is typed as text: an answer
+written as a calculation is not read). After autograde each test cell prints one line, e.g.
+`T12: slip (sign), 0.5 / 1 — The size is right but the sense is wrong: ...`, and scores that share of the
+question's points. A notebook whose `{STUDENT_VARIABLE}` is not the student nbgrader grades it as scores 0
+on every question, with the sentence `This submission carries the student id '...' but was handed in by '...'`.
 
 ## What the machines need
 
@@ -406,4 +531,10 @@ version that made this export) and its requirements:
 """
 
 
-__all__ = ["SECRET_VARIABLE", "STUDENT_VARIABLE", "build", "check_answer", "course_secret", "graded_as", "variables"]
+def _indent(text: str) -> str:
+    return "".join(f"   {line}\n" for line in text.splitlines())
+
+
+__all__ = ["GRADES", "GRADE_WRITER", "KEYS_FOLDER", "PREPROCESSOR", "STUDENT_VARIABLE", "TIMEOUT", "build",
+           "check_answer", "config_lines", "course_root", "not_read_as_data", "read_as_data", "readme_commands",
+           "variables", "write_grades"]

@@ -1,142 +1,96 @@
-"""Export an exercise to otter-grader: one master notebook that ``otter assign`` splits.
+"""Export an exercise to otter-grader: one master notebook that ``otter assign`` splits, and a plugin that grades.
 
-otter-grader (https://otter-grader.readthedocs.io) works from a *master
-notebook*: question cells, solutions between markers and tests.
-``otter assign`` turns it into the student notebook (solutions replaced by
-``...``, hidden tests removed) and an autograder zip for Gradescope (or for
-``otter run`` on the teacher's machine).
+otter-grader (https://otter-grader.readthedocs.io) works from a *master notebook*: question cells,
+solutions between markers and tests. ``otter assign`` turns it into the student notebook (solutions
+replaced by ``...``, hidden tests removed) and an autograder zip for ``otter run`` (or Gradescope).
 
-Otter has one seed per class, not one per student, so nothing here asks it
-for random data. Each student's data comes from their id, as in
-``graphkin exercise make``: the notebook asks for the id (``STUDENT``) and
-prints the student's sheet; the hidden tests hand the id, the answer and the
-course secret to :mod:`graphkin.exercises.platforms.runtime`, which recomputes
-the student's reference and grades with graphkin's own grader. A failing test
-therefore carries graphkin's feedback sentence, not otter's bare "test failed".
+Otter has one seed per class, not one per student, so nothing here asks it for random data. Each
+student's data come from their id, as in ``graphkin exercise make``: the notebook asks for the id
+(``STUDENT``) and prints the student's sheet from the roster's sheets.
 
-Otter's test cases score all or nothing, and graphkin's grader gives partial
-credit for a diagnosed slip. A question becomes one hidden test case per
-*credit level*: the distinct scores a slip can earn and the full score (see
-:func:`credit_levels`). The case for a level passes when graphkin's score
-reaches it, and is worth the step from the level below, so the cases that
-pass add up to exactly graphkin's score.
+**Grading never runs the student's notebook.** Otter grades by running the notebook and its tests in one
+kernel, where a notebook can replace any function a test calls. The export registers :class:`Plugin`
+with otter instead, which, before otter runs anything:
 
-What the test functions call (:func:`check` and :func:`readable`) is in this
-module, so a test cell stays a few lines: otter keeps only the function
-definition of a test cell, and passes the function's arguments by name from
-the student's namespace (``STUDENT`` and the answer's variable).
+1. reads the handed-in notebook as data (:func:`graphkin.exercises.notebooks.notebook_answers`: the
+   literal assigned to ``STUDENT`` and to each answer's variable, never run);
+2. grades those answers in a separate, isolated Python process that holds the precomputed keys and
+   not the course secret (:mod:`graphkin.exercises.platforms.isolated`), importing graphkin from the
+   autograder's own copy;
+3. hands otter, in place of the student's notebook, one made of those literals only, so the kernel
+   otter starts runs nothing the student wrote;
+
+and after otter's tests, writes graphkin's score and feedback into otter's results, question by
+question (partial credit as it is; the hidden test case itself, in the kernel, never passes: a grade
+comes from the plugin or not at all). ``otter run`` gives each notebook a time limit (the plugin
+stops it with otter's own error after ``timeout`` seconds), and ``graphkin exercise collect`` makes
+one class table of the ``results.json`` files.
 """
 
 from __future__ import annotations
 
+import html
 import json
-import keyword
-from functools import lru_cache
+import signal
+import threading
+import tomllib
 from pathlib import Path
 
 from graphkin.errors import GraphkinError
-from graphkin.exercises.answers import Unreadable, read_answer
-from graphkin.exercises.exercise import dimension_of
-from graphkin.exercises.grading import MESSAGES
+from graphkin.exercises.keys import keys_text
+from graphkin.exercises.notebooks import STUDENT_VARIABLE, answer_variables, notebook_answers
 from graphkin.exercises.platforms import requirements, runtime, vendor_files
-
-GRADESCOPE_METADATA = "/autograder/submission_metadata.json"
-"""Where Gradescope puts the submission's metadata (who handed it in) on its grading machine."""
+from graphkin.exercises.platforms.isolated import grade_submissions, submission
+from graphkin.optional import require
 
 VENDOR = "vendor"
 """The folder of the export (and of the student's and the autograder's folders) holding graphkin itself."""
 
-# Names the notebook itself uses: a question's answer variable must not take one of them.
-_RESERVED = {"STUDENT", "grader", "otter", "runtime", "sys"}
+TIMEOUT = 120
+"""Seconds ``otter run`` may spend on one notebook before the plugin stops it."""
+
+PLUGIN = "graphkin.exercises.platforms.otter.Plugin"
+"""The plugin's importable name, as the assignment's configuration lists it."""
 
 
 # ---------------------------------------------------------------------------------------------------------
-# What the exported tests call on the platform
+# What the exported tests call, in the student's kernel (they decide nothing)
 # ---------------------------------------------------------------------------------------------------------
 
-def check(exercise_file, student, qid: str, answer, secret: str = "", *, level: float, sheets=None,
-          metadata=GRADESCOPE_METADATA) -> None:
-    """One hidden test case: pass when graphkin gives ``answer`` at least ``level`` points.
+def readable(exercise_file, qid: str, answer, variable: str | None = None) -> None:
+    """The public test case: the answer is given, typed as text, and can be read (its value is not checked).
 
-    Parameters
-    ----------
-    exercise_file : str or Path
-        The exercise file that travelled with the export (relative to the working folder).
-    student : str
-        The id the student typed in the notebook (``STUDENT``).
-    qid : str
-        The question's id.
-    answer
-        What the student's answer variable holds (text, a number, or ``...`` if unanswered).
-    secret : str
-        The course secret (only the autograder's copy of the tests carries it).
-    level : float
-        The points this test case asks for (one of :func:`credit_levels`).
-    sheets : str or Path, optional
-        The roster's sheets (JSON): an id that is not on the roster scores nothing.
-    metadata : str or Path
-        Gradescope's submission metadata; when it names who handed the notebook in,
-        an id that is not theirs scores nothing. Absent when grading locally.
+    It needs neither the student's key nor the secret, so it leaks nothing; students run it with
+    ``grader.check``.
 
     Raises
     ------
     AssertionError
-        When the answer earns less than ``level``: the message is graphkin's
-        feedback line for the question (verdict, points and the sentence).
+        With the sentence the grader gives a missing or unreadable answer.
     """
-    problem = _student_problem(exercise_file, student, sheets, metadata)
+    problem = runtime.readable_problem(exercise_file, qid, answer, variable)
     if problem:
-        raise AssertionError(f"{qid}: 0 points — {problem}")
-    result = _graded(exercise_file, student, qid, answer, secret)
-    if result["score"] < level * (1 - 1e-9):
-        raise AssertionError(runtime.feedback_line(result))
+        raise AssertionError(problem)
 
 
-def readable(exercise_file, qid: str, answer) -> None:
-    """The public test case: the answer is given and can be read (its value is not checked).
+def graded_by_plugin(qid: str) -> None:
+    """The hidden test case in the kernel: it never passes. graphkin's :class:`Plugin` writes the grade.
 
-    It needs neither the student's key nor the secret, so it leaks nothing;
-    students run it with ``grader.check``.
-
-    Raises
-    ------
-    AssertionError
-        With the sentence ``graphkin exercise grade`` gives a missing or an unreadable answer.
+    Otter runs hidden tests in the same kernel as the student's notebook; a grade decided there could
+    be forged. So this case fails, and the plugin, which graded the notebook read as data in a process
+    of its own, overwrites its result and score. An autograder without the plugin gives 0, never a
+    grade the student's code decided.
     """
-    value = runtime.answer_value(answer)
-    if value is None or (isinstance(value, str) and not value.strip()):
-        raise AssertionError(MESSAGES["missing"].format(name=qid))
-    q = runtime.exercise(exercise_file).question(qid)
-    try:
-        read_answer(value, dimension=dimension_of(q.kind, q.part), unit=q.unit)
-    except Unreadable as exc:
-        raise AssertionError(str(exc)) from None
+    raise AssertionError(f"{qid} is graded by graphkin's otter plugin, from the notebook read as data")
 
 
-def _student_problem(exercise_file, student, sheets, metadata) -> str | None:
-    """Why this notebook cannot be graded under the id it carries (a sentence), or None."""
-    if not isinstance(student, str) or not student.strip():
-        return ("this notebook carries no student id: type yours in the STUDENT cell, in quotes, "
-                "as your teacher gave it")
-    try:
-        if sheets is not None:
-            runtime.sheet(exercise_file, student, sheets)  # refuses an id that is not on the roster
-    except GraphkinError as exc:
-        return str(exc)
-    # Gradescope names who handed the notebook in (several for a group): the id must be one of theirs.
-    ids = _submitters(metadata)
-    if ids and all(runtime.identity_error(student, who) for who in ids):
-        return runtime.identity_error(student, ids[0])
-    return None
-
+# ---------------------------------------------------------------------------------------------------------
+# The plugin, run by otter in its own process (never in the kernel)
+# ---------------------------------------------------------------------------------------------------------
 
 def _submitters(metadata) -> list[str]:
     """Who handed the submission in, by Gradescope's metadata (student id, else email); [] if unknown."""
-    try:
-        data = json.loads(Path(metadata).read_text(encoding="utf-8"))
-    except (OSError, ValueError):
-        return []
-    users = data.get("users") if isinstance(data, dict) else None
+    users = metadata.get("users") if isinstance(metadata, dict) else None
     ids = []
     for user in users if isinstance(users, list) else []:
         if isinstance(user, dict):
@@ -146,95 +100,179 @@ def _submitters(metadata) -> list[str]:
     return ids
 
 
-def _graded(exercise_file, student, qid, answer, secret) -> dict:
-    """graphkin's result for one answer; the credit-level cases of a question share one grading."""
-    if isinstance(answer, (str, int, float)) and not isinstance(answer, bool):
-        return _graded_cached(str(Path(exercise_file).resolve()), student, qid, type(answer), answer, secret)
+class Plugin:
+    """otter-grader's plugin: grades the notebook read as data, in an isolated process, and writes the result.
 
-    return runtime.grade_question(exercise_file, student, qid, answer, secret)
+    otter makes one per submission, with its path, Gradescope's submission metadata (``{}`` under
+    ``otter run``) and this plugin's configuration from ``otter_config.json``: ``keys`` (the keys file,
+    in the autograder's ``files/``) and ``timeout`` (seconds per notebook).
+    """
+
+    def __init__(self, submission_path, submission_metadata, plugin_config):
+        self.submission_path = Path(submission_path) if submission_path else None
+        self.metadata = submission_metadata if isinstance(submission_metadata, dict) else {}
+        self.config = plugin_config if isinstance(plugin_config, dict) else {}
+        self.report = None
+
+    def _files(self) -> Path:
+        # The autograder's own copy of the assignment's files (source/files/), which the student's upload
+        # cannot replace: otter copies them into the submission folder, but keeps a folder the upload has.
+        return self.submission_path.parent.parent / "source" / "files"
+
+    def before_grading(self, config) -> None:
+        """Start the notebook's time limit (otter stops with its own error when it runs out)."""
+        limit = int(self.config.get("timeout") or 0)
+        if limit > 0 and threading.current_thread() is threading.main_thread():
+            signal.signal(signal.SIGALRM, _out_of_time(limit))
+            signal.alarm(limit)
+
+    def before_execution(self, submission_nb):
+        """Grade the notebook read as data; give otter a notebook of the answers' literals to run instead."""
+        from otter.run.run_autograder.utils import OtterRuntimeError
+
+        files = self._files()
+        keys_path = files / self.config.get("keys", "")
+        try:
+            qids = [q["id"] for q in _questions(keys_path)]
+            names = answer_variables(qids)
+            claimed, answers = notebook_answers(submission_nb, names)
+            ids = _submitters(self.metadata)
+            # On Gradescope the notebook's id must be the submitter's (any member of a group); locally, it is.
+            if ids:
+                student = claimed if isinstance(claimed, str) and claimed.strip() in ids else ids[0]
+            else:
+                student = claimed if isinstance(claimed, str) else ""
+            vendor = files / VENDOR if (files / VENDOR / "graphkin").is_dir() else None
+            self.report = grade_submissions(keys_path, [submission(student, answers, claimed)], vendor=vendor)[0]
+        except GraphkinError as exc:
+            raise OtterRuntimeError(f"graphkin could not grade this notebook: {exc}") from None
+        return _literal_notebook(submission_nb, claimed, answers, names)
+
+    def after_grading(self, results) -> None:
+        """graphkin's score and feedback, question by question, in place of what the kernel's tests said."""
+        signal.alarm(0)
+        report = self.report
+        if report is None:
+            return
+        by_id = {r["id"]: r for r in report["questions"]}
+        for name, test_file in results.results.items():
+            r = by_id.get(name)
+            if r is None:
+                continue
+            right = r["verdict"] == "correct"
+            readable_ = r["verdict"] not in ("missing", "unreadable", "refused")
+            for tcr in test_file.test_case_results:
+                passed = right if tcr.test_case.hidden else readable_
+                tcr.passed = passed
+                text = runtime.feedback_line(r) if tcr.test_case.hidden else r["feedback"]
+                # Gradescope may render an output as HTML: what the student typed is quoted escaped.
+                tcr.message = None if passed else html.escape(text, quote=False)
+            test_file.update_score(r["score"])
+        results.set_output(html.escape(runtime.summary(report), quote=False))
+        results.set_plugin_data("graphkin", report)
 
 
-@lru_cache(maxsize=256)
-def _graded_cached(exercise_file, student, qid, _type, answer, secret) -> dict:
-    return runtime.grade_question(exercise_file, student, qid, answer, secret)
+def _out_of_time(limit: int):
+    def stop(signum, frame):
+        from otter.run.run_autograder.utils import OtterRuntimeError
+
+        raise OtterRuntimeError(f"grading this notebook took more than {limit} s, so it was stopped")
+
+    return stop
+
+
+def _questions(path: Path) -> list[dict]:
+    """The questions of the keys' exercise (ids), read from the keys file as data."""
+    try:
+        data = json.loads(Path(path).read_text(encoding="utf-8"))
+        return tomllib.loads(data["exercise"]["text"])["questions"]
+    except (OSError, ValueError, KeyError, TypeError) as exc:
+        raise GraphkinError(f"the keys file {path} cannot be read ({exc})") from None
+
+
+def _literal_notebook(nb, claimed, answers: dict, names: dict):
+    """The notebook otter runs: the id and each answer as a literal, nothing else of the student's."""
+    import nbformat
+
+    def literal(value) -> str:
+        if isinstance(value, str) or (isinstance(value, (int, float)) and not isinstance(value, bool)
+                                      and abs(value) < 1e300):
+            return repr(value)
+        return "None"
+
+    cells = [nbformat.v4.new_code_cell(f"{STUDENT_VARIABLE} = {literal(claimed)}  # read from the notebook as data")]
+    for qid, value in answers.items():
+        cells.append(nbformat.v4.new_code_cell(f"{names[qid]} = {literal(value)}  # read from the notebook as data"))
+    out = nbformat.v4.new_notebook(cells=cells, metadata=dict(nb.get("metadata", {})))
+    return nbformat.from_dict(out)
 
 
 # ---------------------------------------------------------------------------------------------------------
 # Building the export
 # ---------------------------------------------------------------------------------------------------------
 
-def credit_levels(points: float, partial: dict) -> list[float]:
-    """The scores a question can earn above 0, lowest first: each slip's share of ``points``, and ``points``.
-
-    Examples
-    --------
-    >>> credit_levels(1.0, {"sign": 0.5, "rpm_as_rad_s": 0.25, "dimension": 0.0})
-    [0.25, 0.5, 1.0]
-    >>> credit_levels(0.0, {"sign": 0.5})
-    []
-    """
-    if points <= 0:
-        return []
-    levels = {_tidy(points * share) for share in partial.values() if 0 < share < 1}
-    return sorted(levels | {_tidy(points)})
-
-
-def _tidy(x: float) -> float:
-    """A point value without float dust (0.30000000000000004 → 0.3), so otter's sums come out exact."""
-    return float(f"{x:.12g}")
-
-
 def variable(qid: str) -> str:
     """The notebook variable that holds the answer to question ``qid``.
-
-    The id itself when it is a Python name the notebook does not use already;
-    otherwise ``answer_`` and the id with ``.`` written as ``_``.
 
     Examples
     --------
     >>> variable("F23"), variable("peak.at"), variable("STUDENT")
     ('F23', 'answer_peak_at', 'answer_STUDENT')
     """
-    if qid.isidentifier() and not keyword.iskeyword(qid) and qid not in _RESERVED:
-        return qid
-    return "answer_" + qid.replace(".", "_")
-
-
-def _variables(bundle) -> dict[str, str]:
-    """Question id → answer variable, checked to be distinct."""
-    names = {qid: variable(qid) for qid in bundle.question_ids()}
-    seen = {}
-    for qid, name in names.items():
-        if name in seen:
-            raise GraphkinError(f"otter: questions {seen[name]!r} and {qid!r} would both be answered in the "
-                                f"notebook variable {name}; rename one of them in the exercise file")
-        seen[name] = qid
-    return names
+    return answer_variables([qid])[qid]
 
 
 def build(bundle) -> dict:
-    """The export for otter-grader: the master notebook, the files it lists, graphkin and a README.
+    """The export for otter-grader: the master notebook, the files it lists, the keys, graphkin and a README.
 
     Raises
     ------
     GraphkinError
-        With a course secret but no roster: the student notebook would have
-        to draw each student's data, and so carry the secret.
+        With a course secret but no roster: the student notebook would have to draw each student's
+        data, and the autograder grade any id; both need the secret.
     """
+    require("nbformat", "an export to otter")
     if bundle.secret and bundle.students is None:
         raise GraphkinError(
-            "otter: a course secret needs --roster: the student notebook prints each student's data, so it would "
-            "have to carry the secret to draw it; with a roster the notebook carries each student's data (never "
-            "the secret), and only the autograder's hidden tests carry the secret")
+            "otter: a course secret needs --roster: the student notebook prints each student's data from the "
+            "roster's sheets, and the autograder grades with the roster's precomputed keys; neither carries the "
+            "secret")
+    answer_variables(bundle.question_ids())  # two ids on one variable: said now, not when grading
     tree = dict(bundle.files)
     if bundle.students is not None:
         tree[_sheets_file(bundle)] = json.dumps(bundle.sheets, ensure_ascii=False, indent=1) + "\n"
-    tree["requirements.txt"] = "\n".join(requirements()) + "\n"
+    tree[keys_file(bundle)] = keys_text(bundle.keys())
+    # The grading image installs the copy of graphkin that travels in the zip (otter imports the plugin
+    # before any notebook runs): a line of requirements.txt, and a pyproject.toml that makes vendor/ a project.
+    tree["requirements.txt"] = "\n".join(requirements() + [f"/autograder/source/files/{VENDOR}"]) + "\n"
     for rel, data in vendor_files().items():
         tree[f"{VENDOR}/{rel}"] = data
+    tree[f"{VENDOR}/pyproject.toml"] = _VENDOR_PYPROJECT
     tree[f"{bundle.name}.ipynb"] = _notebook(bundle)
     tree["README.md"] = _readme(bundle)
     return tree
+
+
+_VENDOR_PYPROJECT = """\
+# The copy of graphkin an export carries, installable as it is (otter's grading image installs it).
+[build-system]
+requires = ["setuptools>=61"]
+build-backend = "setuptools.build_meta"
+
+[project]
+name = "graphkin"
+version = "0.0.0+vendored"
+
+[tool.setuptools.packages.find]
+include = ["graphkin*"]
+
+[tool.setuptools.package-data]
+"*" = ["*.toml"]
+"""
+
+
+def keys_file(bundle) -> str:
+    return f"{bundle.name}-keys.json"
 
 
 def _sheets_file(bundle) -> str | None:
@@ -247,7 +285,7 @@ def _notebook(bundle) -> str:
     from nbformat import v4
 
     cells = [v4.new_raw_cell(_config(bundle)), *_front_cells(bundle)]
-    names = _variables(bundle)
+    names = answer_variables(bundle.question_ids())
     key = {a["id"]: a["answer"]["text"] for a in bundle.sample_key()["questions"]}
     for q in bundle.exercise.questions:
         cells += _question_cells(bundle, q, names[q.id], key[q.id])
@@ -269,6 +307,16 @@ def _config(bundle) -> str:
         "strip_solutions_from_all_cells: true",
         "files:",
         *(f"  - {json.dumps(f)}" for f in files),
+        # The keys go to the autograder only, never to the student folder.
+        "autograder_files:",
+        f"  - {json.dumps(keys_file(bundle))}",
+        # The grade comes from graphkin's plugin (the notebook read as data, graded in a process of its own).
+        "plugins:",
+        f"  - {PLUGIN}:",
+        f"      keys: {json.dumps(keys_file(bundle))}",
+        f"      timeout: {TIMEOUT}",
+        # The hidden tests never pass in a kernel (the plugin grades): there is nothing for assign to run.
+        "run_tests: false",
         "tests:",
         "  ok_format: false",  # one Python function per test case, its arguments taken from the notebook
         "export_cell:",
@@ -295,8 +343,9 @@ def _front_cells(bundle) -> list:
         "in quotes, with its unit, e.g. `\"12.3 N ∠ −45°\"`, `\"(7.56, -25.98) N\"`, `\"120.5 N·m CCW\"` "
         "or `\"62.16 N\"`.",
         "",
-        "`grader.check(...)` only tells you whether your answer can be read; your teacher's autograder "
-        "grades it.",
+        "Your answers are read from the notebook as text, not run: type each one as a literal in quotes, "
+        "not as a calculation. `grader.check(...)` only tells you whether your answer can be read; your "
+        "teacher's autograder grades it.",
     ]
     setup = ("# graphkin prints your data and reads your answers; a copy of it comes with this notebook.\n"
              "import sys\n"
@@ -317,12 +366,10 @@ def _question_cells(bundle, q, name: str, solution: str) -> list:
     """One otter question: its prompt, the answer cell (``solution``, the sample's key) and its tests."""
     from nbformat import v4
 
-    levels = credit_levels(q.points, bundle.exercise.partial)
-    steps = [_tidy(b - a) for a, b in zip([0.0, *levels], levels)]
-    # The public test case is worth nothing; each hidden case the step up to its level.
-    config = ["# BEGIN QUESTION", f"name: {json.dumps(q.id)}", f"points: {json.dumps([0, *steps])}"]
+    # The public test case is worth nothing; the hidden one the question's points (the plugin sets its score).
+    config = ["# BEGIN QUESTION", f"name: {json.dumps(q.id)}", f"points: {json.dumps([0, q.points])}"]
     prompt = f"**{q.id}** ({_points(q.points)}): {q.ask}\n\nType your answer in `{name}`, as text in quotes."
-    cells = [
+    return [
         v4.new_raw_cell("\n".join(config)),
         v4.new_markdown_cell(prompt),
         v4.new_raw_cell("# BEGIN SOLUTION"),
@@ -330,23 +377,14 @@ def _question_cells(bundle, q, name: str, solution: str) -> list:
         v4.new_raw_cell("# END SOLUTION"),
         v4.new_raw_cell("# BEGIN TESTS"),
         v4.new_code_cell(_public_test(bundle, q, name)),
-        *(v4.new_code_cell(_hidden_test(bundle, q, name, i, level)) for i, level in enumerate(levels, 1)),
+        v4.new_code_cell(_hidden_test(q)),
         v4.new_raw_cell("# END TESTS"),
         v4.new_raw_cell("# END QUESTION"),
     ]
-    return cells
 
 
 def _points(points: float) -> str:
     return f"{points:g} point" + ("" if points == 1 else "s")
-
-
-def _import_lines() -> list[str]:
-    """How a test function reaches graphkin: installed, else the copy that travelled with the assignment."""
-    return ["    import sys",
-            f"    if {VENDOR!r} not in sys.path:",
-            f"        sys.path.append({VENDOR!r})",
-            "    from graphkin.exercises.platforms import otter as graphkin_otter"]
 
 
 def _test_name(q, suffix: str) -> str:
@@ -357,105 +395,134 @@ def _public_test(bundle, q, name: str) -> str:
     fn = _test_name(q, "readable")
     return "\n".join([
         f"def {fn}({name}):",
-        *_import_lines(),
-        f"    graphkin_otter.readable({bundle.exercise_file!r}, {q.id!r}, {name})",
+        "    import sys",
+        f"    if {VENDOR!r} not in sys.path:",
+        f"        sys.path.append({VENDOR!r})",
+        "    from graphkin.exercises.platforms import otter as graphkin_otter",
+        f"    graphkin_otter.readable({bundle.exercise_file!r}, {q.id!r}, {name}, {name!r})",
         "",
         f"{fn}({name})",
     ])
 
 
-def _hidden_test(bundle, q, name: str, i: int, level: float) -> str:
-    """A hidden test case for one credit level. The secret sits on a line of its own: otter shows the
-    line a failing test stopped at, and that line must never be the secret."""
-    fn = _test_name(q, f"credit_{i}")
-    sheets = _sheets_file(bundle)
+def _hidden_test(q) -> str:
+    """The hidden test case: it holds nothing secret and never passes in the kernel (the plugin grades)."""
+    fn = _test_name(q, "graded")
     return "\n".join([
         "# HIDDEN",
-        f"def {fn}(STUDENT, {name}):",
-        *_import_lines(),
-        f"    secret = {bundle.secret!r}",
-        f"    graphkin_otter.check({bundle.exercise_file!r}, STUDENT, {q.id!r}, {name}, secret, "
-        f"level={level!r}, sheets={sheets!r})",
+        f"def {fn}():",
+        f"    raise AssertionError({(q.id + ' is graded by graphkin' + chr(39) + 's otter plugin')!r})",
         "",
-        f"{fn}(STUDENT, {name})",
+        f"{fn}()",
     ])
+
+
+def readme_commands(bundle) -> dict[str, str]:
+    """The README's shell commands, by step, exactly as printed (the tests run them as they are)."""
+    name = bundle.name
+    exercise = bundle.exercise_file
+    return {
+        "assign": f"otter assign {name}.ipynb dist\n",
+        "check": (f"mkdir -p check\n"
+                  f"timeout {TIMEOUT + 60} otter run -a dist/autograder/{name}-autograder_*.zip -o check "
+                  f"dist/autograder/{name}.ipynb\n"),
+        "grade": ("for nb in submissions/*.ipynb; do\n"
+                  '    out=results/$(basename "$nb" .ipynb); mkdir -p "$out"\n'
+                  f'    timeout {TIMEOUT + 60} otter run -a dist/autograder/{name}-autograder_*.zip -o "$out" "$nb"\n'
+                  "done\n"
+                  f"graphkin exercise collect results -o class.csv\n"),
+        "regrade": (f"graphkin exercise grade {exercise} --keys {keys_file(bundle)} --answers submissions/*.ipynb "
+                    f"-o regraded.csv\n"),
+    }
 
 
 def _readme(bundle) -> str:
     """README.md of the export: the files, then otter's commands step by step."""
     name = bundle.name
     sheets = _sheets_file(bundle)
+    cmd = readme_commands(bundle)
     others = "".join(f", `{f}`" for f in bundle.files if f != bundle.exercise_file)
     files = [
         f"- `{name}.ipynb`: the **master notebook** for `otter assign`: the assignment's configuration, one "
         f"question per exercise question with the answers of student `{bundle.sample}` as the solutions, and "
-        "the tests" + (" (the hidden ones carry the course secret)" if bundle.secret else "") + ". Teachers only.",
-        f"- `{bundle.exercise_file}`{others}: the exercise, so that the notebook and the autograder draw the same "
-        "data as `graphkin exercise make`.",
+        "the tests (which hold nothing secret). Teachers only.",
+        f"- `{bundle.exercise_file}`{others}: the exercise, so that the notebook prints the same data as "
+        "`graphkin exercise make`.",
+        f"- `{keys_file(bundle)}`: the **keys**: every roster student's answers, computed here with the course "
+        "secret, which they do not hold. `otter assign` puts them in the autograder only. Teachers only.",
     ]
     if sheets:
         files.append(f"- `{sheets}`: each roster student's sheet (their data and the questions; no answers, "
-                     "no secret). The student notebook prints the sheet of the id typed in it; an id that is "
-                     "not on the roster gets a sentence saying so, and scores nothing.")
+                     "no secret). The student notebook prints the sheet of the id typed in it.")
     files += [
-        "- `requirements.txt`: what graphkin needs; `otter assign` puts it into the autograder, and Gradescope "
-        "installs it in the grading image.",
-        f"- `{VENDOR}/graphkin/`: graphkin itself. `otter assign` copies it into the student folder and the "
-        f"autograder; the notebook and the tests append `{VENDOR}` to `sys.path`, so an installed graphkin "
-        "comes first and this copy serves where there is none (Gradescope's image, a student's laptop).",
+        "- `requirements.txt`: what graphkin needs, and the copy of graphkin below, for the grading image.",
+        f"- `{VENDOR}/graphkin/`: graphkin itself, for the student notebook (which prints the sheet and checks "
+        "that an answer can be read) and for the grading.",
     ]
-    if bundle.secret:
-        secret = ("The course secret is in the master notebook and in `dist/autograder/` only: give students "
-                  "`dist/student/` and nothing else.")
-    else:
-        secret = "There is no course secret: anyone with graphkin can compute any student's key."
+    secret = ("This export has a course secret: it is in none of these files. The autograder grades with the keys; "
+              if bundle.secret else "There is no course secret: anyone with graphkin can compute any student's key. ")
     return f"""\
 # {bundle.exercise.title}: otter-grader
 
-Made by `graphkin exercise export {name} --to otter`. Each student types their id into the notebook and gets
-their own data. The hidden tests recompute that student's answers and grade them with graphkin's grader, so a
-wrong answer gets graphkin's feedback sentence and a slip its partial credit (each question has one test case
-per credit level, worth the step from the level below: the cases that pass add up to graphkin's score).
+Made by `graphkin exercise export` for the exercise `{name}`. Each student types their id into the notebook
+and gets their own data. **Grading never runs the student's notebook**: graphkin's otter plugin reads each
+handed-in notebook as a file (the text assigned to `STUDENT` and to each answer), grades those answers in a
+separate Python process that holds the keys, and writes graphkin's score and feedback into otter's results.
+Otter's kernel runs only those answers, typed back as literals.
 
 ## Files
 
 {chr(10).join(files)}
 
-{secret}
+{secret}see `docs/platforms/otter.md` in graphkin for what students can and cannot learn or do.
 
 ## Next steps
 
-1. Make the student notebook and the autograder (otter runs the tests on the solutions as it goes):
+In this folder, with a Python that has `otter-grader`, `ipykernel` and graphkin.
+
+1. Make the student notebook and the autograder:
 
    ```sh
-   otter assign {name}.ipynb dist
-   ```
+{_indent(cmd['assign'])}   ```
 
    `dist/student/` is what students get: `{name}.ipynb` (the answers are `...`; only the public tests,
-   which say whether an answer can be read) and the files it needs. The autograder is
-   `dist/autograder/{name}-autograder_<date>.zip`.
+   which say whether an answer can be read) and the files it needs. It holds no key and no secret.
 
-2. Grade the handed-in notebooks on your own machine (no Docker, a few seconds each). `otter run` takes one
-   notebook and writes `results.json` (Gradescope's format: per question `score`, `max_score` and `output`,
-   with graphkin's feedback line for each credit level not reached):
+2. Check the autograder on the solutions (the first roster student's answers): it should score full marks.
 
    ```sh
-   for nb in submissions/*.ipynb; do
-       out=results/$(basename "$nb" .ipynb); mkdir -p "$out"
-       otter run -a dist/autograder/{name}-autograder_*.zip -o "$out" "$nb"
-   done
-   ```
+{_indent(cmd['check'])}   ```
 
-3. Or grade on Gradescope: create a programming assignment and upload the zip as its autograder; Gradescope
-   builds the image (otter's conda environment plus `requirements.txt`). Students hand in `{name}.ipynb`.
-   The tests compare the id in the notebook with who handed it in (Gradescope's Student ID, else the email):
-   the roster's ids must be those. Per-question scores and feedback become visible when you publish the grades.
+3. Put the handed-in notebooks in `submissions/` and grade them. `otter run` grades one notebook in a few
+   seconds and writes its `results.json` (Gradescope's format: per question `score`, `max_score` and
+   graphkin's feedback); `timeout` and the plugin stop a notebook that takes too long; `graphkin exercise
+   collect` makes one class table (`student`, `score`, `max`, each question's points):
+
+   ```sh
+{_indent(cmd['grade'])}   ```
+
+4. Grade the same notebooks again on your own machine, outside otter (read as data, never run); the
+   scores are those of step 3:
+
+   ```sh
+{_indent(cmd['regrade'])}   ```
+
+   It grades with the same keys, so it needs no secret.
+
+5. Or grade on Gradescope: upload the zip as a programming assignment's autograder. The grading image
+   installs graphkin from the zip; the tests compare the id in the notebook with who handed it in
+   (Gradescope's Student ID, else the email), so the roster's ids must be those. Not tried here.
 
 ## What the machines need
 
-Your machine: Python 3.11 or newer with `otter-grader` and `ipykernel`, and graphkin's requirements. Students
-and the grading image: graphkin's requirements (`{' '.join(requirements())}`) and `otter-grader`.
+Your machine: Python 3.11 or newer with `otter-grader` and `ipykernel`, and graphkin. Students and the
+grading image: graphkin's requirements (`{' '.join(requirements())}`) and `otter-grader`.
 """
 
 
-__all__ = ["GRADESCOPE_METADATA", "VENDOR", "build", "check", "credit_levels", "readable", "variable"]
+def _indent(text: str) -> str:
+    return "".join(f"   {line}\n" for line in text.splitlines())
+
+
+__all__ = ["PLUGIN", "Plugin", "TIMEOUT", "VENDOR", "build", "graded_by_plugin", "keys_file", "readable",
+           "readme_commands", "variable"]

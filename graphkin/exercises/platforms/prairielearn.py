@@ -134,7 +134,8 @@ def parse(data: dict, exercise_file: str, secret: str = "") -> None:
             continue
         result = runtime.grade_question(ex, student, qid, value, secret)
         if result["verdict"] == "unreadable":
-            data["format_errors"][name] = result["feedback"]
+            # PrairieLearn shows a format error as HTML: the sentence quotes what the student typed.
+            data["format_errors"][name] = html.escape(result["feedback"])
 
 
 def grade(data: dict, exercise_file: str, secret: str = "") -> dict:
@@ -144,7 +145,10 @@ def grade(data: dict, exercise_file: str, secret: str = "") -> dict:
     points earned / points, "weight": points, "feedback": sentence}`` and
     ``data["feedback"][name]`` the same sentence (``question.html`` shows it
     under the answer); ``data["score"]`` is the points earned over the
-    points, from 0 to 1. Returns graphkin's report.
+    points, from 0 to 1. Every sentence is HTML-escaped (PrairieLearn renders
+    feedback as HTML, and a sentence may quote what the student typed), and
+    ``question.html`` shows it with triple braces, so it is escaped once.
+    Returns graphkin's report.
     """
     ex = runtime.exercise(exercise_file)
     names = answer_names([q.id for q in ex.questions])
@@ -158,7 +162,7 @@ def grade(data: dict, exercise_file: str, secret: str = "") -> dict:
         r = results[qid]
         part = r["score"] / r["max"] if r["max"] else float(r["verdict"] == "correct")
         weight = 1 if unweighted else _number(r["max"])
-        sentence = feedback(r)
+        sentence = html.escape(feedback(r))
         data["partial_scores"][name] = {"score": part, "weight": weight, "feedback": sentence}
         data["feedback"][name] = sentence
         earned, total = earned + part * weight, total + weight
@@ -309,7 +313,8 @@ def question_html(bundle) -> str:
             f'  <p class="mb-1">{{{{params.asks.{name}}}}} <small class="text-muted">[{{{{params.marks.{name}}}}}]'
             "</small></p>",
             f"  <pl-string-input {attr_text}></pl-string-input>",
-            f"  <pl-submission-panel><p class=\"mt-1\">{{{{feedback.{name}}}}}</p></pl-submission-panel>",
+            # Triple braces: grade() escaped the sentence already (it may quote the student's text).
+            f"  <pl-submission-panel><p class=\"mt-1\">{{{{{{feedback.{name}}}}}}}</p></pl-submission-panel>",
             "</div>",
         ]
     return "\n".join(parts) + "\n"
@@ -466,6 +471,20 @@ def check_question_py(bundle) -> str:
     return _CHECK_PY.format(name=bundle.name)
 
 
+def readme_commands(bundle) -> dict[str, str]:
+    """The README's shell commands, by step, exactly as printed (the tests run them as they are).
+
+    (The README's one other command, which installs shapely into the course with PrairieLearn's Docker
+    image, needs Docker and the course repository, and is not among them.)
+    """
+    return {"check": "python check_question.py 1\n",
+            "key": f"graphkin exercise key questions/{bundle.name}/{bundle.exercise_file} --student pl-1\n"}
+
+
+def _indent(text: str, spaces: int) -> str:
+    return "".join(" " * spaces + line + "\n" for line in text.splitlines())
+
+
 def readme(bundle) -> str:
     """README.md: what each file is, where it goes in the course repository, what the server needs."""
     name = bundle.name
@@ -499,8 +518,7 @@ PrairieLearn's server by graphkin's grader.
 
 1. Check the question on your machine (a Python with graphkin's requirements):
 
-       python check_question.py 1
-
+{_indent(readme_commands(bundle)["check"], 7)}
    It prints the data of variant `pl-1`, each answer of its key graded (`1 x 1  Correct.`) and `score 1`.
 
 2. Copy `questions/{name}/` into the course repository's `questions/`, and `serverFilesCourse/graphkin/`
@@ -544,6 +562,9 @@ how far off, which step to revisit). A blank box or an answer graphkin cannot re
 marked *invalid* with the sentence saying how to write it, and is not graded (it does not use an attempt).
 PrairieLearn's answer panel shows the key's answers when the assessment lets it.
 
-To see a variant's key on your machine: `graphkin exercise key {name} --student pl-<seed> --secret ...`
+To see a variant's key on your machine, with `GRAPHKIN_SECRET` set to the export's secret (here variant
+`pl-1`; the page shows the variant of each student):
+
+{_indent(readme_commands(bundle)["key"], 4)}
 (the seed shown on the page).
 """

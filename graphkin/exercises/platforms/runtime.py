@@ -15,9 +15,11 @@ from pathlib import Path
 
 from graphkin.errors import GraphkinError
 from graphkin.exercises import load_exercise
-from graphkin.exercises.exercise import Exercise
+from graphkin.exercises.answers import Unreadable, read_answer
+from graphkin.exercises.exercise import Exercise, dimension_of
+from graphkin.exercises.grading import MESSAGES, grade_variant
 from graphkin.exercises.grading import grade_question as _grade_one
-from graphkin.exercises.grading import grade_variant
+from graphkin.exercises.notebooks import NotData, typed_in_kernel
 from graphkin.exercises.sheets import format_sheet
 from graphkin.exercises.variants import check_student, make_variant
 
@@ -87,6 +89,34 @@ def grade_question(path_or_exercise, student: str, qid: str, answer, secret: str
     return _grade_one(v, q, answer_value(answer), reveal=reveal)
 
 
+def readable_problem(path_or_exercise, qid: str, answer, variable: str | None = None) -> str | None:
+    """Why an answer would be graded missing or unreadable (a sentence), or None when it can be read.
+
+    What a notebook's own check cell tells a student: it needs neither the key nor the secret. With
+    ``variable``, the cell that last assigned it in this kernel is read as the grader reads the notebook,
+    so an answer typed as a calculation is caught before it is handed in.
+    """
+    q = exercise(path_or_exercise).question(qid)
+    value = answer_value(answer)
+    if variable:
+        typed = typed_in_kernel(variable)
+        if isinstance(typed, NotData):
+            return MESSAGES["not_data"].format(name=variable, example=_example(q), what=typed.reason)
+    if value is None or (isinstance(value, str) and not value.strip()):
+        return MESSAGES["missing"].format(name=qid)
+    try:
+        read_answer(value, dimension=dimension_of(q.kind, q.part), unit=q.unit,
+                    decimal_comma=exercise(path_or_exercise).decimal_comma)
+    except Unreadable as exc:
+        return str(exc)
+    return None
+
+
+def _example(q) -> str:
+    unit = q.unit.replace("*", "·")
+    return "12.3" + (f" {unit}" if unit else "")
+
+
 def feedback_line(result: dict) -> str:
     """One question's result as the line a student reads: verdict, points and the feedback sentence."""
     slip = f" ({result['slip'].replace('_', ' ')})" if result.get("slip") else ""
@@ -94,6 +124,22 @@ def feedback_line(result: dict) -> str:
     if "expected" in result and result["verdict"] != "correct":
         line += f" (expected: {result['expected']})"
     return line
+
+
+def summary(report: dict) -> str:
+    """A graded notebook's opening lines: whom it was graded as, the score, the student's data.
+
+    Parameters
+    ----------
+    report : dict
+        A report of :func:`graphkin.exercises.platforms.isolated.grade_one` (points, no unit).
+    """
+    lines = [f"Graded as student {report['student']!r}: {report['score']:g} / {report['max']:g} points."]
+    if report.get("refused"):
+        lines.append(f"Not graded: {report['refused']}")
+    if report.get("data"):
+        lines.append("Your data: " + ", ".join(report["data"]) + ".")
+    return "\n".join(lines)
 
 
 def identity_error(claimed, graded_as) -> str | None:
@@ -113,5 +159,5 @@ def identity_error(claimed, graded_as) -> str | None:
     return None
 
 
-__all__ = ["answer_value", "exercise", "feedback_line", "grade", "grade_question", "identity_error", "sheet",
-           "sheet_text", "variant"]
+__all__ = ["answer_value", "exercise", "feedback_line", "grade", "grade_question", "identity_error",
+           "readable_problem", "sheet", "sheet_text", "summary", "variant"]

@@ -30,6 +30,7 @@ NAME = "strip_cutter_cut"
 SECRET = "gs-course-secret-2025"
 ROSTER = ["s001", "s002", "s003"]
 VISIBILITY = {"hidden", "after_due_date", "after_published", "visible"}
+MARKER = "gs-env-marker-77a1"
 
 
 @pytest.fixture(scope="module")
@@ -78,13 +79,16 @@ def run_autograder(export: Path, tmp_path: Path, files: dict, users: list[dict],
     meta = {"id": 99, "created_at": "2025-03-01T10:00:00.000000-08:00", "assignment": {"id": 5, "title": "HW"},
             "submission_method": "upload", "users": users, "previous_submissions": []}
     (root / "submission_metadata.json").write_text(json.dumps(meta), encoding="utf-8")
-    env = dict(os.environ, GRAPHKIN_AUTOGRADER_ROOT=str(root), GRAPHKIN_PYTHON=python or sys.executable)
+    # The grading machine's environment holds the secret and a marker: neither may come back.
+    env = dict(os.environ, GRAPHKIN_AUTOGRADER_ROOT=str(root), GRAPHKIN_PYTHON=python or sys.executable,
+               GRAPHKIN_SECRET=SECRET, GRAPHKIN_MARKER=MARKER)
     proc = subprocess.run(["bash", str(root / "source" / "run_autograder")], cwd=root, env=env,
                           capture_output=True, text=True, timeout=120)
     assert proc.returncode == 0, proc.stderr
     results = json.loads((root / "results" / "results.json").read_text(encoding="utf-8"))
     check_schema(results)
-    assert SECRET not in json.dumps(results, ensure_ascii=False)
+    shown = json.dumps(results, ensure_ascii=False)
+    assert SECRET not in shown and MARKER not in shown and MARKER not in proc.stdout
     return results, proc.stdout, root
 
 
@@ -126,8 +130,9 @@ def assert_matches_report(results: dict, report: dict) -> None:
 
 def test_export_files_and_zip_layout(export):
     files = sorted(p.relative_to(export).as_posix() for p in export.rglob("*") if p.is_file())
+    # The exercise file sits beside the README too: its regrade command names it.
     assert files == ["README.md", "autograder.zip", "sample_submission/answers.toml",
-                     "sample_submission/submission_metadata.json", "student_template/answers.toml"]
+                     "sample_submission/submission_metadata.json", f"{NAME}.toml", "student_template/answers.toml"]
     with zipfile.ZipFile(export / "autograder.zip") as zf:
         names = zf.namelist()
         infos = {i.filename: i for i in zf.infolist()}
@@ -143,8 +148,12 @@ def test_export_files_and_zip_layout(export):
         setup = zf.read("setup.sh").decode()
         assert zf.read("requirements.txt").decode().split() == platforms.requirements()
         config = json.loads(zf.read("config.json"))
+        members = {n: zf.read(n) for n in names}
     assert "pip install -r" in setup and "requirements.txt" in setup
-    assert config["secret"] == SECRET and config["roster"] == ROSTER and config["exercise_file"] == f"{NAME}.toml"
+    assert config["roster"] == ROSTER and config["exercise_file"] == f"{NAME}.toml" and "secret" not in config
+    # The autograder grades with the roster's precomputed keys: the secret is in no file of the zip.
+    assert gradescope.KEYS in members
+    assert [n for n, data in members.items() if SECRET.encode() in data] == []
 
 
 def test_the_zip_is_the_same_bytes_every_time(export):
@@ -337,5 +346,31 @@ def test_an_interrupted_export_says_how_far_it_got(tmp_path, monkeypatch, capsys
     files = [f for f in (tmp_path / "gs").rglob("*") if f.is_file()]
     assert files == [calls[0]] and not [f for f in files if f.name.endswith(".tmp")]
     err = capsys.readouterr().err.strip().splitlines()
-    assert err == [f"graphkin: interrupted: 1 of 5 files of the export were written to {tmp_path / 'gs'}; "
+    assert err == [f"graphkin: interrupted: 1 of 6 files of the export were written to {tmp_path / 'gs'}; "
                    "run the export again"]
+
+
+def test_hostile_answers_void_nothing_else_and_leak_nothing(export, tmp_path):
+    """A 5000-digit number, a 1 MB answer and an HTML payload are each their own question's unreadable
+    answer; the right answer beside them scores; nothing of the secret or the keys comes back."""
+    right = key_answers("s002")
+    text = ("F23 = 1" + "0" * 5000 + "\n" + f"F14 = {json.dumps('<img src=x onerror=alert(1)> ' + 'z' * 1_000_000)}\n"
+            f"T12 = {json.dumps(right['T12'])}\n")
+    results, _, root = run_autograder(export, tmp_path, {"answers.toml": text}, [user("s002")])
+    tests = by_id(results)
+    assert (tests["T12"]["score"], results["score"]) == (1.0, 1.0)
+    assert tests["F23"]["score"] == tests["F14"]["score"] == 0.0
+    assert "too long (5001 characters" in tests["F23"]["output"] and "too long" in tests["F14"]["output"]
+    shown = json.dumps(results, ensure_ascii=False)
+    assert len(shown) < 20_000
+    # What students see (extra_data is the teacher's, never shown) is marked as plain text, which Gradescope
+    # shows as it is, never as HTML: a tag in an answer is quoted as text (escaping it too would show "&lt;").
+    html = {"F23": "<img src=x onerror=alert(1)> N", "F14": "<script>alert('x')</script>", "T12": right["T12"]}
+    results, _, _ = run_autograder(export, tmp_path / "html", {"answers.toml": toml(html)}, [user("s002")])
+    assert results["output_format"] == "text" and {t["output_format"] for t in results["tests"]} == {"text"}
+    assert 'Could not read "<img src=x onerror=alert(1)> N"' in by_id(results)["F23"]["output"]
+    keys = json.loads((root / "source" / gradescope.KEYS).read_text(encoding="utf-8"))
+    for student, entry in keys["students"].items():
+        for q in entry["questions"].values():
+            for v in q["value"] if isinstance(q["value"], list) else [q["value"]]:
+                assert not (isinstance(v, float) and abs(v) > 1 and repr(v) in shown), student

@@ -136,7 +136,10 @@ def served(export) -> dict:
         "key": key,
         "sign": {**key, "T12": flip_sense(key["T12"])},
         "blank": {**key, "F14": ""},
-        "unreadable": {**key, "F14": "12,5 N"},
+        "unreadable": {**key, "F14": "1,352 N"},
+        # HTML and script in answers: PrairieLearn renders format errors and feedback as HTML.
+        "html": {**key, "F14": '<img src=x onerror="alert(1)">', "T12": "<script>alert('x')</script> N*m"},
+        "html_graded": {**key, "F14": "1 N <b>", "T12": "12 N*m <i>"},
     }}
     return run_driver(export, scenarios)
 
@@ -212,8 +215,9 @@ def test_blank_is_left_to_pl_string_input_and_graded_missing_if_it_gets_through(
 
 def test_unreadable_answer_is_a_format_error_not_a_grade(served):
     g = served["graded"]["unreadable"]
-    assert g["format_errors"] == {"F14": 'Could not read "12,5 N": write a number and a unit, such as "27.06 N" '
-                                         "(use a decimal point)."}
+    # A comma that could be a decimal comma or a thousands separator is neither guessed nor graded.
+    assert g["format_errors"] == {"F14": 'Could not read &quot;1,352 N&quot;: &quot;1,352&quot; could be 1.352 or '
+                                         "1352: write 1.352 (a decimal point) or 1352 (no separator)."}
     # Not graded: PrairieLearn keeps what the element left (and does not count the attempt).
     assert g["partial_scores"]["F14"] == {"score": 0.0, "weight": 1}
 
@@ -289,3 +293,23 @@ def test_drawn_exercise_serves_its_figure(tmp_path):
                               "graded": {"key": key_answers("pl-1", DRAWN)}})
     assert served["figure"]["head"] == "89504e470d0a1a0a" and served["figure"]["bytes"] > 10_000
     assert served["graded"]["key"]["score"] == 1.0
+
+
+def test_html_in_an_answer_is_escaped_in_format_errors_and_feedback(served):
+    """A tag a student types comes back as text: escaped once, never as markup."""
+    errors = served["graded"]["html"]["format_errors"]
+    assert set(errors) == {"F14", "T12"}
+    assert "&lt;img src=x onerror=&quot;alert(1)&quot;&gt;" in errors["F14"]
+    assert "&lt;script&gt;alert(&#x27;x&#x27;)&lt;/script&gt;" in errors["T12"]
+    graded = served["graded"]["html_graded"]
+    shown = json.dumps(graded, ensure_ascii=False)
+    for raw in ("<img", "<script", "<b>", "<i>"):
+        assert raw not in json.dumps(errors, ensure_ascii=False) and raw not in shown
+    assert "&lt;b&gt;" in graded["format_errors"].get("F14", "") + graded["feedback"].get("F14", "")
+
+
+def test_nothing_secret_in_what_the_student_gets_back(served):
+    """params, correct answers shown after grading, scores, feedback and format errors: no secret in any."""
+    for label, data in served["graded"].items():
+        assert SECRET not in json.dumps(data, ensure_ascii=False), label
+    assert SECRET not in json.dumps(served["first"], ensure_ascii=False)

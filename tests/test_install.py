@@ -1,0 +1,141 @@
+"""graphkin as users install it: the wheel with no extras in a fresh environment runs the core commands, and what
+needs an extra says which in one line; the sdist and the wheel carry the licence and no tests; the README's
+links work on the package index (absolute)."""
+
+from __future__ import annotations
+
+import re
+import subprocess
+import sys
+import tarfile
+import tomllib
+import zipfile
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+
+NOT_IN_THE_CORE = ("jupyterlab", "ipywidgets", "voila", "nbformat", "anywidget", "ipykernel")
+"""Packages the extras bring, which a core install must not have."""
+
+
+@pytest.fixture(scope="module")
+def dist(tmp_path_factory):
+    out = tmp_path_factory.mktemp("dist")
+    r = subprocess.run([sys.executable, "-m", "build", "--sdist", "--wheel", "--outdir", str(out), str(ROOT)],
+                       capture_output=True, text=True, timeout=600)
+    assert r.returncode == 0, r.stdout[-2000:] + r.stderr[-2000:]
+    (wheel,) = out.glob("graphkin-*.whl")
+    (sdist,) = out.glob("graphkin-*.tar.gz")
+    return wheel, sdist
+
+
+@pytest.fixture(scope="module")
+def core(dist, tmp_path_factory):
+    """A fresh virtual environment with the wheel installed and no extra."""
+    venv = tmp_path_factory.mktemp("venv")
+    subprocess.run([sys.executable, "-m", "venv", str(venv)], check=True, timeout=300)
+    pip = subprocess.run([str(venv / "bin" / "python"), "-m", "pip", "install", "--quiet", str(dist[0])],
+                         capture_output=True, text=True, timeout=1200)
+    assert pip.returncode == 0, pip.stderr[-3000:]
+    return venv
+
+
+def _run(venv, *argv, cwd):
+    return subprocess.run([str(venv / "bin" / "graphkin"), *argv], capture_output=True, text=True, cwd=cwd,
+                          timeout=300)
+
+
+@pytest.mark.slow
+def test_the_core_install_has_no_notebook_stack(core):
+    r = subprocess.run([str(core / "bin" / "python"), "-m", "pip", "list", "--format=freeze"], capture_output=True,
+                       text=True, timeout=120)
+    installed = {line.split("==")[0].lower() for line in r.stdout.splitlines()}
+    assert not installed & set(NOT_IN_THE_CORE), sorted(installed & set(NOT_IN_THE_CORE))
+    assert "graphkin" in installed
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("argv, expect", [
+    (["--version"], "graphkin 0.1.0"),
+    (["list"], "strip_cutter"),
+    (["solve", "double_slider"], "F12 = 7.559 N ∠ 0.00°"),
+    (["cycle", "strip_cutter", "--n", "36", "--json"], '"effort"'),
+    (["flywheel", "three_cylinder"], "Energy table"),
+    (["exercise", "key", "single_link", "--student", "s1"], "answer:"),
+    (["handout", "double_slider", "-o", "h.pdf"], ""),
+    (["exercise", "export", "single_link", "--to", "gradescope", "-o", "gs"], ""),
+    (["exercise", "export", "single_link", "--to", "prairielearn", "-o", "pl"], ""),
+    (["animate", "strip_cutter", "-o", "a.gif", "--frames", "3", "--dpi", "20"], "3 frames"),
+])
+def test_the_core_commands_run_without_any_extra(core, tmp_path, argv, expect):
+    r = _run(core, *argv, cwd=tmp_path)
+    assert r.returncode == 0, r.stderr
+    assert expect in r.stdout + r.stderr
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("argv, extra", [
+    (["exercise", "export", "single_link", "--to", "otter", "-o", "ot"], "platforms"),
+    (["exercise", "export", "single_link", "--to", "nbgrader", "-o", "nb"], "platforms"),
+    (["explore", "double_slider", "--no-browser"], "explore"),
+])
+def test_what_needs_an_extra_says_which_in_one_line(core, tmp_path, argv, extra):
+    r = _run(core, *argv, cwd=tmp_path)
+    assert r.returncode == 2 and "Traceback" not in r.stderr, r.stderr
+    lines = r.stderr.strip().splitlines()
+    assert len(lines) == 1 and f"pip install 'graphkin[{extra}]'" in lines[0], r.stderr
+
+
+@pytest.mark.slow
+def test_the_explorer_in_python_names_the_notebook_extra(core, tmp_path):
+    code = ("import graphkin as gk\n"
+            "try:\n"
+            "    gk.explore(gk.load('double_slider'))\n"
+            "except gk.GraphkinError as exc:\n"
+            "    print(exc)\n")
+    r = subprocess.run([str(core / "bin" / "python"), "-c", code], capture_output=True, text=True, cwd=tmp_path,
+                       timeout=120)
+    assert r.returncode == 0 and "pip install 'graphkin[notebook]'" in r.stdout, r.stdout + r.stderr
+
+
+@pytest.mark.slow
+def test_python_m_graphkin_is_the_command(core, tmp_path):
+    r = subprocess.run([str(core / "bin" / "python"), "-m", "graphkin", "--version"], capture_output=True, text=True,
+                       cwd=tmp_path, timeout=60)
+    assert r.returncode == 0 and r.stdout.strip() == "graphkin 0.1.0"
+
+
+@pytest.mark.slow
+def test_the_wheel_and_the_sdist_carry_the_licence_and_the_sdist_no_tests(dist):
+    wheel, sdist = dist
+    with zipfile.ZipFile(wheel) as z:
+        names = z.namelist()
+    assert any(n.endswith("dist-info/licenses/LICENSE") for n in names)
+    metadata = next(n for n in names if n.endswith("dist-info/METADATA"))
+    with zipfile.ZipFile(wheel) as z:
+        meta = z.read(metadata).decode()
+    assert "License-Expression: MIT" in meta and "Classifier: Topic :: Education" in meta
+    assert "Project-URL: Documentation" in meta
+    with tarfile.open(sdist) as t:
+        members = [m.name.split("/", 1)[1] for m in t.getmembers() if "/" in m.name]
+    assert "LICENSE" in members and "pyproject.toml" in members
+    assert not [m for m in members if m.startswith("tests/")]  # the tests need the repository: run them from a clone
+
+
+def test_the_version_is_written_once():
+    """graphkin/__init__.py's __version__ is the version; pyproject.toml reads it (dynamic) and writes none."""
+    pyproject = tomllib.loads((ROOT / "pyproject.toml").read_text())
+    assert "version" not in pyproject["project"] and "version" in pyproject["project"]["dynamic"]
+    assert pyproject["tool"]["setuptools"]["dynamic"]["version"] == {"attr": "graphkin.__version__"}
+    assert re.search(r'^__version__ = "\d+\.\d+\.\d+"$', (ROOT / "graphkin" / "__init__.py").read_text(), re.M)
+
+
+def test_the_readme_links_work_on_the_package_index():
+    """The package index shows README.md without the repository around it: every link and image is absolute."""
+    text = (ROOT / "README.md").read_text()
+    targets = re.findall(r"!?\[[^\]]*\]\(([^)\s]+)\)", text)
+    assert targets
+    relative = [t for t in targets if not re.match(r"^(https?://|#)", t)]
+    assert relative == []
