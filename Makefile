@@ -74,6 +74,7 @@ bench: $(VENV)/.installed
 	$(BIN)/python -m pip install --quiet -e '.[test,bench]'
 	$(BIN)/python benchmarks/bench_fourbar.py
 	$(BIN)/python benchmarks/bench_graphical.py
+	$(BIN)/python benchmarks/bench_polygons.py
 	$(BIN)/python benchmarks/bench_cycle.py
 	$(BIN)/python benchmarks/bench_explorer.py
 	$(BIN)/python benchmarks/bench_exercises.py

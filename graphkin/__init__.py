@@ -21,7 +21,10 @@ the mechanism          :class:`Mechanism`, :class:`Link`, :class:`Revolute`,
 kinematics             :func:`solve_kinematics`, :class:`Kinematics`, :func:`decompose`
 the analytical route   :func:`solve_forces`, :class:`ForceAnalysis`, :func:`assemble`,
                        :func:`solve_matrix`, :func:`inertia`
-the graphical route    :func:`construct_forces`, :class:`Construction`
+the graphical route    :func:`construct_forces`, :class:`Construction`,
+                       :func:`construct_kinematics`, :class:`MotionConstruction`
+                       (velocity and acceleration polygons), :func:`instant_centres`,
+                       :class:`InstantCentres`, :func:`kinematics_from_polygons`
 whole cycles           :func:`sweep`, :class:`Cycle`, :func:`size_flywheel`,
                        :func:`joint_force_index`, :func:`static_problem`, :func:`load_flywheel`
 reports (plain data)   :mod:`report`, :func:`solution`, :func:`format_solution`,
@@ -73,6 +76,11 @@ _LAZY = {
     # the graphical route
     "construct_forces": ("graphkin.graphical", "construct_forces"),
     "Construction": ("graphkin.graphical", "Construction"),
+    "construct_kinematics": ("graphkin.graphical", "construct_kinematics"),
+    "MotionConstruction": ("graphkin.graphical", "MotionConstruction"),
+    "instant_centres": ("graphkin.graphical", "instant_centres"),
+    "InstantCentres": ("graphkin.graphical", "InstantCentres"),
+    "kinematics_from_polygons": ("graphkin.graphical", "kinematics_from_polygons"),
     # whole cycles
     "sweep": ("graphkin.cycle", "sweep"),
     "Cycle": ("graphkin.cycle", "Cycle"),
@@ -133,7 +141,15 @@ if TYPE_CHECKING:  # pragma: no cover - for type checkers and editors; at run ti
     from graphkin.cycle.flywheel_file import load_flywheel
     from graphkin.errors import GraphkinError, GraphkinWarning, ModelError, ProblemFileError
     from graphkin.geometry import cross
-    from graphkin.graphical import Construction, construct_forces
+    from graphkin.graphical import (
+        Construction,
+        InstantCentres,
+        MotionConstruction,
+        construct_forces,
+        construct_kinematics,
+        instant_centres,
+        kinematics_from_polygons,
+    )
     from graphkin.kinematics import Kinematics, decompose, solve_kinematics
     from graphkin.model import Driver, GearMesh, Link, Mechanism, PointForce, Prismatic, Revolute, Table, Torque, mass
     from graphkin.notation import polar, polar_text

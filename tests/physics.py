@@ -13,7 +13,7 @@ import pytest
 from hypothesis import HealthCheck, settings
 
 from graphkin.analytical import solve_forces
-from graphkin.graphical import construct_forces
+from graphkin.graphical import construct_forces, construct_kinematics, instant_centres, kinematics_from_polygons
 from graphkin.kinematics import solve_kinematics
 from graphkin.model import FRAME, GearMesh, Mechanism, PointForce, Prismatic, Revolute, SpringForce
 from tests.strategies import length_scale
@@ -300,5 +300,76 @@ def graphical_equals_analytical(case):
         assert c.effort == pytest.approx(r.effort[i], rel=0, abs=1e-9 * effort_scale * 10)
         for step in c.steps:
             assert step.closure() < 1e-9
+        checked += 1
+    return checked
+
+
+def polygons_equal_analytical(case):
+    """The velocity and acceleration polygons (and the instant centres) give the analytical kinematics.
+
+    Every value read off a polygon (ω, α of each link, v and a of each named point and of each G) agrees
+    with the solver to 1e-9 of the position's largest value of its kind; each image point a dyad step finds
+    lies on both lines it intersects. Returns how many positions were checked.
+    """
+    mech, q, q_dot, q_ddot = case
+    kin = solve_kinematics(mech, q, q_dot, q_ddot)
+    checked = 0
+    for i in np.flatnonzero(kin.valid):
+        c = construct_kinematics(kin, int(i))
+        assert c.valid, c.reason
+        links = mech.moving
+        v = {(l, n): kin.velocity(l, n)[i] for l in links for n in mech.link(l).points}
+        a = {(l, n): kin.acceleration(l, n)[i] for l in links for n in mech.link(l).points}
+        # The scales of the position's motion: the named points' and G's, and what the links' turning gives across
+        # the mechanism (a pitch point is no named point; a gear's named points may all sit on its pivot).
+        size = length_scale(mech)
+        w_scale = max(abs(kin.omega[l][i]) for l in links)
+        al_scale = max(abs(kin.alpha[l][i]) + kin.omega[l][i] ** 2 for l in links)
+        v_scale = max([np.hypot(*x) for x in v.values()] + [np.hypot(*kin.v_G(l)[i]) for l in links]) + w_scale * size
+        a_scale = max([np.hypot(*x) for x in a.values()] + [np.hypot(*kin.a_G(l)[i]) for l in links]) + al_scale * size
+        for key in v:
+            np.testing.assert_allclose(c.velocity[key], v[key], rtol=0, atol=RTOL * v_scale)
+            np.testing.assert_allclose(c.acceleration[key], a[key], rtol=0, atol=RTOL * a_scale)
+        for l in links:
+            np.testing.assert_allclose(c.v_G[l], kin.v_G(l)[i], rtol=0, atol=RTOL * v_scale)
+            np.testing.assert_allclose(c.a_G[l], kin.a_G(l)[i], rtol=0, atol=RTOL * a_scale)
+            assert c.omega[l] == pytest.approx(kin.omega[l][i], rel=0, abs=RTOL * w_scale)
+            assert c.alpha[l] == pytest.approx(kin.alpha[l][i], rel=0, abs=RTOL * al_scale)
+        for step in c.steps:
+            scale = v_scale if step.polygon == "velocity" else a_scale
+            for found in step.points.values() if step.lines else ():
+                for line in step.lines:
+                    off = np.subtract(found, line.point)
+                    assert abs(cross(line.direction, off)) <= RTOL * scale, (step.caption, line.name)
+
+        ic = instant_centres(kin, int(i))
+        assert ic.valid, ic.reason
+        for (l, n), value in ic.velocity.items():
+            np.testing.assert_allclose(value, v[l, n], rtol=0, atol=RTOL * v_scale)
+        for l, w in ic.omega.items():
+            assert w == pytest.approx(kin.omega[l][i], rel=0, abs=RTOL * w_scale)
+        if not ic.missing:
+            assert set(ic.omega) == set(links)
+        checked += 1
+    return checked
+
+
+def forces_from_polygons_equal_analytical(case):
+    """The force route with its inertia loads from the polygons gives the analytical forces and driving effort."""
+    mech, q, q_dot, q_ddot = case
+    kin = solve_kinematics(mech, q, q_dot, q_ddot)
+    r = solve_forces(kin)
+    p = solve_forces(kinematics_from_polygons(kin))
+    checked = 0
+    for i in np.flatnonzero(r.valid):
+        assert p.valid[i], p.reason(i)
+        scale = max(np.abs(r.force(*k)[i]).max() for k in r.forces)
+        for key in r.forces:
+            np.testing.assert_allclose(p.force(*key)[i], r.force(*key)[i], rtol=0, atol=RTOL * max(scale, 1e-300))
+        effort_scale = max(abs(r.effort[i]), scale * 1e-3)
+        assert p.effort[i] == pytest.approx(r.effort[i], rel=0, abs=10 * RTOL * effort_scale)
+        c = construct_forces(p.kinematics, int(i))
+        assert c.valid, c.reason
+        assert c.effort == pytest.approx(r.effort[i], rel=0, abs=10 * RTOL * effort_scale)
         checked += 1
     return checked

@@ -19,6 +19,9 @@ def add_parser(sub) -> None:
                    help="write the side-by-side figure (.png, .svg or .pdf); with several positions, one file each, "
                    "numbered (--figure is the older name)")
     s.add_argument("--steps", metavar="DIR", help="write the construction step by step, one PNG frame per step")
+    s.add_argument("--motion-polygons", dest="polygons", action="store_true",
+                   help="with -o/--figure, also write the velocity and acceleration polygons to scale "
+                        "(1 mm = X m/s, 1 mm = Y m/s²), as FILE_polygons; with --steps, their steps too")
 
 
 def run(args) -> int:
@@ -29,17 +32,20 @@ def run(args) -> int:
     from graphkin.files import json_text
 
     check_outputs(args.figure, args.steps)
+    if args.polygons and not (args.figure or args.steps):
+        raise GraphkinError("--motion-polygons draws beside the figure or the steps: give -o FILE or --steps DIR too")
     problem = catalog.load(args.problem)
     result = problem.solve(positions(problem, args.at) if args.at is not None else None)
     graphical = report.constructions(result)
     # A position where the two routes disagree is not valid: neither answer can be trusted there.
     result = report.cross_check(result, graphical)
     if args.json:
-        print(json_text(report.solution(problem, result, graphical)))
+        kinematic = report.kinematic_constructions(result.kinematics)
+        print(json_text(report.solution(problem, result, graphical, kinematic)))
     else:
         print(report.format_solution(problem, result, graphical))
     if args.figure or args.steps:
-        _figures(problem, result, graphical, args.figure, args.steps)
+        _figures(problem, result, graphical, args.figure, args.steps, polygons=args.polygons)
     bad = np.flatnonzero(~result.valid)
     if len(bad):
         # One line, however many positions fail: the first names the position and the reason.
@@ -50,7 +56,7 @@ def run(args) -> int:
     return 2 if len(bad) else 0
 
 
-def _figures(problem, result, graphical, figure, steps):
+def _figures(problem, result, graphical, figure, steps, *, polygons=False):
     """Write the side-by-side figure(s) and the step frames; say which files went where.
 
     A batch that takes more than a second shows a tqdm progress bar on stderr,
@@ -63,6 +69,7 @@ def _figures(problem, result, graphical, figure, steps):
     from tqdm import tqdm
 
     from graphkin import draw
+    from graphkin.graphical import construct_kinematics
 
     many = result.n > 1
     drawn = [(i, c) for i, c in enumerate(graphical) if c is not None and c.valid]
@@ -77,10 +84,22 @@ def _figures(problem, result, graphical, figure, steps):
                 path.parent.mkdir(parents=True, exist_ok=True)
                 written.append(draw.save(draw.draw_solution(c, result), path))
                 tqdm.write(f"figure written to {path}", file=sys.stderr)
+                if polygons:
+                    motion = construct_kinematics(result.kinematics, i)
+                    more = path.with_name(f"{path.stem}_polygons{path.suffix}")
+                    written.append(draw.save(draw.draw_motion_polygons(motion), more))
+                    tqdm.write(f"velocity and acceleration polygons written to {more} (1 mm = "
+                               f"{motion.velocity_scale:g} m/s, 1 mm = {motion.acceleration_scale:g} m/s²)",
+                               file=sys.stderr)
             if steps:
                 folder = Path(steps)
                 folder.mkdir(parents=True, exist_ok=True)
                 frames = []
+                if polygons:
+                    # The polygons come first: they give the inertia loads the force construction starts from.
+                    for k, fig in enumerate(draw.draw_motion_steps(construct_kinematics(result.kinematics, i)), 1):
+                        frames.append(draw.save(fig, folder / f"{Path(problem.name).stem}{tag}_polygons{k:02d}.png"))
+                        written.append(frames[-1])
                 for k, fig in enumerate(draw.draw_steps(c), start=1):
                     frames.append(draw.save(fig, folder / f"{Path(problem.name).stem}{tag}_step{k:02d}.png"))
                     written.append(frames[-1])

@@ -41,6 +41,7 @@ _LATER = {
     **dict.fromkeys(("draw_cycle", "draw_energy", "draw_joint_force_index", "draw_polar_forces", "draw_shaking",
                      "draw_torque_curve"), "cycle"),
     **dict.fromkeys(("draw_step_grid", "draw_steps"), "steps"),
+    **dict.fromkeys(("draw_motion_polygon", "draw_motion_polygons", "draw_motion_steps"), "motion"),
     **dict.fromkeys(("Animation", "animate"), "animation"),
 }
 """Drawings imported when first asked for: the cycle plots bring graphkin.cycle and matplotlib's tickers

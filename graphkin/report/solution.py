@@ -19,6 +19,7 @@ from graphkin.graphical import construct_forces
 from graphkin.kinematics.points import link_points
 from graphkin.model import PointForce
 from graphkin.notation import PICOMETRE, RESIDUE, input_text, largest, num, unless_rounding
+from graphkin.report.polygons import graphical_kinematics_data
 
 
 def _vec(v):
@@ -153,7 +154,7 @@ def _graphical(result: ForceAnalysis, c, i) -> dict:
             "subproblems": subproblems, "warnings": list(c.warnings)}
 
 
-def solution(problem, result: ForceAnalysis, graphical: list | None = None) -> dict:
+def solution(problem, result: ForceAnalysis, graphical: list | None = None, kinematic: list | None = None) -> dict:
     """Everything the analysis found, as plain data in SI units.
 
     Parameters
@@ -167,6 +168,10 @@ def solution(problem, result: ForceAnalysis, graphical: list | None = None) -> d
         under ``"graphical"`` with the relative difference per force. A
         position where the two routes disagree is not valid
         (:func:`cross_check`).
+    kinematic : list of (MotionConstruction, InstantCentres), optional
+        The velocity and acceleration polygons and the instant centres per position
+        (:func:`graphkin.report.polygons.kinematic_constructions`); included under
+        ``"graphical_kinematics"``.
 
     Returns
     -------
@@ -234,6 +239,8 @@ def solution(problem, result: ForceAnalysis, graphical: list | None = None) -> d
                 entry["forward"] = {"I": forward.I, **{key: float(v[i]) for key, v in step.items()}}
         if graphical is not None:
             entry["graphical"] = _graphical(result, graphical[i], i)
+        if kinematic is not None:
+            entry["graphical_kinematics"] = graphical_kinematics_data(kin, *kinematic[i])
         positions.append(entry)
     return {
         "problem": problem.name,

@@ -55,3 +55,29 @@ def test_a_grade_report_is_strict_json(capsys, tmp_path):
     data = _json_of(capsys, "exercise", "grade", "double_slider_forces", "--student", "s1", "--answers",
                     str(answers), "--json")
     assert {q["id"] for q in data["questions"]} >= {"F23"}
+
+
+@pytest.mark.parametrize("problem", ["strip_cutter", "double_slider", "shaper_six_bar", "gearset"])
+def test_solve_json_carries_the_polygons_of_every_position(capsys, problem):
+    data = _json_of(capsys, "solve", problem, "--json")
+    for entry in data["positions"]:
+        g = entry["graphical_kinematics"]
+        assert g["valid"] == entry["valid"]
+        if not g["valid"]:
+            assert g["reason"]
+            continue
+        for kind, difference in g["relative_difference"].items():
+            assert difference <= 1e-9, kind
+        for polygon in ("velocity", "acceleration"):
+            vectors = g[f"{polygon}_polygon"]["vectors"]
+            assert vectors
+            for v in vectors:
+                assert g["steps"][v["step"]]["polygon"] == polygon
+                assert v["components"] == pytest.approx([v["tip"][0] - v["tail"][0], v["tip"][1] - v["tail"][1]])
+        assert g["points"].keys() == entry["links"].keys()
+        for link, points in g["points"].items():
+            for name, motion in points.items():
+                exact = entry["links"][link]["points"][name]
+                scale = max(abs(x) for p in entry["links"].values() for q in p["points"].values() for x in q["velocity"])
+                assert motion["velocity"] == pytest.approx(exact["velocity"], rel=0, abs=1e-9 * scale)
+        assert not g["instant_centres"]["missing"]

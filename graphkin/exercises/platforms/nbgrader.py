@@ -31,7 +31,9 @@ autograde`` it stops the kernel, so nbgrader keeps no grade rather than one the 
 from __future__ import annotations
 
 import json
+import math
 import os
+import time
 import tomllib
 from pathlib import Path
 
@@ -55,8 +57,8 @@ GRADE_WRITER = "graphkin.exercises.platforms.nbgrader.write_grades"
 GRADES = "graphkin_grades"
 """The key of nbgrader's resources under which :func:`read_as_data` leaves the grades for :func:`write_grades`."""
 
-TIMEOUT = 60
-"""Seconds nbgrader's ``Execute`` gives each cell (``c.Execute.timeout``; the notebook has a few cells)."""
+TIMEOUT = 120
+"""Seconds nbgrader's ``Execute`` may spend on one notebook, its cells together (:class:`TimeLimit`)."""
 
 SCHEMA_VERSION = 3
 """The version of nbgrader's cell metadata (nbgrader 0.6 to 0.9)."""
@@ -68,6 +70,40 @@ _READ = "  # read from your notebook as data"
 
 # ---------------------------------------------------------------------------
 # Run by nbgrader autograde, in nbgrader's own process (never in the kernel)
+
+
+class TimeLimit:
+    """A time limit per notebook for nbgrader's ``Execute``: each cell gets what is left of the notebook's.
+
+    nbgrader limits each cell (``c.Execute.timeout``), so a notebook of n cells may hold up the class n times
+    as long, and a file handed in beside the notebook can hang the kernel at every cell. nbclient, which
+    ``Execute`` is made of, calls ``on_notebook_start`` as each notebook starts and asks ``timeout_func`` for
+    each cell's limit: :meth:`start` notes the time, :meth:`cell_timeout` gives the rest of the budget (at
+    least one second, which nbclient needs to interrupt the kernel and go on). nbgrader autogrades one
+    notebook at a time, so one object serves a whole run. The grade never waits on the kernel: it was made
+    from the notebook read as data before ``Execute`` (:func:`read_as_data`).
+
+    Parameters
+    ----------
+    seconds : float
+        The budget of one notebook [s].
+    clock : callable, optional
+        The clock [s]; ``time.monotonic`` unless a test gives its own.
+    """
+
+    def __init__(self, seconds: float = TIMEOUT, clock=time.monotonic):
+        if not seconds > 0:
+            raise GraphkinError(f"an nbgrader time limit must be a positive number of seconds, not {seconds!r}")
+        self.seconds, self.clock = float(seconds), clock
+        self.started = clock()
+
+    def start(self, **_):
+        """nbclient's ``on_notebook_start`` hook: the notebook's clock starts."""
+        self.started = self.clock()
+
+    def cell_timeout(self, cell) -> int:
+        """nbclient's ``timeout_func``: what is left of the notebook's budget [s], at least 1."""
+        return max(1, math.ceil(self.seconds - (self.clock() - self.started)))
 
 
 def course_root(resources) -> Path:
@@ -367,8 +403,14 @@ def _literal(text: str) -> str:
     return json.dumps(text, ensure_ascii=False)
 
 
-def config_lines() -> list[str]:
-    """The lines a course's ``nbgrader_config.py`` needs for graphkin's notebooks (the tests run them)."""
+def config_lines(seconds: float = TIMEOUT) -> list[str]:
+    """The lines a course's ``nbgrader_config.py`` needs for graphkin's notebooks (the tests run them).
+
+    Parameters
+    ----------
+    seconds : float
+        The time limit of one notebook [s] (:class:`TimeLimit`).
+    """
     return [
         "# graphkin's notebooks are graded read as data: its preprocessor comes before nbgrader's Execute, grades",
         "# the answers in a process of its own, and leaves the kernel nothing of the student's to run. (It passes",
@@ -385,8 +427,12 @@ def config_lines() -> list[str]:
         '    "nbgrader.preprocessors.AssignLatePenalties",',
         '    "nbgrader.preprocessors.CheckCellMetadata",',
         "]",
-        "# A time limit per cell, so that no notebook holds up the class.",
-        f"c.Execute.timeout = {TIMEOUT}",
+        f"# A time limit per notebook ({seconds:g} s, its cells together), so that no notebook holds up the class:",
+        "# each cell gets what is left of its notebook's time.",
+        "from graphkin.exercises.platforms.nbgrader import TimeLimit",
+        f"_graphkin_time_limit = TimeLimit({seconds!r})",
+        "c.Execute.on_notebook_start = _graphkin_time_limit.start",
+        "c.Execute.timeout_func = _graphkin_time_limit.cell_timeout",
     ]
 
 
@@ -535,6 +581,6 @@ def _indent(text: str) -> str:
     return "".join(f"   {line}\n" for line in text.splitlines())
 
 
-__all__ = ["GRADES", "GRADE_WRITER", "KEYS_FOLDER", "PREPROCESSOR", "STUDENT_VARIABLE", "TIMEOUT", "build",
+__all__ = ["GRADES", "GRADE_WRITER", "KEYS_FOLDER", "PREPROCESSOR", "STUDENT_VARIABLE", "TIMEOUT", "TimeLimit", "build",
            "check_answer", "config_lines", "course_root", "not_read_as_data", "read_as_data", "readme_commands",
            "variables", "write_grades"]

@@ -3,7 +3,9 @@
 Students: alice answers her variant right; bob makes a sign slip, a wrong answer, and leaves nbgrader's
 ``raise NotImplementedError()`` in one answer cell; carol hands in alice's notebook (alice's id and
 answers); and one student per tampering notebook (:mod:`tests.exercises.platforms.tampering`), plus one
-who hands in extra files beside the notebook. The grades nbgrader records must be the grades of the
+who hands in extra files beside the notebook and one whose extra file hangs the kernel (right answers: the
+grade must not wait on the kernel, and the notebook's time limit must end the wait).
+The grades nbgrader records must be the grades of the
 answers read as data, question by question; the feedback nbgrader hands back must hold no secret, no
 key, nothing of the grading machine's environment, and no unescaped HTML.
 """
@@ -13,6 +15,7 @@ from __future__ import annotations
 import csv
 import json
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -47,7 +50,11 @@ pytest.importorskip("nbgrader")
 BIN = Path(sys.executable).parent
 LABELS = [t.label for t in catalogue("x", "alice")]
 EXTRA_FILES = "extra_files"
-TAMPER_IDS = {label: f"t_{label}" for label in [*LABELS, EXTRA_FILES]}
+HANGING = "hanging_kernel"
+TAMPER_IDS = {label: f"t_{label}" for label in [*LABELS, EXTRA_FILES, HANGING]}
+TIME_LIMIT = 15.0
+"""The course's time limit per notebook in these tests [s] (the export's default is 120 s)."""
+HANGING_GRAPHKIN = "import time\ntime.sleep(10**6)  # the kernel imports this before the real graphkin\n"
 ROSTER = ["alice", "bob", "carol", *TAMPER_IDS.values()]
 
 # Files handed in beside the notebook: a package named graphkin that the kernel (started in the folder
@@ -104,6 +111,10 @@ def _handed_in() -> dict:
         if label == EXTRA_FILES:
             t = Tamper(label, (), {q: f"{q} = {v!r}" for q, v in WRONG.items()}, dict(WRONG))
             out[sid] = (sid, t, {"graphkin/__init__.py": FORGED_GRAPHKIN})
+        elif label == HANGING:
+            own = _key(sid)
+            t = Tamper(label, (), {q: f"{q} = {json.dumps(a, ensure_ascii=False)}" for q, a in own.items()}, own)
+            out[sid] = (sid, t, {"graphkin/__init__.py": HANGING_GRAPHKIN})
         else:
             out[sid] = (sid, {t.label: t for t in catalogue(sid, "alice")}[label], {})
     return out
@@ -149,12 +160,14 @@ def course(tmp_path_factory):
         _submit(course, student, claimed, t, extra)
     unconfigured = _bash(course, f"nbgrader autograde {NAME} --student alice", check=False)
     unconfigured_grades = _grades(course, "alice")
-    (course / "nbgrader_config.py").write_text(base + "\n".join(nbx.config_lines()) + "\n", encoding="utf-8")
-    _bash(course, cmd["autograde"].replace(f"nbgrader autograde {NAME}", f"nbgrader autograde {NAME} --force"))
+    (course / "nbgrader_config.py").write_text(base + "\n".join(nbx.config_lines(TIME_LIMIT)) + "\n",
+                                               encoding="utf-8")
+    autograded = _bash(course, cmd["autograde"].replace(f"nbgrader autograde {NAME}",
+                                                        f"nbgrader autograde {NAME} --force"))
     _bash(course, cmd["feedback"])
     _bash(course, cmd["regrade"])
     return SimpleNamespace(dir=course, handed_in=handed_in, unconfigured=unconfigured,
-                           unconfigured_grades=unconfigured_grades)
+                           unconfigured_grades=unconfigured_grades, autograde_log=autograded.stdout + autograded.stderr)
 
 
 def _grades(course: Path, student) -> dict:
@@ -229,6 +242,33 @@ def test_a_submission_carrying_another_students_id_scores_nothing(course):
                         "each student answers their own variant")
     out = _outputs(course, "carol")
     assert all(sentence in out[f"test_{q}"].replace("This", "this") for q in ("F23", "F14", "T12"))
+
+
+def test_a_hanging_kernel_waits_at_most_its_notebooks_time_limit(course):
+    """A file handed in beside the notebook hangs the kernel: nbclient logs each wait it ended, and each is
+    at most what was left of the notebook's time limit, not nbgrader's per-cell limit."""
+    waits = [int(w) for w in re.findall(r"Timeout waiting for execute reply \((\d+)s\)", course.autograde_log)]
+    assert waits, "the hanging kernel was never timed out: " + course.autograde_log[-2000:]
+    assert max(waits) <= TIME_LIMIT, waits
+    assert sum(w for w in waits if w > 1) <= TIME_LIMIT, waits  # the first wait spends the budget; later ones 1 s
+    report = _report(course, TAMPER_IDS[HANGING])
+    assert report["score"] == 3.0
+    assert _grades(course.dir, TAMPER_IDS[HANGING]) == {q["id"]: q["score"] for q in report["questions"]}
+
+
+def test_the_time_limit_is_per_notebook():
+    now = [100.0]
+    limit = nbx.TimeLimit(20, clock=lambda: now[0])
+    limit.start(notebook=None)
+    assert limit.cell_timeout(None) == 20
+    now[0] += 12.5
+    assert limit.cell_timeout(None) == 8  # what is left, rounded up
+    now[0] += 30
+    assert limit.cell_timeout(None) == 1  # spent: one second, for nbclient to interrupt and go on
+    limit.start(notebook=None)  # the next notebook starts with the whole budget
+    assert limit.cell_timeout(None) == 20
+    with pytest.raises(GraphkinError, match="positive number of seconds"):
+        nbx.TimeLimit(0)
 
 
 def test_without_graphkins_preprocessors_no_grade_is_kept(course):

@@ -1,0 +1,246 @@
+"""Instant centres by Kennedy's theorem, and the velocities they give (:func:`instant_centres`).
+
+The second graphical route to a point's velocity. The primary centres come from the joints: a pin is the
+centre of its two links, a sliding pair's centre is at infinity perpendicular to its guide, two gears in
+mesh have theirs at the pitch point. Kennedy's theorem (the three centres of any three links lie on one
+line) gives the others: I_ik lies on the line I_ij I_jk for every third link j, so two such lines meet at
+it. Then, link by link, a centre I_mk shared with a link m whose motion is known is a point with the same
+velocity on both links, and link k turns about I_1k: v_P = ω_k × (P − I_1k).
+
+Points are homogeneous, (x, y, w) with x, y divided by the mechanism's size, so that a centre at infinity
+(w = 0: a link in translation, two sliders) is a point like any other and the velocity formulas never
+divide by w.
+"""
+
+from __future__ import annotations
+
+import cmath
+import math
+from dataclasses import dataclass, field
+from itertools import combinations
+
+import numpy as np
+
+from graphkin.errors import GraphkinError
+from graphkin.graphical.captions import number
+from graphkin.kinematics import DriverGroup, Kinematics
+from graphkin.model import GearMesh, Prismatic, Revolute
+
+SAME = 1e-9
+"""|sin| of the angle between two homogeneous points (or lines) below which they are the same one."""
+
+
+@dataclass(frozen=True)
+class InstantCentres:
+    """The instant centres of one position and the velocities they give.
+
+    Attributes
+    ----------
+    mechanism : Mechanism
+    index : int
+        Position index in the kinematics.
+    centres : dict of (int, int) to (float, float)
+        Each centre found at a finite point [m], keyed by the two links (lower first).
+    at_infinity : dict of (int, int) to (float, float)
+        Each centre at infinity, as the unit direction it lies in (perpendicular to the relative sliding).
+    steps : tuple of str
+        How each centre was found, in order: from a joint, or from the two Kennedy lines that meet at it.
+    missing : tuple of (int, int)
+        Pairs of links whose centre Kennedy's theorem does not reach (each needs two lines through known
+        centres that are not the same line).
+    omega : dict of int to float
+        Angular velocity of each link whose motion the centres give [rad/s].
+    velocity : dict of (int, str) to (float, float)
+        Every named point of those links [m/s].
+    v_G : dict of int to (float, float)
+        Their centres of mass [m/s].
+    valid : bool
+    reason : str
+    """
+
+    mechanism: object
+    index: int
+    centres: dict = field(default_factory=dict)
+    at_infinity: dict = field(default_factory=dict)
+    steps: tuple[str, ...] = ()
+    missing: tuple = ()
+    omega: dict = field(default_factory=dict)
+    velocity: dict = field(default_factory=dict)
+    v_G: dict = field(default_factory=dict)
+    valid: bool = True
+    reason: str = ""
+
+
+# Homogeneous points and lines are plain 3-tuples: a mechanism has a few dozen pairs, and tuples are several
+# times faster than small numpy arrays here.
+def _cross(p, q) -> tuple[float, float, float]:
+    return (p[1] * q[2] - p[2] * q[1], p[2] * q[0] - p[0] * q[2], p[0] * q[1] - p[1] * q[0])
+
+
+def _norm(p) -> float:
+    return math.sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2])
+
+
+def _unit(p) -> tuple[float, float, float]:
+    size = _norm(p)
+    return (p[0] / size, p[1] / size, p[2] / size)
+
+
+def _line(p, q):
+    """The line through two homogeneous points, or None where they are the same point."""
+    line = _cross(p, q)
+    return None if _norm(line) <= SAME else _unit(line)
+
+
+def _where(P, size: float) -> str:
+    if abs(P[2]) <= SAME:
+        return f"at infinity, in the direction ({number(P[0])}, {number(P[1])})"
+    return f"at ({number(P[0] / P[2] * size * 1e3)}, {number(P[1] / P[2] * size * 1e3)}) mm"
+
+
+def instant_centres(kin: Kinematics, index: int = 0) -> InstantCentres:
+    """Every instant centre Kennedy's theorem reaches at position ``index``, and the velocities they give.
+
+    Parameters
+    ----------
+    kin : Kinematics
+        The mechanism's motion; the centres read its positions and the input's rate only.
+    index : int
+        Which of the kinematics' positions.
+
+    Returns
+    -------
+    InstantCentres
+        Links whose centres are not all reached have no velocities here (see ``missing``).
+    """
+    if not isinstance(kin, Kinematics):
+        raise GraphkinError(f"instant_centres takes the Kinematics of a problem, got {type(kin).__name__}")
+    if isinstance(index, (bool, np.bool_)) or not isinstance(index, (int, np.integer)) or not -kin.n <= index < kin.n:
+        raise GraphkinError(f"instant_centres: index must be a whole number from 0 to {kin.n - 1}, got {index!r}")
+    i = int(index) % kin.n
+    mech = kin.mechanism
+    if not kin.valid[i]:
+        return InstantCentres(mech, i, valid=False, reason=kin.reason(i))
+    frame = mech.frame
+
+    O = {n: complex(kin.O[n][i]) for n in mech.moving}
+    e = {n: complex(kin.e[n][i]) for n in mech.moving}
+
+    def pos(link, name):
+        x, y = mech.link(link).point(name)
+        return complex(x, y) if link == frame else O[link] + e[link] * complex(x, y)
+
+    size = max(abs(pos(link.number, name)) for link in mech.links for name in link.points) or 1.0
+
+    def hom(z: complex):
+        return _unit((z.real / size, z.imag / size, 1.0))
+
+    known: dict[frozenset, tuple] = {}
+    steps = []
+    for joint in mech.joints:
+        a, b = joint.links
+        if isinstance(joint, Revolute):
+            P = hom(pos(a, joint.point))
+            how = f"the pin {joint.point}"
+        elif isinstance(joint, Prismatic):
+            u = (1 + 0j if joint.guide == frame else e[joint.guide]) * cmath.exp(1j * joint.direction)
+            P = (-u.imag, u.real, 0.0)
+            how = f"at infinity, perpendicular to the guide at {joint.point}"
+        elif isinstance(joint, GearMesh):
+            (ca, cb), (ra, _) = joint.centers, joint.radii
+            A, B = pos(a, ca), pos(b, cb)
+            P = hom(A + ra * (B - A) / abs(B - A))
+            how = "the pitch point"
+        else:  # pragma: no cover - the model has these three joints only
+            raise AssertionError(joint)
+        known[frozenset((a, b))] = P
+        steps.append(f"I{min(a, b)}{max(a, b)}: {how} ({_where(P, size)}).")
+
+    links = [link.number for link in mech.links]
+    progress = True
+    while progress:
+        progress = False
+        for a, b in combinations(links, 2):
+            if frozenset((a, b)) in known:
+                continue
+            lines = []
+            for j in links:
+                if j in (a, b):
+                    continue
+                p, q = known.get(frozenset((a, j))), known.get(frozenset((j, b)))
+                if p is None or q is None:
+                    continue
+                line = _line(p, q)
+                if line is None:
+                    continue
+                for other, via in lines:
+                    P = _cross(line, other)
+                    if _norm(P) > SAME:
+                        P = _unit(P)
+                        known[frozenset((a, b))] = P
+                        lo, hi = min(a, b), max(a, b)
+                        steps.append(f"I{lo}{hi}: on the line I{min(a, j)}{max(a, j)} I{min(j, b)}{max(j, b)} and "
+                                     f"on the line I{min(a, via)}{max(a, via)} I{min(via, b)}{max(via, b)} "
+                                     f"(Kennedy), which meet {_where(P, size)}.")
+                        progress = True
+                        break
+                else:
+                    lines.append((line, j))
+                    continue
+                break
+
+    # Link by link: Ω, X, w with v(P) = iΩ (P w − X) (P in units of ``size``), X/w being the centre I_1k.
+    fields = {frame: (0.0, 0j, 1.0)}
+    g = next(g for g in kin.groups if isinstance(g, DriverGroup))
+    q_dot = float(kin.q_dot[i])
+    if isinstance(g.joint, Revolute):
+        I12 = known[frozenset((frame, g.link))]
+        fields[g.link] = (q_dot * size / I12[2], complex(I12[0], I12[1]), I12[2])
+    else:
+        # A driving slider translates: w = 0 and X = i v, so that v(P) = -iX is v at every point.
+        fields[g.link] = (1.0, 1j * q_dot * cmath.exp(1j * g.joint.direction), 0.0)
+    progress = True
+    while progress:
+        progress = False
+        for k in links:
+            if k in fields or frozenset((frame, k)) not in known:
+                continue
+            I1k = known[frozenset((frame, k))]
+            X, w = complex(I1k[0], I1k[1]), I1k[2]
+            for m, (Om, Xm, wm) in list(fields.items()):
+                Imk = known.get(frozenset((m, k)))
+                if Imk is None:
+                    continue
+                Y, s = complex(Imk[0], Imk[1]), Imk[2]
+                D = Y * w - X * s
+                if abs(D) <= SAME:
+                    continue
+                R = Om * (Y * wm - Xm * s)  # s times the velocity of I_mk as a point of m (over i)
+                fields[k] = ((R.real * D.real + R.imag * D.imag) / abs(D) ** 2, X, w)
+                progress = True
+                break
+
+    omega, velocity, v_G = {}, {}, {}
+    for link in mech.moving:
+        if link not in fields:
+            continue
+        Om, X, w = fields[link]
+        omega[link] = float(Om * w / size)
+        for name in mech.link(link).points:
+            v = 1j * Om * (pos(link, name) / size * w - X)
+            velocity[link, name] = (float(v.real), float(v.imag))
+        gx, gy = mech.link(link).G
+        G = O[link] + e[link] * complex(gx, gy)
+        v = 1j * Om * (G / size * w - X)
+        v_G[link] = (float(v.real), float(v.imag))
+    centres, infinite = {}, {}
+    for pair, P in known.items():
+        lo, hi = sorted(pair)
+        if abs(P[2]) <= SAME:
+            d = math.hypot(P[0], P[1])
+            infinite[lo, hi] = (float(P[0] / d), float(P[1] / d))
+        else:
+            centres[lo, hi] = (float(P[0] / P[2] * size), float(P[1] / P[2] * size))
+    missing = tuple(sorted((a, b) for a, b in combinations(sorted(links), 2) if frozenset((a, b)) not in known))
+    return InstantCentres(mech, i, centres, infinite, tuple(steps), missing, omega, velocity, v_G)
+

@@ -1,0 +1,26 @@
+"""The velocity and acceleration polygons, and the instant centres, equal the analytical kinematics (hypothesis).
+
+On random mechanisms of every family the core supports: each dyad type (sliders on moving links, so
+Coriolis components, included), gears, random link numbering.
+"""
+
+import pytest
+from hypothesis import given
+from hypothesis import strategies as st
+
+from tests.physics import SETTINGS, forces_from_polygons_equal_analytical, polygons_equal_analytical
+from tests.strategies import families
+
+
+@SETTINGS
+@pytest.mark.parametrize("family", sorted(families))
+@given(data=st.data())
+def test_polygons_equal_analytical(family, data):
+    assert polygons_equal_analytical(data.draw(families[family])) > 0
+
+
+@SETTINGS
+@pytest.mark.parametrize("family", sorted(families))
+@given(data=st.data())
+def test_forces_from_the_polygons_equal_analytical(family, data):
+    assert forces_from_polygons_equal_analytical(data.draw(families[family])) > 0
