@@ -86,6 +86,9 @@ RANGES: dict[str, Range] = {
     "acceleration": Range("accelerations", 1e10, text="within ±1e10 m/s²"),
     "force": Range("forces", 1e10, text="within ±1e10 N (10 GN)"),
     "torque": Range("torques", 1e10, text="within ±1e10 N·m"),
+    "pressure": Range("pressures", 1e10, text="within ±1e10 Pa (10 GPa)"),
+    "power": Range("powers", 1e10, text="within ±1e10 W (10 GW)"),
+    "stiffness": Range("spring rates", 1e12, signed=False, text="from 0 to 1e12 N/m"),
     "friction": Range("friction coefficients", 10.0, signed=False, text="from 0 to 10"),
 }
 """The ranges by kind. ``length`` is a size that must not be zero (a radius, a

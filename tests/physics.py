@@ -15,7 +15,7 @@ from hypothesis import HealthCheck, settings
 from graphkin.analytical import solve_forces
 from graphkin.graphical import construct_forces, construct_kinematics, instant_centres, kinematics_from_polygons
 from graphkin.kinematics import solve_kinematics
-from graphkin.model import FRAME, GearMesh, Mechanism, PointForce, Prismatic, Revolute
+from graphkin.model import FRAME, GearMesh, Mechanism, PointForce, Prismatic, Revolute, SpringForce
 from tests.strategies import length_scale
 from tests.vectors import cross, dot, perp
 
@@ -51,10 +51,19 @@ def _lohi(joint):
 
 
 def pitch_point(kin, mesh: GearMesh, link: int):
-    """Pitch point of a mesh: on the line of centres, r_link from link's centre."""
+    """Pitch point of a mesh: on the line of centres where the pitch circles touch.
+
+    External: between the centres, r_link from link's centre. Internal: on the far side of the pinion's centre
+    from the annulus's, the annulus's pitch radius from its centre.
+    """
     k = mesh.links.index(link)
     Ck = kin.position(link, mesh.centers[k])
     Cj = kin.position(mesh.links[1 - k], mesh.centers[1 - k])
+    if mesh.internal:
+        ring = int(np.argmax(mesh.radii))
+        C_ring, C_pinion = (Ck, Cj) if ring == k else (Cj, Ck)
+        u = (C_pinion - C_ring) / np.linalg.norm(C_pinion - C_ring, axis=-1)[:, None]
+        return C_ring + max(mesh.radii) * u
     e = (Cj - Ck) / np.linalg.norm(Cj - Ck, axis=-1)[:, None]
     return Ck + mesh.radii[k] * e
 
@@ -104,6 +113,11 @@ def load_value(kin, load):
     "working stroke" keeps it only where it resists (F·v < 0).
     """
     on = active(kin, load)
+    if isinstance(load, SpringForce):
+        # Hooke's law along the spring: k (L − L0) towards the other end.
+        d = kin.position(load.anchor_link, load.anchor_point) - kin.position(load.link, load.point)
+        L = np.hypot(d[:, 0], d[:, 1])
+        return on[:, None] * load.rate * (L - load.free_length)[:, None] * d / L[:, None]
     if isinstance(load, PointForce):
         u = np.asarray(load.force, dtype=float)
         if load.table is not None:

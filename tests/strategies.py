@@ -31,6 +31,7 @@ Families (keys of :data:`families`):
 ``stephenson3``             Stephenson III: RRR dyad from a coupler point to the frame
 ``quick_return``            crank-shaper: RPR, then RRP from the rocker to a ram
 ``gear_pair``               two gears pivoted on the frame, load torque on the driven one
+``epicyclic``               a planet on a driven arm, meshing with a fixed sun or annulus (and a sun on the arm's axis)
 """
 
 from __future__ import annotations
@@ -44,7 +45,20 @@ from hypothesis import assume
 from hypothesis import strategies as st
 
 from graphkin.kinematics import Dyad, decompose, solve_kinematics
-from graphkin.model import FRAME, Active, Driver, GearMesh, Link, Mechanism, PointForce, Prismatic, Revolute, Torque
+from graphkin.model import (
+    FRAME,
+    Active,
+    Driver,
+    GearMesh,
+    Link,
+    Mechanism,
+    PointForce,
+    Prismatic,
+    Revolute,
+    SpringForce,
+    Torque,
+    spring,
+)
 
 TWO_PI = 2.0 * math.pi
 
@@ -159,10 +173,21 @@ def _mu(draw, friction, hi=0.35):
 # --------------------------------------------------------------------------
 # loads, gravity, rates
 # --------------------------------------------------------------------------
-def _loads(draw, moving, scale, periodic, q_range):
+def _loads(draw, moving, scale, periodic, q_range, links=()):
     loads = []
     for i in range(draw(st.integers(0, 3))):
         link = draw(st.sampled_from(moving))
+        if links and draw(st.integers(0, 3)) == 0:  # a linear spring from P{link} to a point of another link
+            own = next(lk for lk in links if lk.number == link).points
+            # Not to a pin this link shares (the load point may shrink onto it: a spring of no length has no line).
+            ends = [(lk, p) for lk in links if lk.number != link for p in sorted(lk.points) if p not in own]
+            if not ends:
+                continue
+            other, anchor = draw(st.sampled_from(ends))
+            rate = draw(_floats(0.0, 2000.0)) / scale
+            free = draw(st.one_of(st.just(0.0), _floats(0.05, 2.0))) * scale  # graphkin refuses L0 below 1 µm
+            loads += spring((link, other.number), (f"P{link}", anchor), rate, free, frame=FRAME, name=f"S{i}")
+            continue
         active = None
         if draw(st.integers(0, 3)) == 0:  # sometimes over part of the cycle only
             lo, hi = q_range
@@ -302,7 +327,9 @@ def _relabel(mech: Mechanism, m) -> Mechanism:
             joints.append(dataclasses.replace(j, guide=m[j.guide], slider=m[j.slider]))
         else:
             joints.append(dataclasses.replace(j, links=tuple(m[i] for i in j.links)))
-    loads = [dataclasses.replace(load, link=m[load.link]) for load in mech.loads]
+    loads = [dataclasses.replace(load, link=m[load.link], **({"anchor_link": m[load.anchor_link]}
+                                                            if isinstance(load, SpringForce) else {}))
+             for load in mech.loads]
     driver = Driver(m[mech.driver.link], mech.driver.kind)
     return Mechanism(links, joints, driver, loads, mech.gravity, dict(mech.assembly), mech.title)
 
@@ -314,7 +341,7 @@ def _finish(draw, links, joints, driver, assembly, q_range, periodic, scale, tit
         links,
         joints,
         driver,
-        loads=[*_loads(draw, moving, scale, periodic, q_range), *loads],
+        loads=[*_loads(draw, moving, scale, periodic, q_range, links), *loads],
         gravity=_gravity(draw),
         assembly=assembly,
         title=title,
@@ -622,6 +649,46 @@ def gear_pair(draw, friction=None):
     return _finish(draw, links, joints, Driver(2), {}, (0.0, TWO_PI), True, scale, "gear pair", loads=[load])
 
 
+@st.composite
+def epicyclic(draw, friction=None):
+    """An epicyclic train driven by its arm 2 about O: planet 3 on the arm meshes with a fixed sun or annulus
+    (the frame, external or internal mesh), and half the time also with a sun 4 turning about O (located from the
+    planet), loaded by a torque."""
+    scale = draw(_scales)
+    internal = draw(st.booleans())
+    rp = draw(_floats(0.1, 0.5)) * scale
+    rf = rp * draw(_floats(1.6, 4.0)) if internal else draw(_floats(0.1, 0.8)) * scale
+    arm = rf - rp if internal else rf + rp  # the centre distance: the arm's length
+    O = _point(draw, scale)
+    a_dir = draw(_angles)
+    points = {"O": (0.0, 0.0), "C": _t(arm * _u(a_dir))}
+    arm_link = _link(draw, 2, points, scale, "arm")
+    # The planet's own frame: its centre anywhere, as a pin elsewhere on a link would be.
+    planet = _local_link(draw, 3, {"C": _point(draw, scale, 0.3)}, scale, "planet")
+    frame = Link(1, {"O": _t(O)})
+    if internal:
+        fixed = GearMesh((1, 3), ("O", "C"), (rf, rp), _pressure_angle(draw), internal=True)
+    else:
+        fixed = GearMesh((3, 1), ("C", "O"), (rp, rf), _pressure_angle(draw))
+    links = [frame, arm_link, planet]
+    joints = [Revolute((1, 2), "O"), Revolute((2, 3), "C"), fixed]
+    loads = []
+    if internal and draw(st.booleans()):
+        rs = rf - 2 * rp  # a sun inside the annulus, meshing with the same planet
+        assume(rs > 0.05 * rf)
+        sun = _local_link(draw, 4, {"O": _point(draw, scale, 0.3)}, scale, "sun")
+        links.append(sun)
+        joints += [Revolute((1, 4), "O"), GearMesh((4, 3), ("O", "C"), (rs, rp), _pressure_angle(draw))]
+        loads.append(Torque(4, draw(_floats(-200, 200)) * scale, name="sun load"))
+    else:
+        loads.append(Torque(3, draw(_floats(-200, 200)) * scale, name="planet load"))
+    return _finish(draw, links, joints, Driver(2), {}, (0.0, TWO_PI), True, scale, "epicyclic train", loads=loads)
+
+
+def _pressure_angle(draw):
+    return draw(st.one_of(st.just(0.0), st.just(math.radians(20)), _floats(0.0, math.radians(30))))
+
+
 _builders = {
     "fourbar": fourbar,
     "slider_crank": slider_crank,
@@ -632,6 +699,7 @@ _builders = {
     "stephenson3": stephenson3,
     "quick_return": quick_return,
     "gear_pair": gear_pair,
+    "epicyclic": epicyclic,
 }
 
 families = {name: build() for name, build in _builders.items()}

@@ -9,7 +9,7 @@ import numpy as np
 from graphkin.geometry import as_xy
 from graphkin.geometry import zcross as cross
 from graphkin.kinematics import Kinematics
-from graphkin.model import PointForce, Torque
+from graphkin.model import PointForce, SpringForce, Torque
 
 
 @dataclass(frozen=True)
@@ -90,7 +90,9 @@ def applied(kin: Kinematics, load) -> np.ndarray:
     line the load is zero (Coulomb's sign(v), as lecture 22's friction).
     """
     q = kin.q
-    if isinstance(load, PointForce):
+    if isinstance(load, SpringForce):
+        f = spring_force(kin, load)
+    elif isinstance(load, PointForce):
         f = complex(*load.force)
         if load.table is not None:
             f = f / abs(f) * load.table(q)
@@ -107,6 +109,21 @@ def applied(kin: Kinematics, load) -> np.ndarray:
     if load.active is not None:
         f = np.where(load.active.mask(q), f, 0.0 * f)
     return f + 0.0
+
+
+def spring_force(kin: Kinematics, load: SpringForce) -> np.ndarray:
+    """A spring's force on its end, k (L − L0) towards the other end, at every position (complex, N).
+
+    Where the two ends meet (L = 0) the spring has no line: its force is 0 if it is also free there (L0 = 0),
+    else nan (a compressed spring of no length has no direction).
+    """
+    d = kin.z(load.anchor_link, load.anchor_point) - kin.z(load.link, load.point)
+    if not load.rate:
+        return np.zeros(kin.n, complex)
+    L = np.abs(d)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        u = np.where(L > 0, d / np.where(L > 0, L, 1.0), np.nan if load.free_length else 0.0)
+    return load.rate * (L - load.free_length) * u + 0.0
 
 
 def applied_at(kin: Kinematics, load, i: int):

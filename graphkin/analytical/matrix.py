@@ -20,10 +20,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from graphkin.analytical.kinetostatics import _w
+from graphkin.analytical.kinetostatics import _w, pitch
 from graphkin.analytical.loads import known_loads
 from graphkin.analytical.result import ForceAnalysis
-from graphkin.geometry import as_xy, cross, perp
+from graphkin.geometry import as_xy, cross
 from graphkin.model import GearMesh, Prismatic, Revolute
 
 
@@ -138,12 +138,12 @@ def assemble(result: ForceAnalysis) -> System:
         elif isinstance(joint, GearMesh):
             F = result.forces[(lo, hi)]
             size = np.linalg.norm(F, axis=-1)
-            centre = kin.position(hi, joint.centers[joint.links.index(hi)])
-            other = kin.position(lo, joint.centers[joint.links.index(lo)])
-            radial = (other - centre) / np.linalg.norm(other - centre, axis=-1)[:, None]
+            centre = kin.z(hi, joint.centers[joint.links.index(hi)])
+            other = kin.z(lo, joint.centers[joint.links.index(lo)])
+            P, t, _ = pitch(joint, hi, centre, other)
             # Unit direction of the tooth force on hi (its tangent where it vanishes).
-            d = np.where(size[:, None] > 0, F / np.where(size > 0, size, 1.0)[:, None], perp(radial))
-            X = centre + joint.radii[joint.links.index(hi)] * radial
+            d = np.where(size[:, None] > 0, F / np.where(size > 0, size, 1.0)[:, None], as_xy(t))
+            X = as_xy(P)
             put(hi, c, d, X)
             put(lo, c, -d, X)
             unknowns.append(f"F{name}")

@@ -37,6 +37,8 @@ def run(args) -> int:
     problem = catalog.load(args.problem)
     result = problem.solve(positions(problem, args.at) if args.at is not None else None)
     graphical = report.constructions(result)
+    # A position where the two routes disagree is not valid: neither answer can be trusted there.
+    result = report.cross_check(result, graphical)
     if args.json:
         kinematic = report.kinematic_constructions(result.kinematics)
         print(json_text(report.solution(problem, result, graphical, kinematic)))

@@ -17,6 +17,7 @@ from typing import TYPE_CHECKING, Mapping
 import numpy as np
 
 from graphkin.analytical import ForceAnalysis
+from graphkin.analytical.kinetostatics import pitch
 from graphkin.cycle._sampling import (
     SWITCH,
     Peak,
@@ -31,7 +32,7 @@ from graphkin.cycle._turn import TURN, closing_step, weights
 from graphkin.cycle.flywheel import size_flywheel
 from graphkin.cycle.index import JointForceIndex, index_at
 from graphkin.errors import GraphkinError
-from graphkin.geometry import cross
+from graphkin.geometry import as_xy, cross
 from graphkin.model import GearMesh, Prismatic, Revolute
 from graphkin.notation import position_text
 
@@ -264,8 +265,12 @@ class Cycle:
             elif isinstance(joint, Prismatic):
                 X = kin.position(joint.slider, joint.point)
                 M = M + cross(X, -F) - r.couple[(kin.mechanism.frame, j)]
-            elif isinstance(joint, GearMesh):  # pragma: no cover - a gear mesh never involves the frame
-                raise GraphkinError(f"{joint.label}: a gear mesh with the frame is not supported")
+            elif isinstance(joint, GearMesh):  # a held sun or annulus: the tooth force acts at the pitch point
+                frame = kin.mechanism.frame
+                C_j = kin.z(j, joint.centers[joint.links.index(j)])
+                C_frame = kin.z(frame, joint.centers[joint.links.index(frame)])
+                X = as_xy(pitch(joint, j, C_j, C_frame)[0])
+                M = M + cross(X, -F)
         if self.problem.mechanism.driver.crank:
             M = M - self.torque
         else:

@@ -149,7 +149,7 @@ class _RadialLabels(Artist):
             labels = [(tick.get_loc(), tick.label1) for tick in axis._update_ticks()
                       if r0 < tick.get_loc() <= r1 and tick.label1.get_text()]
             boxes = np.array([t.get_window_extent(renderer).extents for _, t in labels]).reshape(-1, 4)
-            boxes = boxes + [-2.0, -2.0, 2.0, 2.0]
+            boxes = boxes + [-4.0, -4.0, 4.0, 4.0]
             hits = _hits_many(P, Q, W, np.ones(len(P)), boxes)
             a, b = boxes[:-1], boxes[1:]
             stacked = int(np.sum((np.minimum(a[:, 2], b[:, 2]) > np.maximum(a[:, 0], b[:, 0]))

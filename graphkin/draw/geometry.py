@@ -7,6 +7,7 @@ import math
 import numpy as np
 
 from graphkin.draw.axes import MM
+from graphkin.draw.gears import mesh_phase
 from graphkin.model import GearMesh, Prismatic, Revolute
 
 PINION_TEETH = 16
@@ -107,11 +108,10 @@ class Geometry:
                     za, phase_a, _ = out[a]
                     zb = max(6, round(2 * radius[b] / m))
                     psi = math.atan2(*(cb - ca)[::-1])  # from a's centre towards the pitch point
-                    ra, rb = radius[a], radius[b]
+                    ra = radius[a]
                     # Arc from a's nearest tooth back to the pitch point, and b's gap there (see above).
                     sa = ra * ((psi - phase_a) % (2 * math.pi / za))
-                    pb = 2 * math.pi * rb / zb
-                    out[b] = (zb, psi + math.pi - (pb / 2 - sa) / rb, m)
+                    out[b] = (zb, mesh_phase(self, mesh, a, b, out[a], zb, psi, sa), m)
                     placed = True
             todo = [n for n in todo if n not in out]
         return out

@@ -23,6 +23,7 @@ from graphkin.draw.axes import (
     set_limits,
     setup_axes,
 )
+from graphkin.draw.gears import draw_annulus, frame_gears, gear_outline
 from graphkin.draw.geometry import Geometry
 from graphkin.draw.labels import Labeler, point_label_candidates
 from graphkin.draw.scales import nice_round, scale_bar
@@ -81,7 +82,7 @@ def draw_link_body(ax, geom: Geometry, n: int, s, labeler: Labeler | None = None
         else:
             _band(ax, hull, s, out)
     for mesh, k in gears:
-        out += _gear(ax, geom, n, pts[mesh.centers[k]], mesh.radii[k] * MM, s, labeler)
+        out += (draw_annulus if mesh.ring == n else _gear)(ax, geom, n, pts[mesh.centers[k]], mesh.radii[k] * MM, s, labeler)
     for j in sliders:
         X, u = geom.guide(j)
         block = Polygon(_rect(X, u, 3.4 * geom.sym, 2.0 * geom.sym), closed=True, facecolor=s.link_fill,
@@ -109,28 +110,6 @@ def draw_link_body(ax, geom: Geometry, n: int, s, labeler: Labeler | None = None
         if labeler:
             labeler.dot(X, size)
     return out
-
-
-def gear_outline(centre, r, teeth: int, phase: float, module: float, n_root: int = 3) -> np.ndarray:
-    """The outline of a spur gear of pitch radius ``r`` [mm]: ``teeth`` trapezoids, one centred at ``phase`` [rad].
-
-    Addendum one module, dedendum 1.25 modules; straight flanks, each tooth
-    about 0.4 of the circular pitch thick at the pitch circle (a sketch, not
-    an involute: the thin teeth keep clear of each other in mesh). Returns
-    the closed polygon's vertices (not repeated at the end).
-    """
-    tau = 2 * math.pi / teeth
-    ra, rr = r + module, max(r - 1.25 * module, 0.3 * r)
-    pts = []
-    for k in range(teeth):
-        c = phase + k * tau
-        pts.append((rr, c - 0.28 * tau))
-        pts.append((ra, c - 0.12 * tau))
-        pts.append((ra, c + 0.12 * tau))
-        for t in np.linspace(0.28, 0.72, n_root):
-            pts.append((rr, c + t * tau))
-    rho, ang = np.asarray(pts).T
-    return np.column_stack([centre[0] + rho * np.cos(ang), centre[1] + rho * np.sin(ang)])
 
 
 def _gear(ax, geom: Geometry, n: int, centre, r, s, labeler):
@@ -315,6 +294,12 @@ def draw_mechanism(construction, *, ax=None, labels=True, faint=False, emphasis=
         if faint:
             for a in drawn[before:]:
                 a.set_alpha(s.faint_alpha)
+    for mesh, centre, r in frame_gears(geom):  # a held sun or annulus, under the planets
+        gear = (draw_annulus if mesh.ring == geom.mech.frame else _gear)(ax, geom, geom.mech.frame, centre, r, s, lab)
+        drawn += gear
+        extent += [centre - 1.2 * r, centre + 1.2 * r]
+        for a in gear if faint else ():
+            a.set_alpha(s.faint_alpha)
     for n in geom.mech.moving:
         before = len(drawn)
         drawn += draw_link_body(ax, geom, n, s, lab)

@@ -43,6 +43,7 @@ import math
 
 import numpy as np
 
+from graphkin.analytical.kinetostatics import pitch as pitch_point
 from graphkin.analytical.loads import applied_at, inertia
 from graphkin.errors import GraphkinError
 from graphkin.graphical.builder import Builder, DeadPoint, xy
@@ -131,6 +132,6 @@ def _geometry(kin: Kinematics, i: int) -> dict:
         if isinstance(joint, GearMesh):
             (a, b), (ca, cb) = joint.links, joint.centers
             A, B = complex(kin.z(a, ca)[i]), complex(kin.z(b, cb)[i])
-            pitch[tuple(sorted(joint.links))] = xy(A + joint.radii[0] * (B - A) / abs(B - A))
+            pitch[tuple(sorted(joint.links))] = xy(pitch_point(joint, a, A, B)[0])
     return {"points": points, "G": G, "inertia": inert, "external": external, "pitch_points": pitch,
             "torques": torques, "guides": guides, "angles": angles}

@@ -45,6 +45,7 @@ import math
 import numpy as np
 import shapely
 
+from graphkin.analytical.kinetostatics import pitch
 from graphkin.analytical.loads import applied_at
 from graphkin.geometry import zcross as cross
 from graphkin.geometry import zdot as dot
@@ -488,10 +489,9 @@ class Builder:
     # -- gears and the driver ----------------------------------------------------
     def gear(self, g: GearGroup, R: _Load):
         mesh = g.mesh
-        rk = mesh.radii[mesh.links.index(g.k)]
-        Ck, Cj = self.z(g.b, g.pivot.point), self.z(g.b, g.j_pivot.point)
-        e = (Cj - Ck) / abs(Cj - Ck)
-        P = Ck + rk * e
+        rk = mesh.radius(g.k)
+        Ck, Cj = self.z(g.b, g.ck), self.z(g.b, g.cj)
+        P, t, r = pitch(mesh, g.k, Ck, Cj)
         self.order.setdefault(id(mesh), (mesh, g.k))
         self.order.setdefault(id(g.pivot), (g.pivot, g.k))
         if R.F == 0 and R.M0 == 0:
@@ -503,9 +503,9 @@ class Builder:
         # The flank the tooth force presses on follows the tangential load; a sub-problem keeps the whole problem's.
         flank = float(np.sign(W_t)) if self.fixed is None else self.fixed.get(id(mesh), 0.0)
         self.sides[id(mesh)] = flank
-        d = 1j * e - flank * math.tan(mesh.pressure_angle) * e
+        d = t + flank * math.tan(mesh.pressure_angle) * r
         d /= abs(d)
-        nW, nF = self.name(g.j, g.k), self.name(g.b, g.k)
+        nW, nF = self.name(g.j, g.k), self.name(g.support, g.k)
         Rk = self.rname[g.k]
         self.add("line", self.lead(f"the tooth force {nW} lies on the pressure line through the pitch point P, inclined "
                                    f"{number(math.degrees(mesh.pressure_angle))}° to the common tangent, on the flank that "
@@ -628,8 +628,12 @@ class Builder:
             if isinstance(g, DriverGroup):
                 self.driver(g, R_of(g.link))
             elif isinstance(g, GearGroup):
-                F_W, P = self.gear(g, R_of(g.k))[id(g.mesh)]
+                found = self.gear(g, R_of(g.k))
+                F_W, P = found[id(g.mesh)]
                 pass_on(g.j, self.base_name(g.k, g.j), -F_W, P)
+                # The pivot's reaction loads the link gear k turns on: the arm of an epicyclic train.
+                F_piv, C = found[id(g.pivot)]
+                pass_on(g.support, self.base_name(g.k, g.support), -F_piv, C)
             else:
                 self.dyad(g, {g.j: R_of(g.j), g.k: R_of(g.k)})
                 for J, on in ((g.J1, g.j), (g.J3, g.k)):

@@ -228,15 +228,19 @@ def _driver(doc, kin, i: int, g: DriverGroup, rates: bool = True):
 
 
 def _gear(doc, st, g: GearGroup, rates: bool = True):
-    rj, rk = g.mesh.radii if g.mesh.links[0] == g.j else g.mesh.radii[::-1]
+    rj, rk = g.mesh.radius(g.j), g.mesh.radius(g.k)
     rho = rj / rk
     b, j, k = g.b, g.j, g.k
+    # Relative to the carrier the pair turns as gears on fixed axes (Willis): opposite ways when external, the same
+    # way when one is an annulus.
+    sign, op = (1.0, "+") if g.mesh.internal else (-1.0, "−")
     doc.heading(3, f"Gear {k}: meshing with gear {j}" + (f" on carrier {b}" if b in st.mech.moving else ""))
-    doc.text(f"Gear {k} turns about {g.pivot.point} on link {b}; relative to link {b} it turns the other way from "
-             f"gear {j}, by the ratio of the pitch radii ρ = r{j}/r{k}:")
-    theta_k = _f(st.angle(b)) - rho * (_f(st.angle(j)) - _f(st.angle(b)))
-    w_k = _f(st.omega[b]) - rho * (_f(st.omega[j]) - _f(st.omega[b]))
-    a_k = _f(st.alpha[b]) - rho * (_f(st.alpha[j]) - _f(st.alpha[b]))
+    doc.text(f"Gear {k} turns about {g.ck}, a point of link {b}; relative to link {b} it turns "
+             f"{'the same way as' if g.mesh.internal else 'the other way from'} gear {j}, by the ratio of the pitch "
+             f"radii ρ = r{j}/r{k}:")
+    theta_k = _f(st.angle(b)) + sign * rho * (_f(st.angle(j)) - _f(st.angle(b)))
+    w_k = _f(st.omega[b]) + sign * rho * (_f(st.omega[j]) - _f(st.omega[b]))
+    a_k = _f(st.alpha[b]) + sign * rho * (_f(st.alpha[j]) - _f(st.alpha[b]))
     lines = [M.row(M.i("ρ"), M.op("="), M.frac(M.qty(rj * 1e3, "mm"), M.qty(rk * 1e3, "mm")), M.op("="), M.n(rho))]
     for sym, values, result, unit in (
             (_th, (st.angle(b), st.angle(j)), theta_k, "°"),
@@ -245,8 +249,8 @@ def _gear(doc, st, g: GearGroup, rates: bool = True):
         vb, vj = (_f(v) for v in values)
         show = _deg if unit == "°" else M.n
         tail = _deg(result) if unit == "°" else M.qty(result, unit)
-        lines.append(M.row(sym(k), M.op("="), sym(b), M.op("−"), M.i("ρ"), M.paren(sym(j), M.op("−"), sym(b)),
-                           M.op("="), show(vb), M.op("−"), M.n(rho), M.paren(show(vj), M.op("−"), show(vb)),
+        lines.append(M.row(sym(k), M.op("="), sym(b), M.op(op), M.i("ρ"), M.paren(sym(j), M.op("−"), sym(b)),
+                           M.op("="), show(vb), M.op(op), M.n(rho), M.paren(show(vj), M.op("−"), show(vb)),
                            M.op("="), tail))
     doc.equation(*lines)
 

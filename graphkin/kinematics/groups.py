@@ -382,15 +382,19 @@ def locate_driver(st: State, g: DriverGroup, q, q_dot, q_ddot):
 
 
 def gear(st: State, g: GearGroup):
-    rj, rk = g.mesh.radii if g.mesh.links[0] == g.j else g.mesh.radii[::-1]
-    rho = rj / rk
+    """Gear k from its mesh with gear j: relative to the carrier b, ω_k − ω_b = ∓ρ (ω_j − ω_b), ρ = r_j / r_k.
+
+    Minus for an external mesh (the gears turn opposite ways relative to the carrier), plus for an internal one;
+    the same for the angles and the accelerations.
+    """
+    rj, rk = g.mesh.radius(g.j), g.mesh.radius(g.k)
+    rho = g.sign * rj / rk
     b, j, k = g.b, g.j, g.k
-    # External mesh: relative to the carrier, the gears turn in opposite senses.
-    st.theta[k] = st.angle(b) - rho * (st.angle(j) - st.angle(b))
-    X = st.pos(b, g.pivot.point)
+    st.theta[k] = st.angle(b) + rho * (st.angle(j) - st.angle(b))
+    X = st.pos(b, g.ck)
     st.place(k, np.exp(1j * st.theta[k]), X, g.pivot.point)
-    st.omega[k] = st.omega[b] - rho * (st.omega[j] - st.omega[b])
-    st.alpha[k] = st.alpha[b] - rho * (st.alpha[j] - st.alpha[b])
+    st.omega[k] = st.omega[b] + rho * (st.omega[j] - st.omega[b])
+    st.alpha[k] = st.alpha[b] + rho * (st.alpha[j] - st.alpha[b])
     r = st.O[k] - X
     st.v_O[k] = st.vel_at(b, X) + 1j * st.omega[k] * r
     st.a_O[k] = st.acc_at(b, X) + (1j * st.alpha[k] - st.omega[k] ** 2) * r

@@ -87,7 +87,28 @@ class Dyad:
 
 @dataclass(frozen=True)
 class GearGroup:
-    """Gear k pivoted on carrier b, driven through ``mesh`` by located gear j (also pivoted on b)."""
+    """Gear k, located by its mesh with gear j (located) and its pivot; both centres are fixed in carrier b.
+
+    The carrier b is located before k. It is the link both gears are
+    pivoted on (the frame of a gear pair, the arm of an epicyclic train), or
+    the arm of an epicyclic train when one gear is pivoted on the arm and the
+    other on the link the arm turns about, at the arm's axis (a planet on an
+    arm meshing with a sun or annulus on the frame). Relative to b the gears
+    turn as a fixed-axis pair: ω_k − ω_b = ∓ (r_j / r_k)(ω_j − ω_b), minus for
+    an external mesh, plus for an internal one.
+
+    Attributes
+    ----------
+    k, j, b : int
+        The gear located here, the gear it meshes with, the carrier.
+    mesh : GearMesh
+    pivot : Revolute
+        Gear k's pin: to the carrier, or to the link the carrier turns about.
+    j_pivot : Revolute
+        Gear j's pin (to the carrier, or to the link it turns on).
+    ck, cj : str
+        The points of the carrier at the centres of k and of j.
+    """
 
     k: int
     j: int
@@ -95,6 +116,14 @@ class GearGroup:
     mesh: GearMesh
     pivot: Revolute
     j_pivot: Revolute
+    ck: str = ""
+    cj: str = ""
+
+    def __post_init__(self):
+        if not self.ck:
+            object.__setattr__(self, "ck", self.pivot.point)
+        if not self.cj:
+            object.__setattr__(self, "cj", self.j_pivot.point)
 
     @property
     def links(self) -> tuple[int, ...]:
@@ -103,6 +132,16 @@ class GearGroup:
     @property
     def joints(self) -> tuple[Joint, ...]:
         return (self.pivot, self.mesh)
+
+    @property
+    def support(self) -> int:
+        """The link gear k is pivoted on (its pin's other link): the carrier, or the link the carrier turns about."""
+        return (set(self.pivot.links) - {self.k}).pop()
+
+    @property
+    def sign(self) -> float:
+        """−1 for an external mesh (relative to the carrier the gears turn opposite ways), +1 for an internal one."""
+        return 1.0 if self.mesh.internal else -1.0
 
     @property
     def label(self) -> str:
@@ -162,29 +201,82 @@ def _next_gear(mech, unknown, known, used):
             if k not in unknown or j not in known:
                 continue
             for pivot in mech.joints_of(k):
-                b = (set(pivot.links) - {k}).pop()
-                if isinstance(pivot, Revolute) and b in known and id(pivot) not in used:
-                    try:
-                        j_pivot = mech.joint_between(j, b)
-                    except ModelError:
-                        j_pivot = None
-                    if not isinstance(j_pivot, Revolute):
-                        raise ModelError(f"{mesh.label}: both gears must be pivoted on one link; gear {j} is not "
-                                         f"pivoted on link {b}", at=("joints", _index(mech, mesh), "links"))
-                    _check_centre_distance(mech, mesh, k, j, b, pivot, j_pivot)
-                    return GearGroup(k, j, b, mesh, pivot, j_pivot)
+                s = (set(pivot.links) - {k}).pop()
+                if isinstance(pivot, Revolute) and s in known and id(pivot) not in used:
+                    found = _carrier(mech, mesh, k, j, s, pivot, known)
+                    if found is None:
+                        raise ModelError(f"{mesh.label}: the gear centres must stay a fixed distance apart: gear {j} must be "
+                                         f"pivoted on link {s}, as gear {k} is, or one of them on an arm that turns about "
+                                         f"the other's centre (an epicyclic train); gear {j} is neither",
+                                         at=("joints", _index(mech, mesh), "links"))
+                    b, ck, cj, j_pivot = found
+                    _check_centres(mech, mesh, k, j, pivot, j_pivot)
+                    _check_centre_distance(mech, mesh, b, ck, cj)
+                    return GearGroup(k, j, b, mesh, pivot, j_pivot, ck, cj)
     return None
 
 
-def _check_centre_distance(mech, mesh, k, j, b, pivot, j_pivot):
+def _revolute(mech, i, j):
+    """The revolute joint between links i and j, or None."""
+    try:
+        joint = mech.joint_between(i, j)
+    except ModelError:
+        return None
+    return joint if isinstance(joint, Revolute) else None
+
+
+def _same_place(link, p, q) -> bool:
+    """Whether points p and q of one link coincide (the same name, or the same coordinates to rounding)."""
+    if p == q:
+        return True
+    (xp, yp), (xq, yq) = link.point(p), link.point(q)
+    return math.hypot(xp - xq, yp - yq) <= 1e-9 * max(math.hypot(xp, yp), math.hypot(xq, yq), 1e-3)
+
+
+def _carrier(mech, mesh, k, j, s, pivot, known):
+    """The carrier of a mesh whose new gear k is pivoted on located link s: ``(b, ck, cj, j_pivot)``, or None.
+
+    Three arrangements keep the centre distance fixed: j pivoted on s too (a gear pair on the frame, two gears on
+    one arm); j pivoted on a link c about which s turns, at j's centre (a planet k on arm s, meshing with a sun or
+    annulus j on the frame); j pivoted on an arm c that turns about s at k's centre (a sun or annulus k on the
+    frame s, meshing with a planet j on arm c).
+    """
+    j_pivot = _revolute(mech, j, s)
+    if j_pivot is not None:
+        return s, pivot.point, j_pivot.point, j_pivot
+    for c in known:
+        j_pivot = _revolute(mech, j, c)
+        if j_pivot is None or c == k:
+            continue
+        arm = _revolute(mech, s, c)
+        if arm is not None and _same_place(mech.link(c), arm.point, j_pivot.point):
+            return s, pivot.point, arm.point, j_pivot
+        arm = _revolute(mech, c, s)
+        if arm is not None and _same_place(mech.link(s), arm.point, pivot.point):
+            return c, arm.point, j_pivot.point, j_pivot
+    return None
+
+
+def _check_centres(mech, mesh, k, j, pivot, j_pivot):
+    """The mesh's centre of each gear must be where the gear is pivoted."""
+    for gear, joint in ((k, pivot), (j, j_pivot)):
+        centre = mesh.centers[mesh.links.index(gear)]
+        if not _same_place(mech.link(gear), centre, joint.point):
+            raise ModelError(f"{mesh.label}: the centre {centre} of gear {gear} is not at its pivot {joint.point}",
+                             at=("joints", _index(mech, mesh), "centers"))
+
+
+def _check_centre_distance(mech, mesh, b, ck, cj):
     carrier = mech.link(b)
-    (xk, yk), (xj, yj) = carrier.point(pivot.point), carrier.point(j_pivot.point)
+    (xk, yk), (xj, yj) = carrier.point(ck), carrier.point(cj)
     d = math.hypot(xk - xj, yk - yj)
-    r = sum(mesh.radii)
+    r = mesh.centre_distance
     if abs(d - r) > 1e-9 * max(d, r):
-        raise ModelError(f"{mesh.label}: pitch radii {mesh.radii[0] * 1e3:.6g} mm + {mesh.radii[1] * 1e3:.6g} mm do not "
-                         f"add up to the centre distance {d * 1e3:.6g} mm between {pivot.point} and {j_pivot.point}",
-                         at=("joints", _index(mech, mesh), "radii"))
+        how = "less" if mesh.internal else "+"
+        first, second = (max(mesh.radii), min(mesh.radii)) if mesh.internal else mesh.radii
+        raise ModelError(f"{mesh.label}: pitch radii {first * 1e3:.6g} mm {how} {second * 1e3:.6g} mm do not "
+                         f"{'leave' if mesh.internal else 'add up to'} the centre distance {d * 1e3:.6g} mm between "
+                         f"{ck} and {cj}", at=("joints", _index(mech, mesh), "radii"))
 
 
 def _index(mech, joint) -> int:

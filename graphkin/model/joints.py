@@ -121,26 +121,35 @@ class Prismatic:
 
 @dataclass(frozen=True)
 class GearMesh:
-    """Two external spur gears in mesh.
+    """Two spur gears in mesh: external (two pinions), or internal (a pinion inside an annulus).
 
     Parameters
     ----------
     links : (int, int)
-        The two gear links. Each must be pivoted (revolute) on one common
-        carrier link, usually the frame.
+        The two gear links. Their centres stay a fixed distance apart: both
+        gears are pivoted on one carrier link (the frame, or the arm of an
+        epicyclic train), or one is pivoted on a link that turns about the
+        other's centre (a planet on an arm that turns about the sun's axis).
     centers : (str, str)
         Names of the gear centres (their pivot points) on each gear link.
     radii : (float, float)
-        Pitch radii [m]; their sum must equal the centre distance.
+        Pitch radii [m]; their sum (internal: their difference) must equal the
+        centre distance.
     pressure_angle : float
         Pressure angle φ [rad], 0 ≤ φ < 45°. The tooth force lies on the
         pressure line, inclined by φ to the common tangent at the pitch point.
+    internal : bool
+        True for an annulus (ring gear) with teeth inside, meshing with a
+        pinion inside it: the gear with the larger pitch radius is the
+        annulus. Relative to a carrier that holds both centres, the two then
+        turn the same way (external gears turn opposite ways).
     """
 
     links: tuple[int, int]
     centers: tuple[str, str]
     radii: tuple[float, float]
     pressure_angle: float = math.radians(20.0)
+    internal: bool = False
 
     def __post_init__(self):
         object.__setattr__(self, "links", _pair(self.links, "gear mesh"))
@@ -161,10 +170,33 @@ class GearMesh:
                              f"got {math.degrees(phi):.12g}°", at=("pressure_angle",))
         object.__setattr__(self, "pressure_angle", phi)
         object.__setattr__(self, "centers", tuple(self.centers))
+        if not isinstance(self.internal, (bool, np.bool_)):
+            raise ModelError(f"{label}: internal must be True (an annulus and a pinion) or False, got {self.internal!r}",
+                             at=("internal",))
+        object.__setattr__(self, "internal", bool(self.internal))
+        if self.internal and abs(r[0] - r[1]) <= 1e-9 * max(r):
+            raise ModelError(f"{label}: an internal mesh needs an annulus larger than its pinion, got equal pitch radii "
+                             f"{r[0] * 1e3:.6g} mm", at=("radii",))
 
     @property
     def label(self) -> str:
-        return f"gear mesh {self.links[0]}–{self.links[1]}"
+        return f"{'internal ' if self.internal else ''}gear mesh {self.links[0]}–{self.links[1]}"
+
+    @property
+    def ring(self) -> int | None:
+        """The annulus of an internal mesh (the gear of the larger pitch radius), None for an external mesh."""
+        if not self.internal:
+            return None
+        return self.links[0] if self.radii[0] > self.radii[1] else self.links[1]
+
+    def radius(self, link: int) -> float:
+        """Pitch radius [m] of gear ``link``."""
+        return self.radii[self.links.index(link)]
+
+    @property
+    def centre_distance(self) -> float:
+        """Distance between the gear centres [m]: r₁ + r₂, or the annulus's less the pinion's."""
+        return abs(self.radii[0] - self.radii[1]) if self.internal else self.radii[0] + self.radii[1]
 
     force_letter = "F"
 

@@ -225,6 +225,84 @@ class PointForce:
 
 
 @dataclass(frozen=True)
+class SpringForce(PointForce):
+    """The pull of a linear spring on one of its ends: a point force that follows the spring's length.
+
+    The spring runs from ``point`` of ``link`` (the end this force acts on) to ``anchor_point`` of
+    ``anchor_link`` (its other end, the frame or a moving link). With L the distance between the ends and L0
+    the free length, the force on this end is k (L − L0) along the spring towards the other end (where the ends
+    meet, L = 0, a spring with L0 > 0 has no line: its force is nan, and the position is not valid): a stretched
+    spring (L > L0) pulls the ends together, a compressed one pushes them apart. The other end, if it is a
+    moving link, carries its own :class:`SpringForce`, equal and opposite. Build both with :func:`spring`.
+
+    Parameters
+    ----------
+    link, point : int, str
+        This end.
+    force : (float, float)
+        Not used: (0, 0). The force is worked out at each position.
+    anchor_link, anchor_point : int, str
+        The other end.
+    rate : float
+        Spring rate k [N/m], ≥ 0.
+    free_length : float
+        Free length L0 [m], ≥ 0.
+    """
+
+    anchor_link: int = 1
+    anchor_point: str = ""
+    rate: float = 0.0
+    free_length: float = 0.0
+
+    def __post_init__(self):
+        super().__post_init__()
+        what = f"spring from link {self.link} at {self.point} to link {self.anchor_link} at {self.anchor_point}"
+        if self.table is not None or self.sense != "fixed":
+            raise ModelError(f"{what}: a spring's force follows its length; it takes no table and no sense")
+        object.__setattr__(self, "rate", check(finite(self.rate, f"{what}: rate", "N/m"), "stiffness", f"{what}: rate"))
+        object.__setattr__(self, "free_length", check(finite(self.free_length, f"{what}: free length", "m"),
+                                                      "length0", f"{what}: free length"))
+
+    @property
+    def varies(self) -> bool:
+        """Always: the force follows the spring's length."""
+        return True
+
+
+def spring(links, points, rate: float, free_length: float, *, frame: int = 1, name: str = "",
+           active: Active | None = None) -> list[SpringForce]:
+    """A linear spring between two points, as the forces it puts on its moving ends.
+
+    Parameters
+    ----------
+    links : (int, int)
+        The links the spring's ends are fixed to (one may be the frame).
+    points : (str, str)
+        The point of each link it is fixed to.
+    rate : float
+        Spring rate k [N/m].
+    free_length : float
+        Free length L0 [m].
+    frame : int
+        The frame's number: no force is put on the frame.
+    name : str
+        Shown in reports (with the end's point).
+    active : Active or None
+        Where the spring acts; None for always.
+
+    Returns
+    -------
+    list of SpringForce
+        One per moving end.
+    """
+    (a, b), (pa, pb) = tuple(links), tuple(points)
+    label = name or f"spring {pa}{pb}"
+    return [SpringForce(link, p, (0.0, 0.0), active, label, anchor_link=other, anchor_point=q, rate=rate,
+                        free_length=free_length)
+            for link, p, other, q in ((a, pa, b, pb), (b, pb, a, pa)) if link != frame]
+
+
+@dataclass(frozen=True)
 class Torque:
     """A couple T [N·m] on a link, CCW positive."""
 
@@ -250,6 +328,7 @@ class Torque:
 
 
 Load = PointForce | Torque
+"""An external load (a :class:`SpringForce` is a :class:`PointForce`)."""
 
 
 def standard_gravity(g: float) -> float:

@@ -12,7 +12,7 @@ from graphkin.errors import ModelError
 from graphkin.model.driver import Driver
 from graphkin.model.joints import GearMesh, Joint, Prismatic, Revolute
 from graphkin.model.link import FRAME, FRAME_NUMBERS, Link
-from graphkin.model.loads import Load, PointForce, Torque, standard_gravity
+from graphkin.model.loads import Load, PointForce, SpringForce, Torque, standard_gravity
 from graphkin.ranges import complaint
 
 
@@ -157,6 +157,14 @@ class Mechanism:
                     self.link(load.link).point(load.point)
                 except ModelError as exc:
                     raise ModelError(f"load {load.name + ': ' if load.name else ''}{exc}", at=("loads", k, "point")) from None
+            if isinstance(load, SpringForce):
+                if load.anchor_link not in numbers:
+                    raise ModelError(f"{load.name or 'spring'}: its other end names unknown link {load.anchor_link} "
+                                     f"(links are {known})", at=("loads", k, "links"))
+                try:
+                    self.link(load.anchor_link).point(load.anchor_point)
+                except ModelError as exc:
+                    raise ModelError(f"{load.name or 'spring'}: {exc}", at=("loads", k, "points")) from None
         for key, sigma in self.assembly.items():
             if isinstance(sigma, bool) or sigma not in (1, -1):
                 raise ModelError(f"assembly branch for {key!r} must be +1 or -1, got {sigma!r}", at=("assembly", key))

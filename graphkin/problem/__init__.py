@@ -5,13 +5,14 @@
 :mod:`.file`                :func:`load_problem`, :func:`parse_problem`, :func:`build_problem`
 :mod:`.reader`              :class:`FieldReader`: fields to SI, errors naming file and field
 :mod:`.tables`              tables against the input (a torque curve), inline or in a CSV
+:mod:`.books`               pressures, powers, dead centres, a slider placed by an angle, ``[forward]``
 ==========================  ===========================================================
 
 The format is documented field by field in ``docs/problem-files.md``.
 """
 
 from graphkin.problem.file import build_problem, load_problem, parse_problem
-from graphkin.problem.problem import Problem
+from graphkin.problem.problem import Forward, Problem
 from graphkin.problem.reader import FieldReader
 
-__all__ = ["FieldReader", "Problem", "build_problem", "load_problem", "parse_problem"]
+__all__ = ["FieldReader", "Forward", "Problem", "build_problem", "load_problem", "parse_problem"]

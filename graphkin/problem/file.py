@@ -18,39 +18,32 @@ from graphkin.errors import GraphkinError, GraphkinWarning, ModelError, ProblemF
 from graphkin.files import read_text
 from graphkin.kinematics import decompose
 from graphkin.kinematics.structure import Dyad
-from graphkin.model import (
-    SENSES,
-    Active,
-    Driver,
-    GearMesh,
-    Link,
-    Mechanism,
-    PointForce,
-    Prismatic,
-    Revolute,
-    Table,
-    Torque,
-)
+from graphkin.model import SENSES, Active, Driver, GearMesh, Link, Mechanism, PointForce, Prismatic, Revolute, Torque
 from graphkin.model import mass as massprops
+from graphkin.problem import books
 from graphkin.problem.problem import Problem
 from graphkin.problem.reader import FieldReader
-from graphkin.problem.tables import parse_table, read_csv_beside
+from graphkin.problem.tables import load_table
 
 _TOP = {"title", "source", "cite", "notes", "analysis", "gravity", "frame", "links", "joints", "driver", "loads", "assembly",
-        "given"}
+        "given", "forward"}
 _ANALYSES = ("dynamic", "static")
 _LINK = {"number", "name", "points", "mass", "G", "I_G", "k", "shape"}
 _JOINT = {
     "revolute": {"type", "links", "point"},
     "prismatic": {"type", "guide", "slider", "point", "through", "direction", "slider_direction", "mu"},
-    "gear": {"type", "links", "centers", "radii", "pressure_angle"},
+    "gear": {"type", "links", "centers", "radii", "pressure_angle", "internal"},
 }
 _DRIVER = {
-    "crank": {"type", "link", "theta", "omega", "alpha"},
-    "slider": {"type", "link", "s", "v", "a"},
+    "crank": {"type", "link", "theta", "omega", "alpha", "from", "sense"},
+    "slider": {"type", "link", "s", "v", "a", "place"},
 }
 _LOAD = {"force": {"type", "link", "point", "force", "direction", "table", "csv", "decimal", "sense", "active", "name"},
-         "torque": {"type", "link", "torque", "table", "csv", "decimal", "sense", "active", "name"}}
+         "torque": {"type", "link", "torque", "table", "csv", "decimal", "sense", "active", "name"},
+         "pressure": {"type", "link", "point", "bore", "rod", "pressure", "back_pressure", "side", "direction", "table",
+                      "csv", "decimal", "active", "name"},
+         "power": {"type", "link", "power", "speed", "role", "active", "name"},
+         "spring": {"type", "links", "points", "rate", "free_length", "name"}}
 _GIVEN = {"omega", "alpha", "a_G", "v_G", "theta", "points"}
 _SHAPES = {
     "rod": {"type", "from", "to"},
@@ -190,7 +183,13 @@ def build_problem(data: Mapping[str, Any], *, file: str = "<problem>", base: str
     rd.table(d, "driver", _DRIVER[kind])
     driver = Driver(rd.whole(rd.need(d, "link", "driver"), "driver.link"), kind)
     q, q_dot, q_ddot = _motion(rd, d, kind, static)
-    loads = [_load(rd, t, f"loads[{i}]", kind) for i, t in enumerate(_list(rd, data, "loads"))]
+    motion = (driver.link, q_dot) if kind == "crank" else None
+    loads, origin = [], []  # a spring puts a load on each moving end: origin[k] is the file's index of loads[k]
+    for i, t in enumerate(_list(rd, data, "loads")):
+        found = _load(rd, t, f"loads[{i}]", kind, motion, frame.number)
+        found = found if isinstance(found, list) else [found]
+        loads += found
+        origin += [i] * len(found)
     gravity = rd.si(data["gravity"], "acceleration", "gravity", None) if "gravity" in data else 0.0
     if gravity < 0:
         raise rd.fail("gravity", f"must be ≥ 0 (g acts along −y; write its size), got {data['gravity']!r}")
@@ -204,7 +203,10 @@ def build_problem(data: Mapping[str, Any], *, file: str = "<problem>", base: str
         mech = Mechanism(links, joints, driver, loads, gravity, assembly,
                          title=str(data.get("title", "")), source=str(data.get("source", "")), frame=frame.number)
     except ModelError as exc:
-        raise rd.fail(_field_of(exc.at), str(exc)) from None
+        at = exc.at
+        if at and at[0] == "loads" and len(at) > 1:
+            at = ("loads", origin[at[1]], *at[2:])
+        raise rd.fail(_field_of(at), str(exc)) from None
     for key in assembly:
         points = {j.point for j in joints if not isinstance(j, GearMesh)}
         if key not in points:
@@ -217,21 +219,26 @@ def build_problem(data: Mapping[str, Any], *, file: str = "<problem>", base: str
                       + ' (for a linkage at rest or at negligible speed write analysis = "static")')
     for k, load in enumerate(loads):
         if load.sense != "fixed" and not np.any(q_dot):
-            raise rd.fail(f"loads[{k}].sense", f"{load.sense!r} follows the motion, but the input does not move: give "
+            raise rd.fail(f"loads[{origin[k]}].sense", f"{load.sense!r} follows the motion, but the input does not move: give "
                           f"driver.{speed} (a static analysis uses it only to set such senses)")
     given = _given(rd, data.get("given", {}), mech, len(q), static)
     try:
         groups = decompose(mech)
     except ModelError as exc:
         raise rd.fail(_field_of(exc.at) or "joints", str(exc)) from None
+    if "from" in d:
+        q = books.crank_from_dead_centre(rd, d, mech, q)
+    if "place" in d:
+        q = books.placed(rd, d, mech)
     branches = sorted({g.key for g in groups if isinstance(g, Dyad)})
     for key in assembly:
         if key not in branches:
             raise rd.fail(f"assembly.{key}", f"{key} is not the middle joint of a dyad, so it chooses no branch; "
                           + (f"this mechanism's branches are chosen at {', '.join(branches)}" if branches else
                              "this mechanism has no dyad, so no branch to choose: leave out [assembly]"))
+    forward = books.forward(rd, data["forward"], kind, q_dot) if "forward" in data else None
     return Problem(file, mech, q, q_dot, q_ddot, given, str(data.get("title", "")), str(data.get("source", "")),
-                   str(data.get("notes", "")), analysis, str(data.get("cite", "")))
+                   str(data.get("notes", "")), analysis, str(data.get("cite", "")), forward)
 
 
 def _list(rd, data, key):
@@ -373,9 +380,13 @@ def _joint(rd, t, where):
         centers = rd.need(t, "centers", where)
         if not isinstance(centers, list) or len(centers) != 2:
             raise rd.fail(f"{where}.centers", "must name the two gear centres, e.g. [\"O2\", \"O3\"]")
+        internal = t.get("internal", False)
+        if not isinstance(internal, bool):
+            raise rd.fail(f"{where}.internal", f"must be true (an annulus with teeth inside, and a pinion) or false, got "
+                          f"{internal!r}")
         return GearMesh(_pair(rd, rd.need(t, "links", where), f"{where}.links"), tuple(centers),
                         tuple(rd.si(r, "length", f"{where}.radii[{i}]", "length") for i, r in enumerate(radii)),
-                        rd.si(t.get("pressure_angle", "20 deg"), "angle", f"{where}.pressure_angle"))
+                        rd.si(t.get("pressure_angle", "20 deg"), "angle", f"{where}.pressure_angle"), internal)
     except ProblemFileError:
         raise
     except ModelError as exc:
@@ -392,7 +403,12 @@ def _pair(rd, value, where):
 def _motion(rd, d, kind, static=False):
     names = ("theta", "omega", "alpha") if kind == "crank" else ("s", "v", "a")
     dims = ("angle", "angular_velocity", "angular_acceleration") if kind == "crank" else ("length", "velocity", "acceleration")
-    q = rd.array(rd.need(d, names[0], "driver"), dims[0], f"driver.{names[0]}")
+    if "place" in d:
+        if "s" in d:
+            raise rd.fail("driver.place", "places the slider by another link's angle: give it or s, not both")
+        q = np.zeros(1)  # found once the mechanism is known (books.placed)
+    else:
+        q = rd.array(rd.need(d, names[0], "driver"), dims[0], f"driver.{names[0]}")
     accel = names[2]
     if static and accel in d:
         raise rd.fail(f"driver.{accel}", f"a static analysis has no inertia loads, so {accel} is not used: leave it out "
@@ -404,16 +420,31 @@ def _motion(rd, d, kind, static=False):
         if len(r) not in (1, len(q)):
             raise rd.fail(f"driver.{name}", f"has {len(r)} values for {len(q)} positions: give one value or one per position")
         rates.append(np.broadcast_to(r, q.shape).astype(float))
+    if "sense" in d:
+        # A book gives the speed's size and the sense of rotation: a clockwise engine turns at ω < 0.
+        sense = d["sense"]
+        if sense not in books.SENSES_OF_ROTATION:
+            raise rd.fail("driver.sense", f"must be \"counter-clockwise\" (the default) or \"clockwise\", got {sense!r}")
+        if kind != "crank":
+            raise rd.fail("driver.sense", "is a crank's sense of rotation; a slider's v and a carry their own signs")
+        if (rates[0] < 0).any():
+            raise rd.fail("driver.omega", f"with driver.sense = {sense!r}, omega is the speed in that sense: give it "
+                          "≥ 0")
+        # alpha too is measured in the sense of rotation (negative: slowing down).
+        rates = [books.SENSES_OF_ROTATION[sense] * r + 0.0 for r in rates]
     return q, rates[0], rates[1]
 
 
-def _load(rd, t, where, driver_kind):
+def _load(rd, t, where, driver_kind, motion=None, frame=1):
     kind = rd.table(t, where, set().union(*_LOAD.values())).get("type")
+    kinds = ", ".join(repr(k) for k in _LOAD)
     if kind is None:
-        raise rd.fail(f"{where}.type", "is missing: write type = \"force\" or \"torque\"")
+        raise rd.fail(f"{where}.type", f"is missing: write type = one of {kinds}")
     if kind not in _LOAD:
-        raise rd.fail(f"{where}.type", f"must be 'force' or 'torque', got {kind!r}")
+        raise rd.fail(f"{where}.type", f"must be one of {kinds}, got {kind!r}")
     rd.table(t, where, _LOAD[kind])
+    if kind == "spring":
+        return books.spring_loads(rd, t, where, frame)
     link = rd.whole(rd.need(t, "link", where), f"{where}.link")
     active = None
     if "active" in t:
@@ -427,10 +458,14 @@ def _load(rd, t, where, driver_kind):
                                                "; 'to' must lie above 'from'") +
                           "; leave out 'active' for a load that always acts")
     name = str(t.get("name", ""))
+    if kind == "pressure":
+        return books.pressure(rd, t, where, link, driver_kind, active, name)
+    if kind == "power":
+        return books.power(rd, t, where, link, active, name, motion)
     sense = t.get("sense", "fixed")
     if sense not in SENSES:
         raise rd.fail(f"{where}.sense", f"must be one of {', '.join(repr(x) for x in SENSES)}, got {sense!r}")
-    table = _load_table(rd, t, where, kind, driver_kind)
+    table = load_table(rd, t, where, kind, driver_kind)
     if kind == "force":
         point = rd.text(rd.need(t, "point", where), f"{where}.point")
         if table is None:
@@ -450,36 +485,6 @@ def _load(rd, t, where, driver_kind):
     if "torque" in t:
         raise rd.fail(f"{where}.torque", "a torque given by a table takes its values from the table: leave torque out")
     return Torque(link, 1.0, active, name, table, sense)
-
-
-def _load_table(rd, t, where, kind, driver_kind):
-    """A load's ``table`` (CSV text inline) or ``csv`` (a file beside the problem file), as a :class:`Table`."""
-    given = [k for k in ("table", "csv") if k in t]
-    decimal = rd.decimal(t, where)
-    if not given:
-        return None
-    if len(given) == 2:
-        raise rd.fail(f"{where}.csv", "give the table inline (table) or in a file (csv), not both")
-    field = f"{where}.{given[0]}"
-    x = "angle" if driver_kind == "crank" else "position"
-    columns = {x: "angle" if driver_kind == "crank" else "length", kind: kind}
-    if given[0] == "table":
-        if not isinstance(t["table"], str):
-            unit = "deg" if x == "angle" else "mm"
-            raise rd.fail(field, f"must be CSV text in a TOML multi-line string: a header line such as "
-                          f"'{x} [{unit}], {kind} [{'N' if kind == 'force' else 'N*m'}]' and one row per line; "
-                          f"got {t['table']!r:.40}")
-        text, shown = t["table"], None
-    else:
-        if rd.base is None:
-            raise rd.fail(field, "a CSV table is read from the problem file's folder: load the problem from its file "
-                          "(load_problem), or give the table inline with table = \"\"\"…\"\"\"")
-        text, shown = read_csv_beside(t["csv"], rd.base, file=rd.file, field=field)
-    cols = parse_table(text, columns, file=rd.file, field=field, shown=shown, decimal=decimal)
-    try:
-        return Table(cols[x], cols[kind], periodic=driver_kind == "crank", source=shown or "")
-    except ModelError as exc:
-        raise rd.fail(field, str(exc).split(": ", 1)[-1]) from None
 
 
 def _given(rd, value, mech, n, static=False):

@@ -15,6 +15,47 @@ from graphkin.ranges import as_array, check, finite
 
 
 @dataclass(frozen=True)
+class Forward:
+    """A forward step where a book asks one: the crank shaft's angular acceleration from its torque excess.
+
+    At each position the shaft's rotating parts (a flywheel, the crank) of moment of inertia ``I`` about the
+    crank's axis take the excess of the torque the mechanism turns the shaft with over the load taken off it:
+    I α = T_driving − T_resisting. T_driving = −T12 is the turning moment of the mechanism's loads (gas force,
+    inertia of the other links) at the given motion — what the frame would have to supply to keep it; the
+    resisting torque, of size ``T_resisting``, opposes the crank's rotation. All CCW positive.
+
+    Attributes
+    ----------
+    I : float
+        Moment of inertia of the parts on the crank shaft about its axis [kg·m²], > 0.
+    T_resisting : float
+        Size of the resisting torque [N·m], ≥ 0 (a power P taken off at speed ω: P/|ω|).
+    """
+
+    I: float
+    T_resisting: float
+
+    def step(self, T12, omega) -> dict:
+        """T_driving, T_resisting and α at each position (CCW positive).
+
+        Parameters
+        ----------
+        T12 : array_like, shape (n,)
+            The driving effort found at the given motion [N·m].
+        omega : array_like, shape (n,)
+            The crank's angular velocity [rad/s]: the resisting torque opposes it.
+
+        Returns
+        -------
+        dict of str to ndarray, shape (n,)
+            ``{"T_driving": N·m, "T_resisting": N·m, "alpha": rad/s²}``.
+        """
+        T_driving = -np.asarray(T12, dtype=float)
+        T_resisting = -np.sign(np.asarray(omega, dtype=float)) * self.T_resisting
+        return {"T_driving": T_driving, "T_resisting": T_resisting, "alpha": (T_driving + T_resisting) / self.I}
+
+
+@dataclass(frozen=True)
 class Problem:
     """A mechanism with its input motion, as read from a problem file.
 
@@ -38,6 +79,8 @@ class Problem:
         ``"static"`` leaves every inertia load out (masses are then needed
         only for weights, and the input rates only give the sense of motion
         for friction); ``"dynamic"`` (the default) includes them.
+    forward : Forward or None
+        The forward step the book asks for (the file's ``[forward]``).
     """
 
     name: str
@@ -51,6 +94,7 @@ class Problem:
     notes: str = ""
     analysis: str = "dynamic"
     cite: str = ""
+    forward: Forward | None = None
 
     @property
     def static(self) -> bool:

@@ -131,7 +131,8 @@ class FieldReader:
 
 KIND = {"length": "coordinate", "angle": "angle", "mass": "mass", "moment_of_inertia": "moment_of_inertia",
          "density": "density", "angular_velocity": "angular_velocity", "angular_acceleration": "angular_acceleration",
-         "velocity": "velocity", "acceleration": "acceleration", "force": "force", "torque": "torque"}
+         "velocity": "velocity", "acceleration": "acceleration", "force": "force", "torque": "torque",
+        "pressure": "pressure", "power": "power", "stiffness": "stiffness"}
 """The range (:data:`graphkin.ranges.RANGES`) a value of each dimension is checked against, unless the
 field says more (a radius is a ``length``, which must not be zero; a friction coefficient is ``friction``)."""
 

@@ -29,7 +29,8 @@ from pathlib import Path
 
 import numpy as np
 
-from graphkin.errors import ProblemFileError
+from graphkin.errors import ModelError, ProblemFileError
+from graphkin.model import Table
 from graphkin.units import to_si
 
 _HEADER = re.compile(r"^\s*(?P<name>[A-Za-z_][\w ]*?)\s*\[(?P<unit>[^\]]+)\]\s*$")
@@ -174,3 +175,33 @@ def read_csv_beside(name, base: str | Path, *, file: str, field: str) -> tuple[s
         raise ProblemFileError(file, field, f"{name!r} is not UTF-8 text") from None
     except OSError as exc:
         raise ProblemFileError(file, field, f"{name!r} cannot be read ({exc.strerror or exc})") from None
+
+
+def load_table(rd, t, where, kind, driver_kind):
+    """A load's ``table`` (CSV text inline) or ``csv`` (a file beside the problem file), as a :class:`Table`."""
+    given = [k for k in ("table", "csv") if k in t]
+    decimal = rd.decimal(t, where)
+    if not given:
+        return None
+    if len(given) == 2:
+        raise rd.fail(f"{where}.csv", "give the table inline (table) or in a file (csv), not both")
+    field = f"{where}.{given[0]}"
+    x = "angle" if driver_kind == "crank" else "position"
+    columns = {x: "angle" if driver_kind == "crank" else "length", kind: kind}
+    if given[0] == "table":
+        if not isinstance(t["table"], str):
+            unit = "deg" if x == "angle" else "mm"
+            raise rd.fail(field, f"must be CSV text in a TOML multi-line string: a header line such as "
+                          f"'{x} [{unit}], {kind} [{ {'force': 'N', 'pressure': 'MPa'}.get(kind, 'N*m')}]' and one row per line; "
+                          f"got {t['table']!r:.40}")
+        text, shown = t["table"], None
+    else:
+        if rd.base is None:
+            raise rd.fail(field, "a CSV table is read from the problem file's folder: load the problem from its file "
+                          "(load_problem), or give the table inline with table = \"\"\"…\"\"\"")
+        text, shown = read_csv_beside(t["csv"], rd.base, file=rd.file, field=field)
+    cols = parse_table(text, columns, file=rd.file, field=field, shown=shown, decimal=decimal)
+    try:
+        return Table(cols[x], cols[kind], periodic=driver_kind == "crank", source=shown or "")
+    except ModelError as exc:
+        raise rd.fail(field, str(exc).split(": ", 1)[-1]) from None

@@ -18,7 +18,8 @@ command                         data                                text
 from graphkin.report.cycle import DISK_THICKNESS, STEEL, cycle_data, cycle_links, format_cycle
 from graphkin.report.flywheel import flywheel_data, format_flywheel
 from graphkin.report.polygons import graphical_kinematics_data, kinematic_constructions
-from graphkin.report.solution import constructions, format_solution, solution
+from graphkin.report.solution import constructions, cross_check, format_solution, solution
 
-__all__ = ["DISK_THICKNESS", "STEEL", "constructions", "cycle_data", "cycle_links", "flywheel_data", "format_cycle",
-           "format_flywheel", "format_solution", "graphical_kinematics_data", "kinematic_constructions", "solution"]
+__all__ = ["DISK_THICKNESS", "STEEL", "constructions", "cross_check", "cycle_data", "cycle_links", "flywheel_data",
+           "format_cycle", "format_flywheel", "format_solution", "graphical_kinematics_data", "kinematic_constructions",
+           "solution"]

@@ -8,6 +8,7 @@ content the CLI prints with ``--json`` (schema: ``docs/json.md``);
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 import numpy as np
 
@@ -28,6 +29,89 @@ def _vec(v):
 def constructions(result: ForceAnalysis) -> list:
     """The graphical construction of every position of a result (None where invalid)."""
     return [construct_forces(result.kinematics, i) if result.valid[i] else None for i in range(result.n)]
+
+
+AGREEMENT = 1e-7
+"""How far the graphical route may differ from the analytical one before a position is not valid: relative to the
+largest joint force at the position (a torque: to that force times the mechanism's size). The two routes are
+independent arithmetic on the same numbers, so they differ by rounding: ~1e-13 on textbook problems and at most
+~1e-10 on the property tests' random linkages near their transmission limits (sines of 0.2). A wrong term in
+either route (a reaction not passed on, a sign) is an O(1) difference; 1e-7 lies far from both."""
+
+
+def cross_check(result: ForceAnalysis, graphical: list) -> ForceAnalysis:
+    """The result with every position where its two routes disagree marked not valid, with the reason.
+
+    The graphical route (:func:`constructions`) solves each position with other arithmetic (resultants, two- and
+    three-force members, polygons); where it gives another force or effort than the analytical route beyond
+    :data:`AGREEMENT`, or cannot close where the analytical route found a solution, neither answer can be
+    trusted, and the position is reported with the disagreement instead of either.
+
+    Parameters
+    ----------
+    result : ForceAnalysis
+        The analytical solution.
+    graphical : list of Construction or None
+        The graphical route at each of its positions (:func:`constructions`).
+
+    Returns
+    -------
+    ForceAnalysis
+        ``result`` itself where the routes agree everywhere; else a copy whose ``valid`` is False at the
+        positions where they disagree, with the reason in its ``failures``.
+    """
+    failures: dict[str, np.ndarray] = {}
+    size = _size(result.mechanism)
+    for i, c in enumerate(graphical):
+        if c is None or not result.valid[i]:
+            continue
+        why = _disagreement(result, c, i, size)
+        if why:
+            failures.setdefault(why, np.zeros(result.n, bool))[i] = True
+    if not failures:
+        return result
+    valid = result.valid.copy()
+    for where in failures.values():
+        valid &= ~where
+    return replace(result, valid=valid, failures={**result.failures, **failures})
+
+
+def _size(mech) -> float:
+    """The mechanism's size [m]: the largest distance between two points of one link (1 m for a point-sized one)."""
+    size = 0.0
+    for link in mech.links:
+        pts = [complex(*p) for p in link.points.values()]
+        size = max([size] + [abs(a - b) for a in pts for b in pts])
+    return size or 1.0
+
+
+def _disagreement(result: ForceAnalysis, c, i: int, size: float) -> str:
+    """Why the graphical route ``c`` at position ``i`` disagrees with the analytical one ('' if it does not).
+
+    Every difference is measured as a force: a joint force's as it is, the driving torque's divided by the
+    mechanism's size; the largest, against :data:`AGREEMENT` of the largest force (or effort) at the position.
+    """
+    if not c.valid:
+        return f"the graphical route cannot close ({c.reason}) where the analytical one finds a solution"
+    scale = largest(result.force(a, b)[i] for a, b in result.forces)
+    worst, what = 0.0, ""
+    for a, b in result.forces:
+        A, G = result.force(a, b)[i], c.force(a, b)
+        gap = float(np.hypot(*(G - A)))
+        if not gap <= worst:  # nan counts as the worst
+            worst, what = gap, (f"{result.name_of(a, b)} is {polar_text(G, scale=scale)} graphically, "
+                                f"{polar_text(A, scale=scale)} analytically")
+    crank = result.mechanism.driver.crank
+    arm = size if crank else 1.0  # a torque [N·m] per metre of the mechanism is a force
+    effort = float(result.effort[i])
+    gap = abs(c.effort - effort) / arm
+    if not gap <= worst:
+        unit = "N·m" if crank else "N"
+        worst, what = gap, (f"{result.driver_name} is {num(c.effort, 6, minus='-')} {unit} graphically, "
+                            f"{num(effort, 6, minus='-')} {unit} analytically")
+    if worst <= AGREEMENT * max(scale, abs(effort) / arm):
+        return ""
+    return f"the graphical and analytical routes disagree: {what}"
 
 
 def _graphical(result: ForceAnalysis, c, i) -> dict:
@@ -81,7 +165,9 @@ def solution(problem, result: ForceAnalysis, graphical: list | None = None, kine
         Its analytical solution.
     graphical : list of Construction, optional
         The graphical route per position (:func:`constructions`); included
-        under ``"graphical"`` with the relative difference per force.
+        under ``"graphical"`` with the relative difference per force. A
+        position where the two routes disagree is not valid
+        (:func:`cross_check`).
     kinematic : list of (MotionConstruction, InstantCentres), optional
         The velocity and acceleration polygons and the instant centres per position
         (:func:`graphkin.report.polygons.kinematic_constructions`); included under
@@ -93,6 +179,8 @@ def solution(problem, result: ForceAnalysis, graphical: list | None = None, kine
         ``{"problem", "title", "source", "analysis", "frame", "units", "driver", "positions": [...]}``;
         see ``docs/json.md``.
     """
+    if graphical is not None:
+        result = cross_check(result, graphical)
     kin = result.kinematics
     mech = kin.mechanism
     crank = mech.driver.crank
@@ -102,6 +190,8 @@ def solution(problem, result: ForceAnalysis, graphical: list | None = None, kine
     points = {link: link_points(kin, link) for link in mech.moving}
     v_G = {link: np.asarray(kin.v_G(link), dtype=float) for link in mech.moving}
     applied = _applied(kin)
+    forward = getattr(problem, "forward", None)
+    step = forward.step(result.effort, kin.q_dot) if forward is not None else None
     for i in range(result.n):
         entry = {
             "index": i,
@@ -145,6 +235,8 @@ def solution(problem, result: ForceAnalysis, graphical: list | None = None, kine
                 driver["vector"] = _vec(result.driver_force()[i])
             entry.update(links=links, forces=forces, prismatic=prismatic, driver=driver,
                          loads=[_load_entry(ld, value[i]) for ld, value in applied])
+            if step is not None:
+                entry["forward"] = {"I": forward.I, **{key: float(v[i]) for key, v in step.items()}}
         if graphical is not None:
             entry["graphical"] = _graphical(result, graphical[i], i)
         if kinematic is not None:
@@ -322,6 +414,11 @@ def format_solution(problem, result: ForceAnalysis, graphical: list | None = Non
             T = unless_rounding(d["value"], biggest)  # 0 at a dead centre
             sense = "CCW" if T > 0 else "CW" if T < 0 else ""
             out.append(f"  Driver: {d['name']} = {T:.4f} N·m {sense}".rstrip())  # no sense at a dead centre
+            if "forward" in entry:
+                f = entry["forward"]
+                out.append(f"  Forward step: I α = T_driving + T_resisting (CCW positive), I = {f['I']:.6g} kg·m²: "
+                           f"T_driving = −{d['name']} = {num(f['T_driving'], minus='-')} N·m, T_resisting = "
+                           f"{num(f['T_resisting'], minus='-')} N·m, α = {num(f['alpha'], minus='-')} rad/s²")
         else:
             out.append(f"  Driver: {d['name']} = {polar_text(d['vector'])} ({d['value']:.4f} N along the guide)")
         if "graphical" in entry:

@@ -23,6 +23,9 @@ DIMENSIONS: dict[str, str] = {
     "moment_of_inertia": "[mass] * [length] ** 2",
     "energy": "[mass] * [length] ** 2 / [time] ** 2",
     "density": "[mass] / [length] ** 3",
+    "pressure": "[mass] / [length] / [time] ** 2",
+    "power": "[mass] * [length] ** 2 / [time] ** 3",
+    "stiffness": "[mass] / [time] ** 2",
     "dimensionless": "[]",
 }
 
@@ -42,6 +45,9 @@ SI_UNITS: dict[str, str] = {
     "moment_of_inertia": "kg*m^2",
     "energy": "J",
     "density": "kg/m^3",
+    "pressure": "Pa",
+    "power": "W",
+    "stiffness": "N/m",
     "dimensionless": "",
 }
 
@@ -71,6 +77,9 @@ _EXAMPLES: dict[str, tuple[str, str]] = {
     "moment_of_inertia": ("0.1", "kg*m^2"),
     "energy": ("240", "J"),
     "density": ("7850", "kg/m^3"),
+    "pressure": ("0.35", "MPa"),
+    "power": ("20", "kW"),
+    "stiffness": ("5", "N/mm"),
     "dimensionless": ("0.3", ""),
 }
 

@@ -23,10 +23,10 @@ from graphkin.analytical import solve_forces
 from graphkin.cli import main
 from graphkin.graphical import construct_forces
 from graphkin.kinematics import solve_kinematics
-from graphkin.model import Driver, Mechanism, Prismatic
+from graphkin.model import Driver, Mechanism, Prismatic, SpringForce
 from graphkin.problem import parse_problem
 from graphkin.report import constructions, format_solution, solution
-from tests.physics import active, close, joint_point
+from tests.physics import active, close, joint_point, load_value
 from tests.strategies import families, length_scale
 
 STATIC_FOURBAR = """
@@ -239,7 +239,9 @@ def _frame_zero(mech: Mechanism) -> Mechanism:
     links = [dataclasses.replace(l, number=m(l.number), points=dict(l.points)) for l in mech.links]
     joints = [dataclasses.replace(j, guide=m(j.guide), slider=m(j.slider)) if isinstance(j, Prismatic)
               else dataclasses.replace(j, links=tuple(m(i) for i in j.links)) for j in mech.joints]
-    loads = [dataclasses.replace(load, link=m(load.link)) for load in mech.loads]
+    loads = [dataclasses.replace(load, link=m(load.link), **({"anchor_link": m(load.anchor_link)}
+                                                            if isinstance(load, SpringForce) else {}))
+             for load in mech.loads]
     return Mechanism(links, joints, Driver(m(mech.driver.link), mech.driver.kind), loads, mech.gravity,
                      dict(mech.assembly), mech.title, frame=0)
 
@@ -266,11 +268,10 @@ def static_loads(kin, r, link):
             out.append((r.effort[:, None] * kin.guide_direction(J), kin.position(link, J.point), None))
     for load in mech.loads:
         if load.link == link:
-            on = active(kin, load)
-            if hasattr(load, "point"):
-                out.append((on[:, None] * np.asarray(load.force), kin.position(link, load.point), None))
+            if hasattr(load, "point"):  # a spring's force follows its length: load_value works it out
+                out.append((load_value(kin, load), kin.position(link, load.point), None))
             else:
-                out.append((None, None, on * load.torque))
+                out.append((None, None, active(kin, load) * load.torque))
     if mech.gravity:
         out.append((np.broadcast_to([0.0, -mech.link(link).mass * mech.gravity], (kin.n, 2)), kin.G(link), None))
     return out

@@ -137,7 +137,8 @@ def _cycle_of(name):
     return sweep(p)
 
 
-@pytest.mark.parametrize("name", ["strip_cutter", "slider_crank_friction", "double_slider", "gearset", "single_link"])
+@pytest.mark.parametrize("name", ["strip_cutter", "slider_crank_friction", "double_slider", "gearset", "single_link",
+                                  "epicyclic_khurmi"])  # a held annulus: a gear mesh with the frame
 def test_shaking_force_and_moment_two_ways(name):
     """Σ F_j1 over the frame's joints (plus the driver's reaction) = −Σ m a_G + Σ external forces and weights;
     the moment about the origin (with −T12) = Σ (r_G × (−m a_G) − I_G α) + moments of the external loads."""

@@ -1,0 +1,238 @@
+"""Loads and inputs as books give them: a pressure on a piston, a power at a speed, a crank angle from a dead centre
+in the sense of rotation, a slider placed by another link's angle, and a forward step (``[forward]``).
+
+Each becomes what graphkin's core solves — a force, a torque, an input position, a :class:`Forward` — at the
+boundary, with every error naming the file and the field (``docs/problem-files.md``).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from graphkin.kinematics import solve_kinematics
+from graphkin.model import PointForce, Prismatic, Revolute, Table, Torque, spring
+from graphkin.problem.problem import Forward
+from graphkin.problem.tables import load_table
+
+DEAD_CENTRES = {"inner dead centre": 1, "top dead centre": 1, "outer dead centre": -1, "bottom dead centre": -1}
+"""A crank angle's origin in an engine: the crank pointing at the piston (+1) or away from it (−1)."""
+SENSES_OF_ROTATION = {"counter-clockwise": 1.0, "clockwise": -1.0}
+"""A crank's sense of rotation as a book names it, and the sign it gives ω and α."""
+SIDES = ("cover", "crank")
+"""The faces of a piston a pressure acts on: the cover end (no rod) and the crank end (the rod's side)."""
+ROLES = ("resisting", "driving")
+"""What a power does to its link's rotation: a load taken off it, or a drive."""
+
+
+def forward(rd, value, kind, q_dot):
+    """``[forward]``: the shaft's moment of inertia (I, or mass and k) and the resisting torque (or power)."""
+    t = rd.table(value, "forward", {"I", "mass", "k", "torque", "power"})
+    if kind != "crank":
+        raise rd.fail("forward", "a forward step finds a crank shaft's angular acceleration: the driver must be a crank")
+    if "I" in t:
+        for key in ("mass", "k"):
+            if key in t:
+                raise rd.fail(f"forward.{key}", "give I, or the mass and its radius of gyration k, not both")
+        I = rd.si(t["I"], "moment_of_inertia", "forward.I")
+    elif "mass" in t or "k" in t:
+        m = rd.si(rd.need(t, "mass", "forward"), "mass", "forward.mass")
+        k = rd.si(rd.need(t, "k", "forward"), "length", "forward.k", "length")
+        I = m * k * k
+    else:
+        raise rd.fail("forward.I", "is missing: the moment of inertia of the parts on the crank shaft, e.g. "
+                      "I = \"21.6 kg*m^2\", or their mass and radius of gyration (mass = \"60 kg\", k = \"0.6 m\")")
+    if not I > 0:
+        raise rd.fail("forward.I" if "I" in t else "forward.mass", "must be > 0: a shaft with no inertia has no "
+                      "angular acceleration to find")
+    given = [key for key in ("torque", "power") if key in t]
+    if len(given) != 1:
+        raise rd.fail("forward.torque", "give the resisting load once: torque = \"1591 N*m\" (its size; it opposes "
+                      "the rotation) or power = \"20 kW\" (taken off at the crank's speed)"
+                      + (", not both" if given else ""))
+    if "torque" in t:
+        T = rd.si(t["torque"], "torque", "forward.torque")
+        if T < 0:
+            raise rd.fail("forward.torque", f"is the resisting torque's size (it opposes the rotation): give it ≥ 0, "
+                          f"got {t['torque']!r}")
+    else:
+        P = rd.si(t["power"], "power", "forward.power")
+        if P < 0:
+            raise rd.fail("forward.power", f"is the power taken off the shaft: give it ≥ 0, got {t['power']!r}")
+        if len(set(np.abs(q_dot))) != 1 or q_dot[0] == 0:
+            raise rd.fail("forward.power", "a power becomes a torque at the crank's speed (T = P/ω): the driver needs "
+                          "one constant, non-zero omega")
+        T = P / abs(float(q_dot[0]))
+    return Forward(I, T)
+
+
+def crank_from_dead_centre(rd, d, mech, q):
+    """``driver.from``: crank angles measured from a dead centre in the sense of rotation, as angles from +x.
+
+    The dead centres are where the crank and the connecting rod lie in line: the piston's pin, on its guide, is
+    r + l (inner, the crank pointing at the piston) or l − r (outer) from the crank's pivot. Of the two such points
+    on the guide line, the one the mechanism assembles into is taken.
+    """
+    which = d["from"]
+    if which not in DEAD_CENTRES:
+        raise rd.fail("driver.from", f"must be one of {', '.join(repr(k) for k in DEAD_CENTRES)}, got {which!r}")
+    crank = mech.driver.link
+    frame = mech.frame
+    why = ("a dead centre belongs to a slider-crank: the crank pinned to the frame and to a connecting rod, whose "
+           "other pin is the point of a piston that runs on a guide of the frame")
+    pivot = mech.joint_between(frame, crank)
+    rods = [j for j in mech.joints_of(crank) if isinstance(j, Revolute) and frame not in j.links]
+    if not isinstance(pivot, Revolute) or len(rods) != 1:
+        raise rd.fail("driver.from", why)
+    C = rods[0]
+    rod = C.links[0] if C.links[1] == crank else C.links[1]
+    pins = [j for j in mech.joints_of(rod) if isinstance(j, Revolute) and crank not in j.links]
+    guides = [(j, g) for j in pins for g in mech.joints_of(j.links[0] if j.links[1] == rod else j.links[1])
+              if isinstance(g, Prismatic) and g.guide == frame and g.point == j.point]
+    if len(guides) != 1:
+        raise rd.fail("driver.from", why)
+    P, guide = guides[0]
+    link_c, link_r = mech.link(crank), mech.link(rod)
+    (ox, oy), (cx, cy) = link_c.point(pivot.point), link_c.point(C.point)
+    r, beta = math.hypot(cx - ox, cy - oy), math.atan2(cy - oy, cx - ox)
+    (ax, ay), (bx, by) = link_r.point(C.point), link_r.point(P.point)
+    l = math.hypot(bx - ax, by - ay)
+    f = mech.link(frame)
+    O, T = complex(*f.point(pivot.point)), complex(*f.point(guide.through))
+    u = complex(math.cos(guide.direction), math.sin(guide.direction))
+    reach = r + l if DEAD_CENTRES[which] > 0 else l - r
+    w = T - O
+    b = (w * u.conjugate()).real
+    disc = b * b - abs(w) ** 2 + reach * reach
+    if disc < 0:
+        raise rd.fail("driver.from", f"the piston's guide passes {abs((w * u.conjugate()).imag) * 1e3:.6g} mm from the "
+                      f"crank's pivot, farther than {reach * 1e3:.6g} mm: this slider-crank has no {which}")
+    candidates = []
+    for t in (-b + math.sqrt(disc), -b - math.sqrt(disc)):
+        X = T + t * u
+        # The crank points at the piston at the inner dead centre, away from it at the outer one.
+        theta = float(np.angle((X - O) * DEAD_CENTRES[which])) - beta
+        kin = solve_kinematics(mech, [theta], 0.0, 0.0)
+        if kin.valid[0] and abs(complex(*kin.position(rod, P.point)[0]) - X) <= 1e-6 * (r + l):
+            candidates.append(theta)
+    if not candidates:
+        raise rd.fail("driver.from", f"the mechanism cannot be assembled at its {which}")
+    return candidates[0] + SENSES_OF_ROTATION[d.get("sense", "counter-clockwise")] * q
+
+
+def placed(rd, d, mech):
+    """``driver.place``: the slider's position s [m] at which a named link stands at a given angle."""
+    t = rd.table(d["place"], "driver.place", {"link", "theta"})
+    link = rd.whole(rd.need(t, "link", "driver.place"), "driver.place.link")
+    if link not in mech.moving or link == mech.driver.link:
+        raise rd.fail("driver.place.link", f"must be a moving link other than the slider "
+                      f"({', '.join(str(n) for n in mech.moving if n != mech.driver.link)}), got {link!r}")
+    target = rd.si(rd.need(t, "theta", "driver.place"), "angle", "driver.place.theta")
+    # The slider's reach: a few times the mechanism's size either way, sampled finely, then Newton on θ(s).
+    size = max([math.hypot(x1 - x0, y1 - y0) for k in mech.links for (x0, y0) in k.points.values()
+                for (x1, y1) in k.points.values()] + [1e-3])
+    s = np.linspace(-4 * size, 4 * size, 4001)
+    kin = solve_kinematics(mech, s, 1.0, 0.0)
+    gap = np.angle(np.exp(1j * (kin.theta[link] - target)))
+    ok = kin.valid & np.isfinite(gap)
+    k = np.flatnonzero(ok[:-1] & ok[1:] & (np.sign(gap[:-1]) != np.sign(gap[1:])) & (np.abs(gap[:-1] - gap[1:]) < 1))
+    roots = []
+    for i in k:
+        x = s[i] - gap[i] * (s[i + 1] - s[i]) / (gap[i + 1] - gap[i])
+        for _ in range(50):
+            kx = solve_kinematics(mech, [x], 1.0, 0.0)
+            g, dg = float(np.angle(np.exp(1j * (kx.theta[link][0] - target)))), float(kx.omega[link][0])
+            if not (kx.valid[0] and dg):
+                break
+            step = g / dg
+            x -= step
+            if abs(step) <= 1e-15 * size:
+                break
+        kx = solve_kinematics(mech, [x], 1.0, 0.0)
+        if kx.valid[0] and abs(np.angle(np.exp(1j * (kx.theta[link][0] - target)))) <= 1e-12:
+            roots.append(x)
+    roots = [x for k, x in enumerate(sorted(roots)) if k == 0 or x - sorted(roots)[k - 1] > 1e-9 * size]
+    if not roots:
+        raise rd.fail("driver.place.theta", f"link {link} never stands at {t['theta']!r} as the slider moves")
+    if len(roots) > 1:
+        raise rd.fail("driver.place.theta", f"link {link} stands at {t['theta']!r} at more than one slider position ("
+                      + ", ".join(f"s = {x * 1e3:.6g} mm" for x in roots) + "): give the one the book means as s")
+    return np.array(roots)
+
+
+def pressure(rd, t, where, link, driver_kind, active, name):
+    """A pressure on a piston as the force it makes: p A on the face it acts on, less a back pressure on the other.
+
+    The cover end's area is A = π D²/4 (D the bore); the crank end's, A − π d²/4 (d the piston rod's diameter).
+    ``direction`` is the way a pressure on the cover end pushes the piston; one on the crank end pushes it back.
+    A pressure given by a table (an indicator diagram against the crank angle, or the slider's position) makes a
+    tabulated force.
+    """
+    point = rd.text(rd.need(t, "point", where), f"{where}.point")
+    D = rd.si(rd.need(t, "bore", where), "length", f"{where}.bore", "length")
+    d = rd.si(t["rod"], "length", f"{where}.rod", "length0") if "rod" in t else 0.0
+    if d >= D:
+        raise rd.fail(f"{where}.rod", f"the piston rod ({t['rod']!r}) must be thinner than the bore ({t['bore']!r})")
+    side = t.get("side", "cover")
+    if side not in SIDES:
+        raise rd.fail(f"{where}.side", f"must be \"cover\" (the cylinder's closed end, no rod: the default) or "
+                      f"\"crank\" (the rod's side), got {side!r}")
+    area = {"cover": math.pi * D * D / 4, "crank": math.pi * (D * D - d * d) / 4}
+    other = "crank" if side == "cover" else "cover"
+    push = 1.0 if side == "cover" else -1.0  # along direction: the cover side pushes forward, the crank side back
+    back = rd.si(t["back_pressure"], "pressure", f"{where}.back_pressure") if "back_pressure" in t else 0.0
+    a = rd.si(rd.need(t, "direction", where), "angle", f"{where}.direction")
+    u = (math.cos(a), math.sin(a))
+    given = [k for k in ("pressure", "table", "csv") if k in t]
+    if len(given) != 1:
+        raise rd.fail(f"{where}.pressure", "give the pressure once: a value (pressure = \"0.35 MPa\") or a table against "
+                      "the input (table = \"\"\"…\"\"\" or csv = \"…\")" + (f", not {' and '.join(given)}" if given else ""))
+    if "pressure" in t:
+        p = rd.si(t["pressure"], "pressure", f"{where}.pressure")
+        F = push * (p * area[side] - back * area[other])
+        return PointForce(link, point, (F * u[0], F * u[1]), active, name)
+    table = load_table(rd, t, where, "pressure", driver_kind)
+    value = push * (table.value * area[side] - back * area[other])
+    return PointForce(link, point, u, active, name, Table(table.q, value, table.periodic, table.source))
+
+
+def power(rd, t, where, link, active, name, motion):
+    """A power at a speed ("20 kW at 1200 rpm") as the torque it is: T = P/ω, against ω (resisting) or with it."""
+    P = rd.si(rd.need(t, "power", where), "power", f"{where}.power")
+    if P < 0:
+        raise rd.fail(f"{where}.power", f"must be ≥ 0 W (say whether it drives or resists with role), got {t['power']!r}")
+    role = t.get("role", "resisting")
+    if role not in ROLES:
+        raise rd.fail(f"{where}.role", f"must be \"resisting\" (the torque opposes the link's rotation: a load taken "
+                      f"off, the default) or \"driving\", got {role!r}")
+    if "speed" in t:
+        omega = rd.si(t["speed"], "angular_velocity", f"{where}.speed")
+    elif motion is not None and motion[0] == link and len(set(motion[1])) == 1:
+        omega = float(motion[1][0])
+    else:
+        raise rd.fail(f"{where}.speed", "is missing: give the link's speed at which the power is transmitted, e.g. "
+                      "speed = \"1200 rpm\" (negative for clockwise); it may be left out only on a crank driven at "
+                      "one constant speed")
+    if omega == 0:
+        raise rd.fail(f"{where}.speed", "must not be zero: a power at rest is no torque (T = P/ω)")
+    T = (P / omega) * (-1.0 if role == "resisting" else 1.0)
+    return Torque(link, T, active, name or f"{P / 1e3:.6g} kW {role}")
+
+
+def spring_loads(rd, t, where, frame):
+    """A linear spring between two points (``type = "spring"``) as the forces on its moving ends."""
+    links = t.get("links")
+    if not isinstance(links, list) or len(links) != 2:
+        raise rd.fail(f"{where}.links", f"must be the two links the spring's ends are fixed to, e.g. [1, 3], got "
+                      f"{links!r}")
+    links = [rd.whole(n, f"{where}.links[{i}]") for i, n in enumerate(links)]
+    if links[0] == links[1]:
+        raise rd.fail(f"{where}.links", f"a spring joins two links; both ends are on link {links[0]}")
+    points = t.get("points")
+    if not isinstance(points, list) or len(points) != 2 or not all(isinstance(p, str) for p in points):
+        raise rd.fail(f"{where}.points", f"must name the point of each link the spring is fixed to, e.g. "
+                      f"[\"Q\", \"B\"], got {points!r}")
+    k = rd.si(rd.need(t, "rate", where), "stiffness", f"{where}.rate")
+    L0 = rd.si(rd.need(t, "free_length", where), "length", f"{where}.free_length", "length0")
+    return spring(links, points, k, L0, frame=frame, name=str(t.get("name", "")))
