@@ -53,13 +53,14 @@ Rules:
   ``vector``) ``None`` and names the dimension written, so that the grader
   can say what was given. Energy and power units (J, kJ, W*s, ...) are
   energy, not torque, although pint finds J = N*m; for an energy question,
-  N*m is read as energy.
+  N*m is read as energy. Torque units as people write them are read:
+  ``N-m``, ``N.m``, ``Nm``, ``kNm``, ``Nmm``, ``N m``, ``lbf*in``.
 * **Refused** (:class:`Unreadable`, whose message is one sentence saying how
   to write the answer): empty text; anything but a string or a real number
   (``None``, ``True``, lists, ...); more than :data:`MAX_CHARS` characters;
-  a decimal comma (``"12,5 N"``); ``Nm``, ``kNm``, ``Nmm`` (write ``N*m``);
-  unknown units (named); ``N-m`` (write ``N*m``); two numbers where one is
-  expected; anything that is not a number first (``"__import__('os')"``);
+  a decimal comma where the exercise reads none (``decimal_comma=False``),
+  and an ambiguous one (``"1,352"``) either way; unknown units (named); two
+  numbers where one is expected; anything that is not a number first (``"__import__('os')"``);
   ``nan``, ``inf`` and numbers too large for a float, in the text or once in
   SI; a power of a power (``"m^2^3"``, ``"9**9**9"``) and powers of three
   digits or more; a polar direction whose unit is not an angle; a vector
@@ -81,8 +82,10 @@ Examples
 >>> r = read_answer("237.2 J", dimension="torque", unit="N*m")
 >>> r.value is None, r.dimension
 (True, 'energy')
+>>> read_answer("12,5 N", dimension="force", unit="N").value  # a decimal comma, where the exercise reads one
+12.5
 >>> try:
-...     read_answer("12,5 N", dimension="force", unit="N")
+...     read_answer("12,5 N", dimension="force", unit="N", decimal_comma=False)
 ... except Unreadable as exc:
 ...     print(exc)
 Could not read "12,5 N": write a number and a unit, such as "27.06 N" (use a decimal point).

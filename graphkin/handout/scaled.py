@@ -228,6 +228,11 @@ def _step_extent(c, step, k: float, X: float | None) -> tuple[float, float]:
     pts = np.asarray(pts, float)
     centre, size = pts.mean(axis=0), float(np.max(np.ptp(pts, axis=0)))
     out = list(pts)
+    # Gears are drawn as their pitch circles: an annulus reaches well past the points (its centre is the sun's).
+    for mesh in (j for j in c.mechanism.joints if isinstance(j, GearMesh)):
+        for n, name, r in zip(mesh.links, mesh.centers, mesh.radii):
+            O = np.asarray(c.points[n][name], float) * 1e3
+            out += [O - r * 1e3, O + r * 1e3]
     for P in step.points.values():
         P = np.asarray(P, float) * 1e3
         if np.all(np.isfinite(P)) and np.hypot(*(P - centre)) <= 3 * size:

@@ -115,7 +115,8 @@ def _pretty(value) -> str:
     return str(value)
 
 
-_SYMBOL = {"mass": "m", "theta": "θ", "omega": "ω", "alpha": "α", "s": "s", "v": "v", "a": "a", "mu": "μ",
+_SYMBOL = {"mass": "m", "theta": "θ", "omega": "ω", "alpha": "α", "s": "s", "v": "v", "a": "a", "mu": "μ", "a_G": "aG",
+           "v_G": "vG", "I_G": "IG",
            "r": "r", "radius": "r", "width": "w", "height": "h", "thickness": "t", "length": "L", "density": "ρ"}
 """A file's keys as the symbols a book writes."""
 

@@ -139,7 +139,7 @@ CASES = [
       ["loads[0].table", "pressure"], id="pressure-table-wrong-column"),
     P("engine", 'pressure = "550 kN/m^2"', 'pressure = "550 kN/m^2"\ntable = """\nangle [deg], pressure [MPa]\n0, 1\n180, 0\n"""',
       ["loads[0].pressure", "not pressure and table"], id="pressure-and-table"),
-    P("engine", 'name = "F_L (steam)"', 'name = "F_L (steam)"\nsense = "opposes motion"', ["loads[0].sense", "unknown"],
+    P("engine", 'name = "FL (steam)"', 'name = "FL (steam)"\nsense = "opposes motion"', ["loads[0].sense", "unknown"],
       id="pressure-field-of-another-type"),
     # -- a power at a speed ------------------------------------------------------------------------------------
     P("slider", 'power = "1 kW"', 'power = "-1 kW"', ["loads[0].power", "≥ 0"], id="power-negative"),
