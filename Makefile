@@ -28,7 +28,7 @@ PYTEST := $(BIN)/python -m pytest -q -n auto --dist loadfile
 test: $(VENV)/.installed
 	$(PYTEST) --nbmake --nbmake-timeout=300 --doctest-modules graphkin tests lessons
 
-# All but the slow tests (real grading platforms, fuzzers, concurrency, figure overlaps), and the linters: a quick check while working.
+# All but the slow tests (real grading platforms, fuzzers, concurrency, figure overlaps, PDF measurements), and the linters: a quick check while working.
 check: $(VENV)/.installed lint
 	$(PYTEST) -m "not slow" --doctest-modules graphkin tests
 

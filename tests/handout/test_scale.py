@@ -23,6 +23,9 @@ from graphkin import catalog, handout  # noqa: E402
 from graphkin.draw import style  # noqa: E402
 from tests.handout.pdfgeometry import MM, arrows, bars, figures  # noqa: E402
 
+# Typesets PDFs and measures them (every catalog key, at print size): make test runs it, make check does not.
+pytestmark = pytest.mark.slow
+
 FORCE_COLOURS = [tuple(int(c[k:k + 2], 16) / 255 for k in (1, 3, 5)) for c in (style.BLUE, style.VERMILLION, style.PURPLE)]
 INK = tuple(int(style.STYLE.ink[k:k + 2], 16) / 255 for k in (1, 3, 5))
 CASES = {

@@ -15,6 +15,9 @@ from graphkin import handout  # noqa: E402
 from graphkin.handout import maths as M  # noqa: E402
 from tests.handout.pdfgeometry import text_across_rules  # noqa: E402
 
+# Typesets PDFs and measures them (every catalog key, at print size): make test runs it, make check does not.
+pytestmark = pytest.mark.slow
+
 
 def _text(path) -> str:
     return "\n".join(page.extract_text() for page in pypdf.PdfReader(path).pages)
