@@ -370,6 +370,20 @@ _DRAWS: OrderedDict = OrderedDict()
 """Solved draws kept per process, by exercise and values (:data:`CACHE_SIZE` of them)."""
 
 
+def draw_shard(ex: Exercise, student: str, secret: str, shards: int) -> int:
+    """Which of ``shards`` workers should make ``student``'s variant: the same for the same first draw.
+
+    Students whose first draw has the same values go to the same worker, which
+    then solves that draw once for all of them (:func:`_draw`); a student id that
+    cannot be read goes to the first, which reports it.
+    """
+    try:
+        values = "\x1f".join(g.value for g in _choose(ex, check_student(student), secret, 0))
+    except GraphkinError:
+        return 0
+    return int.from_bytes(hashlib.sha256(values.encode("utf-8")).digest()[:8], "big") % shards
+
+
 def _draw(ex: Exercise, data: tuple[Given, ...]) -> tuple[Solved, str | None]:
     """The draw ``data`` solved, and why it cannot be handed out (None when it can), made once per process.
 
