@@ -223,6 +223,8 @@ def as_array(value, what: str, kind: str, *, n: int | None = None) -> np.ndarray
 
 def ndim(value) -> int:
     """Number of array dimensions of ``value``; -1 for a ragged nest of lists that is no array at all."""
+    if type(value) in (float, int):  # the common case, without numpy's dispatch
+        return 0
     try:
         return np.ndim(value)
     except (ValueError, TypeError):

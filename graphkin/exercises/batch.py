@@ -3,9 +3,10 @@
 Each student's variant is independent of every other's, so a roster is cut
 into one shard per core, each solved by its own worker process; the results
 come back as plain data in the roster's order. A student always goes to the
-same worker (shard = position in the roster modulo the number of workers),
-and the workers live for the whole session, so the variants a worker made
-for the sheets serve the keys and the grades too (see
+same worker (the shard follows the values of their first draw, so classmates
+who drew the same values share a worker, which solves that draw once), and
+the workers live for the whole session, so the variants a worker made for
+the sheets serve the keys and the grades too (see
 :data:`graphkin.exercises.variants.CACHE_SIZE`). Small rosters (or one core)
 run in this process, where starting workers would cost more than it saves.
 """
@@ -20,7 +21,7 @@ from graphkin.errors import GraphkinError
 from graphkin.exercises.exercise import Exercise
 from graphkin.exercises.grading import Classmates, grade_variant
 from graphkin.exercises.keys import student_entry
-from graphkin.exercises.variants import make_variant
+from graphkin.exercises.variants import draw_shard, make_variant
 
 PARALLEL_FROM = 200
 """Rosters of at least this many students are spread over the cores."""
@@ -119,10 +120,11 @@ def _run(exercise, action, items, secret, reveal, classmates, cores, progress) -
         return out
     out = [None] * len(items)
     futures = []
-    # The same student goes to the same worker in every pass: position in the roster modulo the workers, by id.
-    order = {s: k for k, s in enumerate(dict.fromkeys(s for s, _ in items))}
+    # The same student goes to the same worker in every pass, and so do classmates who drew the same values
+    # (the worker solves their draw once): the shard follows the student's first draw.
+    shard = {s: draw_shard(exercise, s, secret, cores) for s in dict.fromkeys(s for s, _ in items)}
     for k, pool in enumerate(_workers(cores)):
-        index = [j for j, (s, _) in enumerate(items) if order[s] % cores == k]
+        index = [j for j, (s, _) in enumerate(items) if shard[s] == k]
         for i in range(0, len(index), _CHUNK):
             part = index[i:i + _CHUNK]
             futures.append((part, pool.submit(_chunk, (exercise, action, [items[j] for j in part], secret, reveal,

@@ -101,6 +101,8 @@ class Solved:
         self.problem = problem
         self.exercise = exercise
         self.Cs = Cs
+        self.answers: dict = {}
+        """Each question's :class:`~graphkin.exercises.quantities.Expected`, by question id, once computed."""
 
     @cached_property
     def result(self):
@@ -161,9 +163,11 @@ class Variant:
 
     def expected(self, q: Question):
         """The answer to question ``q`` (:class:`graphkin.exercises.quantities.Expected`), computed once."""
-        if ("question", q.id) not in self._memo:
-            self._memo["question", q.id] = expected(self, q)
-        return self._memo["question", q.id]
+        # On the solved draw, not the variant: classmates who drew the same values share it.
+        answers = self.solved.answers
+        if q.id not in answers:
+            answers[q.id] = expected(self, q)
+        return answers[q.id]
 
     def slip_value(self, q: Question, slip: str):
         """The answer to ``q`` of a student who made ``slip`` (a re-solved one: ``rpm_as_rad_s``,
@@ -221,7 +225,7 @@ def _choose(ex: Exercise, student: str, secret: str, attempt: int) -> tuple[Give
                  for v in ex.vary)
 
 
-def _build(ex: Exercise, data: tuple[Given, ...], student: str):
+def _build(ex: Exercise, data: tuple[Given, ...]):
     base = dict(ex.base)
     Cs = ex.Cs
     for g in data:
@@ -230,7 +234,8 @@ def _build(ex: Exercise, data: tuple[Given, ...], student: str):
                 Cs = to_si(g.value, "dimensionless", field=f"vary.{g.symbol}", file=ex.file)
             else:
                 set_field(base, f, g.value, copy=True)
-    problem = build_problem(base, file=f"{ex.id} (student {student})")
+    # Named by its data, not by a student: every student who draws these values shares the problem.
+    problem = build_problem(base, file=f"{ex.id} ({', '.join(g.shown for g in data)})")
     return problem, Cs
 
 
@@ -352,15 +357,52 @@ def _make_variant(ex: Exercise, student: str, secret: str = "") -> Variant:
     why = ""
     for attempt in range(MAX_ATTEMPTS):
         data = _choose(ex, student, secret, attempt)
-        problem, Cs = _build(ex, data, student)
-        solved = Solved(problem, ex, Cs)
-        why = _unusable(ex, solved)
+        solved, why = _draw(ex, data)
         if why is None:
-            return Variant(ex, student, attempt, data, problem, Cs, solved)
+            return Variant(ex, student, attempt, data, solved.problem, solved.Cs, solved)
         if not ex.vary:
             break
     raise GraphkinError(f"exercise {ex.id}: no usable data for student {student!r} in {MAX_ATTEMPTS} draws "
                         f"(the last: {why}); narrow the ranges in [vary]")
+
+
+_DRAWS: OrderedDict = OrderedDict()
+"""Solved draws kept per process, by exercise and values (:data:`CACHE_SIZE` of them)."""
+
+
+def draw_shard(ex: Exercise, student: str, secret: str, shards: int) -> int:
+    """Which of ``shards`` workers should make ``student``'s variant: the same for the same first draw.
+
+    Students whose first draw has the same values go to the same worker, which
+    then solves that draw once for all of them (:func:`_draw`); a student id that
+    cannot be read goes to the first, which reports it.
+    """
+    try:
+        values = "\x1f".join(g.value for g in _choose(ex, check_student(student), secret, 0))
+    except GraphkinError:
+        return 0
+    return int.from_bytes(hashlib.sha256(values.encode("utf-8")).digest()[:8], "big") % shards
+
+
+def _draw(ex: Exercise, data: tuple[Given, ...]) -> tuple[Solved, str | None]:
+    """The draw ``data`` solved, and why it cannot be handed out (None when it can), made once per process.
+
+    A draw is fixed by its values alone, whoever drew it: an exercise varying two
+    values over 23 and 13 choices has 299 draws, so most of a class of 1000
+    shares one with a classmate and is solved and checked once.
+    """
+    key = (ex.fingerprint or id(ex), tuple(g.value for g in data))
+    hit = _DRAWS.get(key)
+    if hit is not None and (hit[0].exercise is ex or hit[0].exercise.fingerprint == ex.fingerprint != ""):
+        _DRAWS.move_to_end(key)
+        return hit
+    problem, Cs = _build(ex, data)
+    solved = Solved(problem, ex, Cs)
+    hit = (solved, _unusable(ex, solved))
+    _DRAWS[key] = hit
+    if len(_DRAWS) > CACHE_SIZE:
+        _DRAWS.popitem(last=False)
+    return hit
 
 
 def _altered(v: Variant, slip: str) -> Solved | None:

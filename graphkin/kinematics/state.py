@@ -8,6 +8,7 @@ equations (r e^{iθ}): a rotation is one multiplication by e^{iθ}, and
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from functools import cached_property
 from typing import Mapping
 
 import numpy as np
@@ -240,10 +241,16 @@ class Kinematics:
         friction rather than full friction of a random sense.
         """
         rate = self.slide_rate(joint, on)
-        return np.where(np.abs(rate) > STILL * self._speed_scale(), np.sign(rate), 0.0)
+        return np.where(np.abs(rate) > STILL * self.speed_scale, np.sign(rate), 0.0)
 
-    def _speed_scale(self) -> np.ndarray:
-        """Largest speed of any named point of any moving link [m/s], shape (n,)."""
+    @cached_property
+    def speed_scale(self) -> np.ndarray:
+        """Largest speed of any named point of any moving link [m/s], shape (n,).
+
+        Computed once: every sliding pair's friction asks for it, several times per
+        construction. (A frozen dataclass still takes a cached property: it writes
+        the instance's ``__dict__``, and :func:`dataclasses.replace` makes a new one.)
+        """
         scale = np.zeros(self.n)
         for link in self.mechanism.moving:
             for name in self.mechanism.link(link).points:

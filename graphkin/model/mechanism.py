@@ -5,6 +5,7 @@ from __future__ import annotations
 import itertools
 import math
 from dataclasses import dataclass, field, replace
+from functools import cached_property
 from types import MappingProxyType
 from typing import Mapping
 
@@ -82,9 +83,9 @@ class Mechanism:
         have = ", ".join(str(l.number) for l in self.links)
         raise ModelError(f"unknown link {number!r} (the mechanism has links {have})")
 
-    @property
+    @cached_property
     def moving(self) -> tuple[int, ...]:
-        """Numbers of the moving links, in ascending order."""
+        """Numbers of the moving links, in ascending order (found once: the solvers ask for it per load)."""
         return tuple(sorted(l.number for l in self.links if l.number != self.frame))
 
     def joints_of(self, number: int) -> tuple[Joint, ...]:

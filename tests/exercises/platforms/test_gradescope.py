@@ -374,3 +374,49 @@ def test_hostile_answers_void_nothing_else_and_leak_nothing(export, tmp_path):
         for q in entry["questions"].values():
             for v in q["value"] if isinstance(q["value"], list) else [q["value"]]:
                 assert not (isinstance(v, float) and abs(v) > 1 and repr(v) in shown), student
+
+
+# Answers that name what sits on the grading machine: its environment, its files, format fields. The grader
+# reads every answer as data, so none is expanded, opened or formatted (issue 23, item 2).
+PROBES = ["$GRAPHKIN_SECRET", "${GRAPHKIN_MARKER}", "%GRAPHKIN_SECRET%",
+          "$(cat {source}/keys.json)", "`cat {source}/config.json`", "@{source}/keys.json",
+          "file://{source}/keys.json", "{source}/keys.json", "../source/config.json",
+          "{{secret}}", "{0.__class__.__mro__}", "%(secret)s"]
+
+
+def test_answers_naming_the_environment_or_the_grading_folder_bring_nothing_back(export, tmp_path):
+    right = key_answers("s002")
+    ids = list(right)
+    source = "/autograder/source"
+    probes = [p.replace("{source}", source) for p in PROBES]
+    for k in range(0, len(probes), len(ids)):
+        answers = dict(zip(ids, probes[k:k + len(ids)]))
+        results, stdout, root = run_autograder(export, tmp_path / str(k), {"answers.toml": toml(answers)},
+                                               [user("s002")])  # asserts the secret and the marker stay out
+        shown = json.dumps(results, ensure_ascii=False) + stdout
+        # Nothing of the grading folder's data beyond the student's own sheet: no text of keys.json or
+        # config.json (the exercise's file, every student's entry), no classmate's id, no key's value.
+        sheet = json.dumps(exercises.make(NAME, "s002", secret=SECRET), ensure_ascii=False)
+        for name in (gradescope.KEYS, gradescope.CONFIG):
+            for line in _texts(json.loads((root / "source" / name).read_text(encoding="utf-8"))):
+                if len(line) >= 12 and line not in sheet and not any(line in p for p in probes):
+                    assert line not in shown, (name, line)
+        keys = json.loads((root / "source" / gradescope.KEYS).read_text(encoding="utf-8"))
+        for student, entry in keys["students"].items():
+            assert student == "s002" or student not in shown
+            for q in entry["questions"].values():
+                for v in q["value"] if isinstance(q["value"], list) else [q["value"]]:
+                    assert not (isinstance(v, float) and repr(v) in shown), (student, v)
+        # Every probe is an unreadable answer of its own question, quoted as typed, and scores 0.
+        tests = by_id(results)
+        for qid, text in answers.items():
+            assert tests[qid]["score"] == 0.0 and "Could not read" in tests[qid]["output"], (qid, text)
+
+
+def _texts(data) -> list[str]:
+    """Every line of every string in a JSON document (its keys too)."""
+    if isinstance(data, dict):
+        return [t for k, v in data.items() for t in _texts(k) + _texts(v)]
+    if isinstance(data, list):
+        return [t for v in data for t in _texts(v)]
+    return [line.strip() for line in data.splitlines()] if isinstance(data, str) else []

@@ -14,6 +14,7 @@ the same variant key and secret.
 from __future__ import annotations
 
 import json
+import os
 import re
 import subprocess
 import sys
@@ -33,6 +34,11 @@ pytestmark = pytest.mark.slow  # runs the real platform
 NAME = "strip_cutter_cut"
 DRAWN = "double_slider_graphical"
 SECRET = "pl-course-secret-2025"
+MARKER = "pl-env-marker-5c3e"
+# Answers that name what sits on the server: its environment, its files, format fields (issue 23, item 2).
+PROBES = ["$GRAPHKIN_SECRET", "${GRAPHKIN_MARKER}", "%GRAPHKIN_MARKER%", "$(cat server.py)", "`cat server.py`",
+          "@server.py", "file://./server.py", "../../serverFilesCourse/graphkin/__init__.py", "{{secret}}",
+          "{{{params}}}", "{0.__class__.__mro__}", "%(secret)s"]
 
 # The parts of PrairieLearn's schema of info.json that an export must meet
 # (apps/prairielearn/src/schemas/schemas/infoQuestion.json: required fields,
@@ -108,8 +114,10 @@ def run_driver(root: Path, scenarios: dict) -> dict:
     spec.write_text(json.dumps(scenarios, ensure_ascii=False), encoding="utf-8")
     driver = root / "driver.py"
     driver.write_text(DRIVER, encoding="utf-8")
+    # The server's environment holds a marker: no answer may bring it back.
+    env = dict(os.environ, GRAPHKIN_SECRET=SECRET, GRAPHKIN_MARKER=MARKER)
     done = subprocess.run([sys.executable, str(driver), str(root), str(spec)], capture_output=True, text=True,
-                          encoding="utf-8", timeout=120, cwd=root)
+                          encoding="utf-8", timeout=120, cwd=root, env=env)
     assert done.returncode == 0, done.stderr
     return json.loads(done.stdout)
 
@@ -141,6 +149,9 @@ def served(export) -> dict:
         "html": {**key, "F14": '<img src=x onerror="alert(1)">', "T12": "<script>alert('x')</script> N*m"},
         "html_graded": {**key, "F14": "1 N <b>", "T12": "12 N*m <i>"},
     }}
+    ids = list(key)
+    for k in range(0, len(PROBES), len(ids)):
+        scenarios["graded"][f"probe{k}"] = dict(zip(ids, PROBES[k:k + len(ids)]))
     return run_driver(export, scenarios)
 
 
@@ -313,3 +324,19 @@ def test_nothing_secret_in_what_the_student_gets_back(served):
     for label, data in served["graded"].items():
         assert SECRET not in json.dumps(data, ensure_ascii=False), label
     assert SECRET not in json.dumps(served["first"], ensure_ascii=False)
+
+
+def test_answers_naming_the_environment_or_the_server_files_bring_nothing_back(served, export):
+    """Each probe is its own question's format error, quoted as typed; nothing of server.py (where the
+    secret is), of the vendored graphkin or of the environment comes back."""
+    server = (question(export) / "server.py").read_text(encoding="utf-8")
+    lines = {line.strip() for line in server.splitlines() if len(line.strip()) >= 12}
+    probes = {label: data for label, data in served["graded"].items() if label.startswith("probe")}
+    assert len(probes) == -(-len(PROBES) // len(key_answers("pl-1")))
+    for label, data in probes.items():
+        shown = json.dumps(data, ensure_ascii=False)
+        assert SECRET not in shown and MARKER not in shown, label
+        for line in lines:
+            if not any(line in p for p in PROBES):
+                assert line not in shown, (label, line)
+        assert set(data["format_errors"]) == set(key_answers("pl-1")), label

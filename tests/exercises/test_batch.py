@@ -1,0 +1,63 @@
+"""A roster on several workers gives what one process gives; classmates who drew the same values share a draw."""
+
+from __future__ import annotations
+
+from graphkin import exercises
+from graphkin.exercises import variants
+from graphkin.exercises.batch import PARALLEL_FROM, run_roster
+from graphkin.exercises.variants import draw_shard, make_variant
+
+NAME = "single_link"  # the cheapest exercise: 7 × 13 draws, so a class of 200 shares most of them
+STUDENTS = [f"s{i:04d}" for i in range(PARALLEL_FROM)]
+SECRET = "batch-secret"
+
+
+def _values(v) -> tuple:
+    return tuple(g.value for g in v.data)
+
+
+def test_two_workers_give_what_one_process_gives_in_roster_order():
+    ex = exercises.load(NAME)
+    keys = {w: run_roster(ex, "key", STUDENTS, SECRET, workers=w) for w in (1, 2)}
+    assert keys[1] == keys[2]
+    assert [k["student"] for k in keys[2]] == STUDENTS
+    # A wrong answer for some students: graded alike on both, and each report is that student's.
+    answers = [{q["id"]: ("1 N" if i % 3 == 0 else q["answer"]["text"]) for q in k["questions"]}
+               for i, k in enumerate(keys[1])]
+    grades = {w: run_roster(ex, "grade", STUDENTS, SECRET, answers=answers, workers=w) for w in (1, 2)}
+    assert grades[1] == grades[2]
+    full = [g["score"] == g["max"] for g in grades[2]]
+    assert full == [i % 3 != 0 for i in range(len(STUDENTS))]
+
+
+def test_classmates_with_the_same_values_share_one_solved_draw():
+    ex = exercises.load(NAME)
+    variants._DRAWS.clear()
+    made = [make_variant(ex, s, SECRET) for s in STUDENTS]
+    by_values: dict = {}
+    for v in made:
+        by_values.setdefault(_values(v), []).append(v)
+    shared = [vs for vs in by_values.values() if len(vs) > 1]
+    assert shared, "200 students over 91 draws must share some"
+    for vs in shared:
+        assert all(v.solved is vs[0].solved for v in vs)
+        # The same answers, each on its own student's sheet.
+        texts = [[q["answer"]["text"] for q in v.key()["questions"]] for v in vs]
+        assert all(t == texts[0] for t in texts)
+        assert [v.key()["student"] for v in vs] == [v.student for v in vs]
+    # Solved once per distinct draw, not once per student.
+    assert len({id(v.solved) for v in made}) == len(by_values)
+
+
+def test_the_shard_follows_the_first_draw():
+    ex = exercises.load(NAME)
+    for shards in (2, 3):
+        seen: dict = {}
+        for s in STUDENTS:
+            k = draw_shard(ex, s, SECRET, shards)
+            assert 0 <= k < shards and k == draw_shard(ex, s, SECRET, shards)
+            first = tuple(g.value for g in variants._choose(ex, s, SECRET, 0))
+            assert seen.setdefault(first, k) == k
+        assert len(set(seen.values())) == shards  # every worker gets some
+    # An id that cannot be read goes to the first worker, which reports it.
+    assert draw_shard(ex, "   ", SECRET, 2) == 0
