@@ -170,6 +170,24 @@ def name(text: str) -> list:
     return sym(m[1], m[2])
 
 
+def prose(text: str) -> tuple:
+    """Words written for a terminal as the handout sets them: each symbol with its subscript
+    (:func:`graphkin.notation.symbols_in`).
+
+    Returns
+    -------
+    tuple
+        Runs for :meth:`graphkin.handout.document.Doc.text` or a table cell: text and math nodes.
+
+    Examples
+    --------
+    >>> [to_text(r) if isinstance(r, list) else r for r in prose("F_ij is of link i on j; F3i = −m3 a_G3 at G3")]
+    ['Fij', ' is of link i on j; ', 'F3i', ' = −', 'm3', ' ', 'aG3', ' at G3']
+    """
+    out = [part if isinstance(part, str) else sym(*part) for part in notation.symbols_in(text)]
+    return tuple(r for r in out if r != "") or ("",)
+
+
 def qty(value: float | str, unit: str, digits: int = 4) -> list:
     """A number and its unit: 25.98 N."""
     return row(n(value, digits), SP, t(unit)) if unit else n(value, digits)
