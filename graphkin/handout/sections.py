@@ -40,10 +40,10 @@ def statement(doc: Doc, s: Subject, version: str, *, full: bool = False, at=()):
     if s.whole_cycle:
         where = (f" Over the whole cycle, worked out in full at {s.where(at[0])}, where {what} is largest in size."
                  if at else "")
-        doc.text(f"Find every joint force and {what}, {how}, both analytically and graphically.{where}")
+        doc.text(*M.prose(f"Find every joint force and {what}, {how}, both analytically and graphically.{where}"))
     else:
         where = " and ".join(s.where(i) for i in at)
-        doc.text(f"At {where}, find every joint force and {what}, {how}, both analytically and graphically.")
+        doc.text(*M.prose(f"At {where}, find every joint force and {what}, {how}, both analytically and graphically."))
 
 
 def notation(doc: Doc, s: Subject):
@@ -218,7 +218,7 @@ def own_data(doc: Doc, s: Subject):
     """A student's own values."""
     v = s.variant
     if v is not None and v.data:
-        doc.table(["your data", "value"], [[f"{g.label} {g.symbol}".strip() if g.label else g.symbol,
+        doc.table(["your data", "value"], [[M.prose(f"{g.label} {g.symbol}".strip() if g.label else g.symbol),
                                              g.shown.split(" = ", 1)[1]] for g in v.data], "lr",
                   caption="Your own values (the rest of the data is the same for everyone)")
 
@@ -227,7 +227,7 @@ def given(doc: Doc, s: Subject, i: int | None = None, own: bool = True):
     doc.heading(1, "Given" if own else "The data")
     if own:
         own_data(doc, s)
-    rows = _given_rows(s, s.raw, s.mech.frame, i)
+    rows = [[M.prose(c) if isinstance(c, str) else c for c in row] for row in _given_rows(s, s.raw, s.mech.frame, i)]
     if rows:
         doc.table(["item", "data"], rows, "ll", caption="Points in each link's own frame; angles from +x, "
                   "counter-clockwise positive")
@@ -260,7 +260,7 @@ def questions(doc: Doc, s: Subject, answers: bool):
     header = ["id", "question", "unit, tolerance, points", "answer" if answers else "your answer"]
     doc.table(header, rows, "llll", tall=not answers, boxed=not answers)
     if answers:
-        doc.items([f"{q['id']}: {q['answer']['hint']}" for q in sheet["questions"] if q["answer"].get("hint")])
+        doc.items([M.prose(f"{q['id']}: {q['answer']['hint']}") for q in sheet["questions"] if q["answer"].get("hint")])
 
 
 _CONVENTION: list[Picture] = []

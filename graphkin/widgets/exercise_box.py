@@ -49,8 +49,8 @@ def html_text(text: str) -> str:
     >>> html_text("F_ij is the force of link i on link j; a_G3 < 1")
     '<i>F</i><sub>ij</sub> is the force of link i on link j; <i>a</i><sub>G3</sub> &lt; 1'
     """
-    return "".join(escape(part) if isinstance(part, str) else f"<i>{escape(part[0])}</i><sub>{escape(part[1])}</sub>"
-                   for part in symbols_in(text))
+    return "".join(escape(part) if isinstance(part, str) else
+                   f"<i>{escape(part[0])}</i><sub>{escape(part[1])}</sub>{escape(part[2])}" for part in symbols_in(text))
 
 
 class ExerciseBox:

@@ -3,6 +3,8 @@ tolerance of a question stated alike everywhere, and the lines of action each ti
 
 from __future__ import annotations
 
+import re
+
 from graphkin import exercises, handout
 from graphkin.exercises.platforms.prairielearn import marks
 from graphkin.exercises.sheets import format_sheet
@@ -73,3 +75,13 @@ def test_a_question_s_tolerance_is_stated_alike_by_the_command_the_platform_and_
             assert q["within"].startswith("3 % or ±") and q["within"].endswith("the larger"), q["within"]
     assert graphical == len(sheet["questions"])
     assert "within 3 %," not in text  # the bare 3 % the command printed before
+
+
+def test_a_sub_problem_s_primed_force_and_the_cutting_force_are_subscripted_too():
+    assert M.prose("F43′ and F23″ meet") == (M.subsup(M.i("F"), M.t("43"), M.t("′")), " and ",
+                                            M.subsup(M.i("F"), M.t("23"), M.t("″")), " meet")
+    assert M.name("Fc3") == M.sym("F", "c3") and M.prose("Fc3 (cutting)")[0] == M.sym("F", "c3")
+    doc = handout.build("strip_cutter", at="140 deg")
+    # Every text of the handout (not the drawings' SVG, whose element ids keep the plain names).
+    text = re.sub(r'bytes\("(?:[^"\\]|\\.)*"\)', "", source(doc))
+    assert '"Fc3' not in text and "F43′" not in text and '"θ12' not in text
