@@ -70,7 +70,7 @@ def roster(exercise: str, students: int, folder: Path) -> dict:
 
 def in_process(exercise: str, students: int, folder: Path) -> list[float]:
     """CPU seconds of each student's sheet and key (PDF) made in this process, after one warm-up student."""
-    from graphkin.handout.batch import _chunk
+    from graphkin.handout.batch import _chunk, _worker_start
 
     def one(student: str) -> float:
         t = time.process_time()
@@ -80,6 +80,7 @@ def in_process(exercise: str, students: int, folder: Path) -> list[float]:
         return time.process_time() - t
 
     folder.mkdir(parents=True, exist_ok=True)
+    _worker_start()  # as a roster's worker: it settles after its first task
     one("warm-up")  # imports, fonts, the catalog, typst's compiler: what a worker pays once
     return [one(f"s{k:04d}") for k in range(students)]
 

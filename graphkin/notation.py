@@ -326,3 +326,37 @@ def typeset(text: str) -> str:
         return f"10{exponent}" if m[1] in ("1", "1.0") else f"{m[1]}×10{exponent}"
 
     return typeset_minus(_POWER.sub(power, text))
+
+
+_SYMBOL = re.compile(r"(?<![\w.])(?:([A-Za-zα-ω])_([A-Za-z0-9]+)|([FRT])(c?[0-9]{1,2}i?)|(G)([0-9]{2})|([mαωθ])([0-9]{1,2}))"
+                     r"([′″‴]?)(?![A-Za-z0-9_′″‴])")
+
+
+def symbols_in(text: str) -> list:
+    """Plain text cut at its symbols, for a writer that sets a subscript as one (a handout, a web page).
+
+    ``F_ij``, ``a_G3``, ``I_G``, ``ω_avg`` (an underscore marks the subscript) and the names the exercises
+    write without one (``F23``, ``R3i``, ``Fc3``, ``T12``, the guide's ``G12``, ``m3``, ``α3``, ``θ12``) are
+    symbols, with a sub-problem's mark (``F43′``); everything else stays text. A point's name (``G3``, ``A0``)
+    stays upright, as drawings print points.
+
+    Returns
+    -------
+    list
+        Strings (text) and ``(letter, subscript, mark)`` triples (symbols; ``mark`` is ``""``, ``′`` or ``″``…),
+        in order; no empty strings.
+
+    Examples
+    --------
+    >>> symbols_in("F_ij is of link i on j; F3i = −m3 a_G3 at G3")
+    [('F', 'ij', ''), ' is of link i on j; ', ('F', '3i', ''), ' = −', ('m', '3', ''), ' ', ('a', 'G3', ''), ' at G3']
+    >>> symbols_in("F43′ and Fc3")
+    [('F', '43', '′'), ' and ', ('F', 'c3', '')]
+    """
+    out: list = []
+    last = 0
+    for m in _SYMBOL.finditer(text):
+        out += [text[last:m.start()], next((m[k], m[k + 1], m[9]) for k in (1, 3, 5, 7) if m[k])]
+        last = m.end()
+    out.append(text[last:])
+    return [part for part in out if part != ""]

@@ -588,8 +588,9 @@ print(gk.exercises.check("inertia_resultant", student, answers))
 # 3. draw the polygon $\vec R_{3i} + \vec F_{43} + \vec F_{23} = 0$ at the printed force scale
 #    (step 4), then the polygon of slider 2 (steps 5 and 6), and measure the sides.
 #
-# Answers within 3 % earn full marks. The drawing is made for the id in the `student` cell above
-# (if you typed your id only in a box, type it there too).
+# An answer within 3 % earns full marks, or within what a ruler reads at the printed scale (±0.5 mm)
+# where that is larger: the sheet states both beside each question. The drawing is made for the id
+# in the `student` cell above (if you typed your id only in a box, type it there too).
 
 # %%
 from matplotlib.figure import Figure

@@ -198,3 +198,25 @@ def test_no_module_is_over_600_lines_unless_docs_architecture_names_it():
     assert long <= named, f"over 600 lines and not named in docs/architecture.md: {sorted(long - named)}"
     assert named <= {str(p.relative_to(ROOT)) for p, _ in MODULES.values()}, "docs/architecture.md names a module " \
         "that is not there"
+
+
+def _unguarded_writes(tree: ast.AST) -> list[int]:
+    """Lines that save a file (``.save(…)``, ``.savefig(…)``, ``.write_bytes(…)``, ``.write_text(…)``) outside a
+    ``with replacing(…)`` block: a write a person could find half done."""
+    guarded = set()
+    for node in ast.walk(tree):
+        if isinstance(node, ast.With) and any(
+                isinstance(item.context_expr, ast.Call) and getattr(item.context_expr.func, "id",
+                                                                    getattr(item.context_expr.func, "attr", "")) ==
+                "replacing" for item in node.items):
+            guarded |= {id(n) for n in ast.walk(node)}
+    return [node.lineno for node in ast.walk(tree)
+            if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute)
+            and node.func.attr in ("save", "savefig", "write_bytes", "write_text") and id(node) not in guarded]
+
+
+def test_the_handout_figures_are_written_whole():
+    """figures/handouts/build.py writes its page images through graphkin.files.replacing, as graphkin writes."""
+    path = ROOT / "figures" / "handouts" / "build.py"
+    assert _unguarded_writes(ast.parse(path.read_text())) == []
+    assert _unguarded_writes(ast.parse("from PIL import Image\nImage.new('L', (1, 1)).save('x.png')\n")) == [2]

@@ -16,6 +16,7 @@ from pathlib import Path
 import pypdfium2 as pdfium
 
 from graphkin import handout
+from graphkin.files import replacing
 
 HERE = Path(__file__).resolve().parent
 PROBLEMS = ("single_link", "double_slider", "strip_cutter", "slider_crank_friction", "gearset")
@@ -45,7 +46,9 @@ def build(name: str) -> list[Path]:
         old.unlink()
     for k in sorted({0, polygon_page(pdf)}) if name in PAGE_IMAGES else ():
         png = HERE / f"{name}_page{k + 1}.png"
-        pdf[k].render(scale=DPI / 72).to_pil().save(png, optimize=True)
+        # Whole or not at all, as every file graphkin writes: a build stopped half-way leaves no half image.
+        with replacing(png, "page image") as tmp:
+            pdf[k].render(scale=DPI / 72).to_pil().save(tmp, format="PNG", optimize=True)
         written.append(png)
     print(f"{name}: {len(pdf)} pages")
     return written

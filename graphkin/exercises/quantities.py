@@ -15,7 +15,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from graphkin.exercises.exercise import Question, dimension_of
-from graphkin.graphical.paper import reading_error
+from graphkin.graphical.paper import READING, force_text, length_text, reading_error, sheet_scales
 from graphkin.kinematics import DriverGroup, decompose
 from graphkin.model.names import parse_force_name
 from graphkin.notation import num, polar_text
@@ -214,6 +214,42 @@ def measurable(solved, q: Question) -> float:
     if what is None or not c.valid:
         return 0.0
     return reading_error(c, what)
+
+
+def within(q: Question, construction=None) -> str:
+    """A question's tolerance as every sheet, key, command and platform states it.
+
+    ``"1 %"``; an angle's ``"1.7°"`` or a sweep's ``"the step of the sweep"``; a graphical answer measured off
+    the worksheet (``construction`` given and valid) also states what a ruler reads at its printed scale, the
+    larger of the two being what the grader allows (:func:`measurable`):
+    ``"3 % or ±2.5 N (±0.5 mm at 1 mm = 5 N), the larger"``.
+
+    Parameters
+    ----------
+    q : Question
+    construction : graphkin.graphical.Construction, optional
+        The student's construction (graphical questions only).
+
+    Returns
+    -------
+    str
+    """
+    if _form(q) == "direction":
+        return "the step of the sweep" if q.part == "at" else f"{math.degrees(math.atan(q.tolerance)):.2g}°"
+    text = f"{100 * q.tolerance:g} %"
+    what = measured_as(q)
+    if what is None or construction is None or not construction.valid:
+        return text
+    error = reading_error(construction, what)
+    if not error > 0:
+        return text
+    scales = sheet_scales(construction)
+    if what == "length":
+        return (f"{text} or ±{num(error * 1e3, 4, power=True)} mm (±{READING:g} mm on the drawing at "
+                f"{length_text(scales.length)}), the larger")
+    if what == "torque":
+        return f"{text} or ±{num(error, 4, power=True)} N·m (a reading to ±{READING:g} mm on each drawing), the larger"
+    return f"{text} or ±{num(error, 4, power=True)} N (±{READING:g} mm at {force_text(scales.polygon)}), the larger"
 
 
 def _span(c) -> float:

@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-import math
-
 from graphkin.notation import citation
 
 
@@ -18,12 +16,8 @@ def format_sheet(sheet: dict) -> str:
     lines += [f"  {g['shown']}" + (f"   ({g['label']})" if g["label"] else "") for g in sheet["data"]]
     lines += ["", "Questions"]
     for q in sheet["questions"]:
-        tol = f"{100 * q['tolerance']:g} %"
-        if q["form"] == "direction":
-            # An angle's slack is the direction error of a vector off by the tolerance; a peak's place, the grid's.
-            tol = "the step of the sweep" if q["part"] == "at" else f"{math.degrees(math.atan(q['tolerance'])):.2g}°"
         unit = q["unit"].replace("*", "·").replace("^2", "²") or "no unit"
-        lines.append(f"  {q['id']}: {q['ask']}   [{unit}, within {tol}, {q['points']:g} point"
+        lines.append(f"  {q['id']}: {q['ask']}   [{unit}, within {q['within']}, {q['points']:g} point"
                      f"{'s' if q['points'] != 1 else ''}]")
         if "answer" in q:
             lines.append(f"      answer: {q['answer']['text']}")

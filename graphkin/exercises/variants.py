@@ -27,7 +27,16 @@ from graphkin.cycle import sweep
 from graphkin.errors import GraphkinError
 from graphkin.exercises.exercise import CYCLE_KINDS, Exercise, Question, set_field
 from graphkin.exercises.grading import grade_variant
-from graphkin.exercises.quantities import _span, expected, message_words, question_data, undefined, value_of
+from graphkin.exercises.quantities import (
+    _span,
+    expected,
+    measured_as,
+    message_words,
+    question_data,
+    undefined,
+    value_of,
+    within,
+)
 from graphkin.exercises.symbols import fill_symbols
 from graphkin.graphical import construct_forces
 from graphkin.notation import input_text
@@ -198,7 +207,9 @@ class Variant:
                 "student": self.student, "intro": intro, "draw": self.exercise.draw,
                 "data": [{"symbol": g.symbol, "label": g.label, "value": g.value, "shown": g.shown}
                          for g in self.data],
-                "questions": [{**question_data(q), "ask": _fill(q.ask, self.data)} for q in self.exercise.questions]}
+                "questions": [{**question_data(q), "ask": _fill(q.ask, self.data),
+                               "within": within(q, self.construction if measured_as(q) else None)}
+                              for q in self.exercise.questions]}
 
     def key(self) -> dict:
         """The sheet with every answer: its value in SI and as the book prints it, and the tolerance."""

@@ -215,11 +215,12 @@ class Builder:
                 lines.append(Line(f"R{link}i", xy(P), xy(Fi / abs(Fi)), "resultant"))
                 sense = "clockwise" if Ti < 0 else "counter-clockwise"
                 parts.append(
-                    f"its inertia force F{link}i = −m a_G = {number(abs(Fi))} N and inertia torque T{link}i = −I_G α = "
+                    f"its inertia force F{link}i = −m{link}·a_G{link} = {polar(Fi)} and inertia torque "
+                    f"T{link}i = −I_G{link}·α{link} = "
                     f"{number(Ti)} N·m combine into one force R{link}i of the same size and direction, whose line is offset "
                     f"from G{link} by h = |T|/|F| = {number(h * 1e3)} mm to the side that turns link {link} {sense}"
                     # An offset under a picometre is rounding (α = 0 but for it): the force acts through G.
-                    if h > PICOMETRE else f"its inertia force F{link}i = −m a_G = {number(abs(Fi))} N acts through G{link}")
+                    if h > PICOMETRE else f"its inertia force F{link}i = −m{link}·a_G{link} = {polar(Fi)} acts through G{link}")
             else:
                 parts.append(f"its inertia torque T{link}i = {number(Ti)} N·m is a pure couple")
         if self.mech.gravity and body.mass:

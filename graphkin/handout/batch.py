@@ -10,6 +10,7 @@ batch leaves whole files or none, never half a PDF.
 
 from __future__ import annotations
 
+import gc
 import hashlib
 import multiprocessing
 import os
@@ -62,9 +63,35 @@ def _one(exercise: str, student: str, secret: str, versions: tuple, fmt: str, fo
         return student, [], str(exc)
 
 
+_WORKER: list = []
+"""Set in a roster's worker process (:func:`_worker_start`): ``[False]``, then ``[True]`` once it has settled."""
+
+
+def _worker_start():
+    _WORKER.append(False)
+
+
+def _settle():
+    """After a worker's first task: what it has loaded for good (modules, fonts, the typst compiler, text laid out
+    once) is put out of the garbage collector's reach, and it collects less often.
+
+    Every figure leaves reference cycles behind, so the collector runs hundreds of times a student, and each
+    full pass walked the hundred thousand objects the worker keeps for its life: 8 % of a student's time,
+    half of that after :func:`gc.freeze`, two fifths with the larger first threshold as well. Only a worker process
+    does this; a roster made in the caller's process (a notebook) leaves its collector as it is.
+    """
+    gc.collect()
+    gc.freeze()
+    gc.set_threshold(5000, 10, 10)
+    _WORKER[0] = True
+
+
 def _chunk(args) -> list[tuple]:
     exercise, students, secret, versions, fmt, folder, Cs = args
-    return [_one(exercise, st, secret, versions, fmt, folder, Cs) for st in students]
+    rows = [_one(exercise, st, secret, versions, fmt, folder, Cs) for st in students]
+    if _WORKER == [False]:
+        _settle()
+    return rows
 
 
 def make_roster(exercise: str, students, folder, *, secret: str = "", versions=("sheet", "key"), fmt: str = "pdf",
@@ -107,7 +134,8 @@ def make_roster(exercise: str, students, folder, *, secret: str = "", versions=(
         # Fresh interpreters, not forks: a fork of a process whose other threads hold a lock (typst's
         # compiler threads once a PDF has been made here, a notebook's kernel) can wait on it for ever.
         spawn = multiprocessing.get_context("spawn")
-        with ProcessPoolExecutor(max_workers=min(cores, len(tasks)), mp_context=spawn) as pool:
+        with ProcessPoolExecutor(max_workers=min(cores, len(tasks)), mp_context=spawn,
+                                 initializer=_worker_start) as pool:
             futures = {pool.submit(_chunk, task): k for k, task in enumerate(tasks)}
             for future in as_completed(futures):
                 k = futures[future]

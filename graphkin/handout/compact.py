@@ -18,7 +18,6 @@ from graphkin.handout import scaled
 from graphkin.handout.document import Doc, Subject
 from graphkin.handout.sections import loads
 from graphkin.model import Revolute
-from graphkin.notation import typeset
 
 
 def solution(doc: Doc, s: Subject, entry: dict, c, i: int):
@@ -128,13 +127,13 @@ def graphical(doc: Doc, s: Subject, entry: dict, c, i: int):
     if concurrent:
         k = scaled.construction_scale(c, concurrent)
         doc.heading(2, "Lines of action")
-        titles = [_construction_title(st) for st in concurrent] if len(concurrent) > 1 else None
+        titles = _construction_titles(concurrent) if len(concurrent) > 1 else None
         doc.figure([scaled.constructions(s, c, i, concurrent, k, titles)],
                    "The lines of action of each three-force member, and where they meet. " + scaled.statement(k))
         for st in concurrent:
             # A caption that names its sub-problem and link ("In sub-problem I, link 3 is …") needs no title.
             named = not titles or f"link {st.link}" in st.caption[:40].lower()
-            doc.text(typeset(st.caption if named else f"{_construction_title(st)}: {st.caption}"))
+            doc.text(*M.prose(st.caption if named else f"{titles[concurrent.index(st)]}: {st.caption}"))
     steps = worked_steps(c)
     sums = [scaled.resultant_step(c, st) for st in c.steps if st.kind == "resultant" and not getattr(st, "sub", "")]
     sums = [st for st in sums if st is not None]
@@ -182,6 +181,19 @@ def graphical(doc: Doc, s: Subject, entry: dict, c, i: int):
 def _construction_title(step) -> str:
     sub = getattr(step, "sub", "")
     return (f"Sub-problem {sub}, link {step.link}" if sub else f"Link {step.link}")
+
+
+_DRAWS = {"three-force": "three forces meet", "line": "line of", "couple": "couple, line of"}
+"""What a panel of the lines of action draws, where its link alone does not tell two panels apart."""
+
+
+def _construction_titles(steps) -> list[str]:
+    """A title for each panel of the lines of action, each its own: ``Link 3``, or where two panels are of one
+    link (a gear's tooth force and its couple) what each draws: ``Link 3: line of F23``."""
+    plain = [_construction_title(st) for st in steps]
+    return [t if plain.count(t) == 1 else
+            f"{t}: {_DRAWS[st.kind]}" + ("" if st.kind == "three-force" else " " + ", ".join(ln.name for ln in st.lines))
+            for t, st in zip(plain, steps)]
 
 
 def _polygon_title(step) -> str:

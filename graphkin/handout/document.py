@@ -17,6 +17,7 @@ from graphkin.errors import GraphkinError
 from graphkin.exercises.exercise import CYCLE_KINDS, set_field
 from graphkin.exercises.variants import Variant
 from graphkin.graphical import construct_forces
+from graphkin.handout import maths as M
 from graphkin.handout.figures import Picture
 from graphkin.notation import input_text, typeset
 from graphkin.report import solution
@@ -77,8 +78,10 @@ class Doc:
         if len(lead) < len(self.blocks) and self.blocks[-1 - len(lead)]["kind"] == "heading":
             for b in lead:
                 b["keep"] = True
+        # The caption as text (alternative text, tests) and as runs, each symbol with its subscript (a_G3, F23).
         self.blocks.append({"kind": "figure", "pictures": list(pictures),
-                            "caption": f"{label}. {typeset(caption)}", "label": label})
+                            "caption": f"{label}. {typeset(caption)}", "label": label,
+                            "runs": runs((f"{label}. ", *M.prose(caption)))})
         return label
 
     def space(self, height: float, label: str, math=None, width: float | None = None):

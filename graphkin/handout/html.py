@@ -131,7 +131,7 @@ def _block(b: dict) -> str:
                         if p.natural else
                         f'<div style="flex: {p.width / total:.3f} 1 0; max-width: {100 * p.width:.0f}%" role="img" '
                         f'aria-label="{esc(p.alt)}">{_sized(inline_svg(p.svg(), p.key), p.height)}</div>' for p in pics)
-        return f'<figure><div class="row">{items}</div><figcaption>{esc(b["caption"])}</figcaption></figure>'
+        return f'<figure><div class="row">{items}</div><figcaption>{_inline(b["runs"])}</figcaption></figure>'
     if kind == "space":
         extra = " " + _mathml(b["math"], False) if b.get("math") else ""
         return f'<div class="space" style="height: {b["height"]:g}mm">{esc(b["label"])}{extra}</div>'

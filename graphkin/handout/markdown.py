@@ -48,7 +48,7 @@ def _block(b: dict, folder: str, files: dict) -> str:
             path = f"{folder}/{p.key}.svg"
             files[path] = p.svg().encode("utf-8")
             images.append(f"![{_text(p.alt)}]({path})")
-        return " ".join(images) + f"\n\n*{_text(b['caption'])}*"
+        return " ".join(images) + f"\n\n*{_inline(b['runs'])}*"
     if kind == "space":
         extra = f" ${M.to_latex(b['math'])}$" if b.get("math") else ""
         return f"> **Draw here** ({b['height']:g} mm): {_text(b['label'])}{extra}\n>\n> &nbsp;"

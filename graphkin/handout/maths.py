@@ -148,7 +148,7 @@ def sym(letter: str, subscript: str | None = None) -> list:
     return i(letter) if not subscript else sub(i(letter), t(subscript))
 
 
-_NAME = re.compile(r"^([A-Za-z])_?([0-9][0-9A-Za-z,]*|[A-Z][0-9A-Za-z]*)([′″‴⁗]|⁽[⁰¹²³⁴⁵⁶⁷⁸⁹]+⁾)?$")
+_NAME = re.compile(r"^([A-Za-z])_?([0-9][0-9A-Za-z,]*|[A-Z][0-9A-Za-z]*|c[0-9]+)([′″‴⁗]|⁽[⁰¹²³⁴⁵⁶⁷⁸⁹]+⁾)?$")
 _PLAIN_DIGITS = str.maketrans("⁰¹²³⁴⁵⁶⁷⁸⁹⁽⁾", "0123456789()")
 _SUPERSCRIPT_DIGITS = str.maketrans("0123456789()", "⁰¹²³⁴⁵⁶⁷⁸⁹⁽⁾")
 
@@ -160,6 +160,9 @@ def name(text: str) -> list:
     """
     if text[:1] in "−-" and len(text) > 1:
         return row(op("−"), name(text[1:]))  # a reversed force in a polygon: −F23
+    base, paren, rest = text.partition(" (")
+    if paren and base:
+        return row(name(base), SP, t("(" + rest))  # a load named for print: Fc3 (cutting)
     m = _NAME.match(text)
     if not m:
         return t(text)
@@ -168,6 +171,25 @@ def name(text: str) -> list:
     if m[3]:
         return subsup(i(m[1]), t(m[2]), t(m[3].translate(_PLAIN_DIGITS)))
     return sym(m[1], m[2])
+
+
+def prose(text: str) -> tuple:
+    """Words written for a terminal as the handout sets them: each symbol with its subscript
+    (:func:`graphkin.notation.symbols_in`).
+
+    Returns
+    -------
+    tuple
+        Runs for :meth:`graphkin.handout.document.Doc.text` or a table cell: text and math nodes.
+
+    Examples
+    --------
+    >>> [to_text(r) if isinstance(r, list) else r for r in prose("F_ij is of link i on j; F3i = −m3 a_G3 at G3")]
+    ['Fij', ' is of link i on j; ', 'F3i', ' = −', 'm3', ' ', 'aG3', ' at G3']
+    """
+    out = [part if isinstance(part, str) else subsup(i(part[0]), t(part[1]), t(part[2])) if part[2] else
+           sym(part[0], part[1]) for part in notation.symbols_in(text)]
+    return tuple(r for r in out if r != "") or ("",)
 
 
 def qty(value: float | str, unit: str, digits: int = 4) -> list:

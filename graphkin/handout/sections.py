@@ -9,18 +9,8 @@ import re
 
 import numpy as np
 
-from graphkin.exercises.quantities import measured_as
 from graphkin.exercises.variants import pretty
-from graphkin.graphical.paper import (
-    FIGURE_WIDTH,
-    READING,
-    force_text,
-    length_scale,
-    length_text,
-    mechanism_size,
-    reading_error,
-    sheet_scales,
-)
+from graphkin.graphical.paper import FIGURE_WIDTH, length_scale, mechanism_size
 from graphkin.handout import maths as M
 from graphkin.handout import scaled
 from graphkin.handout.document import Doc, Subject
@@ -38,7 +28,7 @@ def statement(doc: Doc, s: Subject, version: str, *, full: bool = False, at=()):
     if v is not None and v.exercise.intro:
         doc.heading(1, "The exercise")
         for para in _paragraphs(v.sheet()["intro"]):
-            doc.text(para)
+            doc.text(*M.prose(para))
         return
     doc.heading(1, "The problem")
     if full and s.problem.notes:
@@ -50,10 +40,10 @@ def statement(doc: Doc, s: Subject, version: str, *, full: bool = False, at=()):
     if s.whole_cycle:
         where = (f" Over the whole cycle, worked out in full at {s.where(at[0])}, where {what} is largest in size."
                  if at else "")
-        doc.text(f"Find every joint force and {what}, {how}, both analytically and graphically.{where}")
+        doc.text(*M.prose(f"Find every joint force and {what}, {how}, both analytically and graphically.{where}"))
     else:
         where = " and ".join(s.where(i) for i in at)
-        doc.text(f"At {where}, find every joint force and {what}, {how}, both analytically and graphically.")
+        doc.text(*M.prose(f"At {where}, find every joint force and {what}, {how}, both analytically and graphically."))
 
 
 def notation(doc: Doc, s: Subject):
@@ -228,7 +218,7 @@ def own_data(doc: Doc, s: Subject):
     """A student's own values."""
     v = s.variant
     if v is not None and v.data:
-        doc.table(["your data", "value"], [[f"{g.label} {g.symbol}".strip() if g.label else g.symbol,
+        doc.table(["your data", "value"], [[M.prose(f"{g.label} {g.symbol}".strip() if g.label else g.symbol),
                                              g.shown.split(" = ", 1)[1]] for g in v.data], "lr",
                   caption="Your own values (the rest of the data is the same for everyone)")
 
@@ -237,7 +227,7 @@ def given(doc: Doc, s: Subject, i: int | None = None, own: bool = True):
     doc.heading(1, "Given" if own else "The data")
     if own:
         own_data(doc, s)
-    rows = _given_rows(s, s.raw, s.mech.frame, i)
+    rows = [[M.prose(c) if isinstance(c, str) else c for c in row] for row in _given_rows(s, s.raw, s.mech.frame, i)]
     if rows:
         doc.table(["item", "data"], rows, "ll", caption="Points in each link's own frame; angles from +x, "
                   "counter-clockwise positive")
@@ -255,44 +245,22 @@ def given(doc: Doc, s: Subject, i: int | None = None, own: bool = True):
 def questions(doc: Doc, s: Subject, answers: bool):
     """The questions: with the answers and hints (a key), or with room for the student's answers (a sheet).
 
-    A graphical question's tolerance states both what the exercise allows and what a ruler reads at the
-    worksheet's printed scale (:func:`graphkin.graphical.paper.reading_error`): the grader allows the larger.
+    The tolerance is stated as every sheet states it (:func:`graphkin.exercises.quantities.within`): a graphical
+    question's says both what the exercise allows and what a ruler reads at the worksheet's printed scale.
     """
     v = s.variant
     sheet = v.key() if answers else v.sheet()
     doc.heading(1, "Questions" if not answers else "Questions and answers")
     rows = []
-    c = v.construction if any(q.route == "graphical" for q in v.exercise.questions) else None
-    for q, data in zip(v.exercise.questions, sheet["questions"]):
+    for data in sheet["questions"]:
         unit = data["unit"].replace("*", "·").replace("^2", "²").replace("^3", "³") or "no unit"
-        tol = f"{100 * data['tolerance']:g} %"
-        if data["form"] == "direction":
-            tol = "the step of the sweep" if data["part"] == "at" else \
-                f"{math.degrees(math.atan(data['tolerance'])):.2g}°"
-        elif q.route == "graphical" and c is not None and c.valid:
-            tol += _reading(c, q)
-        row = [data["id"], data["ask"], f"{unit}, within {tol}, {data['points']:g} pt"]
+        row = [data["id"], M.prose(data["ask"]), f"{unit}, within {data['within']}, {data['points']:g} pt"]
         row += [data["answer"]["text"]] if answers else [""]
         rows.append(row)
     header = ["id", "question", "unit, tolerance, points", "answer" if answers else "your answer"]
     doc.table(header, rows, "llll", tall=not answers, boxed=not answers)
     if answers:
-        doc.items([f"{q['id']}: {q['answer']['hint']}" for q in sheet["questions"] if q["answer"].get("hint")])
-
-
-def _reading(c, q) -> str:
-    """`` or ±2.5 N (±0.5 mm at 1 mm = 5 N), the larger``: what a ruler reads at the worksheet's scale."""
-    what = measured_as(q)
-    error = reading_error(c, what) if what else 0.0
-    if not error > 0:
-        return ""
-    scales = sheet_scales(c)
-    if q.kind in ("concurrency", "h"):
-        return (f" or ±{M.fmt(error * 1e3)} mm (±{READING:g} mm on the drawing at {length_text(scales.length)}), "
-                "the larger")
-    if q.kind == "driver_torque":
-        return f" or ±{M.fmt(error)} N·m (a reading to ±{READING:g} mm on each drawing), the larger"
-    return f" or ±{M.fmt(error)} N (±{READING:g} mm at {force_text(scales.polygon)}), the larger"
+        doc.items([M.prose(f"{q['id']}: {q['answer']['hint']}") for q in sheet["questions"] if q["answer"].get("hint")])
 
 
 _CONVENTION: list[Picture] = []

@@ -152,10 +152,10 @@ def graphical(doc: Doc, s: Subject, entry: dict, c, i: int):
         if step.kind == "sub-problem":
             # A book announces each sub-problem before its steps: a heading of its own.
             doc.heading(3, f"Sub-problem {sub}: only the loads on link {step.link}")
-            doc.text(f"Step {n}. {step.caption}")
+            doc.text(f"Step {n}. ", *M.prose(step.caption))
             continue
         if step.kind in _TEXT_ONLY:
-            doc.text(f"Step {n}. {step.caption}")
+            doc.text(f"Step {n}. ", *M.prose(step.caption))
             continue
         where = f"link {step.link}: " if step.link is not None else ""
         title = STEP_TITLES.get(step.kind, step.kind)
@@ -175,7 +175,7 @@ def graphical(doc: Doc, s: Subject, entry: dict, c, i: int):
             doc.figure([scaled.polygons(s, f"polygon-{i}-{n}", [step], X, c.driver_name, [""])],
                        f"{step.caption} {scaled.statement(None, X)}")
         else:
-            doc.text(step.caption)
+            doc.text(*M.prose(step.caption))
         if step.polygon:
             doc.equation(polygon_equation(step))
     _subproblems(doc, s, entry)

@@ -80,7 +80,7 @@ def _block(b: dict) -> str:
         images = [f"image(bytes({_string(p.svg())}), format: \"svg\", width: {p.size()[0]:.3f}pt, "
                   f"alt: {_string(p.alt)})" for p in b["pictures"]]
         body = images[0] if len(images) == 1 else ("stack(dir: ltr, spacing: 1em, " + ", ".join(images) + ")")
-        return f"#figure({body}, caption: [#{_string(b['caption'])}], numbering: none, supplement: none)"
+        return f"#figure({body}, caption: [{_inline(b['runs'])}], numbering: none, supplement: none)"
     if kind == "figure":
         pics = b["pictures"]
         images = [f"image(bytes({_string(p.svg())}), format: \"svg\", width: 100%, height: {p.height:g}mm, "
@@ -90,7 +90,7 @@ def _block(b: dict) -> str:
         body = images[0] if len(pics) == 1 else (f"grid(columns: ({widths}), column-gutter: 1em, align: horizon, "
                                                  + ", ".join(images) + ")")
         width = min(total, 1.0)
-        return (f"#figure(box(width: {100 * width:.1f}%, {body}), caption: [#{_string(b['caption'])}], "
+        return (f"#figure(box(width: {100 * width:.1f}%, {body}), caption: [{_inline(b['runs'])}], "
                 f"numbering: none, supplement: none)")
     if kind == "space":
         label = _string(b["label"])

@@ -16,7 +16,7 @@ from html import escape
 from graphkin import exercises
 from graphkin.errors import GraphkinError
 from graphkin.exercises.grading import grade_variant
-from graphkin.notation import citation
+from graphkin.notation import citation, symbols_in
 from graphkin.optional import require
 
 
@@ -41,6 +41,18 @@ def exercise(name, student: str = "", *, secret: str = ""):
     return ExerciseBox(exercises.load(name), student, secret)
 
 
+def html_text(text: str) -> str:
+    """Plain exercise text as HTML, each symbol with its subscript as a handout sets it (F_ij: F, subscript ij).
+
+    Examples
+    --------
+    >>> html_text("F_ij is the force of link i on link j; a_G3 < 1")
+    '<i>F</i><sub>ij</sub> is the force of link i on link j; <i>a</i><sub>G3</sub> &lt; 1'
+    """
+    return "".join(escape(part) if isinstance(part, str) else
+                   f"<i>{escape(part[0])}</i><sub>{escape(part[1])}</sub>{escape(part[2])}" for part in symbols_in(text))
+
+
 class ExerciseBox:
     """The widgets of :func:`exercise`: the student types an id, reads their data, answers, and checks."""
 
@@ -53,7 +65,7 @@ class ExerciseBox:
         self.answers = {q.id: w.Text(description=q.id, placeholder=q.unit or "number",
                                      layout=w.Layout(width="60%"), style={"description_width": "80px"})
                         for q in exercise.questions}
-        asks = [w.HTML(f"<b>{q.id}</b>: {escape(q.ask)}") for q in exercise.questions]
+        asks = [w.HTML(f"<b>{q.id}</b>: {html_text(q.ask)}") for q in exercise.questions]
         self.button = w.Button(description="Check", button_style="primary")
         self.feedback = w.HTML()
         self.button.on_click(lambda _: self.check())
@@ -82,7 +94,7 @@ class ExerciseBox:
             return
         items = "".join(f"<li>{escape(g['shown'])}" + (f" ({escape(g['label'])})" if g["label"] else "")
                         for g in sheet["data"])
-        self.data.value = f"<p>{escape(sheet['intro'])}</p><p>Your data:</p><ul>{items}</ul>"
+        self.data.value = f"<p>{html_text(sheet['intro'])}</p><p>Your data:</p><ul>{items}</ul>"
 
     def check(self) -> dict | None:
         """Grade what is in the boxes and show the feedback; returns the report (plain data)."""

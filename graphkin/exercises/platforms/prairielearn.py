@@ -30,7 +30,6 @@ from __future__ import annotations
 
 import html
 import json
-import math
 import re
 import uuid
 
@@ -86,11 +85,8 @@ def answer_names(question_ids) -> dict[str, str]:
 
 def marks(q: dict) -> str:
     """The bracket printed after a question: unit, slack and points (as ``graphkin exercise make`` prints it)."""
-    tol = f"{100 * q['tolerance']:g} %"
-    if q["form"] == "direction":
-        tol = "the step of the sweep" if q["part"] == "at" else f"{math.degrees(math.atan(q['tolerance'])):.2g}°"
     unit = _pretty_unit(q["unit"]) or "no unit"
-    return f"{unit}, within {tol}, {q['points']:g} point{'s' if q['points'] != 1 else ''}"
+    return f"{unit}, within {q['within']}, {q['points']:g} point{'s' if q['points'] != 1 else ''}"
 
 
 def generate(data: dict, exercise_file: str, secret: str = "") -> None:
