@@ -58,7 +58,7 @@ def _sections(nb):
     """The cells under each level-2 heading (the cells before the first one are a section of their own)."""
     sections = [[]]
     for c in nb.cells:
-        if c.cell_type == "markdown" and re.match(r"^## ", c.source, re.M):
+        if c.cell_type == "markdown" and re.search(r"^## ", c.source, re.M):
             sections.append([])
         sections[-1].append(c)
     return sections
@@ -82,9 +82,9 @@ def test_asserts_only_in_one_hidden_check_cell_per_section(source):
 
 
 def test_the_rules_catch_what_they_are_for():
-    nb = jupytext.reads("# %% [markdown]\n# ## A\n\n# %%\nassert 1\n\n# %% tags=[\"remove-input\"]\nassert 2\n",
-                        fmt="py:percent")
-    assert [c.metadata.get("tags", []) for c in nb.cells] == [[], [], [HIDDEN]]
+    nb = jupytext.reads("# %% [markdown]\n# ## A\n\n# %%\nassert 1\n\n# %% tags=[\"remove-input\"]\nassert 2\n\n"
+                        "# %% [markdown]\n# Text first.\n#\n# ## B\n", fmt="py:percent")
+    assert [c.metadata.get("tags", []) for c in nb.cells] == [[], [], [HIDDEN], []]
     assert ASSERT.search(nb.cells[1].source) and not ASSERT.search("x = 'assert'")
-    assert [len(s) for s in _sections(nb)] == [0, 3]
-    assert _prose_words(nb) == 2
+    assert [len(s) for s in _sections(nb)] == [0, 3, 1]  # a heading below text still opens a section
+    assert _prose_words(nb) == 6
