@@ -21,19 +21,9 @@ WORD_LIMIT = 1500
 HIDDEN = "remove-input"
 ASSERT = re.compile(r"^\s*assert\b", re.M)
 
-# Lessons not yet cut to the limit (issue 27, item 1). Strict: a lesson that meets the rules fails here
-# until it is taken off the list, so the list only shrinks.
-_UNCUT = {"06_exercises_for_teachers"}
-NOT_YET = {"prose": _UNCUT, "asserts": _UNCUT | {"07_grading_platforms"}}
-
 
 def _cells(nb) -> list[tuple[str, str, tuple[str, ...]]]:
     return [(c.cell_type, c.source.strip(), tuple(c.metadata.get("tags", ()))) for c in nb.cells]
-
-
-def _pending(path: Path, rule: str):
-    marks = [pytest.mark.xfail(strict=True, reason="issue 27: not yet cut")] if path.stem in NOT_YET[rule] else []
-    return pytest.param(path, id=path.stem, marks=marks)
 
 
 def test_every_notebook_has_its_source_and_back():
@@ -64,13 +54,13 @@ def _sections(nb):
     return sections
 
 
-@pytest.mark.parametrize("source", [_pending(p, "prose") for p in SOURCES])
+@pytest.mark.parametrize("source", SOURCES, ids=[p.stem for p in SOURCES])
 def test_prose_is_at_most_the_limit(source):
     words = _prose_words(jupytext.read(source))
     assert words <= WORD_LIMIT, f"{source.name}: {words} words of prose, more than {WORD_LIMIT}"
 
 
-@pytest.mark.parametrize("source", [_pending(p, "asserts") for p in SOURCES])
+@pytest.mark.parametrize("source", SOURCES, ids=[p.stem for p in SOURCES])
 def test_asserts_only_in_one_hidden_check_cell_per_section(source):
     nb = jupytext.read(source)
     visible = [k + 1 for k, c in enumerate(nb.cells)
