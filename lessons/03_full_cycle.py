@@ -13,8 +13,6 @@
 #     name: python3
 # ---
 
-# %%
-
 # %% [markdown]
 # # Lesson 03 — A whole cycle: the strip cutter at 900 rpm
 #

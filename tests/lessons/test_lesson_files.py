@@ -78,3 +78,10 @@ def test_the_rules_catch_what_they_are_for():
     assert ASSERT.search(nb.cells[1].source) and not ASSERT.search("x = 'assert'")
     assert [len(s) for s in _sections(nb)] == [0, 3, 1]  # a heading below text still opens a section
     assert _prose_words(nb) == 6
+
+
+@pytest.mark.parametrize("source", SOURCES, ids=[p.stem for p in SOURCES])
+def test_no_empty_cells(source):
+    """An empty code cell gets no prompt number in JupyterLab, so a student's Shift+Enter seems to hang on it."""
+    empty = [k + 1 for k, c in enumerate(jupytext.read(source).cells) if not c.source.strip()]
+    assert not empty, f"{source.name}: empty cells {empty} (two blank lines after a cell marker make one)"
