@@ -152,7 +152,7 @@ draw_free_bodies(gk.construct_forces(p.kinematics(), 0), length_scale=5, force_s
 # vertical. Slider 4 can push only horizontally, so $\vec F_{43}$ is horizontal, and on slider 2 the
 # guide takes the vertical part, $\vec G_{12} = -\vec F_{3i}$, the driver the horizontal part,
 # $\vec F_{12} = -\vec F_{43}$. The same nine equations as a matrix (rows: links 2, 3, 4; $N$ is
-# measured along the guide turned by +90°; entries like `1e-16` are a rounded zero):
+# measured along the guide turned by +90°):
 
 # %%
 print(gk.assemble(result).format(0))
