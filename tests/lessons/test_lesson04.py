@@ -280,3 +280,12 @@ def test_the_exercises_keys_and_the_feedback():
     assert box.check()["score"] == 2
     box.answers["E"].value = slipped["E"]
     assert box.check()["score"] == 1.5 and box.report["questions"][0]["slip"] == "power_of_ten"
+
+
+def test_a_longer_crank_raises_the_index_over_the_exercises_range():
+    """Exercise 2 asks the student to reason from their crank length (70-100 mm) to their index."""
+    text = gk.catalog.path("strip_cutter").read_text()
+    peaks = [gk.joint_force_index(gk.parse_problem(text.replace('A = ["85 mm", "0 mm"]', f'A = ["{a} mm", "0 mm"]')),
+                                  360).peak for a in range(70, 101, 5)]
+    assert np.all(np.diff([pk.value for pk in peaks]) > 0)
+    assert all(140 < math.degrees(pk.at) < 156 for pk in peaks)  # late in the cut
