@@ -16,23 +16,16 @@
 # %% [markdown]
 # # Lesson 06 — Exercises for a course (for teachers)
 #
-# The other lessons are for students. This one is for you, the teacher: how to give each of your
-# students **their own numbers** for an exercise, grade what they type, and see at a glance which
-# slips the class made. `graphkin.exercises` does the work; every result is plain data (dicts,
-# strings, numbers) that you can save as CSV or JSON for your learning platform.
+# The other lessons are for students. This one is for you, the teacher: how to give each student
+# **their own numbers** for an exercise, grade what they type, and see at a glance which slips the
+# class made. `graphkin.exercises` does the work; every result is plain data (dicts, strings, numbers)
+# that you can save as CSV or JSON. The weekly loop: choose or write an exercise (section 1); make every
+# student's sheet and your key from the roster and a **course secret** (2), also from the command line
+# (3); grade the answers and read the class's slips (4); set partial credit, reveal the answers and keep
+# the secret (5). Lesson 07 puts the same on Gradescope, otter-grader, nbgrader and PrairieLearn.
 #
-# The weekly loop, and the sections of this lesson:
-#
-# 1. choose an exercise from the catalog, or write your own (a short TOML file);
-# 2. make every student's sheet and your answer key from the roster and a **course secret**;
-# 3. do the same from the command line, for a script or a cron job;
-# 4. collect the answers as a CSV, grade them, and read the class's scores and slips;
-# 5. decide how much a slip is worth, whether to reveal the answers, and keep the secret secret;
-# 6. what next.
-#
-# Everything happens in a temporary folder, deleted when the notebook's kernel stops. The class
-# is simulated (section 4) from the keys with a fixed random seed, so the notebook gives the same
-# numbers every time; the checks at the end make sure the text says what the code does.
+# Everything happens in a temporary folder, deleted when the kernel stops; the class of section 4 is
+# simulated from the keys with a fixed seed, so the numbers are the same every time.
 
 # %%
 # %matplotlib inline
@@ -81,16 +74,13 @@ print(toml_file.read_text(encoding="utf-8"))
 # %% [markdown]
 # How to read it:
 #
-# * `problem` is the **base problem**, here the catalog's `strip_cutter` (lesson 03). Everything
-#   the exercise doesn't vary is taken from it.
-# * `intro` is the statement. `{θ12}`, `{ω}` and `{Fc}` are replaced by the student's own values.
-# * Each `[vary.SYMBOL]` table is one value that changes from student to student. `field` says
-#   where it goes in the problem file (a list puts the same value in several places: the cutting
-#   force acts on both blades). `from`, `to` and `step` make a grid in one unit, so students get
-#   round numbers like the book's (126°, 1150 rpm), never 131.4729°. A list `values = [...]` works too.
-# * Each `[[questions]]` has an `id` (the column of the answers CSV), `find` (a joint force `F23`,
-#   the driver `T12`, …), the `part` asked (for a force, the whole vector unless you say otherwise), and optionally a `unit`
-#   (the unit of a bare number and of the key), a `tolerance` (default 1 %) and `points` (default 1).
+# * `problem` is the **base problem** (here the catalog's `strip_cutter`); everything the exercise
+#   doesn't vary is taken from it. `intro` is the statement; `{θ12}`, `{ω}`, `{Fc}` become the student's values.
+# * Each `[vary.SYMBOL]` is one value that changes from student to student: `field` says where it goes
+#   in the problem file (a list: several places); `from`, `to` and `step` make a grid, so students get
+#   round numbers like the book's, never 131.4729°. A list `values = [...]` works too.
+# * Each `[[questions]]` has an `id` (the answers CSV's column), `find` (`F23`, `T12`, …), the `part`
+#   asked, and optionally a `unit`, a `tolerance` (default 1 %) and `points` (default 1).
 #
 # What the file allows, once read:
 
@@ -160,6 +150,23 @@ except gk.ProblemFileError as err:
     typo = str(err)
 print(typo)
 
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+assert len(gk.exercises.names()) == 10 and NAME in gk.exercises.names()
+assert [len(v.values) for v in ex.vary] == [15, 13, 11] and math.prod(len(v.values) for v in ex.vary) == 2145
+assert ex.vary[0].values[:2] == ("126 deg", "128 deg") and ex.vary[0].values[-1] == "154 deg"
+assert all(q.tolerance == 0.01 and q.points == 1 for q in ex.questions)
+assert [(q.id, q.part, q.unit) for q in ex.questions] == [("F23", "vector", "N"), ("F14", "magnitude", "N"),
+                                                          ("T12", "value", "N*m")]
+assert gk.exercises.load(str(toml_file)).vary == ex.vary   # the file found is the catalog's
+assert [v.values for v in mine.vary] == [("130 deg", "135 deg", "140 deg", "145 deg", "150 deg"),
+                                         ("600 rpm", "900 rpm", "1200 rpm")]
+assert [(q.points, q.unit, q.tolerance) for q in mine.questions] == [(2, "N*m", 0.01), (1, "kN", 0.02)]
+assert my_key["questions"][1]["answer"]["text"].endswith(" kN")
+assert "tolerence" in typo and "did you mean 'tolerance'" in typo
+# The id is the seed: the file saved as cutter_speed.toml gives the same data.
+(folder / "cutter_speed.toml").write_text(MY_EXERCISE, encoding="utf-8")
+assert gk.exercises.make(str(folder / "cutter_speed.toml"), "s001", SECRET)["data"] == my_key["data"]
+
 # %% [markdown]
 # ## 2. A roster, the sheets and the key
 #
@@ -199,13 +206,10 @@ for s in students[:8]:
           "".join(f"{answers[q.id]:<22}" for q in ex.questions))
 
 # %% [markdown]
-# Each student's data come from a hash of (exercise, student id, secret) and nothing else, so
-#
-# * the same id always gives the same data, on any machine, this week or next;
-# * a student who joins late changes nobody else's data, and neither does the order of the roster;
-# * stray spaces around an id (pasted from a spreadsheet) don't matter, but the case does: `S001`
-#   is another student than `s001`;
-# * another secret (next year's course) gives other data.
+# Each student's data come from a hash of (exercise, student id, secret) and nothing else: the same
+# id always gives the same data, on any machine; a late student changes nobody's data, nor does the
+# roster's order; stray spaces around an id don't matter, but the case does (`S001` is not `s001`);
+# another secret (next year's course) gives other data.
 
 # %%
 print("s001 again:        ", gk.exercises.make(NAME, "s001", secret=SECRET) == sheets["s001"])
@@ -230,6 +234,21 @@ print(f"{len(by_data)} different data sets for {len(students)} students; the sam
 # It does: s013 and s025 have the same numbers. If that matters (they sit side by side), vary one
 # more value or take a finer step; every student's data change with the file, so do it before
 # you hand out the sheets.
+
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+assert len(students) == 30 and len(set(students)) == 30
+assert all(keys[s]["data"] == sheets[s]["data"] for s in students)
+assert all("answer" not in q for s in students for q in sheets[s]["questions"])
+assert gk.exercises.make(NAME, "s001", secret=SECRET) == sheets["s001"]
+assert gk.exercises.make(NAME, " s001 ", secret=SECRET)["data"] == sheets["s001"]["data"]
+assert gk.exercises.make(NAME, "S001", secret=SECRET)["data"] != sheets["s001"]["data"]
+assert changed == len(students)
+# A late student changes nobody's data; the roster's order doesn't matter.
+late = {s: gk.exercises.make(NAME, s, secret=SECRET) for s in reversed(students + ["s031"])}
+assert all(late[s] == sheets[s] for s in students)
+assert twins == [["s013", "s025"]] and len(by_data) == 29
+assert round(100 * (1 - math.prod(1 - k / 2145 for k in range(30)))) == 18
+
 
 # %% [markdown]
 # ## 3. The same from the command line
@@ -261,26 +280,38 @@ print("".join((folder / "keys.csv").read_text(encoding="utf-8").splitlines(keepe
 # %%
 print(graphkin("exercise", "make", NAME, "--student", "s001", "--secret", SECRET))
 
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+from graphkin.exercises.batch import PARALLEL_FROM
+
+
+def read_csv(name):
+    with (folder / name).open(encoding="utf-8") as f:
+        return list(csv.DictReader(f))
+
+
+cli_sheets, cli_keys = read_csv("sheets.csv"), read_csv("keys.csv")
+assert [r["student"] for r in cli_sheets] == [r["student"] for r in cli_keys] == students
+for r_sheet, r_key in zip(cli_sheets, cli_keys):
+    s = r_sheet["student"]
+    assert all(r_sheet[g["symbol"]] == r_key[g["symbol"]] == g["value"] for g in sheets[s]["data"])
+    assert all(r_key[q["id"]] == q["answer"]["text"] for q in keys[s]["questions"])
+assert PARALLEL_FROM <= 500   # "from a few hundred students on, ... all your cores"
+
+
 # %% [markdown]
 # ## 4. Collecting and grading the answers
 #
-# Students hand in a CSV (or a form your platform turns into one): a `student` column and one
-# column per question id, the answers as typed. We don't have a real class, so we make one
-# **honestly from the keys**: each answer is right, or carries one of the classic slips made on
-# purpose, or is wrong, blank or unreadable. The slips are computed, not guessed:
+# Students hand in a CSV (or a form your platform turns into one): a `student` column and one column
+# per question id, the answers as typed. We make a class **honestly from the keys**: each answer is
+# right, or carries one of the classic slips made on purpose, or is wrong, blank or unreadable:
 #
 # * **sign**: the force of the other link (F32 for F23), or the torque with the wrong sense;
 # * **power of ten**: the torque worked out in N·mm and written as N·m;
-# * **no inertia torque**: the variant solved again without $-I_G\alpha$
-#   (`variant.altered("no_inertia_torque")`), and the answer read off it with `value_of`.
+# * **no inertia torque**: the variant solved again without $-I_G\alpha$ (`variant.altered(...)`).
 #
-# A wrong answer is 5 to 15 % off; an unreadable one is "see my drawing", "?", or the right answer
-# written with a comma that could be a decimal comma or a thousands separator (`2,643 N`: 2.643 or
-# 2643?), which the grader refuses to guess, with a sentence. (A plain decimal comma, `216,6 N·m`, is
-# read, unless the exercise says `decimal_comma = false`.) Answers are typed as students type them;
-# s001's F23 and T12, for instance,
-# as `2643 N ∠ -126.57°`, `(-1575, -2123) N` or `2.643 kN at -126.6 deg`, and `216.6 N·m CCW`,
-# `216.6 N*m` or `0.2166 kN·m`.
+# A wrong answer is 5 to 15 % off; an unreadable one is "see my drawing", "?", or a comma that could be
+# a decimal comma or a thousands separator (`2,643 N`), which the grader refuses to guess. Answers are
+# typed as students type them: `2643 N ∠ -126.57°`, `(-1575, -2123) N`, `216.6 N·m CCW`, `0.2166 kN·m`.
 
 # %%
 def fmt(x):
@@ -391,12 +422,9 @@ fig
 
 # %% [markdown]
 # The right-hand chart is your plan for the next class: the tallest bars are what to go over again.
-# A **slip** earns part of the points (half for a sign or a power of ten, a quarter for a missing
-# inertia torque, by default — section 5); a **wrong** answer earns none. An **unreadable** answer
-# earns none either, but its feedback says how to write it: you may want to let those students
-# hand in again.
-#
-# What a student sees, here one who slipped (`gk.exercises.check` gives the report as text):
+# A **slip** earns part of the points (by default half for a sign or a power of ten, a quarter for a
+# missing inertia torque); a **wrong** or **unreadable** answer earns none, but an unreadable one's
+# feedback says how to write it. What a student sees (`gk.exercises.check` gives the report as text):
 
 # %%
 shown = next(s for s in students if len({q["verdict"] for q in reports[s]["questions"]}) == 3)  # 3 verdicts
@@ -414,148 +442,7 @@ print(list(grades[0]))
 for g in grades[:4]:
     print(g["student"], g["score"], "|", g["F23 verdict"], "|", g["F14 verdict"], "|", g["T12 verdict"])
 
-# %% [markdown]
-# ## 5. Partial credit, revealing answers, and the secret
-#
-# ### How much a slip is worth
-#
-# The default shares of a question's points for each slip the grader can diagnose:
-
-# %%
-for slip, share in gk.exercises.SLIPS.items():
-    print(f"{slip:<20}{share:g}")
-
-# %% [markdown]
-# You change them in the exercise file, with a `[partial]` table. Say you want the sign to cost more,
-# a power of ten less, and no credit at all for a forgotten inertia torque (the point of the exercise!).
-# Keep the same `id`, and the students keep their data; then grade the same CSV again:
-
-# %%
-STRICT = toml_file.read_text(encoding="utf-8") + """
-[partial]
-sign = 0.25
-power_of_ten = 0.75
-no_inertia_torque = 0
-"""
-strict = gk.exercises.parse_exercise("reveal = true\n" + STRICT, id=NAME)
-strict_reports = {s: gk.exercises.grade(strict, s, handed_in[s], secret=SECRET) for s in handed_in}
-strict_scores = [r["score"] for r in strict_reports.values()]
-print(f"mean score, default shares: {np.mean(scores):.3f}; with this [partial]: {np.mean(strict_scores):.3f}")
-
-# %% [markdown]
-# ### Revealing the answers
-#
-# By default the report never shows the expected value, so that a student can try again. Put
-# `reveal = true` at the top of the file (as in `strict` above) once the deadline has passed, or
-# pass `reveal=True` to `gk.exercises.grade` (`--reveal` on the command line) for one run. Each
-# question of the report then has an `expected` entry:
-
-# %%
-for q in strict_reports[shown]["questions"]:
-    print(f"{q['id']}: {q['verdict']:<10} {q['score']:g}/{q['max']:g}   typed {q['answer']!r:<24} expected {q['expected']}")
-
-# %% [markdown]
-# ### Keeping the secret out of the students' notebook
-#
-# Whoever has the secret can compute every key, with one call to `gk.exercises.key`. So:
-#
-# * never write the secret in a notebook, a script or a repository you share. Put it in the
-#   environment of *your* terminal (`export GRAPHKIN_SECRET=...`, then start Jupyter from it). The
-#   command line reads `GRAPHKIN_SECRET` when there is no `--secret`, which also keeps it out of
-#   your shell history;
-# * the Python functions don't read it: pass it yourself, `secret=os.environ["GRAPHKIN_SECRET"]`;
-# * choose a new secret each term, or last year's keys will circulate;
-# * without a secret (`secret=""`, the default) anyone can compute any key. That's fine for
-#   practice, as in lesson 03, where students check their own answers in the notebook. For graded
-#   work use a secret, hand out the sheets, and grade yourself: the notebook check of lesson 03
-#   would give a student the data of the course *without* a secret, which aren't theirs.
-#
-# The command line with the secret in the environment gives the same key as `gk.exercises.key` with
-# `secret=SECRET` (compare s001's row in the table of section 2):
-
-# %%
-course_env = {**os.environ, "GRAPHKIN_SECRET": SECRET}   # in a course: set in your terminal, not here
-print(graphkin("exercise", "key", NAME, "--student", "s001", env=course_env))
-secret = os.environ.get("GRAPHKIN_SECRET", "")   # how your own grading notebook reads it
-
-# %% [markdown]
-# ## 6. What next
-#
-# * `docs/exercises.md` is the reference: every field of an exercise file, what
-#   students may type, how a slip is diagnosed, and the commands.
-# * Grading on a platform (otter-grader, nbgrader, PrairieLearn, Gradescope): lesson 07, and
-#   `docs/platforms/` for each platform, with what a student can and cannot learn or do there. The
-#   CSV in and out of section 4 (or `--json`) works with any other tool.
-# * Try an exercise of your own: copy a catalog file, change the ranges and the questions, and read
-#   it with `gk.exercises.load_exercise("my_exercise.toml")`. (`gk.exercises.load` also takes a path, but
-#   reads each file once per session: it won't see your edits until you restart the kernel.)
-
-# %% [markdown]
-# ## Checks (for the course maintainers)
-#
-# Every number and claim of the text, checked. They read the variables the sections above computed.
-
-# %% [markdown]
-# ### 1. What an exercise is
-
-# %%
-assert len(gk.exercises.names()) == 10 and NAME in gk.exercises.names()
-assert [len(v.values) for v in ex.vary] == [15, 13, 11] and math.prod(len(v.values) for v in ex.vary) == 2145
-assert ex.vary[0].values[:2] == ("126 deg", "128 deg") and ex.vary[0].values[-1] == "154 deg"
-assert all(q.tolerance == 0.01 and q.points == 1 for q in ex.questions)
-assert [(q.id, q.part, q.unit) for q in ex.questions] == [("F23", "vector", "N"), ("F14", "magnitude", "N"),
-                                                          ("T12", "value", "N*m")]
-assert gk.exercises.load(str(toml_file)).vary == ex.vary   # the file found is the catalog's
-assert [v.values for v in mine.vary] == [("130 deg", "135 deg", "140 deg", "145 deg", "150 deg"),
-                                         ("600 rpm", "900 rpm", "1200 rpm")]
-assert [(q.points, q.unit, q.tolerance) for q in mine.questions] == [(2, "N*m", 0.01), (1, "kN", 0.02)]
-assert my_key["questions"][1]["answer"]["text"].endswith(" kN")
-assert "tolerence" in typo and "did you mean 'tolerance'" in typo
-# The id is the seed: the file saved as cutter_speed.toml gives the same data.
-(folder / "cutter_speed.toml").write_text(MY_EXERCISE, encoding="utf-8")
-assert gk.exercises.make(str(folder / "cutter_speed.toml"), "s001", SECRET)["data"] == my_key["data"]
-
-# %% [markdown]
-# ### 2. A roster, the sheets and the key
-
-# %%
-assert len(students) == 30 and len(set(students)) == 30
-assert all(keys[s]["data"] == sheets[s]["data"] for s in students)
-assert all("answer" not in q for s in students for q in sheets[s]["questions"])
-assert gk.exercises.make(NAME, "s001", secret=SECRET) == sheets["s001"]
-assert gk.exercises.make(NAME, " s001 ", secret=SECRET)["data"] == sheets["s001"]["data"]
-assert gk.exercises.make(NAME, "S001", secret=SECRET)["data"] != sheets["s001"]["data"]
-assert changed == len(students)
-# A late student changes nobody's data; the roster's order doesn't matter.
-late = {s: gk.exercises.make(NAME, s, secret=SECRET) for s in reversed(students + ["s031"])}
-assert all(late[s] == sheets[s] for s in students)
-assert twins == [["s013", "s025"]] and len(by_data) == 29
-assert round(100 * (1 - math.prod(1 - k / 2145 for k in range(30)))) == 18
-
-# %% [markdown]
-# ### 3. The same from the command line
-
-# %%
-from graphkin.exercises.batch import PARALLEL_FROM
-
-
-def read_csv(name):
-    with (folder / name).open(encoding="utf-8") as f:
-        return list(csv.DictReader(f))
-
-
-cli_sheets, cli_keys = read_csv("sheets.csv"), read_csv("keys.csv")
-assert [r["student"] for r in cli_sheets] == [r["student"] for r in cli_keys] == students
-for r_sheet, r_key in zip(cli_sheets, cli_keys):
-    s = r_sheet["student"]
-    assert all(r_sheet[g["symbol"]] == r_key[g["symbol"]] == g["value"] for g in sheets[s]["data"])
-    assert all(r_key[q["id"]] == q["answer"]["text"] for q in keys[s]["questions"])
-assert PARALLEL_FROM <= 500   # "from a few hundred students on, ... all your cores"
-
-# %% [markdown]
-# ### 4. Collecting and grading the answers
-
-# %%
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
 ids = [q.id for q in ex.questions]
 # The CSV round trip kept every answer.
 assert [{"student": s, **handed_in[s]} for s in students] == rows
@@ -618,9 +505,62 @@ for row in rows:
             assert 0.04 < abs(float(row[q.id].split()[0]) * (1e3 if "kN" in row[q.id] else 1) / right - 1) < 0.16
 
 # %% [markdown]
-# ### 5. Partial credit, revealing answers, and the secret
+# ## 5. Partial credit, revealing answers, and the secret
+#
+# ### How much a slip is worth
+#
+# The default shares of a question's points for each slip the grader can diagnose:
 
 # %%
+for slip, share in gk.exercises.SLIPS.items():
+    print(f"{slip:<20}{share:g}")
+
+# %% [markdown]
+# You change them in the exercise file, with a `[partial]` table. Say you want the sign to cost more,
+# a power of ten less, and no credit at all for a forgotten inertia torque (the point of the exercise!).
+# Keep the same `id`, and the students keep their data; then grade the same CSV again:
+
+# %%
+STRICT = toml_file.read_text(encoding="utf-8") + """
+[partial]
+sign = 0.25
+power_of_ten = 0.75
+no_inertia_torque = 0
+"""
+strict = gk.exercises.parse_exercise("reveal = true\n" + STRICT, id=NAME)
+strict_reports = {s: gk.exercises.grade(strict, s, handed_in[s], secret=SECRET) for s in handed_in}
+strict_scores = [r["score"] for r in strict_reports.values()]
+print(f"mean score, default shares: {np.mean(scores):.3f}; with this [partial]: {np.mean(strict_scores):.3f}")
+
+# %% [markdown]
+# ### Revealing the answers
+#
+# By default the report never shows the expected value, so that a student can try again. Put
+# `reveal = true` at the top of the file (as in `strict` above) once the deadline has passed, or
+# pass `reveal=True` to `gk.exercises.grade` (`--reveal` on the command line) for one run. Each
+# question of the report then has an `expected` entry:
+
+# %%
+for q in strict_reports[shown]["questions"]:
+    print(f"{q['id']}: {q['verdict']:<10} {q['score']:g}/{q['max']:g}   typed {q['answer']!r:<24} expected {q['expected']}")
+
+# %% [markdown]
+# ### Keeping the secret out of the students' notebook
+#
+# Whoever has the secret can compute every key. So never write it in a notebook, a script or a shared
+# repository: put it in the environment of *your* terminal (`export GRAPHKIN_SECRET=...`, then start
+# Jupyter from it). The command line reads `GRAPHKIN_SECRET` when there is no `--secret`; the Python
+# functions don't: pass `secret=os.environ["GRAPHKIN_SECRET"]`. Choose a new secret each term. Without
+# a secret anyone can compute any key: fine for practice (the exercise boxes of lessons 01–05), not for
+# graded work. The command line with the secret in the environment gives the same key as
+# `gk.exercises.key` with `secret=SECRET`:
+
+# %%
+course_env = {**os.environ, "GRAPHKIN_SECRET": SECRET}   # in a course: set in your terminal, not here
+print(graphkin("exercise", "key", NAME, "--student", "s001", env=course_env))
+secret = os.environ.get("GRAPHKIN_SECRET", "")   # how your own grading notebook reads it
+
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
 assert gk.exercises.SLIPS["sign"] == gk.exercises.SLIPS["power_of_ten"] == 0.5
 assert gk.exercises.SLIPS["no_inertia_torque"] == 0.25
 assert strict.reveal and not ex.reveal and strict.id == ex.id
@@ -652,9 +592,16 @@ finally:
 assert secret == (before or "")
 
 # %% [markdown]
-# ### 6. What next
+# ## 6. What next
+#
+# * `docs/exercises.md` is the reference: every field of an exercise file, what students may type,
+#   how a slip is diagnosed, and the commands.
+# * Grading on a platform: lesson 07, and `docs/platforms/`. The CSV in and out of section 4 (or
+#   `--json`) works with any other tool.
+# * Read your own exercise with `gk.exercises.load_exercise("my_exercise.toml")`: it reads the file
+#   again after each edit (`gk.exercises.load` reads a path once per session).
 
-# %%
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
 draft = folder / "my_exercise.toml"
 draft.write_text(MY_EXERCISE, encoding="utf-8")
 assert gk.exercises.load(str(draft)).questions[1].tolerance == 0.02

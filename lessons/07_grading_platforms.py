@@ -321,15 +321,7 @@ graphkin("exercise", "export", NAME, "--to", "prairielearn", "-o", "pl", "--secr
 print("\n".join(sorted(str(p.relative_to(folder / "pl")) for p in (folder / "pl").rglob("*")
                        if p.is_file() and "serverFilesCourse" not in p.parts)))
 
-# %% [markdown]
-# ## Checks (for the course maintainers)
-#
-# The platform's scores are graphkin's: grading the same answers files with `gk.exercises.grade` gives
-# the same score for every student. Every answer we made was named as we made it (a sign slip as
-# `sign`, a blank as `missing`, ...). The copier scored 0. The secret is in no file of the export;
-# the autograder holds the keys. The forged notebook scored 0.
-
-# %%
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
 import tomllib  # noqa: E402  (here, because only the checks read the answers files back)
 
 for s in students:
