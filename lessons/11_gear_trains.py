@@ -91,9 +91,10 @@ gk.draw.draw_mechanism(at_30)
 
 # %% [markdown]
 # **Speeds.** Watch the train from the arm (Willis's method): there the arm stands still and the
-# train is an ordinary one. If the sun turns $+1$ relative to the arm, the annulus turns
-# $-T_S/T_E$ relative to it. Add the arm's own turn $y$ to everything; the annulus is held, so
-# $y - x\,T_S/T_E = 0$ with the sun at $y + x$:
+# train is an ordinary one. If the sun turns $x$ relative to the arm, the planet turns
+# $-x\,T_S/T_P$ and the annulus (teeth inside: the planet's sense) $-x\,T_S/T_E$ relative to it. Add
+# the arm's own turn $y$ to everything: the sun turns $y + x$, and the annulus is held, so
+# $y - x\,T_S/T_E = 0$:
 #
 # $$\frac{N_S}{N_C} = 1 + \frac{T_E}{T_S} = 1 + \frac{64}{16} = 5 .$$
 #

@@ -157,7 +157,7 @@ assert round(peak) == 1777 and round(peak / n) == 444
 # Type your id in place of `"your-id"` and run the cell.
 #
 # Work it **by hand first**: the inertia forces of the piston and of the counterweight, then the
-# equilibrium. Two hints: with no loads, $\vec F_{12} + \vec G_{14}$ is the sum of the inertia forces
+# equilibrium (with lesson 09's exact $a_P$: the grader allows 1 %). Two hints: with no loads, $\vec F_{12} + \vec G_{14}$ is the sum of the inertia forces
 # turned round; and the cylinder wall pushes only across the stroke ($G_{14}$ from lesson 09's
 # $F_N = F_P\tan\varphi$, with $F_P = -F_I$ here). Type the two components (`"-123 N"`) and press
 # **Check**.
