@@ -94,7 +94,7 @@ import graphkin as gk
 # %%
 engine = gk.load("engine_balancing")
 half = gk.sweep(engine, 360)
-gk.draw.draw_shaking(half)
+gk.draw.draw_shaking_components(half)
 
 # %% [markdown]
 # The formulas of section 3 give the same curves, except that they use the two-term series for the
