@@ -39,7 +39,8 @@ FORMATS = ("png", "svg", "pdf")
 
 _LATER = {
     **dict.fromkeys(("draw_cycle", "draw_energy", "draw_joint_force_index", "draw_polar_forces", "draw_shaking",
-                     "draw_shaking_components", "draw_torque_curve"), "cycle"),
+                     "draw_torque_curve"), "cycle"),
+    "draw_shaking_components": "shaking",
     **dict.fromkeys(("draw_step_grid", "draw_steps"), "steps"),
     **dict.fromkeys(("draw_motion_polygon", "draw_motion_polygons", "draw_motion_steps"), "motion"),
     **dict.fromkeys(("Animation", "animate"), "animation"),
