@@ -20,7 +20,8 @@ the mechanism          :class:`Mechanism`, :class:`Link`, :class:`Revolute`,
                        :class:`PointForce`, :class:`Torque`, :class:`Table`, :mod:`mass`
 kinematics             :func:`solve_kinematics`, :class:`Kinematics`, :func:`decompose`
 the analytical route   :func:`solve_forces`, :class:`ForceAnalysis`, :func:`assemble`,
-                       :func:`solve_matrix`, :func:`inertia`
+                       :func:`solve_matrix`, :func:`inertia`,
+                       :func:`effort_by_virtual_work`, :func:`load_powers`
 the graphical route    :func:`construct_forces`, :class:`Construction`,
                        :func:`construct_kinematics`, :class:`MotionConstruction`
                        (velocity and acceleration polygons), :func:`instant_centres`,
@@ -73,6 +74,8 @@ _LAZY = {
     "inertia": ("graphkin.analytical", "inertia"),
     "assemble": ("graphkin.analytical.matrix", "assemble"),
     "solve_matrix": ("graphkin.analytical.matrix", "solve_matrix"),
+    "effort_by_virtual_work": ("graphkin.analytical.virtual_work", "effort_by_virtual_work"),
+    "load_powers": ("graphkin.analytical.virtual_work", "load_powers"),
     # the graphical route
     "construct_forces": ("graphkin.graphical", "construct_forces"),
     "Construction": ("graphkin.graphical", "Construction"),
@@ -136,6 +139,7 @@ if TYPE_CHECKING:  # pragma: no cover - for type checkers and editors; at run ti
     from graphkin import catalog, draw, exercises, handout, report
     from graphkin.analytical import ForceAnalysis, inertia, solve_forces
     from graphkin.analytical.matrix import assemble, solve_matrix
+    from graphkin.analytical.virtual_work import effort_by_virtual_work, load_powers
     from graphkin.catalog import load
     from graphkin.cycle import Cycle, joint_force_index, size_flywheel, static_problem, sweep
     from graphkin.cycle.flywheel_file import load_flywheel

@@ -15,6 +15,7 @@ DEFAULT = "double_slider"
 FAMILIES = {
     "double_slider": "double slider (PRRP), driven by a slider",
     "engine_gas_force": "slider-crank engine with a gas force",
+    "engine_balancing": "single-cylinder engine, no gas load, a counterweight on the crank (balancing)",
     "engine_double_acting_khurmi": "double-acting steam engine: pressures on both faces and a piston rod, clockwise, "
                                    "with a flywheel's forward step",
     "engine_static_khurmi": "slider-crank, static: a gas force (with friction and a given inertia) on the piston",
