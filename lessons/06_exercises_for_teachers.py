@@ -56,7 +56,7 @@ folder = Path(workdir.name)
 # %% [markdown]
 # ## 1. What an exercise is
 #
-# The catalog has ten exercises, on the problems of lessons 01–05:
+# The catalog's exercises, each on a problem the lessons solve:
 
 # %%
 for name in gk.exercises.names():
@@ -151,7 +151,7 @@ except gk.ProblemFileError as err:
 print(typo)
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
-assert len(gk.exercises.names()) == 10 and NAME in gk.exercises.names()
+assert len(gk.exercises.names()) >= 10 and NAME in gk.exercises.names()
 assert [len(v.values) for v in ex.vary] == [15, 13, 11] and math.prod(len(v.values) for v in ex.vary) == 2145
 assert ex.vary[0].values[:2] == ("126 deg", "128 deg") and ex.vary[0].values[-1] == "154 deg"
 assert all(q.tolerance == 0.01 and q.points == 1 for q in ex.questions)
