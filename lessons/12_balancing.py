@@ -102,16 +102,6 @@ gk.draw.draw_shaking_components(half)
 # largest force, near $\theta = 90^\circ$ — the terms the series leaves out are largest for a rod as
 # short as this one ($n = 4$).
 
-# %% tags=["remove-input"]
-m_R, r, n, omega = 1.0, 0.050, 4.0, 1800 * 2 * np.pi / 60
-theta = half.q
-S = half.shaking_force()
-primary, secondary = m_R * omega**2 * r * np.cos(theta), m_R * omega**2 * r * np.cos(2 * theta) / n
-series_error = np.abs(S[:, 0] - (0.5 * primary + secondary))
-assert 14 < series_error.max() < 15.5 and 0.008 < series_error.max() / np.abs(S).max() < 0.012  # "15 N, about 1 %"
-assert 80 < np.degrees(theta[series_error.argmax()]) < 100 or 260 < np.degrees(theta[series_error.argmax()]) < 280
-assert np.allclose(S[:, 1], -0.5 * m_R * omega**2 * r * np.sin(theta), rtol=0, atol=1e-9 * np.abs(S).max())
-
 # %% [markdown]
 # Now the counterweight itself. The problem file read as a dictionary (as `tomllib` reads any TOML)
 # is easy to change: here the crank's mass, the counterweight, for $c = 0$, $\tfrac12$, $\tfrac23$ and
@@ -133,6 +123,14 @@ for c in (0, 1 / 2, 2 / 3, 1):
 # would take a small $c$.
 
 # %% tags=["remove-input"]
+m_R, r, n, omega = 1.0, 0.050, 4.0, 1800 * 2 * np.pi / 60
+theta = half.q
+S = half.shaking_force()
+primary, secondary = m_R * omega**2 * r * np.cos(theta), m_R * omega**2 * r * np.cos(2 * theta) / n
+series_error = np.abs(S[:, 0] - (0.5 * primary + secondary))
+assert 14 < series_error.max() < 15.5 and 0.008 < series_error.max() / np.abs(S).max() < 0.012  # "15 N, about 1 %"
+assert 80 < np.degrees(theta[series_error.argmax()]) < 100 or 260 < np.degrees(theta[series_error.argmax()]) < 280
+assert np.allclose(S[:, 1], -0.5 * m_R * omega**2 * r * np.sin(theta), rtol=0, atol=1e-9 * np.abs(S).max())
 peak = m_R * omega**2 * r
 for c in (0, 1 / 2, 2 / 3, 1):
     data["links"][0]["mass"] = f"{c * 1.0} kg"
