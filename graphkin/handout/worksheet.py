@@ -12,6 +12,7 @@ import math
 
 from graphkin.graphical.paper import POLYGON_ROOM, READING, force_text, length_text, sheet_scales
 from graphkin.handout import maths as M
+from graphkin.handout import motion as polygons
 from graphkin.handout import scaled
 from graphkin.handout.compact import polygon_equation, worked_steps
 from graphkin.handout.document import Doc, Subject
@@ -57,6 +58,7 @@ def worksheet(doc: Doc, s: Subject, entry: dict, c, i: int, *, find=True):
     doc.figure([scaled.mechanism(s, c, i, k, room=True, key="sheet-mechanism")],
                f"The mechanism at {s.where(i)}, with room around it to draw the lines of action and find where they "
                f"meet. Scale {length_text(k)}: measure a length and multiply it by {M.fmt(k)}.")
+    polygons.boxes(doc, s, i)
     links = list(s.mech.moving)
     k_fb, X_fb = scaled.free_body_scales(c, links)
     doc.figure([scaled.free_bodies(s, c, i, links, k_fb, X_fb, unknowns=False)],
