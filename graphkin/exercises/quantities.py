@@ -14,8 +14,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from graphkin.exercises.exercise import Question, dimension_of
-from graphkin.graphical.paper import reading_error
+from graphkin.exercises.exercise import MOTION_KINDS, Question, dimension_of
+from graphkin.graphical.paper import POLYGON_ROOM, READING, motion_scales, reading_error
 from graphkin.kinematics import DriverGroup, decompose
 from graphkin.model.names import parse_force_name
 from graphkin.notation import num, polar_text
@@ -157,6 +157,8 @@ def value_of(solved, q: Question):
             if f"I{q.link}" in step.points:
                 return complex(*step.points[f"I{q.link}"])
         return None
+    if kind in MOTION_KINDS:
+        return _motion_value(solved, q)
     cycle = solved.cycle
     if kind in ("peak_torque", "lowest_torque"):
         p = cycle.peaks().effort_max if kind == "peak_torque" else cycle.peaks().effort_min
@@ -177,6 +179,48 @@ def value_of(solved, q: Question):
     raise KeyError(kind)  # pragma: no cover - the exercise reader admits only the kinds above
 
 
+def _vector_part(z: complex, part: str):
+    return {"vector": z, "magnitude": abs(z), "direction": math.atan2(z.imag, z.real) if z else None,
+            "x": z.real, "y": z.imag}[part]
+
+
+def _misplaced_g(mc, link: int) -> complex | None:
+    """The acceleration a student reads who takes G's image at the wrong point of the link's image: at the link's
+    named point nearest to G that moves (its end, or the pin the polygon found; a frame pivot's image is the pole)."""
+    body = mc.mechanism.link(link)
+    G = np.asarray(body.G, float)
+    top = max([math.hypot(*a) for a in mc.acceleration.values()] + [0.0])
+    near = sorted((math.dist(p, G), name) for name, p in body.points.items()
+                  if (link, name) in mc.acceleration and math.hypot(*mc.acceleration[(link, name)]) > 1e-9 * top
+                  and math.dist(p, G) > 1e-9)
+    return complex(*mc.acceleration[(link, near[0][1])]) if near else None
+
+
+def _motion_value(solved, q: Question):
+    """ω, α of link ``q.link``, a_G of its centre of mass, or the Coriolis component of the sliding pair whose
+    guide it is, as read off the polygons (SI; vectors complex)."""
+    mc = solved.motion
+    if not mc.valid:
+        return None
+    k = q.link
+    if q.kind == "omega":
+        return float(mc.omega[k])
+    if q.kind == "alpha":
+        return float(mc.alpha[k])
+    if q.kind == "a_G":
+        z = complex(*mc.a_G[k]) if k in mc.a_G else None
+        if getattr(solved, "slip", None) == "image_misplaced":
+            z = _misplaced_g(mc, k)
+        return None if z is None else _vector_part(z, q.part)
+    # The Coriolis component of a sliding pair of link k: "a^c_B3B2" (B of link 3 relative to link 2), its links
+    # the numbers in its name; the largest if several.
+    found = [complex(*v.vector) for v in mc.vectors("acceleration")
+             if v.name.startswith("a^c_") and k in map(int, re.findall(r"\d+", v.name[4:]))]
+    if not found:
+        return None
+    return _vector_part(max(found, key=abs), q.part)
+
+
 def _scale(solved, q: Question) -> float:
     """The size of the largest value of the question's kind in this variant, for the absolute floor."""
     kind = q.kind
@@ -186,6 +230,11 @@ def _scale(solved, q: Question) -> float:
         return max(p.value for p in solved.cycle.peaks().forces.values())
     if kind in ("flywheel_E", "flywheel_I", "jfi_peak"):
         return abs(value_of(solved, q) if q.part != "at" else 1.0)
+    if kind in MOTION_KINDS:
+        mc = solved.motion
+        table = {"omega": mc.omega.values(), "alpha": mc.alpha.values()}.get(kind)
+        return max([abs(x) for x in table] if table is not None else [math.hypot(*a) for a in mc.a_G.values()]
+                   + [0.0])
     c = solved.construction
     forces = [math.hypot(*F) for F in c.forces.values()] + [math.hypot(*v["F"]) for v in c.inertia.values()]
     span = _span(c)
@@ -208,12 +257,30 @@ def measured_as(q: Question) -> str | None:
 
 def measurable(solved, q: Question) -> float:
     """The smallest error a graphical answer can be read to at the worksheet's printed scales [SI] (0 where the
-    kind is not measured off a drawing): :func:`graphkin.graphical.paper.reading_error`."""
+    kind is not measured off a drawing): :func:`graphkin.graphical.paper.reading_error`; for a value read off the
+    velocity or acceleration polygon, :data:`~graphkin.graphical.paper.READING` at the worksheet's polygon scale
+    (over the link's length for ω and α, a relative vector over the length it turns about)."""
+    if q.kind in MOTION_KINDS:
+        return _motion_reading(solved, q) if q.route == "graphical" else 0.0
     what = measured_as(q)
     c = solved.construction
     if what is None or not c.valid:
         return 0.0
     return reading_error(c, what)
+
+
+def _motion_reading(solved, q: Question) -> float:
+    mc = solved.motion
+    if not mc.valid:
+        return 0.0
+    Xv, Xa = motion_scales(mc, POLYGON_ROOM)
+    if q.kind in ("a_G", "coriolis"):
+        return READING * Xa
+    pts = list(mc.mechanism.link(q.link).points.values())
+    arm = max([math.dist(p, r) for n, p in enumerate(pts) for r in pts[n + 1:]] or [0.0])
+    if not arm > 0:
+        return 0.0
+    return READING * (Xv if q.kind == "omega" else Xa) / arm
 
 
 def _span(c) -> float:
@@ -270,6 +337,23 @@ def _analytical_hint(solved, q: Question) -> str:
     return "the equilibrium equations ΣF = 0, ΣM = 0 of every link (the rows of [A]{x} = {b})"
 
 
+def _motion_hint(solved, q: Question) -> str:
+    """The step of the velocity or acceleration polygon that finds the value (its caption's numbers left out)."""
+    mc = solved.motion
+    polygon = "velocity" if q.kind == "omega" else "acceleration"
+    for n, step in enumerate(mc.steps, 1):
+        if step.polygon != polygon or q.link not in step.links:
+            continue
+        if q.kind == "a_G" and step.kind == "image":
+            return f"step {n} of the polygons: the acceleration image of link {q.link} and its point g{q.link}′"
+        if q.kind == "coriolis" and any(v.name.startswith("a^c_") for v in step.vectors):
+            return f"step {n} of the polygons: the Coriolis component 2ωv of the sliding pair, and its sense"
+        if q.kind in ("omega", "alpha") and step.kind in ("dyad", "gear", "driver"):
+            what = "relative velocity" if q.kind == "omega" else "tangential component"
+            return f"step {n} of the polygons: the {what} of link {q.link} over the length it turns about"
+    return f"the {polygon} polygon"
+
+
 def _hint(solved, q: Question) -> str:
     """The step of the question's route a student should revisit for ``q``: a step of the graphical
     construction on the graphical route, a step of the analytical solution on the analytical one."""
@@ -283,6 +367,8 @@ def _hint(solved, q: Question) -> str:
                 "I_s = E / (C_s ω_avg²)")
     if kind == "jfi_peak":
         return "the static joint forces (masses set to zero) divided by the external load (Norton §11.12)"
+    if kind in MOTION_KINDS:
+        return _motion_hint(solved, q)
     if q.route == "analytical" and kind != "concurrency":
         return _analytical_hint(solved, q)
     c = solved.construction
