@@ -23,7 +23,8 @@ from graphkin.units import to_si
 
 # SI unit of each dimension, as printed in keys.
 _SI = {"force": "N", "torque": "N*m", "length": "m", "angle": "rad", "energy": "J",
-       "moment_of_inertia": "kg*m^2", "dimensionless": ""}
+       "moment_of_inertia": "kg*m^2", "dimensionless": "", "angular_velocity": "rad/s",
+       "angular_acceleration": "rad/s^2", "acceleration": "m/s^2"}
 
 
 @dataclass(frozen=True)
