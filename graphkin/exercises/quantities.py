@@ -346,12 +346,13 @@ def _motion_hint(solved, q: Question) -> str:
         if step.polygon != polygon or q.link not in step.links:
             continue
         if q.kind == "a_G" and step.kind == "image":
-            return f"step {n} of the polygons: the acceleration image of link {q.link} and its point g{q.link}′"
+            return f"step {n} of the construction: the acceleration image of link {q.link} and its point g{q.link}′"
         if q.kind == "coriolis" and any(v.name.startswith("a^c_") for v in step.vectors):
-            return f"step {n} of the polygons: the Coriolis component 2ωv of the sliding pair, and its sense"
+            return f"step {n} of the construction: the Coriolis component 2ωv of the sliding pair, and its sense"
         if q.kind in ("omega", "alpha") and step.kind in ("dyad", "gear", "driver"):
             what = "relative velocity" if q.kind == "omega" else "tangential component"
-            return f"step {n} of the polygons: the {what} of link {q.link} over the length it turns about"
+            return (f"step {n} of the construction: the {what} of link {q.link} in the {polygon} polygon, over the "
+                    "length it turns about")
     return f"the {polygon} polygon"
 
 
