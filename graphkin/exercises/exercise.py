@@ -45,9 +45,7 @@ SLIPS: dict[str, float] = {
     "clockwise": 0.5,       # a vector's angle measured clockwise from +x
     "direction": 0.25,      # a vector's size right, its direction wrong
     "dimension": 0.0,       # a unit of another quantity (J for a torque, N for N·m)
-    "no_normal": 0.25,      # an acceleration polygon drawn without the normal components ω² r
-    "coriolis_reversed": 0.25,  # the Coriolis component 2ωv drawn in the reversed sense
-    "image_misplaced": 0.25,  # G's image taken at the wrong point of the link's image (e.g. at its end)
+    "no_normal": 0.25, "coriolis_reversed": 0.25, "image_misplaced": 0.25,  # polygons: no ω² r, 2ωv reversed, g′ amiss
 }
 
 # What a question may ask for (``find``), with the parts it allows; the first part is the default.
@@ -66,14 +64,11 @@ _PARTS = {
     "peak_force": ("magnitude", "at"),
     "flywheel_E": ("value",),
     "flywheel_I": ("value",),
-    "jfi_peak": ("value", "at"),
-    "omega": ("value",),
-    "alpha": ("value",),
-    "a_G": ("magnitude", "vector", "direction", "x", "y"),
-    "coriolis": ("magnitude", "vector", "direction", "x", "y"),
+    "jfi_peak": ("value", "at"), "omega": ("value",), "alpha": ("value",),
+    "a_G": ("magnitude", "vector", "direction", "x", "y"), "coriolis": ("magnitude", "vector", "direction", "x", "y"),
 }
-# Quantities read off the velocity and acceleration polygons (graphkin.graphical.construct_kinematics).
-MOTION_KINDS = {"omega", "alpha", "a_G", "coriolis"}
+# Quantities read off the velocity and acceleration polygons (graphkin.graphical.construct_kinematics), and their dimension.
+MOTION_KINDS = {"omega": "angular_velocity", "alpha": "angular_acceleration", "a_G": "acceleration", "coriolis": "acceleration"}
 # Quantities over the whole cycle (the exercise's problem is swept, not solved at one position).
 CYCLE_KINDS = {"peak_torque", "lowest_torque", "average_torque", "peak_force", "flywheel_E", "flywheel_I", "jfi_peak"}
 
@@ -320,8 +315,7 @@ def _kind_of(find: str, base_names: set[str], driver: str) -> tuple[str, int | N
         return "concurrency", int(m[1])
     m = re.fullmatch(r"(omega|ω|alpha|α|aG|a_G|coriolis)(\d+)", find)
     if m:
-        kind = {"ω": "omega", "α": "alpha", "aG": "a_G", "a_G": "a_G"}.get(m[1], m[1])
-        return kind, int(m[2])
+        return {"ω": "omega", "α": "alpha", "aG": "a_G"}.get(m[1], m[1]), int(m[2])
     m = re.fullmatch(r"peak_force\.(\w+)", find)
     if m and m[1] in base_names:
         return "peak_force", None
@@ -340,7 +334,7 @@ def _question(rd: _Reader, t: dict, where: str, names: set[str], driver: str, ro
         kind, link = _kind_of(find, names, driver)
     except KeyError:
         known = sorted(names) + [driver, "F<k>i", "T<k>i", "h<k>", "I<k>", "omega<k>", "alpha<k>", "aG<k>",
-                                 "coriolis<k> (the guide link k)"] + sorted(CYCLE_KINDS - {"peak_force"}) \
+                                 "coriolis<k>"] + sorted(CYCLE_KINDS - {"peak_force"}) \
             + ["peak_force.<F> (e.g. peak_force.F23)"]
         raise rd.fail(f"{where}.find", f"{find!r} names nothing this problem has (it has: {', '.join(known)})") from None
     if link is not None and link not in moving:
@@ -395,13 +389,7 @@ def dimension_of(kind: str, part: str) -> str:
         return "moment_of_inertia"
     if kind == "jfi_peak":
         return "dimensionless"
-    if kind == "omega":
-        return "angular_velocity"
-    if kind == "alpha":
-        return "angular_acceleration"
-    if kind in ("a_G", "coriolis"):
-        return "acceleration"
-    return "torque"
+    return MOTION_KINDS.get(kind, "torque")
 
 
 
