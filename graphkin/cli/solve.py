@@ -21,7 +21,8 @@ def add_parser(sub) -> None:
     s.add_argument("--steps", metavar="DIR", help="write the construction step by step, one PNG frame per step")
     s.add_argument("--motion-polygons", dest="polygons", action="store_true",
                    help="with -o/--figure, also write the velocity and acceleration polygons to scale "
-                        "(1 mm = X m/s, 1 mm = Y m/s²), as FILE_polygons; with --steps, their steps too")
+                        "(1 mm = X m/s, 1 mm = Y m/s²), as FILE_polygons; with --steps, their steps too; with "
+                        "--json, each polygon step in full (its caption, points, lines and values)")
 
 
 def run(args) -> int:
@@ -32,8 +33,9 @@ def run(args) -> int:
     from graphkin.files import json_text
 
     check_outputs(args.figure, args.steps)
-    if args.polygons and not (args.figure or args.steps):
-        raise GraphkinError("--motion-polygons draws beside the figure or the steps: give -o FILE or --steps DIR too")
+    if args.polygons and not (args.figure or args.steps or args.json):
+        raise GraphkinError("--motion-polygons draws beside the figure or the steps, or details the JSON: give "
+                            "-o FILE, --steps DIR or --json too")
     problem = catalog.load(args.problem)
     result = problem.solve(positions(problem, args.at) if args.at is not None else None)
     graphical = report.constructions(result)
@@ -41,7 +43,9 @@ def run(args) -> int:
     result = report.cross_check(result, graphical)
     if args.json:
         kinematic = report.kinematic_constructions(result.kinematics)
-        print(json_text(report.solution(problem, result, graphical, kinematic)))
+        # The polygons' step captions are most of the JSON (11 MB for the strip cutter's 180 positions, not 7):
+        # only --motion-polygons asks for them.
+        print(json_text(report.solution(problem, result, graphical, kinematic, kinematic_steps=args.polygons)))
     else:
         print(report.format_solution(problem, result, graphical))
     if args.figure or args.steps:

@@ -11,7 +11,18 @@ from matplotlib.patches import Polygon
 
 from graphkin.draw import style as _style
 from graphkin.draw.arrows import arrow
-from graphkin.draw.axes import Drawn, had_content, line, markers, new_axes, points_per_unit, set_limits, setup_axes
+from graphkin.draw.axes import (
+    PT_PER_MM,
+    Drawn,
+    finish,
+    had_content,
+    line,
+    markers,
+    new_axes,
+    points_per_unit,
+    set_limits,
+    setup_axes,
+)
 from graphkin.draw.labels import Labeler, arrow_label_candidates, point_label_candidates
 from graphkin.draw.scales import nice_round, scale_bar
 from graphkin.errors import GraphkinError
@@ -21,7 +32,8 @@ UNITS = {"velocity": "m/s", "acceleration": "m/s²"}
 
 
 def draw_motion_polygon(construction, polygon: str = "velocity", *, scale: float | None = None, ax=None,
-                        values: bool = True, title=None, upto: int | None = None, **style) -> Drawn:
+                        values: bool = True, title=None, upto: int | None = None, paper=None, bar=True,
+                        place=True, **style) -> Drawn:
     """Draw the velocity or acceleration polygon of a position to a stated scale.
 
     The pole is a ring; each vector a step draws is an arrow (known ones heavy with solid heads, those whose
@@ -45,6 +57,13 @@ def draw_motion_polygon(construction, polygon: str = "velocity", *, scale: float
     upto : int, optional
         Draw the polygon as it stands after step ``upto`` of ``construction.steps`` (the view stays that of
         the whole polygon, so that frames of successive steps line up).
+    paper : float, optional
+        Millimetres of paper per unit of the drawing (1 when it is printed at ``scale`` per mm;
+        :func:`graphkin.draw.paper.draw_motion_paper` sizes the figure).
+    bar : bool
+        Draw the scale bar (a printed figure draws one strip of bars for both polygons).
+    place : bool
+        Place the labels now; False leaves them to whoever lays the figure out (:func:`graphkin.draw.axes.finish`).
     **style
         Overrides of :class:`graphkin.draw.style.Style` fields.
 
@@ -82,7 +101,7 @@ def draw_motion_polygon(construction, polygon: str = "velocity", *, scale: float
     pts = list(every.values())
     span = float(np.max(np.ptp(np.asarray(pts), axis=0))) if len(pts) > 1 else 0.0
     span = span or 10.0
-    ppu = points_per_unit(ax, 1.5 * span)
+    ppu = paper * PT_PER_MM if paper else points_per_unit(ax, 1.5 * span)
     floor = 1e-9 * span
 
     for st in steps:
@@ -140,14 +159,20 @@ def draw_motion_polygon(construction, polygon: str = "velocity", *, scale: float
                           color=s.ink, size=s.small_size)
             drawn.add(t)
     lo = np.min(np.asarray(pts), axis=0)
-    value = nice_round(0.3 * span * scale)
-    bar_at = np.array([lo[0], lo[1] - 0.16 * span])
-    drawn += scale_bar(ax, bar_at, value / scale, value, s=s, unit_text=unit, tick=0.015 * span, labeler=lab,
-                       note=f"1 mm = {num(scale)} {unit}")
-    set_limits(ax, pts + [bar_at, bar_at + [value / scale, 0]], margin=0.2, existing=existing)
-    lab.place()
-    drawn += lab.leaders
-    return drawn
+    extent = list(pts)
+    if bar:
+        value = nice_round(0.3 * span * scale)
+        bar_at = np.array([lo[0], lo[1] - 0.16 * span])
+        drawn += scale_bar(ax, bar_at, value / scale, value, s=s, unit_text=unit, tick=0.015 * span, labeler=lab,
+                           note=f"1 mm = {num(scale)} {unit}")
+        extent += [bar_at, bar_at + [value / scale, 0]]
+    if paper:
+        # A margin of its own on paper: room for the labels around the polygon, whatever its size.
+        pad = 9.0 / paper
+        corners = np.asarray(extent, float)
+        extent += [corners.min(axis=0) - pad, corners.max(axis=0) + pad]
+    set_limits(ax, extent, margin=0.2 if not paper else 0.0, existing=existing)
+    return finish(ax, lab, drawn, place)
 
 
 def draw_motion_polygons(construction, *, velocity_scale: float | None = None,

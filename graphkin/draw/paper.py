@@ -20,11 +20,13 @@ from graphkin.draw.axes import PanelAxes, setup_axes
 from graphkin.draw.fbd import draw_free_body
 from graphkin.draw.labels import measuring_renderer
 from graphkin.draw.mechanism import draw_mechanism
+from graphkin.draw.motion import draw_motion_polygon
 from graphkin.draw.polygon import draw_force_polygon, step_title
 from graphkin.draw.scales import nice_round, scale_bar
 from graphkin.draw.steps import draw_step_geometry
 from graphkin.draw.text import sub
 from graphkin.graphical.paper import FIGURE_WIDTH, force_text, length_text
+from graphkin.notation import num
 
 GAP = 5.0
 """Room between two panels of a figure [mm]."""
@@ -110,11 +112,12 @@ def arrange(fig, panels, *, width: float = FIGURE_WIDTH, strip: float = 0.0, gap
 
 
 def scale_strip(fig, height: float, *, length_scale=None, force_scale=None, width: float = FIGURE_WIDTH,
-                **style) -> list:
+                velocity_scale=None, acceleration_scale=None, **style) -> list:
     """Scale bars along the foot of a figure: one per scale the figure is drawn at, each stating its scale.
 
-    A length bar reads ``0 — 100 mm  (scale 1:5)``, a force bar ``0 — 400 N  (1 mm = 20 N)``; each is as
-    long on paper as what it reads at its scale. Returns the artists.
+    A length bar reads ``0 — 100 mm  (scale 1:5)``, a force bar ``0 — 400 N  (1 mm = 20 N)``, a velocity bar
+    ``0 — 2 m/s  (1 mm = 0.05 m/s)`` (``velocity_scale`` [m/s per mm]; ``acceleration_scale`` [m/s² per mm]
+    likewise); each is as long on paper as what it reads at its scale. Returns the artists.
     """
     s = _style.resolve(**style)
     ax = fig.add_axes([0, 0.5 / height, 1, (STRIP - 1.0) / height], axes_class=PanelAxes)
@@ -125,15 +128,16 @@ def scale_strip(fig, height: float, *, length_scale=None, force_scale=None, widt
     out = []
     x = 4.0
     y = (STRIP - 1.0) / 2
-    for k, X in ((length_scale, None), (None, force_scale)):
+    for k, X, unit in ((length_scale, None, "mm"), (None, force_scale, "N"), (None, velocity_scale, "m/s"),
+                       (None, acceleration_scale, "m/s²")):
         if k is None and X is None:
             continue
         if k is not None:
             value = nice_round(30.0 * k)
-            length, unit, note = value / k, "mm", f"scale {length_text(k)}"
+            length, note = value / k, f"scale {length_text(k)}"
         else:
             value = nice_round(30.0 * X)
-            length, unit, note = value / X, "N", force_text(X)
+            length, note = value / X, force_text(X) if unit == "N" else f"1 mm = {num(X, 4)} {unit}"
         bar = scale_bar(ax, (x, y), length, value, s=s, unit_text=unit, tick=1.0, note=note)
         over = _right(bar[-1]) - (width - 1.0)
         if over > 0:
@@ -314,4 +318,48 @@ def plotted(draw, width: float, height: float) -> Figure:
     # a title or a legend laid out only when saving would be cut off.
     fig.draw_without_rendering()
     fig.set_layout_engine("none")
+    return fig
+
+
+def draw_motion_paper(construction, *, velocity_scale: float, acceleration_scale: float, upto=None, values=True,
+                      titles=None, width: float = FIGURE_WIDTH, **style) -> Figure:
+    """The velocity and acceleration polygons of one position side by side, printed at their stated scales.
+
+    Parameters
+    ----------
+    construction : graphkin.graphical.MotionConstruction
+        The polygons of one position (:func:`graphkin.graphical.construct_kinematics`).
+    velocity_scale, acceleration_scale : float
+        1 mm of the velocity polygon is ``velocity_scale`` m/s, of the acceleration polygon
+        ``acceleration_scale`` m/s².
+    upto : int, optional
+        Draw the polygons as they stand after step ``upto`` of ``construction.steps`` (a step of the
+        velocity polygon leaves the acceleration polygon out).
+    values : bool
+        Write each vector's size beside it.
+    titles : (str, str), optional
+        The two panels' titles (default: the polygon's name).
+    width : float
+        The figure's width [mm].
+
+    Returns
+    -------
+    Figure
+        Two panels (one before the acceleration polygon is begun) and a strip of scale bars.
+    """
+    fig = _new_figure(width)
+    panels = []
+    shown = ["velocity", "acceleration"]
+    if upto is not None and construction.steps[upto].polygon == "velocity":
+        shown = ["velocity"]
+    for n, polygon in enumerate(shown):
+        ax = fig.add_axes([0, 0, 0.2, 0.2], axes_class=PanelAxes)
+        title = titles[n] if titles is not None else f"{polygon.capitalize()} polygon"
+        draw_motion_polygon(construction, polygon, scale=velocity_scale if polygon == "velocity" else
+                            acceleration_scale, ax=ax, values=values, title=title, upto=upto, paper=1.0, bar=False,
+                            place=False, **style)
+        panels.append((ax, 1.0))
+    height = arrange(fig, panels, width=width, strip=STRIP)
+    scale_strip(fig, height, velocity_scale=velocity_scale,
+                acceleration_scale=acceleration_scale if "acceleration" in shown else None, width=width, **style)
     return fig

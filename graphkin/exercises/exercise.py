@@ -45,6 +45,7 @@ SLIPS: dict[str, float] = {
     "clockwise": 0.5,       # a vector's angle measured clockwise from +x
     "direction": 0.25,      # a vector's size right, its direction wrong
     "dimension": 0.0,       # a unit of another quantity (J for a torque, N for N·m)
+    "no_normal": 0.25, "coriolis_reversed": 0.25, "image_misplaced": 0.25,  # polygons: no ω² r, 2ωv reversed, g′ amiss
 }
 
 # What a question may ask for (``find``), with the parts it allows; the first part is the default.
@@ -63,8 +64,11 @@ _PARTS = {
     "peak_force": ("magnitude", "at"),
     "flywheel_E": ("value",),
     "flywheel_I": ("value",),
-    "jfi_peak": ("value", "at"),
+    "jfi_peak": ("value", "at"), "omega": ("value",), "alpha": ("value",),
+    "a_G": ("magnitude", "vector", "direction", "x", "y"), "coriolis": ("magnitude", "vector", "direction", "x", "y"),
 }
+# Quantities read off the velocity and acceleration polygons (graphkin.graphical.construct_kinematics), and their dimension.
+MOTION_KINDS = {"omega": "angular_velocity", "alpha": "angular_acceleration", "a_G": "acceleration", "coriolis": "acceleration"}
 # Quantities over the whole cycle (the exercise's problem is swept, not solved at one position).
 CYCLE_KINDS = {"peak_torque", "lowest_torque", "average_torque", "peak_force", "flywheel_E", "flywheel_I", "jfi_peak"}
 
@@ -73,7 +77,7 @@ _DEFAULT_UNIT = {
     "force": "N", "driver_force": "N", "inertia_force": "N", "peak_force": "N",
     "driver_torque": "N*m", "inertia_torque": "N*m", "peak_torque": "N*m", "lowest_torque": "N*m",
     "average_torque": "N*m", "h": "mm", "concurrency": "mm", "flywheel_E": "J", "flywheel_I": "kg*m^2",
-    "jfi_peak": "",
+    "jfi_peak": "", "omega": "rad/s", "alpha": "rad/s^2", "a_G": "m/s^2", "coriolis": "m/s^2",
 }
 
 _NUMBER_UNIT = re.compile(r"^\s*([+-]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][+-]?\d+)?)\s*(.*?)\s*$")
@@ -309,6 +313,9 @@ def _kind_of(find: str, base_names: set[str], driver: str) -> tuple[str, int | N
     m = re.fullmatch(r"I(\d+)", find)
     if m:
         return "concurrency", int(m[1])
+    m = re.fullmatch(r"(omega|ω|alpha|α|aG|a_G|coriolis)(\d+)", find)
+    if m:
+        return {"ω": "omega", "α": "alpha", "aG": "a_G"}.get(m[1], m[1]), int(m[2])
     m = re.fullmatch(r"peak_force\.(\w+)", find)
     if m and m[1] in base_names:
         return "peak_force", None
@@ -326,7 +333,8 @@ def _question(rd: _Reader, t: dict, where: str, names: set[str], driver: str, ro
     try:
         kind, link = _kind_of(find, names, driver)
     except KeyError:
-        known = sorted(names) + [driver, "F<k>i", "T<k>i", "h<k>", "I<k>"] + sorted(CYCLE_KINDS - {"peak_force"}) \
+        known = sorted(names) + [driver, "F<k>i", "T<k>i", "h<k>", "I<k>", "omega<k>", "alpha<k>", "aG<k>",
+                                 "coriolis<k>"] + sorted(CYCLE_KINDS - {"peak_force"}) \
             + ["peak_force.<F> (e.g. peak_force.F23)"]
         raise rd.fail(f"{where}.find", f"{find!r} names nothing this problem has (it has: {', '.join(known)})") from None
     if link is not None and link not in moving:
@@ -381,7 +389,7 @@ def dimension_of(kind: str, part: str) -> str:
         return "moment_of_inertia"
     if kind == "jfi_peak":
         return "dimensionless"
-    return "torque"
+    return MOTION_KINDS.get(kind, "torque")
 
 
 

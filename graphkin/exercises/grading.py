@@ -35,7 +35,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from graphkin.exercises.answers import Reading, Unreadable, read_answer
-from graphkin.exercises.exercise import CYCLE_KINDS, dimension_of
+from graphkin.exercises.exercise import CYCLE_KINDS, MOTION_KINDS, dimension_of
 from graphkin.exercises.notebooks import NotData
 from graphkin.exercises.quantities import Expected, _distance, _unit_text, unit_factor
 
@@ -46,7 +46,12 @@ VERDICTS = ("correct", "slip", "wrong", "unreadable", "missing", "refused")
 _TORQUE_KINDS = ("driver_torque", "inertia_torque", "peak_torque", "lowest_torque", "average_torque")
 
 #: Slips found by solving the variant again as the student did.
-RESOLVED_SLIPS = ("rpm_as_rad_s", "no_inertia_torque", "no_inertia_force")
+RESOLVED_SLIPS = ("rpm_as_rad_s", "no_inertia_torque", "no_inertia_force", "no_normal", "coriolis_reversed",
+                  "image_misplaced")
+
+#: The polygon slips, and the questions each can change (read off the acceleration polygon).
+_POLYGON_SLIPS = {"no_normal": ("alpha", "a_G"), "coriolis_reversed": ("alpha", "a_G", "coriolis"),
+                  "image_misplaced": ("a_G",)}
 
 #: How many of a sheet's answers one classmate's data must explain before the grader names them: one answer
 #: near one classmate's is as likely a slip of the student's own.
@@ -92,6 +97,14 @@ MESSAGES = {
     "direction": "The size is right but the direction is {degrees}° off. Revisit {hint}.",
     "other_data": ("This is the answer for another student's data, not yours: work with the values on your own "
                    "sheet."),
+    "no_normal": ("This is what the acceleration polygon gives without the normal components: each relative "
+                  "acceleration of two points of a link has a normal part ω² r, towards the point it turns about, "
+                  "drawn before the tangential one. Revisit {hint}."),
+    "coriolis_reversed": ("This is what the acceleration polygon gives with the Coriolis component reversed: 2ωv points "
+                          "along the sliding velocity turned 90° in the sense of the guide's ω. Revisit {hint}."),
+    "image_misplaced": ("This is the acceleration of another point of the link, not of G: place g′ on the link's "
+                        "acceleration image as G sits on the link (the same shape, turned and scaled). "
+                        "Revisit {hint}."),
     "tie": " It fits {others} about as well; it is graded as the one worth more.",
     "dimension": ("{unit} is a unit of {given}, but {name} is {wanted}, measured in {right} (e.g. \"{example}\")."),
     "need_vector": "Give both the size and the direction of {name}, e.g. \"{example}\" or as components \"(x, y) N\".",
@@ -115,7 +128,8 @@ SLIP_WORDS = {
     "no_inertia_torque": "the inertia torque left out", "no_inertia_force": "the inertia force left out",
     "wrong_side": "the offset on the wrong side of G", "swapped": "the components swapped",
     "angle_from_y": "the angle measured from +y", "clockwise": "the angle measured clockwise",
-    "other_data": "another student's data",
+    "other_data": "another student's data", "no_normal": "the normal components left out",
+    "coriolis_reversed": "the Coriolis component reversed", "image_misplaced": "G's image misplaced",
 }
 
 _DIMENSION_WORDS = {"force": "a force", "torque": "a torque", "length": "a length", "angle": "an angle",
@@ -258,8 +272,10 @@ def _transforms(exp: Expected):
     out = []
     if form == "vector":
         force = q.kind == "force"
-        out += [("sign", "sign_force" if force else "sign_value", lambda a: -a, lambda a: -a, {}),
-                ("swapped", "swapped", lambda a: complex(a.imag, a.real), lambda a: complex(a.imag, a.real), {}),
+        # A Coriolis component reversed is a slip of its own (its sense rule), re-solved: not a sign convention.
+        if q.kind != "coriolis":
+            out.append(("sign", "sign_force" if force else "sign_value", lambda a: -a, lambda a: -a, {}))
+        out += [("swapped", "swapped", lambda a: complex(a.imag, a.real), lambda a: complex(a.imag, a.real), {}),
                 ("angle_from_y", "angle_from_y", lambda a: a * 1j, lambda a: a * -1j, {}),
                 ("clockwise", "clockwise", lambda a: a.conjugate(), lambda a: a.conjugate(), {})]
     elif form == "scalar":
@@ -269,9 +285,10 @@ def _transforms(exp: Expected):
         out.append(("sign", "sign_magnitude", lambda a: -a, lambda a: -a, {}))
     elif form == "direction":
         if q.part == "direction":  # a crank angle where a peak occurs has no "opposite": only a force's direction
-            out += [("opposite", "opposite" if q.kind == "force" else "opposite_other", lambda a: a + math.pi,
-                     lambda a: a + math.pi, {}),
-                    ("swapped", "swapped", lambda a: math.pi / 2 - a, lambda a: math.pi / 2 - a, {}),
+            if q.kind != "coriolis":
+                out.append(("opposite", "opposite" if q.kind == "force" else "opposite_other", lambda a: a + math.pi,
+                            lambda a: a + math.pi, {}))
+            out += [("swapped", "swapped", lambda a: math.pi / 2 - a, lambda a: math.pi / 2 - a, {}),
                     ("angle_from_y", "angle_from_y", lambda a: a + math.pi / 2, lambda a: a - math.pi / 2, {}),
                     ("clockwise", "clockwise", lambda a: -a, lambda a: -a, {})]
         for factor, wrong, right in ((180 / math.pi, "radians", "degrees"), (math.pi / 180, "degrees", "radians")):
@@ -321,6 +338,10 @@ def _may(q, slip: str) -> bool:
     """Whether a re-solved slip can change this question's answer at all."""
     if slip == "rpm_as_rad_s":
         return True
+    if slip in _POLYGON_SLIPS:
+        return q.kind in _POLYGON_SLIPS[slip]
+    if q.kind in MOTION_KINDS:
+        return False  # the polygons do not read the inertia loads
     # Leaving out an inertia load makes the inertia questions themselves zero or undefined: a wrong answer
     # there is not that slip. Over the cycle they are not tried (a sweep per slip, for little diagnosis).
     return q.kind not in ("inertia_force", "inertia_torque", "h") and q.kind not in CYCLE_KINDS

@@ -32,7 +32,7 @@ from pathlib import Path
 from graphkin.errors import GraphkinError
 from graphkin.exercises.exercise import Exercise, Question, parse_exercise
 from graphkin.exercises.grading import RESOLVED_SLIPS, Classmates, _may, grade_variant
-from graphkin.exercises.quantities import Expected, measured_as, question_data, within
+from graphkin.exercises.quantities import Expected, question_data, within
 from graphkin.exercises.symbols import fill_symbols
 from graphkin.exercises.variants import check_student, make_variant, pretty
 
@@ -64,7 +64,7 @@ def student_entry(variant) -> dict:
             "anchor": _plain(e.anchor), "undefined": e.undefined,
             "slips": {slip: _plain(variant.slip_value(q, slip)) for slip in RESOLVED_SLIPS if _may(q, slip)},
             "words": variant.words(q),
-            "within": within(q, variant.construction if measured_as(q) else None),
+            "within": within(q, variant.solved),
         }
     return {"attempt": variant.attempt,
             "data": [{"symbol": g.symbol, "label": g.label, "value": g.value} for g in variant.data],

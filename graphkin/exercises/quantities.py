@@ -14,8 +14,16 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from graphkin.exercises.exercise import Question, dimension_of
-from graphkin.graphical.paper import READING, force_text, length_text, reading_error, sheet_scales
+from graphkin.exercises.exercise import MOTION_KINDS, Question, dimension_of
+from graphkin.graphical.paper import (
+    POLYGON_ROOM,
+    READING,
+    force_text,
+    length_text,
+    motion_scales,
+    reading_error,
+    sheet_scales,
+)
 from graphkin.kinematics import DriverGroup, decompose
 from graphkin.model.names import parse_force_name
 from graphkin.notation import num, polar_text
@@ -23,7 +31,8 @@ from graphkin.units import to_si
 
 # SI unit of each dimension, as printed in keys.
 _SI = {"force": "N", "torque": "N*m", "length": "m", "angle": "rad", "energy": "J",
-       "moment_of_inertia": "kg*m^2", "dimensionless": ""}
+       "moment_of_inertia": "kg*m^2", "dimensionless": "", "angular_velocity": "rad/s",
+       "angular_acceleration": "rad/s^2", "acceleration": "m/s^2"}
 
 
 @dataclass(frozen=True)
@@ -157,6 +166,8 @@ def value_of(solved, q: Question):
             if f"I{q.link}" in step.points:
                 return complex(*step.points[f"I{q.link}"])
         return None
+    if kind in MOTION_KINDS:
+        return _motion_value(solved, q)
     cycle = solved.cycle
     if kind in ("peak_torque", "lowest_torque"):
         p = cycle.peaks().effort_max if kind == "peak_torque" else cycle.peaks().effort_min
@@ -177,6 +188,48 @@ def value_of(solved, q: Question):
     raise KeyError(kind)  # pragma: no cover - the exercise reader admits only the kinds above
 
 
+def _vector_part(z: complex, part: str):
+    return {"vector": z, "magnitude": abs(z), "direction": math.atan2(z.imag, z.real) if z else None,
+            "x": z.real, "y": z.imag}[part]
+
+
+def _misplaced_g(mc, link: int) -> complex | None:
+    """The acceleration a student reads who takes G's image at the wrong point of the link's image: at the link's
+    named point nearest to G that moves (its end, or the pin the polygon found; a frame pivot's image is the pole)."""
+    body = mc.mechanism.link(link)
+    G = np.asarray(body.G, float)
+    top = max([math.hypot(*a) for a in mc.acceleration.values()] + [0.0])
+    near = sorted((math.dist(p, G), name) for name, p in body.points.items()
+                  if (link, name) in mc.acceleration and math.hypot(*mc.acceleration[(link, name)]) > 1e-9 * top
+                  and math.dist(p, G) > 1e-9)
+    return complex(*mc.acceleration[(link, near[0][1])]) if near else None
+
+
+def _motion_value(solved, q: Question):
+    """ω, α of link ``q.link``, a_G of its centre of mass, or the Coriolis component of the sliding pair whose
+    guide it is, as read off the polygons (SI; vectors complex)."""
+    mc = solved.motion
+    if not mc.valid:
+        return None
+    k = q.link
+    if q.kind == "omega":
+        return float(mc.omega[k])
+    if q.kind == "alpha":
+        return float(mc.alpha[k])
+    if q.kind == "a_G":
+        z = complex(*mc.a_G[k]) if k in mc.a_G else None
+        if getattr(solved, "slip", None) == "image_misplaced":
+            z = _misplaced_g(mc, k)
+        return None if z is None else _vector_part(z, q.part)
+    # The Coriolis component of a sliding pair of link k: "a^c_B3B2" (B of link 3 relative to link 2), its links
+    # the numbers in its name; the largest if several.
+    found = [complex(*v.vector) for v in mc.vectors("acceleration")
+             if v.name.startswith("a^c_") and k in map(int, re.findall(r"\d+", v.name[4:]))]
+    if not found:
+        return None
+    return _vector_part(max(found, key=abs), q.part)
+
+
 def _scale(solved, q: Question) -> float:
     """The size of the largest value of the question's kind in this variant, for the absolute floor."""
     kind = q.kind
@@ -186,6 +239,11 @@ def _scale(solved, q: Question) -> float:
         return max(p.value for p in solved.cycle.peaks().forces.values())
     if kind in ("flywheel_E", "flywheel_I", "jfi_peak"):
         return abs(value_of(solved, q) if q.part != "at" else 1.0)
+    if kind in MOTION_KINDS:
+        mc = solved.motion
+        table = {"omega": mc.omega.values(), "alpha": mc.alpha.values()}.get(kind)
+        return max([abs(x) for x in table] if table is not None else [math.hypot(*a) for a in mc.a_G.values()]
+                   + [0.0])
     c = solved.construction
     forces = [math.hypot(*F) for F in c.forces.values()] + [math.hypot(*v["F"]) for v in c.inertia.values()]
     span = _span(c)
@@ -208,7 +266,11 @@ def measured_as(q: Question) -> str | None:
 
 def measurable(solved, q: Question) -> float:
     """The smallest error a graphical answer can be read to at the worksheet's printed scales [SI] (0 where the
-    kind is not measured off a drawing): :func:`graphkin.graphical.paper.reading_error`."""
+    kind is not measured off a drawing): :func:`graphkin.graphical.paper.reading_error`; for a value read off the
+    velocity or acceleration polygon, :data:`~graphkin.graphical.paper.READING` at the worksheet's polygon scale
+    (over the link's length for ω and α, a relative vector over the length it turns about)."""
+    if q.kind in MOTION_KINDS:
+        return _motion_reading(solved, q) if q.route == "graphical" else 0.0
     what = measured_as(q)
     c = solved.construction
     if what is None or not c.valid:
@@ -216,19 +278,19 @@ def measurable(solved, q: Question) -> float:
     return reading_error(c, what)
 
 
-def within(q: Question, construction=None) -> str:
+def within(q: Question, solved=None) -> str:
     """A question's tolerance as every sheet, key, command and platform states it.
 
     ``"1 %"``; an angle's ``"1.7°"`` or a sweep's ``"the step of the sweep"``; a graphical answer measured off
-    the worksheet (``construction`` given and valid) also states what a ruler reads at its printed scale, the
-    larger of the two being what the grader allows (:func:`measurable`):
+    the worksheet or off a velocity or acceleration polygon (``solved`` given) also states what a ruler reads
+    at its printed scale, the larger of the two being what the grader allows (:func:`measurable`):
     ``"3 % or ±2.5 N (±0.5 mm at 1 mm = 5 N), the larger"``.
 
     Parameters
     ----------
     q : Question
-    construction : graphkin.graphical.Construction, optional
-        The student's construction (graphical questions only).
+    solved : graphkin.exercises.variants.Solved, optional
+        The student's solved draw (for graphical questions: the scales they are drawn at).
 
     Returns
     -------
@@ -237,8 +299,18 @@ def within(q: Question, construction=None) -> str:
     if _form(q) == "direction":
         return "the step of the sweep" if q.part == "at" else f"{math.degrees(math.atan(q.tolerance)):.2g}°"
     text = f"{100 * q.tolerance:g} %"
+    if solved is None:
+        return text
+    if q.kind in MOTION_KINDS:
+        error = _motion_reading(solved, q) if q.route == "graphical" else 0.0
+        if not error > 0:
+            return text
+        unit = {"omega": "rad/s", "alpha": "rad/s²"}.get(q.kind, "m/s²")
+        return (f"{text} or ±{num(error, 4, power=True)} {unit} (±{READING:g} mm on the polygon at its printed "
+                "scale), the larger")
     what = measured_as(q)
-    if what is None or construction is None or not construction.valid:
+    construction = solved.construction if what is not None else None
+    if construction is None or not construction.valid:
         return text
     error = reading_error(construction, what)
     if not error > 0:
@@ -250,6 +322,20 @@ def within(q: Question, construction=None) -> str:
     if what == "torque":
         return f"{text} or ±{num(error, 4, power=True)} N·m (a reading to ±{READING:g} mm on each drawing), the larger"
     return f"{text} or ±{num(error, 4, power=True)} N (±{READING:g} mm at {force_text(scales.polygon)}), the larger"
+
+
+def _motion_reading(solved, q: Question) -> float:
+    mc = solved.motion
+    if not mc.valid:
+        return 0.0
+    Xv, Xa = motion_scales(mc, POLYGON_ROOM)
+    if q.kind in ("a_G", "coriolis"):
+        return READING * Xa
+    pts = list(mc.mechanism.link(q.link).points.values())
+    arm = max([math.dist(p, r) for n, p in enumerate(pts) for r in pts[n + 1:]] or [0.0])
+    if not arm > 0:
+        return 0.0
+    return READING * (Xv if q.kind == "omega" else Xa) / arm
 
 
 def _span(c) -> float:
@@ -306,6 +392,24 @@ def _analytical_hint(solved, q: Question) -> str:
     return "the equilibrium equations ΣF = 0, ΣM = 0 of every link (the rows of [A]{x} = {b})"
 
 
+def _motion_hint(solved, q: Question) -> str:
+    """The step of the velocity or acceleration polygon that finds the value (its caption's numbers left out)."""
+    mc = solved.motion
+    polygon = "velocity" if q.kind == "omega" else "acceleration"
+    for n, step in enumerate(mc.steps, 1):
+        if step.polygon != polygon or q.link not in step.links:
+            continue
+        if q.kind == "a_G" and step.kind == "image":
+            return f"step {n} of the construction: the acceleration image of link {q.link} and its point g{q.link}′"
+        if q.kind == "coriolis" and any(v.name.startswith("a^c_") for v in step.vectors):
+            return f"step {n} of the construction: the Coriolis component 2ωv of the sliding pair, and its sense"
+        if q.kind in ("omega", "alpha") and step.kind in ("dyad", "gear", "driver"):
+            what = "relative velocity" if q.kind == "omega" else "tangential component"
+            return (f"step {n} of the construction: the {what} of link {q.link} in the {polygon} polygon, over the "
+                    "length it turns about")
+    return f"the {polygon} polygon"
+
+
 def _hint(solved, q: Question) -> str:
     """The step of the question's route a student should revisit for ``q``: a step of the graphical
     construction on the graphical route, a step of the analytical solution on the analytical one."""
@@ -319,6 +423,8 @@ def _hint(solved, q: Question) -> str:
                 "I_s = E / (C_s ω_avg²)")
     if kind == "jfi_peak":
         return "the static joint forces (masses set to zero) divided by the external load (Norton §11.12)"
+    if kind in MOTION_KINDS:
+        return _motion_hint(solved, q)
     if q.route == "analytical" and kind != "concurrency":
         return _analytical_hint(solved, q)
     c = solved.construction

@@ -27,18 +27,10 @@ from graphkin.cycle import sweep
 from graphkin.errors import GraphkinError
 from graphkin.exercises.exercise import CYCLE_KINDS, Exercise, Question, set_field
 from graphkin.exercises.grading import grade_variant
-from graphkin.exercises.quantities import (
-    _span,
-    expected,
-    measured_as,
-    message_words,
-    question_data,
-    undefined,
-    value_of,
-    within,
-)
+from graphkin.exercises.quantities import _span, expected, message_words, question_data, undefined, value_of, within
 from graphkin.exercises.symbols import fill_symbols
-from graphkin.graphical import construct_forces
+from graphkin.graphical import construct_forces, construct_kinematics
+from graphkin.graphical.polygons import SLIPS as POLYGON_SLIPS
 from graphkin.notation import input_text
 from graphkin.problem import build_problem
 from graphkin.units import to_si
@@ -106,12 +98,15 @@ class Given:
 class Solved:
     """A problem's results at the exercise's position or over its cycle, computed when first asked for."""
 
-    def __init__(self, problem, exercise: Exercise, Cs: float | None):
+    def __init__(self, problem, exercise: Exercise, Cs: float | None, slip: str | None = None):
         self.problem = problem
         self.exercise = exercise
         self.Cs = Cs
         self.answers: dict = {}
         """Each question's :class:`~graphkin.exercises.quantities.Expected`, by question id, once computed."""
+        # A slip in reading the polygons ("no_normal", "coriolis_reversed", "image_misplaced"): the motion
+        # quantities are those a student who made it reads off.
+        self.slip = slip
 
     @cached_property
     def result(self):
@@ -120,6 +115,12 @@ class Solved:
     @cached_property
     def construction(self):
         return construct_forces(self.result.kinematics, 0)
+
+    @cached_property
+    def motion(self):
+        """The velocity and acceleration polygons at the exercise's position (as the slip draws them)."""
+        slip = self.slip if self.slip in POLYGON_SLIPS else None
+        return construct_kinematics(self.result.kinematics, 0, slip=slip)
 
     @cached_property
     def cycle(self):
@@ -208,7 +209,7 @@ class Variant:
                 "data": [{"symbol": g.symbol, "label": g.label, "value": g.value, "shown": g.shown}
                          for g in self.data],
                 "questions": [{**question_data(q), "ask": _fill(q.ask, self.data),
-                               "within": within(q, self.construction if measured_as(q) else None)}
+                               "within": within(q, self.solved)}
                               for q in self.exercise.questions]}
 
     def key(self) -> dict:
@@ -425,6 +426,10 @@ def _altered(v: Variant, slip: str) -> Solved | None:
     if slip == "no_inertia_force":
         given = dict(p.given) | {(k, "a_G"): (0.0, 0.0) for k in moving}
         return Solved(replace(p, given=given), v.exercise, v.Cs)
+    if slip in ("no_normal", "coriolis_reversed", "image_misplaced"):
+        solved = Solved(p, v.exercise, v.Cs, slip)
+        solved.__dict__["result"] = v.solved.result  # the positions and input rates are the student's own
+        return solved
     if slip == "rpm_as_rad_s":
         speed = next((g.value for g in v.data if "driver.omega" in g.field), None) or \
             v.exercise.base.get("driver", {}).get("omega")

@@ -205,3 +205,33 @@ def reading_error(construction, what: str) -> float:
                 return scales.force_reading() * abs(step.values["d"]) + R * scales.length_reading()
         return 0.0
     raise ValueError(f"what must be 'force', 'length' or 'torque', got {what!r}")
+
+
+# -- velocity and acceleration polygons ----------------------------------------------------------------------------
+MOTION_CELL = (80.0, 62.0)
+"""Room for one of a position's velocity and acceleration polygons in a handout's figure [mm] (two side by side)."""
+
+
+def motion_size(construction, polygon: str) -> tuple[float, float]:
+    """Width and height of the ``"velocity"`` [m/s] or ``"acceleration"`` [m/s²] polygon of a
+    :class:`graphkin.graphical.MotionConstruction` (the extent of its image points, the pole among them)."""
+    pts = np.asarray(list(construction.images[polygon].values()) or [(0.0, 0.0)], float)
+    w, h = np.ptp(pts, axis=0)
+    return float(w), float(h)
+
+
+def motion_scales(construction, room=MOTION_CELL) -> tuple[float, float]:
+    """The round scales (1, 2, 5 × 10ⁿ per mm) at which the velocity and the acceleration polygon each fit ``room``.
+
+    Returns
+    -------
+    (float, float)
+        m/s per mm of the velocity polygon, m/s² per mm of the acceleration polygon.
+    """
+    return (force_scale(motion_size(construction, "velocity"), room),
+            force_scale(motion_size(construction, "acceleration"), room))
+
+
+def motion_text(X: float, polygon: str) -> str:
+    """A motion polygon's scale as a drawing states it: ``"1 mm = 0.2 m/s"`` or ``"1 mm = 20 m/s²"``."""
+    return f"1 mm = {num(X, 4)} {'m/s' if polygon == 'velocity' else 'm/s²'}"

@@ -53,16 +53,17 @@ class _Motion:
     polygon reaches the link.
     """
 
-    __slots__ = ("X", "v", "a", "w", "al")
+    __slots__ = ("X", "v", "a", "w", "al", "n")
 
-    def __init__(self, X, v, w, a=None, al=None):
+    def __init__(self, X, v, w, a=None, al=None, normal=True):
         self.X, self.v, self.w, self.a, self.al = X, v, w, a, al
+        self.n = 1.0 if normal else 0.0  # 0: the normal component left out (a student's slip, for a grader)
 
     def vel(self, P):
         return self.v + 1j * self.w * (P - self.X)
 
     def acc(self, P):
-        return self.a + (1j * self.al - self.w * self.w) * (P - self.X)
+        return self.a + (1j * self.al - self.n * self.w * self.w) * (P - self.X)
 
 
 def _sense(w: float) -> str:
@@ -157,8 +158,8 @@ def _fixed(mech) -> _Fixed:
 class _Polygons:
     """Builds both polygons of one position, group by group; the velocity pass first, then the acceleration."""
 
-    def __init__(self, kin: Kinematics, i: int):
-        self.kin, self.i = kin, i
+    def __init__(self, kin: Kinematics, i: int, slip: str | None = None):
+        self.kin, self.i, self.slip = kin, i, slip
         self.mech = mech = kin.mechanism
         self.frame = mech.frame
         self.fixed = _fixed(mech)
@@ -348,9 +349,11 @@ class _Polygons:
         self.step("velocity", "dyad", caption, (d.j, d.k), vectors, lines, {x.lower(): v_X}, values)
 
         on_j = d.type in ("RRR", "RRP", "PRP")
-        self.motion[d.j] = (_Motion(X, v_X, w[d.j]) if on_j else
-                            _Motion(self.pos(d.j, d.J1.point), self.motion[d.a].vel(self.pos(d.j, d.J1.point)), w[d.j]))
-        self.motion[d.k] = _Motion(X, v_X, w[d.k])
+        normal = self.slip != "no_normal"
+        self.motion[d.j] = (_Motion(X, v_X, w[d.j], normal=normal) if on_j else
+                            _Motion(self.pos(d.j, d.J1.point), self.motion[d.a].vel(self.pos(d.j, d.J1.point)), w[d.j],
+                                    normal=normal))
+        self.motion[d.k] = _Motion(X, v_X, w[d.k], normal=normal)
         self.image_velocity(d.j)
         self.image_velocity(d.k)
 
@@ -394,7 +397,7 @@ class _Polygons:
             if s.turn:
                 arm = X - s.P
                 Q0 = self.motion[s.base].acc(s.P)
-                normal = -w * w * arm
+                normal = -w * w * arm if self.slip != "no_normal" else 0j
                 direction = 1j * arm / abs(arm)
                 n_name, t_name = f"a^n_{x}{s.P_name}", f"a^t_{x}{s.P_name}"
                 phrases.append(f"a_{x} = a_{s.P_name} + {n_name} + {t_name}: {n_name} = ω{s.L}² {s.P_name}{x} = "
@@ -407,7 +410,7 @@ class _Polygons:
                 wm = self.motion[s.m].w
                 Q0 = self.motion[s.base].acc(X)
                 v_rel = v_X - self.motion[s.base].vel(X)
-                coriolis = 2j * wm * v_rel
+                coriolis = (2j if self.slip != "coriolis_reversed" else -2j) * wm * v_rel
                 direction = self.guide(s.joint)
                 c_name, r_name = f"a^c_{x}{k}", f"a^r_{x}{k}"
                 # The two links of a sliding pair turn together: the guide's ω is the one the books name.
@@ -474,7 +477,7 @@ class _Polygons:
         self.step("velocity", "gear", caption, (g.k,),
                   [(f"v_{c}", 0j, v_C, "size and direction"), (f"v_{p}", 0j, v_P, "size and direction"),
                    (f"v_{p}{c}", v_C, v_P, "found")], points={p.lower(): v_P}, values={f"omega{g.k}": w})
-        self.motion[g.k] = _Motion(Ck, v_C, w)
+        self.motion[g.k] = _Motion(Ck, v_C, w, normal=self.slip != "no_normal")
         self.image_velocity(g.k)
 
     def gear_acceleration(self, g: GearGroup):
@@ -484,7 +487,7 @@ class _Polygons:
         arm = P - Ck
         a_C = self.motion[g.b].acc(Ck)
         a_Pj = self.motion[g.j].acc(P)
-        normal = -m.w * m.w * arm
+        normal = -m.w * m.w * arm if self.slip != "no_normal" else 0j
         p = f"P{g.j}{g.k}"
         t_name = f"a^t_{p}{c}"
         lines = [(t_name, a_C + normal, 1j * arm / abs(arm)), (f"a_{p}{g.k}{g.j}", a_Pj, arm / abs(arm))]
@@ -520,7 +523,12 @@ class _Polygons:
                 self.dyad_acceleration(g)
 
 
-def construct_kinematics(kin: Kinematics, index: int = 0) -> MotionConstruction:
+SLIPS = ("no_normal", "coriolis_reversed")
+"""The slips a construction can be made with, as a student makes them (for a grader to name): the normal component
+of each relative acceleration left out, or the Coriolis component drawn in the reversed sense."""
+
+
+def construct_kinematics(kin: Kinematics, index: int = 0, *, slip: str | None = None) -> MotionConstruction:
     """The velocity and acceleration polygons of position ``index``, step by step, from the input motion.
 
     Parameters
@@ -530,6 +538,9 @@ def construct_kinematics(kin: Kinematics, index: int = 0) -> MotionConstruction:
         input's rates, and construct the rest.
     index : int
         Which of the kinematics' positions to construct.
+    slip : {None, "no_normal", "coriolis_reversed"}
+        Construct the acceleration polygon as a student who made this slip would (:data:`SLIPS`), for a grader
+        to recognise the answers it gives; None (the default) constructs it right.
 
     Returns
     -------
@@ -543,12 +554,14 @@ def construct_kinematics(kin: Kinematics, index: int = 0) -> MotionConstruction:
     if isinstance(index, (bool, np.bool_)) or not isinstance(index, (int, np.integer)) or not -kin.n <= index < kin.n:
         raise GraphkinError(f"construct_kinematics: index must be a whole number from 0 to {kin.n - 1} (one of the "
                             f"{kin.n} positions), got {index!r}")
+    if slip is not None and slip not in SLIPS:
+        raise GraphkinError(f"construct_kinematics: slip must be None or one of {', '.join(SLIPS)}, got {slip!r}")
     index = int(index) % kin.n
     mech = kin.mechanism
     q = float(kin.q[index])
     if not kin.valid[index]:
         return MotionConstruction(mech, index, q, valid=False, reason=kin.reason(index))
-    b = _Polygons(kin, index)
+    b = _Polygons(kin, index, slip)
     if kin.given:
         # Values a problem gives (measured off its drawing) are what the force route uses; the polygons are the
         # construction from the input motion, so say which of the two the reader is looking at.

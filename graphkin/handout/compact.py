@@ -14,6 +14,7 @@ import math
 import numpy as np
 
 from graphkin.handout import maths as M
+from graphkin.handout import motion as polygons
 from graphkin.handout import scaled
 from graphkin.handout.document import Doc, Subject
 from graphkin.handout.sections import loads
@@ -23,6 +24,7 @@ from graphkin.model import Revolute
 def solution(doc: Doc, s: Subject, entry: dict, c, i: int):
     """A position's compact solution (its heading is the caller's)."""
     motion(doc, s, entry)
+    polygons.key(doc, s, i)
     if not s.static:
         inertia(doc, s, entry)
     loads(doc, s, entry)

@@ -44,6 +44,7 @@ from __future__ import annotations
 from graphkin.errors import GraphkinError
 from graphkin.graphical.paper import FIGURE_WIDTH, length_scale, mechanism_size
 from graphkin.handout import compact, scaled
+from graphkin.handout import motion as polygons
 from graphkin.handout.document import Doc, Subject, subject
 from graphkin.handout.sections import (
     convention,
@@ -182,6 +183,7 @@ def _full(doc: Doc, s: Subject, worked):
             continue
         mechanism(doc, s, c, i)
         kinematics(doc, s, entry, i)
+        polygons.key(doc, s, i, steps=True)
         if not s.static:
             inertia(doc, s, entry, c, i)
         loads(doc, s, entry)

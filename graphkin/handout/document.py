@@ -16,7 +16,7 @@ from graphkin import catalog, exercises
 from graphkin.errors import GraphkinError
 from graphkin.exercises.exercise import CYCLE_KINDS, set_field
 from graphkin.exercises.variants import Variant
-from graphkin.graphical import construct_forces
+from graphkin.graphical import construct_forces, construct_kinematics
 from graphkin.handout import maths as M
 from graphkin.handout.figures import Picture
 from graphkin.notation import input_text, typeset
@@ -116,6 +116,14 @@ class Subject:
         key = f"construction-{i}"
         if key not in self.__dict__:
             self.__dict__[key] = construct_forces(self.result.kinematics, i) if self.result.valid[i] else None
+        return self.__dict__[key]
+
+    def motion(self, i: int):
+        """The velocity and acceleration polygons at position ``i`` (None where the linkage has no solution), built
+        once (:func:`graphkin.graphical.construct_kinematics`)."""
+        key = f"motion-{i}"
+        if key not in self.__dict__:
+            self.__dict__[key] = construct_kinematics(self.result.kinematics, i) if self.result.valid[i] else None
         return self.__dict__[key]
 
     def data(self) -> dict:

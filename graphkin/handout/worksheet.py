@@ -10,8 +10,10 @@ from __future__ import annotations
 
 import math
 
+from graphkin.exercises.exercise import MOTION_KINDS
 from graphkin.graphical.paper import POLYGON_ROOM, READING, force_text, length_text, sheet_scales
 from graphkin.handout import maths as M
+from graphkin.handout import motion as polygons
 from graphkin.handout import scaled
 from graphkin.handout.compact import polygon_equation, worked_steps
 from graphkin.handout.document import Doc, Subject
@@ -22,10 +24,18 @@ BOX = (POLYGON_ROOM[0] + 14.0, POLYGON_ROOM[1] + 16.0)
 All boxes are the same size: a box as large as its own polygon would tell the answer's size."""
 
 
+def motion_only(s: Subject) -> bool:
+    """Whether the sheet is an exercise on the velocity and acceleration polygons alone: the motion is then the
+    student's to find, not given, and there are no force polygons to draw."""
+    v = s.variant
+    return v is not None and bool(v.exercise.questions) and all(q.kind in MOTION_KINDS for q in v.exercise.questions)
+
+
 def givens(doc: Doc, s: Subject, entry: dict):
     """Everything the position gives: each link's motion and inertia loads, and the loads acting here."""
     doc.heading(2, "Given at this position")
-    if s.static:
+    if s.static or motion_only(s):
+        # The polygons' exercise asks for ω, α and a_G: only the positions are given.
         doc.table(["link", "θ [°]"], [[f"link {link}", M.n(M.fmt_fixed(math.degrees(d["theta"])))]
                                       for link, d in entry["links"].items()], "lr")
     else:
@@ -57,6 +67,11 @@ def worksheet(doc: Doc, s: Subject, entry: dict, c, i: int, *, find=True):
     doc.figure([scaled.mechanism(s, c, i, k, room=True, key="sheet-mechanism")],
                f"The mechanism at {s.where(i)}, with room around it to draw the lines of action and find where they "
                f"meet. Scale {length_text(k)}: measure a length and multiply it by {M.fmt(k)}.")
+    polygons.boxes(doc, s, i)
+    if motion_only(s):
+        if find:
+            answer_room(doc, s)
+        return
     links = list(s.mech.moving)
     k_fb, X_fb = scaled.free_body_scales(c, links)
     doc.figure([scaled.free_bodies(s, c, i, links, k_fb, X_fb, unknowns=False)],

@@ -54,16 +54,26 @@ def _difference(c: MotionConstruction, kin: Kinematics) -> dict:
     return out
 
 
-def _centres(ic: InstantCentres) -> dict:
+def _centres(ic: InstantCentres, steps: bool) -> dict:
     return {"centres": {f"I{a}{b}": list(p) for (a, b), p in ic.centres.items()},
             "at_infinity": {f"I{a}{b}": list(d) for (a, b), d in ic.at_infinity.items()},
-            "missing": [f"I{a}{b}" for a, b in ic.missing], "steps": list(ic.steps),
+            "missing": [f"I{a}{b}" for a, b in ic.missing], **({"steps": list(ic.steps)} if steps else {}),
             "omega": {str(l): w for l, w in ic.omega.items()},
             "velocity": {str(l): {name: list(v) for (link, name), v in ic.velocity.items() if link == l}
                          for l in ic.omega}}
 
 
-def graphical_kinematics_data(kin: Kinematics, c: MotionConstruction, ic: InstantCentres | None = None) -> dict:
+def _step(s, full: bool) -> dict:
+    if not full:
+        return {"polygon": s.polygon, "kind": s.kind, "links": list(s.links)}
+    return {"polygon": s.polygon, "kind": s.kind, "caption": s.caption, "links": list(s.links),
+            "points": {k: list(v) for k, v in s.points.items()},
+            "lines": [{"name": l.name, "point": list(l.point), "direction": list(l.direction)} for l in s.lines],
+            "values": {k: float(v) for k, v in s.values.items()}}
+
+
+def graphical_kinematics_data(kin: Kinematics, c: MotionConstruction, ic: InstantCentres | None = None, *,
+                              steps: bool = True) -> dict:
     """One position's polygons (and instant centres) as plain data; see ``docs/json.md``.
 
     Parameters
@@ -74,6 +84,11 @@ def graphical_kinematics_data(kin: Kinematics, c: MotionConstruction, ic: Instan
         The velocity and acceleration polygons at one position.
     ic : InstantCentres, optional
         The instant centres at the same position.
+    steps : bool
+        Each step in full: its caption, points, lines and values, and the instant centres' reasoning. False
+        keeps of each step only its polygon, kind and links (what a vector's ``"step"`` refers to): the
+        captions are most of the data (``graphkin solve --json`` leaves them out unless
+        ``--motion-polygons`` asks).
 
     Returns
     -------
@@ -95,12 +110,9 @@ def graphical_kinematics_data(kin: Kinematics, c: MotionConstruction, ic: Instan
         "G": {str(l): {"velocity": _xy(c.v_G[l]), "acceleration": _xy(c.a_G[l])} for l in mech.moving},
         "velocity_polygon": _polygon(c, "velocity"),
         "acceleration_polygon": _polygon(c, "acceleration"),
-        "steps": [{"polygon": s.polygon, "kind": s.kind, "caption": s.caption, "links": list(s.links),
-                   "points": {k: list(v) for k, v in s.points.items()},
-                   "lines": [{"name": l.name, "point": list(l.point), "direction": list(l.direction)} for l in s.lines],
-                   "values": {k: float(v) for k, v in s.values.items()}} for s in c.steps],
+        "steps": [_step(s, steps) for s in c.steps],
         "relative_difference": {k: (v if math.isfinite(v) else None) for k, v in _difference(c, kin).items()},
     }
     if ic is not None:
-        data["instant_centres"] = _centres(ic) if ic.valid else {"valid": False, "reason": ic.reason}
+        data["instant_centres"] = _centres(ic, steps) if ic.valid else {"valid": False, "reason": ic.reason}
     return data

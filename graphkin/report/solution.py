@@ -154,7 +154,8 @@ def _graphical(result: ForceAnalysis, c, i) -> dict:
             "subproblems": subproblems, "warnings": list(c.warnings)}
 
 
-def solution(problem, result: ForceAnalysis, graphical: list | None = None, kinematic: list | None = None) -> dict:
+def solution(problem, result: ForceAnalysis, graphical: list | None = None, kinematic: list | None = None, *,
+             kinematic_steps: bool = True) -> dict:
     """Everything the analysis found, as plain data in SI units.
 
     Parameters
@@ -172,6 +173,8 @@ def solution(problem, result: ForceAnalysis, graphical: list | None = None, kine
         The velocity and acceleration polygons and the instant centres per position
         (:func:`graphkin.report.polygons.kinematic_constructions`); included under
         ``"graphical_kinematics"``.
+    kinematic_steps : bool
+        The polygons' steps in full, captions included (:func:`graphkin.report.graphical_kinematics_data`).
 
     Returns
     -------
@@ -240,7 +243,7 @@ def solution(problem, result: ForceAnalysis, graphical: list | None = None, kine
         if graphical is not None:
             entry["graphical"] = _graphical(result, graphical[i], i)
         if kinematic is not None:
-            entry["graphical_kinematics"] = graphical_kinematics_data(kin, *kinematic[i])
+            entry["graphical_kinematics"] = graphical_kinematics_data(kin, *kinematic[i], steps=kinematic_steps)
         positions.append(entry)
     return {
         "problem": problem.name,

@@ -100,6 +100,8 @@ class Canvas:
         The free-body diagram's panel of each moving link (by number).
     ax_polygons : list of matplotlib.axes.Axes
         The force polygons' panels (``polygon_slots`` of them, the unused left empty).
+    ax_motion : list of matplotlib.axes.Axes
+        The velocity and the acceleration polygon's panels (empty when the layout leaves them out).
     panels : list of matplotlib.axes.Axes
         The panels drawn again at each position: all but the torque curve's.
     curve, marker : matplotlib.lines.Line2D
@@ -120,8 +122,9 @@ class Canvas:
         self.figure = Figure(dpi=dpi or CSS_DPI)
         StampCanvas(self.figure)  # each distinct label is rendered once, then pasted
         self.polygon_slots = 0
+        self.ax_motion = []
 
-    def layout(self, moving, polygons: int, page_width: float, pixel_ratio: float) -> float:
+    def layout(self, moving, polygons: int, page_width: float, pixel_ratio: float, motion: bool = False) -> float:
         """(Re)create the persistent axes: mechanism and torque curve, free bodies, polygon slots.
 
         Parameters
@@ -132,6 +135,8 @@ class Canvas:
             Force polygons to make room for.
         page_width, pixel_ratio : float
             The width the page gives the explorer [CSS px] and the screen's pixel ratio (see :func:`geometry`).
+        motion : bool
+            Add a row for the velocity and acceleration polygons (two panels of two cells each).
 
         Returns
         -------
@@ -146,7 +151,8 @@ class Canvas:
         fig.clear()
         fbd_rows = math.ceil(len(moving) / NCOLS)
         poly_rows = math.ceil(polygons / NCOLS)
-        nrows = 1 + fbd_rows + poly_rows
+        motion_rows = 1 if motion else 0
+        nrows = 1 + fbd_rows + poly_rows + motion_rows
         width, css_dpi, dpi = geometry(page_width, pixel_ratio, self.dpi)
         cell_h = CELL_ASPECT * width / NCOLS
         fig.set_size_inches(width, cell_h * nrows)
@@ -172,7 +178,10 @@ class Canvas:
             r, col = divmod(k, NCOLS)
             self.ax_polygons.append(fig.add_subplot(gs[1 + fbd_rows + r, col], axes_class=PanelAxes))
         self.polygon_slots = len(self.ax_polygons)
-        self.panels = [self.ax_mechanism, *self.ax_fbd.values(), *self.ax_polygons]
+        row = 1 + fbd_rows + poly_rows
+        self.ax_motion = [fig.add_subplot(gs[row, 0:2], axes_class=PanelAxes),
+                          fig.add_subplot(gs[row, 2:4], axes_class=PanelAxes)] if motion else []
+        self.panels = [self.ax_mechanism, *self.ax_fbd.values(), *self.ax_polygons, *self.ax_motion]
         for ax in self.panels:
             ax.set_axis_off()
         # The torque curve's axes keep their position: no per-draw title layout.
@@ -220,7 +229,8 @@ class Canvas:
         if finite.size:
             ax.set_ylim(*ylim)
 
-    def drawing(self, construction, polygons, marker: tuple[float, float], message: str = "", halo: bool = False):
+    def drawing(self, construction, polygons, marker: tuple[float, float], message: str = "", halo: bool = False,
+                motion=None):
         """Draw a position on the panels and render the figure, in steps (a generator: one panel, or the rendering,
         each); the PNG is then :meth:`encode`'s.
 
@@ -236,6 +246,9 @@ class Canvas:
             Why there is no solution here, said in the mechanism's panel instead ("" where there is one).
         halo : bool
             Keep the white outline behind labels.
+        motion : graphkin.graphical.MotionConstruction, optional
+            The velocity and acceleration polygons to draw in :attr:`ax_motion` (laid out with ``motion=True``);
+            one that is not valid says why instead.
         """
         from graphkin import draw
 
@@ -256,6 +269,15 @@ class Canvas:
             for step, ax in zip(polygons, self.ax_polygons):
                 draw.draw_force_polygon(step, scale=c.force_scale, ax=ax, driver_name=c.driver_name, values=False)
                 yield
+            if motion is not None and self.ax_motion:
+                if motion.valid:
+                    for polygon, ax in zip(("velocity", "acceleration"), self.ax_motion):
+                        draw.draw_motion_polygon(motion, polygon, ax=ax, values=False)
+                        yield
+                else:
+                    self.ax_motion[0].text(0.5, 0.5, f"No polygons here: {motion.reason}", ha="center", va="center",
+                                           wrap=True, fontsize=MIN_PT + 1, color="#D55E00",
+                                           transform=self.ax_motion[0].transAxes)
             self.marker.set_data([marker[0]], [marker[1]])
         for ax in self.panels:
             ax._autotitlepos = False

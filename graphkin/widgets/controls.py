@@ -163,6 +163,8 @@ class Controls:
     value : float
         The problem's own position [deg or mm], on the step.
     slider, box, speed, image, status, table : ipywidgets.DOMWidget
+    motion : ipywidgets.Checkbox
+        Show the velocity and acceleration polygons (off at first: drawing them costs each position more).
     screen : ScreenProbe
         Hidden: its ``screen`` is the screen's pixel ratio and the page's width, as the browser reports them.
     widget : ipywidgets.VBox
@@ -180,6 +182,7 @@ class Controls:
     table: object
     screen: object
     widget: object
+    motion: object = None
 
 
 def make_controls(problem, at_speed, n: int, limits=None) -> Controls:
@@ -247,12 +250,14 @@ def make_controls(problem, at_speed, n: int, limits=None) -> Controls:
     status = W.HTML(layout=W.Layout(flex="1 1 auto"))
     table = W.HTML()
     screen = screen_probe()(layout=W.Layout(display="none"))
+    motion = W.Checkbox(value=False, description="velocity and acceleration polygons", indent=False,
+                        layout=W.Layout(width="auto", flex="0 0 auto"))
     for widget, name in ((slider, "position"), (box, "position-box"), (speed, "speed"),
                          (status, "status"), (table, "table"), (image, "image"),
-                         (screen, "screen")):
+                         (screen, "screen"), (motion, "motion")):
         widget.add_class(f"graphkin-{name}")  # for the browser test and for the probe
     widget = W.VBox([W.HBox([slider, box], layout=W.Layout(width="100%", align_items="center")),
-                     W.HBox([speed, status], layout=W.Layout(width="100%", align_items="center")),
+                     W.HBox([speed, motion, status], layout=W.Layout(width="100%", align_items="center")),
                      table, image, screen])
     widget.add_class("graphkin-explorer")
-    return Controls(limits, step, value, slider, box, speed, image, status, table, screen, widget)
+    return Controls(limits, step, value, slider, box, speed, image, status, table, screen, widget, motion)

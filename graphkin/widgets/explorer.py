@@ -25,7 +25,7 @@ import numpy as np
 from graphkin.analytical import solve_forces
 from graphkin.cycle.sweep import Cycle, sweep
 from graphkin.errors import GraphkinError
-from graphkin.graphical import construct_forces
+from graphkin.graphical import construct_forces, construct_kinematics
 from graphkin.optional import require
 from graphkin.widgets.canvas import PAGE_WIDTH, Canvas, force_table
 from graphkin.widgets.controls import make_controls, snap
@@ -115,6 +115,11 @@ class Explorer(DrawingAhead):
         Everything, for display.
     construction : Construction
         The graphical solution drawn last.
+    motion : ipywidgets.Checkbox
+        Show the velocity and acceleration polygons (:func:`graphkin.graphical.construct_kinematics`) in a row
+        of their own; off at first.
+    motion_construction : MotionConstruction or None
+        The polygons drawn last (None while they are hidden).
     analytical : ForceAnalysis
         The matrix solution at the same position (one position).
     cycle : Cycle
@@ -172,6 +177,8 @@ class Explorer(DrawingAhead):
         self.slider, self.box, self.speed = controls.slider, controls.box, controls.speed
         self.image, self.status, self.table = controls.image, controls.status, controls.table
         self._screen, self.widget = controls.screen, controls.widget
+        self.motion = controls.motion
+        self.motion_construction = None
         self._canvas = Canvas(self._dpi)
         self._layout(self._polygons_needed())
         self._sweep()
@@ -179,6 +186,7 @@ class Explorer(DrawingAhead):
         self.box.observe(self._on_box, names="value")
         self.speed.observe(self._on_speed, names="value")
         self._screen.observe(self._on_screen, names="screen")
+        self.motion.observe(self._on_motion, names="value")
         self.update()
 
     # -- the thread ---------------------------------------------------------------
@@ -372,7 +380,8 @@ class Explorer(DrawingAhead):
     def _layout(self, polygons: int):
         """(Re)create the persistent axes: mechanism and torque curve, free bodies, polygon slots."""
         self._on_new_layout()  # the frames drawn for the old layout go
-        shown = self._canvas.layout(self.problem.mechanism.moving, polygons, self.page_width, self.pixel_ratio)
+        shown = self._canvas.layout(self.problem.mechanism.moving, polygons, self.page_width, self.pixel_ratio,
+                                    motion=bool(self.motion.value))
         self.image.layout.width = f"{round(shown)}px"
 
     # -- the torque curve ---------------------------------------------------------
@@ -400,6 +409,14 @@ class Explorer(DrawingAhead):
         self._canvas.draw_curve(x, y, self.limits, xlabel="θ (deg)" if self.crank else "s (mm)",
                                 ylabel=f"{name} ({unit})",
                                 title=f"Driving {'torque' if self.crank else 'force'} {name} at {speed}")
+
+    # -- the motion polygons -----------------------------------------------------------
+    @answers_the_browser("motion", "polygons toggle")
+    def _on_motion(self, change, by_browser: bool):
+        """Show or hide the velocity and acceleration polygons: a new layout (the frames drawn ahead go)."""
+        self._layout(self._canvas.polygon_slots)
+        self._draw_curve()
+        self.update()
 
     # -- the speed ------------------------------------------------------------------
     @answers_the_browser("speed", "speed")
@@ -433,11 +450,13 @@ class Explorer(DrawingAhead):
         Drawn ahead, the kernel reads its messages between two steps (see :meth:`_draw_ahead`).
         """
         q = self._si(value)
-        c = a = None
+        c = a = mc = None
         message = ""
         try:
             kin = self.problem.kinematics(at=[q])
             c = construct_forces(kin, 0)
+            # Only when shown: the polygons' construction is a key press's cost otherwise.
+            mc = construct_kinematics(kin, 0) if self.motion.value else None
 
             a = solve_forces(kin)
         except GraphkinError as exc:
@@ -456,7 +475,7 @@ class Explorer(DrawingAhead):
             status = f"<b>No solution at {here}</b>: {message}"
         else:
             effort = float(a.effort[0]) if a is not None else float(c.effort)
-            yield from self._canvas.drawing(c, polys, (value, effort), halo=self._halo)
+            yield from self._canvas.drawing(c, polys, (value, effort), halo=self._halo, motion=mc)
             name = c.driver_name
             unit = "N·m" if self.crank else "N"
             warn = "".join(f"<br>warning: {w}" for w in c.warnings)
@@ -464,11 +483,12 @@ class Explorer(DrawingAhead):
                       f"{float(c.effort):.5g} {unit} (graphical){warn}")
         where = f"θ = {here}" if self.crank else f"s = {here}"
         forces = force_table(c, a, where) if not message else ""
-        return self._keep(Frame(value, self._canvas.encode(), c, a, message, status, forces))
+        return self._keep(Frame(value, self._canvas.encode(), c, a, message, status, forces, mc))
 
     def _present(self, frame: Frame):
         """Show a drawn frame in the widgets."""
         self.construction, self.analytical, self.message = frame.construction, frame.analytical, frame.message
+        self.motion_construction = frame.motion
         self.status.value = frame.status
         self.table.value = frame.table
         self.image.value = frame.png

@@ -74,6 +74,8 @@ class Frame:
         Why there is no solution here ("" where there is one).
     status, table : str
         The HTML of the status line and of the force table.
+    motion : MotionConstruction or None
+        The velocity and acceleration polygons drawn (None when they are not shown).
     """
 
     value: float
@@ -83,6 +85,7 @@ class Frame:
     message: str
     status: str
     table: str
+    motion: object = None
 
 
 def _step(steps):

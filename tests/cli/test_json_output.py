@@ -81,3 +81,12 @@ def test_solve_json_carries_the_polygons_of_every_position(capsys, problem):
                 scale = max(abs(x) for p in entry["links"].values() for q in p["points"].values() for x in q["velocity"])
                 assert motion["velocity"] == pytest.approx(exact["velocity"], rel=0, abs=1e-9 * scale)
         assert not g["instant_centres"]["missing"]
+        assert all("caption" not in s for s in g["steps"])  # the captions only with --motion-polygons
+
+
+def test_solve_json_with_motion_polygons_carries_every_step_in_full(capsys):
+    data = _json_of(capsys, "solve", "shaper_six_bar", "--json", "--motion-polygons")
+    g = data["positions"][0]["graphical_kinematics"]
+    assert all(s["caption"] for s in g["steps"])
+    assert any("Coriolis" in s["caption"] or "a^c_" in s["caption"] for s in g["steps"])
+    assert g["instant_centres"]["steps"]

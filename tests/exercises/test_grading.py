@@ -30,6 +30,10 @@ def formats(e) -> list[str]:
     dim = dimension_of(q.kind, q.part)
     f = unit_factor(q.unit, dim)
     v = e.value
+    if e.form == "vector" and dim == "acceleration":  # a_G or a Coriolis component off the polygons
+        mag, ang = abs(v), math.degrees(math.atan2(v.imag, v.real))
+        return [f"{g(mag)} m/s^2 ∠ {g(ang)}°", f"{g(mag)} m/s² at {g(ang)} deg", f"({g(v.real)}, {g(v.imag)}) m/s^2",
+                f"({g(v.real * 1000)}, {g(v.imag * 1000)}) mm/s^2", f"{g(mag)} ∠ {g(ang)}"]
     if e.form == "vector":
         mag, ang = abs(v), math.degrees(math.atan2(v.imag, v.real))
         return [f"{g(mag)} N ∠ {g(ang)}°", f"{g(mag / 1000)} kN at {g(ang)} deg", f"{g(mag)} N @ {g(math.radians(ang))} rad",
@@ -52,6 +56,10 @@ def formats(e) -> list[str]:
         return [f"{g(v * 1000)} mm", f"{g(v)} m", f"{g(v * 100)} cm", bare]
     if dim == "energy":
         return [f"{g(v)} J", f"{g(v / 1000)} kJ", f"{g(v)} N*m", bare]
+    if dim == "angular_velocity":
+        return [f"{g(v)} rad/s", f"{g(v * 30 / math.pi)} rpm", bare]
+    if dim in ("angular_acceleration", "acceleration"):
+        return [f"{g(v)} {'rad/s^2' if dim.startswith('angular') else 'm/s^2'}", bare]
     if dim == "moment_of_inertia":
         return [f"{g(v)} kg*m^2", f"{g(v)} kg·m²", f"{g(v * 1e6)} kg*mm^2", bare]
     return [bare]

@@ -416,7 +416,7 @@ def test_the_heading_check_catches_a_heading_left_at_the_foot_of_a_page(built, m
 
 
 # -- the page image ----------------------------------------------------------------------------------------
-BASELINE_PAGE = 2           # the third page: the dyad's loop equations, tables, a_G, the inertia loads
+BASELINE_PAGE = 4           # the fifth page: the inertia resultant, the matrix [A]{x} = {b}, the joint forces
 DPI = 100
 DOWNSAMPLE = 8              # average over 8×8 pixel blocks (2 mm): antialiasing and hinting wash out
 TOLERANCE = 1.5             # mean absolute difference allowed, grey levels out of 255
@@ -579,9 +579,14 @@ def test_blank_gives_the_free_bodies_to_scale_and_room_for_every_polygon():
 
     doc = handout.build("double_slider", version="blank")
     c = handout.document.subject("double_slider").construction(0)
-    spaces = [b for b in doc["blocks"] if b["kind"] == "space"]
+    every = [b for b in doc["blocks"] if b["kind"] == "space"]
+    spaces = [b for b in every if b["label"].startswith("Polygon")]
     assert len(spaces) == sum(1 for s in c.steps if s.polygon) > 0
-    assert all(b["height"] >= 80 for b in spaces)
+    # and a box each for the velocity and the acceleration polygon, at their stated scales (issue 26)
+    motion = [b["label"] for b in every if not b["label"].startswith("Polygon")]
+    assert [m.split(",")[0] for m in motion] == ["Velocity polygon", "Acceleration polygon"]
+    assert "1 mm = " in motion[0] and "m/s:" in motion[0] and "m/s²" in motion[1]
+    assert all(b["height"] >= 80 for b in every)
     figures = [b for b in doc["blocks"] if b["kind"] == "figure"]
     keys = {p.key for b in figures for p in b["pictures"]}
     assert {"sheet-mechanism-0", "free-bodies-0-given"} <= keys

@@ -740,3 +740,21 @@ def test_the_torque_curve_follows_the_frame_number_and_keeps_a_flat_curve_inside
     lo, hi = gears.ax_torque.get_ylim()
     span = hi - lo
     assert lo + 0.05 * span < T.min() and T.max() < hi - 0.05 * span
+
+
+def test_the_motion_polygons_toggle_on_and_off():
+    ex = explore(catalog.load("strip_cutter"), n=SMALL, ahead=0)
+    assert not ex.motion.value and ex.motion_construction is None and ex._canvas.ax_motion == []
+    ex.motion.value = True
+    ex.slider.value = 140
+    mc = ex.motion_construction
+    assert mc is not None and mc.valid and len(ex._canvas.ax_motion) == 2
+    # The polygons' ω of every link are the analytical solver's at the slider's position.
+    kin = ex.problem.kinematics(at=[math.radians(140)])
+    for link, w in mc.omega.items():
+        assert w == pytest.approx(float(kin.omega[link][0]) if link in kin.omega else 0.0, rel=1e-9, abs=1e-12)
+    drawn = {a.get_gid() for ax in ex._canvas.ax_motion for a in ax.patches if a.get_gid()}
+    assert any(g.startswith("velocity:") for g in drawn) and any(g.startswith("acceleration:") for g in drawn)
+    ex.motion.value = False
+    ex.slider.value = 141
+    assert ex.motion_construction is None and ex._canvas.ax_motion == []
