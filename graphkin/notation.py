@@ -328,8 +328,8 @@ def typeset(text: str) -> str:
     return typeset_minus(_POWER.sub(power, text))
 
 
-_SYMBOL = re.compile(r"(?<![\w.])(?:([A-Za-zα-ω])_([A-Za-z0-9]+)|([FRT])(c?[0-9]{1,2}i?)|(G)([0-9]{2})|([mαωθ])([0-9]{1,2}))"
-                     r"([′″‴]?)(?![A-Za-z0-9_′″‴])")
+_SYMBOL = re.compile(r"(?<![\w.])(?:([A-Za-zα-ω])\^([a-z])_([A-Za-z0-9]+)|([A-Za-zα-ω])_([A-Za-z0-9]+)"
+                     r"|([FRT])(c?[0-9]{1,2}i?)|(G)([0-9]{2})|([mαωθ])([0-9]{1,2}))([′″‴]?)(?![A-Za-z0-9_′″‴])")
 
 
 def symbols_in(text: str) -> list:
@@ -337,7 +337,8 @@ def symbols_in(text: str) -> list:
 
     ``F_ij``, ``a_G3``, ``I_G``, ``ω_avg`` (an underscore marks the subscript) and the names the exercises
     write without one (``F23``, ``R3i``, ``Fc3``, ``T12``, the guide's ``G12``, ``m3``, ``α3``, ``θ12``) are
-    symbols, with a sub-problem's mark (``F43′``); everything else stays text. A point's name (``G3``, ``A0``)
+    symbols, with a sub-problem's mark (``F43′``) or a component's superscript (``a^n_BA``, the normal component:
+    ``("a", "BA", "n")``); everything else stays text. A point's name (``G3``, ``A0``)
     stays upright, as drawings print points.
 
     Returns
@@ -352,11 +353,15 @@ def symbols_in(text: str) -> list:
     [('F', 'ij', ''), ' is of link i on j; ', ('F', '3i', ''), ' = −', ('m', '3', ''), ' ', ('a', 'G3', ''), ' at G3']
     >>> symbols_in("F43′ and Fc3")
     [('F', '43', '′'), ' and ', ('F', 'c3', '')]
+    >>> symbols_in("a^n_BA = ω3² AB")
+    [('a', 'BA', 'n'), ' = ', ('ω', '3', ''), '² AB']
     """
     out: list = []
     last = 0
     for m in _SYMBOL.finditer(text):
-        out += [text[last:m.start()], next((m[k], m[k + 1], m[9]) for k in (1, 3, 5, 7) if m[k])]
+        # A component's superscript (a^n_BA: normal, tangential, Coriolis) is set where a mark would be.
+        symbol = (m[1], m[3], m[2]) if m[1] else next((m[k], m[k + 1], m[12]) for k in (4, 6, 8, 10) if m[k])
+        out += [text[last:m.start()], symbol]
         last = m.end()
     out.append(text[last:])
     return [part for part in out if part != ""]

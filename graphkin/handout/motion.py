@@ -62,7 +62,8 @@ def key(doc: Doc, s: Subject, i: int, *, steps: bool = False):
         return
     doc.text("The construction, step by step (each step in the order drawn; measure each found vector at the "
              "figure's scale):")
-    doc.items([f"{st.polygon.capitalize()} polygon, {st.kind}: {st.caption}" for st in mc.steps], ordered=True)
+    doc.items([M.prose(f"{st.polygon.capitalize()} polygon, {st.kind}: {st.caption}") for st in mc.steps],
+              ordered=True)
 
 
 def boxes(doc: Doc, s: Subject, i: int):
