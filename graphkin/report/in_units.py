@@ -99,3 +99,58 @@ def solution_in(data: dict, u: UnitSystem) -> dict:
     units["positions[].prismatic.*.guide_direction"] = "(unit vector)"
     units["positions[].graphical.relative_difference"] = "(ratio)"
     return {**data, "units": units, "given": given, "positions": positions}
+
+
+def _motion(prefix: str) -> dict[str, str]:
+    return {f"{prefix}.{key}.{axis}": kind for key, kind in
+            (("position", "length"), ("velocity", "velocity"), ("acceleration", "acceleration")) for axis in "xy"}
+
+
+def cycle_in(data: dict, u: UnitSystem) -> dict:
+    """The data of :func:`graphkin.report.cycle_data` in the units of ``u``, with ``"units"`` per field.
+
+    The joint-force index (a ratio, or its own ``units``) and the flywheel disk's density stay as they are.
+    """
+    crank = data["driver"]["kind"] == "crank"
+    q = "angle" if crank else "length"
+    effort = "torque" if crank else "force"
+    table = {
+        "input.values": q, "input.rate": "angular_velocity" if crank else "velocity",
+        "links.*.theta": "angle", "links.*.omega": "angular_velocity", "links.*.alpha": "angular_acceleration",
+        **_motion("links.*.G"), **_motion("links.*.points.*"),
+        "effort.values": effort, "effort.average": effort, "effort.max.value": effort, "effort.min.value": effort,
+        "effort.max.at": q, "effort.min.at": q,
+        "power.values": "power", "power.average": "power", "power.max.value": "power", "power.min.value": "power",
+        "power.max.at": q, "power.min.at": q,
+        "forces.*.x": "force", "forces.*.y": "force", "forces.*.magnitude": "force", "forces.*.angle": "angle",
+        "forces.*.peak.value": "force", "forces.*.peak.at": q,
+        "shaking.force.x": "force", "shaking.force.y": "force", "shaking.moment": "torque",
+        "transmission_angle": "angle",
+        "flywheel.omega_avg": "angular_velocity", "flywheel.T_avg": "torque", "flywheel.E": "energy",
+        "flywheel.I_s": "moment_of_inertia", "flywheel.crossings": q, "flywheel.areas": "energy",
+        "flywheel.accumulated": "energy", "flywheel.energy": "energy",
+        "flywheel.disk.thickness": "length", "flywheel.disk.radius": "length", "flywheel.disk.mass": "mass",
+        "flywheel.disk.I": "moment_of_inertia",
+        "joint_force_index.peak.at": q, "joint_force_index.immovable[].at": q,
+    }
+    units: dict[str, str] = {"system": u.name}
+    out = _apply(data, table, "", u, units)
+    units["flywheel.disk.density"] = "kg/m^3"
+    units["joint_force_index.values"] = "(the index's own units)"
+    return {**out, "units": units}
+
+
+def flywheel_in(data: dict, u: UnitSystem) -> dict:
+    """The data of :func:`graphkin.report.flywheel_data` in the units of ``u``, with ``"units"`` per field."""
+    table = {
+        "omega_avg": "angular_velocity", "I_s": "moment_of_inertia", "E": "energy", "T_avg": "torque",
+        "period": "angle", "driving.values": "torque", "resisting.values": "torque", "theta": "angle",
+        "table[].from": "angle", "table[].to": "angle", "table[].area": "energy", "table[].accumulated": "energy",
+        "speed.max.value": "angular_velocity", "speed.min.value": "angular_velocity",
+        "speed.max.at": "angle", "speed.min.at": "angle",
+        "acceleration.values": "angular_acceleration", "acceleration.max.value": "angular_acceleration",
+        "acceleration.min.value": "angular_acceleration", "acceleration.max.at": "angle", "acceleration.min.at": "angle",
+    }
+    units: dict[str, str] = {"system": u.name}
+    out = _apply(data, table, "", u, units)
+    return {**out, "units": units}
