@@ -236,3 +236,25 @@ def spring_loads(rd, t, where, frame):
     k = rd.si(rd.need(t, "rate", where), "stiffness", f"{where}.rate")
     L0 = rd.si(rd.need(t, "free_length", where), "length", f"{where}.free_length", "length0")
     return spring(links, points, k, L0, frame=frame, name=str(t.get("name", "")))
+
+
+def unknown(rd, value, mech):
+    """``[unknown]``: the link whose effort the book asks for, instead of the driver's (:mod:`.unknown`)."""
+    from graphkin.problem.unknown import Unknown
+
+    t = rd.table(value, "unknown", {"link", "name"})
+    link = rd.whole(rd.need(t, "link", "unknown"), "unknown.link")
+    moving = [lk.number for lk in mech.links if lk.number != mech.frame]
+    if link not in moving:
+        raise rd.fail("unknown.link", f"names no moving link (the moving links are {', '.join(map(str, moving))}), "
+                      f"got {link!r}")
+    if link == mech.driver.link:
+        raise rd.fail("unknown.link", f"link {link} is the driver, whose effort graphkin finds anyway: leave out "
+                      "[unknown], or name the link whose torque (or slider force) the book asks for")
+    name = t.get("name", "")
+    if not isinstance(name, str):
+        raise rd.fail("unknown.name", f"must be a string such as \"T4\", got {name!r}")
+    if any(ld.name == name for ld in mech.loads if name) or (not name and any(
+            ld.name == Unknown(link).label(mech) for ld in mech.loads)):
+        raise rd.fail("unknown.name", "a load already has this name: give the unknown another (name = \"T4\")")
+    return Unknown(link, name)

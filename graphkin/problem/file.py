@@ -26,7 +26,7 @@ from graphkin.problem.reader import FieldReader
 from graphkin.problem.tables import load_table
 
 _TOP = {"title", "source", "cite", "notes", "analysis", "gravity", "frame", "links", "joints", "driver", "loads", "assembly",
-        "given", "forward"}
+        "given", "forward", "unknown"}
 _ANALYSES = ("dynamic", "static")
 _LINK = {"number", "name", "points", "mass", "G", "I_G", "k", "shape"}
 _JOINT = {
@@ -237,8 +237,11 @@ def build_problem(data: Mapping[str, Any], *, file: str = "<problem>", base: str
                           + (f"this mechanism's branches are chosen at {', '.join(branches)}" if branches else
                              "this mechanism has no dyad, so no branch to choose: leave out [assembly]"))
     forward = books.forward(rd, data["forward"], kind, q_dot) if "forward" in data else None
+    unknown = books.unknown(rd, data["unknown"], mech) if "unknown" in data else None
+    if unknown is not None and forward is not None:
+        raise rd.fail("unknown", "a forward step needs the driver's effort; with [unknown] the driver carries none")
     return Problem(file, mech, q, q_dot, q_ddot, given, str(data.get("title", "")), str(data.get("source", "")),
-                   str(data.get("notes", "")), analysis, str(data.get("cite", "")), forward)
+                   str(data.get("notes", "")), analysis, str(data.get("cite", "")), forward, unknown)
 
 
 def _list(rd, data, key):

@@ -85,6 +85,9 @@ def solution_in(data: dict, u: UnitSystem) -> dict:
     table["input.rate2"] = "angular_acceleration" if crank else "acceleration"
     table["driver.value"] = "torque" if crank else "force"
     table["graphical.driver.value"] = "torque" if crank else "force"
+    kinds = {p["unknown"]["kind"] for p in data["positions"] if "unknown" in p}
+    if kinds:
+        table["unknown.value"] = kinds.pop()
     positions = [_apply(p, table, "positions[].", u, units) for p in data["positions"]]
     given = []
     for g in data["given"]:

@@ -131,7 +131,11 @@ def _graphical(result: ForceAnalysis, c, i) -> dict:
         # Relative to the force itself, or to the largest force when it is ~0.
         diff[result.name_of(a, b)] = float(np.hypot(*(G - A)) / max(float(np.hypot(*A)), 1e-12 * scale))
     eff = result.effort[i]
-    diff[result.driver_name] = float(abs(c.effort - eff) / max(abs(eff), 1e-300)) if eff else float(abs(c.effort))
+    # An effort that is rounding beside the forces (T12 where [unknown] balances the driver) is compared as 0.
+    # It is measured against the largest force (times the mechanism's size for a torque), as cross_check does.
+    arm = scale * (_size(result.mechanism) if result.mechanism.driver.crank else 1.0)
+    den = abs(eff) if abs(eff) > RESIDUE * arm else arm
+    diff[result.driver_name] = float(abs(c.effort - eff) / max(den, 1e-300)) if eff else float(abs(c.effort))
     subproblems = []
     for sp in c.subproblems:
         sub_forces = {}
@@ -193,6 +197,8 @@ def solution(problem, result: ForceAnalysis, graphical: list | None = None, kine
     applied = _applied(kin)
     forward = getattr(problem, "forward", None)
     step = forward.step(result.effort, kin.q_dot) if forward is not None else None
+    unknown = getattr(problem, "unknown", None)
+    found = unknown.values(result) if unknown is not None else None
     for i in range(result.n):
         entry = {
             "index": i,
@@ -238,6 +244,10 @@ def solution(problem, result: ForceAnalysis, graphical: list | None = None, kine
                          loads=[_load_entry(ld, value[i]) for ld, value in applied])
             if step is not None:
                 entry["forward"] = {"I": forward.I, **{key: float(v[i]) for key, v in step.items()}}
+            if found is not None:
+                kind = "torque" if unknown.guide(mech) is None else "force"
+                entry["unknown"] = {"name": unknown.label(mech), "link": unknown.link, "kind": kind,
+                                    "value": float(found[i])}
         if graphical is not None:
             entry["graphical"] = _graphical(result, graphical[i], i)
         if kinematic is not None:
@@ -458,6 +468,12 @@ def format_solution(problem, result: ForceAnalysis, graphical: list | None = Non
         else:
             out.append(f"  Driver: {d['name']} = {_polar(d['vector'], 'force', u)} "
                        f"({u.show(d['value'], 'force'):.4f} {N} along the guide)")
+        if "unknown" in entry:
+            k = entry["unknown"]
+            x = u.show(k["value"], k["kind"])
+            sense = ("CCW" if x > 0 else "CW" if x < 0 else "") if k["kind"] == "torque" else "along the guide"
+            out.append(f"  Unknown effort (asked): {k['name']} = {x:.4f} {u.symbol(k['kind'])} {sense} on link "
+                       f"{k['link']}, balancing the given loads ({d['name']} is then 0)")
         if "graphical" in entry:
             out.extend(_format_graphical(entry, crank, u))
     return "\n".join(out)
