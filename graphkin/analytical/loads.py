@@ -9,7 +9,7 @@ import numpy as np
 from graphkin.geometry import as_xy
 from graphkin.geometry import zcross as cross
 from graphkin.kinematics import Kinematics
-from graphkin.model import PointForce, SpringForce, Torque
+from graphkin.model import PointForce, SpringForce, StrokeForce, Torque
 
 
 @dataclass(frozen=True)
@@ -92,6 +92,8 @@ def applied(kin: Kinematics, load) -> np.ndarray:
     q = kin.q
     if isinstance(load, SpringForce):
         f = spring_force(kin, load)
+    elif isinstance(load, StrokeForce):
+        f = stroke_force(kin, load)
     elif isinstance(load, PointForce):
         f = complex(*load.force)
         if load.table is not None:
@@ -109,6 +111,21 @@ def applied(kin: Kinematics, load) -> np.ndarray:
     if load.active is not None:
         f = np.where(load.active.mask(q), f, 0.0 * f)
     return f + 0.0
+
+
+def stroke_force(kin: Kinematics, load: StrokeForce) -> np.ndarray:
+    """A force against the piston's displacement from a dead centre, out or back with its motion (complex, N)."""
+    away = complex(*load.away)
+    z = kin.z(load.link, load.point)
+    # Rounding puts a dead centre a hair outside the stroke: the tables are defined on [0, length] only.
+    s = np.clip(((z - complex(*load.dead_centre)) * away.conjugate()).real, 0.0, load.length)
+    v = (kin.z_velocity(load.link, load.point) * away.conjugate()).real
+    # At a dead centre the piston stands still but for rounding (1e-17 m/s): the stroke that begins there is taken.
+    still = np.abs(v) <= 1e-9 * np.abs(kin.q_dot) * load.length
+    out = np.where(still, s < load.length / 2, v > 0)
+    size = load.out(s) if load.back is None else np.where(out, load.out(s), load.back(s))
+    u = complex(*load.force)
+    return size * (u / abs(u))
 
 
 def spring_force(kin: Kinematics, load: SpringForce) -> np.ndarray:

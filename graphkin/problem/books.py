@@ -8,13 +8,15 @@ boundary, with every error naming the file and the field (``docs/problem-files.m
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
 
+from graphkin.errors import ModelError
 from graphkin.kinematics import solve_kinematics
-from graphkin.model import PointForce, Prismatic, Revolute, Table, Torque, spring
+from graphkin.model import PointForce, Prismatic, Revolute, StrokeForce, Table, Torque, spring
 from graphkin.problem.problem import Forward
-from graphkin.problem.tables import load_table
+from graphkin.problem.tables import load_table, parse_table
 
 DEAD_CENTRES = {"inner dead centre": 1, "top dead centre": 1, "outer dead centre": -1, "bottom dead centre": -1}
 """A crank angle's origin in an engine: the crank pointing at the piston (+1) or away from it (−1)."""
@@ -77,28 +79,43 @@ def crank_from_dead_centre(rd, d, mech, q):
     which = d["from"]
     if which not in DEAD_CENTRES:
         raise rd.fail("driver.from", f"must be one of {', '.join(repr(k) for k in DEAD_CENTRES)}, got {which!r}")
+    theta, _ = dead_centre(rd, mech, which, "driver.from")
+    return theta + SENSES_OF_ROTATION[d.get("sense", "counter-clockwise")] * q
+
+
+def piston(rd, mech, field):
+    """The slider-crank of a crank driver: (the piston's pin joint, its guide, the rod's link, r, l, β)."""
     crank = mech.driver.link
     frame = mech.frame
     why = ("a dead centre belongs to a slider-crank: the crank pinned to the frame and to a connecting rod, whose "
            "other pin is the point of a piston that runs on a guide of the frame")
+    if not mech.driver.crank:
+        raise rd.fail(field, why + " (here the driver is a slider)")
     pivot = mech.joint_between(frame, crank)
     rods = [j for j in mech.joints_of(crank) if isinstance(j, Revolute) and frame not in j.links]
     if not isinstance(pivot, Revolute) or len(rods) != 1:
-        raise rd.fail("driver.from", why)
+        raise rd.fail(field, why)
     C = rods[0]
     rod = C.links[0] if C.links[1] == crank else C.links[1]
     pins = [j for j in mech.joints_of(rod) if isinstance(j, Revolute) and crank not in j.links]
     guides = [(j, g) for j in pins for g in mech.joints_of(j.links[0] if j.links[1] == rod else j.links[1])
               if isinstance(g, Prismatic) and g.guide == frame and g.point == j.point]
     if len(guides) != 1:
-        raise rd.fail("driver.from", why)
+        raise rd.fail(field, why)
     P, guide = guides[0]
+    return pivot, C, rod, P, guide
+
+
+def dead_centre(rd, mech, which, field):
+    """A dead centre of the crank driver's slider-crank: (the crank angle θ there, the piston pin's position)."""
+    crank = mech.driver.link
+    pivot, C, rod, P, guide = piston(rd, mech, field)
     link_c, link_r = mech.link(crank), mech.link(rod)
     (ox, oy), (cx, cy) = link_c.point(pivot.point), link_c.point(C.point)
     r, beta = math.hypot(cx - ox, cy - oy), math.atan2(cy - oy, cx - ox)
     (ax, ay), (bx, by) = link_r.point(C.point), link_r.point(P.point)
     l = math.hypot(bx - ax, by - ay)
-    f = mech.link(frame)
+    f = mech.link(mech.frame)
     O, T = complex(*f.point(pivot.point)), complex(*f.point(guide.through))
     u = complex(math.cos(guide.direction), math.sin(guide.direction))
     reach = r + l if DEAD_CENTRES[which] > 0 else l - r
@@ -106,19 +123,16 @@ def crank_from_dead_centre(rd, d, mech, q):
     b = (w * u.conjugate()).real
     disc = b * b - abs(w) ** 2 + reach * reach
     if disc < 0:
-        raise rd.fail("driver.from", f"the piston's guide passes {abs((w * u.conjugate()).imag) * 1e3:.6g} mm from the "
+        raise rd.fail(field, f"the piston's guide passes {abs((w * u.conjugate()).imag) * 1e3:.6g} mm from the "
                       f"crank's pivot, farther than {reach * 1e3:.6g} mm: this slider-crank has no {which}")
-    candidates = []
     for t in (-b + math.sqrt(disc), -b - math.sqrt(disc)):
         X = T + t * u
         # The crank points at the piston at the inner dead centre, away from it at the outer one.
         theta = float(np.angle((X - O) * DEAD_CENTRES[which])) - beta
         kin = solve_kinematics(mech, [theta], 0.0, 0.0)
         if kin.valid[0] and abs(complex(*kin.position(rod, P.point)[0]) - X) <= 1e-6 * (r + l):
-            candidates.append(theta)
-    if not candidates:
-        raise rd.fail("driver.from", f"the mechanism cannot be assembled at its {which}")
-    return candidates[0] + SENSES_OF_ROTATION[d.get("sense", "counter-clockwise")] * q
+            return theta, X
+    raise rd.fail(field, f"the mechanism cannot be assembled at its {which}")
 
 
 def placed(rd, d, mech):
@@ -192,9 +206,107 @@ def pressure(rd, t, where, link, driver_kind, active, name):
         p = rd.si(t["pressure"], "pressure", f"{where}.pressure")
         F = push * (p * area[side] - back * area[other])
         return PointForce(link, point, (F * u[0], F * u[1]), active, name)
+    if stroke_table(t):
+        return _stroke_pressure(rd, t, where, link, point, u, active, name, push, area[side], back * area[other],
+                                driver_kind)
+    if "from" in t:
+        raise rd.fail(f"{where}.from", "names the dead centre a stroke table measures the piston's displacement from; "
+                      "this table is against the " + ("crank angle" if driver_kind == "crank" else "slider's position"))
     table = load_table(rd, t, where, "pressure", driver_kind)
     value = push * (table.value * area[side] - back * area[other])
     return PointForce(link, point, u, active, name, Table(table.q, value, table.periodic, table.source))
+
+
+def stroke_table(t) -> bool:
+    """Whether a pressure's table (inline) is against the piston's displacement: its header starts with stroke."""
+    text = t.get("table")
+    if not isinstance(text, str):
+        return False
+    head = next((line for line in text.splitlines() if line.strip() and not line.lstrip().startswith("#")), "")
+    return head.lstrip().lower().startswith("stroke")
+
+
+@dataclass(frozen=True)
+class PendingStroke:
+    """A pressure against the stroke, read before the mechanism is built: its dead centre is found afterwards
+    (:func:`resolve_strokes`)."""
+
+    where: str
+    link: int
+    point: str
+    force: tuple[float, float]
+    active: object
+    name: str
+    which: str
+    stroke: np.ndarray
+    out: np.ndarray
+    back: np.ndarray | None
+
+
+def _stroke_pressure(rd, t, where, link, point, u, active, name, push, area, back_force, driver_kind):
+    """An indicator diagram against the piston's displacement from a dead centre (columns stroke, pressure and an
+    optional return: the pressure while the piston comes back)."""
+    field = f"{where}.table"
+    if driver_kind != "crank":
+        raise rd.fail(field, "a table against the stroke belongs to a crank-driven engine; with a slider driver give "
+                      "it against the slider's position (position [mm], pressure [...])")
+    which = t.get("from", "inner dead centre")
+    if which not in DEAD_CENTRES:
+        raise rd.fail(f"{where}.from", f"must be one of {', '.join(repr(k) for k in DEAD_CENTRES)}, got {which!r}")
+    head = next(line for line in t["table"].splitlines() if line.strip() and not line.lstrip().startswith("#"))
+    columns = {"stroke": "length", "pressure": "pressure"}
+    if head.count(",") >= 2 or head.count(";") >= 2 or head.count("\t") >= 2:
+        columns["return"] = "pressure"
+    cols = parse_table(t["table"], columns, file=rd.file, field=field, decimal=rd.decimal(t, where))
+    s = cols["stroke"]
+    if (np.diff(s) < 0).any() or s[0] < 0:
+        raise rd.fail(field, "the stroke column is the piston's displacement from the dead centre: from 0 up, "
+                      "ascending")
+
+    def force(p):
+        return push * (p * area - back_force)
+
+    return PendingStroke(where, link, point, u, active, name, which, s, force(cols["pressure"]),
+                         force(cols["return"]) if "return" in cols else None)
+
+
+def resolve_strokes(rd, mech, loads, moves):
+    """The loads with each pressure against the stroke made a :class:`StrokeForce` on the mechanism's piston."""
+    out = []
+    for ld in loads:
+        if not isinstance(ld, PendingStroke):
+            out.append(ld)
+            continue
+        field = f"{ld.where}.from"
+        guide = piston(rd, mech, field)[4]
+        slider = guide.slider
+        if ld.link != slider:
+            raise rd.fail(f"{ld.where}.link", f"a pressure against the stroke acts on the piston, link {slider}, "
+                          f"got {ld.link}")
+        theta, X = dead_centre(rd, mech, ld.which, field)
+        other = "outer dead centre" if DEAD_CENTRES[ld.which] > 0 else "inner dead centre"
+        _, Y = dead_centre(rd, mech, other, field)
+        length = abs(Y - X)
+        away = (Y - X) / length
+        # Where the load's own point is at the dead centre (any point of the piston: it only slides).
+        kin = solve_kinematics(mech, [theta], 0.0, 0.0)
+        Z = complex(*kin.position(ld.link, ld.point)[0])
+        if ld.stroke[-1] < length * (1 - 1e-9):
+            raise rd.fail(f"{ld.where}.table", f"covers the stroke to {ld.stroke[-1] * 1e3:.6g} mm; the stroke is "
+                          f"{length * 1e3:.6g} mm: give rows to the end (the other dead centre)")
+        if ld.back is not None and not moves:
+            raise rd.fail(f"{ld.where}.table", "a return column needs the sense of the motion: give driver.omega "
+                          "(a static analysis uses it only for that)")
+        s = np.minimum(ld.stroke, length)
+        try:
+            load = StrokeForce(ld.link, ld.point, ld.force, ld.active, ld.name, dead_centre=(Z.real, Z.imag),
+                               away=(away.real, away.imag), length=length,
+                               out=Table(s, ld.out, periodic=False),
+                               back=None if ld.back is None else Table(s, ld.back, periodic=False))
+        except ModelError as exc:
+            raise rd.fail(f"{ld.where}.table", str(exc).split(": ", 1)[-1]) from None
+        out.append(load)
+    return out
 
 
 def power(rd, t, where, link, active, name, motion):
