@@ -128,6 +128,23 @@ def stroke_force(kin: Kinematics, load: StrokeForce) -> np.ndarray:
     return size * (u / abs(u))
 
 
+def springs_without_a_line(kin, mech, kin_valid) -> dict[str, np.ndarray]:
+    """Where a spring's ends meet although its free length is not 0: its force has no direction (named, per spring)."""
+    out, seen = {}, set()
+    for load in mech.loads:
+        ends = frozenset([(load.link, load.point), (getattr(load, "anchor_link", 0), getattr(load, "anchor_point", ""))])
+        if not (isinstance(load, SpringForce) and load.free_length and load.rate) or ends in seen:
+            continue
+        seen.add(ends)  # a spring between two moving links puts a load on each: one message
+        d = kin.z(load.anchor_link, load.anchor_point) - kin.z(load.link, load.point)
+        where = kin_valid & (np.abs(d) == 0)
+        if where.any():
+            name = load.name if load.name.startswith("spring") else f"spring {load.name}".rstrip()
+            out[f"the {name} has its ends {load.point} and {load.anchor_point} at one point, where a spring of "
+                f"free length {load.free_length * 1e3:.6g} mm has no line: its force has no direction"] = where
+    return out
+
+
 def spring_force(kin: Kinematics, load: SpringForce) -> np.ndarray:
     """A spring's force on its end, k (L − L0) towards the other end, at every position (complex, N).
 

@@ -17,6 +17,7 @@ from graphkin.kinematics import solve_kinematics
 from graphkin.model import PointForce, Prismatic, Revolute, StrokeForce, Table, Torque, spring
 from graphkin.problem.problem import Forward
 from graphkin.problem.tables import load_table, parse_table
+from graphkin.problem.unknown import Unknown
 
 DEAD_CENTRES = {"inner dead centre": 1, "top dead centre": 1, "outer dead centre": -1, "bottom dead centre": -1}
 """A crank angle's origin in an engine: the crank pointing at the piston (+1) or away from it (−1)."""
@@ -352,8 +353,6 @@ def spring_loads(rd, t, where, frame):
 
 def unknown(rd, value, mech):
     """``[unknown]``: the link whose effort the book asks for, instead of the driver's (:mod:`.unknown`)."""
-    from graphkin.problem.unknown import Unknown
-
     t = rd.table(value, "unknown", {"link", "name"})
     link = rd.whole(rd.need(t, "link", "unknown"), "unknown.link")
     moving = [lk.number for lk in mech.links if lk.number != mech.frame]

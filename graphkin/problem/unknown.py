@@ -27,6 +27,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
+from graphkin.analytical.loads import applied
 from graphkin.model import PointForce, Prismatic, Torque
 from graphkin.model.loads import Table
 
@@ -119,8 +120,6 @@ class Unknown:
 
     def values(self, result) -> np.ndarray:
         """The unknown's value at each position of a result it was found for [N·m, or N along the guide]."""
-        from graphkin.analytical.loads import applied
-
         kin = result.kinematics
         load = next(ld for ld in kin.mechanism.loads if ld.name == self.label(kin.mechanism))
         value = applied(kin, load)

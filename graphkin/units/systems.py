@@ -41,6 +41,9 @@ from types import MappingProxyType
 from typing import Mapping
 
 from graphkin.errors import GraphkinError, ProblemFileError
+from graphkin.files import read_text
+from graphkin.units.convert import to_si
+from graphkin.units.registries import registry
 
 KINDS: dict[str, str] = {
     "length": "length", "angle": "angle", "force": "force", "torque": "torque",
@@ -122,8 +125,6 @@ SI = _system("SI", _SI)
 
 def _scale(unit: str, kind: str, file: str, where: str) -> float:
     """Display units per SI unit of ``unit``, checked as a unit of ``kind`` (the message names ``where``)."""
-    from graphkin.units.convert import to_si
-
     if not isinstance(unit, str) or not unit.strip():
         raise ProblemFileError(file, where, f"expected a unit such as \"{_US[kind][0]}\", got {unit!r}")
     if unit.strip()[:1].isdigit() or unit.strip()[:1] in "+-.":
@@ -141,8 +142,6 @@ def _us() -> UnitSystem:
 
 
 def _symbol(unit: str) -> str:
-    from graphkin.units.registries import registry
-
     return format(registry().parse_units(unit), "~P")
 
 
@@ -164,8 +163,6 @@ def read_units(path: str | Path) -> UnitSystem:
         A file that cannot be read or is not TOML, an unknown kind or base, a unit that is unknown or of another
         dimension than its kind: one line naming the file and the field.
     """
-    from graphkin.files import read_text
-
     file = str(path)
     try:
         data = tomllib.loads(read_text(path, "--units"))
