@@ -8,12 +8,13 @@ boundary, with every error naming the file and the field (``docs/problem-files.m
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
 from graphkin.errors import ModelError
-from graphkin.kinematics import solve_kinematics
+from graphkin.kinematics import decompose, solve_kinematics
+from graphkin.kinematics.structure import Dyad
 from graphkin.model import PointForce, Prismatic, Revolute, StrokeForce, Table, Torque, spring
 from graphkin.problem.problem import Forward
 from graphkin.problem.tables import load_table, parse_table
@@ -144,6 +145,26 @@ def placed(rd, d, mech):
         raise rd.fail("driver.place.link", f"must be a moving link other than the slider "
                       f"({', '.join(str(n) for n in mech.moving if n != mech.driver.link)}), got {link!r}")
     target = rd.si(rd.need(t, "theta", "driver.place"), "angle", "driver.place.theta")
+    roots = _placements(mech, link, target)
+    if not roots:
+        # Not on the file's branch: say which other branch has it, so the book's figure can be matched.
+        for key in sorted({g.key for g in decompose(mech) if isinstance(g, Dyad)}):
+            other = replace(mech, assembly={**mech.assembly, key: -mech.assembly.get(key, 1)})
+            found = _placements(other, link, target)
+            if found:
+                raise rd.fail("driver.place.theta", f"link {link} never stands at {t['theta']!r} on the branch the "
+                              f"file assembles, but does on the other branch at {key} (s = "
+                              + ", ".join(f"{x * 1e3:.6g} mm" for x in found)
+                              + f"): add [assembly] {key} = {-mech.assembly.get(key, 1)} if the book's figure is that one")
+        raise rd.fail("driver.place.theta", f"link {link} never stands at {t['theta']!r} as the slider moves")
+    if len(roots) > 1:
+        raise rd.fail("driver.place.theta", f"link {link} stands at {t['theta']!r} at more than one slider position ("
+                      + ", ".join(f"s = {x * 1e3:.6g} mm" for x in roots) + "): give the one the book means as s")
+    return np.array(roots)
+
+
+def _placements(mech, link, target) -> list[float]:
+    """The slider positions s [m] at which ``link`` stands at ``target`` [rad], on the mechanism's assembly branch."""
     # The slider's reach: a few times the mechanism's size either way, sampled finely, then Newton on θ(s).
     size = max([math.hypot(x1 - x0, y1 - y0) for k in mech.links for (x0, y0) in k.points.values()
                 for (x1, y1) in k.points.values()] + [1e-3])
@@ -167,13 +188,7 @@ def placed(rd, d, mech):
         kx = solve_kinematics(mech, [x], 1.0, 0.0)
         if kx.valid[0] and abs(np.angle(np.exp(1j * (kx.theta[link][0] - target)))) <= 1e-12:
             roots.append(x)
-    roots = [x for k, x in enumerate(sorted(roots)) if k == 0 or x - sorted(roots)[k - 1] > 1e-9 * size]
-    if not roots:
-        raise rd.fail("driver.place.theta", f"link {link} never stands at {t['theta']!r} as the slider moves")
-    if len(roots) > 1:
-        raise rd.fail("driver.place.theta", f"link {link} stands at {t['theta']!r} at more than one slider position ("
-                      + ", ".join(f"s = {x * 1e3:.6g} mm" for x in roots) + "): give the one the book means as s")
-    return np.array(roots)
+    return [x for k, x in enumerate(sorted(roots)) if k == 0 or x - sorted(roots)[k - 1] > 1e-9 * size]
 
 
 def pressure(rd, t, where, link, driver_kind, active, name):
