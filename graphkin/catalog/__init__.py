@@ -29,6 +29,7 @@ FAMILIES = {
     "petrol_vertical_khurmi": "vertical petrol engine: net force on the piston with its weight",
     "slider_crank_dynamic_makdin": "slider-crank, dynamic, matrix method with the book's accelerations and a gas load",
     "slider_crank_static_makdin": "slider-crank, static: the crank torque holding a piston load; driven by the piston too",
+    "spring_link_hibbeler": "double slider, static, held by a spring and its weight: the equilibrium angle",
     "spur_pair_wentzell": "spur gear pair in inch-pound units: a power at a speed",
     "shaper_six_bar": "six-bar quick-return: crank, block on a slotted lever, ram (R-RTR-RRT), with gravity",
     "single_link": "single link (a crank alone)",
