@@ -35,6 +35,8 @@ FAMILIES = {
     "single_link": "single link (a crank alone)",
     "slider_crank_friction": "offset slider-crank with slider friction",
     "strip_cutter": "four-bar with a cutting load",
+    "vertical_engine_sarkar": "vertical engine at speed, short rod (l = 4 r): the effective turning moment, weight "
+                              "included",
     "vertical_engine_gudgeon_expertsmind": "vertical engine at speed: gudgeon-pin load and cylinder-wall thrust, weight "
                                            "included",
 }
