@@ -28,7 +28,7 @@ from dataclasses import replace
 
 import numpy as np
 
-from graphkin.analytical.loads import _external_fast, _inertia_fast, _known, load_specs
+from graphkin.analytical.loads import _external_fast, _inertia_fast, _known, load_specs, springs_without_a_line
 from graphkin.analytical.result import ForceAnalysis
 from graphkin.errors import GraphkinError
 from graphkin.geometry import zcross as cross
@@ -452,6 +452,8 @@ def _pass(kin, plan: Plan, kin_valid, loops):
         for F in forces.values():
             valid &= np.isfinite(F)
         valid &= kin_valid
+        for why, where in springs_without_a_line(kin, mech, kin_valid).items():
+            failures[why] = where
         for where in failures.values():
             valid &= ~where
         dead = kin_valid & ~valid & ~np.logical_or.reduce([w for w in failures.values()] or [np.zeros(n, bool)])

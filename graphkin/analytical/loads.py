@@ -9,7 +9,7 @@ import numpy as np
 from graphkin.geometry import as_xy
 from graphkin.geometry import zcross as cross
 from graphkin.kinematics import Kinematics
-from graphkin.model import PointForce, SpringForce, Torque
+from graphkin.model import PointForce, SpringForce, StrokeForce, Torque
 
 
 @dataclass(frozen=True)
@@ -92,6 +92,8 @@ def applied(kin: Kinematics, load) -> np.ndarray:
     q = kin.q
     if isinstance(load, SpringForce):
         f = spring_force(kin, load)
+    elif isinstance(load, StrokeForce):
+        f = stroke_force(kin, load)
     elif isinstance(load, PointForce):
         f = complex(*load.force)
         if load.table is not None:
@@ -109,6 +111,38 @@ def applied(kin: Kinematics, load) -> np.ndarray:
     if load.active is not None:
         f = np.where(load.active.mask(q), f, 0.0 * f)
     return f + 0.0
+
+
+def stroke_force(kin: Kinematics, load: StrokeForce) -> np.ndarray:
+    """A force against the piston's displacement from a dead centre, out or back with its motion (complex, N)."""
+    away = complex(*load.away)
+    z = kin.z(load.link, load.point)
+    # Rounding puts a dead centre a hair outside the stroke: the tables are defined on [0, length] only.
+    s = np.clip(((z - complex(*load.dead_centre)) * away.conjugate()).real, 0.0, load.length)
+    v = (kin.z_velocity(load.link, load.point) * away.conjugate()).real
+    # At a dead centre the piston stands still but for rounding (1e-17 m/s): the stroke that begins there is taken.
+    still = np.abs(v) <= 1e-9 * np.abs(kin.q_dot) * load.length
+    out = np.where(still, s < load.length / 2, v > 0)
+    size = load.out(s) if load.back is None else np.where(out, load.out(s), load.back(s))
+    u = complex(*load.force)
+    return size * (u / abs(u))
+
+
+def springs_without_a_line(kin, mech, kin_valid) -> dict[str, np.ndarray]:
+    """Where a spring's ends meet although its free length is not 0: its force has no direction (named, per spring)."""
+    out, seen = {}, set()
+    for load in mech.loads:
+        ends = frozenset([(load.link, load.point), (getattr(load, "anchor_link", 0), getattr(load, "anchor_point", ""))])
+        if not (isinstance(load, SpringForce) and load.free_length and load.rate) or ends in seen:
+            continue
+        seen.add(ends)  # a spring between two moving links puts a load on each: one message
+        d = kin.z(load.anchor_link, load.anchor_point) - kin.z(load.link, load.point)
+        where = kin_valid & (np.abs(d) == 0)
+        if where.any():
+            name = load.name if load.name.startswith("spring") else f"spring {load.name}".rstrip()
+            out[f"the {name} has its ends {load.point} and {load.anchor_point} at one point, where a spring of "
+                f"free length {load.free_length * 1e3:.6g} mm has no line: its force has no direction"] = where
+    return out
 
 
 def spring_force(kin: Kinematics, load: SpringForce) -> np.ndarray:

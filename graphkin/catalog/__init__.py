@@ -30,11 +30,16 @@ FAMILIES = {
     "petrol_vertical_khurmi": "vertical petrol engine: net force on the piston with its weight",
     "slider_crank_dynamic_makdin": "slider-crank, dynamic, matrix method with the book's accelerations and a gas load",
     "slider_crank_static_makdin": "slider-crank, static: the crank torque holding a piston load; driven by the piston too",
+    "spring_link_hibbeler": "double slider, static, held by a spring and its weight: the equilibrium angle",
     "spur_pair_wentzell": "spur gear pair in inch-pound units: a power at a speed",
     "shaper_six_bar": "six-bar quick-return: crank, block on a slotted lever, ram (R-RTR-RRT), with gravity",
     "single_link": "single link (a crank alone)",
     "slider_crank_friction": "offset slider-crank with slider friction",
     "strip_cutter": "four-bar with a cutting load",
+    "vertical_engine_sarkar": "vertical engine at speed, short rod (l = 4 r): the effective turning moment, weight "
+                              "included",
+    "vertical_engine_gudgeon_expertsmind": "vertical engine at speed: gudgeon-pin load and cylinder-wall thrust, weight "
+                                           "included",
 }
 """Each catalog problem's family of mechanism, as ``graphkin list`` shows it."""
 

@@ -18,6 +18,9 @@ def add_parser(sub) -> None:
                    "of each switching angle")
     c.add_argument("--cs", type=float, metavar="CS", help="coefficient of speed fluctuation: size a flywheel, e.g. 0.05")
     c.add_argument("--json", action="store_true", help=f"print every array as JSON in SI units (schema: {DOCS}/json.html)")
+    c.add_argument("--units", metavar="SI|US|FILE",
+                   help="print in these units: SI (default), US (in, lbf, lbf·ft, rpm, hp) or a units file (TOML); "
+                   f"with --json, the JSON states each field's unit ({DOCS}/problem-files.html#units-of-a-report)")
     c.add_argument("-o", "--output", "--figure", dest="figure", metavar="FILE",
                    help="write the cycle figure (.png, .svg or .pdf) (--figure is the older name)")
 
@@ -32,6 +35,8 @@ def run(args) -> int:
     from graphkin.files import json_text
     from graphkin.ranges import MAX_POSITIONS
     from graphkin.report import cycle_data, format_cycle
+    from graphkin.report.in_units import cycle_in
+    from graphkin.units.systems import unit_system
 
     check_outputs(args.figure)
     if args.cs is not None:
@@ -39,6 +44,7 @@ def run(args) -> int:
     if args.n is not None and not 2 <= args.n <= MAX_POSITIONS:
         raise GraphkinError(f"--n {args.n}: n must be a whole number of positions from 2 to {MAX_POSITIONS:,} "
                             "(1° steps need 360, 0.01° steps 36,000)")
+    units = unit_system(args.units)
     problem = catalog.load(args.problem)
     if args.n is not None and not problem.mechanism.driver.crank:
         raise GraphkinError(f"{problem.name}: --n: the driver is a slider, so there is no turn to divide into "
@@ -50,9 +56,9 @@ def run(args) -> int:
             raise GraphkinError(f"{problem.name}: --cs {args.cs:g}: {why}")
         data = cycle_data(cycle, args.cs)
     if args.json:
-        print(json_text(data))
+        print(json_text(data if units is None else cycle_in(data, units)))
     else:
-        print(format_cycle(cycle, data))
+        print(format_cycle(cycle, data, units))
     if args.figure:
         from graphkin import draw
 

@@ -21,6 +21,9 @@ def add_parser(sub) -> None:
                        "no mechanism needed")
     f.add_argument("file", help=f"a flywheel file (TOML; see {DOCS}/problem-files.html, 'Flywheel files'), or a catalog "
                    "flywheel's name (graphkin list)")
+    f.add_argument("--units", metavar="SI|US|FILE",
+                   help="print in these units: SI (default), US (in, lbf, lbf·ft, rpm, hp) or a units file (TOML); "
+                   f"with --json, the JSON states each field's unit ({DOCS}/problem-files.html#units-of-a-report)")
     f.add_argument("--json", action="store_true", help=f"print the result as JSON in SI units (schema: {DOCS}/json.html)")
 
 
@@ -32,8 +35,11 @@ def run(args) -> int:
     from graphkin.cycle.flywheel_file import load_flywheel
     from graphkin.files import json_text
     from graphkin.report import flywheel_data, format_flywheel
+    from graphkin.report.in_units import flywheel_in
+    from graphkin.units.systems import unit_system
 
     # A catalog name, unless a file of that name is here.
+    units = unit_system(args.units)
     if not Path(args.file).exists() and args.file in catalog.flywheel_names():
         problem = load_flywheel(catalog.flywheel_path(args.file), name=args.file)
     else:
@@ -41,9 +47,9 @@ def run(args) -> int:
     fly = problem.size()
     data = flywheel_data(problem, fly)
     if args.json:
-        print(json_text(data))
+        print(json_text(data if units is None else flywheel_in(data, units)))
     else:
-        print(format_flywheel(data))
+        print(format_flywheel(data, units))
     return 0
 
 

@@ -43,6 +43,9 @@ def add_parser(sub) -> None:
                         "the problem's notes on its source (full)")
     h.add_argument("--cs", type=float, metavar="CS", help="coefficient of speed fluctuation of a whole cycle's "
                    "flywheel (default: the exercise's, else 0.05)")
+    h.add_argument("--units", metavar="SI|US|FILE",
+                   help="the answers' units: SI (default: N, N·m, mm), US (lbf, lbf·ft, in) or a units file (TOML); "
+                   "the working stays in SI")
     h.add_argument("--format", choices=("pdf", "html", "md"), default=None,
                    help="with --roster: the files' format (default pdf)")
     h.add_argument("-o", "--output", required=True, metavar="FILE|DIR",
@@ -58,15 +61,20 @@ def run(args) -> int:
     from graphkin import handout
 
     if args.roster:
+        if args.units:
+            raise GraphkinError("--units is for one handout; a class's sheets and keys are in the exercise's units")
         return _roster(args)
     if args.format:
         raise GraphkinError("--format is for --roster; for one handout the suffix of -o says it (.pdf, .html, .md)")
     handout.check_output(args.output)
     if args.at and args.student:
         raise GraphkinError("--at: an exercise's position is part of the student's data; leave --at out")
+    from graphkin.units.systems import unit_system
+
+    units = unit_system(args.units)
     secret = _secret(args) if args.student else ""
     doc = handout.build(args.source, student=args.student, secret=secret, at=args.at, version=_version(args),
-                        Cs=args.cs, detail=args.detail)
+                        Cs=args.cs, detail=args.detail, units=units)
     written = handout.write(doc, args.output)
     extra = f" and {len(written) - 1} figures beside it" if len(written) > 1 else ""
     print(f"{doc['subtitle'].lower()} written to {written[-1]}{extra}", file=sys.stderr)

@@ -15,6 +15,10 @@ def add_parser(sub) -> None:
     s.add_argument("problem", help="catalog name (see 'graphkin list') or path to a problem file")
     s.add_argument("--at", help="input position(s) with units, comma-separated, e.g. '124 deg,140 deg' or '200 mm'")
     s.add_argument("--json", action="store_true", help=f"print the result as JSON in SI units (schema: {DOCS}/json.html)")
+    s.add_argument("--units", metavar="SI|US|FILE",
+                   help="print in these units: SI (default: mm, deg, N, N·m, rad/s), US (in, deg, lbf, lbf·ft, rpm) or a "
+                   f"units file (TOML, e.g. torque = \"lbf*in\"); with --json, the JSON states each field's unit "
+                   f"({DOCS}/problem-files.html#units-of-a-report)")
     s.add_argument("-o", "--output", "--figure", dest="figure", metavar="FILE",
                    help="write the side-by-side figure (.png, .svg or .pdf); with several positions, one file each, "
                    "numbered (--figure is the older name)")
@@ -31,11 +35,14 @@ def run(args) -> int:
 
     from graphkin import catalog, report
     from graphkin.files import json_text
+    from graphkin.report.in_units import solution_in
+    from graphkin.units.systems import unit_system
 
     check_outputs(args.figure, args.steps)
     if args.polygons and not (args.figure or args.steps or args.json):
         raise GraphkinError("--motion-polygons draws beside the figure or the steps, or details the JSON: give "
                             "-o FILE, --steps DIR or --json too")
+    units = unit_system(args.units)
     problem = catalog.load(args.problem)
     result = problem.solve(positions(problem, args.at) if args.at is not None else None)
     graphical = report.constructions(result)
@@ -45,9 +52,10 @@ def run(args) -> int:
         kinematic = report.kinematic_constructions(result.kinematics)
         # The polygons' step captions are most of the JSON (11 MB for the strip cutter's 180 positions, not 7):
         # only --motion-polygons asks for them.
-        print(json_text(report.solution(problem, result, graphical, kinematic, kinematic_steps=args.polygons)))
+        data = report.solution(problem, result, graphical, kinematic, kinematic_steps=args.polygons)
+        print(json_text(data if units is None else solution_in(data, units)))
     else:
-        print(report.format_solution(problem, result, graphical))
+        print(report.format_solution(problem, result, graphical, units))
     if args.figure or args.steps:
         _figures(problem, result, graphical, args.figure, args.steps, polygons=args.polygons)
     bad = np.flatnonzero(~result.valid)

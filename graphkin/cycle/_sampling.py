@@ -65,7 +65,8 @@ def switching_angles(problem: "Problem") -> list[float]:
             ends |= {load.active.start, load.active.stop}
         if load.table is not None:
             ends |= set(load.table.jumps())
-        if load.sense != "fixed":
+        if load.sense != "fixed" or getattr(load, "back", None) is not None:
+            # A stroke table with a return column switches at the dead centres, where the piston reverses.
             ends |= set(reversals(problem, load))
     return sorted(ends)
 

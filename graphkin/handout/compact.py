@@ -258,11 +258,12 @@ def crank_pin(doc: Doc, s: Subject, entry: dict, i: int):
              f"(unit vector u) and across it (k × u, the sense of positive θ):")
     doc.equation(
         M.row(M.sym("F", "B"), M.op("="), M.op("−"), M.vec(M.name(name)), M.op("·"), M.i("u"), M.op("="),
-              M.qty(F_B, "N"), M.t(" (towards the shaft: a thrust on its bearing)" if F_B > 0 else
+              s.qty(F_B, "force"), M.t(" (towards the shaft: a thrust on its bearing)" if F_B > 0 else
                                    " (away from the shaft: a pull on its bearing)" if F_B < 0 else "")),
         M.row(M.sym("F", "T"), M.op("="), M.vec(M.name(name)), M.op("·"), M.paren(M.i("k"), M.op("×"), M.i("u")),
-              M.op("="), M.qty(F_T, "N"), M.op(";"), M.SP, M.i("T"), M.op("="), M.i("r"), M.sym("F", "T"), M.op("="),
-              M.paren(M.qty(r * 1e3, "mm")), M.paren(M.qty(F_T, "N")), M.op("="), M.qty(r * F_T, "N·m")))
+              M.op("="), s.qty(F_T, "force"), M.op(";"), M.SP, M.i("T"), M.op("="), M.i("r"), M.sym("F", "T"),
+              M.op("="), M.paren(s.qty(r, "length")), M.paren(s.qty(F_T, "force")), M.op("="),
+              s.qty(r * F_T, "torque")))
 
 
 def answers(doc: Doc, s: Subject, entry: dict):
@@ -271,13 +272,13 @@ def answers(doc: Doc, s: Subject, entry: dict):
     for a, b in r.forces:
         name = r.name_of(a, b)
         F = entry["forces"][name]
-        rows.append([M.name(name), M.pair(F, "N"), M.polar(M.size_of(F), M.angle_of(F), "N")])
+        rows.append([M.name(name), s.pair(F), s.polar(F)])
     d = entry["driver"]
     if s.crank:
         sense = " CCW" if d["value"] > 0 else " CW" if d["value"] < 0 else ""
-        rows.append([M.name(d["name"]), "", (M.qty(d["value"], "N·m"), sense)])
+        rows.append([M.name(d["name"]), "", (s.qty(d["value"], "torque"), sense)])
     else:
-        rows.append([M.name(d["name"]), M.pair(d["vector"], "N"), (M.qty(d["value"], "N"), " along the guide")])
+        rows.append([M.name(d["name"]), s.pair(d["vector"]), (s.qty(d["value"], "force"), " along the guide")])
     doc.heading(2, "Answers")
     doc.table(["", "x, y", "polar"], rows, "lrr", caption="Both routes give these: the graphical one reads "
               "the polygons, the analytical one solves the equilibrium equations of every link.", boxed=True)

@@ -69,7 +69,7 @@ DETAILS = ("compact", "full")
 
 
 # -- the document ---------------------------------------------------------------------------
-def build(source, *, student=None, secret="", at=None, version=None, Cs=None, detail="compact") -> dict:
+def build(source, *, student=None, secret="", at=None, version=None, Cs=None, detail="compact", units=None) -> dict:
     """The worked solution (or a student's sheet) as data, ready for any renderer.
 
     Parameters
@@ -99,13 +99,17 @@ def build(source, *, student=None, secret="", at=None, version=None, Cs=None, de
         the answers boxed); ``"full"`` every step walked through (the kinematics
         loop by loop, the matrix [A]{x} = {b}, each step of the construction with
         its own figure), with the problem's notes on its source.
+    units : graphkin.units.systems.UnitSystem, optional
+        The answers' units (``--units``; default SI: N, N·m, mm). The working (inertia loads, the matrix, the
+        polygons) stays in SI, as it is solved; the given data is as the problem file writes it.
 
     Returns
     -------
     dict
         See the module's docstring.
     """
-    s = source if isinstance(source, Subject) else subject(source, student=student, secret=secret, at=at, Cs=Cs)
+    s = source if isinstance(source, Subject) else subject(source, student=student, secret=secret, at=at, Cs=Cs,
+                                                           units=units)
     version = version or ("sheet" if s.variant is not None else "key")
     if version not in VERSIONS:
         raise GraphkinError(f"version must be one of {', '.join(VERSIONS)}, got {version!r}")

@@ -22,6 +22,7 @@ from graphkin.handout.figures import Picture
 from graphkin.notation import input_text, typeset
 from graphkin.report import solution
 from graphkin.units import to_si
+from graphkin.units.systems import SI, UnitSystem
 
 DEFAULT_CS = 0.05
 """Coefficient of speed fluctuation for a whole cycle's flywheel when none is given (Norton: 0.01–0.05)."""
@@ -96,8 +97,9 @@ class Doc:
 class Subject:
     """A problem (or a student's variant of an exercise) with everything solved once."""
 
-    def __init__(self, problem, raw: dict, *, variant=None, at=None, Cs=None):
+    def __init__(self, problem, raw: dict, *, variant=None, at=None, Cs=None, units: UnitSystem | None = None):
         self.problem = problem
+        self.units = SI if units is None else units  # the answers' units; the working stays in SI
         self.raw = raw
         self.variant = variant
         self.mech = problem.mechanism
@@ -110,6 +112,21 @@ class Subject:
         self.Cs = Cs if Cs is not None else (variant.Cs if variant is not None and variant.Cs else DEFAULT_CS)
         self.cycle_positions = ex.positions if ex is not None else None
         self._pictures: dict[str, Picture] = {}
+
+    def qty(self, x: float, kind: str) -> list:
+        """An answer ``x`` (SI) of ``kind`` in the handout's units: ``6117 lbf·ft``."""
+        u = self.units
+        return M.qty(u.show(x, kind), u.symbol(kind))
+
+    def polar(self, v, kind: str = "force") -> list:
+        """A vector answer (SI) in the handout's units, in polar form: ``8313 lbf ∠ −7.39°``."""
+        k = self.units.scales[kind]
+        return M.polar(k * M.size_of(v), M.angle_of(v), self.units.symbol(kind))
+
+    def pair(self, v, kind: str = "force") -> list:
+        """A vector answer (SI) in the handout's units, by components."""
+        k = self.units.scales[kind]
+        return M.pair([k * float(v[0]), k * float(v[1])], self.units.symbol(kind))
 
     def construction(self, i: int):
         """The graphical construction at position ``i`` (None where the linkage has no solution), built once."""
@@ -183,7 +200,7 @@ def _read_raw(name: str) -> dict:
         return {}
 
 
-def subject(source, *, student=None, secret="", at=None, Cs=None):
+def subject(source, *, student=None, secret="", at=None, Cs=None, units: UnitSystem | None = None):
     """Resolve what a handout is about: a problem (name or file) or, with ``student``, an exercise variant."""
     if isinstance(source, Variant) or student is not None:
         if at is not None:
@@ -194,7 +211,7 @@ def subject(source, *, student=None, secret="", at=None, Cs=None):
             for f in g.field:
                 if f != "flywheel.Cs":
                     set_field(raw, f, g.value, copy=True)
-        return Subject(v.problem, raw, variant=v, Cs=Cs)
+        return Subject(v.problem, raw, variant=v, Cs=Cs, units=units)
     try:
         problem = catalog.load(source)
     except GraphkinError:
@@ -207,7 +224,7 @@ def subject(source, *, student=None, secret="", at=None, Cs=None):
         at = np.array([to_si(part.strip(), dim, field="--at", file="command line") for part in at.split(",")])
     elif at is not None:
         at = np.atleast_1d(np.asarray(at, dtype=float))
-    return Subject(problem, _read_raw(source), at=at, Cs=Cs)
+    return Subject(problem, _read_raw(source), at=at, Cs=Cs, units=units)
 
 
 def _is_exercise(path) -> bool:

@@ -51,7 +51,16 @@ def notation(doc: Doc, s: Subject):
     doc.text("Notation: ", M.sym("F", "ij"), " is the force of link i on link j, ",
              M.row(M.sym("F", "ji"), M.op("="), M.op("−"), M.sym("F", "ij")),
              f". Link {s.mech.frame} is the frame. x to the right, y up; angles, ω, α and torques are positive "
-             "counter-clockwise; a force in polar form is its magnitude ∠ its direction from +x.")
+             "counter-clockwise; a force in polar form is its magnitude ∠ its direction from +x." + _units_note(s))
+
+
+def _units_note(s: Subject) -> str:
+    """What ``--units`` changed: the answers' units, and that the working stays in SI."""
+    u = s.units
+    if u.is_si:
+        return ""
+    return (f" Answers are in {u.name} units ({u.symbol('force')}, {u.symbol('torque')}, {u.symbol('length')}); "
+            "the working (inertia loads, equations, polygons) is in SI, N and mm, as it is solved.")
 
 
 def _paragraphs(text: str) -> list[str]:
@@ -295,6 +304,8 @@ def convention(doc: Doc, s: Subject):
     ]
     if s.static:
         del items[2]  # no inertia loads in a static analysis
+    if not s.units.is_si:
+        items.append((_units_note(s).strip(),))
     doc.items(items)
 
 
@@ -415,10 +426,9 @@ def loads(doc: Doc, s: Subject, entry: dict, always: bool = False):
     for ld in entry["loads"]:
         name = M.name(ld["name"]) if ld["name"] else ("P" if "force" in ld else "T")
         if "force" in ld:
-            value = (M.polar(M.size_of(ld["force"]), M.angle_of(ld["force"]), "N") if ld["acting"]
-                     else M.qty(0.0, "N"))
+            value = s.polar(ld["force"]) if ld["acting"] else s.qty(0.0, "force")
             rows.append([name, f"link {ld['link']} at {ld['point']}", value])
         else:
-            rows.append([name, f"link {ld['link']}", M.qty(ld["torque"], "N·m")])
+            rows.append([name, f"link {ld['link']}", s.qty(ld["torque"], "torque")])
     doc.table(["load", "on", "value at this position"], rows, "llr",
               caption="Each load at its value here: read off its table, and with the sense the motion gives it")

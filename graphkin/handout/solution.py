@@ -112,21 +112,21 @@ def forces(doc: Doc, s: Subject, entry: dict):
     for a, b in r.forces:
         name, back = r.name_of(a, b), r.name_of(b, a)
         F = entry["forces"][name]
-        rows.append([M.name(name), M.pair(F, "N"), M.polar(M.size_of(F), M.angle_of(F), "N"),
-                     M.row(M.name(back), M.op("="), M.op("−"), M.name(name))])
+        rows.append([M.name(name), s.pair(F), s.polar(F), M.row(M.name(back), M.op("="), M.op("−"), M.name(name))])
     doc.table(["force", "x, y", "polar", ""], rows, "lrrl")
     d = entry["driver"]
     if s.crank:
         sense = " (CCW)" if d["value"] > 0 else " (CW)" if d["value"] < 0 else ""
-        doc.text("The driving torque: ", M.row(M.name(d["name"]), M.op("="), M.qty(d["value"], "N·m")), sense + ".")
+        doc.text("The driving torque: ", M.row(M.name(d["name"]), M.op("="), s.qty(d["value"], "torque")), sense + ".")
     else:
-        doc.text("The driving force: ", M.row(M.name(d["name"]), M.op("="),
-                                             M.polar(M.size_of(d["vector"]), M.angle_of(d["vector"]), "N")),
-                 ", that is ", M.qty(d["value"], "N"), " along the guide.")
+        doc.text("The driving force: ", M.row(M.name(d["name"]), M.op("="), s.polar(d["vector"])),
+                 ", that is ", s.qty(d["value"], "force"), " along the guide.")
+    L = s.units.symbol("length")
     for pname, p in entry["prismatic"].items():
-        where = "—" if p["offset"] is None else f"{M.fmt(p['offset'] * 1e3)} mm from {p['slider_point']} along the guide"
-        doc.text(f"Sliding pair {pname}: normal force ", M.qty(p["normal"], "N"), ", friction ",
-                 M.qty(p["friction"], "N"), f"; its line acts {where}.")
+        where = ("—" if p["offset"] is None else
+                 f"{M.fmt(s.units.show(p['offset'], 'length'))} {L} from {p['slider_point']} along the guide")
+        doc.text(f"Sliding pair {pname}: normal force ", s.qty(p["normal"], "force"), ", friction ",
+                 s.qty(p["friction"], "force"), f"; its line acts {where}.")
 
 
 def graphical(doc: Doc, s: Subject, entry: dict, c, i: int):
@@ -242,13 +242,12 @@ def _both_routes(doc: Doc, s: Subject, entry: dict):
     rows = []
     for name, rel in g["relative_difference"].items():
         if name == g["driver"]["name"]:
-            unit = "N·m" if s.crank else "N"
-            rows.append([M.name(name), M.qty(entry["driver"]["value"], unit), M.qty(g["driver"]["value"], unit),
+            kind = "torque" if s.crank else "force"
+            rows.append([M.name(name), s.qty(entry["driver"]["value"], kind), s.qty(g["driver"]["value"], kind),
                          _reldiff(rel)])
         else:
             A, G = entry["forces"][name], g["forces"][name]
-            rows.append([M.name(name), M.polar(M.size_of(A), M.angle_of(A), "N"),
-                         M.polar(M.size_of(G), M.angle_of(G), "N"), _reldiff(rel)])
+            rows.append([M.name(name), s.polar(A), s.polar(G), _reldiff(rel)])
     doc.table(["force", "analytical", "graphical", "relative difference"], rows, "lrrr",
               caption="The graphical magnitudes are read off exactly (the closing side computed, not measured), "
                       "so the two routes agree to rounding.")
@@ -287,11 +286,11 @@ def cycle(doc: Doc, s: Subject):
         return "—" if p["at"] is None else f"{theta} = {M.fmt(deg(p['at']), 5)}°"
 
     doc.table(["", "value", "at"], [
-        ["peak", M.qty(e["max"]["value"], "N·m"), where(e["max"])],
-        ["lowest", M.qty(e["min"]["value"], "N·m"), where(e["min"])],
-        ["average", M.qty(e["average"], "N·m"), ""],
+        ["peak", s.qty(e["max"]["value"], "torque"), where(e["max"])],
+        ["lowest", s.qty(e["min"]["value"], "torque"), where(e["min"])],
+        ["average", s.qty(e["average"], "torque"), ""],
     ], "lrl", caption=f"Driving torque {e['name']} ({label})")
-    rows = [[M.name(k), M.qty(v["peak"]["value"], "N"), where(v["peak"])] for k, v in data["forces"].items()]
+    rows = [[M.name(k), s.qty(v["peak"]["value"], "force"), where(v["peak"])] for k, v in data["forces"].items()]
     doc.table(["joint force", "peak", "at"], rows, "lrl", caption="Peak joint forces over the cycle")
     # An exercise's key answers what its questions ask: the flywheel and the joint-force index only if asked.
     asked = {q.kind for q in s.variant.exercise.questions} if s.variant is not None else None

@@ -269,6 +269,53 @@ class SpringForce(PointForce):
         return True
 
 
+@dataclass(frozen=True)
+class StrokeForce(PointForce):
+    """A force on a piston that follows its displacement from a dead centre: an indicator diagram as books print it.
+
+    The piston's point is at ``dead_centre`` at the dead centre the stroke is measured from, and moves along
+    ``away`` (a unit vector) into the stroke, of length ``length``. At a displacement s the force is ``out(s)``
+    along the unit vector of ``force`` while the piston moves away from that dead centre (the out stroke), and
+    ``back(s)`` while it returns (``back`` None: the same table both ways). At a standstill (a dead centre) the
+    stroke that begins there is taken: the out stroke at s = 0, the return at s = ``length``.
+
+    Parameters
+    ----------
+    link, point, force, active, name
+        As :class:`PointForce`; ``force`` gives only the direction (its length does not matter).
+    dead_centre : (float, float)
+        The point's position at the dead centre the stroke is measured from [m].
+    away : (float, float)
+        Unit vector along the guide from that dead centre into the stroke.
+    length : float
+        The stroke [m] (the distance between the dead centres).
+    out, back : Table, Table or None
+        The force [N] against the displacement [m] (non-periodic tables covering 0 to ``length``).
+    """
+
+    dead_centre: tuple[float, float] = (0.0, 0.0)
+    away: tuple[float, float] = (1.0, 0.0)
+    length: float = 0.0
+    out: Table | None = None
+    back: Table | None = None
+
+    def __post_init__(self):
+        super().__post_init__()
+        what = f"force on link {self.link} at {self.point}"
+        if self.table is not None or self.sense != "fixed" or self.out is None:
+            raise ModelError(f"{what}: a force against the stroke takes its values from its out (and back) tables")
+        if self.force == (0.0, 0.0):
+            raise ModelError(f"{what}: a force against the stroke needs a direction, got a zero vector")
+        for t in (self.out, self.back):
+            if t is not None:
+                check_array(t.value, "force", f"{what}: table")
+
+    @property
+    def varies(self) -> bool:
+        """Always: the force follows the piston's displacement."""
+        return True
+
+
 def spring(links, points, rate: float, free_length: float, *, frame: int = 1, name: str = "",
            active: Active | None = None) -> list[SpringForce]:
     """A linear spring between two points, as the forces it puts on its moving ends.

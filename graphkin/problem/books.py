@@ -8,13 +8,17 @@ boundary, with every error naming the file and the field (``docs/problem-files.m
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass, replace
 
 import numpy as np
 
-from graphkin.kinematics import solve_kinematics
-from graphkin.model import PointForce, Prismatic, Revolute, Table, Torque, spring
+from graphkin.errors import ModelError
+from graphkin.kinematics import decompose, solve_kinematics
+from graphkin.kinematics.structure import Dyad
+from graphkin.model import PointForce, Prismatic, Revolute, StrokeForce, Table, Torque, spring
 from graphkin.problem.problem import Forward
-from graphkin.problem.tables import load_table
+from graphkin.problem.tables import load_table, parse_table
+from graphkin.problem.unknown import Unknown
 
 DEAD_CENTRES = {"inner dead centre": 1, "top dead centre": 1, "outer dead centre": -1, "bottom dead centre": -1}
 """A crank angle's origin in an engine: the crank pointing at the piston (+1) or away from it (−1)."""
@@ -77,28 +81,43 @@ def crank_from_dead_centre(rd, d, mech, q):
     which = d["from"]
     if which not in DEAD_CENTRES:
         raise rd.fail("driver.from", f"must be one of {', '.join(repr(k) for k in DEAD_CENTRES)}, got {which!r}")
+    theta, _ = dead_centre(rd, mech, which, "driver.from")
+    return theta + SENSES_OF_ROTATION[d.get("sense", "counter-clockwise")] * q
+
+
+def piston(rd, mech, field):
+    """The slider-crank of a crank driver: (the piston's pin joint, its guide, the rod's link, r, l, β)."""
     crank = mech.driver.link
     frame = mech.frame
     why = ("a dead centre belongs to a slider-crank: the crank pinned to the frame and to a connecting rod, whose "
            "other pin is the point of a piston that runs on a guide of the frame")
+    if not mech.driver.crank:
+        raise rd.fail(field, why + " (here the driver is a slider)")
     pivot = mech.joint_between(frame, crank)
     rods = [j for j in mech.joints_of(crank) if isinstance(j, Revolute) and frame not in j.links]
     if not isinstance(pivot, Revolute) or len(rods) != 1:
-        raise rd.fail("driver.from", why)
+        raise rd.fail(field, why)
     C = rods[0]
     rod = C.links[0] if C.links[1] == crank else C.links[1]
     pins = [j for j in mech.joints_of(rod) if isinstance(j, Revolute) and crank not in j.links]
     guides = [(j, g) for j in pins for g in mech.joints_of(j.links[0] if j.links[1] == rod else j.links[1])
               if isinstance(g, Prismatic) and g.guide == frame and g.point == j.point]
     if len(guides) != 1:
-        raise rd.fail("driver.from", why)
+        raise rd.fail(field, why)
     P, guide = guides[0]
+    return pivot, C, rod, P, guide
+
+
+def dead_centre(rd, mech, which, field):
+    """A dead centre of the crank driver's slider-crank: (the crank angle θ there, the piston pin's position)."""
+    crank = mech.driver.link
+    pivot, C, rod, P, guide = piston(rd, mech, field)
     link_c, link_r = mech.link(crank), mech.link(rod)
     (ox, oy), (cx, cy) = link_c.point(pivot.point), link_c.point(C.point)
     r, beta = math.hypot(cx - ox, cy - oy), math.atan2(cy - oy, cx - ox)
     (ax, ay), (bx, by) = link_r.point(C.point), link_r.point(P.point)
     l = math.hypot(bx - ax, by - ay)
-    f = mech.link(frame)
+    f = mech.link(mech.frame)
     O, T = complex(*f.point(pivot.point)), complex(*f.point(guide.through))
     u = complex(math.cos(guide.direction), math.sin(guide.direction))
     reach = r + l if DEAD_CENTRES[which] > 0 else l - r
@@ -106,19 +125,16 @@ def crank_from_dead_centre(rd, d, mech, q):
     b = (w * u.conjugate()).real
     disc = b * b - abs(w) ** 2 + reach * reach
     if disc < 0:
-        raise rd.fail("driver.from", f"the piston's guide passes {abs((w * u.conjugate()).imag) * 1e3:.6g} mm from the "
+        raise rd.fail(field, f"the piston's guide passes {abs((w * u.conjugate()).imag) * 1e3:.6g} mm from the "
                       f"crank's pivot, farther than {reach * 1e3:.6g} mm: this slider-crank has no {which}")
-    candidates = []
     for t in (-b + math.sqrt(disc), -b - math.sqrt(disc)):
         X = T + t * u
         # The crank points at the piston at the inner dead centre, away from it at the outer one.
         theta = float(np.angle((X - O) * DEAD_CENTRES[which])) - beta
         kin = solve_kinematics(mech, [theta], 0.0, 0.0)
         if kin.valid[0] and abs(complex(*kin.position(rod, P.point)[0]) - X) <= 1e-6 * (r + l):
-            candidates.append(theta)
-    if not candidates:
-        raise rd.fail("driver.from", f"the mechanism cannot be assembled at its {which}")
-    return candidates[0] + SENSES_OF_ROTATION[d.get("sense", "counter-clockwise")] * q
+            return theta, X
+    raise rd.fail(field, f"the mechanism cannot be assembled at its {which}")
 
 
 def placed(rd, d, mech):
@@ -129,6 +145,26 @@ def placed(rd, d, mech):
         raise rd.fail("driver.place.link", f"must be a moving link other than the slider "
                       f"({', '.join(str(n) for n in mech.moving if n != mech.driver.link)}), got {link!r}")
     target = rd.si(rd.need(t, "theta", "driver.place"), "angle", "driver.place.theta")
+    roots = _placements(mech, link, target)
+    if not roots:
+        # Not on the file's branch: say which other branch has it, so the book's figure can be matched.
+        for key in sorted({g.key for g in decompose(mech) if isinstance(g, Dyad)}):
+            other = replace(mech, assembly={**mech.assembly, key: -mech.assembly.get(key, 1)})
+            found = _placements(other, link, target)
+            if found:
+                raise rd.fail("driver.place.theta", f"link {link} never stands at {t['theta']!r} on the branch the "
+                              f"file assembles, but does on the other branch at {key} (s = "
+                              + ", ".join(f"{x * 1e3:.6g} mm" for x in found)
+                              + f"): add [assembly] {key} = {-mech.assembly.get(key, 1)} if the book's figure is that one")
+        raise rd.fail("driver.place.theta", f"link {link} never stands at {t['theta']!r} as the slider moves")
+    if len(roots) > 1:
+        raise rd.fail("driver.place.theta", f"link {link} stands at {t['theta']!r} at more than one slider position ("
+                      + ", ".join(f"s = {x * 1e3:.6g} mm" for x in roots) + "): give the one the book means as s")
+    return np.array(roots)
+
+
+def _placements(mech, link, target) -> list[float]:
+    """The slider positions s [m] at which ``link`` stands at ``target`` [rad], on the mechanism's assembly branch."""
     # The slider's reach: a few times the mechanism's size either way, sampled finely, then Newton on θ(s).
     size = max([math.hypot(x1 - x0, y1 - y0) for k in mech.links for (x0, y0) in k.points.values()
                 for (x1, y1) in k.points.values()] + [1e-3])
@@ -152,13 +188,7 @@ def placed(rd, d, mech):
         kx = solve_kinematics(mech, [x], 1.0, 0.0)
         if kx.valid[0] and abs(np.angle(np.exp(1j * (kx.theta[link][0] - target)))) <= 1e-12:
             roots.append(x)
-    roots = [x for k, x in enumerate(sorted(roots)) if k == 0 or x - sorted(roots)[k - 1] > 1e-9 * size]
-    if not roots:
-        raise rd.fail("driver.place.theta", f"link {link} never stands at {t['theta']!r} as the slider moves")
-    if len(roots) > 1:
-        raise rd.fail("driver.place.theta", f"link {link} stands at {t['theta']!r} at more than one slider position ("
-                      + ", ".join(f"s = {x * 1e3:.6g} mm" for x in roots) + "): give the one the book means as s")
-    return np.array(roots)
+    return [x for k, x in enumerate(sorted(roots)) if k == 0 or x - sorted(roots)[k - 1] > 1e-9 * size]
 
 
 def pressure(rd, t, where, link, driver_kind, active, name):
@@ -192,9 +222,107 @@ def pressure(rd, t, where, link, driver_kind, active, name):
         p = rd.si(t["pressure"], "pressure", f"{where}.pressure")
         F = push * (p * area[side] - back * area[other])
         return PointForce(link, point, (F * u[0], F * u[1]), active, name)
+    if stroke_table(t):
+        return _stroke_pressure(rd, t, where, link, point, u, active, name, push, area[side], back * area[other],
+                                driver_kind)
+    if "from" in t:
+        raise rd.fail(f"{where}.from", "names the dead centre a stroke table measures the piston's displacement from; "
+                      "this table is against the " + ("crank angle" if driver_kind == "crank" else "slider's position"))
     table = load_table(rd, t, where, "pressure", driver_kind)
     value = push * (table.value * area[side] - back * area[other])
     return PointForce(link, point, u, active, name, Table(table.q, value, table.periodic, table.source))
+
+
+def stroke_table(t) -> bool:
+    """Whether a pressure's table (inline) is against the piston's displacement: its header starts with stroke."""
+    text = t.get("table")
+    if not isinstance(text, str):
+        return False
+    head = next((line for line in text.splitlines() if line.strip() and not line.lstrip().startswith("#")), "")
+    return head.lstrip().lower().startswith("stroke")
+
+
+@dataclass(frozen=True)
+class PendingStroke:
+    """A pressure against the stroke, read before the mechanism is built: its dead centre is found afterwards
+    (:func:`resolve_strokes`)."""
+
+    where: str
+    link: int
+    point: str
+    force: tuple[float, float]
+    active: object
+    name: str
+    which: str
+    stroke: np.ndarray
+    out: np.ndarray
+    back: np.ndarray | None
+
+
+def _stroke_pressure(rd, t, where, link, point, u, active, name, push, area, back_force, driver_kind):
+    """An indicator diagram against the piston's displacement from a dead centre (columns stroke, pressure and an
+    optional return: the pressure while the piston comes back)."""
+    field = f"{where}.table"
+    if driver_kind != "crank":
+        raise rd.fail(field, "a table against the stroke belongs to a crank-driven engine; with a slider driver give "
+                      "it against the slider's position (position [mm], pressure [...])")
+    which = t.get("from", "inner dead centre")
+    if which not in DEAD_CENTRES:
+        raise rd.fail(f"{where}.from", f"must be one of {', '.join(repr(k) for k in DEAD_CENTRES)}, got {which!r}")
+    head = next(line for line in t["table"].splitlines() if line.strip() and not line.lstrip().startswith("#"))
+    columns = {"stroke": "length", "pressure": "pressure"}
+    if head.count(",") >= 2 or head.count(";") >= 2 or head.count("\t") >= 2:
+        columns["return"] = "pressure"
+    cols = parse_table(t["table"], columns, file=rd.file, field=field, decimal=rd.decimal(t, where))
+    s = cols["stroke"]
+    if (np.diff(s) < 0).any() or s[0] < 0:
+        raise rd.fail(field, "the stroke column is the piston's displacement from the dead centre: from 0 up, "
+                      "ascending")
+
+    def force(p):
+        return push * (p * area - back_force)
+
+    return PendingStroke(where, link, point, u, active, name, which, s, force(cols["pressure"]),
+                         force(cols["return"]) if "return" in cols else None)
+
+
+def resolve_strokes(rd, mech, loads, moves):
+    """The loads with each pressure against the stroke made a :class:`StrokeForce` on the mechanism's piston."""
+    out = []
+    for ld in loads:
+        if not isinstance(ld, PendingStroke):
+            out.append(ld)
+            continue
+        field = f"{ld.where}.from"
+        guide = piston(rd, mech, field)[4]
+        slider = guide.slider
+        if ld.link != slider:
+            raise rd.fail(f"{ld.where}.link", f"a pressure against the stroke acts on the piston, link {slider}, "
+                          f"got {ld.link}")
+        theta, X = dead_centre(rd, mech, ld.which, field)
+        other = "outer dead centre" if DEAD_CENTRES[ld.which] > 0 else "inner dead centre"
+        _, Y = dead_centre(rd, mech, other, field)
+        length = abs(Y - X)
+        away = (Y - X) / length
+        # Where the load's own point is at the dead centre (any point of the piston: it only slides).
+        kin = solve_kinematics(mech, [theta], 0.0, 0.0)
+        Z = complex(*kin.position(ld.link, ld.point)[0])
+        if ld.stroke[-1] < length * (1 - 1e-9):
+            raise rd.fail(f"{ld.where}.table", f"covers the stroke to {ld.stroke[-1] * 1e3:.6g} mm; the stroke is "
+                          f"{length * 1e3:.6g} mm: give rows to the end (the other dead centre)")
+        if ld.back is not None and not moves:
+            raise rd.fail(f"{ld.where}.table", "a return column needs the sense of the motion: give driver.omega "
+                          "(a static analysis uses it only for that)")
+        s = np.minimum(ld.stroke, length)
+        try:
+            load = StrokeForce(ld.link, ld.point, ld.force, ld.active, ld.name, dead_centre=(Z.real, Z.imag),
+                               away=(away.real, away.imag), length=length,
+                               out=Table(s, ld.out, periodic=False),
+                               back=None if ld.back is None else Table(s, ld.back, periodic=False))
+        except ModelError as exc:
+            raise rd.fail(f"{ld.where}.table", str(exc).split(": ", 1)[-1]) from None
+        out.append(load)
+    return out
 
 
 def power(rd, t, where, link, active, name, motion):
@@ -236,3 +364,23 @@ def spring_loads(rd, t, where, frame):
     k = rd.si(rd.need(t, "rate", where), "stiffness", f"{where}.rate")
     L0 = rd.si(rd.need(t, "free_length", where), "length", f"{where}.free_length", "length0")
     return spring(links, points, k, L0, frame=frame, name=str(t.get("name", "")))
+
+
+def unknown(rd, value, mech):
+    """``[unknown]``: the link whose effort the book asks for, instead of the driver's (:mod:`.unknown`)."""
+    t = rd.table(value, "unknown", {"link", "name"})
+    link = rd.whole(rd.need(t, "link", "unknown"), "unknown.link")
+    moving = [lk.number for lk in mech.links if lk.number != mech.frame]
+    if link not in moving:
+        raise rd.fail("unknown.link", f"names no moving link (the moving links are {', '.join(map(str, moving))}), "
+                      f"got {link!r}")
+    if link == mech.driver.link:
+        raise rd.fail("unknown.link", f"link {link} is the driver, whose effort graphkin finds anyway: leave out "
+                      "[unknown], or name the link whose torque (or slider force) the book asks for")
+    name = t.get("name", "")
+    if not isinstance(name, str):
+        raise rd.fail("unknown.name", f"must be a string such as \"T4\", got {name!r}")
+    if any(ld.name == name for ld in mech.loads if name) or (not name and any(
+            ld.name == Unknown(link).label(mech) for ld in mech.loads)):
+        raise rd.fail("unknown.name", "a load already has this name: give the unknown another (name = \"T4\")")
+    return Unknown(link, name)

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import math
 import tomllib
+from dataclasses import replace
 from pathlib import Path
 from typing import Any, Mapping
 
@@ -26,7 +27,7 @@ from graphkin.problem.reader import FieldReader
 from graphkin.problem.tables import load_table
 
 _TOP = {"title", "source", "cite", "notes", "analysis", "gravity", "frame", "links", "joints", "driver", "loads", "assembly",
-        "given", "forward"}
+        "given", "forward", "unknown"}
 _ANALYSES = ("dynamic", "static")
 _LINK = {"number", "name", "points", "mass", "G", "I_G", "k", "shape"}
 _JOINT = {
@@ -41,7 +42,7 @@ _DRIVER = {
 _LOAD = {"force": {"type", "link", "point", "force", "direction", "table", "csv", "decimal", "sense", "active", "name"},
          "torque": {"type", "link", "torque", "table", "csv", "decimal", "sense", "active", "name"},
          "pressure": {"type", "link", "point", "bore", "rod", "pressure", "back_pressure", "side", "direction", "table",
-                      "csv", "decimal", "active", "name"},
+                      "csv", "decimal", "active", "name", "from"},
          "power": {"type", "link", "power", "speed", "role", "active", "name"},
          "spring": {"type", "links", "points", "rate", "free_length", "name"}}
 _GIVEN = {"omega", "alpha", "a_G", "v_G", "theta", "points"}
@@ -199,13 +200,19 @@ def build_problem(data: Mapping[str, Any], *, file: str = "<problem>", base: str
         if sigma not in (1, -1) or isinstance(sigma, bool):
             raise rd.fail(f"assembly.{key}", f"must be 1 or -1, got {sigma!r}")
         assembly[key] = sigma
+    # A pressure against the stroke needs the mechanism's dead centres: it joins the loads once they are known.
+    plain = [k for k, ld in enumerate(loads) if not isinstance(ld, books.PendingStroke)]
     try:
-        mech = Mechanism(links, joints, driver, loads, gravity, assembly,
+        mech = Mechanism(links, joints, driver, [loads[k] for k in plain], gravity, assembly,
                          title=str(data.get("title", "")), source=str(data.get("source", "")), frame=frame.number)
+        if len(plain) < len(loads):
+            plain = list(range(len(loads)))
+            mech = replace(mech, loads=tuple(books.resolve_strokes(rd, mech, loads, bool(np.any(q_dot)))))
+            loads = list(mech.loads)
     except ModelError as exc:
         at = exc.at
         if at and at[0] == "loads" and len(at) > 1:
-            at = ("loads", origin[at[1]], *at[2:])
+            at = ("loads", origin[plain[at[1]]], *at[2:])
         raise rd.fail(_field_of(at), str(exc)) from None
     for key in assembly:
         points = {j.point for j in joints if not isinstance(j, GearMesh)}
@@ -237,8 +244,11 @@ def build_problem(data: Mapping[str, Any], *, file: str = "<problem>", base: str
                           + (f"this mechanism's branches are chosen at {', '.join(branches)}" if branches else
                              "this mechanism has no dyad, so no branch to choose: leave out [assembly]"))
     forward = books.forward(rd, data["forward"], kind, q_dot) if "forward" in data else None
+    unknown = books.unknown(rd, data["unknown"], mech) if "unknown" in data else None
+    if unknown is not None and forward is not None:
+        raise rd.fail("unknown", "a forward step needs the driver's effort; with [unknown] the driver carries none")
     return Problem(file, mech, q, q_dot, q_ddot, given, str(data.get("title", "")), str(data.get("source", "")),
-                   str(data.get("notes", "")), analysis, str(data.get("cite", "")), forward)
+                   str(data.get("notes", "")), analysis, str(data.get("cite", "")), forward, unknown)
 
 
 def _list(rd, data, key):

@@ -11,6 +11,7 @@ from graphkin.analytical import solve_forces
 from graphkin.errors import GraphkinError
 from graphkin.kinematics import solve_kinematics
 from graphkin.model import Mechanism, Prismatic
+from graphkin.problem.unknown import Unknown
 from graphkin.ranges import as_array, check, finite
 
 
@@ -81,6 +82,9 @@ class Problem:
         for friction); ``"dynamic"`` (the default) includes them.
     forward : Forward or None
         The forward step the book asks for (the file's ``[forward]``).
+    unknown : Unknown or None
+        The link whose effort the book asks for instead of the driver's (the file's ``[unknown]``,
+        :mod:`graphkin.problem.unknown`).
     """
 
     name: str
@@ -95,6 +99,7 @@ class Problem:
     analysis: str = "dynamic"
     cite: str = ""
     forward: Forward | None = None
+    unknown: Unknown | None = None
 
     @property
     def static(self) -> bool:
@@ -197,4 +202,7 @@ class Problem:
         at : float or array_like, shape (n,), optional
             Input positions θ [rad] or s [m] (see :meth:`kinematics`).
         """
-        return solve_forces(self.kinematics(at))
+        kin = self.kinematics(at)
+        if self.unknown is not None:
+            return self.unknown.solve(kin, solve_forces)
+        return solve_forces(kin)

@@ -13,6 +13,9 @@ command                         data                                text
 ``graphkin cycle``              :func:`cycle_data`                  :func:`format_cycle`
 ``graphkin flywheel``           :func:`flywheel_data`               :func:`format_flywheel`
 ==============================  ==================================  ======================
+
+With ``--units``, :mod:`graphkin.report.in_units` converts the data into the chosen units and states each
+field's unit, and each ``format_X`` takes the same :class:`graphkin.units.systems.UnitSystem`.
 """
 
 from graphkin.report.cycle import DISK_THICKNESS, STEEL, cycle_data, cycle_links, format_cycle

@@ -14,6 +14,7 @@ from graphkin.errors import GraphkinError
 from graphkin.kinematics.points import link_points
 from graphkin.notation import input_text
 from graphkin.report.plain import floats, number, peak
+from graphkin.units.systems import SI, UnitSystem
 
 STEEL = 7850.0
 """Density of steel [kg/m³], for the flywheel disk of the cycle summary."""
@@ -66,10 +67,14 @@ def cycle_links(result: ForceAnalysis) -> dict:
     return out
 
 
-def _where(cycle, q) -> str:
-    """``θ12 = 62°`` for a crank, ``s = 200 mm`` for a slider driver."""
+def _where(cycle, q, u: UnitSystem = SI) -> str:
+    """``θ12 = 62°`` for a crank, ``s = 200 mm`` for a slider driver (in the units of ``u``)."""
     d = cycle.problem.mechanism.driver
-    return input_text(q, d.crank, d.input_symbol, minus="-")
+    if u.is_si or not np.isfinite(q):
+        return input_text(q, d.crank, d.input_symbol, minus="-")
+    kind = "angle" if d.crank else "length"
+    unit = u.symbol(kind)
+    return f"{d.input_symbol or ('θ' if d.crank else 's')} = {u.show(q, kind):.6g}{unit if unit == '°' else ' ' + unit}"
 
 
 def cycle_data(cycle, Cs=None) -> dict:
@@ -159,7 +164,7 @@ def cycle_data(cycle, Cs=None) -> dict:
     }
 
 
-def format_cycle(cycle, data: dict) -> str:
+def format_cycle(cycle, data: dict, units: UnitSystem | None = None) -> str:
     """The text summary of ``graphkin cycle``, with units, from :func:`cycle_data`.
 
     Parameters
@@ -167,70 +172,79 @@ def format_cycle(cycle, data: dict) -> str:
     cycle : graphkin.cycle.Cycle
         The sweep the data was made from.
     data : dict
-        :func:`cycle_data` of it.
+        :func:`cycle_data` of it (SI).
+    units : graphkin.units.systems.UnitSystem, optional
+        The units to print in (``--units``); default SI.
 
     Returns
     -------
     str
         What ``graphkin cycle`` prints.
     """
+    u = SI if units is None else units
     mech = cycle.problem.mechanism
     crank = mech.driver.crank
-    unit = "N·m" if crank else "N"
+    effort = "torque" if crank else "force"
+    unit = u.symbol(effort)
     name = mech.driver.symbol
 
     def at(p):
-        return _where(cycle, p["at"] if p["at"] is not None else float("nan"))
+        return _where(cycle, p["at"] if p["at"] is not None else float("nan"), u)
 
-    def val(x, digits=6):
-        return "—" if x is None else f"{x:.{digits}g}"
+    def val(x, digits=6, kind=None):
+        return "—" if x is None else f"{x if kind is None else u.show(x, kind):.{digits}g}"
 
     q0, q1 = cycle.q[0], cycle.q[-1]
-    span = _where(cycle, q0) + (f" … {_where(cycle, q1).split(' = ')[1]}" if cycle.n > 1 else "")
+    span = _where(cycle, q0, u) + (f" … {_where(cycle, q1, u).split(' = ')[1]}" if cycle.n > 1 else "")
     lines = [f"{cycle.problem.name}: {cycle.problem.title}",
              f"{cycle.n} position{'s' * (cycle.n != 1)}, {span}{' (one full turn)' if cycle.closed else ''}"]
     if crank:
-        lines[-1] += f", ω = {float(np.mean(cycle.q_dot)):.6g} rad/s"
+        lines[-1] += f", ω = {u.show(float(np.mean(cycle.q_dot)), 'angular_velocity'):.6g} {u.symbol('angular_velocity')}"
     ends = switching_angles(cycle.problem)
     if ends:
-        where = ", ".join(_where(cycle, b).split(" = ")[1] for b in ends)
+        where = ", ".join(_where(cycle, b, u).split(" = ")[1] for b in ends)
         how = ("jump (switch on or off, step in a table, or reverse with the motion)"
                if any(ld.varies for ld in cycle.problem.mechanism.loads) else "switch on or off")
         lines.append(f"loads {how} at {where}: each sampled just before and just after")
     e = data["effort"]
     lines += ["", f"Driving {'torque' if crank else 'force'} {name}",
-              f"  peak     {val(e['max']['value'])} {unit} at {at(e['max'])}",
-              f"  lowest   {val(e['min']['value'])} {unit} at {at(e['min'])}",
-              f"  average  {val(e['average'])} {unit}"]
+              f"  peak     {val(e['max']['value'], kind=effort)} {unit} at {at(e['max'])}",
+              f"  lowest   {val(e['min']['value'], kind=effort)} {unit} at {at(e['min'])}",
+              f"  average  {val(e['average'], kind=effort)} {unit}"]
     p = data["power"]
+    W = u.symbol("power")
     lines += ["Input power",
-              f"  peak     {val(p['max']['value'])} W at {at(p['max'])}",
-              f"  lowest   {val(p['min']['value'])} W at {at(p['min'])}"]
+              f"  peak     {val(p['max']['value'], kind='power')} {W} at {at(p['max'])}",
+              f"  lowest   {val(p['min']['value'], kind='power')} {W} at {at(p['min'])}"]
     if p["average"] is not None:
-        lines.append(f"  average  {val(p['average'])} W")
+        lines.append(f"  average  {val(p['average'], kind='power')} {W}")
     lines += ["", "Peak joint forces"]
     width = max(len(k) for k in data["forces"]) if data["forces"] else 3
     for k, f in data["forces"].items():
-        lines.append(f"  {k:<{width}}  {val(f['peak']['value'])} N at {at(f['peak'])}")
+        lines.append(f"  {k:<{width}}  {val(f['peak']['value'], kind='force')} {u.symbol('force')} at {at(f['peak'])}")
     fw = data["flywheel"]
     if fw is not None:
         d = fw["disk"]
-        lines += ["", f"Flywheel (C_s = {fw['Cs']:.6g}, ω_avg = {fw['omega_avg']:.6g} rad/s, Norton §11.11)",
-                  f"  E        {val(fw['E'])} J (largest energy swing)",
-                  f"  I_s      {val(fw['I_s'])} kg·m² (system inertia on the crank shaft)",
-                  f"  disk     radius {d['radius'] * 1e3:.4g} mm, mass {d['mass']:.4g} kg"
-                  f" (assuming solid steel, ρ = {d['density']:g} kg/m³, {d['thickness'] * 1e3:g} mm thick)"]
+        L = u.symbol("length")
+        lines += ["", f"Flywheel (C_s = {fw['Cs']:.6g}, ω_avg = {val(fw['omega_avg'], kind='angular_velocity')} "
+                  f"{u.symbol('angular_velocity')}, Norton §11.11)",
+                  f"  E        {val(fw['E'], kind='energy')} {u.symbol('energy')} (largest energy swing)",
+                  f"  I_s      {val(fw['I_s'], kind='moment_of_inertia')} {u.symbol('moment_of_inertia')} "
+                  "(system inertia on the crank shaft)",
+                  f"  disk     radius {u.show(d['radius'], 'length'):.4g} {L}, mass {u.show(d['mass'], 'mass'):.4g} "
+                  f"{u.symbol('mass')} (assuming solid steel, ρ = {d['density']:g} kg/m³, "
+                  f"{u.show(d['thickness'], 'length'):g} {L} thick)"]
     jfi = data["joint_force_index"]
     lines += ["", "Joint-force index (static, Holte and Chase, Norton §11.12)"]
     if not jfi["defined"]:
         lines.append(f"  undefined: {jfi['reason']}")
     else:
-        u = f" {jfi['units']}" if jfi["units"] else ""
-        lines.append(f"  peak     {val(jfi['peak']['value'])}{u} at {at(jfi['peak'])}"
+        ju = f" {jfi['units']}" if jfi["units"] else ""
+        lines.append(f"  peak     {val(jfi['peak']['value'])}{ju} at {at(jfi['peak'])}"
                      f" (limit {jfi['limit']:g}: {'over' if (jfi['peak']['value'] or 0) > jfi['limit'] else 'within'})")
         if jfi["immovable"]:
             lines.append(f"  immovable at {len(jfi['immovable'])} position(s):")
-            lines += [f"    {_where(cycle, x['at'])}: {x['reason']}" for x in jfi["immovable"][:10]]
+            lines += [f"    {_where(cycle, x['at'], u)}: {x['reason']}" for x in jfi["immovable"][:10]]
             if len(jfi["immovable"]) > 10:
                 lines.append(f"    … and {len(jfi['immovable']) - 10} more (see --json)")
         else:

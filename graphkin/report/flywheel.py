@@ -5,6 +5,7 @@ from __future__ import annotations
 import math
 
 from graphkin.report.plain import floats, number
+from graphkin.units.systems import SI, UnitSystem
 
 
 def flywheel_data(problem, fly) -> dict:
@@ -37,41 +38,61 @@ def flywheel_data(problem, fly) -> dict:
     }
 
 
-def _deg(x) -> str:
-    return "—" if x is None else f"{math.degrees(x):.6g}°"
+def _deg(x, u: UnitSystem = SI) -> str:
+    if x is None:
+        return "—"
+    unit = u.symbol("angle")
+    return f"{u.show(x, 'angle'):.6g}{unit if unit == '°' else ' ' + unit}"
 
 
-def format_flywheel(data: dict) -> str:
-    """The text report of ``graphkin flywheel``, from :func:`flywheel_data`."""
+def format_flywheel(data: dict, units: UnitSystem | None = None) -> str:
+    """The text report of ``graphkin flywheel``, from :func:`flywheel_data` (SI), in ``units`` (default SI)."""
+    u = SI if units is None else units
     w = data["omega_avg"]
+    E, I, Nm = u.symbol("energy"), u.symbol("moment_of_inertia"), u.symbol("torque")
+    w_unit, a_unit = u.symbol("angular_velocity"), u.symbol("angular_acceleration")
+
+    def deg(x):
+        return _deg(x, u)
+
+    def e(x):
+        return u.show(x, "energy")
+
+    wa, wb = max(14, len(E) + 10), max(18, len(E) + 17)  # the columns' widths: their heads fit
     out = [data["title"] or data["problem"]]
     if data["source"]:
         out.append(f"source: {data['source']}")
-    cycle = "one turn" if math.isclose(data["period"], 2 * math.pi) else f"one cycle of {_deg(data['period'])}"
+    cycle = "one turn" if math.isclose(data["period"], 2 * math.pi) else f"one cycle of {deg(data['period'])}"
     out += [f"driving torque T_d: {data['driving']['text']}",
             f"resisting torque T_r: {data['resisting']['text']}",
-            f"over {cycle}: T_avg = {data['T_avg']:.6g} N·m, ω_avg = {w:.6g} rad/s ({w * 30 / math.pi:.6g} rpm)",
+            (f"over {cycle}: T_avg = {u.show(data['T_avg'], 'torque'):.6g} {Nm}, "
+             f"ω_avg = {u.show(w, 'angular_velocity'):.6g} {w_unit}"
+             + (f" ({w * 30 / math.pi:.6g} rpm)" if w_unit != "rpm" else "")),
             "",
             "Energy table (Norton §11.11, Table 11-1): pulses of T_r − T_d between their crossings",
-            f"  {'from':>10}{'to':>11}{'area [J]':>14}{'accumulated [J]':>18}   shaft"]
+            f"  {'from':>10}{'to':>11}{f'area [{E}]':>{wa}}{f'accumulated [{E}]':>{wb}}   shaft"]
     for row in data["table"]:
         sense = "slows" if row["area"] > 0 else "speeds up" if row["area"] < 0 else ""
-        out.append(f"  {_deg(row['from']):>10}{_deg(row['to']):>11}{row['area']:>+14.6g}{row['accumulated']:>+18.6g}   {sense}")
+        out.append(f"  {deg(row['from']):>10}{deg(row['to']):>11}{e(row['area']):>+{wa}.6g}"
+                   f"{e(row['accumulated']):>+{wb}.6g}   {sense}")
     if not data["table"]:
         out.append("  (the torques never cross: the speed is constant)")
-    out.append(f"  E = largest accumulated − smallest (0 included) = {data['E']:.6g} J")
+    out.append(f"  E = largest accumulated − smallest (0 included) = {e(data['E']):.6g} {E}")
     out.append("")
+    i_s = u.show(data["I_s"], "moment_of_inertia")
     if data["given"] == "Cs":
-        out.append(f"Flywheel for C_s = {data['Cs']:.6g}: I_s = E / (C_s ω_avg²) = {data['I_s']:.6g} kg·m² "
+        out.append(f"Flywheel for C_s = {data['Cs']:.6g}: I_s = E / (C_s ω_avg²) = {i_s:.6g} {I} "
                    "(system inertia on the shaft)")
     else:
-        out.append(f"With I_s = {data['I_s']:.6g} kg·m² on the shaft: C_s = E / (I_s ω_avg²) = {data['Cs']:.6g}")
+        out.append(f"With I_s = {i_s:.6g} {I} on the shaft: C_s = E / (I_s ω_avg²) = {data['Cs']:.6g}")
     sp = data["speed"]
-    out.append(f"  ω_max = {sp['max']['value']:.6g} rad/s at θ = {_deg(sp['max']['at'])} (after the largest energy "
+    w_max, w_min = (u.show(sp[k]["value"], "angular_velocity") for k in ("max", "min"))
+    out.append(f"  ω_max = {w_max:.6g} {w_unit} at θ = {deg(sp['max']['at'])} (after the largest energy "
                "returned to the shaft)")
-    out.append(f"  ω_min = {sp['min']['value']:.6g} rad/s at θ = {_deg(sp['min']['at'])} (after the largest energy "
+    out.append(f"  ω_min = {w_min:.6g} {w_unit} at θ = {deg(sp['min']['at'])} (after the largest energy "
                "taken from it)")
     ac = data["acceleration"]
-    out.append(f"  α = (T_d − T_r)/I_s: largest {ac['max']['value']:.6g} rad/s² at θ = {_deg(ac['max']['at'])}, "
-               f"smallest {ac['min']['value']:.6g} rad/s² at θ = {_deg(ac['min']['at'])}")
+    a_max, a_min = (u.show(ac[k]["value"], "angular_acceleration") for k in ("max", "min"))
+    out.append(f"  α = (T_d − T_r)/I_s: largest {a_max:.6g} {a_unit} at θ = {deg(ac['max']['at'])}, "
+               f"smallest {a_min:.6g} {a_unit} at θ = {deg(ac['min']['at'])}")
     return "\n".join(out)

@@ -20,6 +20,7 @@ from graphkin.kinematics.points import link_points
 from graphkin.model import PointForce
 from graphkin.notation import PICOMETRE, RESIDUE, input_text, largest, num, unless_rounding
 from graphkin.report.polygons import graphical_kinematics_data
+from graphkin.units.systems import SI, UnitSystem
 
 
 def _vec(v):
@@ -130,7 +131,11 @@ def _graphical(result: ForceAnalysis, c, i) -> dict:
         # Relative to the force itself, or to the largest force when it is ~0.
         diff[result.name_of(a, b)] = float(np.hypot(*(G - A)) / max(float(np.hypot(*A)), 1e-12 * scale))
     eff = result.effort[i]
-    diff[result.driver_name] = float(abs(c.effort - eff) / max(abs(eff), 1e-300)) if eff else float(abs(c.effort))
+    # An effort that is rounding beside the forces (T12 where [unknown] balances the driver) is compared as 0.
+    # It is measured against the largest force (times the mechanism's size for a torque), as cross_check does.
+    arm = scale * (_size(result.mechanism) if result.mechanism.driver.crank else 1.0)
+    den = abs(eff) if abs(eff) > RESIDUE * arm else arm
+    diff[result.driver_name] = float(abs(c.effort - eff) / max(den, 1e-300)) if eff else float(abs(c.effort))
     subproblems = []
     for sp in c.subproblems:
         sub_forces = {}
@@ -195,6 +200,8 @@ def solution(problem, result: ForceAnalysis, graphical: list | None = None, kine
     applied = _applied(kin)
     forward = getattr(problem, "forward", None)
     step = forward.step(result.effort, kin.q_dot) if forward is not None else None
+    unknown = getattr(problem, "unknown", None)
+    found = unknown.values(result) if unknown is not None else None
     for i in range(result.n):
         entry = {
             "index": i,
@@ -240,6 +247,10 @@ def solution(problem, result: ForceAnalysis, graphical: list | None = None, kine
                          loads=[_load_entry(ld, value[i]) for ld, value in applied])
             if step is not None:
                 entry["forward"] = {"I": forward.I, **{key: float(v[i]) for key, v in step.items()}}
+            if found is not None:
+                kind = "torque" if unknown.guide(mech) is None else "force"
+                entry["unknown"] = {"name": unknown.label(mech), "link": unknown.link, "kind": kind,
+                                    "value": float(found[i])}
         if graphical is not None:
             entry["graphical"] = _graphical(result, graphical[i], i)
         if kinematic is not None:
@@ -271,19 +282,33 @@ def _given(kin) -> list:
     return out
 
 
-def _given_text(given) -> list[str]:
-    units = {"omega": ("ω", "rad/s"), "alpha": ("α", "rad/s²"), "a_G": ("a_G", "m/s²"), "v_G": ("v_G", "m/s")}
+def _given_text(given, u: UnitSystem = SI) -> list[str]:
+    kinds = {"omega": ("ω", "angular_velocity"), "alpha": ("α", "angular_acceleration"), "a_G": ("a_G", "acceleration"),
+             "v_G": ("v_G", "velocity")}
     out = []
     for g in given:
         n, v = g["name"], g["value"]
         if n == "theta":
-            out.append(f"θ{g['link']} = {math.degrees(v):.6g}°")
+            out.append(f"θ{g['link']} = {u.show(v, 'angle'):.6g}{_angle_unit(u)}")
         elif n == "point":
-            out.append(f"{g['point']} on link {g['link']} at ({v[0] * 1e3:.6g}, {v[1] * 1e3:.6g}) mm")
+            x, y = (u.show(c, "length") for c in v)
+            out.append(f"{g['point']} on link {g['link']} at ({x:.6g}, {y:.6g}) {u.symbol('length')}")
         else:
-            sym, unit = units[n]
-            out.append(f"{sym}{g['link']} = " + (polar_text(v, unit) if isinstance(v, list) else f"{v:.6g} {unit}"))
+            sym, kind = kinds[n]
+            out.append(f"{sym}{g['link']} = " + (_polar(v, kind, u) if isinstance(v, list)
+                                                  else f"{u.show(v, kind):.6g} {u.symbol(kind)}"))
     return out
+
+
+def _angle_unit(u: UnitSystem) -> str:
+    """An angle's unit as printed after its number: ``°`` right after it, any other after a space."""
+    return u.symbol("angle") if u.symbol("angle") == "°" else f" {u.symbol('angle')}"
+
+
+def _polar(v, kind: str, u: UnitSystem, digits: int = 4, scale: float = 0.0) -> str:
+    """A vector of ``kind`` (SI) as ``u`` prints it: ``27.06 lbf ∠ -73.78°`` (``scale``: an SI force)."""
+    k = u.scales[kind]
+    return polar_text([k * v[0], k * v[1]], u.symbol(kind), digits, scale=k * scale)
 
 
 def polar_text(v, unit="N", digits=4, scale=0.0) -> str:
@@ -291,19 +316,26 @@ def polar_text(v, unit="N", digits=4, scale=0.0) -> str:
     return notation.polar_text(v, unit, digits, scale=scale, minus="-")
 
 
-def _mm(x) -> str:
-    """A length [m] in mm, a rounding residue below a picometre shown as 0."""
-    return num(x * 1e3, minus="-", zero=PICOMETRE * 1e3)
+def _mm(x, u: UnitSystem = SI) -> str:
+    """A length [m] in the report's unit (mm in SI), a rounding residue below a picometre shown as 0."""
+    k = u.scales["length"]
+    return num(x * k, minus="-", zero=PICOMETRE * k)
 
 
-def _input_text(entry, crank, static=False):
+def _input_text(entry, crank, static=False, u: UnitSystem = SI):
     q = entry["input"]
+    if u.is_si:
+        where = input_text(q["value"], crank, minus="-")
+    elif crank:
+        where = f"θ = {num(u.show(q['value'], 'angle'), 6, minus='-')}{_angle_unit(u)}"
+    else:
+        where = f"s = {num(u.show(q['value'], 'length'), 6, minus='-')} {u.symbol('length')}"
     if static:
         # Only the position matters; a rate, if the file gives one, only sets the sense of sliding for friction.
-        return input_text(q["value"], crank, minus="-")
-    rates = ("ω", "rad/s", "α", "rad/s²") if crank else ("v", "m/s", "a", "m/s²")
-    return (f"{input_text(q['value'], crank, minus='-')}, {rates[0]} = {q['rate']:.6g} {rates[1]}, "
-            f"{rates[2]} = {q['rate2']:.6g} {rates[3]}")
+        return where
+    kinds = ("ω", "angular_velocity", "α", "angular_acceleration") if crank else ("v", "velocity", "a", "acceleration")
+    return (f"{where}, {kinds[0]} = {u.show(q['rate'], kinds[1]):.6g} {u.symbol(kinds[1])}, "
+            f"{kinds[2]} = {u.show(q['rate2'], kinds[3]):.6g} {u.symbol(kinds[3])}")
 
 
 def _applied(kin) -> list:
@@ -322,21 +354,24 @@ def _load_entry(load, value) -> dict:
     return out
 
 
-def _loads_text(entry) -> list[str]:
+def _loads_text(entry, u: UnitSystem = SI) -> list[str]:
     """The external loads at one position, as the text report prints them."""
     lines = []
+    N, Nm = u.symbol("force"), u.symbol("torque")
     for ld in entry.get("loads", []):
         name = ld["name"] or ("P" if "force" in ld else "T")
         if "force" in ld:
-            value = polar_text(ld["force"]) if ld["acting"] else "0 N (not acting here)"
+            value = _polar(ld["force"], "force", u) if ld["acting"] else f"0 {N} (not acting here)"
             lines.append(f"    {name:<5} on link {ld['link']} at {ld['point']}: {value}")
         else:
-            value = f"{num(ld['torque'], minus='-')} N·m" if ld["acting"] else "0 N·m (not acting here)"
+            value = (f"{num(u.show(ld['torque'], 'torque'), minus='-')} {Nm}" if ld["acting"]
+                     else f"0 {Nm} (not acting here)")
             lines.append(f"    {name:<5} on link {ld['link']}: {value}")
     return (["  External loads"] + lines) if lines else []
 
 
-def format_solution(problem, result: ForceAnalysis, graphical: list | None = None) -> str:
+def format_solution(problem, result: ForceAnalysis, graphical: list | None = None,
+                    units: UnitSystem | None = None) -> str:
     """The solution as text with textbook units (mm, degrees, N, N·m); both routes when ``graphical`` is given.
 
     Parameters
@@ -347,12 +382,17 @@ def format_solution(problem, result: ForceAnalysis, graphical: list | None = Non
         Its analytical solution.
     graphical : list of Construction, optional
         The graphical route per position (:func:`constructions`).
+    units : graphkin.units.systems.UnitSystem, optional
+        The units to print in (``--units``); default SI: mm, degrees, N, N·m, rad/s. The graphical route's
+        step captions and its polygon scale stay in SI (they describe a drawing made in N and mm).
 
     Returns
     -------
     str
         What ``graphkin solve`` prints.
     """
+    u = SI if units is None else units
+    N, Nm, L = u.symbol("force"), u.symbol("torque"), u.symbol("length")
     data = solution(problem, result, graphical)
     crank = data["driver"]["kind"] == "crank"
     mech = result.mechanism
@@ -367,69 +407,88 @@ def format_solution(problem, result: ForceAnalysis, graphical: list | None = Non
         out.append("analysis: static (no inertia loads: the links carry their external loads"
                    + (" and weights" if mech.gravity else "") + " only)")
     if data["given"]:
-        out.append("given (instead of derived): " + "; ".join(_given_text(data["given"])))
+        out.append("given (instead of derived): " + "; ".join(_given_text(data["given"], u)))
     for entry in data["positions"]:
         out.append("")
-        out.append(f"Position {entry['index'] + 1} of {len(data['positions'])}: {_input_text(entry, crank, static)}")
+        out.append(f"Position {entry['index'] + 1} of {len(data['positions'])}: {_input_text(entry, crank, static, u)}")
         if not entry["valid"]:
             out.append(f"  no solution: {entry['reason']}")
             continue
         if static:
             out.append("  Positions")
-            out.append(f"    {'link':<6}{'θ [deg]':>10}")
+            out.append(f"    {'link':<6}{_head('θ', 'angle', u):>10}")
             for link, s in entry["links"].items():
-                out.append(f"    {link:<6}{math.degrees(s['theta']):>10.3f}")
+                out.append(f"    {link:<6}{u.show(s['theta'], 'angle'):>10.3f}")
         else:
             out.append("  Kinematics")
-            out.append(f"    {'link':<6}{'θ [deg]':>10}{'ω [rad/s]':>12}{'α [rad/s²]':>13}   a_G [m/s²]")
+            out.append(f"    {'link':<6}{_head('θ', 'angle', u):>10}{_head('ω', 'angular_velocity', u):>12}"
+                       f"{_head('α', 'angular_acceleration', u):>13}   {_head('a_G', 'acceleration', u)}")
             for link, s in entry["links"].items():
-                out.append(f"    {link:<6}{math.degrees(s['theta']):>10.3f}{s['omega']:>12.4f}{s['alpha']:>13.4f}   "
-                           f"{polar_text(s['a_G'], 'm/s²')}")
+                out.append(f"    {link:<6}{u.show(s['theta'], 'angle'):>10.3f}{u.show(s['omega'], 'angular_velocity'):>12.4f}"
+                           f"{u.show(s['alpha'], 'angular_acceleration'):>13.4f}   {_polar(s['a_G'], 'acceleration', u)}")
             out.append("  Inertia loads (d'Alembert: F_i = −m a_G at G, T_i = −I_G α, h = |T_i|/|F_i|)")
         for link, s in ([] if static else entry["links"].items()):
             if mech.link(int(link)).mass == 0:
                 out.append(f"    link {link}: massless")
                 continue
-            h = "—" if s["h"] is None else f"{_mm(s['h'])} mm"
+            h = "—" if s["h"] is None else f"{_mm(s['h'], u)} {L}"
             T = s["inertia_torque"]
             sense = "CCW" if T > 0 else "CW" if T < 0 else ""
             if abs(T) <= PICOMETRE * math.hypot(*s["inertia_force"]):
                 T, sense = 0.0, ""  # rounding: the resultant passes through G (h under a picometre)
-            out.append(f"    link {link}: F_i = {polar_text(s['inertia_force'])}   T_i = {num(T, minus='-')} N·m {sense}   "
-                       f"h = {h}")
-        out.extend(_loads_text(entry))
+            out.append(f"    link {link}: F_i = {_polar(s['inertia_force'], 'force', u)}   "
+                       f"T_i = {num(u.show(T, 'torque'), minus='-')} {Nm} {sense}   h = {h}")
+        out.extend(_loads_text(entry, u))
         out.append("  Joint forces")
         biggest = largest(entry["forces"].values())  # what a force or torque here is rounding beside
         for a, b in result.forces:
             name, back = result.name_of(a, b), result.name_of(b, a)
             F = entry["forces"][name]
-            out.append(f"    {name:<5} = ({F[0]:>10.4f}, {F[1]:>10.4f}) N = {polar_text(F, scale=biggest):<24} "
+            Fx, Fy = (u.show(c, "force") for c in F)
+            out.append(f"    {name:<5} = ({Fx:>10.4f}, {Fy:>10.4f}) {N} = {_polar(F, 'force', u, scale=biggest):<24} "
                        f"{back} = −{name}")
             if name in entry["prismatic"]:
                 s = entry["prismatic"][name]
                 floor = RESIDUE * biggest
                 where = ("—" if s["offset"] is None or abs(s["normal"]) <= floor else
-                         f"{_mm(s['offset'])} mm from {s['slider_point']} along the guide")
-                out.append(f"          normal {num(s['normal'], minus='-', zero=floor)} N, "
-                           f"friction {num(s['friction'], minus='-', zero=floor)} N, line acts {where}")
+                         f"{_mm(s['offset'], u)} {L} from {s['slider_point']} along the guide")
+                k = u.scales["force"]
+                out.append(f"          normal {num(k * s['normal'], minus='-', zero=k * floor)} {N}, "
+                           f"friction {num(k * s['friction'], minus='-', zero=k * floor)} {N}, line acts {where}")
         d = entry["driver"]
         if crank:
             T = unless_rounding(d["value"], biggest)  # 0 at a dead centre
             sense = "CCW" if T > 0 else "CW" if T < 0 else ""
-            out.append(f"  Driver: {d['name']} = {T:.4f} N·m {sense}".rstrip())  # no sense at a dead centre
+            out.append(f"  Driver: {d['name']} = {u.show(T, 'torque'):.4f} {Nm} {sense}".rstrip())  # none at a dead centre
             if "forward" in entry:
                 f = entry["forward"]
-                out.append(f"  Forward step: I α = T_driving + T_resisting (CCW positive), I = {f['I']:.6g} kg·m²: "
-                           f"T_driving = −{d['name']} = {num(f['T_driving'], minus='-')} N·m, T_resisting = "
-                           f"{num(f['T_resisting'], minus='-')} N·m, α = {num(f['alpha'], minus='-')} rad/s²")
+                out.append(f"  Forward step: I α = T_driving + T_resisting (CCW positive), "
+                           f"I = {u.show(f['I'], 'moment_of_inertia'):.6g} {u.symbol('moment_of_inertia')}: "
+                           f"T_driving = −{d['name']} = {num(u.show(f['T_driving'], 'torque'), minus='-')} {Nm}, "
+                           f"T_resisting = {num(u.show(f['T_resisting'], 'torque'), minus='-')} {Nm}, "
+                           f"α = {num(u.show(f['alpha'], 'angular_acceleration'), minus='-')} "
+                           f"{u.symbol('angular_acceleration')}")
         else:
-            out.append(f"  Driver: {d['name']} = {polar_text(d['vector'])} ({d['value']:.4f} N along the guide)")
+            out.append(f"  Driver: {d['name']} = {_polar(d['vector'], 'force', u)} "
+                       f"({u.show(d['value'], 'force'):.4f} {N} along the guide)")
+        if "unknown" in entry:
+            k = entry["unknown"]
+            x = u.show(k["value"], k["kind"])
+            sense = ("CCW" if x > 0 else "CW" if x < 0 else "") if k["kind"] == "torque" else "along the guide"
+            out.append(f"  Unknown effort (asked): {k['name']} = {x:.4f} {u.symbol(k['kind'])} {sense} on link "
+                       f"{k['link']}, balancing the given loads ({d['name']} is then 0)")
         if "graphical" in entry:
-            out.extend(_format_graphical(entry, crank))
+            out.extend(_format_graphical(entry, crank, u))
     return "\n".join(out)
 
 
-def _format_subproblems(entry, crank) -> list[str]:
+def _head(symbol: str, kind: str, u: UnitSystem) -> str:
+    """A table column's head, ``θ [deg]`` or ``ω [rpm]``."""
+    unit = "deg" if u.symbol(kind) == "°" else u.symbol(kind)
+    return f"{symbol} [{unit}]"
+
+
+def _format_subproblems(entry, crank, u: UnitSystem = SI) -> list[str]:
     """The superposition as a table: each sub-problem's readings and driving effort, then their sum."""
     g = entry["graphical"]
     subs = g.get("subproblems") or []
@@ -443,31 +502,35 @@ def _format_subproblems(entry, crank) -> list[str]:
     names = [name for name in g["relative_difference"] if name != g["driver"]["name"]]
     biggest = largest(entry["forces"].values())
     for name in names:
-        cells = "".join(f"{polar_text(sp['forces'][name], scale=biggest):>{width}}" for sp in subs)
-        out.append(f"    {name:<7}{cells}{polar_text(g['forces'][name], scale=biggest):>{width}}")
-    name, unit = g["driver"]["name"], "N·m" if crank else "N"
-    cells = "".join(f"{sp['driver']['value']:>{width - 4}.4f} {unit:<3}" for sp in subs)
-    out.append(f"    {name:<7}{cells}{g['driver']['value']:>{width - 4}.4f} {unit:<3}")
+        cells = "".join(f"{_polar(sp['forces'][name], 'force', u, scale=biggest):>{width}}" for sp in subs)
+        out.append(f"    {name:<7}{cells}{_polar(g['forces'][name], 'force', u, scale=biggest):>{width}}")
+    name, kind = g["driver"]["name"], "torque" if crank else "force"
+    unit = u.symbol(kind)
+    cells = "".join(f"{u.show(sp['driver']['value'], kind):>{width - 4}.4f} {unit:<3}" for sp in subs)
+    out.append(f"    {name:<7}{cells}{u.show(g['driver']['value'], kind):>{width - 4}.4f} {unit:<3}")
     return out
 
 
-def _format_graphical(entry, crank) -> list[str]:
+def _format_graphical(entry, crank, u: UnitSystem = SI) -> list[str]:
     g = entry["graphical"]
     out = ["  Graphical route (force polygons)"]
     if not g["valid"]:
         return out + [f"    cannot close: {g['reason']}"]
+    if not u.is_si:
+        out.append("    (the construction is drawn in N and mm: its steps and its scale are in SI)")
     out += [f"    {k + 1}. {s['caption']}" for k, s in enumerate(g["steps"])]
     out.append(f"    polygon scale: {g['force_scale_N_per_mm']:g} N per mm")
-    out += _format_subproblems(entry, crank)
+    out += _format_subproblems(entry, crank, u)
     out.append(f"    {'force':<6}{'analytical':>26}{'graphical':>26}{'rel. diff':>11}")
     biggest = largest(entry["forces"].values())
     for name, rel in g["relative_difference"].items():
         if name == g["driver"]["name"]:
-            unit = "N·m" if crank else "N"
-            a, c = (unless_rounding(x, biggest) for x in (entry["driver"]["value"], g["driver"]["value"]))
+            kind = "torque" if crank else "force"
+            unit = u.symbol(kind)
+            a, c = (u.show(unless_rounding(x, biggest), kind) for x in (entry["driver"]["value"], g["driver"]["value"]))
             out.append(f"    {name:<6}{a:>22.4f} {unit:<3}{c:>22.4f} {unit:<3}{rel:>11.1e}")
         else:
-            out.append(f"    {name:<6}{polar_text(entry['forces'][name], scale=biggest):>26}"
-                       f"{polar_text(g['forces'][name], scale=biggest):>26}{rel:>11.1e}")
+            out.append(f"    {name:<6}{_polar(entry['forces'][name], 'force', u, scale=biggest):>26}"
+                       f"{_polar(g['forces'][name], 'force', u, scale=biggest):>26}{rel:>11.1e}")
     out += [f"    warning: {w}" for w in g["warnings"]]
     return out

@@ -37,6 +37,7 @@ every check that fails, goes through pint.
 :mod:`.checks`             which units a dimension accepts, and the slips refused
 :mod:`.convert`            :func:`to_si`, :func:`to_si_vector`, :func:`to_si_array`
 :mod:`.format`             :func:`format_si`
+:mod:`.systems`            the units a report prints in (``--units SI|US|FILE``)
 =========================  ============================================================
 
 Rules (every violation raises :class:`graphkin.errors.ProblemFileError`

@@ -48,3 +48,25 @@ def test_graphkin_is_the_method_with_the_exact_arm():
     assert T == pytest.approx(torque(OM_EXACT), rel=1e-9)
     assert abs(T - 6110.0) <= abs(torque(OM_APPROX) - torque(OM_EXACT)) + 1.0
     assert cross_check(r, constructions(r)).valid.all()
+
+
+def test_reported_in_us_units_it_is_the_books_torque_in_lb_ft(capsys):
+    """``graphkin solve engine_inch_bevan --units US``: the torque in lbf·ft as the book prints it, and the steam
+    force in lbf; the same deviation from the printed 6110 as above (the approximate arm, then floor)."""
+    import json
+
+    from graphkin.cli import main
+
+    assert main(["solve", "engine_inch_bevan", "--units", "US", "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert data["units"]["positions[].driver.value"] == "lbf*ft"
+    assert data["units"]["positions[].loads[].force"] == "lbf"
+    entry = data["positions"][0]
+    T = -entry["driver"]["value"]  # the torque exerted on the crankshaft, lb·ft
+    assert T == pytest.approx(torque(OM_EXACT), rel=1e-9)
+    assert abs(T - 6110.0) <= abs(torque(OM_APPROX) - torque(OM_EXACT)) + 1.0
+    assert -entry["loads"][0]["force"][0] == pytest.approx(F, rel=1e-12)  # lbf, P1 A − P2 (A − a)
+    assert main(["solve", "engine_inch_bevan", "--units", "US"]) == 0
+    text = capsys.readouterr().out
+    assert f"Driver: T12 = {-torque(OM_EXACT):.4f} lbf·ft CW" in text
+    assert f"F (steam) on link 4 at P: {F:.4g} lbf ∠ 180.00°" in text

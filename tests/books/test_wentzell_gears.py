@@ -65,3 +65,36 @@ def test_the_printed_forces_lie_63000_over_63025_from_graphkins(solved):
     _, got = solved
     for key in ("W_t", "W_r", "W"):
         assert PRINTED[key] / got[key] == pytest.approx(63000.0 / EXACT, abs=HALF_UNIT[key] / PRINTED[key]), key
+
+
+def test_reported_in_us_units_the_tooth_force_is_in_lb(capsys):
+    """``graphkin solve spur_pair_wentzell --units US``: the gear's tooth force on the pinion in lbf, the book's
+    unit; the printed 155.46 lb lies 63000/63 025 from it, as above. With a units file giving torques in lbf·in
+    (Wentzell's unit), the pinion's torque is 63 025 hp/n lb·in."""
+    import json
+
+    from graphkin.cli import main
+
+    assert main(["solve", "spur_pair_wentzell", "--units", "US", "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert data["units"]["positions[].forces.*"] == "lbf"
+    F32 = data["positions"][0]["forces"]["F32"]
+    W = math.hypot(*F32)
+    assert W == pytest.approx(method(EXACT)["W"], rel=1e-9)
+    assert PRINTED["W"] / W == pytest.approx(63000.0 / EXACT, abs=HALF_UNIT["W"] / PRINTED["W"])
+    assert main(["solve", "spur_pair_wentzell", "--units", "US"]) == 0
+    assert f"{W:.4g} lbf ∠" in capsys.readouterr().out
+
+
+def test_in_lb_in_from_a_units_file(capsys, tmp_path):
+    import json
+
+    from graphkin.cli import main
+
+    units = tmp_path / "wentzell.toml"
+    units.write_text('base = "US"\ntorque = "lbf*in"\n', encoding="utf-8")
+    assert main(["solve", "spur_pair_wentzell", "--units", str(units), "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert data["units"]["positions[].driver.value"] == "lbf*in"
+    assert data["positions"][0]["driver"]["value"] == pytest.approx(EXACT * HP / N_RPM, rel=1e-9)
+    assert data["positions"][0]["input"]["rate"] == pytest.approx(N_RPM, rel=1e-12)  # rpm

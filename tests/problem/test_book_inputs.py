@@ -146,3 +146,18 @@ def test_a_slider_placed_by_the_cranks_angle_puts_the_crank_there(theta2, branch
     c, s = math.cos(math.radians(theta2)), math.sin(math.radians(theta2))
     roots = [r * c + sign * math.sqrt(l**2 - (r * s) ** 2) for sign in (1, -1)]
     assert min(abs(problem.q[0] - x) for x in roots) <= 1e-12
+
+
+def test_a_placement_only_on_the_other_branch_says_which_branch_has_it(capsys, tmp_path):
+    """The rod of this slider-crank (branch C = −1) never stands at 10°; on branch C = 1 it does, at two slider
+    positions: the message names the branch and the positions instead of 'never'."""
+    from graphkin.cli import main
+    from tests.bad_input.test_catalogue import one_error_line
+    from tests.bad_input.test_issue25_fields import SLIDER_PLACED
+
+    f = tmp_path / "p.toml"
+    f.write_text(edit(SLIDER_PLACED, ("link = 2, theta", "link = 3, theta"), ('theta = "60 deg"', 'theta = "10 deg"')),
+                 encoding="utf-8")
+    assert main(["solve", str(f)]) == 2
+    one_error_line(capsys.readouterr().err, "driver.place.theta", "other branch at C", "[assembly] C = 1",
+                   "159.614 mm", "234.309 mm")
