@@ -46,7 +46,7 @@ def _fit(body: str) -> str:
             f"if w > size.width {{ scale(size.width / w * 100%, reflow: true, it) }} else {{ it }} }})")
 
 
-def _block(b: dict) -> str:
+def _block(b: dict, floats: bool = False) -> str:
     kind = b["kind"]
     if kind == "heading":
         return f"#heading(level: {b['level']})[#{_string(b['text'])}]"
@@ -80,7 +80,10 @@ def _block(b: dict) -> str:
         images = [f"image(bytes({_string(p.svg())}), format: \"svg\", width: {p.size()[0]:.3f}pt, "
                   f"alt: {_string(p.alt)})" for p in b["pictures"]]
         body = images[0] if len(images) == 1 else ("stack(dir: ltr, spacing: 1em, " + ", ".join(images) + ")")
-        return f"#figure({body}, caption: [{_inline(b['runs'])}], numbering: none, supplement: none)"
+        # A compact key floats its drawings to the top or bottom of a page, as a textbook sets them, so that text
+        # fills the page instead of a gap before each figure that does not fit where it is named.
+        place = "placement: auto, " if floats else ""
+        return f"#figure({body}, caption: [{_inline(b['runs'])}], {place}numbering: none, supplement: none)"
     if kind == "figure":
         pics = b["pictures"]
         images = [f"image(bytes({_string(p.svg())}), format: \"svg\", width: 100%, height: {p.height:g}mm, "
@@ -124,7 +127,34 @@ def source(doc: dict, *, font: str | None = None, math_font: str | None = None) 
   #v(0.2em) #text(size: 8.5pt, style: "italic")[#{_string(doc['source'])}]
 ]
 """
-    return head + "\n\n".join(_block(b) for b in doc["blocks"]) + "\n"
+    if not (doc.get("version") == "key" and doc.get("detail") == "compact"):
+        return head + "\n\n".join(_block(b) for b in doc["blocks"]) + "\n"
+    return head + "\n\n".join(_floating(doc["blocks"])) + "\n"
+
+
+def _floating(blocks: list) -> list[str]:
+    """A compact key's blocks, each drawing floated to the top or bottom of a page as a textbook sets it.
+
+    Text then fills each page instead of leaving a gap before a drawing that does not fit where it is
+    named. A section that opens with a drawing (its heading, the paragraphs that lead to it, the drawing)
+    floats whole, so the heading stays with its figure.
+    """
+    out, k = [], 0
+    while k < len(blocks):
+        b = blocks[k]
+        end = k + 1
+        if b["kind"] == "heading":
+            while end < len(blocks) and blocks[end]["kind"] == "text":
+                end += 1
+        last = blocks[end - 1] if b["kind"] != "heading" else (blocks[end] if end < len(blocks) else b)
+        if b["kind"] == "heading" and last["kind"] == "figure" and all(p.natural for p in last["pictures"]):
+            inner = "\n\n".join(_block(x) for x in blocks[k:end + 1])
+            out.append(f"#place(auto, float: true, clearance: 1.2em, align(left, block(width: 100%)[\n{inner}\n]))")
+            k = end + 1
+            continue
+        out.append(_block(b, floats=True))
+        k += 1
+    return out
 
 
 _COMPILER: list = []
