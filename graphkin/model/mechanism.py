@@ -92,10 +92,18 @@ class Mechanism:
         return tuple(j for j in self.joints if number in j.links)
 
     def joint_between(self, i: int, j: int) -> Joint:
+        joint = self._pairs.get(frozenset((i, j)))
+        if joint is None:
+            raise ModelError(f"no joint between links {i} and {j}")
+        return joint
+
+    @cached_property
+    def _pairs(self) -> dict:
+        """Each pair of links (a frozenset) → the first joint between them (a construction asks thousands of times)."""
+        pairs: dict = {}
         for joint in self.joints:
-            if set(joint.links) == {i, j}:
-                return joint
-        raise ModelError(f"no joint between links {i} and {j}")
+            pairs.setdefault(frozenset(joint.links), joint)
+        return pairs
 
     # -- validation -------------------------------------------------------
     def _check(self):
