@@ -194,7 +194,7 @@ gk.draw.draw_shaking(cyc)
 # folds it to $[0°, 90°]$:
 
 # %%
-print(f"the worst transmission angle: {np.degrees(cyc.transmission_angle().min()):.1f}°")
+gk.draw.draw_transmission_angle(cyc).figure
 
 # %% [markdown]
 # ## 7. The interactive explorer
