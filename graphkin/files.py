@@ -11,6 +11,8 @@ from __future__ import annotations
 import contextlib
 import errno
 import os
+import signal
+import threading
 from pathlib import Path
 
 from graphkin.errors import GraphkinError
@@ -133,6 +135,32 @@ def replacing(path: str | Path, what: str = "output", *, executable: bool = Fals
                 os.unlink(tmp)
             except OSError:
                 pass
+
+
+@contextlib.contextmanager
+def interrupts_deferred():
+    """Hold Ctrl-C (SIGINT) until the block ends, then raise :class:`KeyboardInterrupt` there.
+
+    A KeyboardInterrupt raised inside a C extension's call can come out as
+    another error: matplotlib's transforms (pybind11) report one that lands
+    while converting their arguments as a ``TypeError``, and the command would
+    print a traceback instead of "interrupted". Inside :func:`replacing` the
+    deferred interrupt still discards the temporary file: the old file (or
+    none) stays. Only the main thread with Python's own handler installed is
+    changed; anywhere else the block runs as it is.
+    """
+    if threading.current_thread() is not threading.main_thread() or \
+            signal.getsignal(signal.SIGINT) is not signal.default_int_handler:
+        yield
+        return
+    caught = []
+    previous = signal.signal(signal.SIGINT, lambda signum, frame: caught.append(signum))
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGINT, previous)
+    if caught:
+        raise KeyboardInterrupt
 
 
 def read_text(path: str | Path, what: str, *, shown: str | None = None) -> str:

@@ -182,3 +182,29 @@ def test_a_failed_write_names_the_users_path_not_the_temporary_file(tmp_path, mo
     assert f": cannot be written ({os.strerror(errno.ENOSPC)})" in err, err
     assert ".tmp" not in err, err
     assert [f for f in tmp_path.rglob("*") if f.is_file()] == [], "a file or temporary file was left behind"
+
+
+def test_ctrl_c_inside_a_deferred_block_is_raised_when_it_ends_and_the_file_is_not_written(tmp_path):
+    """Why draw.save defers it: a KeyboardInterrupt inside matplotlib's C++ transforms comes out as a TypeError."""
+    from graphkin.files import interrupts_deferred, replacing
+
+    target = tmp_path / "out.txt"
+    finished = []
+    # Python's own handler, as at a terminal (a background job may start with SIGINT ignored).
+    before = signal.signal(signal.SIGINT, signal.default_int_handler)
+    try:
+        _interrupted_in_a_deferred_block(target, finished, replacing, interrupts_deferred)
+    finally:
+        signal.signal(signal.SIGINT, before)
+    assert finished == [True]
+    assert not target.exists() and temporaries(tmp_path) == []
+
+
+def _interrupted_in_a_deferred_block(target, finished, replacing, interrupts_deferred):
+    with pytest.raises(KeyboardInterrupt):
+        with replacing(target, "figure") as tmp, interrupts_deferred():
+            os.kill(os.getpid(), signal.SIGINT)
+            time.sleep(0.05)  # the handler has run by now: it only noted the signal
+            Path(tmp).write_text("whole")
+            finished.append(True)
+    assert signal.getsignal(signal.SIGINT) is signal.default_int_handler

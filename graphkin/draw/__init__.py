@@ -33,7 +33,7 @@ from graphkin.draw.labels import measuring_renderer
 from graphkin.draw.mechanism import draw_mechanism
 from graphkin.draw.polygon import draw_force_polygon
 from graphkin.draw.solution import comparison_rows, draw_solution
-from graphkin.files import replacing
+from graphkin.files import interrupts_deferred, replacing
 
 FORMATS = ("png", "svg", "pdf")
 
@@ -122,7 +122,9 @@ def save(fig, path, *, dpi=None, **kwargs) -> Path:
         kwargs.setdefault("metadata", {"Date": None} if fmt == "svg" else {"CreationDate": None})
     if fmt == "png":
         kwargs.setdefault("pil_kwargs", {"compress_level": PNG_LEVEL})
-    with replacing(path, "figure") as tmp:
+    # Ctrl-C waits for matplotlib to finish drawing (a few tenths of a second at most), then discards the file:
+    # raised inside matplotlib's C++ transforms it would come out as a TypeError (files.interrupts_deferred).
+    with replacing(path, "figure") as tmp, interrupts_deferred():
         fig.savefig(tmp, format=fmt, dpi=dpi, **kwargs)
     return path
 
