@@ -9,15 +9,13 @@ the construction with its own figure are the full walk-through's (``detail="full
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 
 from graphkin.handout import maths as M
 from graphkin.handout import motion as polygons
 from graphkin.handout import scaled
 from graphkin.handout.document import Doc, Subject
-from graphkin.handout.sections import loads
+from graphkin.handout.sections import link_table, loads
 from graphkin.model import Revolute
 
 
@@ -38,19 +36,10 @@ def solution(doc: Doc, s: Subject, entry: dict, c, i: int):
 
 def motion(doc: Doc, s: Subject, entry: dict):
     doc.heading(2, "Position" if s.static else "Motion")
-    if s.static:
-        doc.table(["link", "θ [°]"], [[f"link {link}", M.n(M.fmt_fixed(math.degrees(d["theta"])))]
-                                      for link, d in entry["links"].items()], "lr")
-        return
-    doc.text("Each link's angle, angular velocity and angular acceleration, and the acceleration of its centre of "
-             "mass, from the position, velocity and acceleration loops:")
-    rows = []
-    for link, d in entry["links"].items():
-        a = d["a_G"]
-        rows.append([f"link {link}", M.n(M.fmt_fixed(math.degrees(d["theta"]))), M.n(d["omega"]), M.n(d["alpha"]),
-                     M.pair(a), M.polar(M.size_of(a), M.angle_of(a), "")])
-    doc.table(["link", "θ [°]", "ω [rad/s]", "α [rad/s²]", (M.sym("a", "G"), " [m/s²]"),
-               (M.sym("a", "G"), " polar")], rows, "lrrrrr")
+    if not s.static:
+        doc.text("Each link's angle, angular velocity and angular acceleration, and the acceleration of its centre of "
+                 "mass, from the position, velocity and acceleration loops:")
+    link_table(doc, entry, s.static)
 
 
 def inertia(doc: Doc, s: Subject, entry: dict):

@@ -334,17 +334,9 @@ def kinematics(doc: Doc, s: Subject, entry: dict, i: int):
              "with the numbers:")
     groups(doc, kin, i, rates=not s.static)
     doc.text("Every link at once (θ of a link is the angle of its own x-axis, the axis its points are given in):")
+    link_table(doc, entry, s.static)
     if s.static:
-        doc.table(["link", "θ [°]"], [[f"link {link}", M.n(M.fmt_fixed(math.degrees(d["theta"])))]
-                                      for link, d in entry["links"].items()], "lr")
         return
-    rows = []
-    for link, d in entry["links"].items():
-        a = d["a_G"]
-        rows.append([f"link {link}", M.n(M.fmt_fixed(math.degrees(d["theta"]))), M.n(d["omega"]), M.n(d["alpha"]),
-                     M.pair(a), M.polar(M.size_of(a), M.angle_of(a), "")])
-    doc.table(["link", "θ [°]", "ω [rad/s]", "α [rad/s²]", (M.sym("a", "G"), " [m/s²]"),
-               (M.sym("a", "G"), " polar")], rows, "lrrrrr")
     doc.text("Each centre of mass from a point P of the same link whose acceleration is known "
              "(relative acceleration: tangential α k × r and normal −ω² r):")
     for link, d in entry["links"].items():
@@ -432,3 +424,18 @@ def loads(doc: Doc, s: Subject, entry: dict, always: bool = False):
             rows.append([name, f"link {ld['link']}", s.qty(ld["torque"], "torque")])
     doc.table(["load", "on", "value at this position"], rows, "llr",
               caption="Each load at its value here: read off its table, and with the sense the motion gives it")
+
+
+def link_table(doc: Doc, entry: dict, static: bool):
+    """Every link's θ, and (not static) ω, α and a_G in components and in polar form, from a position's JSON entry."""
+    if static:
+        doc.table(["link", "θ [°]"], [[f"link {link}", M.n(M.fmt_fixed(math.degrees(d["theta"])))]
+                                      for link, d in entry["links"].items()], "lr")
+        return
+    rows = []
+    for link, d in entry["links"].items():
+        a = d["a_G"]
+        rows.append([f"link {link}", M.n(M.fmt_fixed(math.degrees(d["theta"]))), M.n(d["omega"]), M.n(d["alpha"]),
+                     M.pair(a), M.polar(M.size_of(a), M.angle_of(a), "")])
+    doc.table(["link", "θ [°]", "ω [rad/s]", "α [rad/s²]", (M.sym("a", "G"), " [m/s²]"),
+               (M.sym("a", "G"), " polar")], rows, "lrrrrr")
