@@ -55,6 +55,13 @@ print(f"{cyc.n} positions, a closed turn: {cyc.closed}, all valid: {cyc.valid.al
 # %% [markdown]
 # ## 2. The driving torque
 #
+# During the cut the blade points $C_3$ and $C_4$ close in on each other, until they almost meet at 156°
+# (the start, the middle and the end of the cut):
+
+# %%
+gk.draw.draw_positions(p, np.radians([124, 140, 156]), between=((3, "C"), (4, "C")))
+
+# %% [markdown]
 # **What the cut adds, by virtual work.** Give the crank a small rotation $\delta\theta_{12}$. With the
 # inertia loads included the virtual work of all loads is zero. The cutting forces are
 # $\vec F_{c3} = (0, F_c)$ at $C_3$ and $\vec F_{c4} = (0, -F_c)$ at $C_4$, so they add to the motor
@@ -86,6 +93,9 @@ assert np.allclose(cyc.torque - no_cut.solve(at=cyc.q).effort, np.where(on, T_cu
 assert np.all(T_cut[on] > 0) and not on[cyc.peaks().effort_max.index] and not on[cyc.peaks().effort_min.index]
 jumps = np.diff(cyc.torque[~np.isin(cyc.q, p.q)])[::2]
 assert round(jumps[0]) == 116 and round(-jumps[1]) == 58
+blades = p.kinematics(at=np.radians([124, 140, 156]))
+gaps = np.hypot(*(blades.position(3, "C") - blades.position(4, "C")).T)
+assert np.all(np.diff(gaps) < 0) and gaps[-1] < 2e-3   # "close in ... almost meet at 156°" (< 2 mm)
 
 # %% [markdown]
 # ## 3. Average torque, power and the work done on the strip

@@ -38,10 +38,11 @@ from graphkin.files import interrupts_deferred, replacing
 FORMATS = ("png", "svg", "pdf")
 
 _LATER = {
-    **dict.fromkeys(("draw_cycle", "draw_energy", "draw_joint_force_index", "draw_polar_forces", "draw_shaking",
+    **dict.fromkeys(("draw_cycle", "draw_energy", "draw_joint_force_index", "draw_polar_forces", "draw_positions", "draw_shaking",
                      "draw_torque_curve"), "cycle"),
     "draw_shaking_components": "shaking",
     "draw_transmission_angle": "transmission",
+    "draw_positions": "positions",
     **dict.fromkeys(("draw_step_grid", "draw_steps"), "steps"),
     **dict.fromkeys(("draw_motion_polygon", "draw_motion_polygons", "draw_motion_steps"), "motion"),
     **dict.fromkeys(("Animation", "animate"), "animation"),
@@ -151,7 +152,7 @@ def _tight_box(fig, dpi: float, pad: float):
 
 __all__ = [
     "Animation", "Drawn", "FORMATS", "animate", "comparison_rows", "draw_cycle", "draw_energy", "draw_force_polygon",
-    "draw_free_body", "draw_given", "draw_joint_force_index", "draw_mechanism", "draw_polar_forces", "draw_shaking",
+    "draw_free_body", "draw_given", "draw_joint_force_index", "draw_mechanism", "draw_polar_forces", "draw_positions", "draw_shaking",
     "draw_shaking_components", "draw_sign_convention", "draw_solution", "draw_step_grid", "draw_steps",
     "draw_torque_curve", "draw_transmission_angle", "loads_on",
     "measuring_renderer", "save", "style",
