@@ -55,8 +55,7 @@ print(f"{cyc.n} positions, a closed turn: {cyc.closed}, all valid: {cyc.valid.al
 # %% [markdown]
 # ## 2. The driving torque
 #
-# During the cut the blade points $C_3$ and $C_4$ close in on each other, until they almost meet at 156°
-# (the start, the middle and the end of the cut):
+# The blades at the start, middle and end of the cut: $C_3$ and $C_4$ close in and almost meet at 156°.
 
 # %%
 gk.draw.draw_positions(p, np.radians([124, 140, 156]), between=((3, "C"), (4, "C")))
@@ -210,8 +209,7 @@ gk.draw.draw_transmission_angle(cyc).figure
 # ## 7. The interactive explorer
 #
 # `gk.explore(problem)` builds a small app: a slider for the crank angle, a box for the speed, and one
-# picture with the mechanism, the free bodies, the force polygons and the torque curve. Drag the slider
-# through the cut and watch the cutting forces appear.
+# picture with the mechanism, the free bodies, the force polygons and the torque curve.
 
 # %%
 ex = gk.explore(p)
