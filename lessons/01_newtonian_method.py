@@ -32,7 +32,6 @@
 import numpy as np
 
 import graphkin as gk
-from graphkin.draw.paper import draw_free_bodies
 
 # %% [markdown]
 # ## 1. The idea: d'Alembert's principle
@@ -137,7 +136,7 @@ assert bar_result["T12"][0] < 0
 # %%
 p = gk.load("double_slider")
 result = p.solve()
-draw_free_bodies(gk.construct_forces(p.kinematics(), 0), length_scale=5, force_scale=2)
+gk.draw.draw_free_bodies(gk.construct_forces(p.kinematics(), 0), length_scale=5, force_scale=2)
 
 # %% [markdown]
 # Each free body gives its equations (forces, then moments about the link's pin or $G$):
@@ -265,7 +264,7 @@ mine = gk.exercises.variant("double_slider_forces", student)
 print(gk.format_solution(mine.problem, mine.problem.solve()))
 
 # %%
-draw_free_bodies(mine.construction, length_scale=5, force_scale=2)
+gk.draw.draw_free_bodies(mine.construction, length_scale=5, force_scale=2)
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
 key = {q["id"]: q["answer"]["text"] for q in gk.exercises.key("double_slider_forces", student)["questions"]}

@@ -29,29 +29,15 @@
 
 # %%
 # %matplotlib inline
-
-import csv
-import json
 import math
-import os
-import re
-import subprocess
-import sys
 import tempfile
-from collections import Counter
-from importlib import resources
 from pathlib import Path
 
-import numpy as np
-from matplotlib.figure import Figure
-
 import graphkin as gk
-from graphkin.exercises.quantities import value_of
 
 NAME = "strip_cutter_cut"     # the exercise of this lesson
 SECRET = "mech-2025-autumn"   # a demo secret; a real one never goes in a notebook (section 5)
-workdir = tempfile.TemporaryDirectory(prefix="graphkin-course-")
-folder = Path(workdir.name)
+folder = Path((workdir := tempfile.TemporaryDirectory(prefix="graphkin-course-")).name)
 
 # %% [markdown]
 # ## 1. What an exercise is
@@ -63,13 +49,12 @@ for name in gk.exercises.names():
     print(f"{name:<26}{gk.exercises.load(name).title}")
 
 # %% [markdown]
-# Each is a TOML file shipped inside the package. `importlib.resources` finds it whether graphkin
+# Each is a TOML file shipped inside the package; `gk.exercises.path` finds it whether graphkin
 # was installed from a wheel or from a checkout. Here is the one we use in this lesson, the strip
 # cutter of lessons 02–03 during the cut:
 
 # %%
-toml_file = resources.files("graphkin.catalog") / "exercises" / f"{NAME}.toml"
-print(toml_file.read_text(encoding="utf-8"))
+print(gk.exercises.path(NAME).read_text(encoding="utf-8"))
 
 # %% [markdown]
 # How to read it:
@@ -151,6 +136,7 @@ except gk.ProblemFileError as err:
 print(typo)
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
+toml_file = gk.exercises.path(NAME)
 assert len(gk.exercises.names()) >= 10 and NAME in gk.exercises.names()
 assert [len(v.values) for v in ex.vary] == [15, 13, 11] and math.prod(len(v.values) for v in ex.vary) == 2145
 assert ex.vary[0].values[:2] == ("126 deg", "128 deg") and ex.vary[0].values[-1] == "154 deg"
@@ -175,13 +161,8 @@ assert gk.exercises.make(str(folder / "cutter_speed.toml"), "s001", SECRET)["dat
 
 # %%
 roster = folder / "roster.csv"
-with roster.open("w", newline="", encoding="utf-8") as f:
-    out = csv.writer(f)
-    out.writerow(["student", "group"])
-    out.writerows([f"s{n:03d}", "AB"[n % 2]] for n in range(1, 31))
-
-with roster.open(encoding="utf-8") as f:
-    students = [row["student"] for row in csv.DictReader(f)]
+roster.write_text("student,group\n" + "".join(f"s{n:03d},{'AB'[n % 2]}\n" for n in range(1, 31)), encoding="utf-8")
+students = gk.exercises.read_roster(roster)
 print(len(students), "students:", ", ".join(students[:5]), "…")
 
 # %% [markdown]
@@ -196,14 +177,9 @@ keys = {s: gk.exercises.key(NAME, s, secret=SECRET) for s in students}
 print(sheets["s001"]["intro"])
 
 # %%
-symbols = [v.symbol for v in ex.vary]
-print(f"{'student':<8}" + "".join(f"{s:>10}" for s in symbols) + "   " +
-      "".join(f"{q.id:<22}" for q in ex.questions))
 for s in students[:8]:
-    data = {g["symbol"]: g["shown"].split(" = ")[1] for g in sheets[s]["data"]}
-    answers = {q["id"]: q["answer"]["text"] for q in keys[s]["questions"]}
-    print(f"{s:<8}" + "".join(f"{data[x]:>10}" for x in symbols) + "   " +
-          "".join(f"{answers[q.id]:<22}" for q in ex.questions))
+    data = ", ".join(g["shown"] for g in keys[s]["data"])
+    print(f"{s}  {data:<36}" + "   ".join(q["answer"]["text"] for q in keys[s]["questions"]))
 
 # %% [markdown]
 # Each student's data come from a hash of (exercise, student id, secret) and nothing else: the same
@@ -254,11 +230,16 @@ assert round(100 * (1 - math.prod(1 - k / 2145 for k in range(30)))) == 18
 # ## 3. The same from the command line
 #
 # The `graphkin exercise` command does the same for a whole roster and writes one CSV row per
-# student. Here we run it from the notebook with `subprocess`, exactly as you would type it in a
-# terminal in the course folder (the helper runs `python -m graphkin`, which is the `graphkin`
-# command). From a few hundred students on, the command spreads the work over all your cores.
+# student. Here we run it from the notebook, exactly as you would type it in a terminal in the course
+# folder (a hidden helper, `graphkin(...)`, runs `python -m graphkin`, which is the `graphkin`
+# command, and prints the command line). From a few hundred students on, the command spreads the
+# work over all your cores.
 
-# %%
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+import subprocess
+import sys
+
+
 def graphkin(*args, env=None):
     """Run `graphkin ARGS...` in the course folder and return what it printed."""
     print("$ graphkin", " ".join(args))
@@ -269,9 +250,9 @@ def graphkin(*args, env=None):
     return done.stdout
 
 
+# %%
 graphkin("exercise", "make", NAME, "--roster", "roster.csv", "--secret", SECRET, "-o", "sheets.csv")
 graphkin("exercise", "key", NAME, "--roster", "roster.csv", "--secret", SECRET, "-o", "keys.csv")
-print()
 print("".join((folder / "keys.csv").read_text(encoding="utf-8").splitlines(keepends=True)[:4]))
 
 # %% [markdown]
@@ -279,24 +260,6 @@ print("".join((folder / "keys.csv").read_text(encoding="utf-8").splitlines(keepe
 
 # %%
 print(graphkin("exercise", "make", NAME, "--student", "s001", "--secret", SECRET))
-
-# %% tags=["remove-input"] jupyter={"source_hidden": true}
-from graphkin.exercises.batch import PARALLEL_FROM
-
-
-def read_csv(name):
-    with (folder / name).open(encoding="utf-8") as f:
-        return list(csv.DictReader(f))
-
-
-cli_sheets, cli_keys = read_csv("sheets.csv"), read_csv("keys.csv")
-assert [r["student"] for r in cli_sheets] == [r["student"] for r in cli_keys] == students
-for r_sheet, r_key in zip(cli_sheets, cli_keys):
-    s = r_sheet["student"]
-    assert all(r_sheet[g["symbol"]] == r_key[g["symbol"]] == g["value"] for g in sheets[s]["data"])
-    assert all(r_key[q["id"]] == q["answer"]["text"] for q in keys[s]["questions"])
-assert PARALLEL_FROM <= 500   # "from a few hundred students on, ... all your cores"
-
 
 # %% [markdown]
 # ## 4. Collecting and grading the answers
@@ -313,7 +276,16 @@ assert PARALLEL_FROM <= 500   # "from a few hundred students on, ... all your co
 # a decimal comma or a thousands separator (`2,643 N`), which the grader refuses to guess. Answers are
 # typed as students type them: `2643 N ∠ -126.57°`, `(-1575, -2123) N`, `216.6 N·m CCW`, `0.2166 kN·m`.
 
-# %%
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+# The class, made from the keys: each answer right, a slip, wrong, blank or unreadable (see above).
+import csv
+import re
+
+import numpy as np
+
+from graphkin.exercises.quantities import value_of   # the raw answer of a solved variant, for the made-up class
+
+
 def fmt(x):
     """A number as a student writes it: 4 significant figures, no powers of ten."""
     return f"{x:.4g}" if abs(x) < 1e4 else f"{x:.0f}"
@@ -345,7 +317,7 @@ SLIPS_MADE = {"F23": ["sign", "no_inertia_torque"], "F14": ["no_inertia_torque"]
               "T12": ["sign", "power_of_ten", "no_inertia_torque"]}
 GARBAGE = ["see my drawing", "?", "comma"]   # "comma": the right answer as "2,643" (2.643 or 2643?)
 
-# %%
+
 rng = np.random.default_rng(2025)
 made = {}   # (student, question) → what we made: "correct", a slip, "wrong", "missing", "unreadable"
 rows = []
@@ -389,11 +361,8 @@ print("".join(answers_csv.read_text(encoding="utf-8").splitlines(keepends=True)[
 
 # %%
 with answers_csv.open(encoding="utf-8") as f:
-    handed_in = {row["student"]: {q.id: row[q.id] for q in ex.questions} for row in csv.DictReader(f)}
-reports = {s: gk.exercises.grade(NAME, s, handed_in[s], secret=SECRET) for s in handed_in}
-scores = [r["score"] for r in reports.values()]
-top = sum(q.points for q in ex.questions)
-print(f"mean {np.mean(scores):.2f} / {top:g}; full marks: {scores.count(top)} of {len(scores)} students")
+    handed_in = {row.pop("student"): row for row in csv.DictReader(f)}
+reports = {s: gk.exercises.grade(NAME, s, answers, secret=SECRET) for s, answers in handed_in.items()}
 as_made = sum((q["slip"] or q["verdict"]) == made[s, q["id"]] for s in students for q in reports[s]["questions"])
 print(f"the grader named what we made in {as_made} of {len(made)} answers")
 
@@ -404,21 +373,7 @@ print(f"the grader named what we made in {as_made} of {len(made)} answers")
 # change the answer only a little: at some crank angles the inertia torques add only a few percent to T12.
 
 # %%
-fig = Figure(figsize=(10, 3.6))
-ax1, ax2 = fig.subplots(1, 2, gridspec_kw={"width_ratios": [1, 1.6]})
-ax1.hist(scores, bins=np.arange(-0.125, top + 0.25, 0.25), color="tab:blue", edgecolor="white")
-ax1.set(xlabel="score", ylabel="students", title="Scores")
-
-labels = ["sign", "power_of_ten", "no_inertia_torque", "wrong", "unreadable", "missing"]
-counts = Counter((q["id"], q["slip"] or q["verdict"]) for r in reports.values() for q in r["questions"])
-x = np.arange(len(labels))
-for n, q in enumerate(ex.questions):
-    ax2.bar(x + (n - 1) * 0.27, [counts[q.id, lab] for lab in labels], width=0.27, label=q.id)
-ax2.set_xticks(x, [lab.replace("_", " ") for lab in labels], rotation=20, fontsize=8)
-ax2.set(ylabel="answers", title="What went wrong, per question")
-ax2.legend()
-fig.tight_layout()
-fig
+gk.draw.draw_grades(reports)
 
 # %% [markdown]
 # The right-hand chart is your plan for the next class: the tallest bars are what to go over again.
@@ -436,73 +391,7 @@ print(gk.exercises.check(NAME, shown, handed_in[shown], secret=SECRET))
 
 # %%
 graphkin("exercise", "grade", NAME, "--answers", "answers.csv", "--secret", SECRET, "-o", "grades.csv")
-with (folder / "grades.csv").open(encoding="utf-8") as f:
-    grades = list(csv.DictReader(f))
-print(list(grades[0]))
-for g in grades[:4]:
-    print(g["student"], g["score"], "|", g["F23 verdict"], "|", g["F14 verdict"], "|", g["T12 verdict"])
-
-# %% tags=["remove-input"] jupyter={"source_hidden": true}
-ids = [q.id for q in ex.questions]
-# The CSV round trip kept every answer.
-assert [{"student": s, **handed_in[s]} for s in students] == rows
-# The grader says what we made, for every answer: right ones correct, each slip diagnosed as the slip made.
-for s in students:
-    for q in reports[s]["questions"]:
-        assert (q["slip"] or q["verdict"]) == made[s, q["id"]], (s, q, made[s, q["id"]])
-assert as_made == len(made) == 90
-# "a few percent": T12 without the inertia torques, for the students of this roster.
-T12_off = []
-for s in students:
-    v = gk.exercises.variant(NAME, s, secret=SECRET)
-    q = ex.question("T12")
-    T12_off.append(abs(value_of(v.altered("no_inertia_torque"), q) / value_of(v.solved, q) - 1))
-assert sum(0.01 < d < 0.1 for d in T12_off) >= 5 and min(T12_off) < 0.01
-tally = Counter(made.values())
-assert tally["correct"] > len(made) / 2 and all(tally[k] > 0 for k in labels)   # "most right", some of each
-assert all(counts[q, lab] == sum(made[s, q] == lab for s in students) for q in ids for lab in labels)
-# Students with every answer right have full marks, and only they.
-all_right = {s for s in students if all(made[s, q] == "correct" for q in ids)}
-assert all_right and all_right == {s for s in students if reports[s]["score"] == top}
-# The default shares quoted: half for a sign or a power of ten, a quarter for a missing inertia torque.
-for s in students:
-    for q in reports[s]["questions"]:
-        share = {"correct": 1, "sign": 0.5, "power_of_ten": 0.5, "no_inertia_torque": 0.25}.get(made[s, q["id"]], 0)
-        assert q["score"] == share * q["max"]
-# The student shown has a slip, and the feedback printed is their report.
-assert any(q["verdict"] == "slip" for q in reports[shown]["questions"])
-assert gk.exercises.check(NAME, shown, handed_in[shown], secret=SECRET).splitlines()[0].endswith(
-    f"{reports[shown]['score']:g} / {top:g} points")
-# The CLI's grades agree with the Python API for every student.
-assert [g["student"] for g in grades] == students
-for g in grades:
-    r = reports[g["student"]]
-    assert float(g["score"]) == r["score"] and float(g["max"]) == r["max"]
-    for q in r["questions"]:
-        assert float(g[q["id"]]) == q["score"]
-        assert g[f"{q['id']} verdict"] == q["verdict"] + (f" ({q['slip']})" if q["slip"] else "")
-        assert g[f"{q['id']} feedback"] == q["feedback"]
-# The formats quoted in the text: s001's answers in each style, and every style was handed in.
-v001 = gk.exercises.variant(NAME, "s001", secret=SECRET)
-assert [typed(ex.question("F23"), value_of(v001.solved, ex.question("F23")), k) for k in range(3)] == \
-    ["2643 N ∠ -126.57°", "(-1575, -2123) N", "2.643 kN at -126.6 deg"]
-assert [typed(ex.question("T12"), value_of(v001.solved, ex.question("T12")), k) for k in range(3)] == \
-    ["216.6 N·m CCW", "216.6 N*m", "0.2166 kN·m"]
-typed_text = " ".join(row[q] for row in rows for q in ids)
-assert all(form in typed_text for form in (" N ∠ ", ") N", " kN at ", " N·m CCW", " N*m", " kN·m"))
-assert {row[q] for row in rows for q in ids if made[row["student"], q] == "unreadable"} >= {"see my drawing", "?"}
-assert any("," in row[q] and "(" not in row[q] for row in rows for q in ids if made[row["student"], q] == "unreadable")
-# A comma that could go either way is refused with a sentence; a plain decimal comma is read.
-comma_report = gk.exercises.grade(NAME, "s001", {"F14": "2,643 N", "T12": "216,6 N·m CCW"}, secret=SECRET)
-comma_verdicts = {q["id"]: (q["verdict"], q["feedback"]) for q in comma_report["questions"]}
-assert comma_verdicts["F14"][0] == "unreadable" and "could be 2.643 or 2643" in comma_verdicts["F14"][1]
-assert comma_verdicts["T12"][0] == "correct"
-# "wrong" is 5 to 15 % off (for the scalar and magnitude answers, read back from the text).
-for row in rows:
-    for q in ex.questions:
-        if made[row["student"], q.id] == "wrong" and q.part == "magnitude":
-            right = keys[row["student"]]["questions"][ids.index(q.id)]["answer"]["si"]
-            assert 0.04 < abs(float(row[q.id].split()[0]) * (1e3 if "kN" in row[q.id] else 1) / right - 1) < 0.16
+print("".join((folder / "grades.csv").read_text(encoding="utf-8").splitlines(keepends=True)[:3]))
 
 # %% [markdown]
 # ## 5. Partial credit, revealing answers, and the secret
@@ -521,7 +410,7 @@ for slip, share in gk.exercises.SLIPS.items():
 # Keep the same `id`, and the students keep their data; then grade the same CSV again:
 
 # %%
-STRICT = toml_file.read_text(encoding="utf-8") + """
+STRICT = gk.exercises.path(NAME).read_text(encoding="utf-8") + """
 [partial]
 sign = 0.25
 power_of_ten = 0.75
@@ -529,8 +418,8 @@ no_inertia_torque = 0
 """
 strict = gk.exercises.parse_exercise("reveal = true\n" + STRICT, id=NAME)
 strict_reports = {s: gk.exercises.grade(strict, s, handed_in[s], secret=SECRET) for s in handed_in}
-strict_scores = [r["score"] for r in strict_reports.values()]
-print(f"mean score, default shares: {np.mean(scores):.3f}; with this [partial]: {np.mean(strict_scores):.3f}")
+mean = {name: sum(r["score"] for r in rs.values()) / len(rs) for name, rs in [("default", reports), ("strict", strict_reports)]}
+print(f"mean score, default shares: {mean['default']:.3f}; with this [partial]: {mean['strict']:.3f}")
 
 # %% [markdown]
 # ### Revealing the answers
@@ -556,11 +445,15 @@ for q in strict_reports[shown]["questions"]:
 # `gk.exercises.key` with `secret=SECRET`:
 
 # %%
+import os
+
 course_env = {**os.environ, "GRAPHKIN_SECRET": SECRET}   # in a course: set in your terminal, not here
 print(graphkin("exercise", "key", NAME, "--student", "s001", env=course_env))
 secret = os.environ.get("GRAPHKIN_SECRET", "")   # how your own grading notebook reads it
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
+import json
+
 assert gk.exercises.SLIPS["sign"] == gk.exercises.SLIPS["power_of_ten"] == 0.5
 assert gk.exercises.SLIPS["no_inertia_torque"] == 0.25
 assert strict.reveal and not ex.reveal and strict.id == ex.id
@@ -572,7 +465,7 @@ for s in students:
         assert "expected" not in q_default and "expected" in q_strict
         share = {"correct": 1, "sign": 0.25, "power_of_ten": 0.75}.get(made[s, q_strict["id"]], 0)
         assert q_strict["score"] == share * q_strict["max"]
-assert np.mean(strict_scores) < np.mean(scores)
+assert mean["strict"] < mean["default"]
 assert [q["expected"] for q in strict_reports[shown]["questions"]] == \
        [q["answer"]["text"] for q in keys[shown]["questions"]]
 assert all("expected" in q for q in gk.exercises.grade(NAME, shown, handed_in[shown], SECRET, reveal=True)["questions"])

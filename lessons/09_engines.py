@@ -113,6 +113,7 @@ solved = engine.solve()
 (T12,) = solved.effort
 OC = np.array([0.3 * np.cos(np.pi / 3), 0.3 * np.sin(np.pi / 3)])  # the crank, 300 mm at 60°
 
+# %%
 print(f"thrust in the rod   F_Q = |F34|      = {np.hypot(*F34) / 1e3:.2f} kN   (book 50.62 kN)")
 print(f"side thrust         F_N = |G14|      = {np.hypot(*G14) / 1e3:.2f} kN")
 print(f"crank effort        F_T = OC × F32/r = {gk.cross(OC, F32) / 0.3 / 1e3:.2f} kN   (book 48.28 kN)")

@@ -126,6 +126,8 @@ solved = train.solve()
 (F43,) = solved.force(4, 3)
 (F31,) = solved.force(3, 1)
 (F23,) = solved.force(2, 3)
+
+# %%
 print(f"torque on the arm         T12 = {T12:.1f} N·m")
 print(f"sun on planet            |F43| = {np.hypot(*F43):.1f} N")
 print(f"planet on annulus        |F31| = {np.hypot(*F31):.1f} N")

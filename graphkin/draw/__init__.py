@@ -44,6 +44,7 @@ _LATER = {
     "draw_transmission_angle": "transmission",
     "draw_positions": "positions",
     **dict.fromkeys(("draw_grades", "what_went_wrong"), "grades"),
+    "draw_free_bodies": "paper",
     **dict.fromkeys(("draw_step_grid", "draw_steps"), "steps"),
     **dict.fromkeys(("draw_motion_polygon", "draw_motion_polygons", "draw_motion_steps"), "motion"),
     **dict.fromkeys(("Animation", "animate"), "animation"),
@@ -152,9 +153,10 @@ def _tight_box(fig, dpi: float, pad: float):
 
 
 __all__ = [
-    "Animation", "Drawn", "FORMATS", "animate", "comparison_rows", "draw_cycle", "draw_energy", "draw_force_polygon",
-    "draw_free_body", "draw_given", "draw_grades", "draw_joint_force_index", "draw_mechanism", "draw_polar_forces", "draw_positions", "draw_shaking",
+    "animate", "Animation", "comparison_rows", "draw_cycle", "draw_energy", "draw_force_polygon", "draw_free_bodies",
+    "draw_free_body", "draw_given", "draw_grades", "draw_joint_force_index", "draw_mechanism", "draw_motion_polygon",
+    "draw_motion_polygons", "draw_motion_steps", "draw_polar_forces", "draw_positions", "draw_shaking",
     "draw_shaking_components", "draw_sign_convention", "draw_solution", "draw_step_grid", "draw_steps",
-    "draw_torque_curve", "draw_transmission_angle", "loads_on",
-    "measuring_renderer", "save", "style", "what_went_wrong",
+    "draw_torque_curve", "draw_transmission_angle", "Drawn", "FORMATS", "loads_on", "measuring_renderer", "save",
+    "style", "what_went_wrong",
 ]

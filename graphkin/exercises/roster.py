@@ -83,5 +83,21 @@ def read_class_csv(path, what: str) -> list[dict]:
 
 
 def read_roster(path) -> list[str]:
-    """The student ids of a roster: a CSV with a ``student`` column (see :func:`read_class_csv`)."""
+    """The student ids of a roster, in its order: a CSV with a ``student`` column, any others ignored.
+
+    Parameters
+    ----------
+    path : str or Path
+        The CSV file, as a platform exports a class list (``-`` reads standard input).
+
+    Returns
+    -------
+    list of str
+        The ids, normalised as :func:`read_class_csv` does (stray spaces removed).
+
+    Raises
+    ------
+    GraphkinError
+        If the file cannot be read or is not such a roster (the message names the file and the problem).
+    """
     return [row["student"] for row in read_class_csv(path, "roster")]
