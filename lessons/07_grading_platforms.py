@@ -33,34 +33,28 @@
 # 6. the other three platforms, in one paragraph each, and why a notebook cannot grade itself.
 #
 # Everything happens in a temporary folder, deleted when the kernel stops. The simulated class uses
-# a fixed random seed, so the numbers are the same every time; the checks at the end make sure the
-# text says what the code does.
+# a fixed random seed, so the numbers are the same every time; graphkin's tests run this lesson and
+# check that the text says what the code does.
 
 # %%
 # %matplotlib inline
-
-import csv
-import json
-import os
-import shutil
-import subprocess
-import sys
 import tempfile
-import time
-import zipfile
-from collections import Counter
-from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
-
-import numpy as np
-from matplotlib.figure import Figure
 
 import graphkin as gk
 
 NAME = "strip_cutter_cut"     # the exercise of this lesson (lesson 06 shows how to write your own)
 SECRET = "mech-2025-autumn"   # a demo secret; a real one lives in $GRAPHKIN_SECRET, never in a notebook
-workdir = tempfile.TemporaryDirectory(prefix="graphkin-platform-")
-folder = Path(workdir.name)
+folder = Path((workdir := tempfile.TemporaryDirectory(prefix="graphkin-platform-")).name)
+
+# %% [markdown]
+# The commands below are typed as in a terminal in the course folder: a hidden helper, `graphkin(...)`,
+# runs the `graphkin` command there and returns what it printed.
+
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+import subprocess
+import sys
+
 GRAPHKIN = str(Path(sys.executable).with_name("graphkin"))
 
 
@@ -100,12 +94,14 @@ print("".join(sheets.read_text(encoding="utf-8").splitlines(keepends=True)[:4]))
 # %%
 graphkin("exercise", "export", NAME, "--to", "gradescope", "-o", "export", "--roster", "roster.csv", "--secret", SECRET)
 export = folder / "export"
-for p in sorted(export.rglob("*")):
-    if p.is_file():
-        print(f"{p.relative_to(export)!s:<48}{p.stat().st_size:>9,} bytes")
+for p in sorted(p for p in export.rglob("*") if p.is_file()):
+    print(f"{p.relative_to(export)!s:<48}{p.stat().st_size:>9,} bytes")
+
+# %%
+import zipfile
+
 with zipfile.ZipFile(export / "autograder.zip") as z:
-    top = sorted({n.split("/")[0] for n in z.namelist()})
-print("\nautograder.zip holds:", ", ".join(top))
+    print("autograder.zip holds:", ", ".join(sorted({n.split("/")[0] for n in z.namelist()})))
 
 # %% [markdown]
 # * `autograder.zip` is what you upload under *Configure Autograder*. Its `setup.sh` installs a Python
@@ -133,7 +129,12 @@ print((export / "student_template" / "answers.toml").read_text(encoding="utf-8")
 # N·mm and written as N·m), a **wrong** value (8 % off), a **blank**, or text the grader cannot read.
 # One student uploads a friend's file.
 
-# %%
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+# The class, made from the keys as the text above says.
+import json
+
+import numpy as np
+
 rng = np.random.default_rng(7)
 KINDS = ["correct", "sign", "power_of_ten", "wrong", "missing", "unreadable"]
 
@@ -190,7 +191,11 @@ print((submissions / copier / "answers.toml").read_text(encoding="utf-8"))
 # `/autograder`, and `GRAPHKIN_PYTHON` at this notebook's Python instead of the one `setup.sh` would
 # have installed. Two at a time, one per core.
 
-# %%
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+# Gradescope's /autograder, laid out for each submission (as the text above says).
+import os
+import shutil
+
 source = folder / "autograder-source"
 with zipfile.ZipFile(export / "autograder.zip") as z:
     z.extractall(source)
@@ -209,12 +214,15 @@ def autograde(student):
     return json.loads((root / "results" / "results.json").read_text(encoding="utf-8"))
 
 
+# %%
+import time
+from concurrent.futures import ThreadPoolExecutor
+
 start = time.perf_counter()
 with ThreadPoolExecutor(max_workers=2) as pool:
     results = dict(zip(students, pool.map(autograde, students)))
 elapsed = time.perf_counter() - start
-print(f"{len(results)} submissions graded in {elapsed:.1f} s "
-      f"({elapsed / len(results):.2f} s each, on {min(2, os.cpu_count() or 1)} cores)")
+print(f"{len(results)} submissions graded in {elapsed:.1f} s ({elapsed / len(results):.2f} s each, two at a time)")
 
 # %% [markdown]
 # What one student reads on Gradescope: the summary, then one test per question with graphkin's
@@ -243,25 +251,14 @@ print(results[copier]["output"])
 # Gradescope's *Export Submissions* gives you these files for a real class.
 
 # %%
-scores = np.array([results[s]["score"] for s in students])
-reports = {s: results[s]["extra_data"]["graphkin"] for s in students if "extra_data" in results[s]}
-counts = Counter((q["id"], q["slip"] or q["verdict"]) for rep in reports.values() for q in rep["questions"]
-                 if q["verdict"] != "correct")
-
-fig = Figure(figsize=(10, 3.6), layout="constrained")
-ax1, ax2 = fig.subplots(1, 2, width_ratios=[1, 1.4])
-ax1.hist(scores, bins=np.arange(-0.25, 3.5, 0.5), color="#4c72b0", edgecolor="white")
-ax1.set(xlabel="score (of 3 points)", ylabel="students", title=f"Scores, mean {scores.mean():.2f}")
-labels = [f"{qid}: {what.replace('_', ' ')}" for (qid, what), n in counts.most_common()]
-ax2.barh(labels[::-1], [n for _, n in counts.most_common()][::-1], color="#dd8452")
-ax2.set(xlabel="answers", title="What went wrong, by question")
-ax2.xaxis.get_major_locator().set_params(integer=True)
-fig
+reports = {s: r["extra_data"]["graphkin"] for s, r in results.items() if "extra_data" in r}
+gk.draw.draw_grades(reports)
 
 # %% [markdown]
 # Read it as a teacher: a sign slip on T12 means the torque's sense is not settled (go back to the
 # sign convention); a power of ten means a unit was carried wrong; "wrong" answers are the ones to
-# look at by hand. The student who copied scored 0, with a sentence saying why.
+# look at by hand. The student who copied scored 0, with a sentence saying why; their `results.json`
+# carries no report (nothing of theirs was graded), so the charts leave them out.
 
 # %% [markdown]
 # ## 6. The other platforms
@@ -293,9 +290,12 @@ fig
 # itself full marks, graded as the platforms grade it (the otter export writes the keys file):
 
 # %%
-import nbformat  # noqa: E402  (here, because only this cell writes a notebook)
-
 graphkin("exercise", "export", NAME, "--to", "otter", "-o", "otter", "--roster", "roster.csv", "--secret", SECRET)
+
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+# The forger's notebook, cell by cell, as nbformat writes it.
+import nbformat
+
 forger = students[1]
 forged = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(c) for c in [
     f"STUDENT = {forger!r}",
@@ -306,6 +306,9 @@ forged = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(c) for c in [
     'F23 = "1 N ∠ 0°"', 'F14 = "1 N"', 'T12 = open("otter/strip_cutter_cut-keys.json").read()',
 ]])
 nbformat.write(forged, folder / "forged.ipynb")
+print("forged.ipynb:\n\n" + "\n\n".join(f"[{k + 1}] {c.source}" for k, c in enumerate(forged.cells)))
+
+# %%
 print(graphkin("exercise", "grade", NAME, "--keys", "otter/strip_cutter_cut-keys.json", "--answers", "forged.ipynb"))
 
 # %% [markdown]
@@ -320,32 +323,3 @@ print(graphkin("exercise", "grade", NAME, "--keys", "otter/strip_cutter_cut-keys
 graphkin("exercise", "export", NAME, "--to", "prairielearn", "-o", "pl", "--secret", SECRET)
 print("\n".join(sorted(str(p.relative_to(folder / "pl")) for p in (folder / "pl").rglob("*")
                        if p.is_file() and "serverFilesCourse" not in p.parts)))
-
-# %% tags=["remove-input"] jupyter={"source_hidden": true}
-import tomllib  # noqa: E402  (here, because only the checks read the answers files back)
-
-for s in students:
-    answers = tomllib.loads((submissions / s / "answers.toml").read_text(encoding="utf-8"))
-    answers.pop("student", None)
-    if s == copier:
-        assert results[s]["score"] == 0 and "each student answers their own variant" in results[s]["output"]
-        continue
-    report = gk.exercises.grade(NAME, s, answers, secret=SECRET, classmates=students)   # as the autograder does
-    assert abs(results[s]["score"] - report["score"]) < 1e-12, s
-    assert results[s]["extra_data"]["graphkin"] == json.loads(json.dumps(report)), s
-    for q in report["questions"]:
-        want = {"correct": "correct", "missing": "missing", "unreadable": "unreadable", "wrong": "wrong"}.get(
-            made[s, q["id"]], made[s, q["id"]])
-        assert (q["slip"] or q["verdict"]) == want, (s, q["id"], q["verdict"], q["slip"], made[s, q["id"]])
-assert sum(counts.values()) == sum(kind != "correct" for (s, _), kind in made.items() if s != copier)
-assert (source / "keys.json").is_file() and "secret" not in json.loads((source / "config.json").read_text())
-assert not [p for p in source.rglob("*") if p.is_file() and SECRET.encode() in p.read_bytes()]
-forged_grade = next(csv.DictReader(graphkin("exercise", "grade", NAME, "--keys", "otter/strip_cutter_cut-keys.json",
-                                            "--answers", "forged.ipynb").splitlines()))
-assert (forged_grade["student"], float(forged_grade["score"])) == (forger, 0.0)
-assert forged_grade["T12 verdict"] == "unreadable" and "as text" in forged_grade["T12 feedback"]
-for p in (export / "student_template", export / "README.md"):
-    files = [p] if p.is_file() else list(p.rglob("*"))
-    assert all(SECRET not in f.read_text(encoding="utf-8") for f in files if f.is_file())
-assert SECRET not in (folder / "pl" / "questions" / NAME / "question.html").read_text(encoding="utf-8")
-print("checks passed:", len(students), "submissions, mean score", round(float(scores.mean()), 3))

@@ -72,6 +72,7 @@ def draw_grades(reports, *, title: str = "", **style) -> Figure:
     mean = sum(v * n for v, n in scores.items()) / len(reports)
     ax1.set(xlabel=f"score (of {top:g} points)", ylabel="students", xlim=(-0.5, top + 0.5))
     ax1.set_title(f"Scores of {len(reports)} students, mean {mean:.2f}", fontsize=s.title_size)
+    ax1.xaxis.get_major_locator().set_params(integer=True)
     ax1.yaxis.get_major_locator().set_params(integer=True)
     wrong = what_went_wrong(reports).most_common()
     labels = [f"{qid}: {what.replace('_', ' ')}" for (qid, what), _ in wrong]
