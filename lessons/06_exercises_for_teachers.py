@@ -179,7 +179,7 @@ print(sheets["s001"]["intro"])
 # %%
 for s in students[:8]:
     data = ", ".join(g["shown"] for g in keys[s]["data"])
-    print(f"{s}  {data:<36}" + "   ".join(q["answer"]["text"] for q in keys[s]["questions"]))
+    print(f"{s}  {data:<40}" + "   ".join(q["answer"]["text"] for q in keys[s]["questions"]))
 
 # %% [markdown]
 # Each student's data come from a hash of (exercise, student id, secret) and nothing else: the same
