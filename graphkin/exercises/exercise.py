@@ -20,6 +20,7 @@ from graphkin import catalog
 from graphkin.errors import GraphkinError, ProblemFileError
 from graphkin.exercises.symbols import symbol_problem
 from graphkin.files import read_text
+from graphkin.model import Prismatic
 from graphkin.model.names import parse_force_name
 from graphkin.problem import FieldReader, build_problem
 from graphkin.units import to_si
@@ -324,7 +325,15 @@ def _kind_of(find: str, base_names: set[str], driver: str) -> tuple[str, int | N
     raise KeyError(find)
 
 
-def _question(rd: _Reader, t: dict, where: str, names: set[str], driver: str, route: str, moving) -> Question:
+def _sliding(mech) -> set[int]:
+    """The links of the sliding pairs between two moving links: those with a Coriolis component 2ωv (on a guide
+    of the frame, ω = 0 and there is none)."""
+    return {link for joint in mech.joints if isinstance(joint, Prismatic) and mech.frame not in joint.links
+            for link in joint.links}
+
+
+def _question(rd: _Reader, t: dict, where: str, names: set[str], driver: str, route: str, moving,
+              sliding=frozenset()) -> Question:
     rd.table(t, where, _QUESTION)
     qid = rd.string(t, "id", where)
     if not re.fullmatch(r"[A-Za-z_][\w.]*", qid):
@@ -339,6 +348,12 @@ def _question(rd: _Reader, t: dict, where: str, names: set[str], driver: str, ro
         raise rd.fail(f"{where}.find", f"{find!r} names nothing this problem has (it has: {', '.join(known)})") from None
     if link is not None and link not in moving:
         raise rd.fail(f"{where}.find", f"{find!r}: link {link} is not a moving link (moving: {', '.join(map(str, moving))})")
+    if kind == "coriolis" and link not in sliding:
+        # A Coriolis component 2ωv belongs to a sliding pair on a turning guide: asked of a link without one, no
+        # variant could have it, and every student's draw would be refused.
+        has = ", ".join(map(str, sorted(sliding))) or "none"
+        raise rd.fail(f"{where}.find", f"{find!r}: link {link} slides on no moving link, so it has no Coriolis "
+                      f"component (a guide of the frame has ω = 0); links that have one: {has}")
     parts = _PARTS[kind]
     part = rd.string(t, "part", where, parts[0])
     if part not in parts:
@@ -463,7 +478,7 @@ def parse_exercise(text: str, *, file: str = "<exercise>", id: str = "exercise",
     questions_raw = data.get("questions")
     if not isinstance(questions_raw, list) or not questions_raw:
         raise rd.fail("questions", "must be a non-empty list of [[questions]] tables")
-    questions = tuple(_question(rd, t, f"questions[{i}]", names, driver, route, mech.moving)
+    questions = tuple(_question(rd, t, f"questions[{i}]", names, driver, route, mech.moving, _sliding(mech))
                       for i, t in enumerate(questions_raw))
     ids = [q.id for q in questions]
     if len(set(ids)) != len(ids):

@@ -99,8 +99,8 @@ def _meet(p, u, q, w, reach):
     t = cross(q - p, w) / den
     s = cross(q - p, u) / den
     L = 2 * max(abs(t), abs(s), reach)
-    a = shapely.LineString([xy(p - L * u), xy(p + L * u)])
-    b = shapely.LineString([xy(q - L * w), xy(q + L * w)])
+    # Both segments in one call: shapely's array form skips the per-geometry constructor.
+    a, b = shapely.linestrings([[xy(p - L * u), xy(p + L * u)], [xy(q - L * w), xy(q + L * w)]])
     hit = shapely.intersection(a, b)
     if hit.is_empty or hit.geom_type != "Point":
         return p + t * u
@@ -138,8 +138,13 @@ class Builder:
         # Reactions passed on to the links of the groups still to solve: link -> [(name unmarked, name, F, X, couple)].
         self.passed: dict[int, list] = {}
         self.superposed: list[str] = []  # the dyads found with both links loaded
-        # Positions of points are the same in every sub-problem: ``like`` (another builder of this position) shares them.
+        # Positions of points, guide directions and slide senses are the same in every sub-problem: ``like`` (another
+        # builder of this position) shares them.
         self._z: dict = like._z if like is not None else {}
+        self._u: dict = like._u if like is not None else {}
+        # Each link's own loads, and the step that states them, are the same for the whole problem and the
+        # superposition's presentation: found once (by link, for builders of the whole problem only).
+        self._own: dict = like._own if like is not None else {}
         if like is not None:
             self.reach = like.reach
         else:
@@ -177,12 +182,27 @@ class Builder:
     def joint_point(self, joint, link):
         return self.z(joint.slider, joint.point) if isinstance(joint, Prismatic) else self.z(link, joint.point)
 
+    def u(self, joint: Prismatic) -> complex:
+        """Unit vector along the guide of ``joint`` at this position."""
+        key = id(joint)
+        if key not in self._u:
+            self._u[key] = complex(self.kin.z_guide(joint)[self.i])
+        return self._u[key]
+
+    def slide_sense(self, joint: Prismatic, on: int):
+        """Sense of the sliding of ``on`` along the guide of ``joint`` (+1, −1, or 0 where it is still)."""
+        key = (id(joint), on)
+        if key not in self._u:
+            # Kept a numpy scalar: the friction tilt is then computed exactly as before it was cached.
+            self._u[key] = self.kin.slide_sense(joint, on)[self.i]
+        return self._u[key]
+
     def w(self, joint: Prismatic, on: int, sigma: float):
         """Direction of the guide reaction on ``on`` per unit normal force (friction tilt included)."""
-        u = complex(self.kin.z_guide(joint)[self.i])
+        u = self.u(joint)
         w = 1j * u
         if joint.mu:
-            w -= joint.mu * sigma * self.kin.slide_sense(joint, on)[self.i] * u
+            w -= joint.mu * sigma * self.slide_sense(joint, on) * u
         return w
 
     def base_name(self, i, j):
@@ -195,6 +215,19 @@ class Builder:
     # -- loads ---------------------------------------------------------------
     def own_loads(self, link) -> _Load:
         """Inertia, weight and external loads of a link, with a step explaining its resultant."""
+        if self.sub or link not in self._own:
+            found = self._own_loads(link)
+            if not self.sub:
+                self._own[link] = found
+        else:
+            found = self._own[link]
+        F, M0, self.rname[link], step = found
+        if step is not None:
+            self.steps.append(step)
+        return _Load(F, M0)
+
+    def _own_loads(self, link) -> tuple[complex, float, str, Step | None]:
+        """A link's own loads reduced to the origin (F, M0), the name of their resultant, and the step stating them."""
         kin, i, body = self.kin, self.i, self.mech.link(link)
         load = _Load()
         G = complex(kin.z_G(link)[i])
@@ -242,14 +275,14 @@ class Builder:
                 load.add(0j, None, value)
                 parts.append(f"the external torque {ld.name or 'T'} = {number(value)} N·m acts on it")
         only_inertia = len(parts) == 1 and bool(Fi or Ti)
-        self.rname[link] = f"R{link}i" if only_inertia else f"R{link}"
+        rname = f"R{link}i" if only_inertia else f"R{link}"
         if len(parts) > 1 and load.F and load.point() is not None:
             lines.append(Line(f"R{link}", xy(load.point()), xy(load.F / abs(load.F)), "resultant"))
             values[f"R{link}"] = xy(load.F)
             parts.append(f"together they make one resultant R{link} = {number(abs(load.F))} N")
-        if parts:
-            self.add("resultant", f"Link {link}: " + "; ".join(parts) + ".", link, lines, values=values)
-        return load
+        step = self.step("resultant", f"Link {link}: " + "; ".join(parts) + ".", link, lines, values=values) \
+            if parts else None
+        return load.F, load.M0, rname, step
 
     def combine(self, link, load: _Load, extra: list):
         """Add reactions (name, force, point, couple) from groups solved before; one resultant R for the link."""
@@ -475,7 +508,7 @@ class Builder:
         for J, on, F in ((d.J1, d.j, F1), (d.J2, d.k, F2), (d.J3, d.k, F3)):
             self.store(J, on, F, C[id(J)])
             if isinstance(J, Prismatic):
-                N[id(J)] = dot(F, 1j * complex(self.kin.z_guide(J)[self.i]))
+                N[id(J)] = dot(F, 1j * self.u(J))
         return {"F": total, "N": N}
 
     def store(self, joint, on, F, C=0.0):
@@ -483,8 +516,7 @@ class Builder:
         sign = 1.0 if on == hi else -1.0
         self.forces[(lo, hi)] = xy(sign * F)
         if isinstance(joint, Prismatic):
-            u = complex(self.kin.z_guide(joint)[self.i])
-            self.normal[(lo, hi)] = float(dot(sign * F, 1j * u))
+            self.normal[(lo, hi)] = float(dot(sign * F, 1j * self.u(joint)))
             self.couple[(lo, hi)] = float(sign * C)
 
     # -- gears and the driver ----------------------------------------------------
@@ -580,7 +612,7 @@ class Builder:
             self.effort = float(T)
             self.driver_vector = None
             return
-        u = complex(self.kin.z_guide(J)[self.i])
+        u = self.u(J)
         X = self.z(link, J.point)
         N = -dot(R.F, 1j * u)
         # The side of the guide's friction follows the normal force; a sub-problem keeps the whole problem's.

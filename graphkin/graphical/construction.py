@@ -107,9 +107,9 @@ class Step:
         """|Σ polygon| / max |arrow|: 0 for a polygon that closes."""
         if not self.polygon:
             return 0.0
-        total = np.sum([a.vector for a in self.polygon], axis=0)
+        total = math.hypot(math.fsum(a.vector[0] for a in self.polygon), math.fsum(a.vector[1] for a in self.polygon))
         size = max(math.hypot(*a.vector) for a in self.polygon)
-        return float(math.hypot(*total) / size) if size else 0.0
+        return float(total / size) if size else 0.0
 
 
 @dataclass(frozen=True)

@@ -86,3 +86,23 @@ def test_a_question_on_a_link_without_a_sliding_pair_has_no_coriolis_answer():
 
     q = replace(v.exercise.questions[0], id="c3", kind="coriolis", find="coriolis3", part="magnitude", unit="m/s^2")
     assert v.expected(q).undefined
+
+
+@pytest.mark.parametrize("problem, find, has", [
+    ("fourbar_dynamic_makdin", "coriolis3", "none"),  # no sliding pair at all
+    ("slider_crank_friction", "coriolis4", "none"),  # a slider on the frame's guide: ω = 0, no 2ωv
+    ("shaper_six_bar", "coriolis4", "2, 3"),     # the ram's guide is the frame; the slotted lever's pair has one
+])
+def test_a_coriolis_question_on_a_link_with_no_turning_guide_is_refused_when_read(problem, find, has):
+    from graphkin.errors import ProblemFileError
+
+    text = (f'title = "t"\nproblem = "{problem}"\n\n[[questions]]\nid = "c"\nfind = "{find}"\n')
+    with pytest.raises(ProblemFileError) as err:
+        exercises.parse_exercise(text, file="ex.toml")
+    assert err.value.field == "questions[0].find"
+    assert f"links that have one: {has}" in str(err.value) and "ex.toml" in str(err.value)
+
+
+def test_a_coriolis_question_on_the_slotted_lever_is_read():
+    text = 'title = "t"\nproblem = "shaper_six_bar"\n\n[[questions]]\nid = "c"\nfind = "coriolis3"\n'
+    assert exercises.parse_exercise(text).questions[0].kind == "coriolis"
