@@ -73,6 +73,9 @@ def draw_positions(problem, at, *, between=None, cell=(4.4, 3.8), **style) -> Fi
 def _one_view(axes) -> None:
     """Give every panel the limits that hold them all, so that one mm of the plane is as long in each."""
     box = np.array([[*ax.get_xlim(), *ax.get_ylim()] for ax in axes])
+    x0, x1, y0, y1 = box[:, 0].min(), box[:, 1].max(), box[:, 2].min(), box[:, 3].max()
+    # A margin of 6 % a side: a point's label (B₀ at the right) stays inside its panel, not cut at the figure's edge.
+    dx, dy = 0.06 * (x1 - x0), 0.06 * (y1 - y0)
     for ax in axes:
-        ax.set_xlim(box[:, 0].min(), box[:, 1].max())
-        ax.set_ylim(box[:, 2].min(), box[:, 3].max())
+        ax.set_xlim(x0 - dx, x1 + dx)
+        ax.set_ylim(y0 - dy, y1 + dy)
