@@ -91,8 +91,9 @@ def worksheet(doc: Doc, s: Subject, entry: dict, c, i: int, *, find=True, from_m
     # The scale that holds every force the free bodies carry once the student has drawn their inertia resultants.
     k_fb, X_fb = scaled.free_body_scales(c, links)
     if from_motion:
-        caption = ("The free bodies with the external loads only: draw each inertia resultant on them from your table "
-                   "(on its line at h from G); the joint forces are yours to find. ")
+        caption = ("The free bodies with the external loads only. Draw each inertia resultant from your table, on its "
+                   "line at h from G: here, or on the mechanism's drawing, which has room for a line far from its "
+                   "link. The joint forces are yours to find. ")
     else:
         caption = ("The free bodies with the loads known before the construction ("
                    + ("" if s.static else "the inertia resultant on its line, ") + "external loads); the joint forces "
@@ -125,13 +126,13 @@ def motion_room(doc: Doc, s: Subject, entry: dict):
                      *(["—"] * 3 if massless else ["", "", ""])])
     doc.heading(2, "Read off your polygons")
     doc.table(["link", "ω [rad/s]", "α [rad/s²]", (M.sym("a", "G"), " [m/s²] ∠"),
-               ("inertia force ", M.row(M.op("−"), M.i("m"), M.sym("a", "G")), " [N] ∠"),
-               ("inertia torque ", M.row(M.op("−"), M.sym("I", "G"), M.i("α")), " [N·m]"), ("offset ", M.i("h"), " [mm]")],
-              rows, "lllllll", boxed=True, tall=True,
-              caption="ω of a link is a relative velocity over the length it turns about, α its tangential "
-                      "acceleration over that length (sense: positive counter-clockwise), a_G from o′ to the image "
-                      "g′; then the inertia force −m a_G, the torque −I_G α and h = |T|/|F| on the side that "
-                      "reproduces the torque's sense")
+               (M.row(M.op("−"), M.i("m"), M.sym("a", "G")), " [N] ∠"),
+               (M.row(M.op("−"), M.sym("I", "G"), M.i("α")), " [N·m]"), (M.i("h"), " [mm]")],
+              rows, "lllllll", boxed=True, tall=True, wide=True,
+              caption="A link's ω is a relative velocity over the length it turns about, its α the tangential "
+                      "acceleration over that length (positive counter-clockwise); the acceleration of G runs from o′ "
+                      "to its image g′. Then the inertia force is −m times it, the inertia torque −α times the moment "
+                      "of inertia about G, and h = |T|/|F|, to the side that reproduces the torque's sense")
 
 
 def answer_room(doc: Doc, s: Subject):
