@@ -22,7 +22,7 @@ with this checkout's graphkin and with the one in DIR (same interpreter,
 e.g. ``git archive HEAD graphkin | tar -x -C /tmp/base``), alternately, and
 both medians are shown; ``--source DIR`` times DIR's graphkin alone.
 
-    .venv/bin/python benchmarks/bench_cli.py [--runs 9] [--source DIR | --against DIR]
+    .venv/bin/python benchmarks/bench_cli.py [--runs 9] [--source DIR | --against DIR] [--only TEXT]
 """
 
 from __future__ import annotations
@@ -44,6 +44,11 @@ COMMANDS = [
     ("graphkin solve double_slider", ["solve", "double_slider"], 150.0),
     ("graphkin solve double_slider --figure x.png", ["solve", "double_slider", "--figure", "{tmp}/x.png"], 600.0),
     ("graphkin cycle strip_cutter --n 3600 --json", ["cycle", "strip_cutter", "--n", "3600", "--json"], 250.0),
+    # issue 26: `solve` without figures no slower than before the velocity and acceleration polygons came in
+    ("graphkin solve strip_cutter", ["solve", "strip_cutter"], None),
+    ("graphkin solve strip_cutter --json", ["solve", "strip_cutter", "--json"], None),
+    ("graphkin solve fourbar_dynamic_makdin", ["solve", "fourbar_dynamic_makdin"], None),
+    ("graphkin solve fourbar_dynamic_makdin --json", ["solve", "fourbar_dynamic_makdin", "--json"], None),
     ("graphkin list", ["list"], None),
     ("graphkin --help", ["--help"], None),
 ]
@@ -150,6 +155,7 @@ def main() -> int:
     which = parser.add_mutually_exclusive_group()
     which.add_argument("--source", help="a folder holding another graphkin package to time instead")
     which.add_argument("--against", help="a folder holding another graphkin package to time alternately with this one")
+    parser.add_argument("--only", metavar="TEXT", help="with --against: only the commands whose label holds TEXT")
     args = parser.parse_args()
     import json
 
@@ -248,6 +254,8 @@ def _compare(tmp: Path, env: dict, args) -> int:
     print()
     print(f"{'command':48s} {'A':>14s} {'B':>14s} {'A/B':>6s} {'aim':>6s}  A meets it")
     for label, argv, aim in COMMANDS:
+        if args.only and args.only not in label:
+            continue
         full = _graphkin() + [a.format(tmp=tmp) for a in argv]
         _alternate(full, [env, other], 1)
         a, b = _alternate(full, [env, other], args.runs)
