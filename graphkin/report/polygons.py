@@ -87,8 +87,7 @@ def graphical_kinematics_data(kin: Kinematics, c: MotionConstruction, ic: Instan
     steps : bool
         Each step in full: its caption, points, lines and values, and the instant centres' reasoning. False
         keeps of each step only its polygon, kind and links (what a vector's ``"step"`` refers to): the
-        captions are most of the data (``graphkin solve --json`` leaves them out unless
-        ``--motion-polygons`` asks).
+        captions are most of the data.
 
     Returns
     -------
