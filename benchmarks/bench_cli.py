@@ -31,6 +31,7 @@ import argparse
 import os
 import platform
 import re
+import resource
 import statistics
 import subprocess
 import sys
@@ -87,12 +88,17 @@ def _time(argv: list[str], env: dict, runs: int) -> list[float]:
     return out
 
 
-def _alternate(argv: list[str], envs: list[dict], runs: int) -> list[list[float]]:
-    """Times of ``argv`` under each environment, taken in turn so that both see the same load."""
+def _alternate(argv: list[str], envs: list[dict], runs: int, cpu: list | None = None) -> list[list[float]]:
+    """Times of ``argv`` under each environment, taken in turn so that both see the same load; ``cpu``, a list
+    per environment, gets each run's CPU time (user + system) too."""
     times: list[list[float]] = [[] for _ in envs]
     for _ in range(runs):
         for k, env in enumerate(envs):
+            before = resource.getrusage(resource.RUSAGE_CHILDREN)
             times[k] += _time(argv, env, 1)
+            after = resource.getrusage(resource.RUSAGE_CHILDREN)
+            if cpu is not None:
+                cpu[k].append(after.ru_utime + after.ru_stime - before.ru_utime - before.ru_stime)
     return times
 
 
@@ -252,19 +258,24 @@ def _compare(tmp: Path, env: dict, args) -> int:
                             capture_output=True, text=True).stdout.strip()
     print("graphkin command-line latency (issue 15), two versions side by side")
     _when_and_where({"A (this)": mine, "B": theirs})
-    print(f"runs       {args.runs} per command and version, alternating; median (min) wall time [ms]")
+    print(f"runs       {args.runs} per command and version, alternating; median (min) wall time [ms], and the least "
+          "CPU time (user + system) of a run [ms]: on a machine shared with other work the wall time")
+    print("           measures the others too, the CPU time much less")
     print()
-    print(f"{'command':48s} {'A':>14s} {'B':>14s} {'A/B':>6s} {'aim':>6s}  A meets it")
+    print(f"{'command':48s} {'A':>14s} {'B':>14s} {'A/B':>6s} {'aim':>6s}  {'A meets it':10s} {'A cpu':>6s} "
+          f"{'B cpu':>6s} {'A/B':>5s}")
     for label, argv, aim in COMMANDS:
         if args.only and args.only not in label:
             continue
         full = _graphkin() + [a.format(tmp=tmp, four=FOUR) for a in argv]
         _alternate(full, [env, other], 1)
-        a, b = _alternate(full, [env, other], args.runs)
+        cpu: list[list[float]] = [[], []]
+        a, b = _alternate(full, [env, other], args.runs, cpu)
         ma, mb = statistics.median(a) * 1e3, statistics.median(b) * 1e3
+        ca, cb = min(cpu[0]) * 1e3, min(cpu[1]) * 1e3
         verdict = "" if aim is None else ("MET" if ma <= aim else "NOT MET")
         print(f"{label:48s} {ma:6.0f} ({min(a) * 1e3:5.0f}) {mb:6.0f} ({min(b) * 1e3:5.0f}) {ma / mb:6.2f} "
-              f"{'' if aim is None else f'{aim:.0f}':>6s}  {verdict}")
+              f"{'' if aim is None else f'{aim:.0f}':>6s}  {verdict:10s} {ca:6.0f} {cb:6.0f} {ca / cb:5.2f}")
     return 0
 
 
