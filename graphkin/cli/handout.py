@@ -39,8 +39,9 @@ def add_parser(sub) -> None:
     version.add_argument("--blank", action="store_true", help="a worksheet: each link's motion and inertia loads "
                          "given, the free bodies to scale, room to draw the force polygons by hand (no answers); "
                          "with --from-motion, the sheet that starts from the input motion")
-    h.add_argument("--from-motion", action="store_true", help="with --blank: only the positions, the input's motion "
-                   "(ω and α of the driving crank, or the driving slider's v and a), the masses and the external "
+    h.add_argument("--from-motion", action="store_true", help="with --blank, for a problem: only the positions, the "
+                   "input's motion (ω and α of the driving crank, or the driving slider's v and a), the masses and the "
+                   "external "
                    "loads given; boxes for the velocity and acceleration polygons, a table to fill with each link's "
                    "ω, α, a_G and inertia loads, then the force polygons")
     h.add_argument("--detail", choices=("compact", "full"), default="compact",
@@ -69,8 +70,8 @@ def run(args) -> int:
         if args.units:
             raise GraphkinError("--units is for one handout; a class's sheets and keys are in the exercise's units")
         if args.from_motion:
-            raise GraphkinError("--from-motion is for one worksheet (a problem's, or --student's); a class's sheets "
-                                "are their exercise's")
+            raise GraphkinError("--from-motion is for a problem's worksheet; a class's sheets give what their "
+                                "exercise's statement says")
         return _roster(args)
     if args.format:
         raise GraphkinError("--format is for --roster; for one handout the suffix of -o says it (.pdf, .html, .md)")

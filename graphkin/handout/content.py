@@ -107,7 +107,8 @@ def build(source, *, student=None, secret="", at=None, version=None, Cs=None, de
         With ``version="blank"``: the worksheet that starts from the input motion (``--from-motion``): the
         positions, the input's ω and α (or a driving slider's v and a), the mass properties and the external loads
         given; the velocity and acceleration polygons, each link's ω, α, a_G and inertia loads, and the force
-        polygons to construct. Not for a key, a static problem or one that gives the book's accelerations.
+        polygons to construct. For a problem only (an exercise's sheet gives what its statement says), and not
+        for a key, a static problem or one that gives the book's accelerations.
 
     Returns
     -------
@@ -130,12 +131,15 @@ def build(source, *, student=None, secret="", at=None, version=None, Cs=None, de
 
 def _check_from_motion(s: Subject, version: str):
     """A sheet from the input motion needs a blank worksheet and a motion to construct, none of it given."""
-    name = s.variant.exercise.id if s.variant is not None else s.problem.name
+    if s.variant is not None:
+        # Its statement says what the student is given (double_slider_graphical: "the rod's inertia resultant on
+        # its offset line"); a sheet that left it out would contradict it.
+        raise GraphkinError(f"--from-motion is for a problem's worksheet; the exercise {s.variant.exercise.id}'s "
+                            "sheet gives what its statement says")
+    name = s.problem.name
     if version == "key":
         raise GraphkinError("--from-motion is for a blank worksheet (--blank); a key already draws the polygons "
                             "from the input motion")
-    if version == "sheet" and not s.variant.exercise.draw:
-        raise GraphkinError(f"--from-motion: {name}'s sheet has no drawings; add --blank for a worksheet")
     if s.static:
         raise GraphkinError(f"--from-motion: {name} is static (no inertia loads): there is no motion to construct; "
                             "leave --from-motion out")

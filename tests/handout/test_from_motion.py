@@ -128,7 +128,9 @@ def test_a_motion_only_exercise_sheet_keeps_its_motion_boxes(name):
     (["strip_cutter", "--from-motion"], "add --blank"),
     (["fourbar_two_loads_makdin", "--blank", "--from-motion"], "is static"),
     (["fourbar_dynamic_makdin", "--blank", "--from-motion"], "gives the book's accelerations"),
-    (["strip_cutter_cut", "--roster", "roster.csv", "--blank", "--from-motion"], "one worksheet"),
+    (["strip_cutter_cut", "--roster", "roster.csv", "--blank", "--from-motion"], "a problem's worksheet"),
+    (["double_slider_graphical", "--student", "s1", "--secret", "k", "--blank", "--from-motion"],
+     "a problem's worksheet"),
 ])
 def test_from_motion_where_it_cannot_be_is_one_line_and_exit_2(tmp_path, args, says):
     err = io.StringIO()
