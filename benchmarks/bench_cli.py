@@ -22,7 +22,7 @@ with this checkout's graphkin and with the one in DIR (same interpreter,
 e.g. ``git archive HEAD graphkin | tar -x -C /tmp/base``), alternately, and
 both medians are shown; ``--source DIR`` times DIR's graphkin alone.
 
-    .venv/bin/python benchmarks/bench_cli.py [--runs 9] [--source DIR | --against DIR]
+    .venv/bin/python benchmarks/bench_cli.py [--runs 9] [--source DIR | --against DIR] [--only TEXT]
 """
 
 from __future__ import annotations
@@ -31,6 +31,7 @@ import argparse
 import os
 import platform
 import re
+import resource
 import statistics
 import subprocess
 import sys
@@ -44,9 +45,16 @@ COMMANDS = [
     ("graphkin solve double_slider", ["solve", "double_slider"], 150.0),
     ("graphkin solve double_slider --figure x.png", ["solve", "double_slider", "--figure", "{tmp}/x.png"], 600.0),
     ("graphkin cycle strip_cutter --n 3600 --json", ["cycle", "strip_cutter", "--n", "3600", "--json"], 250.0),
+    # issue 26: `solve` without figures no slower than before the velocity and acceleration polygons came in
+    ("graphkin solve strip_cutter", ["solve", "strip_cutter"], None),
+    ("graphkin solve strip_cutter --json", ["solve", "strip_cutter", "--json"], None),
+    # a four-bar at one position, by its file: the catalog before issue 26 had no such problem
+    ("graphkin solve fourbar_dynamic_makdin.toml", ["solve", "{four}"], None),
+    ("graphkin solve fourbar_dynamic_makdin.toml --json", ["solve", "{four}", "--json"], None),
     ("graphkin list", ["list"], None),
     ("graphkin --help", ["--help"], None),
 ]
+FOUR = str(Path(__file__).resolve().parents[1] / "graphkin" / "catalog" / "fourbar_dynamic_makdin.toml")
 REFERENCE = [
     # what any command pays before graphkin does anything
     ("python -c pass", ["-c", "pass"]),
@@ -80,12 +88,17 @@ def _time(argv: list[str], env: dict, runs: int) -> list[float]:
     return out
 
 
-def _alternate(argv: list[str], envs: list[dict], runs: int) -> list[list[float]]:
-    """Times of ``argv`` under each environment, taken in turn so that both see the same load."""
+def _alternate(argv: list[str], envs: list[dict], runs: int, cpu: list | None = None) -> list[list[float]]:
+    """Times of ``argv`` under each environment, taken in turn so that both see the same load; ``cpu``, a list
+    per environment, gets each run's CPU time (user + system) too."""
     times: list[list[float]] = [[] for _ in envs]
     for _ in range(runs):
         for k, env in enumerate(envs):
+            before = resource.getrusage(resource.RUSAGE_CHILDREN)
             times[k] += _time(argv, env, 1)
+            after = resource.getrusage(resource.RUSAGE_CHILDREN)
+            if cpu is not None:
+                cpu[k].append(after.ru_utime + after.ru_stime - before.ru_utime - before.ru_stime)
     return times
 
 
@@ -150,6 +163,7 @@ def main() -> int:
     which = parser.add_mutually_exclusive_group()
     which.add_argument("--source", help="a folder holding another graphkin package to time instead")
     which.add_argument("--against", help="a folder holding another graphkin package to time alternately with this one")
+    parser.add_argument("--only", metavar="TEXT", help="with --against: only the commands whose label holds TEXT")
     args = parser.parse_args()
     import json
 
@@ -179,7 +193,7 @@ def main() -> int:
             print(f"{label:48s} {statistics.median(ts) * 1e3:8.0f} {min(ts) * 1e3:8.0f} {'':>8s}  (reference)")
         verdicts = []
         for label, argv, aim in COMMANDS:
-            full = _graphkin() + [a.format(tmp=tmp) for a in argv]
+            full = _graphkin() + [a.format(tmp=tmp, four=FOUR) for a in argv]
             _time(full, env, 1)  # bytecode and pint's cache, as after a first run
             ts = _time(full, env, args.runs)
             med = statistics.median(ts) * 1e3
@@ -244,17 +258,24 @@ def _compare(tmp: Path, env: dict, args) -> int:
                             capture_output=True, text=True).stdout.strip()
     print("graphkin command-line latency (issue 15), two versions side by side")
     _when_and_where({"A (this)": mine, "B": theirs})
-    print(f"runs       {args.runs} per command and version, alternating; median (min) wall time [ms]")
+    print(f"runs       {args.runs} per command and version, alternating; median (min) wall time [ms], and the least "
+          "CPU time (user + system) of a run [ms]: on a machine shared with other work the wall time")
+    print("           measures the others too, the CPU time much less")
     print()
-    print(f"{'command':48s} {'A':>14s} {'B':>14s} {'A/B':>6s} {'aim':>6s}  A meets it")
+    print(f"{'command':48s} {'A':>14s} {'B':>14s} {'A/B':>6s} {'aim':>6s}  {'A meets it':10s} {'A cpu':>6s} "
+          f"{'B cpu':>6s} {'A/B':>5s}")
     for label, argv, aim in COMMANDS:
-        full = _graphkin() + [a.format(tmp=tmp) for a in argv]
+        if args.only and args.only not in label:
+            continue
+        full = _graphkin() + [a.format(tmp=tmp, four=FOUR) for a in argv]
         _alternate(full, [env, other], 1)
-        a, b = _alternate(full, [env, other], args.runs)
+        cpu: list[list[float]] = [[], []]
+        a, b = _alternate(full, [env, other], args.runs, cpu)
         ma, mb = statistics.median(a) * 1e3, statistics.median(b) * 1e3
+        ca, cb = min(cpu[0]) * 1e3, min(cpu[1]) * 1e3
         verdict = "" if aim is None else ("MET" if ma <= aim else "NOT MET")
         print(f"{label:48s} {ma:6.0f} ({min(a) * 1e3:5.0f}) {mb:6.0f} ({min(b) * 1e3:5.0f}) {ma / mb:6.2f} "
-              f"{'' if aim is None else f'{aim:.0f}':>6s}  {verdict}")
+              f"{'' if aim is None else f'{aim:.0f}':>6s}  {verdict:10s} {ca:6.0f} {cb:6.0f} {ca / cb:5.2f}")
     return 0
 
 

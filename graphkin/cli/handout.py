@@ -2,7 +2,7 @@
 
 ::
 
-    graphkin handout PROBLEM [--at POS] [--key | --blank] [--detail compact|full] -o out.pdf|out.html|out.md
+    graphkin handout PROBLEM [--at POS] [--key | --blank [--from-motion]] [--detail compact|full] -o out.pdf|…
     graphkin handout EXERCISE --student ID [--secret S] [--key | --blank] -o out.pdf
     graphkin handout EXERCISE --roster roster.csv [--format pdf|html|md] [--key | --blank] -o DIR/
 
@@ -36,8 +36,14 @@ def add_parser(sub) -> None:
                    "'200 mm' (default: the problem's own; over a whole cycle, where the driving effort peaks)")
     version = h.add_mutually_exclusive_group()
     version.add_argument("--key", action="store_true", help="everything: the worked solution (default for a problem)")
-    version.add_argument("--blank", action="store_true", help="the free bodies to scale, with room to draw the "
-                         "force polygons by hand (no answers)")
+    version.add_argument("--blank", action="store_true", help="a worksheet: each link's motion and inertia loads "
+                         "given, the free bodies to scale, room to draw the force polygons by hand (no answers); "
+                         "with --from-motion, the sheet that starts from the input motion")
+    h.add_argument("--from-motion", action="store_true", help="with --blank, for a problem: only the positions, the "
+                   "input's motion (ω and α of the driving crank, or the driving slider's v and a), the masses and the "
+                   "external "
+                   "loads given; boxes for the velocity and acceleration polygons, a table to fill with each link's "
+                   "ω, α, a_G and inertia loads, then the force polygons")
     h.add_argument("--detail", choices=("compact", "full"), default="compact",
                    help="a key as a textbook prints it (compact, the default), or every step walked through with "
                         "the problem's notes on its source (full)")
@@ -63,9 +69,15 @@ def run(args) -> int:
     if args.roster:
         if args.units:
             raise GraphkinError("--units is for one handout; a class's sheets and keys are in the exercise's units")
+        if args.from_motion:
+            raise GraphkinError("--from-motion is for a problem's worksheet; a class's sheets give what their "
+                                "exercise's statement says")
         return _roster(args)
     if args.format:
         raise GraphkinError("--format is for --roster; for one handout the suffix of -o says it (.pdf, .html, .md)")
+    if args.from_motion and not args.blank:
+        raise GraphkinError("--from-motion is for a worksheet (--blank)" + (
+            ", not a key: a key draws the polygons from the input motion already" if args.key else ": add --blank"))
     handout.check_output(args.output)
     if args.at and args.student:
         raise GraphkinError("--at: an exercise's position is part of the student's data; leave --at out")
@@ -74,7 +86,7 @@ def run(args) -> int:
     units = unit_system(args.units)
     secret = _secret(args) if args.student else ""
     doc = handout.build(args.source, student=args.student, secret=secret, at=args.at, version=_version(args),
-                        Cs=args.cs, detail=args.detail, units=units)
+                        Cs=args.cs, detail=args.detail, units=units, from_motion=args.from_motion)
     written = handout.write(doc, args.output)
     extra = f" and {len(written) - 1} figures beside it" if len(written) > 1 else ""
     print(f"{doc['subtitle'].lower()} written to {written[-1]}{extra}", file=sys.stderr)

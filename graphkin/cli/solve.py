@@ -26,7 +26,7 @@ def add_parser(sub) -> None:
     s.add_argument("--motion-polygons", dest="polygons", action="store_true",
                    help="with -o/--figure, also write the velocity and acceleration polygons to scale "
                         "(1 mm = X m/s, 1 mm = Y m/s²), as FILE_polygons; with --steps, their steps too; with "
-                        "--json, each polygon step in full (its caption, points, lines and values)")
+                        "--json, each position's polygons and instant centres as graphical_kinematics, every step in full")
 
 
 def run(args) -> int:
@@ -49,10 +49,11 @@ def run(args) -> int:
     # A position where the two routes disagree is not valid: neither answer can be trusted there.
     result = report.cross_check(result, graphical)
     if args.json:
-        kinematic = report.kinematic_constructions(result.kinematics)
-        # The polygons' step captions are most of the JSON (11 MB for the strip cutter's 180 positions, not 7):
-        # only --motion-polygons asks for them.
-        data = report.solution(problem, result, graphical, kinematic, kinematic_steps=args.polygons)
+        # The velocity and acceleration polygons of every position cost a quarter of `solve --json` again (the
+        # strip cutter's 180 positions: benchmarks/README.md) and nearly double its size: only --motion-polygons
+        # asks for them, with every step in full.
+        kinematic = report.kinematic_constructions(result.kinematics) if args.polygons else None
+        data = report.solution(problem, result, graphical, kinematic, kinematic_steps=True)
         print(json_text(data if units is None else solution_in(data, units)))
     else:
         print(report.format_solution(problem, result, graphical, units))

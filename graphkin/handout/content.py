@@ -3,7 +3,7 @@
 :func:`build` returns a dictionary::
 
     {"title": str, "subtitle": str, "source": str, "version": "key" | "sheet" | "blank",
-     "problem": str, "student": str | None,
+     "problem": str, "student": str | None, "from_motion": bool,
      "worked": [{"index": int, "q": float, "label": "θ12 = 342°"}],   the positions worked out
      "blocks": [block, ...]}
 
@@ -69,7 +69,8 @@ DETAILS = ("compact", "full")
 
 
 # -- the document ---------------------------------------------------------------------------
-def build(source, *, student=None, secret="", at=None, version=None, Cs=None, detail="compact", units=None) -> dict:
+def build(source, *, student=None, secret="", at=None, version=None, Cs=None, detail="compact", units=None,
+          from_motion=False) -> dict:
     """The worked solution (or a student's sheet) as data, ready for any renderer.
 
     Parameters
@@ -102,6 +103,12 @@ def build(source, *, student=None, secret="", at=None, version=None, Cs=None, de
     units : graphkin.units.systems.UnitSystem, optional
         The answers' units (``--units``; default SI: N, N·m, mm). The working (inertia loads, the matrix, the
         polygons) stays in SI, as it is solved; the given data is as the problem file writes it.
+    from_motion : bool
+        With ``version="blank"``: the worksheet that starts from the input motion (``--from-motion``): the
+        positions, the input's ω and α (or a driving slider's v and a), the mass properties and the external loads
+        given; the velocity and acceleration polygons, each link's ω, α, a_G and inertia loads, and the force
+        polygons to construct. For a problem only (an exercise's sheet gives what its statement says), and not
+        for a key, a static problem or one that gives the book's accelerations.
 
     Returns
     -------
@@ -117,10 +124,31 @@ def build(source, *, student=None, secret="", at=None, version=None, Cs=None, de
         raise GraphkinError(f"--detail must be one of {', '.join(DETAILS)}, got {detail!r}")
     if version == "sheet" and s.variant is None:
         version = "blank"  # a problem has no questions: its sheet is the blank worksheet
-    return _build(s, version, detail)
+    if from_motion:
+        _check_from_motion(s, version)
+    return _build(s, version, detail, from_motion)
 
 
-def _build(s: Subject, version: str, detail: str) -> dict:
+def _check_from_motion(s: Subject, version: str):
+    """A sheet from the input motion needs a blank worksheet and a motion to construct, none of it given."""
+    if s.variant is not None:
+        # Its statement says what the student is given (double_slider_graphical: "the rod's inertia resultant on
+        # its offset line"); a sheet that left it out would contradict it.
+        raise GraphkinError(f"--from-motion is for a problem's worksheet; the exercise {s.variant.exercise.id}'s "
+                            "sheet gives what its statement says")
+    name = s.problem.name
+    if version == "key":
+        raise GraphkinError("--from-motion is for a blank worksheet (--blank); a key already draws the polygons "
+                            "from the input motion")
+    if s.static:
+        raise GraphkinError(f"--from-motion: {name} is static (no inertia loads): there is no motion to construct; "
+                            "leave --from-motion out")
+    if s.result.kinematics.given:
+        raise GraphkinError(f"--from-motion: {name} gives the book's accelerations in its data, which the sheet "
+                            "would print; leave --from-motion out")
+
+
+def _build(s: Subject, version: str, detail: str, from_motion: bool = False) -> dict:
     doc = Doc()
     v = s.variant
     title = (v.exercise.title if v is not None else s.problem.title) or s.problem.name
@@ -130,11 +158,13 @@ def _build(s: Subject, version: str, detail: str) -> dict:
         # A student's page cites the book in one line; where the catalog read it is the teacher's (--detail full).
         source = (s.problem.cite if v is None and s.problem.cite else "") or citation(source)
     what = {"key": "worked solution", "sheet": "exercise sheet", "blank": "worksheet"}[version]
+    if from_motion:
+        what += " from the input motion"
     who = f"student {v.student}" if v is not None else ""
     worked = s.worked()
     out = {"title": title, "subtitle": ", ".join(x for x in (what.capitalize(), who) if x), "source": source,
            "version": version, "detail": detail, "problem": v.exercise.id if v is not None else s.problem.name,
-           "student": v.student if v is not None else None,
+           "student": v.student if v is not None else None, "from_motion": from_motion,
            "worked": [{"index": i, "q": float(s.result.kinematics.q[i]), "label": s.where(i)} for i in worked],
            "blocks": doc.blocks}
     if full:
@@ -144,7 +174,7 @@ def _build(s: Subject, version: str, detail: str) -> dict:
     elif version == "sheet" and not v.exercise.draw:
         _sheet(doc, s, worked)
     else:
-        _worksheet(doc, s, worked)
+        _worksheet(doc, s, worked, from_motion)
     return out
 
 
@@ -220,9 +250,9 @@ def _sheet(doc: Doc, s: Subject, worked):
                  f"{'torque' if s.crank else 'force'} against the input; read off what the questions ask.")
 
 
-def _worksheet(doc: Doc, s: Subject, worked):
+def _worksheet(doc: Doc, s: Subject, worked, from_motion: bool = False):
     v = s.variant
-    statement(doc, s, "blank", full=False, at=worked)
+    statement(doc, s, "blank", full=False, at=worked, from_motion=from_motion)
     if v is not None:
         own_data(doc, s)
         questions(doc, s, answers=False)
@@ -234,4 +264,4 @@ def _worksheet(doc: Doc, s: Subject, worked):
         if not entry["valid"]:
             doc.text(f"The linkage has no solution here: {entry['reason']}.")
             continue
-        worksheet(doc, s, entry, s.construction(i), i, find=v is None)
+        worksheet(doc, s, entry, s.construction(i), i, find=v is None, from_motion=from_motion)

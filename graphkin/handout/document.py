@@ -53,13 +53,14 @@ class Doc:
     def items(self, items, ordered=False):
         self.blocks.append({"kind": "list", "items": [runs(r) for r in items], "ordered": ordered})
 
-    def table(self, header, rows, align=None, caption=None, boxed=False, tall=False, small=False):
+    def table(self, header, rows, align=None, caption=None, boxed=False, tall=False, small=False, wide=False):
         """``boxed``: framed, as a book boxes its answers; ``tall``: rows tall enough to write an answer in;
-        ``small``: a smaller type, for a table of many columns."""
+        ``small``: a smaller type, for a table of many columns; ``wide``: the text's width, the columns after the
+        first sharing it (cells wide enough to write a value ∠ its direction in)."""
         self.blocks.append({"kind": "table", "header": [runs(h) for h in header],
                             "rows": [[runs(c) for c in r] for r in rows],
                             "align": align or "l" * len(header), "caption": typeset(caption) if caption else caption,
-                            "boxed": boxed, "tall": tall,
+                            "boxed": boxed, "tall": tall, "wide": wide,
                             "small": small})
 
     def equation(self, *lines, small=False):

@@ -119,8 +119,12 @@ def _block(b: dict) -> str:
         body = "".join("<tr>" + "".join(f"<td{c}>{_inline(x)}</td>" for c, x in zip(cls, row)) + "</tr>"
                        for row in b["rows"])
         caption = f"<caption>{esc(b['caption'])}</caption>" if b.get("caption") else ""
-        table = f"<table>{caption}<thead><tr>{head}</tr></thead><tbody>{body}</tbody></table>"
-        return f'<div class="boxed">{table}</div>' if b.get("boxed") else table
+        wide = ' style="width: 100%"' if b.get("wide") else ""
+        table = f"<table{wide}>{caption}<thead><tr>{head}</tr></thead><tbody>{body}</tbody></table>"
+        if b.get("boxed"):
+            block = ' style="display: block"' if wide else ""
+            return f'<div class="boxed"{block}>{table}</div>'
+        return table
     if kind == "equation":
         small = " small" if b.get("small") else ""
         return "".join(f'<div class="eq{small}">{_mathml(line, True)}</div>' for line in b["lines"])

@@ -32,7 +32,10 @@ def _input_text(s: Subject, mc) -> str:
     if d.crank:
         w, a = mc.omega[d.link], mc.alpha[d.link]
         return f"ω{d.link} = {M.fmt(w)} rad/s, α{d.link} = {M.fmt(a)} rad/s² (CCW positive)"
-    return "the driving slider's velocity and acceleration along its guide"
+    kin = s.result.kinematics
+    v, a = float(kin.q_dot[mc.index]), float(kin.q_ddot[mc.index])
+    return (f"the driving slider's v = {M.fmt(v)} m/s and a = {M.fmt(a)} m/s² along its guide "
+            "(positive in the guide's direction)")
 
 
 def _unavailable(doc: Doc, mc) -> bool:

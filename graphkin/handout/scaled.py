@@ -9,6 +9,7 @@ scale; a polygon figure every polygon at one force scale.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 
 import numpy as np
@@ -191,12 +192,17 @@ def mechanism(s: Subject, c, i: int, k: float, *, room=False, key="mechanism") -
                      f"the mechanism at {s.where(i)}, drawn at {length_text(k)}", natural=True)
 
 
-def free_bodies(s: Subject, c, i: int, links, k: float, X: float, *, unknowns=True) -> Picture:
+def free_bodies(s: Subject, c, i: int, links, k: float, X: float, *, unknowns=True, inertia=True) -> Picture:
+    """The free bodies of ``links`` at 1:k and 1 mm = X N; ``unknowns=False`` leaves out the forces the
+    construction finds, ``inertia=False`` the inertia resultants too (a sheet whose student finds them from the
+    input motion: only the external loads are drawn)."""
     from graphkin.draw import paper
 
-    return s.picture(f"free-bodies-{i}-{'all' if unknowns else 'given'}", lambda: paper.draw_free_bodies(
-        c, links, length_scale=k, force_scale=X, unknowns=unknowns),
-        alt=f"the free bodies at {length_text(k)}, forces at {force_text(X)}", natural=True)
+    shown = c if inertia else dataclasses.replace(c, inertia={})
+    key = f"free-bodies-{i}-{'all' if unknowns else 'given'}{'' if inertia else '-external'}"
+    return s.picture(key, lambda: paper.draw_free_bodies(shown, links, length_scale=k, force_scale=X,
+                                                         unknowns=unknowns),
+                     alt=f"the free bodies at {length_text(k)}, forces at {force_text(X)}", natural=True)
 
 
 def polygons(s: Subject, key: str, steps, X: float, driver_name=None, titles=None) -> Picture:

@@ -21,9 +21,10 @@ from graphkin.notation import num
 
 
 # -- sections ----------------------------------------------------------------------------------
-def statement(doc: Doc, s: Subject, version: str, *, full: bool = False, at=()):
+def statement(doc: Doc, s: Subject, version: str, *, full: bool = False, at=(), from_motion: bool = False):
     """What is asked: the exercise's statement with the student's values, the problem's notes (the full key,
-    for the teacher: they say how the catalog read the book), or the question in one sentence."""
+    for the teacher: they say how the catalog read the book), or the question in one sentence (``from_motion``:
+    by construction from the input motion)."""
     v = s.variant
     if v is not None and v.exercise.intro:
         doc.heading(1, "The exercise")
@@ -37,6 +38,12 @@ def statement(doc: Doc, s: Subject, version: str, *, full: bool = False, at=()):
         return
     how = ("a static force analysis: no inertia loads" if s.static else "inertia included (d'Alembert)")
     what = f"the driving {'torque' if s.crank else 'force'} {s.mech.driver.symbol}"
+    if from_motion:
+        where = " and ".join(s.where(i) for i in at)
+        doc.text(*M.prose(f"At {where}, starting from the input motion, construct the velocity and acceleration "
+                          "polygons, read off each link's ω, α and a_G, find its inertia loads, then find every "
+                          f"joint force and {what} graphically."))
+        return
     if s.whole_cycle:
         where = (f" Over the whole cycle, worked out in full at {s.where(at[0])}, where {what} is largest in size."
                  if at else "")

@@ -62,6 +62,8 @@ def _block(b: dict, floats: bool = False) -> str:
         head = ", ".join(f"[*{_inline(h)}*]" for h in b["header"])
         cells = ",\n  ".join(", ".join(f"[{_inline(c)}]" for c in row) for row in b["rows"])
         inset = ", inset: (x: 5pt, y: 7pt)" if b.get("tall") else ""
+        if b.get("wide"):
+            cols = "(auto, " + ", ".join(["1fr"] * (cols - 1)) + ")"
         table = (f"#table(columns: {cols}, align: ({align},){inset}, table.header({head}),\n  {cells},\n)")
         if b.get("caption"):
             table += f"\n#block(above: 0.4em)[#text(size: 8.5pt, style: \"italic\")[#{_string(b['caption'])}]]"

@@ -2,6 +2,12 @@
 room to draw the lines of action, the free bodies with their known loads, a box per force polygon that holds
 it at the stated scale, what to find, and room for the answers.
 
+Two worksheets of a problem: the one that gives each link's motion and inertia loads and asks for the forces
+(:func:`worksheet`, issue 24), and the one that starts from the input motion (:func:`worksheet`,
+``from_motion=True``): the positions, the input's ω and α (or a driving slider's v and a), the mass properties
+and the external loads are given; the velocity and acceleration polygons, each link's ω, α, a_G and inertia
+loads, then the force polygons are the student's to construct, and no number they construct is printed.
+
 The scales are :func:`graphkin.graphical.paper.sheet_scales`'s, the ones the grader allows a reading error at
 (:data:`graphkin.graphical.paper.READING` on paper), so the sheet and the grading agree.
 """
@@ -31,10 +37,15 @@ def motion_only(s: Subject) -> bool:
     return v is not None and bool(v.exercise.questions) and all(q.kind in MOTION_KINDS for q in v.exercise.questions)
 
 
-def givens(doc: Doc, s: Subject, entry: dict):
-    """Everything the position gives: each link's motion and inertia loads, and the loads acting here."""
+def givens(doc: Doc, s: Subject, entry: dict, *, from_motion: bool = False):
+    """Everything the position gives: each link's motion and inertia loads (``from_motion``: the positions and the
+    input's motion only), and the loads acting here."""
     doc.heading(2, "Given at this position")
-    if s.static or motion_only(s):
+    if from_motion:
+        doc.table(["link", "θ [°]"], [[f"link {link}", M.n(M.fmt_fixed(math.degrees(d["theta"])))]
+                                      for link, d in entry["links"].items()], "lr",
+                  caption="Each link's angle here; the input's motion is in the data above")
+    elif s.static or motion_only(s):
         # The polygons' exercise asks for ω, α and a_G: only the positions are given.
         doc.table(["link", "θ [°]"], [[f"link {link}", M.n(M.fmt_fixed(math.degrees(d["theta"])))]
                                       for link, d in entry["links"].items()], "lr")
@@ -56,9 +67,10 @@ def givens(doc: Doc, s: Subject, entry: dict):
     loads(doc, s, entry, always=True)
 
 
-def worksheet(doc: Doc, s: Subject, entry: dict, c, i: int, *, find=True):
-    """A position's worksheet (its heading is the caller's)."""
-    givens(doc, s, entry)
+def worksheet(doc: Doc, s: Subject, entry: dict, c, i: int, *, find=True, from_motion=False):
+    """A position's worksheet (its heading is the caller's); ``from_motion``: the one that starts from the input
+    motion (the module's docstring)."""
+    givens(doc, s, entry, from_motion=from_motion)
     if c is None or not c.valid:
         return
     scales = sheet_scales(c)
@@ -67,17 +79,27 @@ def worksheet(doc: Doc, s: Subject, entry: dict, c, i: int, *, find=True):
     doc.figure([scaled.mechanism(s, c, i, k, room=True, key="sheet-mechanism")],
                f"The mechanism at {s.where(i)}, with room around it to draw the lines of action and find where they "
                f"meet. Scale {length_text(k)}: measure a length and multiply it by {M.fmt(k)}.")
-    polygons.boxes(doc, s, i)
     if motion_only(s):
+        polygons.boxes(doc, s, i)
         if find:
             answer_room(doc, s)
         return
+    if from_motion:
+        polygons.boxes(doc, s, i)
+        motion_room(doc, s, entry)
     links = list(s.mech.moving)
+    # The scale that holds every force the free bodies carry once the student has drawn their inertia resultants.
     k_fb, X_fb = scaled.free_body_scales(c, links)
-    doc.figure([scaled.free_bodies(s, c, i, links, k_fb, X_fb, unknowns=False)],
-               "The free bodies with the loads known before the construction ("
-               + ("" if s.static else "the inertia resultant on its line, ") + "external loads); the joint forces "
-               "are yours to find. " + scaled.statement(k_fb, X_fb))
+    if from_motion:
+        caption = ("The free bodies with the external loads only. Draw each inertia resultant from your table, on its "
+                   "line at h from G: here, or on the mechanism's drawing, which has room for a line far from its "
+                   "link. The joint forces are yours to find. ")
+    else:
+        caption = ("The free bodies with the loads known before the construction ("
+                   + ("" if s.static else "the inertia resultant on its line, ") + "external loads); the joint forces "
+                   "are yours to find. ")
+    doc.figure([scaled.free_bodies(s, c, i, links, k_fb, X_fb, unknowns=False, inertia=not from_motion)],
+               caption + scaled.statement(k_fb, X_fb))
     X = scales.polygon
     doc.heading(2, "Force polygons")
     doc.text(f"Draw each polygon tip to tail at {force_text(X)}, each in its box (it fits at that scale), and "
@@ -90,6 +112,27 @@ def worksheet(doc: Doc, s: Subject, entry: dict, c, i: int, *, find=True):
         doc.space(BOX[1], label, polygon_equation(st), width=BOX[0])
     if find:
         answer_room(doc, s)
+
+
+def motion_room(doc: Doc, s: Subject, entry: dict):
+    """A table with an empty cell for each link's ω, α, a_G and inertia loads, read off the student's polygons; a
+    driving crank's ω and α are given, and stated in its row."""
+    d = s.mech.driver
+    rows = []
+    for link in s.mech.moving:
+        massless = s.mech.link(link).mass == 0
+        given = entry["links"][str(link)] if d.crank and link == d.link else None
+        rows.append([f"link {link}", M.n(given["omega"]) if given else "", M.n(given["alpha"]) if given else "", "",
+                     *(["—"] * 3 if massless else ["", "", ""])])
+    doc.heading(2, "Read off your polygons")
+    doc.table(["link", "ω [rad/s]", "α [rad/s²]", (M.sym("a", "G"), " [m/s²] ∠"),
+               (M.row(M.op("−"), M.i("m"), M.sym("a", "G")), " [N] ∠"),
+               (M.row(M.op("−"), M.sym("I", "G"), M.i("α")), " [N·m]"), (M.i("h"), " [mm]")],
+              rows, "lllllll", boxed=True, tall=True, wide=True,
+              caption="A link's ω is a relative velocity over the length it turns about, its α the tangential "
+                      "acceleration over that length (positive counter-clockwise); the acceleration of G runs from o′ "
+                      "to its image g′. Then the inertia force is −m times it, the inertia torque −α times the moment "
+                      "of inertia about G, and h = |T|/|F|, to the side that reproduces the torque's sense")
 
 
 def answer_room(doc: Doc, s: Subject):

@@ -9,26 +9,29 @@ from __future__ import annotations
 
 import math
 
-from graphkin.graphical import InstantCentres, MotionConstruction, construct_kinematics, instant_centres
+from graphkin import graphical
 from graphkin.kinematics import Kinematics
+
+# The polygons' modules load when first used (graphkin.graphical's PEP 562 names): `graphkin solve` without
+# --motion-polygons imports this module and never builds a polygon.
 
 
 def kinematic_constructions(kin: Kinematics) -> list:
     """The polygons and instant centres of every position: ``(MotionConstruction, InstantCentres)`` each."""
-    return [(construct_kinematics(kin, i), instant_centres(kin, i)) for i in range(kin.n)]
+    return [(graphical.construct_kinematics(kin, i), graphical.instant_centres(kin, i)) for i in range(kin.n)]
 
 
 def _xy(v) -> list[float]:
     return [float(v[0]), float(v[1])]
 
 
-def _polygon(c: MotionConstruction, which: str) -> dict:
+def _polygon(c: graphical.MotionConstruction, which: str) -> dict:
     return {"images": {name: list(p) for name, p in c.images[which].items()},
             "vectors": [{"name": v.name, "tail": list(v.tail), "tip": list(v.tip), "components": list(v.vector),
                          "known": v.known, "step": v.step} for v in c.vectors(which)]}
 
 
-def _difference(c: MotionConstruction, kin: Kinematics) -> dict:
+def _difference(c: graphical.MotionConstruction, kin: Kinematics) -> dict:
     """Largest |polygon − analytical| of each kind, over the largest analytical value of that kind.
 
     The analytical values are worked out at this position only (rigid-body motion of each link's frame),
@@ -54,7 +57,7 @@ def _difference(c: MotionConstruction, kin: Kinematics) -> dict:
     return out
 
 
-def _centres(ic: InstantCentres, steps: bool) -> dict:
+def _centres(ic: graphical.InstantCentres, steps: bool) -> dict:
     return {"centres": {f"I{a}{b}": list(p) for (a, b), p in ic.centres.items()},
             "at_infinity": {f"I{a}{b}": list(d) for (a, b), d in ic.at_infinity.items()},
             "missing": [f"I{a}{b}" for a, b in ic.missing], **({"steps": list(ic.steps)} if steps else {}),
@@ -72,7 +75,8 @@ def _step(s, full: bool) -> dict:
             "values": {k: float(v) for k, v in s.values.items()}}
 
 
-def graphical_kinematics_data(kin: Kinematics, c: MotionConstruction, ic: InstantCentres | None = None, *,
+def graphical_kinematics_data(kin: Kinematics, c: graphical.MotionConstruction,
+                              ic: graphical.InstantCentres | None = None, *,
                               steps: bool = True) -> dict:
     """One position's polygons (and instant centres) as plain data; see ``docs/json.md``.
 
@@ -80,15 +84,14 @@ def graphical_kinematics_data(kin: Kinematics, c: MotionConstruction, ic: Instan
     ----------
     kin : Kinematics
         The analytical kinematics the construction was built from (for the differences).
-    c : MotionConstruction
+    c : graphkin.graphical.MotionConstruction
         The velocity and acceleration polygons at one position.
-    ic : InstantCentres, optional
+    ic : graphkin.graphical.InstantCentres, optional
         The instant centres at the same position.
     steps : bool
         Each step in full: its caption, points, lines and values, and the instant centres' reasoning. False
         keeps of each step only its polygon, kind and links (what a vector's ``"step"`` refers to): the
-        captions are most of the data (``graphkin solve --json`` leaves them out unless
-        ``--motion-polygons`` asks).
+        captions are most of the data.
 
     Returns
     -------

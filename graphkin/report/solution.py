@@ -115,8 +115,9 @@ def _disagreement(result: ForceAnalysis, c, i: int, size: float) -> str:
     return f"the graphical and analytical routes disagree: {what}"
 
 
-def _graphical(result: ForceAnalysis, c, i) -> dict:
-    """The graphical route at position i as plain data, with its difference from the analytical one."""
+def _graphical(result: ForceAnalysis, c, i, size: float) -> dict:
+    """The graphical route at position i as plain data, with its difference from the analytical one (``size``:
+    :func:`_size` of the mechanism, worked out once for every position)."""
     if c is None:
         return {"valid": False, "reason": result.reason(i)}
     if not c.valid:
@@ -133,7 +134,7 @@ def _graphical(result: ForceAnalysis, c, i) -> dict:
     eff = result.effort[i]
     # An effort that is rounding beside the forces (T12 where [unknown] balances the driver) is compared as 0.
     # It is measured against the largest force (times the mechanism's size for a torque), as cross_check does.
-    arm = scale * (_size(result.mechanism) if result.mechanism.driver.crank else 1.0)
+    arm = scale * (size if result.mechanism.driver.crank else 1.0)
     den = abs(eff) if abs(eff) > RESIDUE * arm else arm
     diff[result.driver_name] = float(abs(c.effort - eff) / max(den, 1e-300)) if eff else float(abs(c.effort))
     subproblems = []
@@ -202,6 +203,7 @@ def solution(problem, result: ForceAnalysis, graphical: list | None = None, kine
     step = forward.step(result.effort, kin.q_dot) if forward is not None else None
     unknown = getattr(problem, "unknown", None)
     found = unknown.values(result) if unknown is not None else None
+    size = _size(mech)
     for i in range(result.n):
         entry = {
             "index": i,
@@ -252,7 +254,7 @@ def solution(problem, result: ForceAnalysis, graphical: list | None = None, kine
                 entry["unknown"] = {"name": unknown.label(mech), "link": unknown.link, "kind": kind,
                                     "value": float(found[i])}
         if graphical is not None:
-            entry["graphical"] = _graphical(result, graphical[i], i)
+            entry["graphical"] = _graphical(result, graphical[i], i, size)
         if kinematic is not None:
             entry["graphical_kinematics"] = graphical_kinematics_data(kin, *kinematic[i], steps=kinematic_steps)
         positions.append(entry)

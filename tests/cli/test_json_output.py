@@ -58,8 +58,8 @@ def test_a_grade_report_is_strict_json(capsys, tmp_path):
 
 
 @pytest.mark.parametrize("problem", ["strip_cutter", "double_slider", "shaper_six_bar", "gearset"])
-def test_solve_json_carries_the_polygons_of_every_position(capsys, problem):
-    data = _json_of(capsys, "solve", problem, "--json")
+def test_solve_json_with_motion_polygons_carries_the_polygons_of_every_position(capsys, problem):
+    data = _json_of(capsys, "solve", problem, "--json", "--motion-polygons")
     for entry in data["positions"]:
         g = entry["graphical_kinematics"]
         assert g["valid"] == entry["valid"]
@@ -81,7 +81,18 @@ def test_solve_json_carries_the_polygons_of_every_position(capsys, problem):
                 scale = max(abs(x) for p in entry["links"].values() for q in p["points"].values() for x in q["velocity"])
                 assert motion["velocity"] == pytest.approx(exact["velocity"], rel=0, abs=1e-9 * scale)
         assert not g["instant_centres"]["missing"]
-        assert all("caption" not in s for s in g["steps"])  # the captions only with --motion-polygons
+        assert all(s["caption"] for s in g["steps"])
+
+
+def test_solve_json_leaves_the_polygons_to_motion_polygons(capsys):
+    """Building every position's polygons made `solve --json` a quarter slower and nearly twice as large (issue
+    26's "no slower than today", benchmarks/README.md): without --motion-polygons there are none, and the rest of
+    each position is as it was."""
+    plain = _json_of(capsys, "solve", "strip_cutter", "--json", "--at", "140 deg")
+    full = _json_of(capsys, "solve", "strip_cutter", "--json", "--at", "140 deg", "--motion-polygons")
+    assert "graphical_kinematics" not in plain["positions"][0]
+    assert full["positions"][0].pop("graphical_kinematics")["valid"]
+    assert full == plain
 
 
 def test_solve_json_with_motion_polygons_carries_every_step_in_full(capsys):
