@@ -11,7 +11,9 @@ from contextlib import contextmanager
 import numpy as np
 from matplotlib.backends import backend_svg
 from matplotlib.font_manager import findfont
+from matplotlib.path import Path
 from matplotlib.textpath import TextToPath
+from matplotlib.transforms import Affine2D
 
 from graphkin import notation
 
@@ -111,19 +113,69 @@ class _TextToPathOnce(TextToPath):
         # Two arrays rather than matplotlib's list of vertex rows (a tenth of the memory), read-only because
         # every figure shares them: the renderer only reads them into a Path.
         verts, codes = np.asarray(verts, float).reshape(-1, 2), np.asarray(codes, np.uint8)
+        verts = verts.view(_Outline)
+        verts.codes = codes
         verts.flags.writeable = codes.flags.writeable = False
         return verts, codes
+
+
+class _Outline(np.ndarray):
+    """The vertices of a text's outline [font units] as :class:`_TextToPathOnce` keeps them.
+
+    Marked by their type (``Path`` keeps the array it is given), so that :class:`_RendererSVG` knows a text
+    drawn as an outline when it is asked to draw it. Only the array the cache made carries ``codes``; an array
+    computed from it (a view, a sum) is an ``_Outline`` without them and is drawn as any path. ``svg`` is its
+    SVG path data, once it has been written.
+    """
 
 
 _TEXT_TO_PATH = _TextToPathOnce()
 
 
 class _RendererSVG(backend_svg.RendererSVG):
-    """matplotlib's SVG renderer with the shared :class:`_TextToPathOnce`."""
+    """matplotlib's SVG renderer with the shared :class:`_TextToPathOnce`, and each text outline written once.
+
+    A text with a halo is drawn as its outline, twice (stroked white, then filled), and matplotlib writes the
+    outline's every vertex into the file each time: three fifths of a handout's figure file was such copies.
+    Here the outline goes once into the file's ``<defs>``, in font units, and each drawing of it is a ``<use>``
+    that places it (the same matrix matplotlib applies to the vertices) with the same style, its stroke width
+    divided by the placement's scale so that it strokes as wide. A text outline drawn with a clip, a dash, a
+    hatch or a link is drawn as matplotlib draws it.
+    """
 
     def __init__(self, *args, **kwargs):
         super().__init__(*args, **kwargs)
         self._text2path = _TEXT_TO_PATH
+        self._outlines: dict = {}
+
+    def draw_path(self, gc, path, transform, rgbFace=None):
+        verts = path.vertices
+        if (getattr(verts, "codes", None) is None or gc.get_url() is not None or gc.get_hatch() is not None
+                or gc.get_sketch_params() is not None or gc.get_dashes()[1] is not None
+                or self._get_clip_attrs(gc)):
+            return super().draw_path(gc, path, transform, rgbFace)
+        m = self._make_flip_transform(transform).get_matrix()
+        scale = abs(m[0, 0] * m[1, 1] - m[0, 1] * m[1, 0]) ** 0.5
+        if not scale:
+            return super().draw_path(gc, path, transform, rgbFace)
+        style = self._get_style_dict(gc, rgbFace)
+        if "stroke" in style:
+            style["stroke-width"] = backend_svg._short_float_fmt(gc.get_linewidth() / scale)
+        # The array itself is kept with its id: an id() is unique only while its object lives.
+        known = self._outlines.get(id(verts))
+        if known is None:
+            known = self._outlines[id(verts)] = (verts, f"text-outline-{len(self._outlines) + 1}")
+            self.writer.start("defs")
+            data = vars(verts).get("svg")
+            if data is None:
+                # In font units, written once per process and kept with the outline.
+                data = verts.svg = self._convert_path(Path(verts, verts.codes), Affine2D(), simplify=False)
+            self.writer.element("path", id=known[1], d=data)
+            self.writer.end("defs")
+        self.writer.element("use", attrib={"xlink:href": f"#{known[1]}"},
+                            transform=backend_svg._generate_transform([("matrix", (m[0, 0], m[1, 0], m[0, 1], m[1, 1],
+                                                                                   m[0, 2], m[1, 2]))]),
+                            style=backend_svg._generate_css(style))
 
 
 _SWAP = threading.RLock()
