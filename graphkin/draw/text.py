@@ -6,6 +6,7 @@ from __future__ import annotations
 import functools
 import re
 import threading
+from collections import OrderedDict
 from contextlib import contextmanager
 
 import numpy as np
@@ -106,6 +107,27 @@ class _TextToPathOnce(TextToPath):
         if ismath == "TeX":
             return super().get_text_path(prop, s, ismath, features=features, language=language)
         return self._outline(s, *self._key(prop), ismath, None if features is None else tuple(features), language)
+
+    def get_glyphs_with_font(self, font, s, glyph_map=None, return_new_glyphs_only=False, *, features=None,
+                             language=None):
+        # Both callers (the outline above, and the SVG renderer's text drawn as glyphs) take ``font`` from
+        # _get_font, which sets it to FONT_SCALE at DPI: the glyphs depend on the font and the string only.
+        info, paths = self._glyphs(font, s, None if features is None else tuple(features), language)
+        if glyph_map is None:
+            glyph_map = OrderedDict()
+        new = OrderedDict() if return_new_glyphs_only else glyph_map
+        for glyph_repr, path in paths.items():
+            if glyph_repr not in glyph_map:
+                new[glyph_repr] = path
+        return list(info), new, []
+
+    @functools.lru_cache(4096)
+    def _glyphs(self, font, s, features, language):
+        """Each glyph of ``s`` (its name, x, y and scale) and the outline of each glyph, in order of first use."""
+        info, paths, _ = super().get_glyphs_with_font(font, s, features=features, language=language)
+        for verts, codes in paths.values():
+            verts.flags.writeable = codes.flags.writeable = False  # shared by every text that uses the glyph
+        return tuple(info), paths
 
     @functools.lru_cache(2048)
     def _outline(self, s, prop, font, ismath, features, language):
