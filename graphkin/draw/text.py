@@ -110,8 +110,8 @@ class _TextToPathOnce(TextToPath):
 
     def get_glyphs_with_font(self, font, s, glyph_map=None, return_new_glyphs_only=False, *, features=None,
                              language=None):
-        # Both callers (the outline above, and the SVG renderer's text drawn as glyphs) take ``font`` from
-        # _get_font, which sets it to FONT_SCALE at DPI: the glyphs depend on the font and the string only.
+        # Its callers (the SVG renderer's text drawn as glyphs, TextToPath.get_text_path, :meth:`_outline`) take
+        # ``font`` from _get_font, which sets it to FONT_SCALE at DPI: the glyphs depend on the font and string only.
         info, paths = self._glyphs(font, s, None if features is None else tuple(features), language)
         if glyph_map is None:
             glyph_map = OrderedDict()
@@ -131,14 +131,23 @@ class _TextToPathOnce(TextToPath):
 
     @functools.lru_cache(2048)
     def _outline(self, s, prop, font, ismath, features, language):
-        verts, codes = super().get_text_path(prop, s, ismath, features=features, language=language)
+        glyphs = None
+        if ismath:
+            verts, codes = super().get_text_path(prop, s, ismath, features=features, language=language)
+        else:
+            # TextToPath.get_text_path's vertices from the glyphs laid out once, a glyph at a time rather than a
+            # vertex row at a time (the same numbers).
+            glyphs = info, paths = self._glyphs(self._get_font(prop), s, features, language)
+            verts = [paths[r][0] * size + [x, y] for r, x, y, size in info] or [np.empty((0, 2))]
+            codes = [paths[r][1] for r, _, _, _ in info] or [np.empty(0, np.uint8)]
+            verts, codes = np.concatenate(verts), np.concatenate(codes)
         # Two arrays rather than matplotlib's list of vertex rows (a tenth of the memory), read-only because
         # every figure shares them: the renderer only reads them into a Path.
         verts, codes = np.asarray(verts, float).reshape(-1, 2), np.asarray(codes, np.uint8)
         verts = verts.view(_Outline)
         verts.codes = codes
-        if not ismath:
-            verts.glyphs = self._glyphs(self._get_font(prop), s, features, language)
+        if glyphs is not None:
+            verts.glyphs = glyphs
         verts.flags.writeable = codes.flags.writeable = False
         return verts, codes
 

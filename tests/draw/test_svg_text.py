@@ -82,3 +82,21 @@ def test_the_figure_looks_the_same_as_matplotlib_writes_it():
     assert differ.mean() < 0.01
     # And there is something drawn to compare.
     assert (theirs < 128).mean() > 0.01
+
+
+@pytest.mark.parametrize("text", ["F₂₃ = 1234.5 N", "θ₁₂ = 30°", "A", " ", ""])
+@pytest.mark.parametrize("weight", ["normal", "bold"])
+def test_a_text_outline_from_the_glyphs_laid_out_once_is_matplotlibs(text, weight):
+    """The shared layout gives the vertices and codes matplotlib's own TextToPath gives, number for number."""
+    from matplotlib.font_manager import FontProperties
+    from matplotlib.textpath import TextToPath
+
+    from graphkin.draw.text import _TEXT_TO_PATH
+
+    prop = FontProperties(size=9, weight=weight)
+    want_verts, want_codes = TextToPath().get_text_path(prop, text)
+    verts, codes = _TEXT_TO_PATH.get_text_path(prop, text)
+    assert np.array_equal(verts, np.asarray(want_verts, float).reshape(-1, 2))
+    assert np.array_equal(codes, np.asarray(want_codes, np.uint8))
+    # Shared by every figure: nobody may change them.
+    assert not verts.flags.writeable and not codes.flags.writeable
