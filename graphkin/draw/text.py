@@ -131,13 +131,12 @@ class _TextToPathOnce(TextToPath):
 
     @functools.lru_cache(2048)
     def _outline(self, s, prop, font, ismath, features, language):
-        glyphs = None
         if ismath:
             verts, codes = super().get_text_path(prop, s, ismath, features=features, language=language)
         else:
             # TextToPath.get_text_path's vertices from the glyphs laid out once, a glyph at a time rather than a
             # vertex row at a time (the same numbers).
-            glyphs = info, paths = self._glyphs(self._get_font(prop), s, features, language)
+            info, paths = self._glyphs(self._get_font(prop), s, features, language)
             verts = [paths[r][0] * size + [x, y] for r, x, y, size in info] or [np.empty((0, 2))]
             codes = [paths[r][1] for r, _, _, _ in info] or [np.empty(0, np.uint8)]
             verts, codes = np.concatenate(verts), np.concatenate(codes)
@@ -146,8 +145,6 @@ class _TextToPathOnce(TextToPath):
         verts, codes = np.asarray(verts, float).reshape(-1, 2), np.asarray(codes, np.uint8)
         verts = verts.view(_Outline)
         verts.codes = codes
-        if glyphs is not None:
-            verts.glyphs = glyphs
         verts.flags.writeable = codes.flags.writeable = False
         return verts, codes
 
@@ -157,9 +154,8 @@ class _Outline(np.ndarray):
 
     Marked by their type (``Path`` keeps the array it is given), so that :class:`_RendererSVG` knows a text
     drawn as an outline when it is asked to draw it. Only the array the cache made carries ``codes``; an array
-    computed from it (a view, a sum) is an ``_Outline`` without them and is drawn as any path. ``glyphs`` are the
-    glyphs it is made of (:meth:`_TextToPathOnce._glyphs`; not for mathtext), ``svg`` its SVG path data once it
-    has been written.
+    computed from it (a view, a sum) is an ``_Outline`` without them and is drawn as any path. ``svg`` is its SVG
+    path data [font units], once it has been written.
     """
 
 
@@ -167,15 +163,18 @@ _TEXT_TO_PATH = _TextToPathOnce()
 
 
 class _RendererSVG(backend_svg.RendererSVG):
-    """matplotlib's SVG renderer with the shared :class:`_TextToPathOnce`, and a haloed text written as glyphs.
+    """matplotlib's SVG renderer with the shared :class:`_TextToPathOnce`, and each text outline written once.
 
     A text with a halo is drawn as its outline, twice (stroked white, then filled), and matplotlib writes the
-    outline's every vertex into the file each time: three fifths of a handout's figure file was such copies. Here
-    it is written as matplotlib writes a text without a halo: each glyph's outline once per file in ``<defs>``,
-    and the text a group of ``<use>`` of them, placed by the matrix matplotlib applies to the outline's vertices,
-    in the same style, its stroke width divided by the placement's scale so that it strokes as wide. A mathtext
-    outline goes once into ``<defs>`` whole. A text outline drawn with a clip, a dash, a hatch or a link is drawn
-    as matplotlib draws it.
+    outline's every vertex into the file each time: three fifths of a handout's figure file was such copies.
+    Here the outline goes once into the file's ``<defs>``, in font units, and each drawing of it is a ``<use>``
+    that places it (the same matrix matplotlib applies to the vertices) with the same style, its stroke width
+    divided by the placement's scale so that it strokes as wide. A text outline drawn with a clip, a dash, a
+    hatch or a link is drawn as matplotlib draws it.
+
+    Not a ``<use>`` of each glyph, as matplotlib writes a text without a halo: the file would be a third smaller
+    again, but typst, which typesets the handouts, takes half as long again over it (it places each ``<use>``
+    as a copy), more than the smaller file saves.
     """
 
     def __init__(self, *args, **kwargs):
@@ -193,35 +192,21 @@ class _RendererSVG(backend_svg.RendererSVG):
         scale = abs(m[0, 0] * m[1, 1] - m[0, 1] * m[1, 0]) ** 0.5
         if not scale:
             return super().draw_path(gc, path, transform, rgbFace)
-        place = backend_svg._generate_transform([("matrix", (m[0, 0], m[1, 0], m[0, 1], m[1, 1], m[0, 2], m[1, 2]))])
         style = self._get_style_dict(gc, rgbFace)
-        glyphs = vars(verts).get("glyphs")
-        if glyphs is not None:
-            info, paths = glyphs
-            if "stroke" in style:
-                # A glyph's outline is written in 64ths (matplotlib's glyph definitions scale it by 1/64).
-                style["stroke-width"] = backend_svg._short_float_fmt(64 * gc.get_linewidth() / scale)
-            self._update_glyph_map_defs(OrderedDict((r, p) for r, p in paths.items() if r not in self._glyph_map))
-            self.writer.start("g", style=backend_svg._generate_css(style), transform=place)
-            for glyph_repr, x, y, size in info:
-                self.writer.element("use", transform=backend_svg._generate_transform([("translate", (x, y)),
-                                                                                      ("scale", (size,))]),
-                                    attrib={"xlink:href": f"#{self._adjust_glyph_repr(glyph_repr)}"})
-            self.writer.end("g")
-            return
         if "stroke" in style:
             style["stroke-width"] = backend_svg._short_float_fmt(gc.get_linewidth() / scale)
         # The array itself is kept with its id: an id() is unique only while its object lives.
         known = self._outlines.get(id(verts))
         if known is None:
             known = self._outlines[id(verts)] = (verts, f"text-outline-{len(self._outlines) + 1}")
-            self.writer.start("defs")
             data = vars(verts).get("svg")
             if data is None:
                 # In font units, written once per process and kept with the outline.
                 data = verts.svg = self._convert_path(Path(verts, verts.codes), Affine2D(), simplify=False)
+            self.writer.start("defs")
             self.writer.element("path", id=known[1], d=data)
             self.writer.end("defs")
+        place = backend_svg._generate_transform([("matrix", (m[0, 0], m[1, 0], m[0, 1], m[1, 1], m[0, 2], m[1, 2]))])
         self.writer.element("use", attrib={"xlink:href": f"#{known[1]}"}, transform=place,
                             style=backend_svg._generate_css(style))
 

@@ -1,7 +1,7 @@
 """The SVG a handout's figure is written as: each text laid out and each glyph written once, and it looks the same.
 
-:func:`graphkin.draw.text.svg_text_laid_out_once` swaps matplotlib's SVG renderer for one that writes a haloed text
-as ``<use>`` of glyph definitions (and a mathtext one as one definition) instead of its whole outline twice. Both
+:func:`graphkin.draw.text.svg_text_laid_out_once` swaps matplotlib's SVG renderer for one that writes a haloed text's
+outline once, as a definition that two ``<use>`` place, instead of writing all its vertices twice. Both
 files are rasterised by typst, which typesets the handouts, and compared pixel by pixel.
 """
 
@@ -29,7 +29,7 @@ def _figure() -> Figure:
     ax.plot([0.1, 2.9], [0.8, 0.8], color="k", lw=1.5)
     # A haloed name with Unicode subscripts, the same again rotated, a mathtext one, and a plain text.
     ax.text(0.2, 0.85, "F₂₃ = 1234.5 N", fontsize=11, color="#0072b2", path_effects=[halo()])
-    ax.text(1.9, 0.3, "F₂₃ = 1234.5 N", fontsize=9, rotation=30, color="#d55e00", path_effects=[halo()])
+    ax.text(1.7, 0.2, "F₂₃ = 1234.5 N", fontsize=11, rotation=30, color="#d55e00", path_effects=[halo()])
     ax.text(0.3, 0.3, r"$\mathregular{F_{c3}}$ (cutting)", fontsize=10, path_effects=[halo()])
     ax.text(0.2, 1.3, "Velocity polygon", fontsize=10)
     return fig
@@ -56,20 +56,25 @@ def _pixels(svg: str) -> np.ndarray:
     return np.asarray(Image.open(io.BytesIO(png)).convert("L"), float)
 
 
-def test_a_haloed_text_is_written_as_glyphs_and_strokes_as_wide():
+def test_a_haloed_text_is_written_once_and_strokes_as_wide():
     svg = _svg(True)
-    # No whole outline per haloed text (matplotlib's way wrote each twice); each glyph defined once per file.
     ids = re.findall(r'<path id="([^"]+)"', svg)
     assert len(ids) == len(set(ids))
-    assert sum(i.startswith("text-outline-") for i in ids) == 1  # the mathtext name only
-    halos = re.findall(r'<g style="[^"]*stroke: #ffffff; stroke-width: ([0-9.]+)" transform="matrix\(([^)]*)\)"',
-                       svg)
-    assert len(halos) == 2
-    for width, matrix in halos:
+    # One outline per string (the two haloed "F₂₃ = 1234.5 N" share theirs), each drawn twice: halo, then text.
+    outlines = [i for i in ids if i.startswith("text-outline-")]
+    assert len(outlines) == 2
+    # (A black text's fill needs no style.)
+    uses = re.findall(r'<use xlink:href="#(text-outline-\d+)" transform="matrix\(([^)]*)\)"(?: style="([^"]*)")?/>',
+                      svg)
+    assert sorted(u[0] for u in uses) == sorted(outlines * 2 + [outlines[0]] * 2)
+    halos = [(m, st) for _, m, st in uses if "stroke: #ffffff" in st]
+    assert len(halos) == 3
+    for matrix, style in halos:
         a, b, c, d, _, _ = map(float, matrix.split())
-        # Back to points: the group's scale, and the glyphs' own 1/64.
-        assert float(width) * (abs(a * d - b * c) ** 0.5) / 64 == pytest.approx(2.6, rel=1e-5)
-    assert len(svg) < 0.6 * len(_svg(False))
+        width = float(re.search(r"stroke-width: ([0-9.]+)", style)[1])
+        # Back in points through the placement's scale: the halo's 2.6 pt.
+        assert width * (abs(a * d - b * c) ** 0.5) == pytest.approx(2.6, rel=1e-5)
+    assert len(svg) < 0.7 * len(_svg(False))
 
 
 def test_the_figure_looks_the_same_as_matplotlib_writes_it():
