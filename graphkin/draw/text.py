@@ -219,8 +219,9 @@ def svg_text_laid_out_once():
     """While in the block, SVG files that matplotlib writes lay each text out once per process.
 
     ``savefig(format="svg")`` makes its renderer by the name ``RendererSVG`` in matplotlib's SVG backend and
-    offers no way to pass one; the name points at :class:`_RendererSVG` for the block. The SVG is the same,
-    byte for byte.
+    offers no way to pass one; the name points at :class:`_RendererSVG` for the block. The drawing is the same
+    (``tests/draw/test_svg_text.py`` rasterises both); the file differs only in writing each haloed text's
+    outline once (see :class:`_RendererSVG`), and the same figure always gives the same bytes.
     """
     with _SWAP:  # two threads saving at once must not put each other's name back
         plain = backend_svg.RendererSVG
