@@ -144,15 +144,23 @@ def _hits_many(P, Q, W, C, boxes):
     clipping (as :func:`segment_hits_box`), vectorised over the box–segment pairs whose extents meet.
     """
     n = len(boxes)
-    if not len(P) or not n:
-        return np.zeros(n)
+    b, k = _hit_pairs(P, Q, W, boxes)
+    return np.bincount(b, weights=C[k], minlength=n) if len(b) else np.zeros(n)
+
+
+def _hit_pairs(P, Q, W, boxes):
+    """The pairs (box b, segment k) where segment P[k]–Q[k], W[k] wide on either side, meets box b: two index
+    arrays (see :func:`_hits_many`)."""
+    none = np.zeros(0, int)
+    if not len(P) or not len(boxes):
+        return none, none
     lo, hi = np.minimum(P, Q) - W[:, None], np.maximum(P, Q) + W[:, None]
     bx0, by0, bx1, by1 = (boxes[:, k, None] for k in range(4))
     near = (lo[None, :, 0] <= bx1) & (hi[None, :, 0] >= bx0) & (lo[None, :, 1] <= by1) & (hi[None, :, 1] >= by0)
     # Only the pairs whose extents meet are clipped: a box is near a few of the segments.
     b, k = np.nonzero(near)
     if not len(b):
-        return np.zeros(n)
+        return none, none
     w = W[k]
     x0, y0, x1, y1 = boxes[b, 0] - w, boxes[b, 1] - w, boxes[b, 2] + w, boxes[b, 3] + w
     px, py = P[k, 0], P[k, 1]
@@ -168,7 +176,7 @@ def _hits_many(P, Q, W, C, boxes):
             t0 = np.where(~zero & (pp < 0), np.maximum(t0, r), t0)
             t1 = np.where(~zero & (pp > 0), np.minimum(t1, r), t1)
     hit = ~out & (t0 <= t1)
-    return np.bincount(b[hit], weights=C[k[hit]], minlength=n)
+    return b[hit], k[hit]
 
 
 def _box_overlaps(boxes, others, costs):
@@ -399,9 +407,10 @@ class Labeler:
         score = cost(boxes) + _box_overlaps(boxes, placed, [TEXT_COST] * len(placed)) + self._on_leaders(boxes, leaders)
         # The leader itself should not run through a text.
         if placed:
-            o = np.asarray(placed, float)
-            for j in range(len(boxes)):
-                score[j] += TEXT_COST * sum(segment_hits_box(A, ends[j], b) for b in o)
+            # Each leader against every text at once (segment_hits_box over the pairs, vectorised).
+            _, k = _hit_pairs(np.broadcast_to(np.asarray(A, float), ends.shape), ends, np.zeros(len(ends)),
+                              np.asarray(placed, float))
+            score += TEXT_COST * np.bincount(k, minlength=len(boxes))
         score = score + LEADER_COST + 0.05 * reach
         j = int(np.argmin(score))
         if not score[j] < worst:

@@ -6,12 +6,15 @@ from __future__ import annotations
 import functools
 import re
 import threading
+from collections import OrderedDict
 from contextlib import contextmanager
 
 import numpy as np
 from matplotlib.backends import backend_svg
 from matplotlib.font_manager import findfont
+from matplotlib.path import Path
 from matplotlib.textpath import TextToPath
+from matplotlib.transforms import Affine2D
 
 from graphkin import notation
 
@@ -105,25 +108,107 @@ class _TextToPathOnce(TextToPath):
             return super().get_text_path(prop, s, ismath, features=features, language=language)
         return self._outline(s, *self._key(prop), ismath, None if features is None else tuple(features), language)
 
+    def get_glyphs_with_font(self, font, s, glyph_map=None, return_new_glyphs_only=False, *, features=None,
+                             language=None):
+        # Its callers (the SVG renderer's text drawn as glyphs, TextToPath.get_text_path, :meth:`_outline`) take
+        # ``font`` from _get_font, which sets it to FONT_SCALE at DPI: the glyphs depend on the font and string only.
+        info, paths = self._glyphs(font, s, None if features is None else tuple(features), language)
+        if glyph_map is None:
+            glyph_map = OrderedDict()
+        new = OrderedDict() if return_new_glyphs_only else glyph_map
+        for glyph_repr, path in paths.items():
+            if glyph_repr not in glyph_map:
+                new[glyph_repr] = path
+        return list(info), new, []
+
+    @functools.lru_cache(4096)
+    def _glyphs(self, font, s, features, language):
+        """Each glyph of ``s`` (its name, x, y and scale) and the outline of each glyph, in order of first use."""
+        info, paths, _ = super().get_glyphs_with_font(font, s, features=features, language=language)
+        for verts, codes in paths.values():
+            verts.flags.writeable = codes.flags.writeable = False  # shared by every text that uses the glyph
+        return tuple(info), paths
+
     @functools.lru_cache(2048)
     def _outline(self, s, prop, font, ismath, features, language):
-        verts, codes = super().get_text_path(prop, s, ismath, features=features, language=language)
+        if ismath:
+            verts, codes = super().get_text_path(prop, s, ismath, features=features, language=language)
+        else:
+            # TextToPath.get_text_path's vertices from the glyphs laid out once, a glyph at a time rather than a
+            # vertex row at a time (the same numbers).
+            info, paths = self._glyphs(self._get_font(prop), s, features, language)
+            verts = [paths[r][0] * size + [x, y] for r, x, y, size in info] or [np.empty((0, 2))]
+            codes = [paths[r][1] for r, _, _, _ in info] or [np.empty(0, np.uint8)]
+            verts, codes = np.concatenate(verts), np.concatenate(codes)
         # Two arrays rather than matplotlib's list of vertex rows (a tenth of the memory), read-only because
         # every figure shares them: the renderer only reads them into a Path.
         verts, codes = np.asarray(verts, float).reshape(-1, 2), np.asarray(codes, np.uint8)
+        verts = verts.view(_Outline)
+        verts.codes = codes
         verts.flags.writeable = codes.flags.writeable = False
         return verts, codes
+
+
+class _Outline(np.ndarray):
+    """The vertices of a text's outline [font units] as :class:`_TextToPathOnce` keeps them.
+
+    Marked by their type (``Path`` keeps the array it is given), so that :class:`_RendererSVG` knows a text
+    drawn as an outline when it is asked to draw it. Only the array the cache made carries ``codes``; an array
+    computed from it (a view, a sum) is an ``_Outline`` without them and is drawn as any path. ``svg`` is its SVG
+    path data [font units], once it has been written.
+    """
 
 
 _TEXT_TO_PATH = _TextToPathOnce()
 
 
 class _RendererSVG(backend_svg.RendererSVG):
-    """matplotlib's SVG renderer with the shared :class:`_TextToPathOnce`."""
+    """matplotlib's SVG renderer with the shared :class:`_TextToPathOnce`, and each text outline written once.
+
+    A text with a halo is drawn as its outline, twice (stroked white, then filled), and matplotlib writes the
+    outline's every vertex into the file each time: three fifths of a handout's figure file was such copies.
+    Here the outline goes once into the file's ``<defs>``, in font units, and each drawing of it is a ``<use>``
+    that places it (the same matrix matplotlib applies to the vertices) with the same style, its stroke width
+    divided by the placement's scale so that it strokes as wide. A text outline drawn with a clip, a dash, a
+    hatch or a link is drawn as matplotlib draws it.
+
+    Not a ``<use>`` of each glyph, as matplotlib writes a text without a halo: the file would be a third smaller
+    again, but typst, which typesets the handouts, takes half as long again over it (it places each ``<use>``
+    as a copy), more than the smaller file saves.
+    """
 
     def __init__(self, *args, **kwargs):
         super().__init__(*args, **kwargs)
         self._text2path = _TEXT_TO_PATH
+        self._outlines: dict = {}
+
+    def draw_path(self, gc, path, transform, rgbFace=None):
+        verts = path.vertices
+        if (getattr(verts, "codes", None) is None or gc.get_url() is not None or gc.get_hatch() is not None
+                or gc.get_sketch_params() is not None or gc.get_dashes()[1] is not None
+                or self._get_clip_attrs(gc)):
+            return super().draw_path(gc, path, transform, rgbFace)
+        m = self._make_flip_transform(transform).get_matrix()
+        scale = abs(m[0, 0] * m[1, 1] - m[0, 1] * m[1, 0]) ** 0.5
+        if not scale:
+            return super().draw_path(gc, path, transform, rgbFace)
+        style = self._get_style_dict(gc, rgbFace)
+        if "stroke" in style:
+            style["stroke-width"] = backend_svg._short_float_fmt(gc.get_linewidth() / scale)
+        # The array itself is kept with its id: an id() is unique only while its object lives.
+        known = self._outlines.get(id(verts))
+        if known is None:
+            known = self._outlines[id(verts)] = (verts, f"text-outline-{len(self._outlines) + 1}")
+            data = vars(verts).get("svg")
+            if data is None:
+                # In font units, written once per process and kept with the outline.
+                data = verts.svg = self._convert_path(Path(verts, verts.codes), Affine2D(), simplify=False)
+            self.writer.start("defs")
+            self.writer.element("path", id=known[1], d=data)
+            self.writer.end("defs")
+        place = backend_svg._generate_transform([("matrix", (m[0, 0], m[1, 0], m[0, 1], m[1, 1], m[0, 2], m[1, 2]))])
+        self.writer.element("use", attrib={"xlink:href": f"#{known[1]}"}, transform=place,
+                            style=backend_svg._generate_css(style))
 
 
 _SWAP = threading.RLock()
@@ -134,8 +219,9 @@ def svg_text_laid_out_once():
     """While in the block, SVG files that matplotlib writes lay each text out once per process.
 
     ``savefig(format="svg")`` makes its renderer by the name ``RendererSVG`` in matplotlib's SVG backend and
-    offers no way to pass one; the name points at :class:`_RendererSVG` for the block. The SVG is the same,
-    byte for byte.
+    offers no way to pass one; the name points at :class:`_RendererSVG` for the block. The drawing is the same
+    (``tests/draw/test_svg_text.py`` rasterises both); the file differs only in writing each haloed text's
+    outline once (see :class:`_RendererSVG`), and the same figure always gives the same bytes.
     """
     with _SWAP:  # two threads saving at once must not put each other's name back
         plain = backend_svg.RendererSVG

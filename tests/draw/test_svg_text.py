@@ -1,0 +1,107 @@
+"""The SVG a handout's figure is written as: each text laid out and each glyph written once, and it looks the same.
+
+:func:`graphkin.draw.text.svg_text_laid_out_once` swaps matplotlib's SVG renderer for one that writes a haloed text's
+outline once, as a definition that two ``<use>`` place, instead of writing all its vertices twice. Both
+files are rasterised by typst, which typesets the handouts, and compared pixel by pixel.
+"""
+
+from __future__ import annotations
+
+import io
+import re
+
+import numpy as np
+import pytest
+from matplotlib.figure import Figure
+
+from graphkin.draw.text import halo, svg_text_laid_out_once
+
+typst = pytest.importorskip("typst")
+Image = pytest.importorskip("PIL.Image")
+
+
+def _figure() -> Figure:
+    fig = Figure(figsize=(3.0, 1.6), dpi=100)
+    ax = fig.add_axes([0, 0, 1, 1])
+    ax.set_axis_off()
+    ax.set_xlim(0, 3)
+    ax.set_ylim(0, 1.6)
+    ax.plot([0.1, 2.9], [0.8, 0.8], color="k", lw=1.5)
+    # A haloed name with Unicode subscripts, the same again rotated, a mathtext one, and a plain text.
+    ax.text(0.2, 0.85, "F₂₃ = 1234.5 N", fontsize=11, color="#0072b2", path_effects=[halo()])
+    ax.text(1.7, 0.2, "F₂₃ = 1234.5 N", fontsize=11, rotation=30, color="#d55e00", path_effects=[halo()])
+    ax.text(0.3, 0.3, r"$\mathregular{F_{c3}}$ (cutting)", fontsize=10, path_effects=[halo()])
+    ax.text(0.2, 1.3, "Velocity polygon", fontsize=10)
+    return fig
+
+
+def _svg(swap: bool) -> str:
+    out = io.BytesIO()
+    from matplotlib import rc_context
+
+    with rc_context({"svg.hashsalt": "test"}):
+        if swap:
+            with svg_text_laid_out_once():
+                _figure().savefig(out, format="svg", metadata={"Date": None})
+        else:
+            _figure().savefig(out, format="svg", metadata={"Date": None})
+    return out.getvalue().decode("utf-8")
+
+
+def _pixels(svg: str) -> np.ndarray:
+    src = (f'#set page(width: 3in, height: 1.6in, margin: 0pt)\n'
+           f'#image(bytes("{svg.replace(chr(92), chr(92) * 2).replace(chr(34), chr(92) + chr(34))}"), '
+           f'format: "svg", width: 100%)')
+    png = typst.Compiler(ignore_system_fonts=True).compile(input=src.encode(), format="png", ppi=300.0)
+    return np.asarray(Image.open(io.BytesIO(png)).convert("L"), float)
+
+
+def test_a_haloed_text_is_written_once_and_strokes_as_wide():
+    svg = _svg(True)
+    ids = re.findall(r'<path id="([^"]+)"', svg)
+    assert len(ids) == len(set(ids))
+    # One outline per string (the two haloed "F₂₃ = 1234.5 N" share theirs), each drawn twice: halo, then text.
+    outlines = [i for i in ids if i.startswith("text-outline-")]
+    assert len(outlines) == 2
+    # (A black text's fill needs no style.)
+    uses = re.findall(r'<use xlink:href="#(text-outline-\d+)" transform="matrix\(([^)]*)\)"(?: style="([^"]*)")?/>',
+                      svg)
+    assert sorted(u[0] for u in uses) == sorted(outlines * 2 + [outlines[0]] * 2)
+    halos = [(m, st) for _, m, st in uses if "stroke: #ffffff" in st]
+    assert len(halos) == 3
+    for matrix, style in halos:
+        a, b, c, d, _, _ = map(float, matrix.split())
+        width = float(re.search(r"stroke-width: ([0-9.]+)", style)[1])
+        # Back in points through the placement's scale: the halo's 2.6 pt.
+        assert width * (abs(a * d - b * c) ** 0.5) == pytest.approx(2.6, rel=1e-5)
+    assert len(svg) < 0.7 * len(_svg(False))
+
+
+def test_the_figure_looks_the_same_as_matplotlib_writes_it():
+    ours, theirs = _pixels(_svg(True)), _pixels(_svg(False))
+    assert ours.shape == theirs.shape
+    differ = np.abs(ours - theirs)
+    # Anti-aliasing at the edges of glyphs may round the other way (32 of 255 at most, here), no more: a halo half
+    # as wide, or a glyph a pixel off, changes whole pixels.
+    assert differ.max() <= 64
+    assert differ.mean() < 0.01
+    # And there is something drawn to compare.
+    assert (theirs < 128).mean() > 0.01
+
+
+@pytest.mark.parametrize("text", ["F₂₃ = 1234.5 N", "θ₁₂ = 30°", "A", " ", ""])
+@pytest.mark.parametrize("weight", ["normal", "bold"])
+def test_a_text_outline_from_the_glyphs_laid_out_once_is_matplotlibs(text, weight):
+    """The shared layout gives the vertices and codes matplotlib's own TextToPath gives, number for number."""
+    from matplotlib.font_manager import FontProperties
+    from matplotlib.textpath import TextToPath
+
+    from graphkin.draw.text import _TEXT_TO_PATH
+
+    prop = FontProperties(size=9, weight=weight)
+    want_verts, want_codes = TextToPath().get_text_path(prop, text)
+    verts, codes = _TEXT_TO_PATH.get_text_path(prop, text)
+    assert np.array_equal(verts, np.asarray(want_verts, float).reshape(-1, 2))
+    assert np.array_equal(codes, np.asarray(want_codes, np.uint8))
+    # Shared by every figure: nobody may change them.
+    assert not verts.flags.writeable and not codes.flags.writeable
