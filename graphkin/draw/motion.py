@@ -25,6 +25,7 @@ from graphkin.draw.axes import (
 )
 from graphkin.draw.labels import Labeler, arrow_label_candidates, point_label_candidates
 from graphkin.draw.scales import nice_round, scale_bar
+from graphkin.draw.text import motion_name
 from graphkin.errors import GraphkinError
 from graphkin.notation import num
 
@@ -147,7 +148,7 @@ def draw_motion_polygon(construction, polygon: str = "velocity", *, scale: float
         lab.dot(p, 3.0)
     for name, p in images.items():
         away = p - centre if np.hypot(*(p - centre)) > floor else np.array([-1.0, 1.0])
-        t = lab.label(name, point_label_candidates(p, away, (6.0, 12.0, 20.0)), color=s.ink)
+        t = lab.label(motion_name(name), point_label_candidates(p, away, (6.0, 12.0, 20.0)), color=s.ink)
         drawn.labels[name] = t
         drawn.add(t)
     if values:
@@ -155,8 +156,8 @@ def draw_motion_polygon(construction, polygon: str = "velocity", *, scale: float
             tail, tip = np.asarray(tail), np.asarray(tip)
             size = float(np.hypot(*(tip - tail))) * scale
             mid = 0.5 * (tail + tip)
-            t = lab.label(f"{name} = {num(size)} {unit}", arrow_label_candidates(tail, tip, mid - centre, s.label_pad),
-                          color=s.ink, size=s.small_size)
+            t = lab.label(f"{motion_name(name)} = {num(size)} {unit}",
+                          arrow_label_candidates(tail, tip, mid - centre, s.label_pad), color=s.ink, size=s.small_size)
             drawn.add(t)
     lo = np.min(np.asarray(pts), axis=0)
     extent = list(pts)

@@ -55,13 +55,40 @@ def sub(name: str) -> str:
     return sign + rf"$\mathregular{{{letter}_{{{index}}}}}$" + mark + sep + rest
 
 
+_VECTOR = re.compile(r"^([va])(?:\^([ntcr]))?_([A-Za-z0-9]+)$")
+_IMAGE = re.compile(r"^([a-z])(\d*)([′″]*)$")
+
+
+def motion_name(name: str) -> str:
+    r"""A name of the velocity and acceleration polygons as the books print it.
+
+    A vector's subscript and superscript are set (``a^t_BA`` → a with t above and BA below, ``v_B3B2`` → v with
+    B3B2 below), in upright mathtext: Unicode has no subscript capitals. An image point's number is a
+    subscript (``g3`` → ``g₃``, ``c3′`` → ``c₃′``). Anything else is returned as it is.
+
+    Examples
+    --------
+    >>> print(motion_name("a^t_BA"), motion_name("v_A"), motion_name("g3"), motion_name("o′"))
+    $\mathregular{a^{t}_{BA}}$ $\mathregular{v_{A}}$ g₃ o′
+    """
+    m = _VECTOR.match(name)
+    if m:
+        letter, sup, index = m.groups()
+        return rf"$\mathregular{{{letter}{f'^{{{sup}}}' if sup else ''}_{{{index}}}}}$"
+    m = _IMAGE.match(name)
+    if m:
+        letter, number, mark = m.groups()
+        return letter + subscript(number) + mark
+    return name
+
+
 def plain(text: str) -> str:
     """Text with subscripts and mathtext markup undone: ``F₂₃ = 27 N`` → ``F23 = 27 N``.
 
     ``$\\mathregular{F_{c3}}$ (cutting)`` → ``Fc3 (cutting)`` too (see :func:`sub`).
     """
     text = "".join(_UNSUB.get(ch, ch) for ch in text)
-    return re.sub(r"\\mathregular|[${}]|_(?=\{)", "", text)
+    return re.sub(r"\\mathregular|[${}]|[_^](?=\{)", "", text)
 
 
 def input_text(construction) -> str:

@@ -2,12 +2,14 @@
 
 import dataclasses
 import math
+import re
 
 import numpy as np
 import pytest
 
 from graphkin import catalog, draw
 from graphkin.cli import main
+from graphkin.draw import text as draw_text
 from graphkin.errors import GraphkinError
 from graphkin.graphical import construct_kinematics
 
@@ -95,3 +97,18 @@ def test_solve_steps_with_polygons_writes_their_frames_first(tmp_path, capsys):
     polygons = [n for n in names if "_polygons" in n]
     assert polygons and len(polygons) == len(construct_kinematics(catalog.load("double_slider").kinematics(), 0).steps)
     assert f"({polygons[0]} …" in capsys.readouterr().err
+
+
+@pytest.mark.parametrize("polygon", ["velocity", "acceleration"])
+def test_labels_are_typeset_not_raw_names(shaper, polygon):
+    """A book prints a^t_BA with t above and BA below, g3 as g₃: no raw ``^`` or ``_`` reaches the page."""
+    drawn = draw.draw_motion_polygon(shaper, polygon, values=True)
+    texts = [t.get_text() for t in drawn.ax.texts]
+    names = [v.name for v in shaper.vectors(polygon)]
+    assert any("^{" in t for t in texts) == (polygon == "acceleration")
+    for t in texts:
+        outside = re.sub(r"\$[^$]*\$", "", t)
+        assert "^" not in outside and "_" not in outside, t
+    assert not any(re.search(r"(?<![\\$])\b[a-z]\d", t) for t in texts), texts  # g3 is g₃
+    assert len(names) and all(any(draw_text.plain(draw_text.motion_name(n)) in draw_text.plain(t) for t in texts)
+                              for n in names if n in drawn.ends)
