@@ -1,5 +1,7 @@
-"""Rebuild every figure in figures/: each catalog problem's side-by-side figure and construction frames,
-the whole-cycle figures of lessons 03–05, and the worked-solution handouts of figures/handouts/.
+"""Rebuild every figure in figures/: the side-by-side figure and construction frames of the problems the
+README and the lessons show (:data:`SHOWN`; name others on the command line), the whole-cycle figures of
+lessons 03–05, and the worked-solution handouts of figures/handouts/. The docs site's catalog page draws
+every catalog problem when it is built, so figures/ need not hold them all.
 
 Run with ``make figures``. A problem with several positions is drawn at one
 representative position, named below.
@@ -18,6 +20,9 @@ from graphkin import catalog, draw
 from graphkin.graphical import construct_forces
 
 HERE = Path(__file__).resolve().parent
+SHOWN = ("double_slider", "engine_gas_force", "engine_static_khurmi", "gearset", "shaper_six_bar", "single_link",
+         "slider_crank_friction", "strip_cutter")
+"""The problems whose figures the README, the lessons and docs/ show."""
 AT = {
     "strip_cutter": math.radians(140.0),  # mid-cut: the 2000 N cutting force acts
     "slider_crank_friction": math.radians(60.0),
@@ -68,7 +73,7 @@ def build_handouts(names=None) -> list[Path]:
 
 
 def main(names=None) -> int:
-    for name in names or catalog.names():
+    for name in names or SHOWN:
         for path in build(name) + (build_cycle(name) if name in CYCLES else []):
             print(path.relative_to(HERE.parent))
     path = draw.save(draw.draw_sign_convention().ax.figure, HERE / "sign_convention.png")
