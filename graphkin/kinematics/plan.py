@@ -22,10 +22,17 @@ cache entry goes when the mechanism goes.
 from __future__ import annotations
 
 import weakref
-from functools import partial
+from functools import cached_property, partial
 
 from graphkin.kinematics.structure import decompose
 from graphkin.model import Mechanism
+
+
+def _state(obj) -> dict:
+    """An object's attributes, less what its cached properties keep: those are worked out from the others (a
+    mechanism's ``moving`` links), so that asking for one first, after the plan was made, changes nothing."""
+    cls = type(obj)
+    return {k: v for k, v in vars(obj).items() if not isinstance(getattr(cls, k, None), cached_property)}
 
 
 def _parts(mech: Mechanism) -> list:
@@ -55,8 +62,8 @@ class Plan:
         self.ref = weakref.ref(mech, partial(_forget, id(mech)))
         # Copies of the attribute dicts: a field set in place later makes them differ. The parts are held
         # (they are small and frozen); the mechanism is not, so that its plan goes when it goes.
-        self.own = dict(vars(mech))
-        self.snapshot = [(part, dict(vars(part))) for part in _parts(mech)]
+        self.own = _state(mech)
+        self.snapshot = [(part, _state(part)) for part in _parts(mech)]
         self.groups = decompose(mech)
         self.points = {(link.number, name): complex(x, y)
                        for link in mech.links for name, (x, y) in link.points.items()}
@@ -66,10 +73,10 @@ class Plan:
 
     def current(self, mech: Mechanism) -> bool:
         """Whether this plan still describes ``mech`` (the same object, no attribute changed since)."""
-        if self.ref() is not mech or vars(mech) != self.own:
+        if self.ref() is not mech or _state(mech) != self.own:
             return False
         for part, state in self.snapshot:
-            if vars(part) != state:
+            if _state(part) != state:
                 return False
         return True
 

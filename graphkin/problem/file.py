@@ -17,7 +17,7 @@ import numpy as np
 
 from graphkin.errors import GraphkinError, GraphkinWarning, ModelError, ProblemFileError
 from graphkin.files import read_text
-from graphkin.kinematics import decompose
+from graphkin.kinematics.plan import plan_of
 from graphkin.kinematics.structure import Dyad
 from graphkin.model import SENSES, Active, Driver, GearMesh, Link, Mechanism, PointForce, Prismatic, Revolute, Torque
 from graphkin.model import mass as massprops
@@ -230,7 +230,8 @@ def build_problem(data: Mapping[str, Any], *, file: str = "<problem>", base: str
                           f"driver.{speed} (a static analysis uses it only to set such senses)")
     given = _given(rd, data.get("given", {}), mech, len(q), static)
     try:
-        groups = decompose(mech)
+        # The plan the kinematics will use: decomposed once, here, for the mechanism's solvers too.
+        groups = plan_of(mech).groups
     except ModelError as exc:
         raise rd.fail(_field_of(exc.at) or "joints", str(exc)) from None
     if "from" in d:

@@ -24,7 +24,7 @@ import graphkin.kinematics.solver as dyads
 from graphkin.analytical import solve, solve_forces
 from graphkin.catalog import load as load_problem
 from graphkin.catalog import names as catalog_names
-from graphkin.kinematics import solve_kinematics
+from graphkin.kinematics import decompose, solve_kinematics
 from graphkin.kinematics.plan import cached_plans, plan_of
 from graphkin.model import Active, Driver, Link, Mechanism, PointForce, Revolute, Torque
 
@@ -245,3 +245,20 @@ def test_a_failing_position_is_named_the_same_way_in_chunks(monkeypatch):
     assert r.kinematics.failures.keys() == whole.kinematics.failures.keys()
     i = int(np.argmin(whole.valid))
     assert r.reason(i) == whole.reason(i) and "cannot be assembled" in r.reason(i)
+
+
+def test_a_plan_is_made_once_per_mechanism_whatever_is_asked_of_it_first(monkeypatch):
+    """A cached property the plan itself asks for (``moving``) or a solver asks for later (``joint_between``'s
+    pairs) is worked out from the fields: it must not make the plan look stale and be built again."""
+    from graphkin import catalog
+    from graphkin.graphical import construct_forces
+    from graphkin.kinematics import plan as plans
+
+    made = []
+    monkeypatch.setattr(plans, "decompose", lambda mech: made.append(mech) or decompose(mech))
+    p = catalog.load("strip_cutter")  # reading the file checks the decomposition: the plan is made there
+    result = p.solve()
+    construct_forces(result.kinematics, 0)
+    p.mechanism.joint_between(2, 3)
+    p.solve()
+    assert made == [p.mechanism]
