@@ -11,6 +11,7 @@ from contextlib import contextmanager
 
 import numpy as np
 from matplotlib.backends import backend_svg
+from matplotlib.backends.backend_agg import RendererAgg
 from matplotlib.font_manager import findfont
 from matplotlib.path import Path
 from matplotlib.textpath import TextToPath
@@ -187,6 +188,34 @@ class _Outline(np.ndarray):
 
 
 _TEXT_TO_PATH = _TextToPathOnce()
+
+
+class _MeasuringAgg(RendererAgg):
+    """An Agg renderer whose text sizes are those of the SVG files (see :func:`measuring_agg`)."""
+
+    def get_text_width_height_descent(self, s, prop, ismath):
+        if ismath == "TeX":
+            return super().get_text_width_height_descent(s, prop, ismath)
+        w, h, d = _TEXT_TO_PATH.get_text_width_height_descent(s, prop, ismath)
+        k = self.dpi / 72.0
+        return w * k, h * k, d * k
+
+
+def measuring_agg(dpi: float) -> RendererAgg:
+    """An Agg renderer (1 × 1 px) at ``dpi`` that measures text as the SVG files lay it out.
+
+    A headless figure's labels are measured to place them and to find the figure's extent, and its SVG file
+    then lays each text out again, at 72 dpi, through :class:`_TextToPathOnce`. Measured here through that same
+    shared cache (its sizes [pt] times ``dpi / 72``), each string is laid out once, not twice (a mathtext
+    label, such as ``a^t_BA = 273.3 m/s²``, is parsed once): the boxes are the unhinted outlines the file
+    prints, where Agg's own are hinted to its pixels. Only for measuring, never for drawing.
+
+    Parameters
+    ----------
+    dpi : float
+        Resolution the sizes are given at [pixels per inch].
+    """
+    return _MeasuringAgg(1, 1, dpi)
 
 
 class _RendererSVG(backend_svg.RendererSVG):
