@@ -16,7 +16,7 @@ from matplotlib.transforms import ScaledTranslation, TransformedBbox
 
 from graphkin.draw.arrows import perp, unit
 from graphkin.draw.axes import clip_path, line
-from graphkin.draw.text import halo
+from graphkin.draw.text import halo, measuring_agg
 
 TEXT_COST = 400.0
 """Price of a label's box on another text's box: never, unless every spot does."""
@@ -86,7 +86,9 @@ def measuring_renderer(fig):
     Text extents depend on the resolution only, not on the size of the
     canvas, so one small Agg renderer per dpi serves every figure; and
     matplotlib caches text metrics per renderer, so a label measured once
-    (``A``, ``F₂₃``, ``0``) is not laid out again on the next figure.
+    (``A``, ``F₂₃``, ``0``) is not laid out again on the next figure. The
+    shared renderer measures text as the SVG files lay it out
+    (:func:`graphkin.draw.text.measuring_agg`).
     """
     root = fig.get_figure(root=True) if hasattr(fig, "get_figure") else fig
     get = getattr(root.canvas, "get_renderer", None)
@@ -94,9 +96,7 @@ def measuring_renderer(fig):
         return get()
     r = _MEASURING.get(root.dpi)
     if r is None:
-        from matplotlib.backends.backend_agg import RendererAgg
-
-        r = _MEASURING[root.dpi] = RendererAgg(1, 1, root.dpi)
+        r = _MEASURING[root.dpi] = measuring_agg(root.dpi)
     return r
 
 

@@ -10,8 +10,11 @@ from collections import OrderedDict
 from contextlib import contextmanager
 
 import numpy as np
+from matplotlib import _mathtext, rcParams
 from matplotlib.backends import backend_svg
+from matplotlib.backends.backend_agg import RendererAgg
 from matplotlib.font_manager import findfont
+from matplotlib.mathtext import MathTextParser
 from matplotlib.path import Path
 from matplotlib.textpath import TextToPath
 from matplotlib.transforms import Affine2D
@@ -186,7 +189,86 @@ class _Outline(np.ndarray):
     """
 
 
+class _MathOnceParser(_mathtext.Parser):
+    """matplotlib's mathtext parser, with the formula between each pair of ``$`` parsed once per process.
+
+    A label such as ``$\\mathregular{a^{t}_{BA}}$ = 273.3 m/s²`` is new on every student's figures (its number
+    is), but its formula is not, and parsing the formula is nearly all the time pyparsing takes over the label
+    (~5 ms). The formula's boxes depend on its text and the parser's state where it starts (fonts, font, size,
+    resolution, the pending operator space), and on the ``mathtext.*`` settings the fonts read: all in the key.
+    The boxes are only read after parsing (laid out into the label's box and shipped), so the same ones can
+    serve every label that holds the formula; the label is laid out as before (``tests/draw/test_svg_text.py``).
+    """
+
+    _MEMO_SIZE = 1024
+
+    def __init__(self):
+        super().__init__()
+        self._memo: dict = {}
+
+    def math_string(self, toks):
+        state = self.get_state()
+        fonts = state.fontset
+        rc = tuple(rcParams[k] for k in _MATHTEXT_RC)
+        key = (toks[0], type(fonts), fonts.default_font_prop.copy(), fonts.load_glyph_flags, state.font,
+               state.font_class, state.fontsize, state.dpi, self._needs_space_after_subsuper, rc)
+        known = self._memo.get(key)
+        if known is None:
+            boxes = super().math_string(toks)
+            if len(self._memo) >= self._MEMO_SIZE:
+                self._memo.clear()
+            # A copy in and a copy out: pyparsing appends the tokens that follow to the list it is handed.
+            self._memo[key] = (boxes.copy(), self._needs_space_after_subsuper)
+            return boxes
+        boxes, self._needs_space_after_subsuper = known
+        self.pop_state()  # what parsing the formula does last (``Parser.math``, which pairs with ``non_math``)
+        return boxes.copy()
+
+
+_MATHTEXT_RC = tuple(sorted(k for k in rcParams if k.startswith("mathtext.")))
+
+
+class _MathTextOnce(MathTextParser):
+    """A ``MathTextParser`` whose parser is :class:`_MathOnceParser` (made on first use: it takes ~0.1 s)."""
+
+    _parser = None
+
+    def _parse_cached(self, *args):
+        if _MathTextOnce._parser is None:
+            _MathTextOnce._parser = _MathOnceParser()
+        return super()._parse_cached(*args)
+
+
 _TEXT_TO_PATH = _TextToPathOnce()
+_TEXT_TO_PATH.mathtext_parser = _MathTextOnce("path")
+
+
+class _MeasuringAgg(RendererAgg):
+    """An Agg renderer whose text sizes are those of the SVG files (see :func:`measuring_agg`)."""
+
+    def get_text_width_height_descent(self, s, prop, ismath):
+        if ismath == "TeX":
+            return super().get_text_width_height_descent(s, prop, ismath)
+        w, h, d = _TEXT_TO_PATH.get_text_width_height_descent(s, prop, ismath)
+        k = self.dpi / 72.0
+        return w * k, h * k, d * k
+
+
+def measuring_agg(dpi: float) -> RendererAgg:
+    """An Agg renderer (1 × 1 px) at ``dpi`` that measures text as the SVG files lay it out.
+
+    A headless figure's labels are measured to place them and to find the figure's extent, and its SVG file
+    then lays each text out again, at 72 dpi, through :class:`_TextToPathOnce`. Measured here through that same
+    shared cache (its sizes [pt] times ``dpi / 72``), each string is laid out once, not twice (a mathtext
+    label, such as ``a^t_BA = 273.3 m/s²``, is parsed once): the boxes are the unhinted outlines the file
+    prints, where Agg's own are hinted to its pixels. Only for measuring, never for drawing.
+
+    Parameters
+    ----------
+    dpi : float
+        Resolution the sizes are given at [pixels per inch].
+    """
+    return _MeasuringAgg(1, 1, dpi)
 
 
 class _RendererSVG(backend_svg.RendererSVG):

@@ -105,3 +105,51 @@ def test_a_text_outline_from_the_glyphs_laid_out_once_is_matplotlibs(text, weigh
     assert np.array_equal(codes, np.asarray(want_codes, np.uint8))
     # Shared by every figure: nobody may change them.
     assert not verts.flags.writeable and not codes.flags.writeable
+
+
+FORMULAS = [r"$\mathregular{a^{t}_{BA}}$ = 273.3 m/s²", r"$\mathregular{a^{t}_{BA}}$ = 9.125 m/s²",
+            r"R₃ = R₃ᵢ + $\mathregular{F_{c3}}$ (cutting)", r"$x^2$ and $x^2$ and $-x_{1}$", r"$\alpha_{2} + \beta^{n}$",
+            r"$a_{b}^{c}$ - $a_{b}^{c}$", r"$\sum_{i} x_i$ = $\sum_{i} x_i$"]
+
+
+@pytest.mark.parametrize("math_font", ["dejavusans", "cm"])
+def test_a_formula_parsed_once_lays_labels_out_as_matplotlib_does(math_font):
+    """The same glyphs at the same places as matplotlib's own parser, whether the formula is new or known."""
+    from matplotlib.font_manager import FontProperties
+    from matplotlib.mathtext import MathTextParser
+
+    from graphkin.draw.text import _MathTextOnce
+
+    prop = FontProperties(size=100, math_fontfamily=math_font)
+    theirs, ours = MathTextParser("path"), _MathTextOnce("path")
+    for _ in range(2):  # new formulas, then the same formulas in their memo (the first formula of each twice)
+        for s in FORMULAS:
+            for dpi in (72, 100):
+                MathTextParser._parse_cached.cache_clear()  # matplotlib's cache of whole labels: parse each afresh
+                want, got = theirs.parse(s, dpi, prop), ours.parse(s, dpi, prop)
+                assert (got.width, got.height, got.depth) == (want.width, want.height, want.depth)
+                assert [g[1:] for g in got.glyphs] == [g[1:] for g in want.glyphs]
+                assert [g[0].fname for g in got.glyphs] == [g[0].fname for g in want.glyphs]
+                assert got.rects == want.rects
+    # Each formula was parsed once per font, size and resolution, not once per label.
+    memo = [k for k in _MathTextOnce._parser._memo
+            if k[0] == r"$\mathregular{a^{t}_{BA}}$" and k[2].get_math_fontfamily() == math_font]
+    assert sorted(k[7] for k in memo) == [72, 100]
+
+
+@pytest.mark.parametrize("text", ["F₂₃ = 1234.5 N", r"$\mathregular{v_{A}}$ = 5.341 m/s", "A"])
+def test_the_measuring_renderer_gives_the_sizes_the_svg_prints(text):
+    """Sizes [px] at 100 dpi: the SVG renderer's own [pt] times 100/72."""
+    from matplotlib.backends.backend_svg import RendererSVG
+    from matplotlib.font_manager import FontProperties
+
+    from graphkin.draw.text import _TEXT_TO_PATH, measuring_agg
+
+    prop = FontProperties(size=9)
+    ismath = "$" in text
+    svg = RendererSVG(100, 100, io.StringIO())
+    svg._text2path = _TEXT_TO_PATH
+    w, h, d = svg.get_text_width_height_descent(text, prop, ismath)
+    got = measuring_agg(100).get_text_width_height_descent(text, prop, ismath)
+    assert got == pytest.approx((w * 100 / 72, h * 100 / 72, d * 100 / 72), rel=1e-12)
+    assert min(got[:2]) > 0
