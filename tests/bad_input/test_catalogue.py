@@ -71,6 +71,17 @@ def one_error_line(err: str, *named: str) -> None:
         assert text in err, f"{text!r} not in {err!r}"
 
 
+def solve_refuses(capsys, tmp_path, text: str, *named: str) -> None:
+    """``graphkin solve`` on ``text`` written to a file: exit 2, nothing on stdout, one error line naming the file
+    and everything in ``named``."""
+    path = tmp_path / "p.toml"
+    path.write_text(text, encoding="utf-8")
+    assert main(["solve", str(path)]) == 2
+    out, err = capsys.readouterr()
+    assert out == ""
+    one_error_line(err, str(path), *named)
+
+
 def edit(text: str, old: str, new: str) -> str:
     """``text`` with the first ``old`` replaced; ``old`` must be there (so a case never tests nothing)."""
     assert old in text, old

@@ -12,7 +12,7 @@ from importlib.resources import files
 import pytest
 
 from graphkin.cli import main
-from tests.bad_input.test_catalogue import edit, one_error_line
+from tests.bad_input.test_catalogue import edit, solve_refuses
 
 EPICYCLIC = '''title = "Planet on an arm in a fixed annulus"
 [frame]
@@ -194,12 +194,7 @@ CASES = [
 
 @pytest.mark.parametrize("base, old, new, named", CASES)
 def test_problem_file(tmp_path, capsys, base, old, new, named):
-    path = tmp_path / "bad.toml"
-    path.write_text(edit(BASES[base], old, new), encoding="utf-8")
-    code = main(["solve", str(path)])
-    out, err = capsys.readouterr()
-    assert code == 2
-    one_error_line(err, str(path), *named)
+    solve_refuses(capsys, tmp_path, edit(BASES[base], old, new), *named)
 
 
 def test_the_base_files_solve(tmp_path, capsys):

@@ -6,8 +6,7 @@ from pathlib import Path
 
 import pytest
 
-from graphkin.cli import main
-from tests.bad_input.test_catalogue import one_error_line
+from tests.bad_input.test_catalogue import solve_refuses
 
 GOOD = (Path(__file__).parents[1] / "problem" / "files" / "fourbar_unknown.toml").read_text(encoding="utf-8")
 CASES = [
@@ -31,9 +30,4 @@ CASES = [
 @pytest.mark.parametrize("old, new, named", CASES)
 def test_bad_unknown(capsys, tmp_path, old, new, named):
     assert GOOD.count(old) == 1
-    f = tmp_path / "p.toml"
-    f.write_text(GOOD.replace(old, new), encoding="utf-8")
-    assert main(["solve", str(f)]) == 2
-    out, err = capsys.readouterr()
-    assert out == ""
-    one_error_line(err, str(f), *named)
+    solve_refuses(capsys, tmp_path, GOOD.replace(old, new), *named)

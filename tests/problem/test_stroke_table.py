@@ -19,7 +19,7 @@ import pytest
 from graphkin import catalog
 from graphkin.cli import main
 from graphkin.report import constructions, cross_check
-from tests.bad_input.test_catalogue import one_error_line
+from tests.bad_input.test_catalogue import one_error_line, solve_refuses
 
 FILE = Path(__file__).parent / "files" / "indicator_stroke.toml"
 R, L, AREA = 0.1, 0.4, math.pi * 0.1**2 / 4
@@ -90,12 +90,7 @@ BAD = [
 @pytest.mark.parametrize("old, new, named", BAD)
 def test_bad_stroke_table(capsys, tmp_path, old, new, named):
     assert GOOD.count(old) == 1
-    f = tmp_path / "p.toml"
-    f.write_text(GOOD.replace(old, new), encoding="utf-8")
-    assert main(["solve", str(f)]) == 2
-    out, err = capsys.readouterr()
-    assert out == ""
-    one_error_line(err, str(f), *named)
+    solve_refuses(capsys, tmp_path, GOOD.replace(old, new), *named)
 
 
 def test_from_needs_a_stroke_table(capsys, tmp_path):
