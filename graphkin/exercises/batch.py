@@ -14,6 +14,7 @@ run in this process, where starting workers would cost more than it saves.
 from __future__ import annotations
 
 import atexit
+import gc
 import os
 from concurrent.futures import ProcessPoolExecutor
 
@@ -27,6 +28,8 @@ PARALLEL_FROM = 200
 """Rosters of at least this many students are spread over the cores."""
 
 _CHUNK = 50
+_GC_THRESHOLD = (10_000, 10, 10)
+"""A worker's garbage-collector thresholds (Python's default is (700, 10, 10)); see :func:`_start_worker`."""
 _WORKERS: list[ProcessPoolExecutor] = []
 
 
@@ -52,12 +55,26 @@ def _chunk(args):
     return [_one(exercise, action, student, secret, answers, reveal, classmates) for student, answers in items]
 
 
+def _start_worker():
+    """Set up a worker process: its cyclic garbage collector runs less often.
+
+    A worker keeps the draws it solved (a few hundred small objects each, up
+    to :data:`~graphkin.exercises.variants.CACHE_SIZE` of them) for the whole
+    session, and solving makes no reference cycles: every object is freed by
+    its reference count. At Python's default thresholds the collector still
+    walked that cache again and again, freeing nothing: 0.49 s of a 4.1 s make
+    pass of 1000 students of ``strip_cutter_cut``, 0 objects collected. With a
+    young generation of 10 000 objects it runs a fourteenth as often.
+    """
+    gc.set_threshold(*_GC_THRESHOLD)
+
+
 def _workers(n: int) -> list[ProcessPoolExecutor]:
     """``n`` single-process pools, started once and kept for the session."""
     while len(_WORKERS) < n:
         if not _WORKERS:
             atexit.register(_shutdown)
-        _WORKERS.append(ProcessPoolExecutor(max_workers=1))
+        _WORKERS.append(ProcessPoolExecutor(max_workers=1, initializer=_start_worker))
     return _WORKERS[:n]
 
 

@@ -24,7 +24,8 @@ from graphkin.graphical.paper import (
     reading_error,
     sheet_scales,
 )
-from graphkin.kinematics import DriverGroup, decompose
+from graphkin.kinematics import DriverGroup
+from graphkin.kinematics.plan import plan_of
 from graphkin.model.names import parse_force_name
 from graphkin.notation import num, polar_text
 from graphkin.units import to_si
@@ -375,7 +376,7 @@ def _analytical_hint(solved, q: Question) -> str:
         return (f"step 1 of the analytical solution: link {q.link}'s inertia loads, F_i = −m a_G and T_i = −I_G α, "
                 f"from its accelerations{then}")
     mech = solved.problem.mechanism
-    groups = list(reversed(decompose(mech)))
+    groups = list(reversed(plan_of(mech).groups))  # decomposed once, when the problem was built
     if kind in ("driver_torque", "driver_force"):
         want = None
     else:

@@ -22,17 +22,23 @@ cache entry goes when the mechanism goes.
 from __future__ import annotations
 
 import weakref
-from functools import cached_property, partial
+from functools import cache, cached_property, partial
 
 from graphkin.kinematics.structure import decompose
 from graphkin.model import Mechanism
 
 
+@cache
+def _derived(cls) -> frozenset:
+    """The names of ``cls``'s cached properties (found once per class)."""
+    return frozenset(k for k in dir(cls) if isinstance(getattr(cls, k, None), cached_property))
+
+
 def _state(obj) -> dict:
     """An object's attributes, less what its cached properties keep: those are worked out from the others (a
     mechanism's ``moving`` links), so that asking for one first, after the plan was made, changes nothing."""
-    cls = type(obj)
-    return {k: v for k, v in vars(obj).items() if not isinstance(getattr(cls, k, None), cached_property)}
+    derived = _derived(type(obj))
+    return {k: v for k, v in vars(obj).items() if k not in derived}
 
 
 def _parts(mech: Mechanism) -> list:

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import math
 import tomllib
+from collections import OrderedDict
 from dataclasses import replace
 from pathlib import Path
 from typing import Any, Mapping
@@ -174,8 +175,9 @@ def build_problem(data: Mapping[str, Any], *, file: str = "<problem>", base: str
         raise rd.fail("analysis", f"must be \"dynamic\" (inertia loads included, the default) or \"static\" (no inertia "
                       f"loads), got {analysis!r}")
     static = analysis == "static"
-    frame = _frame(rd, data)
-    links = [frame] + [_link(rd, t, f"links[{i}]", frame.number, static) for i, t in enumerate(_list(rd, data, "links"))]
+    frame = _read_once(_frame, rd, data.get("frame", {}), "frame")
+    links = [frame] + [_read_once(_link, rd, t, f"links[{i}]", frame.number, static)
+                       for i, t in enumerate(_list(rd, data, "links"))]
     joints = [_joint(rd, t, f"joints[{i}]") for i, t in enumerate(_list(rd, data, "joints"))]
     d = rd.table(rd.need(data, "driver", ""), "driver", _DRIVER["crank"] | _DRIVER["slider"])
     kind = d.get("type", "crank")
@@ -259,8 +261,35 @@ def _list(rd, data, key):
     return value
 
 
-def _frame(rd, data):
-    t = rd.table(data.get("frame", {}), "frame", {"points", "number"})
+_READ: OrderedDict = OrderedDict()
+_READ_SIZE = 256
+
+
+def _read_once(read, rd, t, where, *args):
+    """``read(rd, t, where, *args)``: a link read from its table, or the link read before from an equal table.
+
+    An exercise builds a problem for every draw from the same tables with a
+    few values changed (the crank angle, a load), so most links are read again
+    and again from equal tables; reading one (units, ranges, mass properties)
+    was a third of a build. A :class:`~graphkin.model.Link` is frozen, so
+    problems may share it. Only a table that reads without error is kept (an
+    error names the file, which differs from one caller to the next); the key
+    is the table's ``repr``, which tells apart every value TOML can hold (``1``,
+    ``1.0``, ``true``, ``"1"``).
+    """
+    key = (read, where, repr(t), args)
+    part = _READ.get(key)
+    if part is not None:
+        _READ.move_to_end(key)
+        return part
+    part = _READ[key] = read(rd, t, where, *args)
+    if len(_READ) > _READ_SIZE:
+        _READ.popitem(last=False)
+    return part
+
+
+def _frame(rd, value, where):
+    t = rd.table(value, where, {"points", "number"})
     number = rd.whole(t.get("number", 1), "frame.number")
     if number not in (0, 1):
         raise rd.fail("frame.number", f"the frame is numbered 1 (as in Norton and Söylemez) or 0 (books that write F01, "

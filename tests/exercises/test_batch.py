@@ -61,3 +61,14 @@ def test_the_shard_follows_the_first_draw():
         assert len(set(seen.values())) == shards  # every worker gets some
     # An id that cannot be read goes to the first worker, which reports it.
     assert draw_shard(ex, "   ", SECRET, 2) == 0
+
+
+def test_a_worker_runs_its_garbage_collector_less_often():
+    # A worker keeps its solved draws for the session and solving makes no reference cycles: at Python's default
+    # thresholds the collector walked that cache again and again, freeing nothing.
+    import gc
+
+    from graphkin.exercises import batch
+
+    pool = batch._workers(1)[0]
+    assert pool.submit(gc.get_threshold).result()[0] == batch._GC_THRESHOLD[0] > gc.get_threshold()[0]

@@ -1,0 +1,58 @@
+"""Links read from equal tables are read once and shared: an exercise builds a problem per draw from them."""
+
+from __future__ import annotations
+
+import copy
+
+import pytest
+
+from graphkin.errors import ProblemFileError
+from graphkin.problem import file as problem_file
+from graphkin.problem.file import build_problem
+
+TABLES = {
+    "frame": {"points": {"A0": ["0 mm", "0 mm"], "B0": ["100 mm", "0 mm"]}},
+    "links": [{"number": 2, "points": {"A0": ["0 mm", "0 mm"], "A": ["30 mm", "0 mm"]}, "mass": "1 kg"},
+              {"number": 3, "points": {"A": ["0 mm", "0 mm"], "B": ["120 mm", "0 mm"]}, "mass": "2 kg",
+               "G": ["60 mm", "0 mm"], "I_G": "0.01 kg*m^2"},
+              {"number": 4, "points": {"B0": ["0 mm", "0 mm"], "B": ["80 mm", "0 mm"]}, "mass": "1.5 kg"}],
+    "joints": [{"type": "revolute", "links": [1, 2], "point": "A0"}, {"type": "revolute", "links": [2, 3], "point": "A"},
+               {"type": "revolute", "links": [3, 4], "point": "B"}, {"type": "revolute", "links": [4, 1], "point": "B0"}],
+    "driver": {"link": 2, "theta": "60 deg", "omega": "100 rpm"},
+}
+
+
+def _links(problem):
+    return {link.number: link for link in problem.mechanism.links}
+
+
+def test_equal_tables_share_their_links_and_a_changed_table_is_read_again():
+    first = build_problem(copy.deepcopy(TABLES), file="a")
+    other_angle = copy.deepcopy(TABLES)
+    other_angle["driver"]["theta"] = "70 deg"
+    second = build_problem(other_angle, file="b")
+    assert all(_links(first)[n] is _links(second)[n] for n in (1, 2, 3, 4))
+    heavier = copy.deepcopy(TABLES)
+    heavier["links"][1]["mass"] = "2.5 kg"
+    third = build_problem(heavier, file="c")
+    assert _links(third)[3] is not _links(first)[3] and _links(third)[3].mass == 2.5
+    assert _links(third)[2] is _links(first)[2]
+    # A value of another type in the same place is another table (1 and 1.0 and "1" print differently).
+    assert repr({"m": 1}) != repr({"m": 1.0}) != repr({"m": "1"})
+
+
+def test_a_shared_link_solves_as_one_read_afresh():
+    tables = copy.deepcopy(TABLES)
+    build_problem(copy.deepcopy(TABLES), file="warm")
+    shared = build_problem(tables, file="x").solve()
+    problem_file._READ.clear()
+    fresh = build_problem(copy.deepcopy(TABLES), file="y").solve()
+    assert shared.effort[0] == fresh.effort[0]
+
+
+def test_a_table_that_cannot_be_read_names_each_callers_file():
+    bad = copy.deepcopy(TABLES)
+    bad["links"][0]["mass"] = "-1 kg"
+    for name in ("first.toml", "second.toml"):
+        with pytest.raises(ProblemFileError, match=rf"{name}.*links\[0\]\.mass"):
+            build_problem(copy.deepcopy(bad), file=name)
