@@ -38,7 +38,13 @@ def _state(obj) -> dict:
     """An object's attributes, less what its cached properties keep: those are worked out from the others (a
     mechanism's ``moving`` links), so that asking for one first, after the plan was made, changes nothing."""
     derived = _derived(type(obj))
-    return {k: v for k, v in vars(obj).items() if k not in derived}
+    return {k: v for k, v in vars(obj).items() if k not in derived} if derived else dict(vars(obj))
+
+
+def _changed(obj, state: dict) -> bool:
+    """Whether ``obj``'s attributes differ from ``state`` (compared as they are, for a class with no cached
+    properties: the check runs on every solve)."""
+    return (vars(obj) if not _derived(type(obj)) else _state(obj)) != state
 
 
 def _parts(mech: Mechanism) -> list:
@@ -79,12 +85,9 @@ class Plan:
 
     def current(self, mech: Mechanism) -> bool:
         """Whether this plan still describes ``mech`` (the same object, no attribute changed since)."""
-        if self.ref() is not mech or _state(mech) != self.own:
+        if self.ref() is not mech or _changed(mech, self.own):
             return False
-        for part, state in self.snapshot:
-            if _state(part) != state:
-                return False
-        return True
+        return not any(_changed(part, state) for part, state in self.snapshot)
 
 
 _PLANS: dict[int, Plan] = {}
