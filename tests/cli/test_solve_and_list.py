@@ -106,9 +106,12 @@ def test_text_output_and_at(capsys):
 def test_list(capsys):
     assert main(["list"]) == 0
     out = capsys.readouterr().out
+    lines = out.splitlines()
     for name in catalog.names():
         assert name in out
         assert f"family: {catalog.family(name)}" in out  # each problem's family of mechanism (issue 13)
+        # The name stands apart from its title, however long it is (fourbar_two_loads_makdin ran into "Static").
+        assert any(line.startswith(f"{name}  ") for line in lines), name
 
 
 @pytest.mark.parametrize("command", [["-m", "graphkin"], "console script"])
