@@ -352,7 +352,12 @@ class Cycle:
         omega = float(np.mean(self.q_dot))
         if not np.allclose(self.q_dot, omega):
             return "no flywheel can be sized: the crank's speed varies over the turn, and sizing assumes a constant ω"
-        if omega <= 0:
+        if omega == 0:
+            # A static analysis (or a linkage at rest) has no speed to store energy at.
+            return ("no flywheel can be sized: the crank does not turn (ω = 0: "
+                    + ("a static analysis" if self.problem.analysis == "static" else "no driver.omega")
+                    + "), and a flywheel's size follows from its mean speed; give driver.omega, e.g. \"300 rpm\"")
+        if omega < 0:
             return (f"no flywheel can be sized: sizing needs the crank turning counter-clockwise (ω > 0), "
                     f"and here ω = {omega:.6g} rad/s")
         return None

@@ -492,6 +492,8 @@ CLI_CASES = [
     P(["cycle", "strip_cutter", "--cs", "inf"], ["--cs"], id="cycle-cs-inf"),
     P(["cycle", "double_slider", "--cs", "0.05"], ["--cs", "slider"], id="cycle-cs-slider"),
     P(["cycle", "single_link", "--cs", "0.05"], ["--cs", "full turn"], id="cycle-cs-one-position"),
+    P(["cycle", "engine_inch_bevan", "--n", "72", "--cs", "0.02", "--units", "US"],
+      ["--cs", "the crank does not turn", "a static analysis", "driver.omega"], id="cycle-cs-static-no-speed"),
     P(["cycle", "strip_cutter", "-o", "cycle.bmp"], ["-o", "cycle.bmp"], id="cycle-figure-bmp"),
     P(["cycle", "strip_cutter", "-o", "{png_dir}"], ["-o", "folder"], id="cycle-figure-onto-folder"),
     P(["cycle", "strip_cutter", "-o", "{file}/c.svg"], ["-o", "is a file"], id="cycle-figure-under-file"),
