@@ -233,7 +233,7 @@ def format_cycle(cycle, data: dict, units: UnitSystem | None = None) -> str:
                   "(system inertia on the crank shaft)",
                   f"  disk     radius {u.show(d['radius'], 'length'):.4g} {L}, mass {u.show(d['mass'], 'mass'):.4g} "
                   f"{u.symbol('mass')} (assuming solid steel, ρ = {d['density']:g} kg/m³, "
-                  f"{u.show(d['thickness'], 'length'):g} {L} thick)"]
+                  f"{u.show(d['thickness'], 'length'):.4g} {L} thick)"]
     jfi = data["joint_force_index"]
     lines += ["", "Joint-force index (static, Holte and Chase, Norton §11.12)"]
     if not jfi["defined"]:
