@@ -65,12 +65,12 @@ class ExerciseBox:
         self.answers = {q.id: w.Text(description=q.id, placeholder=q.unit or "number",
                                      layout=w.Layout(width="60%"), style={"description_width": "80px"})
                         for q in exercise.questions}
-        asks = [w.HTML(f"<b>{q.id}</b>: {html_text(q.ask)}") for q in exercise.questions]
+        self.asks = {q.id: w.HTML(f"<b>{q.id}</b>: {html_text(q.ask)}") for q in exercise.questions}
         self.button = w.Button(description="Check", button_style="primary")
         self.feedback = w.HTML()
         self.button.on_click(lambda _: self.check())
         self.student.observe(lambda _: self._show_data(), names="value")
-        rows = [x for pair in zip(asks, self.answers.values()) for x in pair]
+        rows = [x for pair in zip(self.asks.values(), self.answers.values()) for x in pair]
         # The source in one line, as a sheet cites it: where the catalog read the book is the teacher's.
         cite = f"<div><i>{escape(citation(exercise.source))}</i></div>" if exercise.source else ""
         self.widget = w.VBox([w.HTML(f"<h4>{escape(exercise.title)}</h4>{cite}"), self.student, self.data, *rows,
@@ -95,6 +95,10 @@ class ExerciseBox:
         items = "".join(f"<li>{escape(g['shown'])}" + (f" ({escape(g['label'])})" if g["label"] else "")
                         for g in sheet["data"])
         self.data.value = f"<p>{html_text(sheet['intro'])}</p><p>Your data:</p><ul>{items}</ul>"
+        # Each question as the student's sheet asks it, with how close an answer must be (as a sheet states it).
+        for q in sheet["questions"]:
+            self.asks[q["id"]].value = (f"<b>{escape(q['id'])}</b>: {html_text(q['ask'])} "
+                                        f"<i>(within {escape(q['within'])})</i>")
 
     def check(self) -> dict | None:
         """Grade what is in the boxes and show the feedback; returns the report (plain data)."""
