@@ -247,7 +247,7 @@ def _scale(solved, q: Question) -> float:
                    + [0.0])
     c = solved.construction
     forces = [math.hypot(*F) for F in c.forces.values()] + [math.hypot(*v["F"]) for v in c.inertia.values()]
-    span = _span(c)
+    span = solved.span
     if kind in ("h", "concurrency"):
         return span
     if kind in ("driver_torque", "inertia_torque"):
@@ -498,7 +498,7 @@ def expected(variant, q: Question) -> Expected:
         if q.route == "graphical":
             # Measured off a printed drawing: no finer than a ruler reads at the worksheet's scales.
             floor = max(floor, measurable(solved, q))
-        size = _span(solved.construction) if form == "point" else abs(value)
+        size = solved.span if form == "point" else abs(value)
         slack = max(q.tolerance * size, floor)
     hint = _hint(solved, q)
     anchor = None

@@ -117,6 +117,12 @@ class Solved:
         return construct_forces(self.result.kinematics, 0)
 
     @cached_property
+    def span(self) -> float:
+        """The mechanism's size at the position: the largest distance between two points of the construction [m]
+        (asked for by the draw's check and by every question's tolerance floor)."""
+        return _span(self.construction)
+
+    @cached_property
     def motion(self):
         """The velocity and acceleration polygons at the exercise's position (as the slip draws them)."""
         slip = self.slip if self.slip in POLYGON_SLIPS else None
@@ -293,7 +299,7 @@ def _unusable(ex: Exercise, solved: Solved) -> str | None:
 
 
 def _span_of(solved: Solved) -> float:
-    return _span(solved.construction) if solved.construction.valid else math.nan
+    return solved.span if solved.construction.valid else math.nan
 
 
 def _speed_ratio(problem, span: float, kinematics) -> float:
