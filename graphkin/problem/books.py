@@ -8,6 +8,7 @@ boundary, with every error naming the file and the field (``docs/problem-files.m
 from __future__ import annotations
 
 import math
+from collections import OrderedDict
 from dataclasses import dataclass, replace
 
 import numpy as np
@@ -108,8 +109,27 @@ def piston(rd, mech, field):
     return pivot, C, rod, P, guide
 
 
+_DEAD_CENTRES: OrderedDict = OrderedDict()
+"""Dead centres found, by the geometry that decides them (an exercise asks again for every draw)."""
+
+
 def dead_centre(rd, mech, which, field):
-    """A dead centre of the crank driver's slider-crank: (the crank angle θ there, the piston pin's position)."""
+    """A dead centre of the crank driver's slider-crank: (the crank angle θ there, the piston pin's position).
+
+    Found once per geometry: the links, joints, driver and branches decide it (the loads and the motion do
+    not), and finding it solves the linkage's position. A geometry that has none raises each time, naming the
+    caller's file.
+    """
+    key = (which, mech.frame, mech.driver.link, repr(mech.links), repr(mech.joints), repr(sorted(mech.assembly.items())))
+    found = _DEAD_CENTRES.get(key)
+    if found is None:
+        found = _DEAD_CENTRES[key] = _dead_centre(rd, mech, which, field)
+        if len(_DEAD_CENTRES) > 64:
+            _DEAD_CENTRES.popitem(last=False)
+    return found
+
+
+def _dead_centre(rd, mech, which, field):
     crank = mech.driver.link
     pivot, C, rod, P, guide = piston(rd, mech, field)
     link_c, link_r = mech.link(crank), mech.link(rod)
