@@ -49,7 +49,7 @@ from graphkin.analytical.kinetostatics import pitch
 from graphkin.analytical.loads import applied_at
 from graphkin.geometry import zcross as cross
 from graphkin.geometry import zdot as dot
-from graphkin.graphical.captions import and_list, number, polar, sense
+from graphkin.graphical.captions import Later, and_list, number, polar, sense
 from graphkin.graphical.construction import Arrow, Line, Step
 from graphkin.kinematics import DriverGroup, Dyad, GearGroup, Kinematics
 from graphkin.model import PointForce, Prismatic, Revolute, Torque
@@ -166,7 +166,7 @@ class Builder:
 
     def lead(self, text: str) -> str:
         """``"In sub-problem I, link 4 …"`` in a sub-problem, ``"Link 4 …"`` in the whole problem."""
-        return f"In {self.scope}, {text}" if self.scope else text[0].upper() + text[1:]
+        return _lead(self.scope, text)
 
     def within(self) -> str:
         """``" in sub-problem I"`` or ``""``."""
@@ -246,20 +246,16 @@ class Builder:
                 # The offset side makes the moment of F about G equal T.
                 P = G - 1j * Ti / Fi.conjugate()  # Ti Fi/|Fi|², without squaring a small |Fi| to 0
                 lines.append(Line(f"R{link}i", xy(P), xy(Fi / abs(Fi)), "resultant"))
-                sense = "clockwise" if Ti < 0 else "counter-clockwise"
-                parts.append(
-                    f"its inertia force F{link}i = −m{link}·a_G{link} = {polar(Fi)} and inertia torque "
-                    f"T{link}i = −I_G{link}·α{link} = "
-                    f"{number(Ti)} N·m combine into one force R{link}i of the same size and direction, whose line is offset "
-                    f"from G{link} by h = |T|/|F| = {number(h * 1e3)} mm to the side that turns link {link} {sense}"
-                    # An offset under a picometre is rounding (α = 0 but for it): the force acts through G.
-                    if h > PICOMETRE else f"its inertia force F{link}i = −m{link}·a_G{link} = {polar(Fi)} acts through G{link}")
+                # An offset under a picometre is rounding (α = 0 but for it): the force acts through G.
+                parts.append(Later(_inertia_offset, link, Fi, Ti, h) if h > PICOMETRE else
+                             Later(_inertia_through_G, link, Fi))
             else:
-                parts.append(f"its inertia torque T{link}i = {number(Ti)} N·m is a pure couple")
+                parts.append(Later(lambda link, Ti: f"its inertia torque T{link}i = {number(Ti)} N·m is a pure couple",
+                                   link, Ti))
         if self.mech.gravity and body.mass:
             W = -1j * body.mass * self.mech.gravity
             load.add(W, G)
-            parts.append(f"its weight {number(abs(W))} N acts at G{link}")
+            parts.append(Later(lambda link, W: f"its weight {number(abs(W))} N acts at G{link}", link, W))
 
         for ld in self.mech.loads:
             if ld.link != link:
@@ -270,18 +266,20 @@ class Builder:
             if isinstance(ld, PointForce):
                 F = complex(value)
                 load.add(F, self.z(link, ld.point))
-                parts.append(f"the external force {ld.name or 'P'} = {number(abs(F))} N acts at {ld.point}")
+                parts.append(Later(lambda name, F, at: f"the external force {name} = {number(abs(F))} N acts at {at}",
+                                   ld.name or "P", F, ld.point))
             elif isinstance(ld, Torque):
                 load.add(0j, None, value)
-                parts.append(f"the external torque {ld.name or 'T'} = {number(value)} N·m acts on it")
+                parts.append(Later(lambda name, T: f"the external torque {name} = {number(T)} N·m acts on it",
+                                   ld.name or "T", value))
         only_inertia = len(parts) == 1 and bool(Fi or Ti)
         rname = f"R{link}i" if only_inertia else f"R{link}"
         if len(parts) > 1 and load.F and load.point() is not None:
             lines.append(Line(f"R{link}", xy(load.point()), xy(load.F / abs(load.F)), "resultant"))
             values[f"R{link}"] = xy(load.F)
-            parts.append(f"together they make one resultant R{link} = {number(abs(load.F))} N")
-        step = self.step("resultant", f"Link {link}: " + "; ".join(parts) + ".", link, lines, values=values) \
-            if parts else None
+            parts.append(Later(lambda link, F: f"together they make one resultant R{link} = {number(abs(F))} N",
+                               link, load.F))
+        step = self.step("resultant", Later(_own_text, link, tuple(parts)), link, lines, values=values) if parts else None
         return load.F, load.M0, rname, step
 
     def combine(self, link, load: _Load, extra: list):
@@ -291,23 +289,15 @@ class Builder:
             load.add(F, X, C)
         if extra:
             R = self.rname[link] = f"R{link}{self.mark}"
-            names = [n for n, _, _, _ in extra]
+            names = tuple(n for n, _, _, _ in extra)
             P = load.point()
             nothing = P is not None and self.rounding(load.F)
             # A resultant that is rounding has no line: its direction would be the rounding's.
             lines = (Line(R, xy(P), xy(load.F / abs(load.F)), "resultant"),) if P is not None and not nothing else ()
-            res = (f"{R} = 0 N" if nothing else
-                   f"{R} = {number(abs(load.F))} N" if P is not None else f"{R}, a pure couple of {number(load.M0)} N·m")
-            if own:
-                # The own loads' name only when it differs from the new one (a crank's weight alone is R2 too).
-                mine = f" ({own_name})" if own_name != R else ""
-                text = (f"link {link} also carries {and_list(names)}, found before; with its own loads{mine} they add up "
-                        f"to one resultant {res}.")
-            elif len(names) == 1:
-                text = f"link {link} carries only {names[0]}, found before, so its resultant is {names[0]} itself: {res}."
-            else:
-                text = f"link {link} carries only {and_list(names)}, found before; they add up to one resultant {res}."
-            self.add("resultant", self.lead(text), link, lines, values={R: xy(load.F)})
+            # The own loads' name only when it differs from the new one (a crank's weight alone is R2 too).
+            mine = (f" ({own_name})" if own_name != R else "") if own else None
+            self.add("resultant", Later(_combined_text, self.scope, link, R, names, mine, nothing, P is not None, load.F,
+                                        load.M0), link, lines, values={R: xy(load.F)})
         return load
 
     # -- dyads -----------------------------------------------------------------
@@ -476,8 +466,9 @@ class Builder:
                 n = self.name(other, on)
                 arrows = [Arrow(f"{n}{x}", xy(p[id(J)]), True) for x, p in parts]
                 # The closing side runs back to the start: it is −(the sum).
-                self.add("superpose", self.lead(f"{n} is the sum of its parts: {n} = "
-                                                + " + ".join(a.name for a in arrows) + f" = {polar(total[id(J)])}."),
+                self.add("superpose", Later(lambda scope, n, arrows, F: _lead(
+                    scope, f"{n} is the sum of its parts: {n} = " + " + ".join(a.name for a in arrows) + f" = {polar(F)}."),
+                    self.scope, n, arrows, total[id(J)]),
                          on, polygon=tuple(arrows) + (Arrow(f"−{n}", xy(-total[id(J)]), False),),
                          values={n: xy(total[id(J)])})
         elif loaded:
@@ -540,9 +531,10 @@ class Builder:
         d /= abs(d)
         nW, nF = self.name(g.j, g.k), self.name(g.support, g.k)
         Rk = self.rname[g.k]
-        self.add("line", self.lead(f"the tooth force {nW} lies on the pressure line through the pitch point P, inclined "
-                                   f"{number(math.degrees(mesh.pressure_angle))}° to the common tangent, on the flank that "
-                                   f"opposes the load on gear {g.k}."), g.k, (Line(nW, xy(P), xy(d)),), {"P": xy(P)})
+        self.add("line", Later(lambda scope, nW, angle, k: _lead(
+            scope, f"the tooth force {nW} lies on the pressure line through the pitch point P, inclined "
+            f"{number(math.degrees(angle))}° to the common tangent, on the flank that opposes the load on gear {k}."),
+            self.scope, nW, mesh.pressure_angle, g.k), g.k, (Line(nW, xy(P), xy(d)),), {"P": xy(P)})
         arm = cross(P - Ck, d)
         F_W = (-R.about(Ck) / arm) * d
         F_piv = -R.F - F_W
@@ -557,8 +549,9 @@ class Builder:
         # nil, e.g. an input torque) is no three-force member: the tooth and
         # pivot forces are then the opposite couple, equal and opposite.
         if abs(R.F) <= 1e-9 * abs(F_W):
-            self.add("couple", f"Gear {g.k} carries only a couple ({number(R.M0)} N·m){self.within()}: {nW} and the pivot "
-                     f"force {nF} form the opposite couple, so {nF} = −{nW}, through the centre {g.pivot.point}.",
+            self.add("couple", Later(lambda k, M0, within, nW, nF, at: f"Gear {k} carries only a couple ({number(M0)} N·m)"
+                                     f"{within}: {nW} and the pivot force {nF} form the opposite couple, so {nF} = −{nW}, "
+                                     f"through the centre {at}.", g.k, R.M0, self.within(), nW, nF, g.pivot.point),
                      g.k, pivot_line, points)
             poly = (Arrow(nW, xy(F_W), False), Arrow(nF, xy(F_piv), False))
             caption = f"Force polygon of gear {g.k}{self.within()}: {nW} + {nF} = 0."
@@ -596,15 +589,7 @@ class Builder:
             d = abs(T) / abs(complex(R.F)) if R.F else 0.0
             dn = "d" + self.mark
             nothing = self.rounding(R.F, R.M0)
-            arm = (f"{Rd} is rounding, so {name} = 0 and {drive} = 0 N·m" if nothing else
-                   f"{Rd} acts through {J.point} (its arm {dn} = 0), so the driving torque is {drive} = 0 N·m"
-                   if d <= PICOMETRE else  # a dead centre: what is left of the arm is rounding
-                   f"with {Rd} it forms a couple of arm {dn} = {number(d * 1e3)} mm, which the driving torque balances: "
-                   f"{drive} = ±|{Rd}|·{dn} = {number(T)} N·m{sense(T)}" if math.isfinite(d * 1e3) else
-                   f"{Rd} is so small beside its moment about {J.point} that the loads are a pure couple, which the "
-                   f"driving torque balances: {drive} = {number(T)} N·m{sense(T)}")
-            self.add("driver", f"The crank{self.within()}: the pivot force {name} = −{Rd} acts at {J.point}; {arm}"
-                     + (f"; {total}." if total else "."), link,
+            self.add("driver", Later(_crank_text, self.within(), name, Rd, J.point, drive, dn, nothing, d, T, total), link,
                      () if nothing else (Line(name, xy(X), xy(F / abs(F)) if F else (1.0, 0.0), "found"),),
                      values={name: xy(F), drive: T, **({"d": d} if math.isfinite(d) else {})},
                      polygon=(Arrow(Rd, xy(R.F), True), Arrow(name, xy(F), False, xy(X))))
@@ -624,9 +609,10 @@ class Builder:
         C = -(R.M0 + cross(X, G + Fd))
         self._check(self.add(
             "driver",
-            f"The slider{self.within()}: the driving force {drive} acts along the guide and the guide force {name} "
-            "normal to it" + (" (tilted by the friction angle)" if J.mu else "")
-            + f"; the polygon {Rd} + {name} + {drive} = 0 gives both" + (f"; {total}." if total else "."),
+            Later(lambda within, drive, name, mu, Rd, total: f"The slider{within}: the driving force {drive} acts along "
+                  f"the guide and the guide force {name} normal to it" + (" (tilted by the friction angle)" if mu else "")
+                  + f"; the polygon {Rd} + {name} + {drive} = 0 gives both" + (f"; {total}." if total else "."),
+                  self.within(), drive, name, J.mu, Rd, total),
             link, (Line(drive, xy(X), xy(u), "found"),),
             polygon=(Arrow(Rd, xy(R.F), True), Arrow(name, xy(G), False), Arrow(drive, xy(Fd), False, xy(X))),
             values={name: xy(G), drive: xy(Fd)}))
@@ -681,6 +667,54 @@ class Builder:
         lo, hi = sorted(joint.links)
         F = complex(*self.forces[(lo, hi)])
         return F if link == hi else -F
+
+
+def _inertia_offset(link, Fi, Ti, h) -> str:
+    sense = "clockwise" if Ti < 0 else "counter-clockwise"
+    return (f"its inertia force F{link}i = −m{link}·a_G{link} = {polar(Fi)} and inertia torque T{link}i = "
+            f"−I_G{link}·α{link} = {number(Ti)} N·m combine into one force R{link}i of the same size and direction, "
+            f"whose line is offset from G{link} by h = |T|/|F| = {number(h * 1e3)} mm to the side that turns link "
+            f"{link} {sense}")
+
+
+def _inertia_through_G(link, Fi) -> str:
+    return f"its inertia force F{link}i = −m{link}·a_G{link} = {polar(Fi)} acts through G{link}"
+
+
+def _combined_text(scope, link, R, names, mine, nothing, line, F, M0) -> str:
+    """What :meth:`Builder.combine` says: the reactions ``names`` found before, added to the own loads (named
+    ``mine``; None for none) into one resultant ``R`` (nothing: rounding; ``line``: not a pure couple)."""
+    res = (f"{R} = 0 N" if nothing else f"{R} = {number(abs(F))} N" if line else f"{R}, a pure couple of {number(M0)} N·m")
+    if mine is not None:
+        text = (f"link {link} also carries {and_list(names)}, found before; with its own loads{mine} they add up "
+                f"to one resultant {res}.")
+    elif len(names) == 1:
+        text = f"link {link} carries only {names[0]}, found before, so its resultant is {names[0]} itself: {res}."
+    else:
+        text = f"link {link} carries only {and_list(names)}, found before; they add up to one resultant {res}."
+    return _lead(scope, text)
+
+
+def _crank_text(within, name, Rd, at, drive, dn, nothing, d, T, total) -> str:
+    """What :meth:`Builder.driver` says of a crank: the pivot force ``name`` and the driving torque ``drive`` = ``T``,
+    with the arm ``dn`` = ``d`` of the couple they form (``nothing``: the resultant ``Rd`` is rounding)."""
+    arm = (f"{Rd} is rounding, so {name} = 0 and {drive} = 0 N·m" if nothing else
+           f"{Rd} acts through {at} (its arm {dn} = 0), so the driving torque is {drive} = 0 N·m"
+           if d <= PICOMETRE else  # a dead centre: what is left of the arm is rounding
+           f"with {Rd} it forms a couple of arm {dn} = {number(d * 1e3)} mm, which the driving torque balances: "
+           f"{drive} = ±|{Rd}|·{dn} = {number(T)} N·m{sense(T)}" if math.isfinite(d * 1e3) else
+           f"{Rd} is so small beside its moment about {at} that the loads are a pure couple, which the "
+           f"driving torque balances: {drive} = {number(T)} N·m{sense(T)}")
+    return f"The crank{within}: the pivot force {name} = −{Rd} acts at {at}; {arm}" + (f"; {total}." if total else ".")
+
+
+def _lead(scope: str, text: str) -> str:
+    """``"In sub-problem I, link 4 …"`` in a sub-problem (``scope``), ``"Link 4 …"`` in the whole problem."""
+    return f"In {scope}, {text}" if scope else text[0].upper() + text[1:]
+
+
+def _own_text(link, parts) -> str:
+    return f"Link {link}: " + "; ".join(map(str, parts)) + "."
 
 
 def _decompose(v, a, b):

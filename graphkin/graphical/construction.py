@@ -61,6 +61,28 @@ class Arrow:
     at: tuple[float, float] | None = None
 
 
+class _Text:
+    """A step's caption, as every reader sees it: a str.
+
+    The builder may hand a step text that is written only when first read (any object whose ``str()`` is the
+    caption, e.g. :class:`graphkin.graphical.captions.Later`): most constructions are made to be checked, not
+    read, and their captions are a good part of their cost. Once read, the text replaces it.
+    """
+
+    def __get__(self, step, owner=None):
+        if step is None:
+            # No class-level default: the dataclass keeps ``caption`` a required field.
+            raise AttributeError("caption")
+        text = step.__dict__["caption"]
+        if type(text) is not str:
+            text = step.__dict__["caption"] = str(text)
+        return text
+
+    def __set__(self, step, text):
+        # Reached only from the dataclass's __init__ (a frozen instance refuses any other assignment).
+        step.__dict__["caption"] = text
+
+
 @dataclass(frozen=True)
 class Step:
     """One step of the construction.
@@ -95,13 +117,17 @@ class Step:
     """
 
     kind: str
-    caption: str
+    caption: str = _Text()
     link: int | None = None
     lines: tuple[Line, ...] = ()
     points: dict = field(default_factory=dict)
     polygon: tuple[Arrow, ...] = ()
     values: dict = field(default_factory=dict)
     sub: str = ""
+
+    def __getstate__(self):
+        # A caption not yet written is written before the step is copied or pickled.
+        return {**self.__dict__, "caption": self.caption}
 
     def closure(self) -> float:
         """|Σ polygon| / max |arrow|: 0 for a polygon that closes."""
