@@ -44,7 +44,7 @@ import math
 import numpy as np
 
 from graphkin.analytical.kinetostatics import pitch as pitch_point
-from graphkin.analytical.loads import applied_at, inertia
+from graphkin.analytical.loads import inertia
 from graphkin.errors import GraphkinError
 from graphkin.graphical.builder import Builder, DeadPoint, xy
 from graphkin.graphical.construction import Arrow, Construction, nice_scale
@@ -97,14 +97,19 @@ def construct_forces(kin: Kinematics, index: int = 0) -> Construction:
     largest = max([abs(complex(*F)) for F in b.forces.values()] + [0.0])
     return Construction(mech, index, q, tuple(steps), b.forces, b.normal, b.couple, b.effort,
                         nice_scale(largest), True, "", tuple(warnings), driver_vector=b.driver_vector,
-                        subproblems=subproblems, **_geometry(kin, index))
+                        subproblems=subproblems, **_geometry(b))
 
 
-def _geometry(kin: Kinematics, i: int) -> dict:
-    """Plain-data geometry of position i, for drawing and handouts."""
+def _geometry(b: Builder) -> dict:
+    """Plain-data geometry of the builder's position, for drawing and handouts.
+
+    Points, guides and loads come from the builder, which has found most of them already (the same values:
+    a point is ``complex(kin.z(link, name)[i])`` either way).
+    """
+    kin, i = b.kin, b.i
     mech = kin.mechanism
-    points = {link.number: {name: xy(complex(kin.z(link.number, name)[i])) for name in link.points} for link in mech.links}
-    G = {link: xy(complex(kin.z_G(link)[i])) for link in mech.moving}
+    points = {link.number: {name: xy(b.z(link.number, name)) for name in link.points} for link in mech.links}
+    G = {link: xy(b.z(link, mech.link(link).G)) for link in mech.moving}
     inert, external = {}, {}
     for link in mech.moving:
         body = mech.link(link)
@@ -118,14 +123,14 @@ def _geometry(kin: Kinematics, i: int) -> dict:
             arrows.append(Arrow(f"W{link}", (0.0, -body.mass * mech.gravity), True, G[link]))
         for ld in mech.loads:
             if isinstance(ld, PointForce) and ld.link == link:
-                F = applied_at(kin, ld, i)
+                F = b.applied(ld)
                 if F:
                     arrows.append(Arrow(ld.name or f"P{link}", xy(F), True, points[link][ld.point]))
         external[link] = arrows
     torques = {link: [(ld.name or f"T{link}", T) for ld in mech.loads
-                      if isinstance(ld, Torque) and ld.link == link and (T := applied_at(kin, ld, i))]
+                      if isinstance(ld, Torque) and ld.link == link and (T := b.applied(ld))]
                for link in mech.moving}
-    guides = {tuple(sorted(j.links)): xy(complex(kin.z_guide(j)[i])) for j in mech.joints if isinstance(j, Prismatic)}
+    guides = {tuple(sorted(j.links)): xy(b.u(j)) for j in mech.joints if isinstance(j, Prismatic)}
     angles = {link.number: float(kin.theta[link.number][i]) for link in mech.links}
     pitch = {}
     for joint in mech.joints:

@@ -60,6 +60,8 @@ CLOSE = 1e-9
 
 
 def xy(z) -> tuple[float, float]:
+    if type(z) is complex:  # most are: its parts are floats already
+        return (z.real, z.imag)
     return (float(z.real), float(z.imag))
 
 
@@ -145,11 +147,13 @@ class Builder:
         # Each link's own loads, and the step that states them, are the same for the whole problem and the
         # superposition's presentation: found once (by link, for builders of the whole problem only).
         self._own: dict = like._own if like is not None else {}
+        self._applied: dict = like._applied if like is not None else {}
         if like is not None:
             self.reach = like.reach
         else:
             pts = [self.z(link, p) for link in self.mech.moving for p in self.mech.link(link).points]
-            self.reach = max((abs(a - b) for a in pts for b in pts), default=1.0) or 1.0
+            # Each pair once: |a − b| and |b − a| are the same number.
+            self.reach = max((abs(a - b) for k, a in enumerate(pts) for b in pts[k + 1:]), default=0.0) or 1.0
 
     def rounding(self, F: complex, M: float = 0.0) -> bool:
         """Whether a force ``F`` [N] and a moment ``M`` [N·m] are rounding beside the largest force found so far in
@@ -178,6 +182,13 @@ class Builder:
         if key not in self._z:
             self._z[key] = complex(self.kin.z(link, point)[self.i])
         return self._z[key]
+
+    def applied(self, load):
+        """What an external load applies at this position: complex force [N] or torque [N·m], 0 where it does not act."""
+        key = id(load)
+        if key not in self._applied:
+            self._applied[key] = applied_at(self.kin, load, self.i)
+        return self._applied[key]
 
     def joint_point(self, joint, link):
         return self.z(joint.slider, joint.point) if isinstance(joint, Prismatic) else self.z(link, joint.point)
@@ -230,7 +241,7 @@ class Builder:
         """A link's own loads reduced to the origin (F, M0), the name of their resultant, and the step stating them."""
         kin, i, body = self.kin, self.i, self.mech.link(link)
         load = _Load()
-        G = complex(kin.z_G(link)[i])
+        G = self.z(link, body.G)
         # A static analysis has no inertia loads: the links carry their weights and external loads only.
         Fi = complex(-body.mass * kin.z_a_G(link)[i]) if body.mass and not kin.static else 0j
         Ti = float(-body.I_G * kin.al(link)[i]) if body.I_G and not kin.static else 0.0
@@ -260,7 +271,7 @@ class Builder:
         for ld in self.mech.loads:
             if ld.link != link:
                 continue
-            value = applied_at(kin, ld, i)
+            value = self.applied(ld)
             if not value:  # not acting here (outside its window, a table's zero, or at rest on its working stroke)
                 continue
             if isinstance(ld, PointForce):
