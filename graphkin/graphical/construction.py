@@ -8,7 +8,7 @@ re-solving anything. Vectors are ``(x, y)`` tuples.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import FrozenInstanceError, dataclass, field
 
 import numpy as np
 
@@ -39,6 +39,14 @@ class Line:
     direction: tuple[float, float]
     role: str = "known direction"
 
+    # Written by hand, as Arrow's and Step's: a frozen dataclass's own __init__ sets each field through
+    # object.__setattr__, and a construction makes hundreds of these (an exercise's draws, thousands of
+    # constructions). The fields are the dataclass's; the instance is as frozen.
+    def __init__(self, name: str, point: tuple[float, float], direction: tuple[float, float],
+                 role: str = "known direction"):
+        d = self.__dict__
+        d["name"], d["point"], d["direction"], d["role"] = name, point, direction, role
+
 
 @dataclass(frozen=True)
 class Arrow:
@@ -60,6 +68,10 @@ class Arrow:
     known: bool
     at: tuple[float, float] | None = None
 
+    def __init__(self, name: str, vector: tuple[float, float], known: bool, at: tuple[float, float] | None = None):
+        d = self.__dict__
+        d["name"], d["vector"], d["known"], d["at"] = name, vector, known, at
+
 
 class _Text:
     """A step's caption, as every reader sees it: a str.
@@ -79,8 +91,8 @@ class _Text:
         return text
 
     def __set__(self, step, text):
-        # Reached only from the dataclass's __init__ (a frozen instance refuses any other assignment).
-        step.__dict__["caption"] = text
+        # A frozen instance refuses every assignment; Step.__init__ writes the instance's dict.
+        raise FrozenInstanceError("cannot assign to field 'caption'")
 
 
 @dataclass(frozen=True)
@@ -124,6 +136,14 @@ class Step:
     polygon: tuple[Arrow, ...] = ()
     values: dict = field(default_factory=dict)
     sub: str = ""
+
+    def __init__(self, kind: str, caption: str, link: int | None = None, lines: tuple[Line, ...] = (),
+                 points: dict | None = None, polygon: tuple[Arrow, ...] = (), values: dict | None = None,
+                 sub: str = ""):
+        d = self.__dict__
+        d["kind"], d["caption"], d["link"], d["lines"] = kind, caption, link, lines
+        d["points"] = {} if points is None else points
+        d["polygon"], d["values"], d["sub"] = polygon, {} if values is None else values, sub
 
     def __getstate__(self):
         # A caption not yet written is written before the step is copied or pickled.

@@ -1,7 +1,8 @@
-"""Captions written when first read: the same text as if written at once, whatever the builder does after."""
+"""Captions written when first read, and the hand-written __init__ of the steps and their lines and arrows."""
 
 import copy
 import dataclasses
+import inspect
 import pickle
 
 import pytest
@@ -68,3 +69,29 @@ def test_step_caption_stays_required_and_frozen():
     with pytest.raises(dataclasses.FrozenInstanceError):
         step.caption = "other"
     assert step.caption == "x = 3."
+
+
+@pytest.mark.parametrize("cls", [Line, Arrow, Step])
+def test_hand_written_init_takes_the_dataclass_fields(cls):
+    # Line, Arrow and Step write their own __init__ (for speed): it must take the fields, in order, with their defaults.
+    params = list(inspect.signature(cls).parameters.values())
+    fields = dataclasses.fields(cls)
+    assert [p.name for p in params] == [f.name for f in fields]
+    for p, f in zip(params, fields):
+        if f.default_factory is not dataclasses.MISSING:
+            assert p.default is None  # None gives a new f.default_factory()
+        else:
+            assert p.default is (inspect.Parameter.empty if f.default is dataclasses.MISSING else f.default)
+    required = [f"x{k}" for k, p in enumerate(params) if p.default is inspect.Parameter.empty]
+    made = cls(*required)
+    assert [getattr(made, f.name) for f in fields] == [
+        required[k] if k < len(required) else f.default_factory() if f.default is dataclasses.MISSING else f.default
+        for k, f in enumerate(fields)]
+    assert made == cls(*required) and dataclasses.replace(made) == made
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        setattr(made, fields[0].name, "other")
+
+
+def test_a_step_has_dicts_of_its_own():
+    a, b = Step("note", "a."), Step("note", "b.")
+    assert a.points == {} and a.points is not b.points and a.values is not b.values
