@@ -148,6 +148,7 @@ class Builder:
         # superposition's presentation: found once (by link, for builders of the whole problem only).
         self._own: dict = like._own if like is not None else {}
         self._applied: dict = like._applied if like is not None else {}
+        self._names: dict = like._names if like is not None else {}
         if like is not None:
             self.reach = like.reach
         else:
@@ -177,11 +178,13 @@ class Builder:
         return f" in {self.scope}" if self.scope else ""
 
     # -- geometry at this position -----------------------------------------
-    def z(self, link, point):
-        key = (link, point if isinstance(point, str) else tuple(point))
-        if key not in self._z:
-            self._z[key] = complex(self.kin.z(link, point)[self.i])
-        return self._z[key]
+    def z(self, link, point) -> complex:
+        """Position of a point of ``link`` (a name or local (x, y)) at this position [m]."""
+        key = (link, point) if type(point) is str else (link, tuple(point))
+        z = self._z.get(key)
+        if z is None:
+            z = self._z[key] = complex(self.kin.z(link, point)[self.i])
+        return z
 
     def applied(self, load):
         """What an external load applies at this position: complex force [N] or torque [N·m], 0 where it does not act."""
@@ -217,8 +220,11 @@ class Builder:
         return w
 
     def base_name(self, i, j):
-        letter = self.mech.joint_between(i, j).force_letter
-        return f"{letter}{i}{j}" if i < 10 and j < 10 else f"{letter}{i},{j}"
+        name = self._names.get((i, j))
+        if name is None:
+            letter = self.mech.joint_between(i, j).force_letter
+            name = self._names[i, j] = f"{letter}{i}{j}" if i < 10 and j < 10 else f"{letter}{i},{j}"
+        return name
 
     def name(self, i, j):
         return self.base_name(i, j) + self.mark
@@ -325,13 +331,13 @@ class Builder:
             return X2, (XM - X2) / abs(XM - X2), M, text
         if isinstance(J2, Revolute):
             X2 = self.z(M, J2.point)
-            w = self.w(JM, M, sigma[JM])
+            w = self.w(JM, M, sigma[id(JM)])
             text = f"through {J2.point}, along the reaction of its guide (normal to the guide" + (
                 ", tilted by the friction angle)" if JM.mu else ")")
             return X2, w / abs(w), M, text
         if isinstance(JM, Revolute):
             XM = self.z(M, JM.point)
-            w = self.w(J2, d.k, sigma[J2])
+            w = self.w(J2, d.k, sigma[id(J2)])
             return XM, w / abs(w), M, f"through its pin {JM.point}, normal to the sliding pair at {J2.point}"
         return None, None, M, "as a couple only (two guides cannot balance a force)"
 
@@ -342,7 +348,7 @@ class Builder:
         M_point, M_dir, M, how = self.m_line(d, L, sigma)
         # On L the passed force acts at L's own middle pin (the same point unless a link's angle is given).
         on_L = self.z(L, d.J2.point) if M_point is not None and isinstance(d.J2, Revolute) else M_point
-        nM, nL = self.name(M, L), self.name((set(JL.links) - {L}).pop(), L)
+        nM, nL = self.name(M, L), self.name(_other(JL, L), L)
         steps = []
         steps.append(self.step("two-force", self.lead(f"link {M} carries no load, so it is a two-force member: {nM} acts "
                                                       f"{how}."), M,
@@ -390,7 +396,7 @@ class Builder:
             lines.append(Line(nM, xy(on_L), xy(M_dir)))
             steps.append(self.step("three-force", self.lead(text) + ".", L, lines, points))
         else:
-            wL = self.w(JL, L, sigma[JL])
+            wL = self.w(JL, L, sigma[id(JL)])
             a, b = _decompose(-R.F, M_dir, wL)
             F_M, F_out = a * M_dir, b * wL
             points = {}
@@ -416,20 +422,20 @@ class Builder:
         friction = [J for J in d.joints if isinstance(J, Prismatic) and J.mu > 0]
         if self.fixed is not None:
             # A sub-problem: the sides are the whole problem's, right or not for these loads alone.
-            sigma = {J: 1.0 for J in d.joints if isinstance(J, Prismatic)}
-            sigma.update({J: self.fixed[id(J)] for J in friction})
+            sigma = {id(J): 1.0 for J in d.joints if isinstance(J, Prismatic)}
+            sigma.update({id(J): self.fixed[id(J)] for J in friction})
             return self._superpose(d, R, sigma)
         mark = len(self.steps)
         for signs in itertools.product((1.0, -1.0), repeat=len(friction)):
             del self.steps[mark:]
-            sigma = {J: 1.0 for J in d.joints if isinstance(J, Prismatic)}
-            sigma.update(zip(friction, signs))
+            sigma = {id(J): 1.0 for J in d.joints if isinstance(J, Prismatic)}
+            sigma.update(zip(map(id, friction), signs))
             F = self._superpose(d, R, sigma)
             if F is None:
                 return None
-            bad = [J for J in friction if F["N"][id(J)] * sigma[J] < 0]
+            bad = [J for J in friction if F["N"][id(J)] * sigma[id(J)] < 0]
             if not bad:
-                self.sides.update({id(J): sigma[J] for J in friction})
+                self.sides.update({id(J): sigma[id(J)] for J in friction})
                 if friction:
                     self.steps.insert(mark, self.step("note", "Friction: the guide reaction is tilted by atan μ against the "
                                                       "sliding; its sense depends on the side the normal force pushes. "
@@ -473,7 +479,7 @@ class Builder:
                 for key, F in part.items():
                     total[key] += F
             for J, on in joints:
-                other = (set(J.links) - {on}).pop()
+                other = _other(J, on)
                 n = self.name(other, on)
                 arrows = [Arrow(f"{n}{x}", xy(p[id(J)]), True) for x, p in parts]
                 # The closing side runs back to the start: it is −(the sum).
@@ -667,7 +673,7 @@ class Builder:
             else:
                 self.dyad(g, {g.j: R_of(g.j), g.k: R_of(g.k)})
                 for J, on in ((g.J1, g.j), (g.J3, g.k)):
-                    other = (set(J.links) - {on}).pop()
+                    other = _other(J, on)
                     lo, hi = sorted(J.links)
                     s = 1.0 if other == hi else -1.0
                     pass_on(other, self.base_name(on, other), s * complex(*self.forces[(lo, hi)]),
@@ -726,6 +732,12 @@ def _lead(scope: str, text: str) -> str:
 
 def _own_text(link, parts) -> str:
     return f"Link {link}: " + "; ".join(map(str, parts)) + "."
+
+
+def _other(joint, link: int) -> int:
+    """The link ``joint`` joins to ``link``."""
+    a, b = joint.links
+    return b if a == link else a
 
 
 def _decompose(v, a, b):

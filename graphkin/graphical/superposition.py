@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from graphkin.graphical.builder import Builder, _Load, xy
+from graphkin.graphical.builder import Builder, _Load, _other, xy
 from graphkin.graphical.captions import Later, and_list, mark, number, polar, roman, sense
 from graphkin.graphical.construction import Arrow, SubProblem
 from graphkin.kinematics import DriverGroup, Kinematics
@@ -44,7 +44,7 @@ def superposition(kin: Kinematics, index: int, whole: Builder):
         b.run(lambda link, L=L: _Load(own[link].F, own[link].M0) if link == L else _Load())
         readings = {}
         for J, on in b.order.values():
-            other = (set(J.links) - {on}).pop()
+            other = _other(J, on)
             readings[b.name(other, on)] = xy(b.on(J, on))
         drive = mech.driver.symbol + m
         readings[drive] = b.effort if crank else b.driver_vector
@@ -58,7 +58,7 @@ def superposition(kin: Kinematics, index: int, whole: Builder):
     for J, on in first.order.values():
         if J is driver_group.joint:
             continue
-        other = (set(J.links) - {on}).pop()
+        other = _other(J, on)
         n = p.base_name(other, on)
         parts = [(n + m, b.on(J, on)) for _, m, _, b in subs]
         total = sum((F for _, F in parts), 0j)
