@@ -39,6 +39,7 @@ assumption was wrong.
 
 from __future__ import annotations
 
+import cmath
 import math
 
 import numpy as np
@@ -100,6 +101,70 @@ def construct_forces(kin: Kinematics, index: int = 0) -> Construction:
                         subproblems=subproblems, **_geometry(b))
 
 
+def _inertia(b: Builder, link: int, body) -> dict:
+    """The inertia loads of ``link`` at the builder's position: ``{"F": (x, y) [N], "T": N·m, "h": m or None,
+    "line_point": (x, y) or None}``, as :func:`graphkin.analytical.loads.inertia` finds them."""
+    a_G, alpha = b.motion(link)
+    found = _inertia_at(body.mass, body.I_G, complex(a_G), float(alpha), b.z(link, body.G))
+    if found is None:
+        inn, i = inertia(b.kin, link), b.i
+        h = float(inn.h[i])
+        found = {"F": tuple(map(float, inn.F[i])), "T": float(inn.T[i]), "h": None if math.isnan(h) else h,
+                 "line_point": None if math.isnan(h) else tuple(map(float, inn.line_point[i]))}
+    return found
+
+
+def _inertia_at(m: float, I_G: float, a_G: complex, alpha: float, G: complex) -> dict | None:
+    """:func:`graphkin.analytical.loads.inertia` at one position, from plain numbers, bit for bit.
+
+    ``inertia`` works on arrays of every position; on arrays of one it costs ~40 µs a link, most of the
+    geometry of an exercise's draw. The same operations on floats give the same numbers (a test compares
+    them): numpy multiplies by −m as by (−m + 0j), whose products with 0 are zeros whose sign the ``+ 0.0``
+    settles; −1j·T is (0, −T) exactly; numpy divides complex numbers by Smith's method with a reciprocal,
+    written out below. Only |F| is left to numpy, which computes it its own way.
+
+    Parameters
+    ----------
+    m : float
+        Mass [kg].
+    I_G : float
+        Moment of inertia about G [kg·m²].
+    a_G : complex
+        Acceleration of G [m/s²].
+    alpha : float
+        Angular acceleration [rad/s²].
+    G : complex
+        Position of G [m].
+
+    Returns
+    -------
+    dict or None
+        ``{"F": (x, y) [N], "T": N·m, "h": m or None, "line_point": (x, y) [m] or None}`` (None for h and the
+        point where the loads are a pure couple); None where an input is not finite.
+    """
+    if not (cmath.isfinite(a_G) and math.isfinite(alpha) and cmath.isfinite(G)):
+        return None
+    Fx = (a_G.real * -m - a_G.imag * 0.0) + 0.0
+    Fy = (a_G.real * 0.0 + a_G.imag * -m) + 0.0
+    T = -I_G * alpha + 0.0
+    size = float(np.abs(np.array([complex(Fx, Fy)]))[0])
+    if not size > 0:
+        return {"F": (Fx, Fy), "T": T, "h": None, "line_point": None}
+    # The shift from G to the resultant's line, −1j T / conj(F), with numpy's division.
+    nx, ny, dx, dy = (-0.0 * T) - (-1.0 * 0.0), (-0.0 * 0.0) + (-1.0 * T), Fx, -Fy
+    if abs(dx) >= abs(dy):
+        rat = dy / dx
+        scl = 1.0 / (dx + dy * rat)
+        sx, sy = (nx + ny * rat) * scl, (ny - nx * rat) * scl
+    else:
+        rat = dx / dy
+        scl = 1.0 / (dy + dx * rat)
+        sx, sy = (nx * rat + ny) * scl, (ny * rat - nx) * scl
+    if not (math.isfinite(sx) and math.isfinite(sy)):  # a force too small beside its torque: a pure couple
+        return {"F": (Fx, Fy), "T": T, "h": None, "line_point": None}
+    return {"F": (Fx, Fy), "T": T, "h": abs(T) / size, "line_point": (G.real + sx, G.imag + sy)}
+
+
 def _geometry(b: Builder) -> dict:
     """Plain-data geometry of the builder's position, for drawing and handouts.
 
@@ -114,10 +179,7 @@ def _geometry(b: Builder) -> dict:
     for link in mech.moving:
         body = mech.link(link)
         if (body.mass or body.I_G) and not kin.static:
-            inn = inertia(kin, link)
-            h = float(inn.h[i])
-            inert[link] = {"F": tuple(map(float, inn.F[i])), "T": float(inn.T[i]), "h": None if math.isnan(h) else h,
-                           "line_point": None if math.isnan(h) else tuple(map(float, inn.line_point[i]))}
+            inert[link] = _inertia(b, link, body)
         arrows = []
         if mech.gravity and body.mass:
             arrows.append(Arrow(f"W{link}", (0.0, -body.mass * mech.gravity), True, G[link]))

@@ -149,6 +149,7 @@ class Builder:
         self._own: dict = like._own if like is not None else {}
         self._applied: dict = like._applied if like is not None else {}
         self._names: dict = like._names if like is not None else {}
+        self._motion: dict = like._motion if like is not None else {}
         if like is not None:
             self.reach = like.reach
         else:
@@ -185,6 +186,13 @@ class Builder:
         if z is None:
             z = self._z[key] = complex(self.kin.z(link, point)[self.i])
         return z
+
+    def motion(self, link):
+        """Acceleration of G [m/s²] (complex) and α [rad/s²] of ``link`` at this position, as numpy scalars."""
+        found = self._motion.get(link)
+        if found is None:
+            found = self._motion[link] = (self.kin.z_a_G(link)[self.i], self.kin.al(link)[self.i])
+        return found
 
     def applied(self, load):
         """What an external load applies at this position: complex force [N] or torque [N·m], 0 where it does not act."""
@@ -245,12 +253,13 @@ class Builder:
 
     def _own_loads(self, link) -> tuple[complex, float, str, Step | None]:
         """A link's own loads reduced to the origin (F, M0), the name of their resultant, and the step stating them."""
-        kin, i, body = self.kin, self.i, self.mech.link(link)
+        kin, body = self.kin, self.mech.link(link)
         load = _Load()
         G = self.z(link, body.G)
         # A static analysis has no inertia loads: the links carry their weights and external loads only.
-        Fi = complex(-body.mass * kin.z_a_G(link)[i]) if body.mass and not kin.static else 0j
-        Ti = float(-body.I_G * kin.al(link)[i]) if body.I_G and not kin.static else 0.0
+        a_G, alpha = self.motion(link) if (body.mass or body.I_G) and not kin.static else (0j, 0.0)
+        Fi = complex(-body.mass * a_G) if body.mass and not kin.static else 0j
+        Ti = float(-body.I_G * alpha) if body.I_G and not kin.static else 0.0
         load.add(Fi, G, Ti)
         parts = []
         lines = []
