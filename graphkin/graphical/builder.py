@@ -41,6 +41,7 @@ from __future__ import annotations
 import cmath
 import itertools
 import math
+import struct
 
 import numpy as np
 import shapely
@@ -88,6 +89,9 @@ class _Load:
         # inf quietly, and is then a pure couple.
         P = complex(-1j * float(self.M0)) / complex(self.F).conjugate()
         return P if cmath.isfinite(P) else None
+
+
+_LINES = struct.Struct("8d")
 
 
 def _meet(p, u, q, w, reach):
@@ -150,6 +154,7 @@ class Builder:
         self._applied: dict = like._applied if like is not None else {}
         self._names: dict = like._names if like is not None else {}
         self._motion: dict = like._motion if like is not None else {}
+        self._meets: dict = like._meets if like is not None else {}
         if like is not None:
             self.reach = like.reach
         else:
@@ -186,6 +191,17 @@ class Builder:
         if z is None:
             z = self._z[key] = complex(self.kin.z(link, point)[self.i])
         return z
+
+    def meet(self, p: complex, u: complex, q: complex, w: complex):
+        """Where the lines through p along u and through q along w meet (:func:`_meet`), or None.
+
+        A sub-problem often draws the very lines the whole problem drew (a dyad's part with the same load):
+        each pair of lines is intersected once per position, keyed by the bits of its numbers (−0.0 is not 0.0).
+        """
+        key = _LINES.pack(p.real, p.imag, u.real, u.imag, q.real, q.imag, w.real, w.imag)
+        if key not in self._meets:
+            self._meets[key] = _meet(p, u, q, w, self.reach)
+        return self._meets[key]
 
     def motion(self, link):
         """Acceleration of G [m/s²] (complex) and α [rad/s²] of ``link`` at this position, as numpy scalars."""
@@ -388,7 +404,7 @@ class Builder:
             if Rp is None:
                 text = f"{RL} is a pure couple, so {nM} and {nL} form the opposite couple: {nL} is parallel to {nM}"
             else:
-                I = _meet(Rp, R.F / abs(R.F), on_L, M_dir, self.reach)
+                I = self.meet(Rp, R.F / abs(R.F), on_L, M_dir)
                 if abs(R.about(XL)) <= 1e-12 * abs(R.F) * self.reach:
                     text = (f"{RL} already passes through {JL.point}, so the three lines cannot meet elsewhere: "
                             f"{nM} is zero and {nL} = −{RL}")
@@ -410,7 +426,7 @@ class Builder:
             F_M, F_out = a * M_dir, b * wL
             points = {}
             if Rp is not None:
-                I = _meet(Rp, R.F / abs(R.F), on_L, M_dir, self.reach)
+                I = self.meet(Rp, R.F / abs(R.F), on_L, M_dir)
                 if I is not None:
                     points[f"I{L}"] = xy(I)
                     lines.append(Line(nL, xy(I), xy(wL / abs(wL)), "found"))
@@ -567,7 +583,7 @@ class Builder:
         points = {}
         Rp = R.point()
         if Rp is not None:
-            I = _meet(Rp, R.F / abs(R.F), P, d, self.reach)
+            I = self.meet(Rp, R.F / abs(R.F), P, d)
             if I is not None:
                 points[f"I{g.k}"] = xy(I)
         pivot_line = (Line(nF, xy(Ck), xy(F_piv / abs(F_piv)) if F_piv else (1.0, 0.0), "found"),)
