@@ -39,12 +39,13 @@ assumption was wrong.
 
 from __future__ import annotations
 
+import cmath
 import math
 
 import numpy as np
 
 from graphkin.analytical.kinetostatics import pitch as pitch_point
-from graphkin.analytical.loads import applied_at, inertia
+from graphkin.analytical.loads import inertia
 from graphkin.errors import GraphkinError
 from graphkin.graphical.builder import Builder, DeadPoint, xy
 from graphkin.graphical.construction import Arrow, Construction, nice_scale
@@ -97,35 +98,93 @@ def construct_forces(kin: Kinematics, index: int = 0) -> Construction:
     largest = max([abs(complex(*F)) for F in b.forces.values()] + [0.0])
     return Construction(mech, index, q, tuple(steps), b.forces, b.normal, b.couple, b.effort,
                         nice_scale(largest), True, "", tuple(warnings), driver_vector=b.driver_vector,
-                        subproblems=subproblems, **_geometry(kin, index))
+                        subproblems=subproblems, **_geometry(b))
 
 
-def _geometry(kin: Kinematics, i: int) -> dict:
-    """Plain-data geometry of position i, for drawing and handouts."""
+def _inertia(b: Builder, link: int, body) -> dict:
+    """The inertia loads of ``link`` at the builder's position: ``{"F": (x, y) [N], "T": N·m, "h": m or None,
+    "line_point": (x, y) or None}``, as :func:`graphkin.analytical.loads.inertia` finds them."""
+    a_G, alpha = b.motion(link)
+    found = _inertia_at(body.mass, body.I_G, complex(a_G), float(alpha), b.z(link, body.G))
+    if found is None:
+        inn, i = inertia(b.kin, link), b.i
+        h = float(inn.h[i])
+        found = {"F": tuple(map(float, inn.F[i])), "T": float(inn.T[i]), "h": None if math.isnan(h) else h,
+                 "line_point": None if math.isnan(h) else tuple(map(float, inn.line_point[i]))}
+    return found
+
+
+def _inertia_at(m: float, I_G: float, a_G: complex, alpha: float, G: complex) -> dict | None:
+    """:func:`graphkin.analytical.loads.inertia` at one position, from plain numbers, bit for bit.
+
+    ``inertia`` works on arrays of every position; on arrays of one it costs ~40 µs a link, most of the
+    geometry of an exercise's draw. The same formulas on numpy scalars take a tenth of that and give the
+    same bits (numpy's scalar arithmetic is its array arithmetic; a test compares them).
+
+    Parameters
+    ----------
+    m : float
+        Mass [kg].
+    I_G : float
+        Moment of inertia about G [kg·m²].
+    a_G : complex
+        Acceleration of G [m/s²].
+    alpha : float
+        Angular acceleration [rad/s²].
+    G : complex
+        Position of G [m].
+
+    Returns
+    -------
+    dict or None
+        ``{"F": (x, y) [N], "T": N·m, "h": m or None, "line_point": (x, y) [m] or None}`` (None for h and the
+        point where the loads are a pure couple); None where an input is not finite.
+    """
+    if not (cmath.isfinite(a_G) and math.isfinite(alpha) and cmath.isfinite(G)):
+        return None
+    F = -m * np.complex128(a_G) + 0.0
+    T = -I_G * np.float64(alpha) + 0.0
+    size = np.abs(F)
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        # As inertia does: r × F = T with r ⟂ F gives r = −i T / conj(F).
+        shift = -1j * T / np.conj(F)
+    force = (float(F.real), float(F.imag))
+    if not (size > 0 and np.isfinite(shift)):  # no force, or one so small beside the torque: a pure couple
+        return {"F": force, "T": float(T), "h": None, "line_point": None}
+    with np.errstate(over="ignore"):
+        h = np.abs(T) / size
+    z = G + shift
+    return {"F": force, "T": float(T), "h": float(h), "line_point": (float(z.real), float(z.imag))}
+
+
+def _geometry(b: Builder) -> dict:
+    """Plain-data geometry of the builder's position, for drawing and handouts.
+
+    Points, guides and loads come from the builder, which has found most of them already (the same values:
+    a point is ``complex(kin.z(link, name)[i])`` either way).
+    """
+    kin, i = b.kin, b.i
     mech = kin.mechanism
-    points = {link.number: {name: xy(complex(kin.z(link.number, name)[i])) for name in link.points} for link in mech.links}
-    G = {link: xy(complex(kin.z_G(link)[i])) for link in mech.moving}
+    points = {link.number: {name: xy(b.z(link.number, name)) for name in link.points} for link in mech.links}
+    G = {link: xy(b.z(link, mech.link(link).G)) for link in mech.moving}
     inert, external = {}, {}
     for link in mech.moving:
         body = mech.link(link)
         if (body.mass or body.I_G) and not kin.static:
-            inn = inertia(kin, link)
-            h = float(inn.h[i])
-            inert[link] = {"F": tuple(map(float, inn.F[i])), "T": float(inn.T[i]), "h": None if math.isnan(h) else h,
-                           "line_point": None if math.isnan(h) else tuple(map(float, inn.line_point[i]))}
+            inert[link] = _inertia(b, link, body)
         arrows = []
         if mech.gravity and body.mass:
             arrows.append(Arrow(f"W{link}", (0.0, -body.mass * mech.gravity), True, G[link]))
         for ld in mech.loads:
             if isinstance(ld, PointForce) and ld.link == link:
-                F = applied_at(kin, ld, i)
+                F = b.applied(ld)
                 if F:
                     arrows.append(Arrow(ld.name or f"P{link}", xy(F), True, points[link][ld.point]))
         external[link] = arrows
     torques = {link: [(ld.name or f"T{link}", T) for ld in mech.loads
-                      if isinstance(ld, Torque) and ld.link == link and (T := applied_at(kin, ld, i))]
+                      if isinstance(ld, Torque) and ld.link == link and (T := b.applied(ld))]
                for link in mech.moving}
-    guides = {tuple(sorted(j.links)): xy(complex(kin.z_guide(j)[i])) for j in mech.joints if isinstance(j, Prismatic)}
+    guides = {tuple(sorted(j.links)): xy(b.u(j)) for j in mech.joints if isinstance(j, Prismatic)}
     angles = {link.number: float(kin.theta[link.number][i]) for link in mech.links}
     pitch = {}
     for joint in mech.joints:

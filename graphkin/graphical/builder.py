@@ -41,6 +41,7 @@ from __future__ import annotations
 import cmath
 import itertools
 import math
+import struct
 
 import numpy as np
 import shapely
@@ -49,7 +50,7 @@ from graphkin.analytical.kinetostatics import pitch
 from graphkin.analytical.loads import applied_at
 from graphkin.geometry import zcross as cross
 from graphkin.geometry import zdot as dot
-from graphkin.graphical.captions import and_list, number, polar, sense
+from graphkin.graphical.captions import Later, and_list, number, polar, sense
 from graphkin.graphical.construction import Arrow, Line, Step
 from graphkin.kinematics import DriverGroup, Dyad, GearGroup, Kinematics
 from graphkin.model import PointForce, Prismatic, Revolute, Torque
@@ -60,6 +61,8 @@ CLOSE = 1e-9
 
 
 def xy(z) -> tuple[float, float]:
+    if type(z) is complex:  # most are: its parts are floats already
+        return (z.real, z.imag)
     return (float(z.real), float(z.imag))
 
 
@@ -86,6 +89,9 @@ class _Load:
         # inf quietly, and is then a pure couple.
         P = complex(-1j * float(self.M0)) / complex(self.F).conjugate()
         return P if cmath.isfinite(P) else None
+
+
+_LINES = struct.Struct("8d")
 
 
 def _meet(p, u, q, w, reach):
@@ -145,11 +151,16 @@ class Builder:
         # Each link's own loads, and the step that states them, are the same for the whole problem and the
         # superposition's presentation: found once (by link, for builders of the whole problem only).
         self._own: dict = like._own if like is not None else {}
+        self._applied: dict = like._applied if like is not None else {}
+        self._names: dict = like._names if like is not None else {}
+        self._motion: dict = like._motion if like is not None else {}
+        self._meets: dict = like._meets if like is not None else {}
         if like is not None:
             self.reach = like.reach
         else:
             pts = [self.z(link, p) for link in self.mech.moving for p in self.mech.link(link).points]
-            self.reach = max((abs(a - b) for a in pts for b in pts), default=1.0) or 1.0
+            # Each pair once: |a − b| and |b − a| are the same number.
+            self.reach = max((abs(a - b) for k, a in enumerate(pts) for b in pts[k + 1:]), default=0.0) or 1.0
 
     def rounding(self, F: complex, M: float = 0.0) -> bool:
         """Whether a force ``F`` [N] and a moment ``M`` [N·m] are rounding beside the largest force found so far in
@@ -166,18 +177,45 @@ class Builder:
 
     def lead(self, text: str) -> str:
         """``"In sub-problem I, link 4 …"`` in a sub-problem, ``"Link 4 …"`` in the whole problem."""
-        return f"In {self.scope}, {text}" if self.scope else text[0].upper() + text[1:]
+        return _lead(self.scope, text)
 
     def within(self) -> str:
         """``" in sub-problem I"`` or ``""``."""
         return f" in {self.scope}" if self.scope else ""
 
     # -- geometry at this position -----------------------------------------
-    def z(self, link, point):
-        key = (link, point if isinstance(point, str) else tuple(point))
-        if key not in self._z:
-            self._z[key] = complex(self.kin.z(link, point)[self.i])
-        return self._z[key]
+    def z(self, link, point) -> complex:
+        """Position of a point of ``link`` (a name or local (x, y)) at this position [m]."""
+        key = (link, point) if type(point) is str else (link, tuple(point))
+        z = self._z.get(key)
+        if z is None:
+            z = self._z[key] = complex(self.kin.z(link, point)[self.i])
+        return z
+
+    def meet(self, p: complex, u: complex, q: complex, w: complex):
+        """Where the lines through p along u and through q along w meet (:func:`_meet`), or None.
+
+        A sub-problem often draws the very lines the whole problem drew (a dyad's part with the same load):
+        each pair of lines is intersected once per position, keyed by the bits of its numbers (−0.0 is not 0.0).
+        """
+        key = _LINES.pack(p.real, p.imag, u.real, u.imag, q.real, q.imag, w.real, w.imag)
+        if key not in self._meets:
+            self._meets[key] = _meet(p, u, q, w, self.reach)
+        return self._meets[key]
+
+    def motion(self, link):
+        """Acceleration of G [m/s²] (complex) and α [rad/s²] of ``link`` at this position, as numpy scalars."""
+        found = self._motion.get(link)
+        if found is None:
+            found = self._motion[link] = (self.kin.z_a_G(link)[self.i], self.kin.al(link)[self.i])
+        return found
+
+    def applied(self, load):
+        """What an external load applies at this position: complex force [N] or torque [N·m], 0 where it does not act."""
+        key = id(load)
+        if key not in self._applied:
+            self._applied[key] = applied_at(self.kin, load, self.i)
+        return self._applied[key]
 
     def joint_point(self, joint, link):
         return self.z(joint.slider, joint.point) if isinstance(joint, Prismatic) else self.z(link, joint.point)
@@ -206,8 +244,11 @@ class Builder:
         return w
 
     def base_name(self, i, j):
-        letter = self.mech.joint_between(i, j).force_letter
-        return f"{letter}{i}{j}" if i < 10 and j < 10 else f"{letter}{i},{j}"
+        name = self._names.get((i, j))
+        if name is None:
+            letter = self.mech.joint_between(i, j).force_letter
+            name = self._names[i, j] = f"{letter}{i}{j}" if i < 10 and j < 10 else f"{letter}{i},{j}"
+        return name
 
     def name(self, i, j):
         return self.base_name(i, j) + self.mark
@@ -228,12 +269,13 @@ class Builder:
 
     def _own_loads(self, link) -> tuple[complex, float, str, Step | None]:
         """A link's own loads reduced to the origin (F, M0), the name of their resultant, and the step stating them."""
-        kin, i, body = self.kin, self.i, self.mech.link(link)
+        kin, body = self.kin, self.mech.link(link)
         load = _Load()
-        G = complex(kin.z_G(link)[i])
+        G = self.z(link, body.G)
         # A static analysis has no inertia loads: the links carry their weights and external loads only.
-        Fi = complex(-body.mass * kin.z_a_G(link)[i]) if body.mass and not kin.static else 0j
-        Ti = float(-body.I_G * kin.al(link)[i]) if body.I_G and not kin.static else 0.0
+        a_G, alpha = self.motion(link) if (body.mass or body.I_G) and not kin.static else (0j, 0.0)
+        Fi = complex(-body.mass * a_G) if body.mass and not kin.static else 0j
+        Ti = float(-body.I_G * alpha) if body.I_G and not kin.static else 0.0
         load.add(Fi, G, Ti)
         parts = []
         lines = []
@@ -246,42 +288,40 @@ class Builder:
                 # The offset side makes the moment of F about G equal T.
                 P = G - 1j * Ti / Fi.conjugate()  # Ti Fi/|Fi|², without squaring a small |Fi| to 0
                 lines.append(Line(f"R{link}i", xy(P), xy(Fi / abs(Fi)), "resultant"))
-                sense = "clockwise" if Ti < 0 else "counter-clockwise"
-                parts.append(
-                    f"its inertia force F{link}i = −m{link}·a_G{link} = {polar(Fi)} and inertia torque "
-                    f"T{link}i = −I_G{link}·α{link} = "
-                    f"{number(Ti)} N·m combine into one force R{link}i of the same size and direction, whose line is offset "
-                    f"from G{link} by h = |T|/|F| = {number(h * 1e3)} mm to the side that turns link {link} {sense}"
-                    # An offset under a picometre is rounding (α = 0 but for it): the force acts through G.
-                    if h > PICOMETRE else f"its inertia force F{link}i = −m{link}·a_G{link} = {polar(Fi)} acts through G{link}")
+                # An offset under a picometre is rounding (α = 0 but for it): the force acts through G.
+                parts.append(Later(_inertia_offset, link, Fi, Ti, h) if h > PICOMETRE else
+                             Later(_inertia_through_G, link, Fi))
             else:
-                parts.append(f"its inertia torque T{link}i = {number(Ti)} N·m is a pure couple")
+                parts.append(Later(lambda link, Ti: f"its inertia torque T{link}i = {number(Ti)} N·m is a pure couple",
+                                   link, Ti))
         if self.mech.gravity and body.mass:
             W = -1j * body.mass * self.mech.gravity
             load.add(W, G)
-            parts.append(f"its weight {number(abs(W))} N acts at G{link}")
+            parts.append(Later(lambda link, W: f"its weight {number(abs(W))} N acts at G{link}", link, W))
 
         for ld in self.mech.loads:
             if ld.link != link:
                 continue
-            value = applied_at(kin, ld, i)
+            value = self.applied(ld)
             if not value:  # not acting here (outside its window, a table's zero, or at rest on its working stroke)
                 continue
             if isinstance(ld, PointForce):
                 F = complex(value)
                 load.add(F, self.z(link, ld.point))
-                parts.append(f"the external force {ld.name or 'P'} = {number(abs(F))} N acts at {ld.point}")
+                parts.append(Later(lambda name, F, at: f"the external force {name} = {number(abs(F))} N acts at {at}",
+                                   ld.name or "P", F, ld.point))
             elif isinstance(ld, Torque):
                 load.add(0j, None, value)
-                parts.append(f"the external torque {ld.name or 'T'} = {number(value)} N·m acts on it")
+                parts.append(Later(lambda name, T: f"the external torque {name} = {number(T)} N·m acts on it",
+                                   ld.name or "T", value))
         only_inertia = len(parts) == 1 and bool(Fi or Ti)
         rname = f"R{link}i" if only_inertia else f"R{link}"
         if len(parts) > 1 and load.F and load.point() is not None:
             lines.append(Line(f"R{link}", xy(load.point()), xy(load.F / abs(load.F)), "resultant"))
             values[f"R{link}"] = xy(load.F)
-            parts.append(f"together they make one resultant R{link} = {number(abs(load.F))} N")
-        step = self.step("resultant", f"Link {link}: " + "; ".join(parts) + ".", link, lines, values=values) \
-            if parts else None
+            parts.append(Later(lambda link, F: f"together they make one resultant R{link} = {number(abs(F))} N",
+                               link, load.F))
+        step = self.step("resultant", Later(_own_text, link, tuple(parts)), link, lines, values=values) if parts else None
         return load.F, load.M0, rname, step
 
     def combine(self, link, load: _Load, extra: list):
@@ -291,23 +331,15 @@ class Builder:
             load.add(F, X, C)
         if extra:
             R = self.rname[link] = f"R{link}{self.mark}"
-            names = [n for n, _, _, _ in extra]
+            names = tuple(n for n, _, _, _ in extra)
             P = load.point()
             nothing = P is not None and self.rounding(load.F)
             # A resultant that is rounding has no line: its direction would be the rounding's.
             lines = (Line(R, xy(P), xy(load.F / abs(load.F)), "resultant"),) if P is not None and not nothing else ()
-            res = (f"{R} = 0 N" if nothing else
-                   f"{R} = {number(abs(load.F))} N" if P is not None else f"{R}, a pure couple of {number(load.M0)} N·m")
-            if own:
-                # The own loads' name only when it differs from the new one (a crank's weight alone is R2 too).
-                mine = f" ({own_name})" if own_name != R else ""
-                text = (f"link {link} also carries {and_list(names)}, found before; with its own loads{mine} they add up "
-                        f"to one resultant {res}.")
-            elif len(names) == 1:
-                text = f"link {link} carries only {names[0]}, found before, so its resultant is {names[0]} itself: {res}."
-            else:
-                text = f"link {link} carries only {and_list(names)}, found before; they add up to one resultant {res}."
-            self.add("resultant", self.lead(text), link, lines, values={R: xy(load.F)})
+            # The own loads' name only when it differs from the new one (a crank's weight alone is R2 too).
+            mine = (f" ({own_name})" if own_name != R else "") if own else None
+            self.add("resultant", Later(_combined_text, self.scope, link, R, names, mine, nothing, P is not None, load.F,
+                                        load.M0), link, lines, values={R: xy(load.F)})
         return load
 
     # -- dyads -----------------------------------------------------------------
@@ -324,13 +356,13 @@ class Builder:
             return X2, (XM - X2) / abs(XM - X2), M, text
         if isinstance(J2, Revolute):
             X2 = self.z(M, J2.point)
-            w = self.w(JM, M, sigma[JM])
+            w = self.w(JM, M, sigma[id(JM)])
             text = f"through {J2.point}, along the reaction of its guide (normal to the guide" + (
                 ", tilted by the friction angle)" if JM.mu else ")")
             return X2, w / abs(w), M, text
         if isinstance(JM, Revolute):
             XM = self.z(M, JM.point)
-            w = self.w(J2, d.k, sigma[J2])
+            w = self.w(J2, d.k, sigma[id(J2)])
             return XM, w / abs(w), M, f"through its pin {JM.point}, normal to the sliding pair at {J2.point}"
         return None, None, M, "as a couple only (two guides cannot balance a force)"
 
@@ -341,7 +373,7 @@ class Builder:
         M_point, M_dir, M, how = self.m_line(d, L, sigma)
         # On L the passed force acts at L's own middle pin (the same point unless a link's angle is given).
         on_L = self.z(L, d.J2.point) if M_point is not None and isinstance(d.J2, Revolute) else M_point
-        nM, nL = self.name(M, L), self.name((set(JL.links) - {L}).pop(), L)
+        nM, nL = self.name(M, L), self.name(_other(JL, L), L)
         steps = []
         steps.append(self.step("two-force", self.lead(f"link {M} carries no load, so it is a two-force member: {nM} acts "
                                                       f"{how}."), M,
@@ -372,7 +404,7 @@ class Builder:
             if Rp is None:
                 text = f"{RL} is a pure couple, so {nM} and {nL} form the opposite couple: {nL} is parallel to {nM}"
             else:
-                I = _meet(Rp, R.F / abs(R.F), on_L, M_dir, self.reach)
+                I = self.meet(Rp, R.F / abs(R.F), on_L, M_dir)
                 if abs(R.about(XL)) <= 1e-12 * abs(R.F) * self.reach:
                     text = (f"{RL} already passes through {JL.point}, so the three lines cannot meet elsewhere: "
                             f"{nM} is zero and {nL} = −{RL}")
@@ -389,12 +421,12 @@ class Builder:
             lines.append(Line(nM, xy(on_L), xy(M_dir)))
             steps.append(self.step("three-force", self.lead(text) + ".", L, lines, points))
         else:
-            wL = self.w(JL, L, sigma[JL])
+            wL = self.w(JL, L, sigma[id(JL)])
             a, b = _decompose(-R.F, M_dir, wL)
             F_M, F_out = a * M_dir, b * wL
             points = {}
             if Rp is not None:
-                I = _meet(Rp, R.F / abs(R.F), on_L, M_dir, self.reach)
+                I = self.meet(Rp, R.F / abs(R.F), on_L, M_dir)
                 if I is not None:
                     points[f"I{L}"] = xy(I)
                     lines.append(Line(nL, xy(I), xy(wL / abs(wL)), "found"))
@@ -415,20 +447,20 @@ class Builder:
         friction = [J for J in d.joints if isinstance(J, Prismatic) and J.mu > 0]
         if self.fixed is not None:
             # A sub-problem: the sides are the whole problem's, right or not for these loads alone.
-            sigma = {J: 1.0 for J in d.joints if isinstance(J, Prismatic)}
-            sigma.update({J: self.fixed[id(J)] for J in friction})
+            sigma = {id(J): 1.0 for J in d.joints if isinstance(J, Prismatic)}
+            sigma.update({id(J): self.fixed[id(J)] for J in friction})
             return self._superpose(d, R, sigma)
         mark = len(self.steps)
         for signs in itertools.product((1.0, -1.0), repeat=len(friction)):
             del self.steps[mark:]
-            sigma = {J: 1.0 for J in d.joints if isinstance(J, Prismatic)}
-            sigma.update(zip(friction, signs))
+            sigma = {id(J): 1.0 for J in d.joints if isinstance(J, Prismatic)}
+            sigma.update(zip(map(id, friction), signs))
             F = self._superpose(d, R, sigma)
             if F is None:
                 return None
-            bad = [J for J in friction if F["N"][id(J)] * sigma[J] < 0]
+            bad = [J for J in friction if F["N"][id(J)] * sigma[id(J)] < 0]
             if not bad:
-                self.sides.update({id(J): sigma[J] for J in friction})
+                self.sides.update({id(J): sigma[id(J)] for J in friction})
                 if friction:
                     self.steps.insert(mark, self.step("note", "Friction: the guide reaction is tilted by atan μ against the "
                                                       "sliding; its sense depends on the side the normal force pushes. "
@@ -472,12 +504,13 @@ class Builder:
                 for key, F in part.items():
                     total[key] += F
             for J, on in joints:
-                other = (set(J.links) - {on}).pop()
+                other = _other(J, on)
                 n = self.name(other, on)
                 arrows = [Arrow(f"{n}{x}", xy(p[id(J)]), True) for x, p in parts]
                 # The closing side runs back to the start: it is −(the sum).
-                self.add("superpose", self.lead(f"{n} is the sum of its parts: {n} = "
-                                                + " + ".join(a.name for a in arrows) + f" = {polar(total[id(J)])}."),
+                self.add("superpose", Later(lambda scope, n, arrows, F: _lead(
+                    scope, f"{n} is the sum of its parts: {n} = " + " + ".join(a.name for a in arrows) + f" = {polar(F)}."),
+                    self.scope, n, arrows, total[id(J)]),
                          on, polygon=tuple(arrows) + (Arrow(f"−{n}", xy(-total[id(J)]), False),),
                          values={n: xy(total[id(J)])})
         elif loaded:
@@ -540,16 +573,17 @@ class Builder:
         d /= abs(d)
         nW, nF = self.name(g.j, g.k), self.name(g.support, g.k)
         Rk = self.rname[g.k]
-        self.add("line", self.lead(f"the tooth force {nW} lies on the pressure line through the pitch point P, inclined "
-                                   f"{number(math.degrees(mesh.pressure_angle))}° to the common tangent, on the flank that "
-                                   f"opposes the load on gear {g.k}."), g.k, (Line(nW, xy(P), xy(d)),), {"P": xy(P)})
+        self.add("line", Later(lambda scope, nW, angle, k: _lead(
+            scope, f"the tooth force {nW} lies on the pressure line through the pitch point P, inclined "
+            f"{number(math.degrees(angle))}° to the common tangent, on the flank that opposes the load on gear {k}."),
+            self.scope, nW, mesh.pressure_angle, g.k), g.k, (Line(nW, xy(P), xy(d)),), {"P": xy(P)})
         arm = cross(P - Ck, d)
         F_W = (-R.about(Ck) / arm) * d
         F_piv = -R.F - F_W
         points = {}
         Rp = R.point()
         if Rp is not None:
-            I = _meet(Rp, R.F / abs(R.F), P, d, self.reach)
+            I = self.meet(Rp, R.F / abs(R.F), P, d)
             if I is not None:
                 points[f"I{g.k}"] = xy(I)
         pivot_line = (Line(nF, xy(Ck), xy(F_piv / abs(F_piv)) if F_piv else (1.0, 0.0), "found"),)
@@ -557,8 +591,9 @@ class Builder:
         # nil, e.g. an input torque) is no three-force member: the tooth and
         # pivot forces are then the opposite couple, equal and opposite.
         if abs(R.F) <= 1e-9 * abs(F_W):
-            self.add("couple", f"Gear {g.k} carries only a couple ({number(R.M0)} N·m){self.within()}: {nW} and the pivot "
-                     f"force {nF} form the opposite couple, so {nF} = −{nW}, through the centre {g.pivot.point}.",
+            self.add("couple", Later(lambda k, M0, within, nW, nF, at: f"Gear {k} carries only a couple ({number(M0)} N·m)"
+                                     f"{within}: {nW} and the pivot force {nF} form the opposite couple, so {nF} = −{nW}, "
+                                     f"through the centre {at}.", g.k, R.M0, self.within(), nW, nF, g.pivot.point),
                      g.k, pivot_line, points)
             poly = (Arrow(nW, xy(F_W), False), Arrow(nF, xy(F_piv), False))
             caption = f"Force polygon of gear {g.k}{self.within()}: {nW} + {nF} = 0."
@@ -596,15 +631,7 @@ class Builder:
             d = abs(T) / abs(complex(R.F)) if R.F else 0.0
             dn = "d" + self.mark
             nothing = self.rounding(R.F, R.M0)
-            arm = (f"{Rd} is rounding, so {name} = 0 and {drive} = 0 N·m" if nothing else
-                   f"{Rd} acts through {J.point} (its arm {dn} = 0), so the driving torque is {drive} = 0 N·m"
-                   if d <= PICOMETRE else  # a dead centre: what is left of the arm is rounding
-                   f"with {Rd} it forms a couple of arm {dn} = {number(d * 1e3)} mm, which the driving torque balances: "
-                   f"{drive} = ±|{Rd}|·{dn} = {number(T)} N·m{sense(T)}" if math.isfinite(d * 1e3) else
-                   f"{Rd} is so small beside its moment about {J.point} that the loads are a pure couple, which the "
-                   f"driving torque balances: {drive} = {number(T)} N·m{sense(T)}")
-            self.add("driver", f"The crank{self.within()}: the pivot force {name} = −{Rd} acts at {J.point}; {arm}"
-                     + (f"; {total}." if total else "."), link,
+            self.add("driver", Later(_crank_text, self.within(), name, Rd, J.point, drive, dn, nothing, d, T, total), link,
                      () if nothing else (Line(name, xy(X), xy(F / abs(F)) if F else (1.0, 0.0), "found"),),
                      values={name: xy(F), drive: T, **({"d": d} if math.isfinite(d) else {})},
                      polygon=(Arrow(Rd, xy(R.F), True), Arrow(name, xy(F), False, xy(X))))
@@ -624,9 +651,10 @@ class Builder:
         C = -(R.M0 + cross(X, G + Fd))
         self._check(self.add(
             "driver",
-            f"The slider{self.within()}: the driving force {drive} acts along the guide and the guide force {name} "
-            "normal to it" + (" (tilted by the friction angle)" if J.mu else "")
-            + f"; the polygon {Rd} + {name} + {drive} = 0 gives both" + (f"; {total}." if total else "."),
+            Later(lambda within, drive, name, mu, Rd, total: f"The slider{within}: the driving force {drive} acts along "
+                  f"the guide and the guide force {name} normal to it" + (" (tilted by the friction angle)" if mu else "")
+                  + f"; the polygon {Rd} + {name} + {drive} = 0 gives both" + (f"; {total}." if total else "."),
+                  self.within(), drive, name, J.mu, Rd, total),
             link, (Line(drive, xy(X), xy(u), "found"),),
             polygon=(Arrow(Rd, xy(R.F), True), Arrow(name, xy(G), False), Arrow(drive, xy(Fd), False, xy(X))),
             values={name: xy(G), drive: xy(Fd)}))
@@ -670,7 +698,7 @@ class Builder:
             else:
                 self.dyad(g, {g.j: R_of(g.j), g.k: R_of(g.k)})
                 for J, on in ((g.J1, g.j), (g.J3, g.k)):
-                    other = (set(J.links) - {on}).pop()
+                    other = _other(J, on)
                     lo, hi = sorted(J.links)
                     s = 1.0 if other == hi else -1.0
                     pass_on(other, self.base_name(on, other), s * complex(*self.forces[(lo, hi)]),
@@ -681,6 +709,60 @@ class Builder:
         lo, hi = sorted(joint.links)
         F = complex(*self.forces[(lo, hi)])
         return F if link == hi else -F
+
+
+def _inertia_offset(link, Fi, Ti, h) -> str:
+    sense = "clockwise" if Ti < 0 else "counter-clockwise"
+    return (f"its inertia force F{link}i = −m{link}·a_G{link} = {polar(Fi)} and inertia torque T{link}i = "
+            f"−I_G{link}·α{link} = {number(Ti)} N·m combine into one force R{link}i of the same size and direction, "
+            f"whose line is offset from G{link} by h = |T|/|F| = {number(h * 1e3)} mm to the side that turns link "
+            f"{link} {sense}")
+
+
+def _inertia_through_G(link, Fi) -> str:
+    return f"its inertia force F{link}i = −m{link}·a_G{link} = {polar(Fi)} acts through G{link}"
+
+
+def _combined_text(scope, link, R, names, mine, nothing, line, F, M0) -> str:
+    """What :meth:`Builder.combine` says: the reactions ``names`` found before, added to the own loads (named
+    ``mine``; None for none) into one resultant ``R`` (nothing: rounding; ``line``: not a pure couple)."""
+    res = (f"{R} = 0 N" if nothing else f"{R} = {number(abs(F))} N" if line else f"{R}, a pure couple of {number(M0)} N·m")
+    if mine is not None:
+        text = (f"link {link} also carries {and_list(names)}, found before; with its own loads{mine} they add up "
+                f"to one resultant {res}.")
+    elif len(names) == 1:
+        text = f"link {link} carries only {names[0]}, found before, so its resultant is {names[0]} itself: {res}."
+    else:
+        text = f"link {link} carries only {and_list(names)}, found before; they add up to one resultant {res}."
+    return _lead(scope, text)
+
+
+def _crank_text(within, name, Rd, at, drive, dn, nothing, d, T, total) -> str:
+    """What :meth:`Builder.driver` says of a crank: the pivot force ``name`` and the driving torque ``drive`` = ``T``,
+    with the arm ``dn`` = ``d`` of the couple they form (``nothing``: the resultant ``Rd`` is rounding)."""
+    arm = (f"{Rd} is rounding, so {name} = 0 and {drive} = 0 N·m" if nothing else
+           f"{Rd} acts through {at} (its arm {dn} = 0), so the driving torque is {drive} = 0 N·m"
+           if d <= PICOMETRE else  # a dead centre: what is left of the arm is rounding
+           f"with {Rd} it forms a couple of arm {dn} = {number(d * 1e3)} mm, which the driving torque balances: "
+           f"{drive} = ±|{Rd}|·{dn} = {number(T)} N·m{sense(T)}" if math.isfinite(d * 1e3) else
+           f"{Rd} is so small beside its moment about {at} that the loads are a pure couple, which the "
+           f"driving torque balances: {drive} = {number(T)} N·m{sense(T)}")
+    return f"The crank{within}: the pivot force {name} = −{Rd} acts at {at}; {arm}" + (f"; {total}." if total else ".")
+
+
+def _lead(scope: str, text: str) -> str:
+    """``"In sub-problem I, link 4 …"`` in a sub-problem (``scope``), ``"Link 4 …"`` in the whole problem."""
+    return f"In {scope}, {text}" if scope else text[0].upper() + text[1:]
+
+
+def _own_text(link, parts) -> str:
+    return f"Link {link}: " + "; ".join(map(str, parts)) + "."
+
+
+def _other(joint, link: int) -> int:
+    """The link ``joint`` joins to ``link``."""
+    a, b = joint.links
+    return b if a == link else a
 
 
 def _decompose(v, a, b):

@@ -10,6 +10,30 @@ from graphkin.notation import num, polar_text
 _MARKS = ("′", "″", "‴", "⁗")
 
 
+class Later:
+    """A caption written when first read: ``write(*values)``, the values taken when the step is made.
+
+    Most constructions are made to be checked (an exercise's draw), not read, and formatting their numbers
+    is a good part of their cost; :class:`graphkin.graphical.construction.Step` writes the text the first
+    time its ``caption`` is read, and every reader sees the same str as if it had been written at once.
+    ``write`` must take everything it reads as arguments (a function without free variables: a builder's
+    state changes after the step is made).
+
+    Examples
+    --------
+    >>> str(Later(lambda F, link: f"Link {link}: F = {polar(F)}", 3 - 4j, 3))
+    'Link 3: F = 5 N ∠ -53.13°'
+    """
+
+    __slots__ = ("write", "values")
+
+    def __init__(self, write, *values):
+        self.write, self.values = write, values
+
+    def __str__(self) -> str:
+        return self.write(*self.values)
+
+
 _SUPERSCRIPT = str.maketrans("0123456789", "⁰¹²³⁴⁵⁶⁷⁸⁹")
 
 

@@ -8,7 +8,7 @@ re-solving anything. Vectors are ``(x, y)`` tuples.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import FrozenInstanceError, dataclass, field
 
 import numpy as np
 
@@ -39,6 +39,14 @@ class Line:
     direction: tuple[float, float]
     role: str = "known direction"
 
+    # Written by hand, as Arrow's and Step's: a frozen dataclass's own __init__ sets each field through
+    # object.__setattr__, and a construction makes hundreds of these (an exercise's draws, thousands of
+    # constructions). The fields are the dataclass's; the instance is as frozen.
+    def __init__(self, name: str, point: tuple[float, float], direction: tuple[float, float],
+                 role: str = "known direction"):
+        d = self.__dict__
+        d["name"], d["point"], d["direction"], d["role"] = name, point, direction, role
+
 
 @dataclass(frozen=True)
 class Arrow:
@@ -59,6 +67,32 @@ class Arrow:
     vector: tuple[float, float]
     known: bool
     at: tuple[float, float] | None = None
+
+    def __init__(self, name: str, vector: tuple[float, float], known: bool, at: tuple[float, float] | None = None):
+        d = self.__dict__
+        d["name"], d["vector"], d["known"], d["at"] = name, vector, known, at
+
+
+class _Text:
+    """A step's caption, as every reader sees it: a str.
+
+    The builder may hand a step text that is written only when first read (any object whose ``str()`` is the
+    caption, e.g. :class:`graphkin.graphical.captions.Later`): most constructions are made to be checked, not
+    read, and their captions are a good part of their cost. Once read, the text replaces it.
+    """
+
+    def __get__(self, step, owner=None):
+        if step is None:
+            # No class-level default: the dataclass keeps ``caption`` a required field.
+            raise AttributeError("caption")
+        text = step.__dict__["caption"]
+        if type(text) is not str:
+            text = step.__dict__["caption"] = str(text)
+        return text
+
+    def __set__(self, step, text):
+        # A frozen instance refuses every assignment; Step.__init__ writes the instance's dict.
+        raise FrozenInstanceError("cannot assign to field 'caption'")
 
 
 @dataclass(frozen=True)
@@ -95,13 +129,25 @@ class Step:
     """
 
     kind: str
-    caption: str
+    caption: str = _Text()
     link: int | None = None
     lines: tuple[Line, ...] = ()
     points: dict = field(default_factory=dict)
     polygon: tuple[Arrow, ...] = ()
     values: dict = field(default_factory=dict)
     sub: str = ""
+
+    def __init__(self, kind: str, caption: str, link: int | None = None, lines: tuple[Line, ...] = (),
+                 points: dict | None = None, polygon: tuple[Arrow, ...] = (), values: dict | None = None,
+                 sub: str = ""):
+        d = self.__dict__
+        d["kind"], d["caption"], d["link"], d["lines"] = kind, caption, link, lines
+        d["points"] = {} if points is None else points
+        d["polygon"], d["values"], d["sub"] = polygon, {} if values is None else values, sub
+
+    def __getstate__(self):
+        # A caption not yet written is written before the step is copied or pickled.
+        return {**self.__dict__, "caption": self.caption}
 
     def closure(self) -> float:
         """|Σ polygon| / max |arrow|: 0 for a polygon that closes."""

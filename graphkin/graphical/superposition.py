@@ -2,8 +2,8 @@
 
 from __future__ import annotations
 
-from graphkin.graphical.builder import Builder, _Load, xy
-from graphkin.graphical.captions import and_list, mark, number, polar, roman, sense
+from graphkin.graphical.builder import Builder, _Load, _other, xy
+from graphkin.graphical.captions import Later, and_list, mark, number, polar, roman, sense
 from graphkin.graphical.construction import Arrow, SubProblem
 from graphkin.kinematics import DriverGroup, Kinematics
 from graphkin.model import Prismatic
@@ -31,38 +31,25 @@ def superposition(kin: Kinematics, index: int, whole: Builder):
         p.add("note", "Friction: each guide reaction is tilted by atan μ against the sliding, to the side the normal "
               "force pushes. That side is taken from the whole problem (solved first) and kept in every sub-problem, "
               "so the equations stay linear in the loads and the sub-problems add up.", mech.driver.link)
-    why = and_list([f"the {label}" for label in dict.fromkeys(whole.superposed)])
-    p.add("note", f"Superposition: in {why} both links carry loads, so neither is a two-force member. At a fixed "
-          "position the equilibrium equations are linear in the loads, so the problem is solved once per loaded link, "
-          "with every other link unloaded — " + "; ".join(
-              f"sub-problem {x}: only the loads on link {L}" for x, L in zip(labels, loaded))
-          + f" — and the joint forces and {effort}s of the sub-problems are added.")
+    p.add("note", Later(_why, tuple(dict.fromkeys(whole.superposed)), tuple(zip(labels, loaded)), effort))
     subs = []
     fixed = whole.sides
     for x, m, L in zip(labels, marks, loaded):
         b = Builder(kin, index, sub=x, mark=m, scope=f"sub-problem {x}", fixed=fixed, steps=p.steps,
                      warnings=p.warnings, like=whole)
         b.rname = dict(p.rname)
-        others = [n for n in mech.moving if n != L]
-        size = (f"{p.rname[L]} = {number(abs(own[L].F))} N" if own[L].point() is not None
-                else f"a couple of {number(own[L].M0)} N·m")
-        b.add("sub-problem", f"Sub-problem {x}: only the loads on link {L} ({size}); "
-              + (f"link{'s' * (len(others) > 1)} {and_list([str(n) for n in others])} "
-                 f"{'are' if len(others) > 1 else 'is'} unloaded. " if others else "")
-              + f"Its forces are marked {m} ({b.name(*_first_pair(mech))}).", L)
+        others = tuple(n for n in mech.moving if n != L)
+        b.add("sub-problem", Later(_announce, x, L, p.rname[L], own[L].F, own[L].M0, own[L].point() is not None, others,
+                                   m, b.name(*_first_pair(mech))), L)
         b.run(lambda link, L=L: _Load(own[link].F, own[link].M0) if link == L else _Load())
         readings = {}
         for J, on in b.order.values():
-            other = (set(J.links) - {on}).pop()
+            other = _other(J, on)
             readings[b.name(other, on)] = xy(b.on(J, on))
         drive = mech.driver.symbol + m
         readings[drive] = b.effort if crank else b.driver_vector
-        biggest = largest(v for n, v in readings.items() if n != drive)
-        shown = unless_rounding(b.effort, biggest)  # a sub-problem whose loads pass through the pivot: 0
-        effort_text = (f"{number(shown)} N·m{sense(shown)}" if crank else f"{number(shown)} N along the guide")
-        b.add("readings", f"Sub-problem {x} gives " + ", ".join(
-            f"{n} = {polar(complex(*v), biggest)}" for n, v in readings.items() if n != drive)
-            + f"; its {effort} {drive} = {effort_text}.", L, values=readings)
+        b.add("readings", Later(_readings, x, tuple((n, v) for n, v in readings.items() if n != drive), effort, drive,
+                                b.effort, crank), L, values=readings)
         subs.append((x, m, L, b))
     # The sums: every joint force of the groups, then the input link with the summed reactions.
     first = subs[0][3]
@@ -71,7 +58,7 @@ def superposition(kin: Kinematics, index: int, whole: Builder):
     for J, on in first.order.values():
         if J is driver_group.joint:
             continue
-        other = (set(J.links) - {on}).pop()
+        other = _other(J, on)
         n = p.base_name(other, on)
         parts = [(n + m, b.on(J, on)) for _, m, _, b in subs]
         total = sum((F for _, F in parts), 0j)
@@ -80,8 +67,9 @@ def superposition(kin: Kinematics, index: int, whole: Builder):
             zero.append(n)
             continue
         rest = " (it is zero in the other sub-problems)" if len(shown) < len(parts) and len(shown) == 1 else ""
-        p.add("superpose", f"Sum of the sub-problems: {n} = " + " + ".join(name for name, _ in shown)
-              + f" = {polar(total)}{rest}.", on,
+        p.add("superpose", Later(lambda n, shown, total, rest: f"Sum of the sub-problems: {n} = "
+                                 + " + ".join(name for name, _ in shown) + f" = {polar(total)}{rest}.",
+                                 n, tuple(shown), total, rest), on,
               polygon=tuple(Arrow(name, xy(F), True) for name, F in shown) + (Arrow(f"−{n}", xy(-total), False),),
               values={n: xy(total)})
     if zero:
@@ -99,15 +87,49 @@ def superposition(kin: Kinematics, index: int, whole: Builder):
     p.scope = "the whole problem"
     R = p.combine(link, _Load(own[link].F, own[link].M0), [tuple(v) for v in extra.values()])
     drive = mech.driver.symbol
-    total = (f"it is the sum of the sub-problems' {effort}s, {drive} = "
-             + " + ".join(drive + m for _, m, _, _ in subs) + " = "
-             + " + ".join(f"({number(e)})" if e < 0 else f"{number(e)}"
-                          for e in (unless_rounding(b.effort, largest(b.forces.values())) for _, _, _, b in subs))
-             + (" N·m" if crank else " N"))
+    total = Later(_sum_of_efforts, effort, drive, tuple((m, b.effort, tuple(b.forces.values())) for _, m, _, b in subs),
+                  crank)
     p.driver(driver_group, R, total)
     out = tuple(SubProblem(x, L, m, dict(b.forces), dict(b.normal), dict(b.couple), b.effort, b.driver_vector)
                 for x, m, L, b in subs)
     return p.steps, out, p.warnings
+
+
+def _why(dyads, subs, effort) -> str:
+    """Why the steps are a superposition: the ``dyads`` with both links loaded; the sub-problems ``subs`` ((label,
+    link) pairs)."""
+    return (f"Superposition: in {and_list([f'the {label}' for label in dyads])} both links carry loads, so neither is "
+            "a two-force member. At a fixed position the equilibrium equations are linear in the loads, so the problem "
+            "is solved once per loaded link, with every other link unloaded — "
+            + "; ".join(f"sub-problem {x}: only the loads on link {L}" for x, L in subs)
+            + f" — and the joint forces and {effort}s of the sub-problems are added.")
+
+
+def _sum_of_efforts(effort, drive, subs, crank) -> str:
+    """The driver's effort as the sum of the sub-problems' (``subs``: (mark, effort, its joint forces) triples)."""
+    return (f"it is the sum of the sub-problems' {effort}s, {drive} = " + " + ".join(drive + m for m, _, _ in subs)
+            + " = " + " + ".join(f"({number(e)})" if e < 0 else f"{number(e)}"
+                                 for e in (unless_rounding(e, largest(forces)) for _, e, forces in subs))
+            + (" N·m" if crank else " N"))
+
+
+def _announce(x, L, R, F, M0, line, others, m, example) -> str:
+    """Sub-problem x's first words: only the loads on link L (their resultant R = F, or a couple M0 where it has no
+    ``line``), the ``others`` unloaded, and the mark ``m`` of its forces (an ``example`` of a marked name)."""
+    size = f"{R} = {number(abs(F))} N" if line else f"a couple of {number(M0)} N·m"
+    return (f"Sub-problem {x}: only the loads on link {L} ({size}); "
+            + (f"link{'s' * (len(others) > 1)} {and_list([str(n) for n in others])} "
+               f"{'are' if len(others) > 1 else 'is'} unloaded. " if others else "")
+            + f"Its forces are marked {m} ({example}).")
+
+
+def _readings(x, forces, effort, drive, value, crank) -> str:
+    """What sub-problem x found: its joint ``forces`` ((name, (x, y)) pairs [N]) and its ``effort`` ``drive``."""
+    biggest = largest(v for _, v in forces)
+    shown = unless_rounding(value, biggest)  # a sub-problem whose loads pass through the pivot: 0
+    effort_text = f"{number(shown)} N·m{sense(shown)}" if crank else f"{number(shown)} N along the guide"
+    return (f"Sub-problem {x} gives " + ", ".join(f"{n} = {polar(complex(*v), biggest)}" for n, v in forces)
+            + f"; its {effort} {drive} = {effort_text}.")
 
 
 def _first_pair(mech):
