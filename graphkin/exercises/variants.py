@@ -318,11 +318,10 @@ def _speed_ratio(problem, span: float, kinematics) -> float:
         unit = replace(problem, q_dot=np.ones_like(problem.q_dot), q_ddot=np.zeros_like(problem.q_ddot))
         kin, rate = unit.kinematics(), 1.0
     mech = problem.mechanism
-    fastest = 0.0
+    # The fastest named point is the kinematics' speed scale (found once: friction asks for it too).
+    fastest = float(np.max(kin.speed_scale / rate))
     for link in mech.moving:
         fastest = max(fastest, float(np.max(np.abs(kin.omega[link]) / rate)) * span)
-        for point in mech.link(link).points:
-            fastest = max(fastest, float(np.max(np.abs(kin.z_velocity(link, point)) / rate)))
     reference = span if mech.driver.crank else 1.0
     return fastest / reference
 
