@@ -138,6 +138,33 @@ class PanelAxes(Axes):
         self.spines.right.register_axis(self.yaxis)
 
 
+class BareAxes(PanelAxes):
+    """Panel axes that never show an axis (a drawing printed at a scale): no spines, and a tick formatter that is
+    never asked to print.
+
+    Making a panel's spines (four patches) and its tick formatters (matplotlib's checks whether the font has a
+    minus sign for each, a font lookup) was a third of making the axes, and a handout's figure has up to nine.
+    Turned on, the axis shows no frame, and its offset text would be set in mathtext.
+    """
+
+    def _gen_axes_spines(self, locations=None, offset=0.0, units="inches"):
+        return {}
+
+    def _init_axis(self):
+        self.xaxis = _XAxis(self, clear=False)
+        self.yaxis = _YAxis(self, clear=False)
+
+    def clear(self):
+        # With mathtext asked for, the ScalarFormatter made for each axis skips its font check (its output is never
+        # drawn here). Swapped by hand, as PanelAxes swaps the title's position.
+        mathtext = rcParams["axes.formatter.use_mathtext"]
+        rcParams["axes.formatter.use_mathtext"] = True
+        try:
+            super().clear()
+        finally:
+            rcParams["axes.formatter.use_mathtext"] = mathtext
+
+
 def new_axes(ax=None, figsize=(6.0, 4.5), s=None):
     """``ax``, or a fresh axes on a new headless Figure."""
     if ax is not None:
