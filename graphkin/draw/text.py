@@ -16,6 +16,7 @@ from matplotlib.backends.backend_agg import RendererAgg
 from matplotlib.font_manager import findfont
 from matplotlib.mathtext import MathTextParser
 from matplotlib.path import Path
+from matplotlib.text import Text
 from matplotlib.textpath import TextToPath
 from matplotlib.transforms import Affine2D
 
@@ -320,6 +321,42 @@ class _RendererSVG(backend_svg.RendererSVG):
                             style=backend_svg._generate_css(style))
 
 
+_LAYOUTS: OrderedDict = OrderedDict()
+_LAYOUTS_SIZE = 4096
+
+
+def _layout_once(plain_layout):
+    """``Text._get_layout`` that, for an SVG file's renderer (:class:`_RendererSVG`), lays each text out once per
+    process.
+
+    A text's layout (its lines' sizes and offsets from its anchor, its box around the anchor) depends on its
+    string, font, alignment, angle, line spacing and the resolution, never on where it stands: the same names
+    and titles come back on every figure, and were laid out again for each file. A wrapped text, one turned
+    with its transform or set in TeX, and any other renderer get matplotlib's own layout.
+    """
+
+    def _get_layout(self, renderer):
+        # savefig hands the SVG renderer over inside a MixedModeRenderer (which draws rasterised artists with Agg).
+        if (type(getattr(renderer, "_renderer", renderer)) is not _RendererSVG or self.get_wrap()
+                or self.get_transform_rotates_text() or self.get_usetex()):
+            return plain_layout(self, renderer)
+        # A copy of the font: FontProperties can be changed in place, and hashes by its state.
+        key = (self.get_text(), self.get_fontproperties().copy(), self.get_rotation(), self.get_rotation_mode(),
+               self.get_ha(), self.get_va(), self._get_multialignment(), self.get_linespacing(),
+               self.get_parse_math(), self.get_figure(root=True).dpi, getattr(renderer, "dpi", None))
+        known = _LAYOUTS.get(key)
+        if known is None:
+            if len(_LAYOUTS) >= _LAYOUTS_SIZE:
+                _LAYOUTS.popitem(last=False)
+            bbox, info, descent = plain_layout(self, renderer)
+            known = _LAYOUTS[key] = (bbox.frozen(), tuple(info), descent)
+        bbox, info, descent = known
+        # Copies out: a caller may change the box it is given.
+        return bbox.frozen(), list(info), descent
+
+    return _get_layout
+
+
 _SWAP = threading.RLock()
 
 
@@ -328,14 +365,17 @@ def svg_text_laid_out_once():
     """While in the block, SVG files that matplotlib writes lay each text out once per process.
 
     ``savefig(format="svg")`` makes its renderer by the name ``RendererSVG`` in matplotlib's SVG backend and
-    offers no way to pass one; the name points at :class:`_RendererSVG` for the block. The drawing is the same
+    offers no way to pass one; the name points at :class:`_RendererSVG` for the block, and a text's layout for it is
+    kept (:func:`_layout_once`). The drawing is the same
     (``tests/draw/test_svg_text.py`` rasterises both); the file differs only in writing each haloed text's
     outline once (see :class:`_RendererSVG`), and the same figure always gives the same bytes.
     """
     with _SWAP:  # two threads saving at once must not put each other's name back
-        plain = backend_svg.RendererSVG
+        plain, layout = backend_svg.RendererSVG, Text._get_layout
         backend_svg.RendererSVG = _RendererSVG
+        Text._get_layout = _layout_once(layout)
         try:
             yield
         finally:
             backend_svg.RendererSVG = plain
+            Text._get_layout = layout

@@ -153,3 +153,32 @@ def test_the_measuring_renderer_gives_the_sizes_the_svg_prints(text):
     got = measuring_agg(100).get_text_width_height_descent(text, prop, ismath)
     assert got == pytest.approx((w * 100 / 72, h * 100 / 72, d * 100 / 72), rel=1e-12)
     assert min(got[:2]) > 0
+
+
+def test_a_text_laid_out_once_is_laid_out_again_when_it_changes():
+    """Within :func:`svg_text_laid_out_once` each text's layout is kept; a text whose font, alignment, angle or
+    string changes between two files is laid out anew: the second file is what a fresh figure with the changed
+    text writes."""
+    from matplotlib import rc_context
+
+    from graphkin.draw import text as T
+
+    def saved(fig) -> str:
+        out = io.BytesIO()
+        with rc_context({"svg.hashsalt": "test"}), svg_text_laid_out_once():
+            fig.savefig(out, format="svg", metadata={"Date": None})
+        return out.getvalue().decode("utf-8")
+
+    for change in ({"fontsize": 15}, {"ha": "right"}, {"va": "top"}, {"rotation": 45}, {"text": "F₂₃ = 99 N"},
+                   {"linespacing": 2.0, "text": "two\nlines"}):
+        fig = _figure()
+        saved(fig)
+        assert T._LAYOUTS
+        for t in fig.axes[0].texts:
+            t.set(**change)
+        got = saved(fig)  # with the layouts of the texts before the change kept
+        T._LAYOUTS.clear()
+        fresh = _figure()
+        for t in fresh.axes[0].texts:
+            t.set(**change)
+        assert got == saved(fresh), change
