@@ -125,7 +125,9 @@ def test_a_formula_parsed_once_lays_labels_out_as_matplotlib_does(math_font):
     for _ in range(2):  # new formulas, then the same formulas in their memo (the first formula of each twice)
         for s in FORMULAS:
             for dpi in (72, 100):
-                MathTextParser._parse_cached.cache_clear()  # matplotlib's cache of whole labels: parse each afresh
+                # The caches of whole labels (matplotlib's, ours): parse each afresh.
+                MathTextParser._parse_cached.cache_clear()
+                _MathTextOnce._parse_cached.cache_clear()
                 want, got = theirs.parse(s, dpi, prop), ours.parse(s, dpi, prop)
                 assert (got.width, got.height, got.depth) == (want.width, want.height, want.depth)
                 assert [g[1:] for g in got.glyphs] == [g[1:] for g in want.glyphs]
@@ -135,6 +137,8 @@ def test_a_formula_parsed_once_lays_labels_out_as_matplotlib_does(math_font):
     memo = [k for k in _MathTextOnce._parser._memo
             if k[0] == r"$\mathregular{a^{t}_{BA}}$" and k[2].get_math_fontfamily() == math_font]
     assert sorted(k[7] for k in memo) == [72, 100]
+    # And every label in this font was parsed with the one fontset made for it.
+    assert len([k for k in _MathTextOnce._fontsets if k[1] == prop]) == 1
 
 
 @pytest.mark.parametrize("text", ["F₂₃ = 1234.5 N", r"$\mathregular{v_{A}}$ = 5.341 m/s", "A"])
