@@ -145,6 +145,10 @@ class BareAxes(PanelAxes):
     Making a panel's spines (four patches) and its tick formatters (matplotlib's checks whether the font has a
     minus sign for each, a font lookup) was a third of making the axes, and a handout's figure has up to nine.
     Turned on, the axis shows no frame, and its offset text would be set in mathtext.
+
+    Its view is never fitted to the data (autoscaling is off from the start): every drawing on such a panel sets
+    its limits from what it drew (:func:`set_limits`), so the lines and patches it adds need not be merged into
+    data limits on the way (:func:`follows_data`).
     """
 
     def _gen_axes_spines(self, locations=None, offset=0.0, units="inches"):
@@ -163,6 +167,7 @@ class BareAxes(PanelAxes):
             super().clear()
         finally:
             rcParams["axes.formatter.use_mathtext"] = mathtext
+        self.set_autoscale_on(False)
 
 
 def new_axes(ax=None, figsize=(6.0, 4.5), s=None):
