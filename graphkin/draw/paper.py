@@ -24,7 +24,7 @@ from graphkin.draw.motion import draw_motion_polygon
 from graphkin.draw.polygon import draw_force_polygon, step_title
 from graphkin.draw.scales import nice_round, scale_bar
 from graphkin.draw.steps import draw_step_geometry
-from graphkin.draw.text import sub
+from graphkin.draw.text import sub, text_extent
 from graphkin.graphical.paper import FIGURE_WIDTH, force_text, length_text
 from graphkin.notation import num
 
@@ -50,7 +50,7 @@ def _title_size(ax) -> tuple[float, float]:
     t = ax.title
     if not t.get_text().strip():
         return 0.0, 0.0
-    bb = t.get_window_extent(measuring_renderer(ax.figure))
+    bb = text_extent(t, measuring_renderer(ax.figure))
     return bb.width / ax.figure.dpi * 25.4, bb.height / ax.figure.dpi * 25.4 + 1.5
 
 
@@ -153,7 +153,7 @@ def scale_strip(fig, height: float, *, length_scale=None, force_scale=None, widt
 def _right(text) -> float:
     """Where a text of a figure ends [mm from the figure's left edge]."""
     fig = text.get_figure(root=True)
-    return text.get_window_extent(measuring_renderer(fig)).x1 / fig.dpi * 25.4
+    return text_extent(text, measuring_renderer(fig)).x1 / fig.dpi * 25.4
 
 
 def _names(text: str) -> str:

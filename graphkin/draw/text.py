@@ -354,6 +354,51 @@ class _RendererSVG(backend_svg.RendererSVG):
                             style=backend_svg._generate_css(style))
 
 
+_BOXES: dict = {}
+_BOXES_SIZE = 8192
+
+
+def box_kept(t) -> bool:
+    """Whether a text's box can be kept (:func:`text_extent`): a Text (not an annotation, which moves as it is
+    measured), not wrapped, not turned with its transform, not in TeX."""
+    return type(t) is Text and not (t.get_wrap() or t.get_transform_rotates_text() or t.get_usetex())
+
+
+def text_extent(t, renderer):
+    """``t.get_window_extent(renderer)``, with the text's box around its anchor laid out once per process.
+
+    A text's box depends on its string, font, alignment, angle, line spacing and the resolution, never on where
+    it stands: the box is kept under those and moved to the text's anchor, the same numbers added in the same
+    order as matplotlib adds them (the same box to the last bit). Labels are measured to place them and again to
+    find the figure's extent, and names and titles come back on every figure.
+
+    Parameters
+    ----------
+    t : matplotlib.text.Text
+    renderer : RendererBase
+
+    Returns
+    -------
+    matplotlib.transforms.Bbox
+        In display units.
+    """
+    if not (box_kept(t) and t.get_visible() and t.get_text() != ""):
+        return t.get_window_extent(renderer)
+    dpi = t.get_figure(root=True).dpi
+    t._renderer = renderer
+    # A copy of the font: FontProperties can be changed in place, and hashes by its state.
+    key = (t.get_text(), t.get_fontproperties().copy(), t.get_rotation(), t.get_rotation_mode(), t.get_ha(),
+           t.get_va(), t._get_multialignment(), t.get_linespacing(), t.get_parse_math(), type(renderer), dpi)
+    box = _BOXES.get(key)
+    if box is None:
+        if len(_BOXES) >= _BOXES_SIZE:
+            _BOXES.clear()
+        box = _BOXES[key] = t._get_layout(renderer)[0].frozen()
+    x, y = t.get_unitless_position()
+    x, y = t.get_transform().transform((x, y))
+    return box.translated(x, y)
+
+
 _LAYOUTS: OrderedDict = OrderedDict()
 _LAYOUTS_SIZE = 4096
 
