@@ -318,8 +318,8 @@ def width_bound(node) -> float:
     if kind in ("i", "n", "t"):
         return _chars(node[1]) + (_GLYPH + 1.0 if kind == "n" and _POWER.fullmatch(node[1]) else 0.0)
     if kind == "o":
-        # A sign's glyph, a relation's spaces either side (5/18 em each), and ∠'s own thin spaces (1/6 em each).
-        return _chars(node[1]) + 1.0
+        # A sign's glyph and a relation's spaces either side (5/18 em each); ∠ has thin spaces (1/6 em each) too.
+        return _chars(node[1]) + (1.0 if "∠" in node[1] else 0.6)
     if kind in ("sub", "sup"):
         # A script is set at 70 %.
         return width_bound(node[1]) + _SCRIPT * width_bound(node[2]) + 0.3
