@@ -154,6 +154,14 @@ class BareAxes(PanelAxes):
     def _gen_axes_spines(self, locations=None, offset=0.0, units="inches"):
         return {}
 
+    # A tick (made only when asked for: a walk over the artists, ``findobj``) sits where a spine at its default
+    # place would put it, which is the axis's own transform.
+    def get_xaxis_transform(self, which="grid"):
+        return self._xaxis_transform
+
+    def get_yaxis_transform(self, which="grid"):
+        return self._yaxis_transform
+
     def _init_axis(self):
         self.xaxis = _XAxis(self, clear=False)
         self.yaxis = _YAxis(self, clear=False)
