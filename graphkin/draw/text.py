@@ -388,7 +388,8 @@ def text_extent(t, renderer):
     t._renderer = renderer
     # A copy of the font: FontProperties can be changed in place, and hashes by its state.
     key = (t.get_text(), t.get_fontproperties().copy(), t.get_rotation(), t.get_rotation_mode(), t.get_ha(),
-           t.get_va(), t._get_multialignment(), t.get_linespacing(), t.get_parse_math(), type(renderer), dpi)
+           t.get_va(), t._get_multialignment(), t.get_linespacing(), t.get_parse_math(), type(renderer), dpi,
+           getattr(renderer, "dpi", None))
     box = _BOXES.get(key)
     if box is None:
         if len(_BOXES) >= _BOXES_SIZE:
