@@ -138,6 +138,46 @@ class PanelAxes(Axes):
         self.spines.right.register_axis(self.yaxis)
 
 
+class BareAxes(PanelAxes):
+    """Panel axes that never show an axis (a drawing printed at a scale): no spines, and a tick formatter that is
+    never asked to print.
+
+    Making a panel's spines (four patches) and its tick formatters (matplotlib's checks whether the font has a
+    minus sign for each, a font lookup) was a third of making the axes, and a handout's figure has up to nine.
+    Turned on, the axis shows no frame, and its offset text would be set in mathtext.
+
+    Its view is never fitted to the data (autoscaling is off from the start): every drawing on such a panel sets
+    its limits from what it drew (:func:`set_limits`), so the lines and patches it adds need not be merged into
+    data limits on the way (:func:`follows_data`).
+    """
+
+    def _gen_axes_spines(self, locations=None, offset=0.0, units="inches"):
+        return {}
+
+    # A tick (made only when asked for: a walk over the artists, ``findobj``) sits where a spine at its default
+    # place would put it, which is the axis's own transform.
+    def get_xaxis_transform(self, which="grid"):
+        return self._xaxis_transform
+
+    def get_yaxis_transform(self, which="grid"):
+        return self._yaxis_transform
+
+    def _init_axis(self):
+        self.xaxis = _XAxis(self, clear=False)
+        self.yaxis = _YAxis(self, clear=False)
+
+    def clear(self):
+        # With mathtext asked for, the ScalarFormatter made for each axis skips its font check (its output is never
+        # drawn here). Swapped by hand, as PanelAxes swaps the title's position.
+        mathtext = rcParams["axes.formatter.use_mathtext"]
+        rcParams["axes.formatter.use_mathtext"] = True
+        try:
+            super().clear()
+        finally:
+            rcParams["axes.formatter.use_mathtext"] = mathtext
+        self.set_autoscale_on(False)
+
+
 def new_axes(ax=None, figsize=(6.0, 4.5), s=None):
     """``ax``, or a fresh axes on a new headless Figure."""
     if ax is not None:

@@ -16,7 +16,7 @@ from matplotlib.transforms import ScaledTranslation, TransformedBbox
 
 from graphkin.draw.arrows import perp, unit
 from graphkin.draw.axes import clip_path, line
-from graphkin.draw.text import halo, measuring_agg
+from graphkin.draw.text import halo, measuring_agg, text_extent
 
 TEXT_COST = 400.0
 """Price of a label's box on another text's box: never, unless every spot does."""
@@ -115,7 +115,7 @@ def text_size(t, renderer) -> tuple[float, float]:
     if size is None:
         if len(_SIZES) > 8192:
             _SIZES.clear()
-        bb = t.get_window_extent(renderer)
+        bb = text_extent(t, renderer)
         size = _SIZES[key] = (bb.width, bb.height)
     return size
 
@@ -319,7 +319,7 @@ class Labeler:
         placed = []
         title = [t for t in (ax.title, ax._left_title, ax._right_title) if t.get_text().strip()]
         for t in self.texts + title:
-            bb = t.get_window_extent(renderer)
+            bb = text_extent(t, renderer)
             placed.append((bb.x0, bb.y0, bb.x1, bb.y1))
         placed += [text_box(t, renderer) for t in self.fixed]
 

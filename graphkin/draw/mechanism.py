@@ -99,16 +99,23 @@ def draw_link_body(ax, geom: Geometry, n: int, s, labeler: Labeler | None = None
         out.append(dot)
     # Pins and points of this link.
     joint_points = {j.point for j in geom.mech.joints_of(n) if isinstance(j, Revolute)}
+    # A run of pins (or of dots) one after the other is one line of markers: drawn in the same order, a line
+    # less to make and draw for each.
+    runs: list = []
     for name, X in pts.items():
-        if name in joint_points:
-            pin = markers(ax, *X, ms=s.pin_size, mfc="white", mec=s.ink, mew=s.outline_lw * 1.2, zorder=5)
-            size = s.pin_size + s.outline_lw * 1.2
+        joint = name in joint_points
+        if runs and runs[-1][0] == joint:
+            runs[-1][1].append(X)
         else:
-            pin = markers(ax, *X, ms=3.6, color=s.ink, zorder=5)
-            size = 3.6
-        out.append(pin)
+            runs.append((joint, [X]))
         if labeler:
-            labeler.dot(X, size)
+            labeler.dot(X, s.pin_size + s.outline_lw * 1.2 if joint else 3.6)
+    for joint, points in runs:
+        x, y = np.asarray(points, float).T
+        if joint:
+            out.append(markers(ax, x, y, ms=s.pin_size, mfc="white", mec=s.ink, mew=s.outline_lw * 1.2, zorder=5))
+        else:
+            out.append(markers(ax, x, y, ms=3.6, color=s.ink, zorder=5))
     return out
 
 

@@ -143,8 +143,10 @@ def draw_motion_polygon(construction, polygon: str = "velocity", *, scale: float
     drawn += [markers(ax, *pole, ms=8, mfc="none", mec=s.ink, mew=1.0, zorder=5)]
     lab.dot(pole, 9.0)
     centre = np.mean(np.asarray(pts), axis=0)
-    for name, p in images.items():
-        drawn.add(markers(ax, *p, ms=3, color=s.ink, zorder=5))
+    # Every image point in one line of markers (the same dots, in the same order, as one line each).
+    dots = np.asarray(list(images.values()), float).reshape(-1, 2)
+    drawn.add(markers(ax, dots[:, 0], dots[:, 1], ms=3, color=s.ink, zorder=5))
+    for p in images.values():
         lab.dot(p, 3.0)
     for name, p in images.items():
         away = p - centre if np.hypot(*(p - centre)) > floor else np.array([-1.0, 1.0])

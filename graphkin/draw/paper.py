@@ -16,7 +16,7 @@ from __future__ import annotations
 from matplotlib.figure import Figure
 
 from graphkin.draw import style as _style
-from graphkin.draw.axes import PanelAxes, setup_axes
+from graphkin.draw.axes import BareAxes, setup_axes
 from graphkin.draw.fbd import draw_free_body
 from graphkin.draw.labels import measuring_renderer
 from graphkin.draw.mechanism import draw_mechanism
@@ -24,7 +24,7 @@ from graphkin.draw.motion import draw_motion_polygon
 from graphkin.draw.polygon import draw_force_polygon, step_title
 from graphkin.draw.scales import nice_round, scale_bar
 from graphkin.draw.steps import draw_step_geometry
-from graphkin.draw.text import sub
+from graphkin.draw.text import sub, text_extent
 from graphkin.graphical.paper import FIGURE_WIDTH, force_text, length_text
 from graphkin.notation import num
 
@@ -50,7 +50,7 @@ def _title_size(ax) -> tuple[float, float]:
     t = ax.title
     if not t.get_text().strip():
         return 0.0, 0.0
-    bb = t.get_window_extent(measuring_renderer(ax.figure))
+    bb = text_extent(t, measuring_renderer(ax.figure))
     return bb.width / ax.figure.dpi * 25.4, bb.height / ax.figure.dpi * 25.4 + 1.5
 
 
@@ -120,7 +120,7 @@ def scale_strip(fig, height: float, *, length_scale=None, force_scale=None, widt
     likewise); each is as long on paper as what it reads at its scale. Returns the artists.
     """
     s = _style.resolve(**style)
-    ax = fig.add_axes([0, 0.5 / height, 1, (STRIP - 1.0) / height], axes_class=PanelAxes)
+    ax = fig.add_axes([0, 0.5 / height, 1, (STRIP - 1.0) / height], axes_class=BareAxes)
     setup_axes(ax)
     # One data unit is one millimetre of paper here.
     ax.set_xlim(0, width)
@@ -153,7 +153,7 @@ def scale_strip(fig, height: float, *, length_scale=None, force_scale=None, widt
 def _right(text) -> float:
     """Where a text of a figure ends [mm from the figure's left edge]."""
     fig = text.get_figure(root=True)
-    return text.get_window_extent(measuring_renderer(fig)).x1 / fig.dpi * 25.4
+    return text_extent(text, measuring_renderer(fig)).x1 / fig.dpi * 25.4
 
 
 def _names(text: str) -> str:
@@ -190,7 +190,7 @@ def draw_free_bodies(construction, links=None, *, length_scale: float, force_sca
     paper = 1.0 / length_scale
     panels = []
     for link in links:
-        ax = fig.add_axes([0, 0, 0.2, 0.2], axes_class=PanelAxes)
+        ax = fig.add_axes([0, 0, 0.2, 0.2], axes_class=BareAxes)
         # In the drawing's units (mm of the mechanism), X N per printed mm is X / k N per mm drawn.
         draw_free_body(c, link, ax=ax, force_scale=force_scale / length_scale, title=c.mechanism.link(link).label,
                        unknowns=unknowns, paper=paper, bar=False, place=False, **style)
@@ -224,7 +224,7 @@ def draw_polygons(steps, *, force_scale: float, titles=None, driver_name=None, w
     fig = _new_figure(width)
     panels = []
     for k, step in enumerate(steps):
-        ax = fig.add_axes([0, 0, 0.2, 0.2], axes_class=PanelAxes)
+        ax = fig.add_axes([0, 0, 0.2, 0.2], axes_class=BareAxes)
         title = _names(titles[k]) if titles is not None else step_title(step)
         draw_force_polygon(step, scale=force_scale, ax=ax, title=title, driver_name=driver_name, paper=1.0, bar=False,
                            place=False, **style)
@@ -242,14 +242,14 @@ def draw_step(construction, step, *, length_scale: float, force_scale: float, po
     c = construction
     fig = _new_figure(width)
     paper = 1.0 / length_scale
-    ax = fig.add_axes([0, 0, 0.2, 0.2], axes_class=PanelAxes)
+    ax = fig.add_axes([0, 0, 0.2, 0.2], axes_class=BareAxes)
     draw_mechanism(c, ax=ax, faint=True, emphasis=step.link, place=False, length_scale=length_scale, **style)
     # Its loads to the force scale the figure states (X N per printed mm is X / k per mm drawn).
     draw_step_geometry(c, step, ax=ax, place=False, force_scale=force_scale / length_scale, **style)
     panels = [(ax, paper)]
     shown = polygon if polygon is not None else step if step.polygon else None
     if shown is not None:
-        ax2 = fig.add_axes([0, 0, 0.2, 0.2], axes_class=PanelAxes)
+        ax2 = fig.add_axes([0, 0, 0.2, 0.2], axes_class=BareAxes)
         draw_force_polygon(shown, scale=force_scale, ax=ax2, title=False, driver_name=c.driver_name, paper=1.0,
                            bar=False, place=False, **style)
         panels.append((ax2, 1.0))
@@ -285,7 +285,7 @@ def draw_constructions(construction, steps, *, length_scale: float, titles=None,
     s = _style.resolve(**style)
     panels = []
     for k, step in enumerate(steps):
-        ax = fig.add_axes([0, 0, 0.2, 0.2], axes_class=PanelAxes)
+        ax = fig.add_axes([0, 0, 0.2, 0.2], axes_class=BareAxes)
         draw_mechanism(c, ax=ax, faint=True, emphasis=step.link, place=False, length_scale=length_scale, bar=False,
                        **style)
         if titles is not None:
@@ -353,7 +353,7 @@ def draw_motion_paper(construction, *, velocity_scale: float, acceleration_scale
     if upto is not None and construction.steps[upto].polygon == "velocity":
         shown = ["velocity"]
     for n, polygon in enumerate(shown):
-        ax = fig.add_axes([0, 0, 0.2, 0.2], axes_class=PanelAxes)
+        ax = fig.add_axes([0, 0, 0.2, 0.2], axes_class=BareAxes)
         title = titles[n] if titles is not None else f"{polygon.capitalize()} polygon"
         draw_motion_polygon(construction, polygon, scale=velocity_scale if polygon == "velocity" else
                             acceleration_scale, ax=ax, values=values, title=title, upto=upto, paper=1.0, bar=False,

@@ -10,12 +10,13 @@ from collections import OrderedDict
 from contextlib import contextmanager
 
 import numpy as np
-from matplotlib import _mathtext, rcParams
+from matplotlib import _api, _mathtext, rcParams
 from matplotlib.backends import backend_svg
 from matplotlib.backends.backend_agg import RendererAgg
-from matplotlib.font_manager import findfont
+from matplotlib.font_manager import FontProperties, findfont
 from matplotlib.mathtext import MathTextParser
 from matplotlib.path import Path
+from matplotlib.text import Text
 from matplotlib.textpath import TextToPath
 from matplotlib.transforms import Affine2D
 
@@ -228,15 +229,48 @@ class _MathOnceParser(_mathtext.Parser):
 _MATHTEXT_RC = tuple(sorted(k for k in rcParams if k.startswith("mathtext.")))
 
 
+_FONT_RC = tuple(sorted(k for k in rcParams if k.startswith(("font.", "mathtext."))))
+
+
+def _font_settings() -> tuple:
+    """The ``font.*`` and ``mathtext.*`` settings, as a key (a list of families as a tuple)."""
+    return tuple(tuple(v) if isinstance(v, list) else v for v in (rcParams[k] for k in _FONT_RC))
+
+
 class _MathTextOnce(MathTextParser):
-    """A ``MathTextParser`` whose parser is :class:`_MathOnceParser` (made on first use: it takes ~0.1 s)."""
+    r"""A ``MathTextParser`` whose parser is :class:`_MathOnceParser` (made on first use: it takes ~0.1 s), and whose
+    fonts for a font and the font settings are made once.
+
+    matplotlib makes the fontset (each face a formula may use, found by name: some fifty font lookups) anew for
+    every string it parses, half the time of a label such as ``$\mathregular{v_{B}}$ = 5.341 m/s``. A fontset
+    only finds things (faces, glyph metrics) and keeps what it found; what a parse builds goes into the parse's
+    own output, so one fontset serves every parse with the same font, flags and ``font.*``/``mathtext.*``
+    settings (in the key).
+    """
 
     _parser = None
+    _fontsets: dict = {}
 
-    def _parse_cached(self, *args):
+    @functools.lru_cache(50)
+    def _parse_cached(self, s, dpi, prop, antialiased, load_glyph_flags):
+        # MathTextParser._parse_cached (matplotlib 3.11), with the parser and the fontset kept.
         if _MathTextOnce._parser is None:
             _MathTextOnce._parser = _MathOnceParser()
-        return super()._parse_cached(*args)
+        if prop is None:
+            prop = FontProperties()
+        fontset_class = _api.getitem_checked(self._font_type_mapping, fontset=prop.get_math_fontfamily())
+        # A copy of the font: FontProperties can be changed in place, and hashes by its state.
+        key = (fontset_class, prop.copy(), load_glyph_flags, _font_settings())
+        fontset = self._fontsets.get(key)
+        if fontset is None:
+            if len(self._fontsets) >= 64:
+                self._fontsets.clear()
+            fontset = self._fontsets[key] = fontset_class(key[1], load_glyph_flags)
+        box = self._parser.parse(s, fontset, prop.get_size_in_points(), dpi)
+        output = _mathtext.ship(box)
+        if self._output_type == "vector":
+            return output.to_vector()
+        return output.to_raster(antialiased=antialiased)
 
 
 _TEXT_TO_PATH = _TextToPathOnce()
@@ -320,6 +354,88 @@ class _RendererSVG(backend_svg.RendererSVG):
                             style=backend_svg._generate_css(style))
 
 
+_BOXES: dict = {}
+_BOXES_SIZE = 8192
+
+
+def box_kept(t) -> bool:
+    """Whether a text's box can be kept (:func:`text_extent`): a Text (not an annotation, which moves as it is
+    measured), not wrapped, not turned with its transform, not in TeX."""
+    return type(t) is Text and not (t.get_wrap() or t.get_transform_rotates_text() or t.get_usetex())
+
+
+def text_extent(t, renderer):
+    """``t.get_window_extent(renderer)``, with the text's box around its anchor laid out once per process.
+
+    A text's box depends on its string, font, alignment, angle, line spacing and the resolution, never on where
+    it stands: the box is kept under those and moved to the text's anchor, the same numbers added in the same
+    order as matplotlib adds them (the same box to the last bit). Labels are measured to place them and again to
+    find the figure's extent, and names and titles come back on every figure.
+
+    Parameters
+    ----------
+    t : matplotlib.text.Text
+    renderer : RendererBase
+
+    Returns
+    -------
+    matplotlib.transforms.Bbox
+        In display units.
+    """
+    if not (box_kept(t) and t.get_visible() and t.get_text() != ""):
+        return t.get_window_extent(renderer)
+    dpi = t.get_figure(root=True).dpi
+    t._renderer = renderer
+    # A copy of the font: FontProperties can be changed in place, and hashes by its state.
+    key = (t.get_text(), t.get_fontproperties().copy(), t.get_rotation(), t.get_rotation_mode(), t.get_ha(),
+           t.get_va(), t._get_multialignment(), t.get_linespacing(), t.get_parse_math(), type(renderer), dpi,
+           getattr(renderer, "dpi", None))
+    box = _BOXES.get(key)
+    if box is None:
+        if len(_BOXES) >= _BOXES_SIZE:
+            _BOXES.clear()
+        box = _BOXES[key] = t._get_layout(renderer)[0].frozen()
+    x, y = t.get_unitless_position()
+    x, y = t.get_transform().transform((x, y))
+    return box.translated(x, y)
+
+
+_LAYOUTS: OrderedDict = OrderedDict()
+_LAYOUTS_SIZE = 4096
+
+
+def _layout_once(plain_layout):
+    """``Text._get_layout`` that, for an SVG file's renderer (:class:`_RendererSVG`), lays each text out once per
+    process.
+
+    A text's layout (its lines' sizes and offsets from its anchor, its box around the anchor) depends on its
+    string, font, alignment, angle, line spacing and the resolution, never on where it stands: the same names
+    and titles come back on every figure, and were laid out again for each file. A wrapped text, one turned
+    with its transform or set in TeX, and any other renderer get matplotlib's own layout.
+    """
+
+    def _get_layout(self, renderer):
+        # savefig hands the SVG renderer over inside a MixedModeRenderer (which draws rasterised artists with Agg).
+        if (type(getattr(renderer, "_renderer", renderer)) is not _RendererSVG or self.get_wrap()
+                or self.get_transform_rotates_text() or self.get_usetex()):
+            return plain_layout(self, renderer)
+        # A copy of the font: FontProperties can be changed in place, and hashes by its state.
+        key = (self.get_text(), self.get_fontproperties().copy(), self.get_rotation(), self.get_rotation_mode(),
+               self.get_ha(), self.get_va(), self._get_multialignment(), self.get_linespacing(),
+               self.get_parse_math(), self.get_figure(root=True).dpi, getattr(renderer, "dpi", None))
+        known = _LAYOUTS.get(key)
+        if known is None:
+            if len(_LAYOUTS) >= _LAYOUTS_SIZE:
+                _LAYOUTS.popitem(last=False)
+            bbox, info, descent = plain_layout(self, renderer)
+            known = _LAYOUTS[key] = (bbox.frozen(), tuple(info), descent)
+        bbox, info, descent = known
+        # Copies out: a caller may change the box it is given.
+        return bbox.frozen(), list(info), descent
+
+    return _get_layout
+
+
 _SWAP = threading.RLock()
 
 
@@ -328,14 +444,17 @@ def svg_text_laid_out_once():
     """While in the block, SVG files that matplotlib writes lay each text out once per process.
 
     ``savefig(format="svg")`` makes its renderer by the name ``RendererSVG`` in matplotlib's SVG backend and
-    offers no way to pass one; the name points at :class:`_RendererSVG` for the block. The drawing is the same
+    offers no way to pass one; the name points at :class:`_RendererSVG` for the block, and a text's layout for it is
+    kept (:func:`_layout_once`). The drawing is the same
     (``tests/draw/test_svg_text.py`` rasterises both); the file differs only in writing each haloed text's
     outline once (see :class:`_RendererSVG`), and the same figure always gives the same bytes.
     """
     with _SWAP:  # two threads saving at once must not put each other's name back
-        plain = backend_svg.RendererSVG
+        plain, layout = backend_svg.RendererSVG, Text._get_layout
         backend_svg.RendererSVG = _RendererSVG
+        Text._get_layout = _layout_once(layout)
         try:
             yield
         finally:
             backend_svg.RendererSVG = plain
+            Text._get_layout = layout

@@ -67,11 +67,12 @@ class Picture:
         """The figure as a standalone SVG document (text drawn as paths: no font needed to show it)."""
         if self._svg is None:
             fig = self.figure()
-            from graphkin.draw import measuring_renderer as renderer_of
+            from graphkin.draw.extent import drawn_extent
 
-            # The drawing's own extent, measured with the drawing layer's shared renderer: bbox_inches="tight"
-            # would find the same box by drawing the whole figure once more, a third of the cost of a figure.
-            box = fig.get_tightbbox(renderer_of(fig)).padded(0.04)
+            # The drawing's own extent, measured with the drawing layer's shared renderer and each text's box
+            # kept once laid out: bbox_inches="tight" would find the same box by drawing the whole figure once
+            # more, a third of the cost of a figure.
+            box = drawn_extent(fig).padded(0.04)
             out = io.BytesIO()
             # No date in the file and ids from a fixed salt (matplotlib draws them at random otherwise): the same
             # handout gives the same bytes, so a teacher can diff this year's HTML against last year's.

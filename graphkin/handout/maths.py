@@ -281,6 +281,70 @@ def to_typst(node) -> str:
     raise ValueError(f"unknown math node {kind!r}")
 
 
+_ADVANCES = {
+    0.2: "⁽⁾", 0.3: "l.,:;!|'[]·", 0.35: "i ′⁰⁴⁵⁶⁷⁸⁹₀₁₂₃₄₅₆₇₈₉-_", 0.4: 't()²³°¹"ι', 0.45: "cjI",
+    0.5: "012345689efgorsz{}/–*\\?δθο", 0.55: "7akqvy″εζηνξρτυ", 0.6: "bdhnpuxJ~^βγκλπσ", 0.65: "SαμχωΓ",
+    0.7: "FLPZφψΛ", 0.75: "wACETUVY‴ΞΦ", 0.8: "BGOQR−+=<>≈±∠×&@ΘΣΨΩ", 0.85: "DHKNX%#ΔΠ", 0.9: "m", 0.95: "⁗",
+    1.0: "M→⇒—", 1.05: "W",
+}
+"""Each character's advance in the handout's maths [em], the larger of italic and upright, rounded up to 0.05 em:
+measured in typst's New Computer Modern Math (``tests/handout/test_typesetting.py`` measures them again)."""
+_ADVANCE = {ch: w for w, chars in _ADVANCES.items() for ch in chars}
+_GLYPH = 1.1
+"""Width allowed any other Latin or Greek letter, sign or punctuation [em]: the widest measured is 1.05 em."""
+_SCRIPT = 0.75
+"""A script's share of its width at full size (typst sets it at 70 %)."""
+_OTHER = 2.0
+"""Width allowed a character outside Latin, Greek, punctuation, super- and subscripts, arrows and operators [em]."""
+_NARROW = re.compile(r"[\x20-\x7e\u00a0-\u024f\u0370-\u03ff\u2010-\u2044\u2070-\u209f\u2190-\u22ff]")
+
+
+def _chars(s: str) -> float:
+    return sum(_ADVANCE.get(ch) or (_GLYPH if _NARROW.match(ch) else _OTHER) for ch in s)
+
+
+def width_bound(node) -> float:
+    """More than the node can be wide, typeset in a block equation [em of its font size].
+
+    Each character at the widest a glyph is, each operator with the widest spaces math puts around one, each
+    script at full size, every delimiter and gap generous. A line whose bound fits the page needs no measuring.
+
+    Examples
+    --------
+    >>> width_bound(row(sym("F", "23"), op("="), polar(27.06, -73.78, "N"))) < 40
+    True
+    """
+    kind = node[0]
+    if kind in ("i", "n", "t"):
+        return _chars(node[1]) + (_GLYPH + 1.0 if kind == "n" and _POWER.fullmatch(node[1]) else 0.0)
+    if kind == "o":
+        # A sign's glyph and a relation's spaces either side (5/18 em each); ∠ has thin spaces (1/6 em each) too.
+        return _chars(node[1]) + (1.0 if "∠" in node[1] else 0.6)
+    if kind in ("sub", "sup"):
+        # A script is set at 70 %.
+        return width_bound(node[1]) + _SCRIPT * width_bound(node[2]) + 0.3
+    if kind == "subsup":
+        return width_bound(node[1]) + _SCRIPT * max(width_bound(node[2]), width_bound(node[3])) + 0.3
+    if kind == "frac":
+        return max(width_bound(node[1]), width_bound(node[2])) + 0.5
+    if kind == "vec":
+        return max(width_bound(node[1]), _GLYPH) + 0.5
+    if kind in ("abs", "sqrt"):
+        return width_bound(node[1]) + 1.5
+    if kind == "paren":
+        return width_bound(node[1]) + 2.0
+    if kind == "mat":
+        rows = node[1]
+        cols = max((len(r) for r in rows), default=0)
+        widths = [max((width_bound(r[k]) for r in rows if k < len(r)), default=0.0) for k in range(cols)]
+        return sum(widths) + 1.0 * cols + 6.0
+    if kind == "row":
+        return sum(width_bound(x) for x in node[1:])
+    if kind == "sp":
+        return 0.25
+    raise ValueError(f"unknown math node {kind!r}")
+
+
 _GREEK = {"α": r"\alpha", "β": r"\beta", "γ": r"\gamma", "θ": r"\theta", "ω": r"\omega", "μ": r"\mu", "ρ": r"\rho",
           "σ": r"\sigma", "Σ": r"\Sigma", "Δ": r"\Delta", "τ": r"\tau", "φ": r"\varphi"}
 _LATEX_OPS = {"·": r"\cdot", "×": r"\times", "∠": r"\;\angle\;", "°": r"^{\circ}", "−": "-", ",": r",\ ", ";": ";",

@@ -21,6 +21,11 @@ MATH_FONT = "New Computer Modern Math"
 
 _ALIGN = {"l": "left", "c": "center", "r": "right"}
 
+MARGIN_X = 18.0
+"""The page's left and right margins [mm] (A4, 210 mm wide)."""
+TEXT_WIDTH = (210.0 - 2 * MARGIN_X) * 72 / 25.4
+"""The width of the text [pt]."""
+
 
 def _string(text: str) -> str:
     """A typst string literal: markup characters in it stay plain text."""
@@ -41,9 +46,19 @@ def _inline(runs) -> str:
 
 
 def _fit(body: str) -> str:
-    """Content scaled down to the line's width when wider (a 9×9 matrix), as it is otherwise."""
+    """Content scaled down to the line's width when wider (a 9×9 matrix), as it is otherwise.
+
+    Typst lays such content out twice (to measure it, then in place): a line that cannot be wider than the page
+    (:func:`_equation`) is set as it is.
+    """
     return (f"#layout(size => {{ let it = [{body}]; let w = measure(it).width; "
             f"if w > size.width {{ scale(size.width / w * 100%, reflow: true, it) }} else {{ it }} }})")
+
+
+def _equation(line, size: float) -> str:
+    """One displayed line of maths, at ``size`` [pt]: scaled down to the page only if it might be wider."""
+    body = f"$ {M.to_typst(line)} $"
+    return body if M.width_bound(line) * size <= TEXT_WIDTH else _fit(body)
 
 
 def _block(b: dict, floats: bool = False) -> str:
@@ -74,8 +89,8 @@ def _block(b: dict, floats: bool = False) -> str:
             table = f"#block(stroke: 1.2pt, inset: 7pt, breakable: false)[\n{table}\n]"
         return table
     if kind == "equation":
-        lines = [f"$ {M.to_typst(line)} $" for line in b["lines"]]
-        body = "\n".join(_fit(x) for x in lines)
+        size = 8.0 if b.get("small") else 10.0
+        body = "\n".join(_equation(line, size) for line in b["lines"])
         return f"#text(size: 8pt)[{body}]" if b.get("small") else body
     if kind == "figure" and all(p.natural for p in b["pictures"]):
         # Printed at their own size: the scale a drawing states is the scale on the page.
@@ -111,7 +126,7 @@ def source(doc: dict, *, font: str | None = None, math_font: str | None = None) 
     """The typst source of a handout (figures inline as SVG bytes), set in ``font`` (default :data:`FONT`)."""
     font, math_font = font or FONT, math_font or MATH_FONT
     head = f"""#set document(title: {_string(doc['title'])})
-#set page(paper: "a4", margin: (x: 18mm, top: 18mm, bottom: 20mm),
+#set page(paper: "a4", margin: (x: {MARGIN_X:g}mm, top: 18mm, bottom: 20mm),
   footer: context [#set text(size: 8pt); #{_string(doc['title'])} #h(1fr) #counter(page).display("1 / 1", both: true)])
 #set text(font: {_string(font)}, size: 10pt, lang: "en")
 #show math.equation: set text(font: {_string(math_font)})

@@ -125,7 +125,9 @@ def test_a_formula_parsed_once_lays_labels_out_as_matplotlib_does(math_font):
     for _ in range(2):  # new formulas, then the same formulas in their memo (the first formula of each twice)
         for s in FORMULAS:
             for dpi in (72, 100):
-                MathTextParser._parse_cached.cache_clear()  # matplotlib's cache of whole labels: parse each afresh
+                # The caches of whole labels (matplotlib's, ours): parse each afresh.
+                MathTextParser._parse_cached.cache_clear()
+                _MathTextOnce._parse_cached.cache_clear()
                 want, got = theirs.parse(s, dpi, prop), ours.parse(s, dpi, prop)
                 assert (got.width, got.height, got.depth) == (want.width, want.height, want.depth)
                 assert [g[1:] for g in got.glyphs] == [g[1:] for g in want.glyphs]
@@ -135,6 +137,8 @@ def test_a_formula_parsed_once_lays_labels_out_as_matplotlib_does(math_font):
     memo = [k for k in _MathTextOnce._parser._memo
             if k[0] == r"$\mathregular{a^{t}_{BA}}$" and k[2].get_math_fontfamily() == math_font]
     assert sorted(k[7] for k in memo) == [72, 100]
+    # And every label in this font was parsed with the one fontset made for it.
+    assert len([k for k in _MathTextOnce._fontsets if k[1] == prop]) == 1
 
 
 @pytest.mark.parametrize("text", ["F₂₃ = 1234.5 N", r"$\mathregular{v_{A}}$ = 5.341 m/s", "A"])
@@ -153,3 +157,32 @@ def test_the_measuring_renderer_gives_the_sizes_the_svg_prints(text):
     got = measuring_agg(100).get_text_width_height_descent(text, prop, ismath)
     assert got == pytest.approx((w * 100 / 72, h * 100 / 72, d * 100 / 72), rel=1e-12)
     assert min(got[:2]) > 0
+
+
+def test_a_text_laid_out_once_is_laid_out_again_when_it_changes():
+    """Within :func:`svg_text_laid_out_once` each text's layout is kept; a text whose font, alignment, angle or
+    string changes between two files is laid out anew: the second file is what a fresh figure with the changed
+    text writes."""
+    from matplotlib import rc_context
+
+    from graphkin.draw import text as T
+
+    def saved(fig) -> str:
+        out = io.BytesIO()
+        with rc_context({"svg.hashsalt": "test"}), svg_text_laid_out_once():
+            fig.savefig(out, format="svg", metadata={"Date": None})
+        return out.getvalue().decode("utf-8")
+
+    for change in ({"fontsize": 15}, {"ha": "right"}, {"va": "top"}, {"rotation": 45}, {"text": "F₂₃ = 99 N"},
+                   {"linespacing": 2.0, "text": "two\nlines"}):
+        fig = _figure()
+        saved(fig)
+        assert T._LAYOUTS
+        for t in fig.axes[0].texts:
+            t.set(**change)
+        got = saved(fig)  # with the layouts of the texts before the change kept
+        T._LAYOUTS.clear()
+        fresh = _figure()
+        for t in fresh.axes[0].texts:
+            t.set(**change)
+        assert got == saved(fresh), change

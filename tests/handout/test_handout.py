@@ -677,6 +677,28 @@ def test_a_roster_gives_a_sheet_and_a_key_per_student(built, tmp_path, workers):
     assert len(list(tmp_path.iterdir())) == 2 * len(students)
 
 
+_MAKE = """
+import sys
+from graphkin.handout.batch import _chunk, _worker_start
+_worker_start()
+for student in sys.argv[2:]:
+    (row,) = _chunk(("strip_cutter_cut", [student], "k", ("sheet", "key"), "pdf", sys.argv[1], None))
+    assert not row[2], row
+"""
+
+
+@pytest.mark.slow
+def test_a_student_s_pdfs_are_the_same_whatever_their_worker_made_before(tmp_path):
+    """A worker keeps what it laid out (texts, formulas, fonts, typst's memo) and settles after its first task:
+    a student's sheet and key come out byte for byte the same made first in a fresh process or after others."""
+    first, later = tmp_path / "first", tmp_path / "later"
+    for folder, students in ((first, ["s9"]), (later, ["s1", "s2", "s3", "s9"])):
+        folder.mkdir()
+        subprocess.run([sys.executable, "-c", _MAKE, str(folder), *students], check=True, timeout=300)
+    for name in ("s9_sheet.pdf", "s9_key.pdf"):
+        assert (first / name).read_bytes() == (later / name).read_bytes(), name
+
+
 def test_the_roster_command(tmp_path):
     (tmp_path / "roster.csv").write_text("student\ns1\ns2\n")
     code, _, err = _main(["handout", "double_slider_forces", "--roster", str(tmp_path / "roster.csv"),

@@ -145,3 +145,53 @@ def test_html_names_a_math_font_stack_and_prints_with_margins_and_whole_equation
     # Nothing needs a math font's stretchy glyphs: brackets and roots are drawn with borders.
     assert 'class="bmat"' in page and "<msqrt>" not in page and 'form="prefix">[</mo><mtable' not in page
     assert 'class="radicand"' in page
+
+
+def _measured(exprs, size=10.0) -> list[float]:
+    """Widths [pt] typst gives each piece of maths (typst source between ``$ … $``), set as a displayed line."""
+    import json
+    import tempfile
+    from pathlib import Path
+
+    import typst
+
+    from graphkin.handout.typst import FONT, MATH_FONT
+
+    lines = [f'#set text(font: "{FONT}", size: {size}pt)', f'#show math.equation: set text(font: "{MATH_FONT}")']
+    lines += [f"#context [#metadata(measure($ {e} $).width / 1pt) <w{k}>]" for k, e in enumerate(exprs)]
+    with tempfile.TemporaryDirectory() as folder:
+        path = Path(folder) / "measure.typ"
+        path.write_text("\n".join(lines), encoding="utf-8")
+        compiler = typst.Compiler(str(path), ignore_system_fonts=True)
+        return [json.loads(compiler.query(f"<w{k}>", field="value", one=True)) for k in range(len(exprs))]
+
+
+def test_each_character_s_advance_is_at_least_what_typst_sets():
+    """The advances :func:`maths.width_bound` counts are typst's own, in italic and upright, or more."""
+    chars = list(M._ADVANCE)
+    quoted = [c.replace("\\", "\\\\").replace('"', '\\"') for c in chars]
+    widths = _measured([f'italic("{q}")' for q in quoted] + [f'upright("{q}")' for q in quoted])
+    for k, ch in enumerate(chars):
+        assert max(widths[k], widths[k + len(chars)]) / 10.0 <= M._ADVANCE[ch], ch
+
+
+def test_an_equation_set_without_measuring_is_narrower_than_its_bound():
+    """Every displayed line of every catalog key (compact and full) and exercise key is narrower than
+    :func:`maths.width_bound` says, so one whose bound fits the page is set as it is; the widest lines (the
+    matrix) are still scaled to the page."""
+    from pathlib import Path
+
+    from graphkin import catalog
+    from graphkin.handout import typst as T
+
+    docs = [handout.build(name, detail=detail) for name in catalog.names() for detail in ("compact", "full")]
+    docs += [handout.build(p.stem, student="s1", secret="x", version="key")
+             for p in sorted((Path(catalog.__file__).parent / "exercises").glob("*.toml"))]
+    lines = {M.to_typst(line): line for doc in docs for b in doc["blocks"] if b["kind"] == "equation"
+             for line in b["lines"]}
+    widths = _measured(list(lines))
+    for (source, line), width in zip(lines.items(), widths):
+        assert width <= M.width_bound(line) * 10.0, M.to_text(line)
+    fitted = [w for (source, line), w in zip(lines.items(), widths) if "measure(" in T._equation(line, 10.0)]
+    assert max(widths) > T.TEXT_WIDTH and max(widths) in fitted
+    assert len(fitted) < len(lines) / 10
