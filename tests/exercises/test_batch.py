@@ -72,3 +72,9 @@ def test_a_worker_runs_its_garbage_collector_less_often():
 
     pool = batch._workers(1)[0]
     assert pool.submit(gc.get_threshold).result()[0] == batch._GC_THRESHOLD[0] > gc.get_threshold()[0]
+    # What a chunk leaves alive (the caches) is frozen out of later collections, in a worker only.
+    frozen = gc.get_freeze_count()
+    pool.submit(batch._chunk, (exercises.load(NAME), "make", [("s0001", None)], SECRET, None, None)).result()
+    assert pool.submit(gc.get_freeze_count).result() > 0
+    batch._chunk((exercises.load(NAME), "make", [("s0001", None)], SECRET, None, None))
+    assert gc.get_freeze_count() == frozen
