@@ -189,7 +189,7 @@ def build_problem(data: Mapping[str, Any], *, file: str = "<problem>", base: str
     motion = (driver.link, q_dot) if kind == "crank" else None
     loads, origin = [], []  # a spring puts a load on each moving end: origin[k] is the file's index of loads[k]
     for i, t in enumerate(_list(rd, data, "loads")):
-        found = _load(rd, t, f"loads[{i}]", kind, motion, frame.number)
+        found = _load_once(rd, t, f"loads[{i}]", kind, motion, frame.number)
         found = found if isinstance(found, list) else [found]
         loads += found
         origin += [i] * len(found)
@@ -266,13 +266,13 @@ _READ_SIZE = 256
 
 
 def _read_once(read, rd, t, where, *args):
-    """``read(rd, t, where, *args)``: a link read from its table, or the link read before from an equal table.
+    """``read(rd, t, where, *args)``: a part read from its table, or the part read before from an equal table.
 
     An exercise builds a problem for every draw from the same tables with a
-    few values changed (the crank angle, a load), so most links are read again
-    and again from equal tables; reading one (units, ranges, mass properties)
-    was a third of a build. A :class:`~graphkin.model.Link` is frozen, so
-    problems may share it. Only a table that reads without error is kept (an
+    few values changed (the crank angle, a load), so most links and loads are
+    read again and again from equal tables; reading the links (units, ranges,
+    mass properties) was a third of a build. Links and loads are frozen, so
+    problems may share them. Only a table that reads without error is kept (an
     error names the file, which differs from one caller to the next); the key
     is the table's ``repr``, which tells apart every value TOML can hold (``1``,
     ``1.0``, ``true``, ``"1"``).
@@ -473,6 +473,15 @@ def _motion(rd, d, kind, static=False):
         # alpha too is measured in the sense of rotation (negative: slowing down).
         rates = [books.SENSES_OF_ROTATION[sense] * r + 0.0 for r in rates]
     return q, rates[0], rates[1]
+
+
+def _load_once(rd, t, where, driver_kind, motion, frame):
+    """A force or torque read from its table, or the one read before from an equal table (see :func:`_read_once`:
+    a draw of an exercise changes one load and reads the others again). A load that reads a CSV file beside the
+    problem, a spring, a pressure or a power is read every time."""
+    if isinstance(t, dict) and t.get("type") in ("force", "torque") and "csv" not in t:
+        return _read_once(_load, rd, t, where, driver_kind, None, frame)  # neither uses the motion
+    return _load(rd, t, where, driver_kind, motion, frame)
 
 
 def _load(rd, t, where, driver_kind, motion=None, frame=1):

@@ -56,3 +56,16 @@ def test_a_table_that_cannot_be_read_names_each_callers_file():
     for name in ("first.toml", "second.toml"):
         with pytest.raises(ProblemFileError, match=rf"{name}.*links\[0\]\.mass"):
             build_problem(copy.deepcopy(bad), file=name)
+
+
+def test_an_equal_load_table_is_read_once_and_a_changed_one_again():
+    tables = copy.deepcopy(TABLES)
+    tables["loads"] = [{"type": "force", "link": 3, "point": "B", "force": {"magnitude": "100 N", "angle": "90 deg"}},
+                       {"type": "torque", "link": 4, "torque": "5 N*m"}]
+    first = build_problem(copy.deepcopy(tables), file="a").mechanism.loads
+    again = build_problem(copy.deepcopy(tables), file="b").mechanism.loads
+    assert first[0] is again[0] and first[1] is again[1]
+    tables["loads"][0]["force"]["magnitude"] = "150 N"
+    changed = build_problem(tables, file="c").mechanism.loads
+    assert changed[0] is not first[0] and changed[1] is first[1]
+    assert abs(complex(*changed[0].force)) == 150.0
