@@ -75,9 +75,8 @@ def _start_worker():
     and what a chunk leaves alive is frozen (:func:`gc.freeze`) when it ends,
     so later collections walk only what is new: the collector's share of a
     session falls from ~12 % to ~1 %. The price: the rare cycle among frozen
-    objects (about 20 objects in a session of three exercises, an exception's
-    traceback when a slip cannot be re-solved) stays until the worker ends,
-    with the session.
+    objects (the collector found about 20 such objects in a session of three
+    exercises) stays until the worker ends, with the session.
     """
     global _IN_WORKER
     _IN_WORKER = True
