@@ -358,10 +358,24 @@ _BOXES: dict = {}
 _BOXES_SIZE = 8192
 
 
+def _laid_out_alike(t) -> bool:
+    """Whether a text's layout follows from :func:`_layout_key` alone: not wrapped, not turned with its
+    transform, not in TeX."""
+    return not (t.get_wrap() or t.get_transform_rotates_text() or t.get_usetex())
+
+
+def _layout_key(t) -> tuple:
+    """What a text's layout around its anchor depends on: its string, font, angle, alignment, line spacing and
+    the figure's resolution (never where it stands)."""
+    # A copy of the font: FontProperties can be changed in place, and hashes by its state.
+    return (t.get_text(), t.get_fontproperties().copy(), t.get_rotation(), t.get_rotation_mode(), t.get_ha(),
+            t.get_va(), t._get_multialignment(), t.get_linespacing(), t.get_parse_math(), t.get_figure(root=True).dpi)
+
+
 def box_kept(t) -> bool:
     """Whether a text's box can be kept (:func:`text_extent`): a Text (not an annotation, which moves as it is
     measured), not wrapped, not turned with its transform, not in TeX."""
-    return type(t) is Text and not (t.get_wrap() or t.get_transform_rotates_text() or t.get_usetex())
+    return type(t) is Text and _laid_out_alike(t)
 
 
 def text_extent(t, renderer):
@@ -384,12 +398,8 @@ def text_extent(t, renderer):
     """
     if not (box_kept(t) and t.get_visible() and t.get_text() != ""):
         return t.get_window_extent(renderer)
-    dpi = t.get_figure(root=True).dpi
     t._renderer = renderer
-    # A copy of the font: FontProperties can be changed in place, and hashes by its state.
-    key = (t.get_text(), t.get_fontproperties().copy(), t.get_rotation(), t.get_rotation_mode(), t.get_ha(),
-           t.get_va(), t._get_multialignment(), t.get_linespacing(), t.get_parse_math(), type(renderer), dpi,
-           getattr(renderer, "dpi", None))
+    key = (*_layout_key(t), type(renderer), getattr(renderer, "dpi", None))
     box = _BOXES.get(key)
     if box is None:
         if len(_BOXES) >= _BOXES_SIZE:
@@ -416,13 +426,9 @@ def _layout_once(plain_layout):
 
     def _get_layout(self, renderer):
         # savefig hands the SVG renderer over inside a MixedModeRenderer (which draws rasterised artists with Agg).
-        if (type(getattr(renderer, "_renderer", renderer)) is not _RendererSVG or self.get_wrap()
-                or self.get_transform_rotates_text() or self.get_usetex()):
+        if type(getattr(renderer, "_renderer", renderer)) is not _RendererSVG or not _laid_out_alike(self):
             return plain_layout(self, renderer)
-        # A copy of the font: FontProperties can be changed in place, and hashes by its state.
-        key = (self.get_text(), self.get_fontproperties().copy(), self.get_rotation(), self.get_rotation_mode(),
-               self.get_ha(), self.get_va(), self._get_multialignment(), self.get_linespacing(),
-               self.get_parse_math(), self.get_figure(root=True).dpi, getattr(renderer, "dpi", None))
+        key = (*_layout_key(self), getattr(renderer, "dpi", None))
         known = _LAYOUTS.get(key)
         if known is None:
             if len(_LAYOUTS) >= _LAYOUTS_SIZE:
