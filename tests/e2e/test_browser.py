@@ -322,6 +322,26 @@ def _wait_ran(page, n: int):
     page.wait_for_function(PROMPT, arg=f"[{n}]:", timeout=CELL_TIMEOUT)
 
 
+def _saved_cells(path, before: float, timeout: float = 30.0) -> list:
+    """The cells of the notebook at ``path`` once JupyterLab has finished saving it.
+
+    jupyter_server's "atomic" save copies the notebook to ``.~<name>``, then truncates and
+    rewrites the notebook in place, and removes the copy last. The file's mtime therefore
+    changes before its text is written: reading it then can find it empty (CI, stop 32).
+    The save is over when the copy is gone and the text is one whole JSON document.
+    """
+    backup = path.with_name(".~" + path.name)
+    deadline = time.monotonic() + timeout
+    while time.monotonic() < deadline:
+        if path.stat().st_mtime != before and not backup.exists():
+            try:
+                return json.loads(path.read_text(encoding="utf-8"))["cells"]
+            except json.JSONDecodeError:
+                pass  # a new save began between the two looks
+        time.sleep(0.2)
+    pytest.fail(f"the notebook was not saved within {timeout:.0f} s: {path.name}")
+
+
 @pytest.fixture(scope="module")
 def lab_page(browser, jupyterlab):
     context = browser.new_context(viewport={"width": 1400, "height": 900}, device_scale_factor=1)
@@ -364,11 +384,7 @@ def test_lesson_cell_by_cell_in_jupyterlab(lab_page, jupyterlab, workdir, timing
     page.locator(".jp-Notebook").first.click(position={"x": 5, "y": 5})
     page.keyboard.press("Escape")
     page.keyboard.press("Control+s")
-    deadline = time.monotonic() + 30
-    while path.stat().st_mtime == saved and time.monotonic() < deadline:
-        time.sleep(0.2)
-    assert path.stat().st_mtime != saved, "the notebook was not saved"
-    ran = json.loads(path.read_text(encoding="utf-8"))["cells"]
+    ran = _saved_cells(path, saved)
     errors = [f"cell {i}: {o['ename']}: {o['evalue']}" for i, c in enumerate(ran) for o in c.get("outputs", [])
               if o["output_type"] == "error"]
     assert not errors, errors
