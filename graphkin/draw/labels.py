@@ -217,6 +217,9 @@ class Labeler:
         self.heads = []
         self.leaders = []
         """Leader lines drawn by :meth:`place` from a label put away from its anchor to the anchor."""
+        self.room = None
+        """The box (x0, y0, x1, y1) [data] the labels are kept in: a panel of a figure drawn on one axes with
+        others (:func:`graphkin.draw.paper.draw_polygons`). None: the axes' own box."""
 
     def segment(self, p, q, width=0.0, *, soft=False):
         """An obstacle segment (data coordinates), ``width`` points wide; ``soft`` for a dashed line."""
@@ -303,9 +306,12 @@ class Labeler:
             Q = np.vstack([Q, T])
             W = np.concatenate([W, 0.3 * size])
             C = np.concatenate([C, np.full(len(size), HARD_COST)])
-        # The room the axes were given (an equal-scale axes may have shrunk inside it), and the figure's edges.
-        axbox = TransformedBbox(ax.get_position(original=True), ax.figure.transSubfigure)
-        room = np.array([axbox.x0, axbox.y0, axbox.x1, axbox.y1])
+        if self.room is not None:
+            room = to(np.asarray(self.room, float).reshape(2, 2)).ravel()
+        else:
+            # The room the axes were given (an equal-scale axes may have shrunk inside it), and the figure's edges.
+            axbox = TransformedBbox(ax.get_position(original=True), ax.figure.transSubfigure)
+            room = np.array([axbox.x0, axbox.y0, axbox.x1, axbox.y1])
         page = np.asarray(ax.figure.bbox.extents, float)
         marks = np.zeros((0, 4))
         if self.boxes:

@@ -13,15 +13,16 @@ prints.
 
 from __future__ import annotations
 
+from matplotlib import rcParams
 from matplotlib.figure import Figure
 
 from graphkin.draw import style as _style
 from graphkin.draw.axes import BareAxes, setup_axes
 from graphkin.draw.fbd import draw_free_body
-from graphkin.draw.labels import measuring_renderer
+from graphkin.draw.labels import _offset, measuring_renderer
 from graphkin.draw.mechanism import draw_mechanism
 from graphkin.draw.motion import draw_motion_polygon
-from graphkin.draw.polygon import draw_force_polygon, step_title
+from graphkin.draw.polygon import draw_force_polygon, polygon_vertices, step_title
 from graphkin.draw.scales import nice_round, scale_bar
 from graphkin.draw.steps import draw_step_geometry
 from graphkin.draw.text import sub, text_extent
@@ -54,8 +55,53 @@ def _title_size(ax) -> tuple[float, float]:
     return bb.width / ax.figure.dpi * 25.4, bb.height / ax.figure.dpi * 25.4 + 1.5
 
 
+def layout(sizes, *, width: float = FIGURE_WIDTH, strip: float = 0.0, gap: float = GAP):
+    """Where panels go in rows: as many as fit the width in each row, each row centred, each panel below its title.
+
+    Parameters
+    ----------
+    sizes : list of (float, float, float, float)
+        Each panel's width and height [mm], and the width and height it takes with its title over it.
+    width : float
+        The figure's width [mm].
+    strip : float
+        Height [mm] left free under the rows (for :func:`scale_strip`).
+
+    Returns
+    -------
+    height : float
+        The figure's height [mm].
+    boxes : list of (float, float)
+        The lower left corner [mm from the figure's lower left] of each panel (without its title).
+    """
+    rows, row, used = [], [], 0.0
+    for k, (_, _, pw, _) in enumerate(sizes):
+        if row and used + gap + pw > width:
+            rows.append(row)
+            row, used = [], 0.0
+        used += (gap if row else 0.0) + pw
+        row.append(k)
+    if row:
+        rows.append(row)
+    heights = [max(sizes[k][3] for k in r) for r in rows]
+    height = sum(heights) + gap * (len(rows) - 1) + strip + 2.0
+    corners = [(0.0, 0.0)] * len(sizes)
+    top = height - 1.0
+    for r, rh in zip(rows, heights):
+        used = sum(sizes[k][2] for k in r) + gap * (len(r) - 1)
+        x = max(0.0, (width - used) / 2)
+        for k in r:
+            w, h, pw, ph = sizes[k]
+            # Below its title, centred in its column; the tallest panel of the row sets the row's height.
+            corners[k] = (x + (pw - w) / 2, top - (ph - h) - h)
+            x += pw + gap
+        top -= rh + gap
+    return height, corners
+
+
 def arrange(fig, panels, *, width: float = FIGURE_WIDTH, strip: float = 0.0, gap: float = GAP) -> float:
-    """Lay panels out in rows at their printed size, size the figure to them, and place their labels.
+    """Lay panels out in rows at their printed size (:func:`layout`), size the figure to them, and place their
+    labels.
 
     Parameters
     ----------
@@ -77,30 +123,10 @@ def arrange(fig, panels, *, width: float = FIGURE_WIDTH, strip: float = 0.0, gap
         w, h = _box(ax, mm)
         tw, th = _title_size(ax)
         sizes.append((w, h, max(w, tw), h + th))
-    rows, row, used = [], [], 0.0
-    for k, (_, _, pw, _) in enumerate(sizes):
-        if row and used + gap + pw > width:
-            rows.append(row)
-            row, used = [], 0.0
-        used += (gap if row else 0.0) + pw
-        row.append(k)
-    if row:
-        rows.append(row)
-    heights = [max(sizes[k][3] for k in r) for r in rows]
-    height = sum(heights) + gap * (len(rows) - 1) + strip + 2.0
+    height, corners = layout(sizes, width=width, strip=strip, gap=gap)
     fig.set_size_inches(width / 25.4, height / 25.4)
-    top = height - 1.0
-    for r, rh in zip(rows, heights):
-        used = sum(sizes[k][2] for k in r) + gap * (len(r) - 1)
-        x = max(0.0, (width - used) / 2)
-        for k in r:
-            w, h, pw, ph = sizes[k]
-            ax = panels[k][0]
-            # Below its title, centred in its column; the tallest panel of the row sets the row's height.
-            y = top - (ph - h) - h
-            ax.set_position([(x + (pw - w) / 2) / width, y / height, w / width, h / height])
-            x += pw + gap
-        top -= rh + gap
+    for (ax, _), (x, y), (w, h, _, _) in zip(panels, corners, sizes):
+        ax.set_position([x / width, y / height, w / width, h / height])
     for ax, _ in panels:
         lab = getattr(ax, "_graphkin_labeler", None)
         if lab is not None:
@@ -112,22 +138,26 @@ def arrange(fig, panels, *, width: float = FIGURE_WIDTH, strip: float = 0.0, gap
 
 
 def scale_strip(fig, height: float, *, length_scale=None, force_scale=None, width: float = FIGURE_WIDTH,
-                velocity_scale=None, acceleration_scale=None, **style) -> list:
+                velocity_scale=None, acceleration_scale=None, ax=None, **style) -> list:
     """Scale bars along the foot of a figure: one per scale the figure is drawn at, each stating its scale.
 
     A length bar reads ``0 — 100 mm  (scale 1:5)``, a force bar ``0 — 400 N  (1 mm = 20 N)``, a velocity bar
     ``0 — 2 m/s  (1 mm = 0.05 m/s)`` (``velocity_scale`` [m/s per mm]; ``acceleration_scale`` [m/s² per mm]
-    likewise); each is as long on paper as what it reads at its scale. Returns the artists.
+    likewise); each is as long on paper as what it reads at its scale. The bars go on axes of their own, or on
+    ``ax``, an axes over the whole figure whose data units are millimetres of paper. Returns the artists.
     """
     s = _style.resolve(**style)
-    ax = fig.add_axes([0, 0.5 / height, 1, (STRIP - 1.0) / height], axes_class=BareAxes)
-    setup_axes(ax)
-    # One data unit is one millimetre of paper here.
-    ax.set_xlim(0, width)
-    ax.set_ylim(0, STRIP - 1.0)
+    if ax is None:
+        ax = fig.add_axes([0, 0.5 / height, 1, (STRIP - 1.0) / height], axes_class=BareAxes)
+        setup_axes(ax)
+        # One data unit is one millimetre of paper here.
+        ax.set_xlim(0, width)
+        ax.set_ylim(0, STRIP - 1.0)
+        y = (STRIP - 1.0) / 2
+    else:
+        y = 0.5 + (STRIP - 1.0) / 2  # the same place on an axes over the whole figure
     out = []
     x = 4.0
-    y = (STRIP - 1.0) / 2
     for k, X, unit in ((length_scale, None, "mm"), (None, force_scale, "N"), (None, velocity_scale, "m/s"),
                        (None, acceleration_scale, "m/s²")):
         if k is None and X is None:
@@ -221,16 +251,53 @@ def draw_polygons(steps, *, force_scale: float, titles=None, driver_name=None, w
     -------
     Figure
     """
+    s = _style.resolve(**style)
     fig = _new_figure(width)
-    panels = []
+    # One axes for every polygon and the scale bar, its data units millimetres of paper: each polygon is drawn
+    # at 1 mm = X N already, so it only needs moving to its place (its origin). A panel of axes per polygon
+    # cost as much again as drawing the polygon.
+    ax = fig.add_axes([0, 0, 1, 1], axes_class=BareAxes)
+    setup_axes(ax)
+    renderer = measuring_renderer(fig)
+    pad = 9.0  # the margin each polygon keeps around it for its labels (draw_force_polygon's on paper) [mm]
+    panels, sizes = [], []
     for k, step in enumerate(steps):
-        ax = fig.add_axes([0, 0, 0.2, 0.2], axes_class=BareAxes)
-        title = _names(titles[k]) if titles is not None else step_title(step)
-        draw_force_polygon(step, scale=force_scale, ax=ax, title=title, driver_name=driver_name, paper=1.0, bar=False,
-                           place=False, **style)
-        panels.append((ax, 1.0))
-    height = arrange(fig, panels, width=width, strip=STRIP)
-    scale_strip(fig, height, force_scale=force_scale, width=width, **style)
+        _, _, verts = polygon_vertices(step, force_scale)
+        lo = verts.min(axis=0) - pad
+        w, h = verts.max(axis=0) + pad - lo
+        # The title as set_title places it: centred 6 pt over the panel, on its baseline.
+        title = ax.text(0.0, 0.0, _names(titles[k]) if titles is not None else step_title(step),
+                        fontsize=s.title_size, color=s.ink, ha="center", va="baseline", clip_on=False)
+        bb = text_extent(title, renderer)
+        tw, th = bb.width / fig.dpi * 25.4, bb.height / fig.dpi * 25.4 + 1.5
+        panels.append((step, lo, title))
+        sizes.append((float(w), float(h), max(float(w), tw), float(h) + th))
+    height, corners = layout(sizes, width=width, strip=STRIP)
+    fig.set_size_inches(width / 25.4, height / 25.4)
+    ax.set_xlim(0.0, width)
+    ax.set_ylim(0.0, height)
+    labelers = []
+    for (step, lo, title), (x, y), (w, h, _, _) in zip(panels, corners, sizes):
+        title.set_position((x + w / 2, y + h))
+        title.set_transform(_offset(ax, (0.0, rcParams["axes.titlepad"])))
+        drawn = draw_force_polygon(step, scale=force_scale, ax=ax, origin=(x, y) - lo, title=False,
+                                   driver_name=driver_name, paper=1.0, bar=False, place=False, **style)
+        lab = ax._graphkin_labeler
+        lab.room = (x, y, x + w, y + h)
+        labelers.append((lab, drawn, title))
+    # Each polygon's limits were merged into the view as it was drawn: the figure's own are the view.
+    ax.set_xlim(0.0, width)
+    ax.set_ylim(0.0, height)
+    titles_drawn = [title for _, _, title in labelers]
+    placed = []
+    for lab, drawn, title in labelers:
+        # Off every title, and off the labels of the polygons placed before (a label may leave its panel when
+        # there is no room in it).
+        lab.avoid(titles_drawn + placed)
+        lab.place()
+        drawn += lab.leaders
+        placed += [t for t, _ in lab.items]
+    scale_strip(fig, height, force_scale=force_scale, width=width, ax=ax, **style)
     return fig
 
 

@@ -40,6 +40,39 @@ def step_title(step, driver_name: str | None = None) -> str:
     return f"{where}: " + " + ".join(sub(a.name) for a in step.polygon) + " = 0"
 
 
+def polygon_vertices(step, scale: float, origin=(0.0, 0.0)):
+    """The forces of a step's polygon as drawn, those drawn as "= 0", and the polygon's vertices.
+
+    A force is zero when it is rounding beside the polygon's largest, or beside the scale (under a nanometre of
+    drawing): a polygon whose forces all vanish at this position (a load whose line passes through a pivot) is
+    then drawn as "= 0", not blown up to its rounding residue with a scale bar reading 1e−17 N.
+
+    Parameters
+    ----------
+    step : graphkin.graphical.Step
+    scale : float
+        Force scale [N per mm of drawing].
+    origin : (float, float)
+        Where the first arrow starts [mm].
+
+    Returns
+    -------
+    shown : list of (Arrow, float)
+        Each force drawn, with its size [N].
+    zero : list of str
+        The names of the forces that vanish.
+    verts : ndarray, shape (len(shown) + 1, 2)
+        The vertices [mm], tip to tail from ``origin``; their extent sets the view.
+    """
+    sizes = [math.hypot(*a.vector) for a in step.polygon]
+    largest = max(sizes + [0.0])
+    floor = max(1e-12 * largest, 1e-9 * abs(scale), 1e-300)
+    shown = [(a, size) for a, size in zip(step.polygon, sizes) if size > floor]
+    zero = [a.name for a, size in zip(step.polygon, sizes) if size <= floor]
+    verts = np.cumsum([np.asarray(origin, float)] + [np.asarray(a.vector, float) / scale for a, _ in shown], axis=0)
+    return shown, zero, verts
+
+
 def draw_force_polygon(step, *, scale: float, ax=None, origin=(0.0, 0.0), values=True, title=None,
                        driver_name: str | None = None, scale_note=False, paper=None, bar=True, place=True,
                        **style) -> Drawn:
@@ -100,17 +133,8 @@ def draw_force_polygon(step, *, scale: float, ax=None, origin=(0.0, 0.0), values
     if title:
         ax.set_title(title, fontsize=s.title_size, color=s.ink)
     lab = Labeler(ax, s)
-    sizes = [math.hypot(*a.vector) for a in step.polygon]
-    largest = max(sizes + [0.0])
     start = np.asarray(origin, float)
-    # The polygon's vertices (zero forces left out), and its extent, which sets the view. A force is zero when it
-    # is rounding beside the polygon's largest, or beside the construction's scale (under a nanometre of drawing):
-    # a polygon whose forces all vanish at this position (a load whose line passes through a pivot) is then drawn
-    # as "= 0", not blown up to its rounding residue with a scale bar reading 1e−17 N.
-    floor = max(1e-12 * largest, 1e-9 * abs(scale), 1e-300)
-    shown = [(a, size) for a, size in zip(step.polygon, sizes) if size > floor]
-    zero = [a.name for a, size in zip(step.polygon, sizes) if size <= floor]
-    verts = np.cumsum([start] + [np.asarray(a.vector, float) / scale for a, _ in shown], axis=0)
+    shown, zero, verts = polygon_vertices(step, scale, origin)
     span = float(np.max(np.ptp(verts, axis=0))) if len(verts) > 1 else 0.0
     span = span or 10.0
     ppu = paper * PT_PER_MM if paper else points_per_unit(ax, 1.5 * span)
