@@ -34,20 +34,22 @@ GROW = 1.5
 """Margin [px] around each label's box while placing it."""
 
 
-def _offset(ax, shift_pt):
-    """Data coordinates, then a shift of ``shift_pt`` (x, y) typographic points."""
-    return ax.transData + ScaledTranslation(float(shift_pt[0]) / 72.0, float(shift_pt[1]) / 72.0,
-                                            ax.figure.dpi_scale_trans)
+def _offset(ax, shift_pt, base=None):
+    """Data coordinates (or ``base``, another transform to display), then a shift of ``shift_pt`` (x, y)
+    typographic points."""
+    return (ax.transData if base is None else base) + ScaledTranslation(
+        float(shift_pt[0]) / 72.0, float(shift_pt[1]) / 72.0, ax.figure.dpi_scale_trans)
 
 
-def offset_text(ax, text, anchor, shift_pt, **props):
-    """A text ``shift_pt`` points from ``anchor`` (data coordinates), drawn even outside the axes.
+def offset_text(ax, text, anchor, shift_pt, *, base=None, **props):
+    """A text ``shift_pt`` points from ``anchor`` (data coordinates, or those of the transform ``base``), drawn
+    even outside the axes.
 
     What ``ax.annotate(text, anchor, xytext=shift_pt, textcoords="offset points")``
     shows, as a plain Text: an Annotation recomputes its offset transform on
     every draw, a cost the explorer pays for each of its labels.
     """
-    return ax.text(float(anchor[0]), float(anchor[1]), text, transform=_offset(ax, shift_pt), clip_on=False,
+    return ax.text(float(anchor[0]), float(anchor[1]), text, transform=_offset(ax, shift_pt, base), clip_on=False,
                    clip_path=clip_path(ax), **props)
 
 

@@ -15,6 +15,7 @@ from __future__ import annotations
 
 from matplotlib import rcParams
 from matplotlib.figure import Figure
+from matplotlib.transforms import Affine2D
 
 from graphkin.draw import style as _style
 from graphkin.draw.axes import BareAxes, setup_axes
@@ -143,21 +144,25 @@ def scale_strip(fig, height: float, *, length_scale=None, force_scale=None, widt
 
     A length bar reads ``0 — 100 mm  (scale 1:5)``, a force bar ``0 — 400 N  (1 mm = 20 N)``, a velocity bar
     ``0 — 2 m/s  (1 mm = 0.05 m/s)`` (``velocity_scale`` [m/s per mm]; ``acceleration_scale`` [m/s² per mm]
-    likewise); each is as long on paper as what it reads at its scale. The bars go on axes of their own, or on
-    ``ax``, an axes over the whole figure whose data units are millimetres of paper. Returns the artists.
+    likewise); each is as long on paper as what it reads at its scale. ``ax``: an axes over the whole figure
+    whose data units are millimetres of paper, to draw the bars on; by default they go on the figure's first
+    panel, placed in millimetres of paper from the figure's lower left (``height`` [mm] is the figure's).
+    Returns the artists.
     """
     s = _style.resolve(**style)
-    if ax is None:
-        ax = fig.add_axes([0, 0.5 / height, 1, (STRIP - 1.0) / height], axes_class=BareAxes)
+    paper = None
+    if ax is None and fig.axes:
+        # No axes of their own (making one cost as much as drawing the bars): the strip's artists belong to a panel
+        # but stand in millimetres of paper, outside it.
+        ax, paper = fig.axes[0], Affine2D().scale(1 / 25.4) + fig.dpi_scale_trans
+    elif ax is None:
+        ax = fig.add_axes([0, 0, 1, 1], axes_class=BareAxes)
         setup_axes(ax)
-        # One data unit is one millimetre of paper here.
         ax.set_xlim(0, width)
-        ax.set_ylim(0, STRIP - 1.0)
-        y = (STRIP - 1.0) / 2
-    else:
-        y = 0.5 + (STRIP - 1.0) / 2  # the same place on an axes over the whole figure
+        ax.set_ylim(0, height)
     out = []
     x = 4.0
+    y = 0.5 + (STRIP - 1.0) / 2
     for k, X, unit in ((length_scale, None, "mm"), (None, force_scale, "N"), (None, velocity_scale, "m/s"),
                        (None, acceleration_scale, "m/s²")):
         if k is None and X is None:
@@ -168,13 +173,14 @@ def scale_strip(fig, height: float, *, length_scale=None, force_scale=None, widt
         else:
             value = nice_round(30.0 * X)
             length, note = value / X, force_text(X) if unit == "N" else f"1 mm = {num(X, 4)} {unit}"
-        bar = scale_bar(ax, (x, y), length, value, s=s, unit_text=unit, tick=1.0, note=note)
+        bar = scale_bar(ax, (x, y), length, value, s=s, unit_text=unit, tick=1.0, note=note, transform=paper)
         over = _right(bar[-1]) - (width - 1.0)
         if over > 0:
             # Its reading would run past the figure's edge (and the page's margin): the bar moves left to fit.
             for artist in bar:
                 artist.remove()
-            bar = scale_bar(ax, (x - over, y), length, value, s=s, unit_text=unit, tick=1.0, note=note)
+            bar = scale_bar(ax, (x - over, y), length, value, s=s, unit_text=unit, tick=1.0, note=note,
+                            transform=paper)
         out += bar
         x = _right(bar[-1]) + 12.0
     return out

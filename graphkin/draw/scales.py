@@ -74,23 +74,29 @@ def nice_round(x: float) -> float:
 
 
 def scale_bar(ax, at, length: float, value: float, *, s, unit_text="N", tick=None, labeler=None, note=None,
-              alpha=None):
+              alpha=None, transform=None):
     """A scale bar: a bar ``length`` data units long, starting at ``at``, reading ``0 — value N``.
 
     ``note`` follows the reading (``"1 mm = 10 N"`` for a force polygon
     drawn to a construction's scale). With a :class:`Labeler`, its labels
-    keep off the bar and both texts. Returns the artists.
+    keep off the bar and both texts. ``transform``: ``at``, ``length`` and
+    ``tick`` are in its coordinates rather than the axes' data, and the bar
+    is drawn outside the axes too (a strip of scale bars under a figure's
+    panels, in millimetres of paper: :func:`graphkin.draw.paper.scale_strip`).
+    Returns the artists.
     """
     x, y = map(float, at)
     tick = tick if tick is not None else length * 0.06
-    bar = line(ax, [x, x + length], [y, y], color=s.ink, lw=1.4, solid_capstyle="butt", zorder=5, alpha=alpha)
+    where = {} if transform is None else {"transform": transform, "clip_on": False}
+    bar = line(ax, [x, x + length], [y, y], color=s.ink, lw=1.4, solid_capstyle="butt", zorder=5, alpha=alpha,
+               **where)
     ticks = line(ax, [x, x, np.nan, x + length, x + length], [y - tick, y + tick, np.nan, y - tick, y + tick],
-                 color=s.ink, lw=1.0, zorder=5, alpha=alpha)
+                 color=s.ink, lw=1.0, zorder=5, alpha=alpha, **where)
     reading = f"{num(value)} {unit_text}" + (f"   ({note})" if note else "")
     t0 = offset_text(ax, "0", (x, y), (-3, 0), ha="right", va="center", fontsize=s.small_size, color=s.ink,
-                     alpha=alpha)
+                     alpha=alpha, base=transform)
     t1 = offset_text(ax, reading, (x + length, y), (3, 0), ha="left", va="center", fontsize=s.small_size,
-                     color=s.ink, alpha=alpha)
+                     color=s.ink, alpha=alpha, base=transform)
     if labeler is not None:
         # Boxes, not a segment: a label may cross an arrow when it must, but it would hide the bar's reading.
         labeler.box(x, y - tick, x + length, y + tick, pad=1.0)  # the lines' half width
