@@ -36,6 +36,8 @@ class Drawn(list):
         Tail and tip of each force arrow in data coordinates [mm].
     scale : float or None
         Force scale of the arrows [N per mm of the drawing's data units].
+    labeler : graphkin.draw.labels.Labeler or None
+        The drawing's labels, when they are left to be placed once the figure is laid out (:func:`finish`).
     """
 
     def __init__(self, ax):
@@ -45,6 +47,7 @@ class Drawn(list):
         self.labels: dict = {}
         self.ends: dict = {}
         self.scale = None
+        self.labeler = None
 
     @property
     def figure(self):
@@ -321,6 +324,7 @@ def finish(ax, labeler, drawn, place: bool):
     else:
         ax._graphkin_labeler = labeler
         ax._graphkin_drawn = drawn
+        drawn.labeler = labeler
     return drawn
 
 

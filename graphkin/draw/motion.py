@@ -32,9 +32,16 @@ from graphkin.notation import num
 UNITS = {"velocity": "m/s", "acceleration": "m/s²"}
 
 
+def motion_extent(construction, polygon: str, scale: float):
+    """The lower left and upper right corners [mm of drawing] of every image point of a polygon at ``scale``, the
+    pole at the origin: the extent :func:`draw_motion_polygon` fits its view to (at ``upto``, too)."""
+    pts = np.asarray([np.asarray(p, float) / scale for p in construction.images[polygon].values()], float)
+    return pts.reshape(-1, 2).min(axis=0), pts.reshape(-1, 2).max(axis=0)
+
+
 def draw_motion_polygon(construction, polygon: str = "velocity", *, scale: float | None = None, ax=None,
                         values: bool = True, title=None, upto: int | None = None, paper=None, bar=True,
-                        place=True, **style) -> Drawn:
+                        place=True, origin=(0.0, 0.0), **style) -> Drawn:
     """Draw the velocity or acceleration polygon of a position to a stated scale.
 
     The pole is a ring; each vector a step draws is an arrow (known ones heavy with solid heads, those whose
@@ -65,6 +72,8 @@ def draw_motion_polygon(construction, polygon: str = "velocity", *, scale: float
         Draw the scale bar (a printed figure draws one strip of bars for both polygons).
     place : bool
         Place the labels now; False leaves them to whoever lays the figure out (:func:`graphkin.draw.axes.finish`).
+    origin : (float, float)
+        Where the pole is drawn [mm of drawing] (a panel of a figure of several drawn on one axes).
     **style
         Overrides of :class:`graphkin.draw.style.Style` fields.
 
@@ -96,7 +105,8 @@ def draw_motion_polygon(construction, polygon: str = "velocity", *, scale: float
     lab = Labeler(ax, s)
     steps = [st for k, st in enumerate(construction.steps) if st.polygon == polygon and (upto is None or k <= upto)]
     pole_name = "o" if polygon == "velocity" else "o′"
-    every = {name: np.asarray(p, float) / scale for name, p in construction.images[polygon].items()}
+    O = np.asarray(origin, float)
+    every = {name: O + np.asarray(p, float) / scale for name, p in construction.images[polygon].items()}
     shown = {pole_name} | {name for st in steps for name in st.points}
     images = {name: p for name, p in every.items() if name in shown}
     pts = list(every.values())
@@ -119,14 +129,14 @@ def draw_motion_polygon(construction, polygon: str = "velocity", *, scale: float
         if st.kind == "image":
             continue
         for ln in st.lines:
-            (x, y), (ux, uy) = np.asarray(ln.point) / scale, ln.direction
-            end = np.asarray(next(iter(st.points.values()), ln.point), float) / scale
+            (x, y), (ux, uy) = O + np.asarray(ln.point) / scale, ln.direction
+            end = O + np.asarray(next(iter(st.points.values()), ln.point), float) / scale
             t = (end - (x, y)) @ np.array([ux, uy])
             reach = 0.15 * span
             a, b = (x, y) + np.array([ux, uy]) * (min(0.0, t) - reach), (x, y) + np.array([ux, uy]) * (max(0.0, t) + reach)
             drawn.add(line(ax, [a[0], b[0]], [a[1], b[1]], color=s.ink, lw=s.thin_lw, ls="--", alpha=0.5, zorder=3.2))
         for v in st.vectors:
-            tail, tip = np.asarray(v.tail, float) / scale, np.asarray(v.tip, float) / scale
+            tail, tip = O + np.asarray(v.tail, float) / scale, O + np.asarray(v.tip, float) / scale
             key = (v.name, tuple(np.round(tail, 9)), tuple(np.round(tip, 9)))
             if key in seen or float(np.hypot(*(tip - tail))) <= floor:
                 continue

@@ -13,6 +13,7 @@ prints.
 
 from __future__ import annotations
 
+import numpy as np
 from matplotlib import rcParams
 from matplotlib.figure import Figure
 from matplotlib.transforms import Affine2D
@@ -22,7 +23,7 @@ from graphkin.draw.axes import BareAxes, setup_axes
 from graphkin.draw.fbd import draw_free_body
 from graphkin.draw.labels import _offset, measuring_renderer
 from graphkin.draw.mechanism import draw_mechanism
-from graphkin.draw.motion import draw_motion_polygon
+from graphkin.draw.motion import draw_motion_polygon, motion_extent
 from graphkin.draw.polygon import draw_force_polygon, polygon_vertices, step_title
 from graphkin.draw.scales import nice_round, scale_bar
 from graphkin.draw.steps import draw_step_geometry
@@ -236,6 +237,75 @@ def draw_free_bodies(construction, links=None, *, length_scale: float, force_sca
     return fig
 
 
+def _one_axes(fig, width: float):
+    """An axes over the whole figure whose data units are millimetres of paper, for panels drawn at their printed
+    size (:func:`_lay_out_on`): one axes rather than one per panel, which cost as much again as drawing a polygon."""
+    ax = fig.add_axes([0, 0, 1, 1], axes_class=BareAxes)
+    setup_axes(ax)
+    return ax
+
+
+def _lay_out_on(ax, extents, titles, s, *, width: float, strip: float) -> tuple[float, list]:
+    """Lay out panels drawn on one axes in millimetres of paper (:func:`_one_axes`), each under its title.
+
+    Parameters
+    ----------
+    extents : list of (ndarray, ndarray)
+        Each panel's lower left and upper right corners [mm] as drawn from the origin, its margins included.
+    titles : list of str
+    s : graphkin.draw.style.Style
+
+    Returns
+    -------
+    height : float
+        The figure's height [mm]; the figure and the view are sized to it.
+    panels : list of (ndarray, tuple, Text)
+        For each panel, the origin to draw it from, its box (x0, y0, x1, y1) [mm] for its labels
+        (:attr:`graphkin.draw.labels.Labeler.room`), and its title.
+    """
+    fig = ax.get_figure(root=True)
+    renderer = measuring_renderer(fig)
+    texts, sizes = [], []
+    for (lo, hi), title in zip(extents, titles):
+        w, h = np.asarray(hi, float) - lo
+        # The title as set_title places it: centred 6 pt over the panel, on its baseline.
+        t = ax.text(0.0, 0.0, title, fontsize=s.title_size, color=s.ink, ha="center", va="baseline", clip_on=False)
+        bb = text_extent(t, renderer)
+        tw, th = bb.width / fig.dpi * 25.4, bb.height / fig.dpi * 25.4 + 1.5
+        texts.append(t)
+        sizes.append((float(w), float(h), max(float(w), tw), float(h) + th))
+    height, corners = layout(sizes, width=width, strip=strip)
+    fig.set_size_inches(width / 25.4, height / 25.4)
+    ax.set_xlim(0.0, width)
+    ax.set_ylim(0.0, height)
+    panels = []
+    for t, (x, y), (w, h, _, _), (lo, _) in zip(texts, corners, sizes, extents):
+        t.set_position((x + w / 2, y + h))
+        t.set_transform(_offset(ax, (0.0, rcParams["axes.titlepad"])))
+        panels.append((np.array([x, y]) - lo, (x, y, x + w, y + h), t))
+    return height, panels
+
+
+def _place_on(ax, drawings, width: float, height: float):
+    """Place the labels of panels drawn on one axes (:func:`_lay_out_on`), once they are all drawn.
+
+    ``drawings`` holds each panel's Drawn, its box and its title. Each panel's labels keep to its box, off every
+    title and off the labels placed before them (a label may leave its panel when there is no room in it).
+    """
+    # Each drawing merged its limits into the view: the figure's own are the view.
+    ax.set_xlim(0.0, width)
+    ax.set_ylim(0.0, height)
+    titles = [title for _, _, title in drawings]
+    placed = []
+    for drawn, room, _ in drawings:
+        lab = drawn.labeler
+        lab.room = room
+        lab.avoid(titles + placed)
+        lab.place()
+        drawn += lab.leaders
+        placed += [t for t, _ in lab.items]
+
+
 def draw_polygons(steps, *, force_scale: float, titles=None, driver_name=None, width: float = FIGURE_WIDTH,
                   **style) -> Figure:
     """Force polygons at one force scale, side by side, printed at it.
@@ -256,53 +326,24 @@ def draw_polygons(steps, *, force_scale: float, titles=None, driver_name=None, w
     Returns
     -------
     Figure
+        One axes, its data units millimetres of paper: each polygon is drawn at 1 mm = X N, from its own origin.
     """
     s = _style.resolve(**style)
     fig = _new_figure(width)
-    # One axes for every polygon and the scale bar, its data units millimetres of paper: each polygon is drawn
-    # at 1 mm = X N already, so it only needs moving to its place (its origin). A panel of axes per polygon
-    # cost as much again as drawing the polygon.
-    ax = fig.add_axes([0, 0, 1, 1], axes_class=BareAxes)
-    setup_axes(ax)
-    renderer = measuring_renderer(fig)
-    pad = 9.0  # the margin each polygon keeps around it for its labels (draw_force_polygon's on paper) [mm]
-    panels, sizes = [], []
-    for k, step in enumerate(steps):
+    ax = _one_axes(fig, width)
+    pad = 9.0  # the margin each polygon keeps for its labels, as draw_force_polygon keeps it on paper [mm]
+    extents = []
+    for step in steps:
         _, _, verts = polygon_vertices(step, force_scale)
-        lo = verts.min(axis=0) - pad
-        w, h = verts.max(axis=0) + pad - lo
-        # The title as set_title places it: centred 6 pt over the panel, on its baseline.
-        title = ax.text(0.0, 0.0, _names(titles[k]) if titles is not None else step_title(step),
-                        fontsize=s.title_size, color=s.ink, ha="center", va="baseline", clip_on=False)
-        bb = text_extent(title, renderer)
-        tw, th = bb.width / fig.dpi * 25.4, bb.height / fig.dpi * 25.4 + 1.5
-        panels.append((step, lo, title))
-        sizes.append((float(w), float(h), max(float(w), tw), float(h) + th))
-    height, corners = layout(sizes, width=width, strip=STRIP)
-    fig.set_size_inches(width / 25.4, height / 25.4)
-    ax.set_xlim(0.0, width)
-    ax.set_ylim(0.0, height)
-    labelers = []
-    for (step, lo, title), (x, y), (w, h, _, _) in zip(panels, corners, sizes):
-        title.set_position((x + w / 2, y + h))
-        title.set_transform(_offset(ax, (0.0, rcParams["axes.titlepad"])))
-        drawn = draw_force_polygon(step, scale=force_scale, ax=ax, origin=(x, y) - lo, title=False,
+        extents.append((verts.min(axis=0) - pad, verts.max(axis=0) + pad))
+    names = [_names(titles[k]) if titles is not None else step_title(step) for k, step in enumerate(steps)]
+    height, panels = _lay_out_on(ax, extents, names, s, width=width, strip=STRIP)
+    drawings = []
+    for step, (origin, room, title) in zip(steps, panels):
+        drawn = draw_force_polygon(step, scale=force_scale, ax=ax, origin=origin, title=False,
                                    driver_name=driver_name, paper=1.0, bar=False, place=False, **style)
-        lab = ax._graphkin_labeler
-        lab.room = (x, y, x + w, y + h)
-        labelers.append((lab, drawn, title))
-    # Each polygon's limits were merged into the view as it was drawn: the figure's own are the view.
-    ax.set_xlim(0.0, width)
-    ax.set_ylim(0.0, height)
-    titles_drawn = [title for _, _, title in labelers]
-    placed = []
-    for lab, drawn, title in labelers:
-        # Off every title, and off the labels of the polygons placed before (a label may leave its panel when
-        # there is no room in it).
-        lab.avoid(titles_drawn + placed)
-        lab.place()
-        drawn += lab.leaders
-        placed += [t for t, _ in lab.items]
+        drawings.append((drawn, room, title))
+    _place_on(ax, drawings, width, height)
     scale_strip(fig, height, force_scale=force_scale, width=width, ax=ax, **style)
     return fig
 
@@ -418,21 +459,30 @@ def draw_motion_paper(construction, *, velocity_scale: float, acceleration_scale
     Returns
     -------
     Figure
-        Two panels (one before the acceleration polygon is begun) and a strip of scale bars.
+        One axes, its data units millimetres of paper: two polygons (one before the acceleration polygon is
+        begun), each drawn from its own origin, and a strip of scale bars.
     """
+    s = _style.resolve(**style)
     fig = _new_figure(width)
-    panels = []
+    ax = _one_axes(fig, width)
     shown = ["velocity", "acceleration"]
     if upto is not None and construction.steps[upto].polygon == "velocity":
         shown = ["velocity"]
-    for n, polygon in enumerate(shown):
-        ax = fig.add_axes([0, 0, 0.2, 0.2], axes_class=BareAxes)
-        title = titles[n] if titles is not None else f"{polygon.capitalize()} polygon"
-        draw_motion_polygon(construction, polygon, scale=velocity_scale if polygon == "velocity" else
-                            acceleration_scale, ax=ax, values=values, title=title, upto=upto, paper=1.0, bar=False,
-                            place=False, **style)
-        panels.append((ax, 1.0))
-    height = arrange(fig, panels, width=width, strip=STRIP)
+    scales = {"velocity": velocity_scale, "acceleration": acceleration_scale}
+    pad = 9.0  # the margin each polygon keeps for its labels, as draw_motion_polygon keeps it on paper [mm]
+    extents = []
+    for polygon in shown:
+        lo, hi = motion_extent(construction, polygon, scales[polygon])
+        extents.append((lo - pad, hi + pad))
+    names = [titles[n] if titles is not None else f"{polygon.capitalize()} polygon" for n, polygon in enumerate(shown)]
+    height, panels = _lay_out_on(ax, extents, names, s, width=width, strip=STRIP)
+    drawings = []
+    for polygon, (origin, room, title) in zip(shown, panels):
+        drawn = draw_motion_polygon(construction, polygon, scale=scales[polygon], ax=ax, values=values, title=False,
+                                    upto=upto, paper=1.0, bar=False, place=False, origin=origin, **style)
+        drawings.append((drawn, room, title))
+    _place_on(ax, drawings, width, height)
     scale_strip(fig, height, velocity_scale=velocity_scale,
-                acceleration_scale=acceleration_scale if "acceleration" in shown else None, width=width, **style)
+                acceleration_scale=acceleration_scale if "acceleration" in shown else None, width=width, ax=ax,
+                **style)
     return fig
