@@ -222,6 +222,11 @@ class Labeler:
         self.room = None
         """The box (x0, y0, x1, y1) [data] the labels are kept in: a panel of a figure drawn on one axes with
         others (:func:`graphkin.draw.paper.draw_polygons`). None: the axes' own box."""
+        self.taken = []
+        """Boxes (x0, y0, x1, y1) [display] that texts placed elsewhere take: the labels keep off them too (the
+        labels of the panels placed before, already measured)."""
+        self.placed = []
+        """The boxes [display] :meth:`place` gave the labels, for the labels placed after them to keep off."""
 
     def segment(self, p, q, width=0.0, *, soft=False):
         """An obstacle segment (data coordinates), ``width`` points wide; ``soft`` for a dashed line."""
@@ -330,6 +335,9 @@ class Labeler:
             bb = text_extent(t, renderer)
             placed.append((bb.x0, bb.y0, bb.x1, bb.y1))
         placed += [text_box(t, renderer) for t in self.fixed]
+        placed += [tuple(b) for b in self.taken]
+        first = len(placed)
+        self.placed = []
 
         def outside(b, box, top=1.0):
             return (np.maximum(0.0, box[0] - b[:, 0]) + np.maximum(0.0, b[:, 2] - box[2])
@@ -389,6 +397,7 @@ class Labeler:
             t.set_ha(ha)
             t.set_va(va)
             placed.append(tuple(boxes[k]))
+        self.placed = placed[first:]
 
     @staticmethod
     def _on_leaders(boxes, leaders):

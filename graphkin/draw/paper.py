@@ -295,15 +295,15 @@ def _place_on(ax, drawings, width: float, height: float):
     # Each drawing merged its limits into the view: the figure's own are the view.
     ax.set_xlim(0.0, width)
     ax.set_ylim(0.0, height)
-    titles = [title for _, _, title in drawings]
-    placed = []
+    renderer = measuring_renderer(ax.get_figure(root=True))
+    taken = [tuple(text_extent(title, renderer).extents) for _, _, title in drawings]
     for drawn, room, _ in drawings:
         lab = drawn.labeler
         lab.room = room
-        lab.avoid(titles + placed)
+        lab.taken = list(taken)
         lab.place()
         drawn += lab.leaders
-        placed += [t for t, _ in lab.items]
+        taken += lab.placed
 
 
 def draw_polygons(steps, *, force_scale: float, titles=None, driver_name=None, width: float = FIGURE_WIDTH,
