@@ -14,8 +14,10 @@ from matplotlib import _api, _mathtext, rcParams
 from matplotlib.backends import backend_svg
 from matplotlib.backends.backend_agg import RendererAgg
 from matplotlib.font_manager import FontProperties, findfont
+from matplotlib.ft2font import LoadFlags
 from matplotlib.mathtext import MathTextParser
 from matplotlib.path import Path
+from matplotlib.patheffects import withStroke
 from matplotlib.text import Text
 from matplotlib.textpath import TextToPath
 from matplotlib.transforms import Affine2D
@@ -104,9 +106,34 @@ def input_text(construction) -> str:
 
 def halo(width: float = 2.6):
     """A white outline behind text, so a label stays legible where a line runs under it."""
-    from matplotlib.patheffects import withStroke
+    return _Halo(linewidth=width, foreground="white")
 
-    return withStroke(linewidth=width, foreground="white")
+
+class _Halo(withStroke):
+    """matplotlib's ``withStroke`` (the outline stroked, then drawn as it is) that an SVG file's renderer draws in
+    one call.
+
+    A haloed text's outline is drawn twice; through matplotlib's path effects each pass finds the outline's
+    placement and style anew, a twentieth of a handout's figure. :meth:`_RendererSVG.draw_haloed` writes both
+    passes at once, the same bytes; any other renderer, and an outline it does not take, is drawn as
+    ``withStroke`` draws it. A halo has no offset (``Stroke``'s offset is for a shadow).
+    """
+
+    def draw_path(self, renderer, gc, tpath, affine, rgbFace):
+        # A MixedModeRenderer (savefig's, around the SVG renderer) hands attributes on to the renderer it holds.
+        draw_haloed = getattr(renderer, "draw_haloed", None)
+        if draw_haloed is None or self._offset != (0, 0):
+            return super().draw_path(renderer, gc, tpath, affine, rgbFace)
+        # The stroke's graphics context as Stroke.draw_path makes it.
+        stroke = renderer.new_gc()
+        stroke.copy_properties(gc)
+        stroke = self._update_gc(stroke, self._gc)
+        try:
+            if draw_haloed(stroke, gc, tpath, affine, rgbFace):
+                return
+        finally:
+            stroke.restore()
+        super().draw_path(renderer, gc, tpath, affine, rgbFace)
 
 
 class _TextToPathOnce(TextToPath):
@@ -154,23 +181,61 @@ class _TextToPathOnce(TextToPath):
 
     @functools.lru_cache(4096)
     def _glyphs(self, font, s, features, language):
-        """Each glyph of ``s`` (its name, x, y and scale) and the outline of each glyph, in order of first use."""
-        info, paths, _ = super().get_glyphs_with_font(font, s, features=features, language=language)
-        for verts, codes in paths.values():
-            verts.flags.writeable = codes.flags.writeable = False  # shared by every text that uses the glyph
+        """Each glyph of ``s`` (its name, x, y and scale) and the outline of each glyph, in order of first use.
+
+        ``TextToPath.get_glyphs_with_font``, with each glyph's outline loaded once per process
+        (:meth:`_glyph`) rather than once per string: ``_text_helpers.layout``, which it lays the string out
+        with, loads every glyph as it goes, a third of the time of a new label. This is that function's loop
+        (matplotlib 3.11) without the loading: ``FT2Font._layout`` shapes the string (libraqm) and gives each
+        glyph's font, index and place.
+        """
+        info, paths = [], OrderedDict()
+        for item in font._layout(s, LoadFlags.NO_HINTING, features=features, language=language):
+            glyph_repr, path = self._glyph(item.ft_object, item.glyph_index)
+            info.append((glyph_repr, item.x, item.y, 1.0))
+            paths.setdefault(glyph_repr, path)
         return tuple(info), paths
+
+    _GLYPHS: dict = {}
+
+    def _glyph(self, font, index):
+        """A glyph's name (``_get_glyph_repr``) and outline (vertices [font units], codes), loaded once per process.
+
+        Every outline is loaded with the font set to FONT_SCALE at DPI, as ``TextToPath`` loads them (a text's font
+        comes so from ``_get_font``; a formula's fonts are set so before each glyph is loaded, as
+        ``get_glyphs_mathtext`` does), so a glyph's outline follows from its font file and index.
+        """
+        key = (font.fname, index)
+        known = self._GLYPHS.get(key)
+        if known is None:
+            font.set_size(self.FONT_SCALE, self.DPI)
+            font.load_glyph(index, flags=LoadFlags.NO_HINTING)
+            verts, codes = font.get_path()
+            verts.flags.writeable = codes.flags.writeable = False  # shared by every text that uses the glyph
+            known = self._GLYPHS[key] = (self._get_glyph_repr(font, index), (verts, codes))
+        return known
 
     @functools.lru_cache(2048)
     def _outline(self, s, prop, font, ismath, features, language):
+        # TextToPath.get_text_path's vertices from the glyphs, each loaded once (:meth:`_glyph`), a glyph at a time
+        # rather than a vertex row at a time (the same numbers).
         if ismath:
-            verts, codes = super().get_text_path(prop, s, ismath, features=features, language=language)
+            # TextToPath.get_glyphs_mathtext (matplotlib 3.11), its glyphs loaded once.
+            math = prop.copy()
+            math.set_size(self.FONT_SCALE)
+            _, _, _, glyphs, rects = self.mathtext_parser.parse(s, self.DPI, math)
+            outlines = [(self._glyph(f, i)[1], size / self.FONT_SCALE, x, y) for f, size, _, i, x, y in glyphs]
+            verts = [v * k + [x, y] for (v, _), k, x, y in outlines]
+            codes = [c for (_, c), _, _, _ in outlines]
+            for x, y, w, h in rects:
+                verts.append(np.array([(x, y), (x, y + h), (x + w, y + h), (x + w, y), (x, y), (0, 0)], float))
+                codes.append(np.array([Path.MOVETO] + [Path.LINETO] * 4 + [Path.CLOSEPOLY], np.uint8))
         else:
-            # TextToPath.get_text_path's vertices from the glyphs laid out once, a glyph at a time rather than a
-            # vertex row at a time (the same numbers).
             info, paths = self._glyphs(self._get_font(prop), s, features, language)
-            verts = [paths[r][0] * size + [x, y] for r, x, y, size in info] or [np.empty((0, 2))]
-            codes = [paths[r][1] for r, _, _, _ in info] or [np.empty(0, np.uint8)]
-            verts, codes = np.concatenate(verts), np.concatenate(codes)
+            verts = [paths[r][0] * size + [x, y] for r, x, y, size in info]
+            codes = [paths[r][1] for r, _, _, _ in info]
+        verts = np.concatenate(verts or [np.empty((0, 2))])
+        codes = np.concatenate(codes or [np.empty(0, np.uint8)])
         # Two arrays rather than matplotlib's list of vertex rows (a tenth of the memory), read-only because
         # every figure shares them: the renderer only reads them into a Path.
         verts, codes = np.asarray(verts, float).reshape(-1, 2), np.asarray(codes, np.uint8)
@@ -251,9 +316,10 @@ class _MathTextOnce(MathTextParser):
     _parser = None
     _fontsets: dict = {}
 
-    @functools.lru_cache(50)
+    @functools.lru_cache(1024)
     def _parse_cached(self, s, dpi, prop, antialiased, load_glyph_flags):
-        # MathTextParser._parse_cached (matplotlib 3.11), with the parser and the fontset kept.
+        # MathTextParser._parse_cached (matplotlib 3.11), with the parser and the fontset kept; more labels kept than
+        # its 50, so that a label measured to place it is not parsed again when its file draws it.
         if _MathTextOnce._parser is None:
             _MathTextOnce._parser = _MathOnceParser()
         if prop is None:
@@ -327,14 +393,49 @@ class _RendererSVG(backend_svg.RendererSVG):
 
     def draw_path(self, gc, path, transform, rgbFace=None):
         verts = path.vertices
-        if (getattr(verts, "codes", None) is None or gc.get_url() is not None or gc.get_hatch() is not None
-                or gc.get_sketch_params() is not None or gc.get_dashes()[1] is not None
-                or self._get_clip_attrs(gc)):
+        m = self._outline_matrix(gc, verts, transform.get_matrix()) if self._takes(gc, verts) else None
+        if m is None:
             return super().draw_path(gc, path, transform, rgbFace)
-        m = self._make_flip_transform(transform).get_matrix()
+        self._use(gc, verts, m, rgbFace)
+
+    def draw_haloed(self, stroke, gc, path, affine, rgbFace=None) -> bool:
+        """A haloed text's two passes (see :class:`_Halo`): its outline stroked with ``stroke``, then drawn with
+        ``gc``; False, having drawn nothing, if either is not a text outline this renderer writes as a ``<use>``.
+
+        The same bytes as matplotlib's ``withStroke`` through :meth:`draw_path`: the stroke's placement is
+        ``affine + Affine2D().translate(0, 0)`` there, a product with the identity matrix (which turns a
+        ``-0.0`` into ``0.0``), and is found by that same product here.
+        """
+        verts = path.vertices
+        if not (self._takes(stroke, verts) and self._takes(gc, verts)):
+            return False
+        a = affine.get_matrix()
+        halo = self._outline_matrix(stroke, verts, np.dot(_NO_OFFSET, a))
+        m = self._outline_matrix(gc, verts, a)
+        if halo is None or m is None:
+            return False
+        self._use(stroke, verts, halo, rgbFace)
+        self._use(gc, verts, m, rgbFace)
+        return True
+
+    def _takes(self, gc, verts) -> bool:
+        """Whether a path is a text outline (:class:`_Outline`) drawn plainly: no clip, dash, hatch, link or
+        sketch."""
+        return not (getattr(verts, "codes", None) is None or gc.get_url() is not None or gc.get_hatch() is not None
+                    or gc.get_sketch_params() is not None or gc.get_dashes()[1] is not None
+                    or self._get_clip_attrs(gc))
+
+    def _outline_matrix(self, gc, verts, matrix):
+        """The matrix that places an outline drawn with the affine ``matrix`` in the file (y down), as
+        ``_make_flip_transform`` makes it; None if it flattens the outline (drawn as matplotlib draws it)."""
+        m = np.dot(Affine2D().scale(1, -1).translate(0, self.height).get_matrix(), matrix)
+        if not abs(m[0, 0] * m[1, 1] - m[0, 1] * m[1, 0]):
+            return None
+        return m
+
+    def _use(self, gc, verts, m, rgbFace):
+        """A ``<use>`` of the outline ``verts`` placed by ``m``, its definition written first if the file has none."""
         scale = abs(m[0, 0] * m[1, 1] - m[0, 1] * m[1, 0]) ** 0.5
-        if not scale:
-            return super().draw_path(gc, path, transform, rgbFace)
         style = self._get_style_dict(gc, rgbFace)
         if "stroke" in style:
             style["stroke-width"] = backend_svg._short_float_fmt(gc.get_linewidth() / scale)
@@ -352,6 +453,10 @@ class _RendererSVG(backend_svg.RendererSVG):
         place = backend_svg._generate_transform([("matrix", (m[0, 0], m[1, 0], m[0, 1], m[1, 1], m[0, 2], m[1, 2]))])
         self.writer.element("use", attrib={"xlink:href": f"#{known[1]}"}, transform=place,
                             style=backend_svg._generate_css(style))
+
+
+_NO_OFFSET = Affine2D().translate(0, 0).get_matrix()
+"""The matrix of a path effect's offset of (0, 0) (see :meth:`_RendererSVG.draw_haloed`)."""
 
 
 _BOXES: dict = {}

@@ -20,7 +20,7 @@ typst = pytest.importorskip("typst")
 Image = pytest.importorskip("PIL.Image")
 
 
-def _figure() -> Figure:
+def _figure(halo=halo) -> Figure:
     fig = Figure(figsize=(3.0, 1.6), dpi=100)
     ax = fig.add_axes([0, 0, 1, 1])
     ax.set_axis_off()
@@ -35,16 +35,17 @@ def _figure() -> Figure:
     return fig
 
 
-def _svg(swap: bool) -> str:
+def _svg(swap: bool, fig=None) -> str:
     out = io.BytesIO()
     from matplotlib import rc_context
 
+    fig = fig or _figure()
     with rc_context({"svg.hashsalt": "test"}):
         if swap:
             with svg_text_laid_out_once():
-                _figure().savefig(out, format="svg", metadata={"Date": None})
+                fig.savefig(out, format="svg", metadata={"Date": None})
         else:
-            _figure().savefig(out, format="svg", metadata={"Date": None})
+            fig.savefig(out, format="svg", metadata={"Date": None})
     return out.getvalue().decode("utf-8")
 
 
@@ -105,6 +106,36 @@ def test_a_text_outline_from_the_glyphs_laid_out_once_is_matplotlibs(text, weigh
     assert np.array_equal(codes, np.asarray(want_codes, np.uint8))
     # Shared by every figure: nobody may change them.
     assert not verts.flags.writeable and not codes.flags.writeable
+
+
+def test_a_halo_drawn_in_one_call_writes_what_withstroke_writes(monkeypatch):
+    """The SVG renderer draws a halo's two passes at once (``_RendererSVG.draw_haloed``): the file is the one
+    matplotlib's own ``withStroke`` gives through the same renderer, byte for byte; elsewhere a halo is a
+    ``withStroke``."""
+    from matplotlib.patheffects import withStroke
+
+    from graphkin.draw.text import _RendererSVG
+
+    def stroke(width=2.6):
+        return withStroke(linewidth=width, foreground="white")
+
+    drawn = []
+    plain = _RendererSVG.draw_haloed
+    monkeypatch.setattr(_RendererSVG, "draw_haloed", lambda *a: drawn.append(plain(*a)) or drawn[-1])
+    ours = _svg(True, _figure())
+    assert drawn == [True] * 3  # each of the three haloed texts in one call
+    theirs = _svg(True, _figure(halo=stroke))
+    assert len(drawn) == 3
+    assert ours == theirs
+    assert ours.count("stroke: #ffffff") == 3
+    assert isinstance(halo(), withStroke)
+    # Without the SVG renderer (Agg), the same pixels as withStroke.
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    a, b = _figure(), _figure(halo=stroke)
+    FigureCanvasAgg(a).draw()
+    FigureCanvasAgg(b).draw()
+    assert np.array_equal(np.asarray(a.canvas.buffer_rgba()), np.asarray(b.canvas.buffer_rgba()))
 
 
 FORMULAS = [r"$\mathregular{a^{t}_{BA}}$ = 273.3 m/s²", r"$\mathregular{a^{t}_{BA}}$ = 9.125 m/s²",
@@ -186,3 +217,22 @@ def test_a_text_laid_out_once_is_laid_out_again_when_it_changes():
         for t in fresh.axes[0].texts:
             t.set(**change)
         assert got == saved(fresh), change
+
+
+@pytest.mark.parametrize("text", FORMULAS)
+@pytest.mark.parametrize("math_font", ["dejavusans", "cm"])
+def test_a_formula_outline_from_glyphs_loaded_once_is_matplotlibs(text, math_font):
+    """A formula's outline, each glyph loaded once per process, has matplotlib's vertices and codes, number for
+    number, whether its glyphs are new or already loaded (a text's own in its second round)."""
+    from matplotlib.font_manager import FontProperties
+    from matplotlib.textpath import TextToPath
+
+    from graphkin.draw.text import _TEXT_TO_PATH
+
+    for size in (9, 10.5):
+        prop = FontProperties(size=size, math_fontfamily=math_font)
+        want_verts, want_codes = TextToPath().get_text_path(prop, text, ismath=True)
+        verts, codes = _TEXT_TO_PATH.get_text_path(prop, text, ismath=True)
+        assert np.array_equal(verts, np.asarray(want_verts, float).reshape(-1, 2))
+        assert np.array_equal(codes, np.asarray(want_codes, np.uint8))
+        assert len(codes) > 0
