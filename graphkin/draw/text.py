@@ -4,10 +4,12 @@ and text laid out once per process in SVG output."""
 from __future__ import annotations
 
 import functools
+import math
 import re
 import threading
 from collections import OrderedDict
 from contextlib import contextmanager
+from typing import NamedTuple
 
 import numpy as np
 from matplotlib import _api, _mathtext, rcParams
@@ -136,6 +138,20 @@ class _Halo(withStroke):
         super().draw_path(renderer, gc, tpath, affine, rgbFace)
 
 
+class _Glyph(NamedTuple):
+    """A glyph as :class:`_TextToPathOnce` keeps it, its font set to FONT_SCALE at DPI."""
+
+    name: str
+    """``TextToPath._get_glyph_repr``: the glyph's id in an SVG file."""
+    path: tuple
+    """Its outline: vertices [font units] and codes, read-only."""
+    advance: int
+    """How far it moves the pen [64ths of a font unit], unhinted."""
+    low: float
+    high: float
+    """The bottom and top of its control box [64ths of a font unit]; 0 for a glyph with no outline."""
+
+
 class _TextToPathOnce(TextToPath):
     """Text laid out, and turned into outlines, once per process for every SVG renderer.
 
@@ -159,7 +175,13 @@ class _TextToPathOnce(TextToPath):
 
     @functools.lru_cache(8192)
     def _size(self, s, prop, font, ismath):
-        return super().get_text_width_height_descent(s, prop, ismath)
+        if ismath:
+            return super().get_text_width_height_descent(s, prop, ismath)
+        # TextToPath.get_text_width_height_descent (matplotlib 3.11), its FT2Font.set_text, a shaping of the string
+        # of its own, replaced by the layout that the text's outline is drawn from (:meth:`_glyphs`).
+        w, h, d = self._glyphs(self._get_font(prop), s, None, None)[2]
+        scale = prop.get_size_in_points() / self.FONT_SCALE
+        return w / 64.0 * scale, h / 64.0 * scale, d / 64.0 * scale
 
     def get_text_path(self, prop, s, ismath=False, *, features=None, language=None):
         if ismath == "TeX":
@@ -170,7 +192,7 @@ class _TextToPathOnce(TextToPath):
                              language=None):
         # Its callers (the SVG renderer's text drawn as glyphs, TextToPath.get_text_path, :meth:`_outline`) take
         # ``font`` from _get_font, which sets it to FONT_SCALE at DPI: the glyphs depend on the font and string only.
-        info, paths = self._glyphs(font, s, None if features is None else tuple(features), language)
+        info, paths, _ = self._glyphs(font, s, None if features is None else tuple(features), language)
         if glyph_map is None:
             glyph_map = OrderedDict()
         new = OrderedDict() if return_new_glyphs_only else glyph_map
@@ -181,38 +203,53 @@ class _TextToPathOnce(TextToPath):
 
     @functools.lru_cache(4096)
     def _glyphs(self, font, s, features, language):
-        """Each glyph of ``s`` (its name, x, y and scale) and the outline of each glyph, in order of first use.
+        """Each glyph of ``s`` (its name, x, y and scale), the outline of each glyph in order of first use, and the
+        string's width, height and descent [64ths of a font unit] as ``FT2Font.set_text`` gives them.
 
         ``TextToPath.get_glyphs_with_font``, with each glyph's outline loaded once per process
         (:meth:`_glyph`) rather than once per string: ``_text_helpers.layout``, which it lays the string out
         with, loads every glyph as it goes, a third of the time of a new label. This is that function's loop
         (matplotlib 3.11) without the loading: ``FT2Font._layout`` shapes the string (libraqm) and gives each
         glyph's font, index and place.
+
+        The size is what ``set_text`` (a second shaping of the same string) makes of the same layout: the width is
+        where the pen ends, the last glyph's place plus its advance; the height and descent are those of the box
+        around every glyph's control box (its outline's points) at its place, a glyph with no outline counting as
+        the point where it stands, and all three are 0 for a string with no glyph. All are whole numbers of 64ths,
+        so the floats here are exact (``tests/draw/test_svg_text.py`` compares them with ``set_text``'s).
         """
         info, paths = [], OrderedDict()
+        low, high = math.inf, -math.inf
         for item in font._layout(s, LoadFlags.NO_HINTING, features=features, language=language):
-            glyph_repr, path = self._glyph(item.ft_object, item.glyph_index)
-            info.append((glyph_repr, item.x, item.y, 1.0))
-            paths.setdefault(glyph_repr, path)
-        return tuple(info), paths
+            glyph = self._glyph(item.ft_object, item.glyph_index)
+            info.append((glyph.name, item.x, item.y, 1.0))
+            paths.setdefault(glyph.name, glyph.path)
+            low, high = min(low, glyph.low + item.y * 64), max(high, glyph.high + item.y * 64)
+        if not info:
+            return (), paths, (0.0, 0.0, 0.0)
+        # 0.0 - low: set_text's descent of 0 is a 0, never a -0.0.
+        return tuple(info), paths, (info[-1][1] * 64 + glyph.advance, high - low, 0.0 - low)
 
     _GLYPHS: dict = {}
 
-    def _glyph(self, font, index):
-        """A glyph's name (``_get_glyph_repr``) and outline (vertices [font units], codes), loaded once per process.
+    def _glyph(self, font, index) -> _Glyph:
+        """A glyph's name, outline, advance and height, loaded once per process.
 
         Every outline is loaded with the font set to FONT_SCALE at DPI, as ``TextToPath`` loads them (a text's font
         comes so from ``_get_font``; a formula's fonts are set so before each glyph is loaded, as
-        ``get_glyphs_mathtext`` does), so a glyph's outline follows from its font file and index.
+        ``get_glyphs_mathtext`` does), so a glyph follows from its font file and index.
         """
         key = (font.fname, index)
         known = self._GLYPHS.get(key)
         if known is None:
             font.set_size(self.FONT_SCALE, self.DPI)
-            font.load_glyph(index, flags=LoadFlags.NO_HINTING)
+            advance = font.load_glyph(index, flags=LoadFlags.NO_HINTING).horiAdvance
             verts, codes = font.get_path()
             verts.flags.writeable = codes.flags.writeable = False  # shared by every text that uses the glyph
-            known = self._GLYPHS[key] = (self._get_glyph_repr(font, index), (verts, codes))
+            # Its control box's bottom and top: the outline's points, not the (0, 0) that closes each contour.
+            ys = verts[codes != Path.CLOSEPOLY, 1] * 64
+            low, high = (float(ys.min()), float(ys.max())) if len(ys) else (0.0, 0.0)
+            known = self._GLYPHS[key] = _Glyph(self._get_glyph_repr(font, index), (verts, codes), advance, low, high)
         return known
 
     @functools.lru_cache(2048)
@@ -224,14 +261,14 @@ class _TextToPathOnce(TextToPath):
             math = prop.copy()
             math.set_size(self.FONT_SCALE)
             _, _, _, glyphs, rects = self.mathtext_parser.parse(s, self.DPI, math)
-            outlines = [(self._glyph(f, i)[1], size / self.FONT_SCALE, x, y) for f, size, _, i, x, y in glyphs]
+            outlines = [(self._glyph(f, i).path, size / self.FONT_SCALE, x, y) for f, size, _, i, x, y in glyphs]
             verts = [v * k + [x, y] for (v, _), k, x, y in outlines]
             codes = [c for (_, c), _, _, _ in outlines]
             for x, y, w, h in rects:
                 verts.append(np.array([(x, y), (x, y + h), (x + w, y + h), (x + w, y), (x, y), (0, 0)], float))
                 codes.append(np.array([Path.MOVETO] + [Path.LINETO] * 4 + [Path.CLOSEPOLY], np.uint8))
         else:
-            info, paths = self._glyphs(self._get_font(prop), s, features, language)
+            info, paths, _ = self._glyphs(self._get_font(prop), s, features, language)
             verts = [paths[r][0] * size + [x, y] for r, x, y, size in info]
             codes = [paths[r][1] for r, _, _, _ in info]
         verts = np.concatenate(verts or [np.empty((0, 2))])

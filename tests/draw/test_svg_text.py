@@ -236,3 +236,42 @@ def test_a_formula_outline_from_glyphs_loaded_once_is_matplotlibs(text, math_fon
         assert np.array_equal(verts, np.asarray(want_verts, float).reshape(-1, 2))
         assert np.array_equal(codes, np.asarray(want_codes, np.uint8))
         assert len(codes) > 0
+
+
+def _strings(n: int, seed: int) -> list[str]:
+    """Strings such as the figures write (names with subscripts, numbers, units, angles), and any mix of them."""
+    import random
+
+    alphabet = ("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789 .,:;-−+=()[]/°′″∠·×²³"
+                "₀₁₂₃₄₅₆₇₈₉ₐₑₕᵢⱼₖₗₘₙₒₚᵣₛₜᵤᵥₓθωαΔμ%'_|")
+    rng = random.Random(seed)
+    return ["".join(rng.choice(alphabet) for _ in range(rng.randint(1, 14))) for _ in range(n)]
+
+
+EDGES = ["", " ", "  ", "°", " °", "° ", "‾", "_", "AV", "To", "Wa", "fi", "F₂₃ = 1311 N", "θ₁₂ = 30°", "−0.5",
+         "ω₂ = 10 rad/s", "1:2000", "Velocity polygon"]
+
+
+@pytest.mark.parametrize("weight", ["normal", "bold"])
+@pytest.mark.parametrize("style", ["normal", "italic"])
+def test_a_text_measured_from_its_layout_has_set_texts_size(weight, style):
+    """A plain text's width, height and descent [pt], from the layout its outline is drawn from (one shaping, not
+    two): FT2Font.set_text's, number for number and zero for zero, for any string and font size."""
+    from matplotlib.font_manager import FontProperties
+    from matplotlib.textpath import TextToPath
+
+    from graphkin.draw.text import _TEXT_TO_PATH
+
+    theirs = TextToPath()
+    for k, text in enumerate(EDGES + _strings(300, seed=10 * len(weight) + len(style))):
+        prop = FontProperties(size=[7, 8, 9, 10.5, 12][k % 5], weight=weight, style=style)
+        want = theirs.get_text_width_height_descent(text, prop, False)
+        got = _TEXT_TO_PATH.get_text_width_height_descent(text, prop, False)
+        assert got == want, text
+        assert [type(x) for x in got] == [float] * 3
+        assert [np.copysign(1, x) for x in got] == [np.copysign(1, x) for x in want], text
+        # And the outline of the same layout is matplotlib's.
+        verts, codes = _TEXT_TO_PATH.get_text_path(prop, text)
+        want_verts, want_codes = theirs.get_text_path(prop, text)
+        assert np.array_equal(verts, np.asarray(want_verts, float).reshape(-1, 2)), text
+        assert np.array_equal(codes, np.asarray(want_codes, np.uint8)), text
