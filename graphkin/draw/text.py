@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import functools
 import math
+import os
 import re
 import threading
 from collections import OrderedDict
@@ -13,6 +14,7 @@ from typing import NamedTuple
 
 import numpy as np
 from matplotlib import _api, _mathtext, rcParams
+from matplotlib._text_helpers import warn_on_missing_glyph
 from matplotlib.backends import backend_svg
 from matplotlib.backends.backend_agg import RendererAgg
 from matplotlib.font_manager import FontProperties, findfont
@@ -138,6 +140,10 @@ class _Halo(withStroke):
         super().draw_path(renderer, gc, tpath, affine, rgbFace)
 
 
+_LAST_RESORT = "LastResortHE-Regular.ttf"
+"""The font matplotlib falls back on for a character no font of the text's has (it draws a box for it)."""
+
+
 class _Glyph(NamedTuple):
     """A glyph as :class:`_TextToPathOnce` keeps it, its font set to FONT_SCALE at DPI."""
 
@@ -210,7 +216,7 @@ class _TextToPathOnce(TextToPath):
         (:meth:`_glyph`) rather than once per string: ``_text_helpers.layout``, which it lays the string out
         with, loads every glyph as it goes, a third of the time of a new label. This is that function's loop
         (matplotlib 3.11) without the loading: ``FT2Font._layout`` shapes the string (libraqm) and gives each
-        glyph's font, index and place.
+        glyph's font, index and place. A character that no font of the text's has warns, as set_text warns.
 
         The size is what ``set_text`` (a second shaping of the same string) makes of the same layout: the width is
         where the pen ends, the last glyph's place plus its advance; the height and descent are those of the box
@@ -221,6 +227,9 @@ class _TextToPathOnce(TextToPath):
         info, paths = [], OrderedDict()
         low, high = math.inf, -math.inf
         for item in font._layout(s, LoadFlags.NO_HINTING, features=features, language=language):
+            if os.path.basename(item.ft_object.fname) == _LAST_RESORT:
+                # As set_text warns, and _layout does not: no font of the text's has the character.
+                warn_on_missing_glyph(ord(item.char), font.family_name)
             glyph = self._glyph(item.ft_object, item.glyph_index)
             info.append((glyph.name, item.x, item.y, 1.0))
             paths.setdefault(glyph.name, glyph.path)

@@ -275,3 +275,25 @@ def test_a_text_measured_from_its_layout_has_set_texts_size(weight, style):
         want_verts, want_codes = theirs.get_text_path(prop, text)
         assert np.array_equal(verts, np.asarray(want_verts, float).reshape(-1, 2)), text
         assert np.array_equal(codes, np.asarray(want_codes, np.uint8)), text
+
+
+def test_a_character_no_font_has_warns_as_matplotlib_warns():
+    """Measured from its layout, a text with a character that no font of its has still warns (as FT2Font.set_text
+    does): the figure would show a box for it."""
+    import warnings
+
+    from matplotlib.font_manager import FontProperties
+    from matplotlib.textpath import TextToPath
+
+    from graphkin.draw.text import _TEXT_TO_PATH
+
+    text, prop = "F\U0001d6fc = 3 N", FontProperties(size=9)
+    with warnings.catch_warnings(record=True) as theirs:
+        warnings.simplefilter("always")
+        want = TextToPath().get_text_width_height_descent(text, prop, False)
+    with warnings.catch_warnings(record=True) as ours:
+        warnings.simplefilter("always")
+        got = _TEXT_TO_PATH.get_text_width_height_descent(text, prop, False)
+    assert got == want
+    assert [str(w.message) for w in ours] == [str(w.message) for w in theirs]
+    assert "missing from font(s)" in str(ours[0].message)
