@@ -255,6 +255,7 @@ class _TextToPathOnce(TextToPath):
             advance = font.load_glyph(index, flags=LoadFlags.NO_HINTING).horiAdvance
             verts, codes = font.get_path()
             verts.flags.writeable = codes.flags.writeable = False  # shared by every text that uses the glyph
+            _GLYPH_DEFS[id(verts)] = None  # kept for the process: its SVG definition can be kept too
             # Its control box's bottom and top: the outline's points, not the (0, 0) that closes each contour.
             ys = verts[codes != Path.CLOSEPOLY, 1] * 64
             low, high = (float(ys.min()), float(ys.max())) if len(ys) else (0.0, 0.0)
@@ -444,6 +445,28 @@ class _RendererSVG(backend_svg.RendererSVG):
             return super().draw_path(gc, path, transform, rgbFace)
         self._use(gc, verts, m, rgbFace)
 
+    def _update_glyph_map_defs(self, glyph_map_new):
+        """``RendererSVG._update_glyph_map_defs`` (matplotlib 3.11), each glyph's path data made once per process.
+
+        A text drawn without a halo is a ``<use>`` of each glyph, and each file defines the glyphs it uses, its
+        outline converted to path data anew for every file. A glyph that :class:`_TextToPathOnce` loaded keeps its
+        arrays for the process, and its data is kept with their id (``_GLYPH_DEFS``); any other is converted as
+        matplotlib converts it.
+        """
+        writer = self.writer
+        if glyph_map_new:
+            writer.start("defs")
+            for glyph_repr, (vertices, codes) in glyph_map_new.items():
+                data = _GLYPH_DEFS.get(id(vertices))
+                if data is None:
+                    # x64 to go back to FreeType's internal (integral) units.
+                    data = self._convert_path(Path(vertices * 64, codes), simplify=False)
+                    if id(vertices) in _GLYPH_DEFS:
+                        _GLYPH_DEFS[id(vertices)] = data
+                writer.element("path", id=self._adjust_glyph_repr(glyph_repr), d=data, transform=_SIXTY_FOURTH)
+            writer.end("defs")
+            self._glyph_map.update(glyph_map_new)
+
     def draw_haloed(self, stroke, gc, path, affine, rgbFace=None) -> bool:
         """A haloed text's two passes (see :class:`_Halo`): its outline stroked with ``stroke``, then drawn with
         ``gc``; False, having drawn nothing, if either is not a text outline this renderer writes as a ``<use>``.
@@ -500,6 +523,13 @@ class _RendererSVG(backend_svg.RendererSVG):
         self.writer.element("use", attrib={"xlink:href": f"#{known[1]}"}, transform=place,
                             style=backend_svg._generate_css(style))
 
+
+_GLYPH_DEFS: dict = {}
+"""A glyph's path data in an SVG file's definitions, by the id of its vertices (arrays that :class:`_TextToPathOnce`
+keeps for the process; None until first written)."""
+
+_SIXTY_FOURTH = backend_svg._generate_transform([("scale", (1 / 64,))])
+"""A glyph definition's own placement: its path data is in 64ths of a font unit, as matplotlib writes it."""
 
 _NO_OFFSET = Affine2D().translate(0, 0).get_matrix()
 """The matrix of a path effect's offset of (0, 0) (see :meth:`_RendererSVG.draw_haloed`)."""

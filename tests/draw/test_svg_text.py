@@ -297,3 +297,18 @@ def test_a_character_no_font_has_warns_as_matplotlib_warns():
     assert got == want
     assert [str(w.message) for w in ours] == [str(w.message) for w in theirs]
     assert "missing from font(s)" in str(ours[0].message)
+
+
+def test_a_glyph_defined_from_its_kept_path_data_is_defined_as_matplotlib_defines_it():
+    """A text without a halo is a ``<use>`` of each glyph; each glyph's definition, its path data kept for the
+    process, is matplotlib's own, in the first file and in the next."""
+    from graphkin.draw.text import _GLYPH_DEFS
+
+    def defs(svg):
+        return re.findall(r'<path id="DejaVuSans-[^"]*" d="[^"]*" transform="[^"]*"/>', svg)
+
+    theirs = defs(_svg(False))
+    assert len(theirs) >= 10  # "Velocity polygon": its letters
+    first, second = defs(_svg(True)), defs(_svg(True))
+    assert first == theirs and second == theirs
+    assert sum(data is not None for data in _GLYPH_DEFS.values()) >= len(theirs)
