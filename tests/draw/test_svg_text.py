@@ -97,7 +97,7 @@ def test_a_text_outline_from_the_glyphs_laid_out_once_is_matplotlibs(text, weigh
     from matplotlib.font_manager import FontProperties
     from matplotlib.textpath import TextToPath
 
-    from graphkin.draw.text import _TEXT_TO_PATH
+    from graphkin.draw.glyphs import _TEXT_TO_PATH
 
     prop = FontProperties(size=9, weight=weight)
     want_verts, want_codes = TextToPath().get_text_path(prop, text)
@@ -149,7 +149,7 @@ def test_a_formula_parsed_once_lays_labels_out_as_matplotlib_does(math_font):
     from matplotlib.font_manager import FontProperties
     from matplotlib.mathtext import MathTextParser
 
-    from graphkin.draw.text import _MathTextOnce
+    from graphkin.draw.glyphs import _MathTextOnce
 
     prop = FontProperties(size=100, math_fontfamily=math_font)
     theirs, ours = MathTextParser("path"), _MathTextOnce("path")
@@ -178,7 +178,8 @@ def test_the_measuring_renderer_gives_the_sizes_the_svg_prints(text):
     from matplotlib.backends.backend_svg import RendererSVG
     from matplotlib.font_manager import FontProperties
 
-    from graphkin.draw.text import _TEXT_TO_PATH, measuring_agg
+    from graphkin.draw.glyphs import _TEXT_TO_PATH
+    from graphkin.draw.text import measuring_agg
 
     prop = FontProperties(size=9)
     ismath = "$" in text
@@ -227,7 +228,7 @@ def test_a_formula_outline_from_glyphs_loaded_once_is_matplotlibs(text, math_fon
     from matplotlib.font_manager import FontProperties
     from matplotlib.textpath import TextToPath
 
-    from graphkin.draw.text import _TEXT_TO_PATH
+    from graphkin.draw.glyphs import _TEXT_TO_PATH
 
     for size in (9, 10.5):
         prop = FontProperties(size=size, math_fontfamily=math_font)
@@ -260,7 +261,7 @@ def test_a_text_measured_from_its_layout_has_set_texts_size(weight, style):
     from matplotlib.font_manager import FontProperties
     from matplotlib.textpath import TextToPath
 
-    from graphkin.draw.text import _TEXT_TO_PATH
+    from graphkin.draw.glyphs import _TEXT_TO_PATH
 
     theirs = TextToPath()
     for k, text in enumerate(EDGES + _strings(300, seed=10 * len(weight) + len(style))):
@@ -285,7 +286,7 @@ def test_a_character_no_font_has_warns_as_matplotlib_warns():
     from matplotlib.font_manager import FontProperties
     from matplotlib.textpath import TextToPath
 
-    from graphkin.draw.text import _TEXT_TO_PATH
+    from graphkin.draw.glyphs import _TEXT_TO_PATH
 
     text, prop = "F\U0001d6fc = 3 N", FontProperties(size=9)
     with warnings.catch_warnings(record=True) as theirs:
@@ -302,7 +303,7 @@ def test_a_character_no_font_has_warns_as_matplotlib_warns():
 def test_a_glyph_defined_from_its_kept_path_data_is_defined_as_matplotlib_defines_it():
     """A text without a halo is a ``<use>`` of each glyph; each glyph's definition, its path data kept for the
     process, is matplotlib's own, in the first file and in the next."""
-    from graphkin.draw.text import _GLYPH_DEFS
+    from graphkin.draw.glyphs import _GLYPH_DEFS
 
     def defs(svg):
         return re.findall(r'<path id="DejaVuSans-[^"]*" d="[^"]*" transform="[^"]*"/>', svg)
