@@ -9,6 +9,7 @@ import os
 from collections import OrderedDict
 from typing import NamedTuple
 
+import matplotlib
 import numpy as np
 from matplotlib import _api, _mathtext, rcParams
 from matplotlib._text_helpers import warn_on_missing_glyph
@@ -22,8 +23,9 @@ _GLYPH_DEFS: dict = {}
 """A glyph's path data in an SVG file's definitions, by the id of its vertices (arrays that :class:`_TextToPathOnce`
 keeps for the process; None until first written)."""
 
-_LAST_RESORT = "LastResortHE-Regular.ttf"
-"""The font matplotlib falls back on for a character no font of the text's has (it draws a box for it)."""
+_LAST_RESORT = os.path.realpath(os.path.join(matplotlib.get_data_path(), "fonts", "ttf", "LastResortHE-Regular.ttf"))
+"""The font file matplotlib falls back on for a character no font of the text's has (it draws a box for it), as
+``font_manager`` finds it."""
 
 
 class _Glyph(NamedTuple):
@@ -108,14 +110,18 @@ class _TextToPathOnce(TextToPath):
         """
         info, paths = [], OrderedDict()
         low, high = math.inf, -math.inf
+        known = self._GLYPHS
         for item in font._layout(s, LoadFlags.NO_HINTING, features=features, language=language):
-            if os.path.basename(item.ft_object.fname) == _LAST_RESORT:
+            # Each attribute of a layout item is read once (each read makes a new Python object).
+            ft_object, index, x, y = item.ft_object, item.glyph_index, item.x, item.y
+            fname = ft_object.fname
+            if fname == _LAST_RESORT:
                 # As set_text warns, and _layout does not: no font of the text's has the character.
                 warn_on_missing_glyph(ord(item.char), font.family_name)
-            glyph = self._glyph(item.ft_object, item.glyph_index)
-            info.append((glyph.name, item.x, item.y, 1.0))
+            glyph = known.get((fname, index)) or self._glyph(ft_object, index)
+            info.append((glyph.name, x, y, 1.0))
             paths.setdefault(glyph.name, glyph.path)
-            low, high = min(low, glyph.low + item.y * 64), max(high, glyph.high + item.y * 64)
+            low, high = min(low, glyph.low + y * 64), max(high, glyph.high + y * 64)
         if not info:
             return (), paths, (0.0, 0.0, 0.0)
         # 0.0 - low: set_text's descent of 0 is a 0, never a -0.0.
