@@ -1,26 +1,23 @@
 """Text as the figures write it: subscripted names, numbers with a true minus, polar form, the input, a halo;
-and text laid out once per process in SVG output."""
+and text measured and written into SVG files as laid out once per process (:mod:`graphkin.draw.glyphs`)."""
 
 from __future__ import annotations
 
-import functools
 import re
 import threading
 from collections import OrderedDict
 from contextlib import contextmanager
 
 import numpy as np
-from matplotlib import _api, _mathtext, rcParams
 from matplotlib.backends import backend_svg
 from matplotlib.backends.backend_agg import RendererAgg
-from matplotlib.font_manager import FontProperties, findfont
-from matplotlib.mathtext import MathTextParser
 from matplotlib.path import Path
+from matplotlib.patheffects import withStroke
 from matplotlib.text import Text
-from matplotlib.textpath import TextToPath
 from matplotlib.transforms import Affine2D
 
 from graphkin import notation
+from graphkin.draw.glyphs import _GLYPH_DEFS, _TEXT_TO_PATH
 
 _NAME = re.compile(r"^([−-]?)([A-Za-z])([a-z]?\d+(?:,\d+)?[a-z]?)([′″‴⁗]|⁽[⁰¹²³⁴⁵⁶⁷⁸⁹]+⁾)?$")
 SUBSCRIPTS = dict(zip("0123456789aehijklmnoprstuvx,", "₀₁₂₃₄₅₆₇₈₉ₐₑₕᵢⱼₖₗₘₙₒₚᵣₛₜᵤᵥₓ,"))
@@ -104,177 +101,34 @@ def input_text(construction) -> str:
 
 def halo(width: float = 2.6):
     """A white outline behind text, so a label stays legible where a line runs under it."""
-    from matplotlib.patheffects import withStroke
-
-    return withStroke(linewidth=width, foreground="white")
+    return _Halo(linewidth=width, foreground="white")
 
 
-class _TextToPathOnce(TextToPath):
-    """Text laid out, and turned into outlines, once per process for every SVG renderer.
+class _Halo(withStroke):
+    """matplotlib's ``withStroke`` (the outline stroked, then drawn as it is) that an SVG file's renderer draws in
+    one call.
 
-    matplotlib gives each renderer a :class:`~matplotlib.textpath.TextToPath` of its own, and the SVG
-    renderer asks it for every text's size and, for a text with a halo (drawn as its outline), for the
-    outline: a handout's twenty figures laid the same names (``A``, ``F₂₃``, ``0``) out twenty times, a
-    tenth of a student's handout. What a text becomes depends on the string, its font properties and the
-    font file they resolve to (in the key, so that a change of ``rcParams["font.*"]`` makes a new entry),
-    never on the renderer. TeX text is left to matplotlib.
+    A haloed text's outline is drawn twice; through matplotlib's path effects each pass finds the outline's
+    placement and style anew, a twentieth of a handout's figure. :meth:`_RendererSVG.draw_haloed` writes both
+    passes at once, the same bytes; any other renderer, and an outline it does not take, is drawn as
+    ``withStroke`` draws it. A halo has no offset (``Stroke``'s offset is for a shadow).
     """
 
-    @staticmethod
-    def _key(prop):
-        # A copy: FontProperties is mutable and hashes by its state (matplotlib's own text cache does so too).
-        return prop.copy(), findfont(prop)
-
-    def get_text_width_height_descent(self, s, prop, ismath):
-        if ismath == "TeX":
-            return super().get_text_width_height_descent(s, prop, ismath)
-        return self._size(s, *self._key(prop), ismath)
-
-    @functools.lru_cache(8192)
-    def _size(self, s, prop, font, ismath):
-        return super().get_text_width_height_descent(s, prop, ismath)
-
-    def get_text_path(self, prop, s, ismath=False, *, features=None, language=None):
-        if ismath == "TeX":
-            return super().get_text_path(prop, s, ismath, features=features, language=language)
-        return self._outline(s, *self._key(prop), ismath, None if features is None else tuple(features), language)
-
-    def get_glyphs_with_font(self, font, s, glyph_map=None, return_new_glyphs_only=False, *, features=None,
-                             language=None):
-        # Its callers (the SVG renderer's text drawn as glyphs, TextToPath.get_text_path, :meth:`_outline`) take
-        # ``font`` from _get_font, which sets it to FONT_SCALE at DPI: the glyphs depend on the font and string only.
-        info, paths = self._glyphs(font, s, None if features is None else tuple(features), language)
-        if glyph_map is None:
-            glyph_map = OrderedDict()
-        new = OrderedDict() if return_new_glyphs_only else glyph_map
-        for glyph_repr, path in paths.items():
-            if glyph_repr not in glyph_map:
-                new[glyph_repr] = path
-        return list(info), new, []
-
-    @functools.lru_cache(4096)
-    def _glyphs(self, font, s, features, language):
-        """Each glyph of ``s`` (its name, x, y and scale) and the outline of each glyph, in order of first use."""
-        info, paths, _ = super().get_glyphs_with_font(font, s, features=features, language=language)
-        for verts, codes in paths.values():
-            verts.flags.writeable = codes.flags.writeable = False  # shared by every text that uses the glyph
-        return tuple(info), paths
-
-    @functools.lru_cache(2048)
-    def _outline(self, s, prop, font, ismath, features, language):
-        if ismath:
-            verts, codes = super().get_text_path(prop, s, ismath, features=features, language=language)
-        else:
-            # TextToPath.get_text_path's vertices from the glyphs laid out once, a glyph at a time rather than a
-            # vertex row at a time (the same numbers).
-            info, paths = self._glyphs(self._get_font(prop), s, features, language)
-            verts = [paths[r][0] * size + [x, y] for r, x, y, size in info] or [np.empty((0, 2))]
-            codes = [paths[r][1] for r, _, _, _ in info] or [np.empty(0, np.uint8)]
-            verts, codes = np.concatenate(verts), np.concatenate(codes)
-        # Two arrays rather than matplotlib's list of vertex rows (a tenth of the memory), read-only because
-        # every figure shares them: the renderer only reads them into a Path.
-        verts, codes = np.asarray(verts, float).reshape(-1, 2), np.asarray(codes, np.uint8)
-        verts = verts.view(_Outline)
-        verts.codes = codes
-        verts.flags.writeable = codes.flags.writeable = False
-        return verts, codes
-
-
-class _Outline(np.ndarray):
-    """The vertices of a text's outline [font units] as :class:`_TextToPathOnce` keeps them.
-
-    Marked by their type (``Path`` keeps the array it is given), so that :class:`_RendererSVG` knows a text
-    drawn as an outline when it is asked to draw it. Only the array the cache made carries ``codes``; an array
-    computed from it (a view, a sum) is an ``_Outline`` without them and is drawn as any path. ``svg`` is its SVG
-    path data [font units], once it has been written.
-    """
-
-
-class _MathOnceParser(_mathtext.Parser):
-    """matplotlib's mathtext parser, with the formula between each pair of ``$`` parsed once per process.
-
-    A label such as ``$\\mathregular{a^{t}_{BA}}$ = 273.3 m/s²`` is new on every student's figures (its number
-    is), but its formula is not, and parsing the formula is nearly all the time pyparsing takes over the label
-    (~5 ms). The formula's boxes depend on its text and the parser's state where it starts (fonts, font, size,
-    resolution, the pending operator space), and on the ``mathtext.*`` settings the fonts read: all in the key.
-    The boxes are only read after parsing (laid out into the label's box and shipped), so the same ones can
-    serve every label that holds the formula; the label is laid out as before (``tests/draw/test_svg_text.py``).
-    """
-
-    _MEMO_SIZE = 1024
-
-    def __init__(self):
-        super().__init__()
-        self._memo: dict = {}
-
-    def math_string(self, toks):
-        state = self.get_state()
-        fonts = state.fontset
-        rc = tuple(rcParams[k] for k in _MATHTEXT_RC)
-        key = (toks[0], type(fonts), fonts.default_font_prop.copy(), fonts.load_glyph_flags, state.font,
-               state.font_class, state.fontsize, state.dpi, self._needs_space_after_subsuper, rc)
-        known = self._memo.get(key)
-        if known is None:
-            boxes = super().math_string(toks)
-            if len(self._memo) >= self._MEMO_SIZE:
-                self._memo.clear()
-            # A copy in and a copy out: pyparsing appends the tokens that follow to the list it is handed.
-            self._memo[key] = (boxes.copy(), self._needs_space_after_subsuper)
-            return boxes
-        boxes, self._needs_space_after_subsuper = known
-        self.pop_state()  # what parsing the formula does last (``Parser.math``, which pairs with ``non_math``)
-        return boxes.copy()
-
-
-_MATHTEXT_RC = tuple(sorted(k for k in rcParams if k.startswith("mathtext.")))
-
-
-_FONT_RC = tuple(sorted(k for k in rcParams if k.startswith(("font.", "mathtext."))))
-
-
-def _font_settings() -> tuple:
-    """The ``font.*`` and ``mathtext.*`` settings, as a key (a list of families as a tuple)."""
-    return tuple(tuple(v) if isinstance(v, list) else v for v in (rcParams[k] for k in _FONT_RC))
-
-
-class _MathTextOnce(MathTextParser):
-    r"""A ``MathTextParser`` whose parser is :class:`_MathOnceParser` (made on first use: it takes ~0.1 s), and whose
-    fonts for a font and the font settings are made once.
-
-    matplotlib makes the fontset (each face a formula may use, found by name: some fifty font lookups) anew for
-    every string it parses, half the time of a label such as ``$\mathregular{v_{B}}$ = 5.341 m/s``. A fontset
-    only finds things (faces, glyph metrics) and keeps what it found; what a parse builds goes into the parse's
-    own output, so one fontset serves every parse with the same font, flags and ``font.*``/``mathtext.*``
-    settings (in the key).
-    """
-
-    _parser = None
-    _fontsets: dict = {}
-
-    @functools.lru_cache(50)
-    def _parse_cached(self, s, dpi, prop, antialiased, load_glyph_flags):
-        # MathTextParser._parse_cached (matplotlib 3.11), with the parser and the fontset kept.
-        if _MathTextOnce._parser is None:
-            _MathTextOnce._parser = _MathOnceParser()
-        if prop is None:
-            prop = FontProperties()
-        fontset_class = _api.getitem_checked(self._font_type_mapping, fontset=prop.get_math_fontfamily())
-        # A copy of the font: FontProperties can be changed in place, and hashes by its state.
-        key = (fontset_class, prop.copy(), load_glyph_flags, _font_settings())
-        fontset = self._fontsets.get(key)
-        if fontset is None:
-            if len(self._fontsets) >= 64:
-                self._fontsets.clear()
-            fontset = self._fontsets[key] = fontset_class(key[1], load_glyph_flags)
-        box = self._parser.parse(s, fontset, prop.get_size_in_points(), dpi)
-        output = _mathtext.ship(box)
-        if self._output_type == "vector":
-            return output.to_vector()
-        return output.to_raster(antialiased=antialiased)
-
-
-_TEXT_TO_PATH = _TextToPathOnce()
-_TEXT_TO_PATH.mathtext_parser = _MathTextOnce("path")
+    def draw_path(self, renderer, gc, tpath, affine, rgbFace):
+        # A MixedModeRenderer (savefig's, around the SVG renderer) hands attributes on to the renderer it holds.
+        draw_haloed = getattr(renderer, "draw_haloed", None)
+        if draw_haloed is None or self._offset != (0, 0):
+            return super().draw_path(renderer, gc, tpath, affine, rgbFace)
+        # The stroke's graphics context as Stroke.draw_path makes it.
+        stroke = renderer.new_gc()
+        stroke.copy_properties(gc)
+        stroke = self._update_gc(stroke, self._gc)
+        try:
+            if draw_haloed(stroke, gc, tpath, affine, rgbFace):
+                return
+        finally:
+            stroke.restore()
+        super().draw_path(renderer, gc, tpath, affine, rgbFace)
 
 
 class _MeasuringAgg(RendererAgg):
@@ -292,8 +146,8 @@ def measuring_agg(dpi: float) -> RendererAgg:
     """An Agg renderer (1 × 1 px) at ``dpi`` that measures text as the SVG files lay it out.
 
     A headless figure's labels are measured to place them and to find the figure's extent, and its SVG file
-    then lays each text out again, at 72 dpi, through :class:`_TextToPathOnce`. Measured here through that same
-    shared cache (its sizes [pt] times ``dpi / 72``), each string is laid out once, not twice (a mathtext
+    then lays each text out again, at 72 dpi, through :class:`~graphkin.draw.glyphs._TextToPathOnce`. Measured
+    here through that same shared cache (its sizes [pt] times ``dpi / 72``), each string is laid out once, not twice (a mathtext
     label, such as ``a^t_BA = 273.3 m/s²``, is parsed once): the boxes are the unhinted outlines the file
     prints, where Agg's own are hinted to its pixels. Only for measuring, never for drawing.
 
@@ -306,7 +160,8 @@ def measuring_agg(dpi: float) -> RendererAgg:
 
 
 class _RendererSVG(backend_svg.RendererSVG):
-    """matplotlib's SVG renderer with the shared :class:`_TextToPathOnce`, and each text outline written once.
+    """matplotlib's SVG renderer with the shared :class:`~graphkin.draw.glyphs._TextToPathOnce`, and each text outline
+    written once.
 
     A text with a halo is drawn as its outline, twice (stroked white, then filled), and matplotlib writes the
     outline's every vertex into the file each time: three fifths of a handout's figure file was such copies.
@@ -327,14 +182,71 @@ class _RendererSVG(backend_svg.RendererSVG):
 
     def draw_path(self, gc, path, transform, rgbFace=None):
         verts = path.vertices
-        if (getattr(verts, "codes", None) is None or gc.get_url() is not None or gc.get_hatch() is not None
-                or gc.get_sketch_params() is not None or gc.get_dashes()[1] is not None
-                or self._get_clip_attrs(gc)):
+        m = self._outline_matrix(gc, verts, transform.get_matrix()) if self._takes(gc, verts) else None
+        if m is None:
             return super().draw_path(gc, path, transform, rgbFace)
-        m = self._make_flip_transform(transform).get_matrix()
+        self._use(gc, verts, m, rgbFace)
+
+    def _update_glyph_map_defs(self, glyph_map_new):
+        """``RendererSVG._update_glyph_map_defs`` (matplotlib 3.11), each glyph's path data made once per process.
+
+        A text drawn without a halo is a ``<use>`` of each glyph, and each file defines the glyphs it uses, its
+        outline converted to path data anew for every file. A glyph that
+        :class:`~graphkin.draw.glyphs._TextToPathOnce` loaded keeps its arrays for the process, and its data is kept
+        with their id (``_GLYPH_DEFS``); any other is converted as matplotlib converts it.
+        """
+        writer = self.writer
+        if glyph_map_new:
+            writer.start("defs")
+            for glyph_repr, (vertices, codes) in glyph_map_new.items():
+                data = _GLYPH_DEFS.get(id(vertices))
+                if data is None:
+                    # x64 to go back to FreeType's internal (integral) units.
+                    data = self._convert_path(Path(vertices * 64, codes), simplify=False)
+                    if id(vertices) in _GLYPH_DEFS:
+                        _GLYPH_DEFS[id(vertices)] = data
+                writer.element("path", id=self._adjust_glyph_repr(glyph_repr), d=data, transform=_SIXTY_FOURTH)
+            writer.end("defs")
+            self._glyph_map.update(glyph_map_new)
+
+    def draw_haloed(self, stroke, gc, path, affine, rgbFace=None) -> bool:
+        """A haloed text's two passes (see :class:`_Halo`): its outline stroked with ``stroke``, then drawn with
+        ``gc``; False, having drawn nothing, if either is not a text outline this renderer writes as a ``<use>``.
+
+        The same bytes as matplotlib's ``withStroke`` through :meth:`draw_path`: the stroke's placement is
+        ``affine + Affine2D().translate(0, 0)`` there, a product with the identity matrix (which turns a
+        ``-0.0`` into ``0.0``), and is found by that same product here.
+        """
+        verts = path.vertices
+        if not (self._takes(stroke, verts) and self._takes(gc, verts)):
+            return False
+        a = affine.get_matrix()
+        halo = self._outline_matrix(stroke, verts, np.dot(_NO_OFFSET, a))
+        m = self._outline_matrix(gc, verts, a)
+        if halo is None or m is None:
+            return False
+        self._use(stroke, verts, halo, rgbFace)
+        self._use(gc, verts, m, rgbFace)
+        return True
+
+    def _takes(self, gc, verts) -> bool:
+        """Whether a path is a text outline (:class:`~graphkin.draw.glyphs._Outline`) drawn plainly: no clip, dash, hatch, link or
+        sketch."""
+        return not (getattr(verts, "codes", None) is None or gc.get_url() is not None or gc.get_hatch() is not None
+                    or gc.get_sketch_params() is not None or gc.get_dashes()[1] is not None
+                    or self._get_clip_attrs(gc))
+
+    def _outline_matrix(self, gc, verts, matrix):
+        """The matrix that places an outline drawn with the affine ``matrix`` in the file (y down), as
+        ``_make_flip_transform`` makes it; None if it flattens the outline (drawn as matplotlib draws it)."""
+        m = np.dot(Affine2D().scale(1, -1).translate(0, self.height).get_matrix(), matrix)
+        if not abs(m[0, 0] * m[1, 1] - m[0, 1] * m[1, 0]):
+            return None
+        return m
+
+    def _use(self, gc, verts, m, rgbFace):
+        """A ``<use>`` of the outline ``verts`` placed by ``m``, its definition written first if the file has none."""
         scale = abs(m[0, 0] * m[1, 1] - m[0, 1] * m[1, 0]) ** 0.5
-        if not scale:
-            return super().draw_path(gc, path, transform, rgbFace)
         style = self._get_style_dict(gc, rgbFace)
         if "stroke" in style:
             style["stroke-width"] = backend_svg._short_float_fmt(gc.get_linewidth() / scale)
@@ -352,6 +264,13 @@ class _RendererSVG(backend_svg.RendererSVG):
         place = backend_svg._generate_transform([("matrix", (m[0, 0], m[1, 0], m[0, 1], m[1, 1], m[0, 2], m[1, 2]))])
         self.writer.element("use", attrib={"xlink:href": f"#{known[1]}"}, transform=place,
                             style=backend_svg._generate_css(style))
+
+
+_SIXTY_FOURTH = backend_svg._generate_transform([("scale", (1 / 64,))])
+"""A glyph definition's own placement: its path data is in 64ths of a font unit, as matplotlib writes it."""
+
+_NO_OFFSET = Affine2D().translate(0, 0).get_matrix()
+"""The matrix of a path effect's offset of (0, 0) (see :meth:`_RendererSVG.draw_haloed`)."""
 
 
 _BOXES: dict = {}

@@ -20,7 +20,7 @@ typst = pytest.importorskip("typst")
 Image = pytest.importorskip("PIL.Image")
 
 
-def _figure() -> Figure:
+def _figure(halo=halo) -> Figure:
     fig = Figure(figsize=(3.0, 1.6), dpi=100)
     ax = fig.add_axes([0, 0, 1, 1])
     ax.set_axis_off()
@@ -35,16 +35,17 @@ def _figure() -> Figure:
     return fig
 
 
-def _svg(swap: bool) -> str:
+def _svg(swap: bool, fig=None) -> str:
     out = io.BytesIO()
     from matplotlib import rc_context
 
+    fig = fig or _figure()
     with rc_context({"svg.hashsalt": "test"}):
         if swap:
             with svg_text_laid_out_once():
-                _figure().savefig(out, format="svg", metadata={"Date": None})
+                fig.savefig(out, format="svg", metadata={"Date": None})
         else:
-            _figure().savefig(out, format="svg", metadata={"Date": None})
+            fig.savefig(out, format="svg", metadata={"Date": None})
     return out.getvalue().decode("utf-8")
 
 
@@ -96,7 +97,7 @@ def test_a_text_outline_from_the_glyphs_laid_out_once_is_matplotlibs(text, weigh
     from matplotlib.font_manager import FontProperties
     from matplotlib.textpath import TextToPath
 
-    from graphkin.draw.text import _TEXT_TO_PATH
+    from graphkin.draw.glyphs import _TEXT_TO_PATH
 
     prop = FontProperties(size=9, weight=weight)
     want_verts, want_codes = TextToPath().get_text_path(prop, text)
@@ -105,6 +106,36 @@ def test_a_text_outline_from_the_glyphs_laid_out_once_is_matplotlibs(text, weigh
     assert np.array_equal(codes, np.asarray(want_codes, np.uint8))
     # Shared by every figure: nobody may change them.
     assert not verts.flags.writeable and not codes.flags.writeable
+
+
+def test_a_halo_drawn_in_one_call_writes_what_withstroke_writes(monkeypatch):
+    """The SVG renderer draws a halo's two passes at once (``_RendererSVG.draw_haloed``): the file is the one
+    matplotlib's own ``withStroke`` gives through the same renderer, byte for byte; elsewhere a halo is a
+    ``withStroke``."""
+    from matplotlib.patheffects import withStroke
+
+    from graphkin.draw.text import _RendererSVG
+
+    def stroke(width=2.6):
+        return withStroke(linewidth=width, foreground="white")
+
+    drawn = []
+    plain = _RendererSVG.draw_haloed
+    monkeypatch.setattr(_RendererSVG, "draw_haloed", lambda *a: drawn.append(plain(*a)) or drawn[-1])
+    ours = _svg(True, _figure())
+    assert drawn == [True] * 3  # each of the three haloed texts in one call
+    theirs = _svg(True, _figure(halo=stroke))
+    assert len(drawn) == 3
+    assert ours == theirs
+    assert ours.count("stroke: #ffffff") == 3
+    assert isinstance(halo(), withStroke)
+    # Without the SVG renderer (Agg), the same pixels as withStroke.
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    a, b = _figure(), _figure(halo=stroke)
+    FigureCanvasAgg(a).draw()
+    FigureCanvasAgg(b).draw()
+    assert np.array_equal(np.asarray(a.canvas.buffer_rgba()), np.asarray(b.canvas.buffer_rgba()))
 
 
 FORMULAS = [r"$\mathregular{a^{t}_{BA}}$ = 273.3 m/s²", r"$\mathregular{a^{t}_{BA}}$ = 9.125 m/s²",
@@ -118,7 +149,7 @@ def test_a_formula_parsed_once_lays_labels_out_as_matplotlib_does(math_font):
     from matplotlib.font_manager import FontProperties
     from matplotlib.mathtext import MathTextParser
 
-    from graphkin.draw.text import _MathTextOnce
+    from graphkin.draw.glyphs import _MathTextOnce
 
     prop = FontProperties(size=100, math_fontfamily=math_font)
     theirs, ours = MathTextParser("path"), _MathTextOnce("path")
@@ -147,7 +178,8 @@ def test_the_measuring_renderer_gives_the_sizes_the_svg_prints(text):
     from matplotlib.backends.backend_svg import RendererSVG
     from matplotlib.font_manager import FontProperties
 
-    from graphkin.draw.text import _TEXT_TO_PATH, measuring_agg
+    from graphkin.draw.glyphs import _TEXT_TO_PATH
+    from graphkin.draw.text import measuring_agg
 
     prop = FontProperties(size=9)
     ismath = "$" in text
@@ -186,3 +218,98 @@ def test_a_text_laid_out_once_is_laid_out_again_when_it_changes():
         for t in fresh.axes[0].texts:
             t.set(**change)
         assert got == saved(fresh), change
+
+
+@pytest.mark.parametrize("text", FORMULAS)
+@pytest.mark.parametrize("math_font", ["dejavusans", "cm"])
+def test_a_formula_outline_from_glyphs_loaded_once_is_matplotlibs(text, math_font):
+    """A formula's outline, each glyph loaded once per process, has matplotlib's vertices and codes, number for
+    number, whether its glyphs are new or already loaded (a text's own in its second round)."""
+    from matplotlib.font_manager import FontProperties
+    from matplotlib.textpath import TextToPath
+
+    from graphkin.draw.glyphs import _TEXT_TO_PATH
+
+    for size in (9, 10.5):
+        prop = FontProperties(size=size, math_fontfamily=math_font)
+        want_verts, want_codes = TextToPath().get_text_path(prop, text, ismath=True)
+        verts, codes = _TEXT_TO_PATH.get_text_path(prop, text, ismath=True)
+        assert np.array_equal(verts, np.asarray(want_verts, float).reshape(-1, 2))
+        assert np.array_equal(codes, np.asarray(want_codes, np.uint8))
+        assert len(codes) > 0
+
+
+def _strings(n: int, seed: int) -> list[str]:
+    """Strings such as the figures write (names with subscripts, numbers, units, angles), and any mix of them."""
+    import random
+
+    alphabet = ("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789 .,:;-−+=()[]/°′″∠·×²³"
+                "₀₁₂₃₄₅₆₇₈₉ₐₑₕᵢⱼₖₗₘₙₒₚᵣₛₜᵤᵥₓθωαΔμ%'_|")
+    rng = random.Random(seed)
+    return ["".join(rng.choice(alphabet) for _ in range(rng.randint(1, 14))) for _ in range(n)]
+
+
+EDGES = ["", " ", "  ", "°", " °", "° ", "‾", "_", "AV", "To", "Wa", "fi", "F₂₃ = 1311 N", "θ₁₂ = 30°", "−0.5",
+         "ω₂ = 10 rad/s", "1:2000", "Velocity polygon"]
+
+
+@pytest.mark.parametrize("weight", ["normal", "bold"])
+@pytest.mark.parametrize("style", ["normal", "italic"])
+def test_a_text_measured_from_its_layout_has_set_texts_size(weight, style):
+    """A plain text's width, height and descent [pt], from the layout its outline is drawn from (one shaping, not
+    two): FT2Font.set_text's, number for number and zero for zero, for any string and font size."""
+    from matplotlib.font_manager import FontProperties
+    from matplotlib.textpath import TextToPath
+
+    from graphkin.draw.glyphs import _TEXT_TO_PATH
+
+    theirs = TextToPath()
+    for k, text in enumerate(EDGES + _strings(300, seed=10 * len(weight) + len(style))):
+        prop = FontProperties(size=[7, 8, 9, 10.5, 12][k % 5], weight=weight, style=style)
+        want = theirs.get_text_width_height_descent(text, prop, False)
+        got = _TEXT_TO_PATH.get_text_width_height_descent(text, prop, False)
+        assert got == want, text
+        assert [type(x) for x in got] == [float] * 3
+        assert [np.copysign(1, x) for x in got] == [np.copysign(1, x) for x in want], text
+        # And the outline of the same layout is matplotlib's.
+        verts, codes = _TEXT_TO_PATH.get_text_path(prop, text)
+        want_verts, want_codes = theirs.get_text_path(prop, text)
+        assert np.array_equal(verts, np.asarray(want_verts, float).reshape(-1, 2)), text
+        assert np.array_equal(codes, np.asarray(want_codes, np.uint8)), text
+
+
+def test_a_character_no_font_has_warns_as_matplotlib_warns():
+    """Measured from its layout, a text with a character that no font of its has still warns (as FT2Font.set_text
+    does): the figure would show a box for it."""
+    import warnings
+
+    from matplotlib.font_manager import FontProperties
+    from matplotlib.textpath import TextToPath
+
+    from graphkin.draw.glyphs import _TEXT_TO_PATH
+
+    text, prop = "F\U0001d6fc = 3 N", FontProperties(size=9)
+    with warnings.catch_warnings(record=True) as theirs:
+        warnings.simplefilter("always")
+        want = TextToPath().get_text_width_height_descent(text, prop, False)
+    with warnings.catch_warnings(record=True) as ours:
+        warnings.simplefilter("always")
+        got = _TEXT_TO_PATH.get_text_width_height_descent(text, prop, False)
+    assert got == want
+    assert [str(w.message) for w in ours] == [str(w.message) for w in theirs]
+    assert "missing from font(s)" in str(ours[0].message)
+
+
+def test_a_glyph_defined_from_its_kept_path_data_is_defined_as_matplotlib_defines_it():
+    """A text without a halo is a ``<use>`` of each glyph; each glyph's definition, its path data kept for the
+    process, is matplotlib's own, in the first file and in the next."""
+    from graphkin.draw.glyphs import _GLYPH_DEFS
+
+    def defs(svg):
+        return re.findall(r'<path id="DejaVuSans-[^"]*" d="[^"]*" transform="[^"]*"/>', svg)
+
+    theirs = defs(_svg(False))
+    assert len(theirs) >= 10  # "Velocity polygon": its letters
+    first, second = defs(_svg(True)), defs(_svg(True))
+    assert first == theirs and second == theirs
+    assert sum(data is not None for data in _GLYPH_DEFS.values()) >= len(theirs)
