@@ -181,12 +181,13 @@ class BareAxes(PanelAxes):
         self.set_autoscale_on(False)
 
 
-def new_axes(ax=None, figsize=(6.0, 4.5), s=None):
-    """``ax``, or a fresh axes on a new headless Figure."""
+def new_axes(ax=None, figsize=(6.0, 4.5), s=None, *, bare=False):
+    """``ax``, or a fresh axes on a new headless Figure (a :class:`BareAxes` if ``bare``: a drawing that sets its
+    own limits and never shows an axis)."""
     if ax is not None:
         return ax
     fig = Figure(figsize=figsize, dpi=100)
-    return fig.add_subplot(axes_class=PanelAxes)
+    return fig.add_subplot(axes_class=BareAxes if bare else PanelAxes)
 
 
 def setup_axes(ax):

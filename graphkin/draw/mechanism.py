@@ -271,12 +271,13 @@ def draw_mechanism(construction, *, ax=None, labels=True, faint=False, emphasis=
     """
     s = _style.resolve(**style)
     own = ax is None
-    ax = new_axes(ax, (6.0, 4.5), s)
+    paper = 1.0 / length_scale if length_scale else None
+    # A drawing printed at a scale on a figure of its own sets its limits and never shows an axis.
+    ax = new_axes(ax, (6.0, 4.5), s, bare=bool(own and paper))
     existing = had_content(ax)
     setup_axes(ax)
     drawn = Drawn(ax)
     c = construction
-    paper = 1.0 / length_scale if length_scale else None
     if not c.points:
         t = ax.text(0.5, 0.5, f"No drawing: {c.reason or 'no geometry'}", transform=ax.transAxes, ha="center",
                     va="center", fontsize=s.label_size, color=s.unknown, wrap=True)

@@ -6,9 +6,12 @@ measured on the printed page with a ruler is the length the scale says: a true l
 long at 1:k, and a force of X N prints 1 mm long at 1 mm = X N. Each figure ends with a scale bar for each of
 its scales, each stating its scale beside it (:func:`scale_strip`).
 
-The panels are drawn first with their labels left unplaced, then laid out in rows (:func:`arrange`) and given
-their printed size, and only then are the labels placed: where a label goes depends on how large the drawing
-prints.
+Panels at the mechanism's scale (free bodies, lines of action) are drawn first, each on an axes of its own with
+its labels left unplaced, then laid out in rows (:func:`arrange`) and given their printed size, and only then
+are the labels placed: where a label goes depends on how large the drawing prints. Polygons (of forces, of
+velocities and accelerations) are drawn in millimetres of paper already, so their size is known before they are
+drawn: their panels are laid out first (:func:`layout`), then each polygon is drawn from its place on one axes
+over the whole figure, and its labels are placed in its panel's box.
 """
 
 from __future__ import annotations
