@@ -114,6 +114,28 @@ def _wait_loads(page, root, more_than: int, timeout=30_000):
         _stuck(page, root, f"no new image within {timeout / 1000:g} s (images so far: {more_than})")
 
 
+SETTLED = """(r) => { const i = r.querySelector('img.graphkin-image');
+  return [r.__watch.loads.length, i.naturalWidth, Math.round(i.getBoundingClientRect().width * devicePixelRatio)] }"""
+
+
+def _wait_settled(page, root, quiet: float = 1.0, timeout: float = 30.0):
+    """Until the explorer shows an image drawn for the width it is shown at, and neither changes for ``quiet`` s.
+
+    The page can be laid out wider after the first image (Voilà's styles arriving late); the explorer then draws
+    again for the new width (100 → 145 dpi at 1920 px). A key pressed before that image arrives took the image
+    for its own: the position had not moved (CI, 2026-11-27). A person, too, waits for the page to settle.
+    """
+    end = time.monotonic() + timeout
+    last = None
+    while time.monotonic() < end:
+        state = root.evaluate(SETTLED)
+        if state == last and abs(state[1] - state[2]) < 4:
+            return
+        last = state
+        time.sleep(quiet)
+    _stuck(page, root, f"the explorer did not settle within {timeout:g} s (images, PNG width, shown width: {last})")
+
+
 PNG_BYTES = """async (img) => {
   const bytes = new Uint8Array(await (await fetch(img.src)).arrayBuffer());
   let s = ''; for (const b of bytes) s += String.fromCharCode(b);
@@ -152,6 +174,7 @@ def check_explorer(page, root, name: str) -> dict:
             " said: (r.querySelector('.graphkin-screen [data-said], .graphkin-screen[data-said]') || {dataset: {}})"
             ".dataset.said}) }"))
     root.evaluate(WATCH)
+    _wait_settled(page, root)
     m = root.evaluate(MEASURE)
     said = json.loads(m["said"])  # what the probe in the page told the kernel
     assert said["ratio"] == m["ratio"] and said["width"] > 0
@@ -432,8 +455,16 @@ def test_lesson_in_voila(voila_page, voila, workdir, timings, lesson):
 @pytest.mark.parametrize("problem", ["strip_cutter", "double_slider"])  # a crank (degrees) and a slider (mm)
 def test_graphkin_explore_serves_the_explorer_and_stops_on_ctrl_c(browser, timings, problem):
     """`graphkin explore PROBLEM`: one URL line, a working explorer, Ctrl-C → one line, exit 130, Voilà gone."""
-    proc = subprocess.Popen([sys.executable, "-m", "graphkin", "explore", problem, "--no-browser"],
-                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=ROOT)
+    # Ctrl-C as at a terminal. A shell without job control starts a background job (`.ci/run &`) with SIGINT
+    # ignored, and a child inherits that: Python then never raises KeyboardInterrupt and the explorer runs on.
+    # With a handler of the test's own, the child starts with the default disposition (exec resets a handler;
+    # preexec_fn is not safe beside Playwright's threads).
+    before = signal.signal(signal.SIGINT, signal.default_int_handler)
+    try:
+        proc = subprocess.Popen([sys.executable, "-m", "graphkin", "explore", problem, "--no-browser"],
+                                stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=ROOT)
+    finally:
+        signal.signal(signal.SIGINT, before)
     try:
         line = proc.stdout.readline()
         url = re.search(r"http://127\.0\.0\.1:\d+/", line)
