@@ -51,13 +51,13 @@ def _box(ax, mm_per_unit: float) -> tuple[float, float]:
     return abs(x1 - x0) * mm_per_unit, abs(y1 - y0) * mm_per_unit
 
 
-def _title_size(ax) -> tuple[float, float]:
-    """Width and height [mm] of an axes' title as printed (0, 0 without one)."""
-    t = ax.title
+def _title_size(t) -> tuple[float, float]:
+    """Width and height [mm] a panel's title takes as printed, with the room under it (0, 0 without one)."""
     if not t.get_text().strip():
         return 0.0, 0.0
-    bb = text_extent(t, measuring_renderer(ax.figure))
-    return bb.width / ax.figure.dpi * 25.4, bb.height / ax.figure.dpi * 25.4 + 1.5
+    fig = t.get_figure(root=True)
+    bb = text_extent(t, measuring_renderer(fig))
+    return bb.width / fig.dpi * 25.4, bb.height / fig.dpi * 25.4 + 1.5
 
 
 def layout(sizes, *, width: float = FIGURE_WIDTH, strip: float = 0.0, gap: float = GAP):
@@ -126,7 +126,7 @@ def arrange(fig, panels, *, width: float = FIGURE_WIDTH, strip: float = 0.0, gap
     sizes = []
     for ax, mm in panels:
         w, h = _box(ax, mm)
-        tw, th = _title_size(ax)
+        tw, th = _title_size(ax.title)
         sizes.append((w, h, max(w, tw), h + th))
     height, corners = layout(sizes, width=width, strip=strip, gap=gap)
     fig.set_size_inches(width / 25.4, height / 25.4)
@@ -240,7 +240,7 @@ def draw_free_bodies(construction, links=None, *, length_scale: float, force_sca
     return fig
 
 
-def _one_axes(fig, width: float):
+def _one_axes(fig):
     """An axes over the whole figure whose data units are millimetres of paper, for panels drawn at their printed
     size (:func:`_lay_out_on`): one axes rather than one per panel, which cost as much again as drawing a polygon."""
     ax = fig.add_axes([0, 0, 1, 1], axes_class=BareAxes)
@@ -267,14 +267,12 @@ def _lay_out_on(ax, extents, titles, s, *, width: float, strip: float) -> tuple[
         (:attr:`graphkin.draw.labels.Labeler.room`), and its title.
     """
     fig = ax.get_figure(root=True)
-    renderer = measuring_renderer(fig)
     texts, sizes = [], []
     for (lo, hi), title in zip(extents, titles):
         w, h = np.asarray(hi, float) - lo
         # The title as set_title places it: centred 6 pt over the panel, on its baseline.
         t = ax.text(0.0, 0.0, title, fontsize=s.title_size, color=s.ink, ha="center", va="baseline", clip_on=False)
-        bb = text_extent(t, renderer)
-        tw, th = bb.width / fig.dpi * 25.4, bb.height / fig.dpi * 25.4 + 1.5
+        tw, th = _title_size(t)
         texts.append(t)
         sizes.append((float(w), float(h), max(float(w), tw), float(h) + th))
     height, corners = layout(sizes, width=width, strip=strip)
@@ -333,7 +331,7 @@ def draw_polygons(steps, *, force_scale: float, titles=None, driver_name=None, w
     """
     s = _style.resolve(**style)
     fig = _new_figure(width)
-    ax = _one_axes(fig, width)
+    ax = _one_axes(fig)
     pad = 9.0  # the margin each polygon keeps for its labels, as draw_force_polygon keeps it on paper [mm]
     extents = []
     for step in steps:
@@ -467,7 +465,7 @@ def draw_motion_paper(construction, *, velocity_scale: float, acceleration_scale
     """
     s = _style.resolve(**style)
     fig = _new_figure(width)
-    ax = _one_axes(fig, width)
+    ax = _one_axes(fig)
     shown = ["velocity", "acceleration"]
     if upto is not None and construction.steps[upto].polygon == "velocity":
         shown = ["velocity"]

@@ -304,6 +304,51 @@ def test_no_label_on_a_label_or_an_outline_in_the_step_frames(name):
     assert not bad, "\n".join(map(str, bad))
 
 
+def _printed_polygons(name):
+    """The handout's figure of force polygons (every polygon on one axes in paper mm, at one force scale) at
+    figures/' position; None where there is no polygon there."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    from graphkin.draw import paper
+    from graphkin.handout.scaled import polygon_scale
+
+    problem = catalog.load(name)
+    c = construct_forces(problem.kinematics(at=[_figure_position(name, problem)]), 0)
+    steps = [st for st in c.steps if st.polygon] if c.valid else []
+    if not steps:
+        return None
+    fig = paper.draw_polygons(steps, force_scale=polygon_scale(steps), driver_name=c.driver_name)
+    FigureCanvasAgg(fig)
+    return fig
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_no_label_on_a_label_or_an_outline_in_a_printed_figure_of_polygons(name):
+    """The polygons share one axes: each panel's labels keep off every title and the labels of the panels placed
+    before them, not only off their own polygon."""
+    fig = _printed_polygons(name)
+    if fig is None:
+        pytest.skip(f"{name} has no force polygon at figures/' position")
+    bad = overlaps(fig)
+    assert not bad, "\n".join(map(str, bad))
+
+
+def test_the_measure_sees_a_label_on_another_panel_s_title(monkeypatch):
+    """Without the boxes other panels' titles take (``Labeler.taken``), a label of the vertical engine's link 4
+    lands on its panel's title: the test above would see it."""
+    from graphkin.draw.labels import Labeler
+
+    place = Labeler.place
+
+    def forgetful(self):
+        self.taken = []
+        place(self)
+
+    monkeypatch.setattr(Labeler, "place", forgetful)
+    found = overlaps(_printed_polygons("engine_vertical_khurmi"))
+    assert any("Link 4" in a and "G₁₄" in b for a, b, _ in found), found
+
+
 @pytest.mark.parametrize("name", [n for n in NAMES if catalog.load(n).mechanism.driver.kind == "crank"])
 def test_no_label_on_a_label_or_a_curve_in_the_cycle_figure(name):
     """The whole-cycle figure (torque, polar joint forces; figures/<problem>_cycle.png): texts, tick labels and
