@@ -21,6 +21,7 @@ from itertools import combinations
 
 import numpy as np
 
+from graphkin.analytical.kinetostatics import pitch as pitch_point
 from graphkin.errors import GraphkinError
 from graphkin.graphical.captions import number
 from graphkin.kinematics import DriverGroup, Kinematics
@@ -147,9 +148,8 @@ def instant_centres(kin: Kinematics, index: int = 0) -> InstantCentres:
             P = (-u.imag, u.real, 0.0)
             how = f"at infinity, perpendicular to the guide at {joint.point}"
         elif isinstance(joint, GearMesh):
-            (ca, cb), (ra, _) = joint.centers, joint.radii
-            A, B = pos(a, ca), pos(b, cb)
-            P = hom(A + ra * (B - A) / abs(B - A))
+            A, B = pos(a, joint.centers[0]), pos(b, joint.centers[1])
+            P = hom(complex(pitch_point(joint, a, A, B)[0]))  # an internal mesh's lies beyond the pinion
             how = "the pitch point"
         else:  # pragma: no cover - the model has these three joints only
             raise AssertionError(joint)

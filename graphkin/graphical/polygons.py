@@ -28,6 +28,7 @@ import math
 
 import numpy as np
 
+from graphkin.analytical.kinetostatics import pitch as pitch_point
 from graphkin.errors import GraphkinError
 from graphkin.geometry import zcross as cross
 from graphkin.graphical.captions import number
@@ -459,9 +460,9 @@ class _Polygons:
 
     # -- gears ----------------------------------------------------------------------------------------------
     def pitch(self, g: GearGroup):
-        rj = g.mesh.radii[0] if g.mesh.links[0] == g.j else g.mesh.radii[1]
+        # The force route's pitch point: beyond the pinion's centre, on the annulus's side, for an internal mesh.
         Cj, Ck = self.pos(g.j, g.j_pivot.point), self.pos(g.k, g.pivot.point)
-        return Cj + rj * (Ck - Cj) / abs(Ck - Cj), Ck
+        return complex(pitch_point(g.mesh, g.k, Ck, Cj)[0]), Ck
 
     def gear_velocity(self, g: GearGroup):
         P, Ck = self.pitch(g)

@@ -180,3 +180,27 @@ def test_a_gear_on_a_moving_carrier_equals_analytical(theta):
     mech = _geared_four_bar()
     assert any(isinstance(g, GearGroup) and g.b == 2 for g in decompose(mech))
     assert polygons_equal_analytical(Case(mech, np.array([theta]), np.array([12.0]), np.array([-30.0]))) == 1
+
+
+def _pinion_in_annulus() -> Mechanism:
+    """A pinion (r = 40 mm) on the frame at O2 driving an annulus (r = 120 mm) pivoted at O3, 80 mm away."""
+    return Mechanism([Link(1, {"O2": (0, 0), "O3": (-0.08, 0)}), Link(2, {"O2": (0, 0)}), Link(3, {"O3": (0, 0)})],
+                     [Revolute((1, 2), "O2"), Revolute((1, 3), "O3"),
+                      GearMesh((2, 3), ("O2", "O3"), (0.04, 0.12), internal=True)], Driver(2))
+
+
+def test_an_annulus_found_from_its_pinion_turns_its_way():
+    """Issue 35: a pinion at 10 rad/s drives an annulus of three times its radius at +10/3 rad/s (the same sense).
+
+    The polygons took the pitch point on the external side (ω3 = −10 rad/s) and the instant centre I23 with it.
+    """
+    kin = solve_kinematics(_pinion_in_annulus(), [0.4], 10.0, 2.0)
+    c = construct_kinematics(kin, 0)
+    assert c.valid
+    assert c.omega[3] == pytest.approx(10.0 / 3, rel=1e-12)
+    assert c.alpha[3] == pytest.approx(2.0 / 3, rel=1e-12)
+    assert c.images["velocity"]["p23"] == pytest.approx((0.0, 0.4), abs=1e-15)  # the pitch point at (40, 0) mm
+    ic = instant_centres(kin, 0)
+    assert ic.centres[(2, 3)] == pytest.approx((0.04, 0.0), abs=1e-15)
+    assert polygons_equal_analytical(Case(kin.mechanism, np.array([0.4, 2.0]), np.array([10.0, -7.0]),
+                                          np.array([2.0, 5.0]))) == 2
