@@ -29,11 +29,13 @@ What is compared, position by position:
 from __future__ import annotations
 
 import math
+import weakref
 from dataclasses import replace
 
 import numpy as np
 
 from graphkin.kinematics import solve_kinematics
+from graphkin.kinematics.plan import plan_of
 from graphkin.notation import largest, num, polar_text
 
 AGREEMENT = 1e-9
@@ -115,76 +117,116 @@ def check_forces(result, c, i: int):
 
 
 # -- motion -----------------------------------------------------------------------------------------------------
+class _Shape:
+    """What the guard reads of a mechanism at every position, made once per mechanism (its plan's cache)."""
+
+    def __init__(self, mech):
+        self.size = mechanism_size(mech)
+        self.frame = mech.frame
+        self.moving = tuple(mech.moving)
+        self.points = plan_of(mech).points  # (link, name): the point in its link's own frame [m], complex
+        self.G = {link.number: complex(*link.G) for link in mech.links}
+        self.bodies = {n: [self.points[n, name] for name in mech.link(n).points] + [self.G[n]] for n in self.moving}
+
+
+def _shape(mech) -> _Shape:
+    compiled = plan_of(mech).compiled
+    shape = compiled.get("guard")
+    if shape is None:
+        shape = compiled["guard"] = _Shape(mech)
+    return shape
+
+
 class _Truth:
-    """The analytical motion of position ``i``: any point's velocity and acceleration as a point of any link."""
+    """The analytical motion of position ``i``: any point's velocity and acceleration as a point of any link.
+
+    ``motion[link]`` is ``(O, e, v_O, a_O, iω, iα − ω²)``: the link's origin and direction [m, unit complex], its
+    origin's velocity and acceleration, and the factors that carry them to a point r = P − O away (v = v_O + iω r,
+    a = a_O + (iα − ω²) r).
+    """
 
     def __init__(self, kin, i: int):
-        mech = kin.mechanism
-        self.frame = mech.frame
-        self.size = mechanism_size(mech)
-        self.w = {n: float(kin.omega[n][i]) for n in mech.moving}
-        self.al = {n: float(kin.alpha[n][i]) for n in mech.moving}
-        self.O = {n: complex(kin.O[n][i]) for n in mech.moving}
-        self.v_O = {n: complex(kin.v_O[n][i]) for n in mech.moving}
-        self.a_O = {n: complex(kin.a_O[n][i]) for n in mech.moving}
-        self.w[self.frame] = self.al[self.frame] = 0.0
-        self.O[self.frame] = self.v_O[self.frame] = self.a_O[self.frame] = 0j
-        self.e = {n: complex(kin.e[n][i]) for n in mech.moving}
-        self.e[self.frame] = 1 + 0j
-        # The scales: the fastest named point or centre of mass, or a link's ω over the mechanism's size.
-        speeds, accels = [0.0], [0.0]
-        for n in mech.moving:
-            body = mech.link(n)
-            for p in list(body.points.values()) + [body.G]:
-                P = self.at(n, p)
-                speeds.append(abs(self.v(n, P)))
-                accels.append(abs(self.a(n, P)))
-            speeds.append(abs(self.w[n]) * self.size)
-            accels.append(abs(self.al[n]) * self.size)
-        self.v_scale, self.a_scale = max(speeds), max(accels)
-
-    def at(self, link: int, p) -> complex:
-        """Where the point ``p`` (x, y) [m] of ``link``'s own frame is [m]."""
-        return self.O[link] + self.e[link] * complex(*p)
+        shape = self.shape = _shape(kin.mechanism)
+        self.frame, self.size = shape.frame, shape.size
+        self.w = {shape.frame: 0.0}
+        self.al = {shape.frame: 0.0}
+        motion = self.motion = {shape.frame: (0j, 1 + 0j, 0j, 0j, 0j, 0j)}
+        # The scales: the fastest named point or centre of mass, or a link's ω (α) over the mechanism's size.
+        v_top, a_top = 0.0, 0.0
+        for n in shape.moving:
+            # .item(i): Python numbers straight from the arrays, without a numpy scalar in between.
+            w, al = float(kin.omega[n].item(i)), float(kin.alpha[n].item(i))
+            e, v_O, a_O = complex(kin.e[n].item(i)), complex(kin.v_O[n].item(i)), complex(kin.a_O[n].item(i))
+            iw, turn = 1j * w, 1j * al - w * w
+            self.w[n], self.al[n] = w, al
+            motion[n] = (complex(kin.O[n].item(i)), e, v_O, a_O, iw, turn)
+            v_top = max([v_top, abs(w) * self.size] + [abs(v_O + iw * e * p) for p in shape.bodies[n]])
+            a_top = max([a_top, abs(al) * self.size] + [abs(a_O + turn * e * p) for p in shape.bodies[n]])
+        self.v_scale, self.a_scale = v_top, a_top
 
     def v(self, link: int, P: complex) -> complex:
         """Velocity [m/s] of the point at ``P`` [m] moving with ``link``."""
-        return self.v_O[link] + 1j * self.w[link] * (P - self.O[link])
+        O, _, v_O, _, iw, _ = self.motion[link]
+        return v_O + iw * (P - O)
 
     def a(self, link: int, P: complex) -> complex:
         """Acceleration [m/s²] of the point at ``P`` [m] moving with ``link``."""
-        return self.a_O[link] + (1j * self.al[link] - self.w[link] ** 2) * (P - self.O[link])
+        O, _, _, a_O, _, turn = self.motion[link]
+        return a_O + turn * (P - O)
+
+
+_LAST: list = []
+"""The last few truths made, ``(weakref to the kinematics, i, truth)``: the polygons and the instant centres of one
+position (``solve --json --motion-polygons``, a handout) share theirs."""
+
+
+def _truth(kin, i: int) -> _Truth:
+    for ref, at, truth in _LAST:
+        if at == i and ref() is kin:
+            return truth
+    truth = _Truth(kin, i)
+    _LAST[:] = [(weakref.ref(kin), i, truth)] + _LAST[:3]
+    return truth
 
 
 class _Ledger:
-    """Every comparison of a construction with the analytical route, of speeds (``"v"``) or accelerations (``"a"``).
+    """Every comparison of a construction with the analytical route, of speeds (kind 0) or accelerations (kind 1).
 
-    Each is measured against the largest value of its kind at the position: the named points', the links' ω (α)
-    times the mechanism's size, and every analytical value compared (a pitch point that is no named point may be
-    the only thing that moves).
+    Each difference is measured against the largest value of its kind at the position: the named points', the
+    links' ω (α) times the mechanism's size, and every analytical value compared (a pitch point that is no named
+    point may be the only thing that moves). Only the worst is put in words. Plain Python: a position has a few
+    dozen values, where numpy's arrays cost more to make than the arithmetic.
     """
 
-    def __init__(self, truth: _Truth):
-        self.scale = {"v": truth.v_scale, "a": truth.a_scale}
-        self.items: list[tuple[str, float, object]] = []
+    __slots__ = ("scale", "items")
 
-    def see(self, kind: str, gap: float, what, size: float = 0.0):
-        """A difference ``gap`` of ``kind``; ``what(scale)`` says it; ``size``: the analytical value's magnitude."""
-        self.items.append((kind, gap, what))
+    def __init__(self, truth: _Truth):
+        self.scale = [truth.v_scale, truth.a_scale]
+        self.items: list[tuple] = []  # (kind, gap, z, t, say): the words made for the worst only
+
+    def see(self, kind: int, z: complex, t: complex, *say):
+        """The construction's value ``z`` against the analytical ``t`` [m/s or m/s²]; ``say``: a function and its
+        first arguments, to put the difference in words."""
+        size = abs(t)
         if size > self.scale[kind]:
             self.scale[kind] = size
+        self.items.append((kind, abs(z - t), z, t, say))
 
     def reason(self, route: str) -> str:
-        worst, what = 0.0, None
-        for kind, gap, say in self.items:
+        worst, found = 0.0, None
+        for item in self.items:
+            kind, gap = item[0], item[1]
             scale = self.scale[kind]
             ratio = gap / scale if scale > 0 else (0.0 if gap == 0 else math.inf)
             if not ratio <= worst:  # nan counts as the worst
-                worst, what = ratio, (say, scale)
+                worst, found = ratio, item
         if worst <= AGREEMENT:
             return ""
-        say, scale = what
-        return f"the {route} and the analytical route disagree: {say(scale)}"
+        kind, _, z, t, (say, *args) = found
+        return f"the {route} and the analytical route disagree: {say(*args, z, t, self.scale[kind])}"
+
+
+_UNIT = ("m/s", "m/s²")
 
 
 def _vec(z: complex, unit: str, scale: float) -> str:
@@ -195,39 +237,51 @@ def _rate(x: float, unit: str) -> str:
     return f"{num(x, 6, minus='-')} {unit}"
 
 
-def _where(truth: _Truth, mech, link: int, point) -> complex:
-    """Where a link's named point is [m] (``point`` None: its centre of mass), placed as the polygons place it."""
-    body = mech.link(link)
-    return truth.at(link, body.G if point is None else body.point(point))
-
-
-_UNIT = {"v": "m/s", "a": "m/s²"}
-
-
-def _compare(ledger: _Ledger, kind: str, z, t: complex, name: str):
-    """A vector ``z`` of the construction against the analytical ``t``, both [m/s] or [m/s²]."""
-    z = complex(*z)
+def _vectors(name: str, kind: int, z: complex, t: complex, scale: float) -> str:
     unit = _UNIT[kind]
-    ledger.see(kind, abs(z - t), lambda scale: f"{name} is {_vec(z, unit, scale)} graphically, "
-               f"{_vec(t, unit, scale)} analytically", abs(t))
+    return f"{name} is {_vec(z, unit, scale)} graphically, {_vec(t, unit, scale)} analytically"
 
 
-def _motion_values(ledger: _Ledger, truth: _Truth, mech, omega: dict, velocity: dict, v_G: dict, alpha=None,
+def _point(kind: int, link: int, point: str | None, z: complex, t: complex, scale: float) -> str:
+    name = f"{'va'[kind]}_G{link}" if point is None else f"{'va'[kind]}_{point} of link {link}"
+    return _vectors(name, kind, z, t, scale)
+
+
+def _rates(symbol: str, link: int, unit: str, size: float, z: complex, t: complex, scale: float) -> str:
+    return f"{symbol}{link} is {_rate(z.real / size, unit)} graphically, {_rate(t.real / size, unit)} analytically"
+
+
+def _motion_values(ledger: _Ledger, truth: _Truth, omega: dict, velocity: dict, v_G: dict, alpha=None,
                    acceleration=None, a_G=None):
     """Compare a construction's ω (α) of each link and the velocity (acceleration) of each named point and G."""
-    size = truth.size
-    for kind, table, true, symbol, unit in (("v", omega, truth.w, "ω", "rad/s"),
-                                            ("a", alpha or {}, truth.al, "α", "rad/s²")):
+    size, motion, shape = truth.size, truth.motion, truth.shape
+    see = ledger.see
+    # ω and α times the mechanism's size: measured as the speed (acceleration) they give its farthest point.
+    for kind, table, true, symbol, unit in ((0, omega, truth.w, "ω", "rad/s"), (1, alpha or {}, truth.al, "α", "rad/s²")):
         for link, x in table.items():
-            t = true[link]
-            ledger.see(kind, abs(x - t) * size, lambda scale, link=link, x=x, t=t, symbol=symbol, unit=unit:
-                       f"{symbol}{link} is {_rate(x, unit)} graphically, {_rate(t, unit)} analytically")
-    for kind, table, rule in (("v", velocity, truth.v), ("a", acceleration or {}, truth.a)):
-        for (link, point), value in table.items():
-            _compare(ledger, kind, value, rule(link, _where(truth, mech, link, point)), f"{kind}_{point} of link {link}")
-    for kind, table, rule in (("v", v_G, truth.v), ("a", a_G or {}, truth.a)):
-        for link, value in table.items():
-            _compare(ledger, kind, value, rule(link, _where(truth, mech, link, None)), f"{kind}_G{link}")
+            see(kind, complex(x * size), complex(true[link] * size), _rates, symbol, link, unit, size)
+    # A point r = e p from its link's origin (p in the link's own frame): v = v_O + iω r, a = a_O + (iα − ω²) r.
+    points, G = shape.points, shape.G
+    for (link, point), (x, y) in velocity.items():
+        _, e, v_O, _, iw, _ = motion[link]
+        see(0, complex(x, y), v_O + iw * e * points[link, point], _point, 0, link, point)
+    for (link, point), (x, y) in (acceleration or {}).items():
+        _, e, _, a_O, _, turn = motion[link]
+        see(1, complex(x, y), a_O + turn * e * points[link, point], _point, 1, link, point)
+    for link, (x, y) in v_G.items():
+        _, e, v_O, _, iw, _ = motion[link]
+        see(0, complex(x, y), v_O + iw * e * G[link], _point, 0, link, None)
+    for link, (x, y) in (a_G or {}).items():
+        _, e, _, a_O, _, turn = motion[link]
+        see(1, complex(x, y), a_O + turn * e * G[link], _point, 1, link, None)
+
+
+def _image(polygon: str, name: str, kind: int, z: complex, t: complex, scale: float) -> str:
+    return _vectors(f"the {polygon} image {name}", kind, z, t, scale)
+
+
+def _unknown_image(name: str, polygon: str, z, t, scale) -> str:
+    return f"the {polygon} polygon's image {name} is no point of a link the check knows"
 
 
 def motion_disagreement(kin, i: int, c, where: dict, coriolis: dict) -> str:
@@ -254,24 +308,27 @@ def motion_disagreement(kin, i: int, c, where: dict, coriolis: dict) -> str:
         '' where every value agrees to :data:`AGREEMENT` of its scale; else the reason, naming the worst quantity
         and both values.
     """
-    truth = _Truth(kin, i)
+    truth = _truth(kin, i)
     ledger = _Ledger(truth)
-    _motion_values(ledger, truth, kin.mechanism, c.omega, c.velocity, c.v_G, c.alpha, c.acceleration, c.a_G)
-    for kind, polygon, rule in (("v", "velocity", truth.v), ("a", "acceleration", truth.a)):
-        for name, value in c.images[polygon].items():
-            if name.rstrip("′") == "o":  # the pole: the frame's image
-                link, P = truth.frame, 0j
-            elif name in where:
+    _motion_values(ledger, truth, c.omega, c.velocity, c.v_G, c.alpha, c.acceleration, c.a_G)
+    see, motion = ledger.see, truth.motion
+    for kind, polygon in ((0, "velocity"), (1, "acceleration")):
+        for name, (x, y) in c.images[polygon].items():
+            if name in where:
                 link, P = where[name]
-            else:  # an image a construction added without saying whose point it is cannot be checked: not shown
-                ledger.see(kind, math.inf, lambda scale, name=name, polygon=polygon:
-                           f"the {polygon} polygon's image {name} is no point of a link the check knows")
-                continue
-            _compare(ledger, kind, value, rule(link, P), f"the {polygon} image {name}")
-    for vector in c.vectors("acceleration"):
+                O, _, v_O, a_O, iw, turn = motion[link]
+                see(kind, complex(x, y), a_O + turn * (P - O) if kind else v_O + iw * (P - O), _image, polygon, name,
+                    kind)
+            elif name not in ("o", "o′"):  # the pole is the frame's image: 0
+                # An image a construction added without saying whose point it is cannot be checked: not shown.
+                see(kind, complex(math.inf), 0j, _unknown_image, name, polygon)
+            else:
+                see(kind, complex(x, y), 0j, _image, polygon, name, kind)
+    for vector in c.vectors("acceleration") if coriolis else ():
         if vector.name in coriolis:
             m, k, b, X = coriolis[vector.name]
-            _compare(ledger, "a", vector.vector, 2j * truth.w[m] * (truth.v(k, X) - truth.v(b, X)), vector.name)
+            ledger.see(1, complex(*vector.vector), 2j * truth.w[m] * (truth.v(k, X) - truth.v(b, X)), _vectors,
+                       vector.name, 1)
     return ledger.reason("velocity and acceleration polygons")
 
 
@@ -283,24 +340,34 @@ def centres_disagreement(kin, i: int, ic) -> str:
     must leave a and b only translating relative to each other (ω_a = ω_b), and across u (the relative velocity
     perpendicular to u). The ω and the velocities the centres give are compared as the polygons' are.
     """
-    truth = _Truth(kin, i)
+    truth = _truth(kin, i)
     ledger = _Ledger(truth)
-    for (a, b), P in ic.centres.items():  # keyed by the links' own numbers, the frame's included
-        z = complex(*P)
-        gap = abs(truth.v(b, z) - truth.v(a, z))
-        ledger.see("v", gap, lambda scale, a=a, b=b, z=z, gap=gap: f"I{a}{b} at ({num(z.real * 1e3, 6, minus='-')}, "
-                   f"{num(z.imag * 1e3, 6, minus='-')}) mm moves at {num(gap, 6)} m/s relative to link {a} as a point "
-                   f"of link {b} (an instant centre has no relative velocity)")
+    for (a, b), (x, y) in ic.centres.items():  # keyed by the links' own numbers, the frame's included
+        P = complex(x, y)
+        ledger.see(0, truth.v(b, P) - truth.v(a, P), 0j, _moving_centre, a, b, P)
     for (a, b), u in ic.at_infinity.items():
         dw = truth.w[b] - truth.w[a]
-        ledger.see("v", abs(dw) * truth.size, lambda scale, a=a, b=b, dw=dw: f"I{a}{b} is at infinity graphically, "
-                   f"but links {a} and {b} turn relative to each other at {_rate(dw, 'rad/s')} analytically")
+        ledger.see(0, complex(dw * truth.size), 0j, _turning_apart, a, b, truth.size)
         d = truth.v(b, 0j) - truth.v(a, 0j)  # where ω_a = ω_b, the same at every point
-        along = abs(d.real * u[0] + d.imag * u[1])
-        ledger.see("v", along, lambda scale, a=a, b=b, along=along: f"I{a}{b} is at infinity across the sliding "
-                   f"graphically, but links {a} and {b} move {num(along, 6)} m/s apart along it analytically")
-    _motion_values(ledger, truth, kin.mechanism, ic.omega, ic.velocity, ic.v_G)
+        ledger.see(0, complex(d.real * u[0] + d.imag * u[1]), 0j, _sliding_apart, a, b)
+    _motion_values(ledger, truth, ic.omega, ic.velocity, ic.v_G)
     return ledger.reason("instant centres")
+
+
+def _moving_centre(a: int, b: int, P: complex, z, t, scale) -> str:
+    return (f"I{a}{b} at ({num(P.real * 1e3, 6, minus='-')}, {num(P.imag * 1e3, 6, minus='-')}) mm moves at "
+            f"{num(abs(z), 6)} m/s relative to link {a} as a point of link {b} (an instant centre has no relative "
+            "velocity)")
+
+
+def _turning_apart(a: int, b: int, size: float, z, t, scale) -> str:
+    return (f"I{a}{b} is at infinity graphically, but links {a} and {b} turn relative to each other at "
+            f"{_rate(z.real / size, 'rad/s')} analytically")
+
+
+def _sliding_apart(a: int, b: int, z, t, scale) -> str:
+    return (f"I{a}{b} is at infinity across the sliding graphically, but links {a} and {b} move "
+            f"{num(abs(z), 6)} m/s apart along it analytically")
 
 
 def derived(kin, i: int):
