@@ -172,42 +172,44 @@ def _pressure_line(rd, joints, raw, where, load, motion) -> None:
                       "cylinder (a link of a prismatic joint); give a load on another link as type = \"force\"")
     a = rd.si(raw, "angle", field)
     rounding = written(raw, "angle", field=field, file=rd.file).rounding
-    n = len(motion.q)
-    ok, seen, found = np.zeros(n, bool), np.zeros(n, bool), []
-    for k, j in lines:
-        g, valid, own = _line(j, motion)
+
+    def tolerance(k, own):
+        # The joint's direction is written too, with its own rounding (left out, it is an exact 0).
         text = joints[k].get(own) if own else None
-        tol = max(REL, rounding + (written(text, "angle", field=f"joints[{k}].{own}", file=rd.file).rounding
-                                   if text is not None else 0.0))
-        ok |= valid & (np.abs(np.sin(a - g)) <= tol)
-        seen |= valid
-        found.append((k, j, g))
-    off = seen & ~ok
-    if load.active is not None:
-        off &= load.active.mask(motion.q)
-    if off.any():
-        i = int(np.argmax(off))
-        k, j, g = found[0]
-        d = math.degrees(float(np.broadcast_to(g, (n,))[i])) % 360
+        return max(REL, rounding + (0.0 if text is None else
+                                    written(text, "angle", field=f"joints[{k}].{own}", file=rd.file).rounding))
+
+    def refuse(k, j, g, at=""):
+        d = math.degrees(g) % 360
         other = j.slider if j.guide == load.link else j.guide
         on = "the frame" if other == mech.frame else f"link {other}"
-        at = "" if other == mech.frame else f" at {motion.at(i)}"
         raise rd.fail(field, f"is {shown(raw)} but the piston, link {load.link}, slides on {on} along {d:.6g}° "
                       f"(joints[{k}]){at}: a pressure pushes it along that line, direction = \"{d:.6g} deg\" or "
                       f"\"{(d + 180) % 360:.6g} deg\"")
 
-
-def _line(joint, motion):
-    """A prismatic joint's line: its direction from +x [rad] (scalar or shape (n,)), where it is known, and the
-    joint's field that states it (None where the line turns with a moving guide)."""
-    mech = motion.mech
-    if mech.frame in joint.links:
-        # Fixed in the frame: the guide's direction, or the slider's own where the frame is the slider.
-        if joint.guide == mech.frame:
-            return joint.direction, np.ones(len(motion.q), bool), "direction"
-        return joint.slider_direction, np.ones(len(motion.q), bool), "slider_direction"
+    turning = []
+    for k, j in lines:
+        if mech.frame not in j.links:
+            turning.append((k, j))
+            continue
+        # A line fixed in the frame: the guide's direction, or the slider's own where the frame is the slider.
+        own = "direction" if j.guide == mech.frame else "slider_direction"
+        if abs(math.sin(a - getattr(j, own))) <= tolerance(k, own):
+            return
+    if not turning:
+        k, j = lines[0]
+        refuse(k, j, j.direction if j.guide == mech.frame else j.slider_direction)
     kin = motion.kin
-    return np.angle(kin.z_guide(joint)), kin.valid, None
+    ok = np.zeros(len(motion.q), bool)
+    for k, j in turning:
+        ok |= np.abs(np.sin(a - np.angle(kin.z_guide(j)))) <= tolerance(k, None)
+    off = kin.valid & ~ok
+    if load.active is not None:
+        off &= load.active.mask(motion.q)
+    if off.any():
+        i = int(np.argmax(off))
+        k, j = turning[0]
+        refuse(k, j, float(np.angle(kin.z_guide(j))[i]), f" at {motion.at(i)}")
 
 
 def _on_frame(mech, link):
