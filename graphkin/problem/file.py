@@ -25,6 +25,7 @@ from graphkin.model import mass as massprops
 from graphkin.problem import books
 from graphkin.problem.problem import Problem
 from graphkin.problem.reader import FieldReader
+from graphkin.problem.stated import check_stated
 from graphkin.problem.tables import load_table
 
 _TOP = {"title", "source", "cite", "notes", "analysis", "gravity", "frame", "links", "joints", "driver", "loads", "assembly",
@@ -246,6 +247,8 @@ def build_problem(data: Mapping[str, Any], *, file: str = "<problem>", base: str
             raise rd.fail(f"assembly.{key}", f"{key} is not the middle joint of a dyad, so it chooses no branch; "
                           + (f"this mechanism's branches are chosen at {', '.join(branches)}" if branches else
                              "this mechanism has no dyad, so no branch to choose: leave out [assembly]"))
+    # Once the mechanism, its positions and rates are known: what the file states twice must agree with itself.
+    check_stated(rd, data, mech, q, q_dot, q_ddot, loads, origin)
     forward = books.forward(rd, data["forward"], kind, q_dot) if "forward" in data else None
     unknown = books.unknown(rd, data["unknown"], mech) if "unknown" in data else None
     if unknown is not None and forward is not None:
