@@ -152,7 +152,9 @@ def _dead_centre(rd, mech, which, field):
         # The crank points at the piston at the inner dead centre, away from it at the outer one.
         theta = float(np.angle((X - O) * DEAD_CENTRES[which])) - beta
         kin = solve_kinematics(mech, [theta], 0.0, 0.0)
-        if kin.valid[0] and abs(complex(*kin.position(rod, P.point)[0]) - X) <= 1e-6 * (r + l):
+        # The slider-crank alone decides: a linkage that goes on from it may not assemble there (its row says so
+        # when solved), and the piston's pin is then still placed (nan only where the slider-crank is not).
+        if abs(complex(*kin.position(rod, P.point)[0]) - X) <= 1e-6 * (r + l):
             return theta, X
     raise rd.fail(field, f"the mechanism cannot be assembled at its {which}")
 
