@@ -17,6 +17,8 @@ from graphkin.errors import ModelError
 from graphkin.kinematics import decompose, solve_kinematics
 from graphkin.kinematics.structure import Dyad
 from graphkin.model import PointForce, Prismatic, Revolute, StrokeForce, Table, Torque, spring
+from graphkin.notation import num
+from graphkin.problem.placement import placements
 from graphkin.problem.problem import Forward
 from graphkin.problem.tables import load_table, parse_table
 from graphkin.problem.unknown import Unknown
@@ -152,63 +154,67 @@ def _dead_centre(rd, mech, which, field):
         # The crank points at the piston at the inner dead centre, away from it at the outer one.
         theta = float(np.angle((X - O) * DEAD_CENTRES[which])) - beta
         kin = solve_kinematics(mech, [theta], 0.0, 0.0)
-        if kin.valid[0] and abs(complex(*kin.position(rod, P.point)[0]) - X) <= 1e-6 * (r + l):
+        # The slider-crank alone decides: a linkage that goes on from it may not assemble there (its row says so
+        # when solved), and the piston's pin is then still placed (nan only where the slider-crank is not).
+        if abs(complex(*kin.position(rod, P.point)[0]) - X) <= 1e-6 * (r + l):
             return theta, X
     raise rd.fail(field, f"the mechanism cannot be assembled at its {which}")
 
 
 def placed(rd, d, mech):
-    """``driver.place``: the slider's position s [m] at which a named link stands at a given angle."""
+    """``driver.place``: the slider's position s [m] at which a named link stands at a given angle.
+
+    Every position the linkage reaches counts, its dead centres too (:mod:`.placement`); an angle it never
+    reaches is refused with the angles it does.
+    """
     t = rd.table(d["place"], "driver.place", {"link", "theta"})
     link = rd.whole(rd.need(t, "link", "driver.place"), "driver.place.link")
     if link not in mech.moving or link == mech.driver.link:
         raise rd.fail("driver.place.link", f"must be a moving link other than the slider "
                       f"({', '.join(str(n) for n in mech.moving if n != mech.driver.link)}), got {link!r}")
     target = rd.si(rd.need(t, "theta", "driver.place"), "angle", "driver.place.theta")
-    roots = _placements(mech, link, target)
-    if not roots:
+    found = placements(mech, link, target)
+    if not found.s:
+        reach = _reach(found)
         # Not on the file's branch: say which other branch has it, so the book's figure can be matched.
         for key in sorted({g.key for g in decompose(mech) if isinstance(g, Dyad)}):
             other = replace(mech, assembly={**mech.assembly, key: -mech.assembly.get(key, 1)})
-            found = _placements(other, link, target)
-            if found:
+            there = placements(other, link, target).s
+            if there:
                 raise rd.fail("driver.place.theta", f"link {link} never stands at {t['theta']!r} on the branch the "
-                              f"file assembles, but does on the other branch at {key} (s = "
-                              + ", ".join(f"{x * 1e3:.6g} mm" for x in found)
+                              f"file assembles (there {reach}), but does on the other branch at {key} (s = "
+                              + ", ".join(f"{x} mm" for x in _apart(there))
                               + f"): add [assembly] {key} = {-mech.assembly.get(key, 1)} if the book's figure is that one")
-        raise rd.fail("driver.place.theta", f"link {link} never stands at {t['theta']!r} as the slider moves")
-    if len(roots) > 1:
+        raise rd.fail("driver.place.theta", f"link {link} never stands at {t['theta']!r} as the slider moves: {reach}")
+    if len(found.s) > 1:
         raise rd.fail("driver.place.theta", f"link {link} stands at {t['theta']!r} at more than one slider position ("
-                      + ", ".join(f"s = {x * 1e3:.6g} mm" for x in roots) + "): give the one the book means as s")
-    return np.array(roots)
+                      + ", ".join(f"s = {x} mm" for x in _apart(found.s)) + "): give the one the book means as s")
+    return np.array(found.s)
 
 
-def _placements(mech, link, target) -> list[float]:
-    """The slider positions s [m] at which ``link`` stands at ``target`` [rad], on the mechanism's assembly branch."""
-    # The slider's reach: a few times the mechanism's size either way, sampled finely, then Newton on θ(s).
-    size = max([math.hypot(x1 - x0, y1 - y0) for k in mech.links for (x0, y0) in k.points.values()
-                for (x1, y1) in k.points.values()] + [1e-3])
-    s = np.linspace(-4 * size, 4 * size, 4001)
-    kin = solve_kinematics(mech, s, 1.0, 0.0)
-    gap = np.angle(np.exp(1j * (kin.theta[link] - target)))
-    ok = kin.valid & np.isfinite(gap)
-    k = np.flatnonzero(ok[:-1] & ok[1:] & (np.sign(gap[:-1]) != np.sign(gap[1:])) & (np.abs(gap[:-1] - gap[1:]) < 1))
-    roots = []
-    for i in k:
-        x = s[i] - gap[i] * (s[i + 1] - s[i]) / (gap[i + 1] - gap[i])
-        for _ in range(50):
-            kx = solve_kinematics(mech, [x], 1.0, 0.0)
-            g, dg = float(np.angle(np.exp(1j * (kx.theta[link][0] - target)))), float(kx.omega[link][0])
-            if not (kx.valid[0] and dg):
-                break
-            step = g / dg
-            x -= step
-            if abs(step) <= 1e-15 * size:
-                break
-        kx = solve_kinematics(mech, [x], 1.0, 0.0)
-        if kx.valid[0] and abs(np.angle(np.exp(1j * (kx.theta[link][0] - target)))) <= 1e-12:
-            roots.append(x)
-    return [x for k, x in enumerate(sorted(roots)) if k == 0 or x - sorted(roots)[k - 1] > 1e-9 * size]
+def _apart(s) -> list[str]:
+    """Slider positions [m] in mm, with 6 significant digits or as many more as tell them apart."""
+    for digits in range(6, 18):
+        shown = [f"{x * 1e3:.{digits}g}" for x in s]
+        if len(set(shown)) == len(shown):
+            return shown
+    return shown
+
+
+def _reach(found) -> str:
+    """Where a link stands, stretch by stretch of the slider's travel, for a message: "it stands from … to …"."""
+    if not found.reach:
+        return "the linkage cannot be assembled anywhere along the guide"
+
+    def deg(r, x):
+        return num(math.degrees(x), 6, minus="-", zero=math.degrees(r.rounding))
+
+    def mm(x):
+        return num(x * 1e3, 6, minus="-")
+
+    return "it stands " + "; ".join(
+        ("at every angle" if r.every_angle else f"from {deg(r, r.theta[0])}° to {deg(r, r.theta[1])}°")
+        + f" for s = {mm(r.s[0])} mm to {mm(r.s[1])} mm" for r in found.reach)
 
 
 def pressure(rd, t, where, link, driver_kind, active, name):
