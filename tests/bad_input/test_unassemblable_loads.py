@@ -79,11 +79,13 @@ type = "torque"
 link = 6
 torque = "2 N*m"
 sense = "opposes motion"''',
+    # A power's stated speed is its link's at every position of the file (a contradicting one is refused): on the
+    # crank, whose speed is constant, over the whole cycle.
     "power": '''
 type = "power"
-link = 6
+link = 2
 power = "100 W"
-speed = "100 rpm"''',
+speed = "300 rpm"''',
     "power-on-the-crank": '''
 type = "power"
 link = 2
@@ -172,11 +174,8 @@ position [mm], torque [N*m]
 -600, -2
 600, 4
 """''',
-    "power": '''
-type = "power"
-link = 3
-power = "50 W"
-speed = "-5 rad/s"''',
+    # No power: its stated speed must be its link's at every position, and no link of the double slider turns at
+    # one speed over the file's positions (the crank family above has one).
     "pressure-table": '''
 type = "pressure"
 link = 4
