@@ -19,7 +19,7 @@ import re
 import unicodedata
 from collections import OrderedDict
 from dataclasses import dataclass, field, replace
-from functools import cached_property
+from functools import cached_property, lru_cache
 
 import numpy as np
 
@@ -72,8 +72,11 @@ def draw_index(secret: str, exercise: str, student: str, attempt: int, symbol: s
 _PRETTY = (("deg", "°"), ("^2", "²"), ("^3", "³"), ("*", "·"))
 
 
+@lru_cache(maxsize=4096)
 def pretty(value: str) -> str:
-    """A value string as a book prints it: ``"135 deg"`` → ``"135°"``, ``"8.3 rad/s^2"`` → ``"8.3 rad/s²"``."""
+    """A value string as a book prints it: ``"135 deg"`` → ``"135°"``, ``"8.3 rad/s^2"`` → ``"8.3 rad/s²"``.
+
+    Kept for each string (a class's sheets show the same few dozen values again and again)."""
     m = re.match(r"^(\S+)\s+deg$", value)
     if m:
         return f"{m[1]}°"
@@ -105,6 +108,9 @@ class Solved:
         self.Cs = Cs
         self.answers: dict = {}
         """Each question's :class:`~graphkin.exercises.quantities.Expected`, by question id, once computed."""
+        self.texts: dict = {}
+        """The sheet's texts for these values (the statement and each question filled in, each tolerance), once
+        written: every student who drew them gets the same."""
         # A slip in reading the polygons ("no_normal", "coriolis_reversed", "image_misplaced"): the motion
         # quantities are those a student who made it reads off.
         self.slip = slip
@@ -211,13 +217,18 @@ class Variant:
 
     def sheet(self) -> dict:
         """The student's exercise as plain data: the statement, their data and the questions; no answers."""
-        intro = _fill(self.exercise.intro, self.data)
+        texts = self.solved.texts
+        if not texts:
+            # On the solved draw, not the variant: classmates who drew the same values share them. A graphical
+            # question's tolerance reads the worksheet's scales off the construction.
+            texts["intro"] = _fill(self.exercise.intro, self.data)
+            for q in self.exercise.questions:
+                texts["ask", q.id], texts["within", q.id] = _fill(q.ask, self.data), within(q, self.solved)
         return {"exercise": self.exercise.id, "title": self.exercise.title, "source": self.exercise.source,
-                "student": self.student, "intro": intro, "draw": self.exercise.draw,
+                "student": self.student, "intro": texts["intro"], "draw": self.exercise.draw,
                 "data": [{"symbol": g.symbol, "label": g.label, "value": g.value, "shown": g.shown}
                          for g in self.data],
-                "questions": [{**question_data(q), "ask": _fill(q.ask, self.data),
-                               "within": within(q, self.solved)}
+                "questions": [{**question_data(q), "ask": texts["ask", q.id], "within": texts["within", q.id]}
                               for q in self.exercise.questions]}
 
     def key(self) -> dict:

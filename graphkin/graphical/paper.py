@@ -19,7 +19,9 @@ Examples
 from __future__ import annotations
 
 import math
+import weakref
 from dataclasses import dataclass
+from functools import partial
 
 import numpy as np
 
@@ -176,8 +178,44 @@ class SheetScales:
         return READING * self.length * 1e-3
 
 
+_KEPT: dict[int, tuple] = {}
+"""What :func:`sheet_scales` and :func:`motion_scales` found, by the id of the construction (with a weak reference to
+it, whose callback drops the entry when the construction goes)."""
+
+
+def _forget(key: int, ref: weakref.ref, kept=_KEPT) -> None:
+    # ``kept`` is bound here: at interpreter exit the module's globals may be gone before the last callbacks.
+    entry = kept.get(key)
+    if entry is not None and entry[0] is ref:
+        kept.pop(key, None)
+
+
+def _once(construction, key, find):
+    """``find()``, worked out once per construction and ``key`` while the construction lives.
+
+    A construction is frozen and its scales follow from it alone, but an exercise asks for them again and again:
+    every sheet, key and grade of each graphical question, for every student who drew the same values (each time
+    a few hundred numpy calls, most of a sheet's cost).
+    """
+    entry = _KEPT.get(id(construction))
+    if entry is None or entry[0]() is not construction:
+        try:
+            ref = weakref.ref(construction, partial(_forget, id(construction)))
+        except TypeError:  # an object that takes no weak reference is not kept
+            return find()
+        entry = _KEPT[id(construction)] = (ref, {})
+    found = entry[1]
+    if key not in found:
+        found[key] = find()
+    return found[key]
+
+
 def sheet_scales(construction) -> SheetScales:
     """The scales of a worksheet of this construction (the same for the sheet and for its grader)."""
+    return _once(construction, "sheet", partial(_sheet_scales, construction))
+
+
+def _sheet_scales(construction) -> SheetScales:
     points = [P for step in construction.steps for P in step.points.values()]
     k = length_scale(mechanism_size(construction, points=points), MECHANISM_ROOM)
     sizes = [polygon_size(step.polygon) for step in construction.steps if step.polygon]
@@ -228,6 +266,10 @@ def motion_scales(construction, room=MOTION_CELL) -> tuple[float, float]:
     (float, float)
         m/s per mm of the velocity polygon, m/s² per mm of the acceleration polygon.
     """
+    return _once(construction, ("motion", _pair(room)), partial(_motion_scales, construction, room))
+
+
+def _motion_scales(construction, room) -> tuple[float, float]:
     return (force_scale(motion_size(construction, "velocity"), room),
             force_scale(motion_size(construction, "acceleration"), room))
 
