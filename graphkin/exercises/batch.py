@@ -28,7 +28,7 @@ PARALLEL_FROM = 200
 """Rosters of at least this many students are spread over the cores."""
 
 _CHUNK = 50
-_GC_THRESHOLD = (10_000, 10, 10)
+_GC_THRESHOLD = (100_000, 10, 10)
 """A worker's garbage-collector thresholds (Python's default is (700, 10, 10)); see :func:`_start_worker`."""
 _WORKERS: list[ProcessPoolExecutor] = []
 _IN_WORKER = False
@@ -70,13 +70,18 @@ def _start_worker():
     session, and solving makes next to no reference cycles: an object is freed
     by its reference count. At Python's default thresholds the collector still
     walked that cache again and again, freeing nothing: 0.49 s of a 4.1 s make
-    pass of 1000 students of ``strip_cutter_cut``, 0 objects collected. Here the
-    young generation holds 10 000 objects (a fourteenth as many collections),
-    and what a chunk leaves alive is frozen (:func:`gc.freeze`) when it ends,
-    so later collections walk only what is new: the collector's share of a
-    session falls from ~12 % to ~1 %. The price: the rare cycle among frozen
-    objects (the collector found about 20 such objects in a session of three
-    exercises) stays until the worker ends, with the session.
+    pass of 1000 students of ``strip_cutter_cut``, 0 objects collected. Here
+    what a chunk leaves alive is frozen (:func:`gc.freeze`) when it ends, and
+    the young generation holds 100 000 objects, more than a chunk of
+    :data:`_CHUNK` students leaves (about 20 000 for the largest draws): the
+    collector runs only after a chunk that allocates more, and never walks the
+    draws. With 10 000 it still took 5-10 % of a session of the heaviest
+    exercises (39 collections in one of ``strip_cutter_cut``, 126 in one of
+    ``shaper_polygons`` with slipped answers graded), collecting nothing. The
+    price: a cycle that a chunk makes and drops is frozen with the rest and
+    stays until the worker ends, with the session (a full collection after
+    sessions of 1000 students of four exercises found 32 such objects, against
+    10 with the smaller threshold; the same peak memory).
     """
     global _IN_WORKER
     _IN_WORKER = True
