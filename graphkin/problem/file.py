@@ -179,7 +179,7 @@ def build_problem(data: Mapping[str, Any], *, file: str = "<problem>", base: str
     frame = _read_once(_frame, rd, data.get("frame", {}), "frame")
     links = [frame] + [_read_once(_link, rd, t, f"links[{i}]", frame.number, static)
                        for i, t in enumerate(_list(rd, data, "links"))]
-    joints = [_joint(rd, t, f"joints[{i}]") for i, t in enumerate(_list(rd, data, "joints"))]
+    joints = [_joint_once(rd, t, f"joints[{i}]") for i, t in enumerate(_list(rd, data, "joints"))]
     d = rd.table(rd.need(data, "driver", ""), "driver", _DRIVER["crank"] | _DRIVER["slider"])
     kind = d.get("type", "crank")
     if kind not in _DRIVER:
@@ -206,8 +206,8 @@ def build_problem(data: Mapping[str, Any], *, file: str = "<problem>", base: str
     # A pressure against the stroke needs the mechanism's dead centres: it joins the loads once they are known.
     plain = [k for k, ld in enumerate(loads) if not isinstance(ld, books.PendingStroke)]
     try:
-        mech = Mechanism(links, joints, driver, [loads[k] for k in plain], gravity, assembly,
-                         title=str(data.get("title", "")), source=str(data.get("source", "")), frame=frame.number)
+        mech = _mechanism_once(links, joints, driver, [loads[k] for k in plain], gravity, assembly,
+                               str(data.get("title", "")), str(data.get("source", "")), frame.number)
         if len(plain) < len(loads):
             plain = list(range(len(loads)))
             mech = replace(mech, loads=tuple(books.resolve_strokes(rd, mech, loads, bool(np.any(q_dot)))))
@@ -289,6 +289,34 @@ def _read_once(read, rd, t, where, *args):
     if len(_READ) > _READ_SIZE:
         _READ.popitem(last=False)
     return part
+
+
+_MECHANISMS: OrderedDict = OrderedDict()
+_MECHANISMS_SIZE = 256
+
+
+def _mechanism_once(links, joints, driver, loads, gravity, assembly, title, source, frame) -> Mechanism:
+    """The mechanism of these parts, or the one made before of the very same parts.
+
+    Links, joints and forces are read once per equal table (:func:`_read_once`), so the draws of an exercise
+    that change only the input's position or speed, or a load's size among a few, are made of the same part
+    objects again and again: they share one mechanism, and with it the plan the solvers keep for it (the
+    decomposition into groups, the compiled steps; :func:`graphkin.kinematics.plan.plan_of`), which each new
+    mechanism would work out afresh (a seventh of a draw's build and solve). A mechanism is frozen, as its parts
+    are. The key holds the parts' ids: the mechanism it leads to keeps them alive, so no other object has them
+    while the entry is kept.
+    """
+    key = (tuple(map(id, links)), tuple(map(id, joints)), driver, tuple(map(id, loads)), gravity,
+           tuple(assembly.items()), title, source, frame)
+    mech = _MECHANISMS.get(key)
+    if mech is not None:
+        _MECHANISMS.move_to_end(key)
+        return mech
+    mech = _MECHANISMS[key] = Mechanism(links, joints, driver, loads, gravity, assembly, title=title, source=source,
+                                        frame=frame)
+    if len(_MECHANISMS) > _MECHANISMS_SIZE:
+        _MECHANISMS.popitem(last=False)
+    return mech
 
 
 def _frame(rd, value, where):
@@ -390,6 +418,19 @@ def _shape(rd, t, points, where, static=False):
         raise rd.fail(where, str(exc)) from None
 
 
+def _joint_once(rd, t, where):
+    """A joint read from its table, or the one read before from an equal table (:func:`_read_once`); an unusually
+    high friction coefficient is warned of every time."""
+    joint = _read_once(_joint, rd, t, where)
+    if isinstance(joint, Prismatic) and joint.mu > 1:
+        import warnings
+
+        # Rubber on dry concrete reaches about 1; above it is more often a typing slip than a material.
+        warnings.warn(f"{rd.file}: {where}.mu: a friction coefficient of {joint.mu:g} is unusually high "
+                      "(dry metals on metals: 0.15 to 0.6); solving with it", GraphkinWarning, stacklevel=2)
+    return joint
+
+
 def _joint(rd, t, where):
     kind = rd.table(t, where, set().union(*_JOINT.values())).get("type")
     if kind is None:
@@ -406,12 +447,6 @@ def _joint(rd, t, where):
             if mu < 0:
                 raise rd.fail(f"{where}.mu", f"friction coefficient must be ≥ 0, got {t['mu']!r}")
             rd.ranged(mu, t.get("mu"), "friction", f"{where}.mu")
-            if mu > 1:
-                import warnings
-
-                # Rubber on dry concrete reaches about 1; above it is more often a typing slip than a material.
-                warnings.warn(f"{rd.file}: {where}.mu: a friction coefficient of {mu:g} is unusually high "
-                              "(dry metals on metals: 0.15 to 0.6); solving with it", GraphkinWarning, stacklevel=2)
             return Prismatic(
                 rd.whole(rd.need(t, "guide", where), f"{where}.guide"), rd.whole(rd.need(t, "slider", where), f"{where}.slider"),
                 rd.text(rd.need(t, "point", where), f"{where}.point"), rd.text(rd.need(t, "through", where), f"{where}.through"),

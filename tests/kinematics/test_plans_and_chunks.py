@@ -250,12 +250,17 @@ def test_a_failing_position_is_named_the_same_way_in_chunks(monkeypatch):
 def test_a_plan_is_made_once_per_mechanism_whatever_is_asked_of_it_first(monkeypatch):
     """A cached property the plan itself asks for (``moving``) or a solver asks for later (``joint_between``'s
     pairs) is worked out from the fields: it must not make the plan look stale and be built again."""
+    from collections import OrderedDict
+
     from graphkin import catalog
     from graphkin.graphical import construct_forces
     from graphkin.kinematics import plan as plans
+    from graphkin.problem import file as problem_file
 
     made = []
     monkeypatch.setattr(plans, "decompose", lambda mech: made.append(mech) or decompose(mech))
+    # A new mechanism: one read from the same tables before would be shared, with the plan made for it then.
+    monkeypatch.setattr(problem_file, "_MECHANISMS", OrderedDict())
     p = catalog.load("strip_cutter")  # reading the file checks the decomposition: the plan is made there
     result = p.solve()
     construct_forces(result.kinematics, 0)

@@ -1,4 +1,5 @@
-"""Links read from equal tables are read once and shared: an exercise builds a problem per draw from them."""
+"""Links, joints, loads and the mechanism made of them, read from equal tables once and shared: an exercise builds a
+problem per draw from them."""
 
 from __future__ import annotations
 
@@ -72,3 +73,53 @@ def test_an_equal_load_table_is_read_once_and_a_changed_one_again():
     changed = build_problem(tables, file="c").mechanism.loads
     assert changed[0] is not first[0] and changed[1] is first[1]
     assert abs(complex(*changed[0].force)) == 150.0
+
+
+def test_equal_parts_share_one_mechanism_and_its_plan():
+    from graphkin.kinematics.plan import plan_of
+
+    first = build_problem(copy.deepcopy(TABLES), file="a")
+    other_angle = copy.deepcopy(TABLES)
+    other_angle["driver"]["theta"] = "70 deg"
+    second = build_problem(other_angle, file="b")
+    assert second.mechanism is first.mechanism and plan_of(second.mechanism) is plan_of(first.mechanism)
+    assert second.q[0] != first.q[0]
+    heavier = copy.deepcopy(TABLES)
+    heavier["links"][1]["mass"] = "2.5 kg"
+    third = build_problem(heavier, file="c")
+    assert third.mechanism is not first.mechanism and third.mechanism.link(3).mass == 2.5
+    assert third.mechanism.joints == first.mechanism.joints
+    assert all(a is b for a, b in zip(third.mechanism.joints, first.mechanism.joints))  # read once too
+    crossed = copy.deepcopy(TABLES)
+    crossed["assembly"] = {"B": -1}
+    assert build_problem(crossed, file="d").mechanism is not first.mechanism
+
+
+def test_a_shared_mechanism_solves_as_one_made_afresh():
+    build_problem(copy.deepcopy(TABLES), file="warm").solve()
+    shared = build_problem(copy.deepcopy(TABLES), file="x")
+    problem_file._MECHANISMS.clear()
+    problem_file._READ.clear()
+    fresh = build_problem(copy.deepcopy(TABLES), file="y")
+    assert fresh.mechanism is not shared.mechanism
+    a, b = shared.solve(), fresh.solve()
+    assert a.effort[0] == b.effort[0] and all((a.force(*k) == b.force(*k)).all() for k in a.forces)
+
+
+def test_a_shared_joint_with_unusual_friction_is_warned_of_every_time():
+    from graphkin.errors import GraphkinWarning
+
+    tables = {
+        "frame": {"points": {"A0": ["0 mm", "0 mm"], "P": ["0 mm", "0 mm"]}},
+        "links": [{"number": 2, "points": {"A0": ["0 mm", "0 mm"], "A": ["30 mm", "0 mm"]}, "mass": "1 kg"},
+                  {"number": 3, "points": {"A": ["0 mm", "0 mm"], "B": ["120 mm", "0 mm"]}, "mass": "2 kg"},
+                  {"number": 4, "points": {"B": ["0 mm", "0 mm"]}, "mass": "1 kg"}],
+        "joints": [{"type": "revolute", "links": [1, 2], "point": "A0"},
+                   {"type": "revolute", "links": [2, 3], "point": "A"},
+                   {"type": "revolute", "links": [3, 4], "point": "B"},
+                   {"type": "prismatic", "guide": 1, "slider": 4, "point": "B", "through": "P", "mu": 1.5}],
+        "driver": {"link": 2, "theta": "60 deg", "omega": "100 rpm"},
+    }
+    for name in ("first.toml", "second.toml"):
+        with pytest.warns(GraphkinWarning, match=rf"{name}: joints\[3\]\.mu: a friction coefficient of 1.5"):
+            build_problem(copy.deepcopy(tables), file=name)
