@@ -407,8 +407,13 @@ def _checked(value, what: str, kind: str, n: int | None = None):
     """
     r = RANGES[kind]
     if type(value) is np.ndarray and value.dtype == np.float64 and value.ndim == 1 and 0 < value.size <= MAX_POSITIONS \
-            and (n is None or value.size == n) and r.zero and r.signed and not r.low:
-        if -r.high <= np.minimum.reduce(value) and np.maximum.reduce(value) <= r.high:  # false for nan
+            and (n is None or value.size == n):
+        if value.size == 1:
+            # One position (an exercise's draw, a position of a report): the range's own test of the one number.
+            if r.complaint(float(value[0])) is None:
+                return value.copy(), None
+        elif r.zero and r.signed and not r.low and -r.high <= np.minimum.reduce(value) \
+                and np.maximum.reduce(value) <= r.high:  # false for nan
             return value.copy(), None
     elif type(value) in (float, int, np.float64) and abs(value) <= r.high:
         x = float(value)
