@@ -69,25 +69,34 @@ def forces_disagreement(result, c, i: int, size: float | None = None) -> str:
     """
     if not c.valid:
         return f"the graphical route cannot close ({c.reason}) where the analytical one finds a solution"
-    size = mechanism_size(result.mechanism) if size is None else size
-    scale = largest(result.force(a, b)[i] for a, b in result.forces)
-    worst, what = 0.0, ""
-    for a, b in result.forces:
-        A, G = result.force(a, b)[i], c.force(a, b)
-        gap = float(np.hypot(*(G - A)))
+    size = _shape(result.mechanism).size if size is None else size
+    # Each pair once, as the lower-numbered link's force on the higher (how both routes keep them), in plain
+    # floats: the differences are numpy's to the bit, and only the worst is put in words, once it is known.
+    known = c.forces
+    rows = [(key, F[i].tolist()) for key, F in result.forces.items()]
+    scale = largest(A for _, A in rows)
+    worst, found = 0.0, None
+    for key, (ax, ay) in rows:
+        gx, gy = known[key] if key in known else c.force(*key)
+        gap = float(np.hypot(gx - ax, gy - ay))
         if not gap <= worst:  # nan counts as the worst
-            worst, what = gap, (f"{result.name_of(a, b)} is {polar_text(G, scale=scale)} graphically, "
-                                f"{polar_text(A, scale=scale)} analytically")
+            worst, found = gap, key
     crank = result.mechanism.driver.crank
     arm = size if crank else 1.0  # a torque [N·m] per metre of the mechanism is a force
     effort = float(result.effort[i])
     gap = abs(c.effort - effort) / arm
     if not gap <= worst:
-        unit = "N·m" if crank else "N"
-        worst, what = gap, (f"{result.driver_name} is {num(c.effort, 6, minus='-')} {unit} graphically, "
-                            f"{num(effort, 6, minus='-')} {unit} analytically")
+        worst, found = gap, None
     if worst <= AGREEMENT * max(scale, abs(effort) / arm):
         return ""
+    if found is None:
+        unit = "N·m" if crank else "N"
+        what = (f"{result.driver_name} is {num(c.effort, 6, minus='-')} {unit} graphically, "
+                f"{num(effort, 6, minus='-')} {unit} analytically")
+    else:
+        A, G = result.force(*found)[i], c.force(*found)
+        what = (f"{result.name_of(*found)} is {polar_text(G, scale=scale)} graphically, "
+                f"{polar_text(A, scale=scale)} analytically")
     return f"the graphical and analytical routes disagree: {what}"
 
 
