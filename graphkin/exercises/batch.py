@@ -16,6 +16,7 @@ from __future__ import annotations
 import atexit
 import gc
 import os
+from collections import OrderedDict
 from concurrent.futures import ProcessPoolExecutor
 
 from graphkin.errors import GraphkinError
@@ -31,6 +32,8 @@ _CHUNK = 50
 _GC_THRESHOLD = (100_000, 10, 10)
 """A worker's garbage-collector thresholds (Python's default is (700, 10, 10)); see :func:`_start_worker`."""
 _WORKERS: list[ProcessPoolExecutor] = []
+_SHARDS: OrderedDict = OrderedDict()
+"""Each student's worker by (exercise, secret, workers): found once for a session's passes (see :func:`_shards`)."""
 _IN_WORKER = False
 """True in a worker process (set by :func:`_start_worker`)."""
 
@@ -146,6 +149,25 @@ def run_roster(exercise: Exercise, action: str, students, secret: str = "", *, a
     return _run(exercise, action, items, secret, reveal, cls, cores, progress)
 
 
+def _shards(exercise: Exercise, students, secret: str, cores: int) -> dict:
+    """Each student's worker (:func:`~graphkin.exercises.variants.draw_shard`), found once per exercise, secret and
+    number of workers: a session's passes (sheets, keys, the class's values and the grades) ask for the same
+    students, and finding them is a hash per varied value of each, here in the one process that feeds the
+    workers while they wait."""
+    key = (exercise.fingerprint or id(exercise), secret, cores)
+    kept = _SHARDS.get(key)
+    if kept is None or kept[0] is not exercise and not exercise.fingerprint:
+        kept = _SHARDS[key] = (exercise, {})  # the exercise is held: an unnamed one is known by its id
+        if len(_SHARDS) > 8:
+            _SHARDS.popitem(last=False)
+    _SHARDS.move_to_end(key)
+    known = kept[1]
+    for s in students:
+        if s not in known:
+            known[s] = draw_shard(exercise, s, secret, cores)
+    return known
+
+
 def _run(exercise, action, items, secret, reveal, classmates, cores, progress) -> list[dict]:
     if cores == 1 or len(items) < PARALLEL_FROM:
         out: list[dict] = []
@@ -158,7 +180,7 @@ def _run(exercise, action, items, secret, reveal, classmates, cores, progress) -
     futures = []
     # The same student goes to the same worker in every pass, and so do classmates who drew the same values
     # (the worker solves their draw once): the shard follows the student's first draw.
-    shard = {s: draw_shard(exercise, s, secret, cores) for s in dict.fromkeys(s for s, _ in items)}
+    shard = _shards(exercise, [s for s, _ in items], secret, cores)
     for k, pool in enumerate(_workers(cores)):
         index = [j for j, (s, _) in enumerate(items) if shard[s] == k]
         for i in range(0, len(index), _CHUNK):

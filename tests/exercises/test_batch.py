@@ -78,3 +78,20 @@ def test_a_worker_runs_its_garbage_collector_less_often():
     assert pool.submit(gc.get_freeze_count).result() > 0
     batch._chunk((exercises.load(NAME), "make", [("s0001", None)], SECRET, None, None))
     assert gc.get_freeze_count() == frozen
+
+
+def test_each_students_worker_is_found_once_for_a_sessions_passes(monkeypatch):
+    from graphkin.exercises import batch
+
+    found = []
+    monkeypatch.setattr(batch, "draw_shard", lambda *args: found.append(args[1]) or draw_shard(*args))
+    monkeypatch.setattr(batch, "_SHARDS", type(batch._SHARDS)())
+    ex = exercises.load(NAME)
+    keys = run_roster(ex, "key", STUDENTS, SECRET, workers=2)
+    answers = [{q["id"]: q["answer"]["text"] for q in k["questions"]} for k in keys]
+    run_roster(ex, "grade", STUDENTS, SECRET, answers=answers, workers=2)  # the class's values, then the grades
+    assert sorted(found) == sorted(STUDENTS)
+    assert batch._shards(ex, STUDENTS, SECRET, 2) == {s: draw_shard(ex, s, SECRET, 2) for s in STUDENTS}
+    # Another secret is another split.
+    run_roster(ex, "make", STUDENTS, SECRET + "+", workers=2)
+    assert len(found) == 2 * len(STUDENTS)
