@@ -514,11 +514,14 @@ def _motion(rd, d, kind, static=False):
 
 
 def _load_once(rd, t, where, driver_kind, motion, frame):
-    """A force or torque read from its table, or the one read before from an equal table (see :func:`_read_once`:
-    a draw of an exercise changes one load and reads the others again). A load that reads a CSV file beside the
-    problem, a spring, a pressure or a power is read every time."""
-    if isinstance(t, dict) and t.get("type") in ("force", "torque") and "csv" not in t:
-        return _read_once(_load, rd, t, where, driver_kind, None, frame)  # neither uses the motion
+    """A force, torque or pressure read from its table, or the one read before from an equal table (see
+    :func:`_read_once`: a draw of an exercise changes one load and reads the others again, and shares the mechanism
+    of the draws before whose loads are the same objects). A load that reads a CSV file beside the problem, a
+    pressure against the stroke (resolved once the mechanism's dead centres are known), a spring or a power is read
+    every time."""
+    if isinstance(t, dict) and "csv" not in t and (t.get("type") in ("force", "torque") or
+                                                   t.get("type") == "pressure" and not books.stroke_table(t)):
+        return _read_once(_load, rd, t, where, driver_kind, None, frame)  # none of them uses the motion
     return _load(rd, t, where, driver_kind, motion, frame)
 
 

@@ -123,3 +123,29 @@ def test_a_shared_joint_with_unusual_friction_is_warned_of_every_time():
     for name in ("first.toml", "second.toml"):
         with pytest.warns(GraphkinWarning, match=rf"{name}: joints\[3\]\.mu: a friction coefficient of 1.5"):
             build_problem(copy.deepcopy(tables), file=name)
+
+
+def test_an_equal_pressure_is_read_once_and_a_stroke_table_every_time():
+    tables = copy.deepcopy(TABLES)
+    tables["frame"]["points"]["P"] = ["0 mm", "0 mm"]
+    tables["links"][2] = {"number": 4, "points": {"B": ["0 mm", "0 mm"]}, "mass": "1.5 kg"}
+    tables["joints"][3] = {"type": "prismatic", "guide": 1, "slider": 4, "point": "B", "through": "P"}
+    tables["loads"] = [{"type": "pressure", "link": 4, "point": "B", "bore": "80 mm", "direction": "180 deg",
+                        "pressure": "0.7 N/mm^2"}]
+    first = build_problem(copy.deepcopy(tables), file="a")
+    again = build_problem(copy.deepcopy(tables), file="b")
+    assert again.mechanism.loads[0] is first.mechanism.loads[0] and again.mechanism is first.mechanism
+    tables["loads"][0]["pressure"] = "0.8 N/mm^2"
+    higher = build_problem(copy.deepcopy(tables), file="c")
+    assert higher.mechanism.loads[0] is not first.mechanism.loads[0]
+    assert abs(complex(*higher.mechanism.loads[0].force)) / abs(complex(*first.mechanism.loads[0].force)) == \
+        pytest.approx(8 / 7, rel=1e-12)
+    # A pressure against the stroke waits for the mechanism's dead centres: read afresh each time.
+    import tomllib
+    from pathlib import Path
+
+    stroke = tomllib.loads((Path(__file__).parent / "files" / "indicator_stroke.toml").read_text(encoding="utf-8"))
+    problem_file._READ.clear()
+    loads = [build_problem(copy.deepcopy(stroke), file=name).mechanism.loads[0] for name in ("d", "e")]
+    assert loads[0] is not loads[1] and loads[0] == loads[1]
+    assert not any(key[0] is problem_file._load for key in problem_file._READ)
