@@ -124,6 +124,13 @@ def plan_of(mech: Mechanism) -> Plan:
     return plan
 
 
+def kept_plan(mech: Mechanism) -> Plan | None:
+    """The plan of ``mech`` if one is kept and still describes it, else None (none is made: for a cache of a
+    caller's own, keyed by the plan, that must not cost a decomposition)."""
+    plan = _PLANS.get(id(mech))
+    return plan if plan is not None and plan.current(mech) else None
+
+
 def cached_plans() -> int:
     """How many plans are cached (for tests)."""
     return len(_PLANS)

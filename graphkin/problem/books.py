@@ -15,6 +15,7 @@ import numpy as np
 
 from graphkin.errors import ModelError
 from graphkin.kinematics import decompose, solve_kinematics
+from graphkin.kinematics.plan import kept_plan
 from graphkin.kinematics.structure import Dyad
 from graphkin.model import PointForce, Prismatic, Revolute, StrokeForce, Table, Torque, spring
 from graphkin.notation import num
@@ -122,13 +123,25 @@ def dead_centre(rd, mech, which, field):
     not), and finding it solves the linkage's position. A geometry that has none raises each time, naming the
     caller's file.
     """
-    key = (which, mech.frame, mech.driver.link, repr(mech.links), repr(mech.joints), repr(sorted(mech.assembly.items())))
+    key = (which, *_geometry(mech))
     found = _DEAD_CENTRES.get(key)
     if found is None:
         found = _DEAD_CENTRES[key] = _dead_centre(rd, mech, which, field)
         if len(_DEAD_CENTRES) > 64:
             _DEAD_CENTRES.popitem(last=False)
     return found
+
+
+def _geometry(mech) -> tuple:
+    """What decides a mechanism's dead centres, as text: made once per mechanism, kept in its plan (a mechanism
+    changed in place gets a new one), or each time for one that has no plan yet."""
+    plan = kept_plan(mech)
+    compiled = plan.compiled if plan is not None else {}
+    geometry = compiled.get("dead centre")
+    if geometry is None:
+        geometry = compiled["dead centre"] = (mech.frame, mech.driver.link, repr(mech.links), repr(mech.joints),
+                                              repr(sorted(mech.assembly.items())))
+    return geometry
 
 
 def _dead_centre(rd, mech, which, field):

@@ -87,6 +87,25 @@ def check_stated(rd, data, mech, q, q_dot, q_ddot, loads, origin) -> None:
                 _given(rd, data["driver"], raw, f"given.{key}.{name}", int(key), name, motion)
 
 
+_WRITTEN: dict = {}
+"""How each text a check read was written (:func:`graphkin.units.written`), by the text and its dimension."""
+
+
+def _written(value, dimension: str, field: str, file: str) -> Written:
+    """:func:`graphkin.units.written`, once per text: an exercise builds a problem for every draw from the same
+    tables, and each check reads the same texts again (a guide's direction, a pressure's). A value that cannot be
+    read is read every time, so that its message names the caller's field and file."""
+    if type(value) is not str:
+        return written(value, dimension, field=field, file=file)
+    key = (value, dimension)
+    found = _WRITTEN.get(key)
+    if found is None:
+        found = written(value, dimension, field=field, file=file)
+        if len(_WRITTEN) < 4096:
+            _WRITTEN[key] = found
+    return found
+
+
 def _close(stated, computed, rounding):
     """Whether a stated value is graphkin's to within the rounding of its digits [SI] or :data:`REL`."""
     return np.abs(stated - computed) <= np.maximum(REL * np.maximum(np.abs(stated), np.abs(computed)), rounding)
@@ -125,11 +144,11 @@ def _value(rd, raw, dimension, field, vector=False) -> _Value:
     def rounding(text, dim, where):
         if dim != "angle" and rd.si(text, dim, where, None) == 0:
             return 0.0
-        return written(text, dim, field=where, file=rd.file).rounding
+        return _written(text, dim, where, rd.file).rounding
 
     if not vector:
         return _Value(rd.si(raw, dimension, field, None), rounding(raw, dimension, field), raw,
-                      written(raw, dimension, field=field, file=rd.file))
+                      _written(raw, dimension, field, rd.file))
     z = complex(*rd.vec(raw, dimension, field))
     if isinstance(raw, dict):
         size = rounding(raw["magnitude"], dimension, f"{field}.magnitude") \
@@ -138,7 +157,7 @@ def _value(rd, raw, dimension, field, vector=False) -> _Value:
     else:
         size = math.hypot(rounding(raw[0], dimension, f"{field}[0]"), rounding(raw[1], dimension, f"{field}[1]"))
         first = raw[0]
-    return _Value(z, size, raw, written(first, dimension, field=field, file=rd.file))
+    return _Value(z, size, raw, _written(first, dimension, field, rd.file))
 
 
 def _power_speed(rd, raw, field, load, motion) -> None:
@@ -171,13 +190,13 @@ def _pressure_line(rd, joints, raw, where, load, motion) -> None:
         raise rd.fail(f"{where}.link", f"link {load.link} slides on no guide: a pressure pushes a piston along its "
                       "cylinder (a link of a prismatic joint); give a load on another link as type = \"force\"")
     a = rd.si(raw, "angle", field)
-    rounding = written(raw, "angle", field=field, file=rd.file).rounding
+    rounding = _written(raw, "angle", field, rd.file).rounding
 
     def tolerance(k, own):
         # The joint's direction is written too, with its own rounding (left out, it is an exact 0).
         text = joints[k].get(own) if own else None
         return max(REL, rounding + (0.0 if text is None else
-                                    written(text, "angle", field=f"joints[{k}].{own}", file=rd.file).rounding))
+                                    _written(text, "angle", f"joints[{k}].{own}", rd.file).rounding))
 
     def refuse(k, j, g, at=""):
         d = math.degrees(g) % 360

@@ -25,7 +25,7 @@ from graphkin.analytical import solve, solve_forces
 from graphkin.catalog import load as load_problem
 from graphkin.catalog import names as catalog_names
 from graphkin.kinematics import decompose, solve_kinematics
-from graphkin.kinematics.plan import cached_plans, plan_of
+from graphkin.kinematics.plan import cached_plans, kept_plan, plan_of
 from graphkin.model import Active, Driver, Link, Mechanism, PointForce, Revolute, Torque
 
 FIELDS = ("theta", "omega", "alpha", "e", "O", "v_O", "a_O")
@@ -267,3 +267,14 @@ def test_a_plan_is_made_once_per_mechanism_whatever_is_asked_of_it_first(monkeyp
     p.mechanism.joint_between(2, 3)
     p.solve()
     assert made == [p.mechanism]
+
+
+def test_a_kept_plan_is_only_read_never_made():
+    m = fourbar()
+    assert kept_plan(m) is None  # asking makes none
+    assert kept_plan(m) is None
+    plan = plan_of(m)
+    assert kept_plan(m) is plan
+    object.__setattr__(m.links[2], "mass", 9.0)
+    assert kept_plan(m) is None  # stale once a part changes in place
+    assert plan_of(m) is not plan
