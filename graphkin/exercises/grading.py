@@ -35,9 +35,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from graphkin.exercises.answers import Reading, Unreadable, read_answer
-from graphkin.exercises.exercise import CYCLE_KINDS, MOTION_KINDS, dimension_of
-from graphkin.exercises.notebooks import NotData
-from graphkin.exercises.quantities import Expected, _distance, _unit_text, unit_factor
+from graphkin.exercises.exercise import CYCLE_KINDS, MOTION_KINDS, Question, dimension_of
+from graphkin.exercises.notebooks import NotData, answer_variables
+from graphkin.exercises.quantities import Expected, _distance, _form, _unit_text, unit_factor
 
 #: Verdicts a question can get ("refused": the whole submission is not graded as this student's, e.g. it
 #: carries another student's id; every question then says why).
@@ -109,8 +109,9 @@ MESSAGES = {
     "dimension": ("{unit} is a unit of {given}, but {name} is {wanted}, measured in {right} (e.g. \"{example}\")."),
     "need_vector": "Give both the size and the direction of {name}, e.g. \"{example}\" or as components \"(x, y) N\".",
     "need_scalar": "Give one number with its unit for {name}, e.g. \"{example}\".",
-    "not_data": ("{name} must be typed as text in quotes, e.g. {name} = \"{example}\": the notebook is read as a "
-                 "file, not run, so {what} is not an answer."),
+    "not_data": ("{name} must be typed as text in quotes, on a line of its own (not inside an if, try, with, loop "
+                 "or function), e.g. {name} = \"{example}\": the notebook is read as a file, not run, so {what} is "
+                 "not an answer."),
     "wrong": "Not within {tolerance} of the answer{off}. Revisit {hint}.",
     "wrong_nohint": "Not within {tolerance} of the answer{off}.",
     "close": ("Close, but not within {tolerance} of the answer{off}: carry four significant figures through every "
@@ -142,20 +143,67 @@ _DIMENSION_WORDS = {"force": "a force", "torque": "a torque", "length": "a lengt
 _ECHO_CHARS = 120
 
 
-def answer_example(exp: Expected) -> str:
-    """How to write an answer to this question, with a made-up number (never the answer itself)."""
-    q = exp.question
+def answer_example(question) -> str:
+    """How to write an answer to this question, with a made-up number (never the answer itself).
+
+    Parameters
+    ----------
+    question : Question or Expected
+        The question (an expected answer stands for its question: the example never depends on the key).
+    """
+    q = getattr(question, "question", question)
+    form = _form(q)
     u = _unit_text(q.unit)
     u = f" {u}" if u else ""
-    if exp.form == "vector":
+    if form == "vector":
         return f"12.3{u} ∠ −45°"
-    if exp.form == "point":
+    if form == "point":
         return f"(120, −35){u}"
-    if exp.form == "direction":
+    if form == "direction":
         return "−45°"
     if q.kind in _TORQUE_KINDS:
         return f"12.3{u} CCW"
     return f"12.3{u}"
+
+
+@dataclass(frozen=True)
+class Refusal:
+    """An answer the grader does not read: its verdict (``"missing"`` or ``"unreadable"``) and the sentence why."""
+
+    verdict: str
+    sentence: str
+
+
+def read_given(q: Question, answer, *, decimal_comma: bool = True) -> Reading | Refusal:
+    """What the grader reads of an answer to ``q``, or why it reads nothing: the one decision of readability.
+
+    The grader (:func:`grade_question`) and a notebook's own check
+    (:func:`graphkin.exercises.platforms.runtime.readable_problem`) both make it here, so that an answer the
+    check calls readable is read when graded, and one the grader refuses is refused by the check with the
+    same sentence. It needs neither the key nor the secret.
+
+    Parameters
+    ----------
+    q : Question
+    answer : object
+        Text, a number, None (unanswered) or :class:`graphkin.exercises.notebooks.NotData`.
+    decimal_comma : bool
+        Whether a decimal comma is read (the exercise's ``decimal_comma``).
+
+    Returns
+    -------
+    Reading or Refusal
+    """
+    if answer is None or (isinstance(answer, str) and not answer.strip()):
+        return Refusal("missing", MESSAGES["missing"].format(name=q.id))
+    if isinstance(answer, NotData):
+        name = answer_variables([q.id])[q.id]  # the notebook variable, as the exports name it
+        return Refusal("unreadable", MESSAGES["not_data"].format(name=name, example=answer_example(q),
+                                                                 what=answer.reason))
+    try:
+        return read_answer(answer, dimension=dimension_of(q.kind, q.part), unit=q.unit, decimal_comma=decimal_comma)
+    except Unreadable as exc:
+        return Refusal("unreadable", str(exc))
 
 
 class Classmates:
@@ -445,16 +493,10 @@ def grade_question(variant, q, answer, *, reveal: bool = False, classmates: Clas
 
 
 def _grade(variant, q, exp: Expected, answer, reveal: bool, classmates) -> dict:
-    if answer is None or (isinstance(answer, str) and not answer.strip()):
-        return _verdict(exp, "missing", None, 0.0, MESSAGES["missing"].format(name=q.id), "", reveal)
-    if isinstance(answer, NotData):
-        msg = MESSAGES["not_data"].format(name=q.id, example=answer_example(exp), what=answer.reason)
-        return _verdict(exp, "unreadable", None, 0.0, msg, echo(answer), reveal)
+    r = read_given(q, answer, decimal_comma=variant.exercise.decimal_comma)
+    if isinstance(r, Refusal):
+        return _verdict(exp, r.verdict, None, 0.0, r.sentence, "" if r.verdict == "missing" else echo(answer), reveal)
     dim = dimension_of(q.kind, q.part)
-    try:
-        r = read_answer(answer, dimension=dim, unit=q.unit, decimal_comma=variant.exercise.decimal_comma)
-    except Unreadable as exc:
-        return _verdict(exp, "unreadable", None, 0.0, str(exc), echo(answer), reveal)
     text = echo(r.text)
     if r.value is None and r.vector is None and not r.bare:
         right = _unit_text(q.unit) or "no unit"
@@ -564,5 +606,5 @@ def grade_variant(variant, answers, *, reveal: bool | None = None, classmates: C
             "max": sum(q.points for q in ex.questions), "questions": results, "ignored": ignored}
 
 
-__all__ = ["CLOSE", "CORROBORATE", "Classmates", "MESSAGES", "RESOLVED_SLIPS", "SLIP_WORDS", "TIE", "VERDICTS", "answer_example",
-           "echo", "grade_question", "grade_variant"]
+__all__ = ["CLOSE", "CORROBORATE", "Classmates", "MESSAGES", "RESOLVED_SLIPS", "Refusal", "SLIP_WORDS", "TIE", "VERDICTS",
+           "answer_example", "echo", "grade_question", "grade_variant", "read_given"]

@@ -239,10 +239,12 @@ find = "flywheel_E"
 
 
 def test_student_ids_are_checked():
-    for bad in ("", "   ", None, 12, "x" * 101, "a\x00b"):
+    for bad in ("", "   ", None, True, -12, 1.5, "x" * 101, "a\x00b"):
         with pytest.raises(GraphkinError, match="student id"):
             exercises.make("single_link", bad)
     assert exercises.make("single_link", "  s1 ")["student"] == "s1"
+    # A student number typed without quotes (STUDENT = 231006 in a notebook, student = 231006 in answers.toml).
+    assert exercises.make("strip_cutter_cut", 231006) == exercises.make("strip_cutter_cut", "231006")
     # The same id however it was typed or pasted: composed or decomposed é, no-break or doubled spaces.
     same = {exercises.make("strip_cutter_cut", s)["data"][0]["value"] for s in ("José Ruiz", "Jose\u0301 Ruiz",
                                                                                "José\u00a0 Ruiz\n")}
