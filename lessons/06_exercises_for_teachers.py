@@ -434,6 +434,28 @@ for q in strict_reports[shown]["questions"]:
     print(f"{q['id']}: {q['verdict']:<10} {q['score']:g}/{q['max']:g}   typed {q['answer']!r:<24} expected {q['expected']}")
 
 # %% [markdown]
+# ### How far off? What the feedback gives away
+#
+# A wrong answer is told its slip when one fits, else which part is wrong: the sign or the sense, the
+# size or the direction, a size more than ten times off. It is never told how far off it is: where
+# students may submit again, "yours is +19.5 % off" gives the key away in one more try
+# (key = answer / 1.195). Once the deadline has passed, put `feedback = "distance"` at the top of the
+# exercise file (or pass `feedback="distance"` to `gk.exercises.grade`, `--feedback distance` on the
+# command line) and each wrong answer is told how far off it is. One student's wrong answer, both ways:
+
+# %%
+s_wrong, q_wrong = next((s, q.id) for s in students for q in ex.questions if made[s, q.id] == "wrong")
+told = {}
+for feedback in ("parts", "distance"):
+    report = gk.exercises.grade(NAME, s_wrong, handed_in[s_wrong], secret=SECRET, feedback=feedback)
+    told[feedback] = next(q for q in report["questions"] if q["id"] == q_wrong)
+    print(f"{feedback:<9} {told[feedback]['feedback']}")
+
+# %% [markdown]
+# The docs' page on exercises has a table of what each choice gives away, and the number of
+# submissions a student who reads every word but solves nothing needs to reach a key (more than 10
+# with the default; 2 or 3 with `"distance"`).
+#
 # ### Keeping the secret out of the students' notebook
 #
 # Whoever has the secret can compute every key. So never write it in a notebook, a script or a shared
@@ -468,6 +490,8 @@ for s in students:
 assert mean["strict"] < mean["default"]
 assert [q["expected"] for q in strict_reports[shown]["questions"]] == \
        [q["answer"]["text"] for q in keys[shown]["questions"]]
+assert (told["parts"]["verdict"], told["parts"]["score"]) == (told["distance"]["verdict"], told["distance"]["score"])
+assert "% off" in told["distance"]["feedback"] and "% off" not in told["parts"]["feedback"]
 assert all("expected" in q for q in gk.exercises.grade(NAME, shown, handed_in[shown], SECRET, reveal=True)["questions"])
 # GRAPHKIN_SECRET: the CLI without --secret uses it; the Python functions don't read it.
 env_key = subprocess.run([sys.executable, "-m", "graphkin", "exercise", "key", NAME, "--student", "s001",

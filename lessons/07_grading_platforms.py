@@ -237,6 +237,11 @@ for t in r["tests"]:
     print(f"[{t['score']:g} / {t['max_score']:g}] {t['output']}")
 
 # %% [markdown]
+# Gradescope shows this at once, and a student may submit again: so a wrong answer is told its slip, or
+# which part is wrong (the sign or sense, the size or the direction), never how far off, which would give
+# the key away in one more try. Lesson 06 shows the exercise file's `feedback = "distance"` for after the
+# deadline; `docs/exercises.md` says what each choice gives away.
+#
 # And the student who uploaded a friend's file:
 
 # %%
@@ -258,7 +263,10 @@ gk.draw.draw_grades(reports)
 # Read it as a teacher: a sign slip on T12 means the torque's sense is not settled (go back to the
 # sign convention); a power of ten means a unit was carried wrong; "wrong" answers are the ones to
 # look at by hand. The student who copied scored 0, with a sentence saying why; their `results.json`
-# carries no report (nothing of theirs was graded), so the charts leave them out.
+# carries no report (nothing of theirs was graded), so the charts leave them out. A student who copies a
+# friend's answers into a file of their own is graded against the class too: where the friend's data
+# explain two or more of the answers, each of those earns nothing ("This is the answer for another
+# student's data"); one such answer alone is graded as the student's own.
 
 # %% [markdown]
 # ## 6. The other platforms

@@ -56,6 +56,9 @@ def add_parser(sub) -> None:
                                 "assignment's, as nbgrader lays out submitted/<student>/<assignment>/ (then the "
                                 "notebook's STUDENT must match it)")
             a.add_argument("--reveal", action="store_true", help="show the expected value of every question")
+            a.add_argument("--feedback", choices=("parts", "distance"),
+                           help="what a wrong answer is told (default: the exercise's feedback): 'distance' adds how "
+                                "far off it is, which gives the answer away (e.g. for a regrade after the due date)")
     c = esub.add_parser("collect", help="one class table from the results.json files of otter run (or Gradescope)")
     c.add_argument("results", nargs="+", metavar="PATH", help="results.json files, or folders holding them")
     c.add_argument("--json", action="store_true", help="print plain data as JSON")
@@ -235,6 +238,7 @@ def _grade(ex, args, secret) -> int:
     from graphkin.exercises.sheets import format_report
 
     reveal = True if args.reveal else None
+    feedback = args.feedback
     keys = _keys(ex, args.keys) if args.keys else None
     files = args.answers
     if args.student:
@@ -242,7 +246,8 @@ def _grade(ex, args, secret) -> int:
             raise GraphkinError("--answers: with --student, give one JSON file of that student's answers")
         answers = _answers_json(files[0])
         v = keys.variant(args.student) if keys else exercises.variant(ex, args.student, secret)
-        report = grade_variant(v, answers, reveal=reveal, classmates=keys.classmates() if keys else None)
+        report = grade_variant(v, answers, reveal=reveal, classmates=keys.classmates() if keys else None,
+                               feedback=feedback)
         text = json_text(report) if args.json else format_report(report)
         _emit(text, args.output)
         return 0
@@ -264,7 +269,7 @@ def _grade(ex, args, secret) -> int:
     with _progress(len(subs), "grading") as bar:
         reports = []
         for sub in subs:
-            reports.append(_graded(keys, sub, reveal))
+            reports.append(_graded(keys, sub, reveal, feedback))
             bar.update(1)
     text = json_text(reports) if args.json else _csv(_report_rows(reports))
     _emit(text, args.output)
@@ -281,17 +286,17 @@ def _keys(ex, path):
     return keys
 
 
-def _graded(keys, sub: dict, reveal) -> dict:
+def _graded(keys, sub: dict, reveal, feedback) -> dict:
     from graphkin.exercises.grading import grade_variant
     from graphkin.exercises.platforms.isolated import grade_one
 
     if "claimed" in sub:  # a notebook: refused, with a sentence, if its id is not usable or not the graded one's
-        return grade_one(keys, sub["student"], sub["answers"], sub["claimed"], reveal=reveal)
+        return grade_one(keys, sub["student"], sub["answers"], sub["claimed"], reveal=reveal, feedback=feedback)
     try:
         variant = keys.variant(sub["student"])
     except GraphkinError as exc:
         return {"student": sub["student"], "error": str(exc)}
-    return grade_variant(variant, sub["answers"], reveal=reveal, classmates=keys.classmates())
+    return grade_variant(variant, sub["answers"], reveal=reveal, classmates=keys.classmates(), feedback=feedback)
 
 
 def _csv_submissions(path, roster) -> list[dict]:

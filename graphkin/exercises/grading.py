@@ -9,9 +9,15 @@ and (when the grader is given the class) every classmate's answer. Each candidat
 question's tolerance of that value); of those within their slack, the **nearest** wins, measured in
 slacks. When two are about as near (within a tenth of a slack), the one worth more is given and the
 feedback names the other too. An answer that fits another student's data earns nothing and is named as
-such. A vector whose size is right but whose direction is not is named with its degrees off; any other
-wrong answer gets how far off it is (%, degrees, or mm) and the step of its route to revisit, or, when
-it is close, to carry more digits.
+such, once that student's data explain two of the sheet's answers (then even where it also fits a slip).
+
+Any other wrong answer gets, besides the step of its route to revisit (or, when it is close, to carry
+more digits), what the exercise's ``feedback`` allows. By default (``"parts"``) that is which part is
+wrong, never how far off: a vector's size or direction, a scalar's sign or sense, a size more than ten
+times off (counted on the decades of the question's unit), so that the feedback cannot be inverted into
+the key (each word is true on a whole region, whose bounds are either fixed, as the decades and the sign
+are, or a few slacks wide around the key, as "close" and the slips are). With ``"distance"`` it also says
+how far off (%, degrees, mm), from which the key follows in one more submission.
 
 The grader never raises on anything a student typed and never evaluates it: answers are read as data
 by :mod:`graphkin.exercises.answers` (and, from a notebook, by :mod:`graphkin.exercises.notebooks`).
@@ -34,8 +40,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from graphkin.errors import GraphkinError
 from graphkin.exercises.answers import Reading, Unreadable, read_answer
-from graphkin.exercises.exercise import CYCLE_KINDS, MOTION_KINDS, Question, dimension_of
+from graphkin.exercises.exercise import CYCLE_KINDS, FEEDBACK, MOTION_KINDS, Question, dimension_of
 from graphkin.exercises.notebooks import NotData, answer_variables
 from graphkin.exercises.quantities import Expected, _distance, _form, _unit_text, unit_factor
 
@@ -62,6 +69,11 @@ TIE = 0.1
 
 #: A wrong answer within this many slacks of the right one is a rounding slip, not a wrong method.
 CLOSE = 2.5
+
+#: The same, where the feedback does not say how far off (feedback = "parts"): narrower, because where "close" begins
+#: is what a search for the key learns from each submission (the band's width sets how many submissions it takes);
+#: 1.5 slacks still holds the rounding slip of a 1 % question (1.5 %) and the drawing slip of a 3 % one (4.5 %).
+CLOSE_PARTS = 1.5
 
 #: The feedback catalogue: one sentence (or two) per slip; ``{name}`` is the quantity, ``{hint}`` the step.
 MESSAGES = {
@@ -94,7 +106,8 @@ MESSAGES = {
                      "counter-clockwise positive (yours is 90° short)."),
     "clockwise": ("The size is right but the angle is measured clockwise: angles are measured from +x, "
                   "counter-clockwise positive."),
-    "direction": "The size is right but the direction is {degrees}° off. Revisit {hint}.",
+    "direction": "The size is right but the direction is not. Revisit {hint}.",
+    "direction_distance": "The size is right but the direction is {degrees}° off. Revisit {hint}.",
     "other_data": ("This is the answer for another student's data, not yours: work with the values on your own "
                    "sheet."),
     "no_normal": ("This is what the acceleration polygon gives without the normal components: each relative "
@@ -114,12 +127,27 @@ MESSAGES = {
                  "not an answer."),
     "wrong": "Not within {tolerance} of the answer{off}. Revisit {hint}.",
     "wrong_nohint": "Not within {tolerance} of the answer{off}.",
+    "wrong_parts": "Not within {tolerance} of the answer: {parts}. Revisit {hint}.",
+    "wrong_parts_nohint": "Not within {tolerance} of the answer: {parts}.",
     "close": ("Close, but not within {tolerance} of the answer{off}: carry four significant figures through every "
               "step and round only the answer."),
     "close_graphical": ("Close, but not within {tolerance} of the answer{off}: draw the construction larger and "
                         "measure its lines more carefully."),
     "error": ("This answer could not be graded because of an error in the grader, not in the answer; your "
               "teacher can read why in the grader's log."),
+}
+
+#: Which part of a wrong answer is right or wrong, in words (feedback = "parts"): each clause is true of the answer
+#: and none says how far off it is. "Ten times" is counted on the decades of the question's unit (the answer's and
+#: the key's powers of ten differ by two or more), so what it gives away is the key's power of ten, not the key.
+PARTS = {
+    "sign_right": "the sign is right", "sign_wrong": "the sign is wrong",
+    "sense_right": "the sense (CCW or CW) is right", "sense_wrong": "the sense (CCW or CW) is wrong",
+    "direction_right": "the direction is right", "direction_wrong": "the direction is wrong",
+    "negative": "a magnitude is never negative",
+    "size": "the size is not",
+    "larger": "the size is more than ten times too large (check the units)",
+    "smaller": "the size is more than ten times too small (check the units)",
 }
 
 #: A slip in a few words, for the sentence that names a tie.
@@ -406,11 +434,16 @@ def _credit(exercise, slip: str) -> float:
     return 0.0 if slip == "other_data" else exercise.partial.get(slip, 0.0)
 
 
-def _diagnose(exp: Expected, a, variant, classmates) -> tuple[_Fit, list[_Fit]] | None:
-    """The slip to name (the nearest, or of the about-as-near ones the one worth more) and the others as near."""
+def _diagnose(exp: Expected, a, variant, classmates, copied: bool) -> tuple[_Fit, list[_Fit], _Fit | None] | None:
+    """The slip to name (the nearest, or of the about-as-near ones the one worth more), the others as near, and
+    the classmate whose data explain the answer (if any). With ``copied`` (the classmates are known to have lent
+    this sheet answers) a classmate's data come first, whatever slip the answer also fits."""
     fits = _fits(exp, a, variant, classmates)
     if not fits:
         return None
+    theirs = next((f for f in fits if f.slip == "other_data"), None)
+    if copied and theirs is not None:
+        return theirs, [], theirs
     near = [f for f in fits if f.ratio - fits[0].ratio <= TIE]
     # One fit per slip: the same slip may fit twice (×10³ and ×10⁶ are never both near; a tie of one slip with
     # itself says nothing).
@@ -421,7 +454,38 @@ def _diagnose(exp: Expected, a, variant, classmates) -> tuple[_Fit, list[_Fit]] 
             unique.append(f)
     ex = variant.exercise
     chosen = max(unique, key=lambda f: (_credit(ex, f.slip), -f.ratio))
-    return chosen, [f for f in unique if f is not chosen]
+    return chosen, [f for f in unique if f is not chosen], theirs
+
+
+def _mode(exercise, feedback: str | None) -> str:
+    """The feedback a wrong answer gets: ``feedback`` when given, else the exercise's (:data:`FEEDBACK`)."""
+    mode = exercise.feedback if feedback is None else feedback
+    if mode not in FEEDBACK:
+        raise GraphkinError(f"feedback must be {' or '.join(map(repr, FEEDBACK))}, got {mode!r}")
+    return mode
+
+
+def _parts(exp: Expected, a) -> str:
+    """Which part of a wrong answer is right or wrong (:data:`PARTS`), or "" when only the size can be wrong
+    and it is within ten times; never how far off."""
+    q, e, form = exp.question, exp.value, exp.form
+    first = None
+    if form == "scalar" and abs(e) > exp.slack and a:
+        torque = q.kind in _TORQUE_KINDS
+        first = ("sense" if torque else "sign") + ("_right" if (a > 0) == (e > 0) else "_wrong")
+    elif form == "vector" and e:
+        right = a and abs(cmath.phase(a / e)) <= math.atan(exp.slack / abs(e))
+        first = "direction_right" if right else "direction_wrong"
+    elif form == "magnitude" and a < 0:
+        first = "negative"
+    size = "size"
+    if form in ("scalar", "magnitude", "vector") and a and e:
+        f = _factor(q)
+        decades = math.floor(math.log10(abs(a) / f)) - math.floor(math.log10(abs(e) / f))
+        size = "larger" if decades >= 2 else "smaller" if decades <= -2 else "size"
+    if first is None and size == "size":
+        return ""
+    return "; ".join(PARTS[k] for k in (first, size) if k)
 
 
 def _off(exp: Expected, a) -> str:
@@ -450,24 +514,31 @@ def _tolerance_text(exp: Expected) -> str:
     return tol
 
 
-def _wrong(exp: Expected, a, variant, text: str, reveal: bool) -> dict:
-    """A wrong answer's verdict: the size right (a vector), close (rounding), or how far off and where to look."""
+def _wrong(exp: Expected, a, variant, text: str, reveal: bool, mode: str) -> dict:
+    """A wrong answer's verdict: the size right (a vector), close (rounding), or which part is wrong (``mode``
+    "parts") or how far off (``mode`` "distance"), and where to look."""
     q = exp.question
     words = variant.words(q)
-    tol, off = _tolerance_text(exp), _off(exp, a)
+    distance = mode == "distance"
+    tol, off = _tolerance_text(exp), _off(exp, a) if distance else ""
     if exp.form == "vector" and exp.value and abs(abs(a) - abs(exp.value)) <= exp.slack:
         degrees = f"{math.degrees(abs(cmath.phase(a / exp.value))):.1f}" if a else "180"
-        msg = MESSAGES["direction"].format(degrees=degrees, hint=words["hint"])
+        msg = MESSAGES["direction_distance" if distance else "direction"].format(degrees=degrees, hint=words["hint"])
         return _verdict(exp, "slip", "direction", q.points * variant.exercise.partial["direction"], msg, text, reveal)
-    if exp.slack > 0 and _distance(exp.form, a, exp.value) <= CLOSE * exp.slack:
+    if exp.slack > 0 and _distance(exp.form, a, exp.value) <= (CLOSE if distance else CLOSE_PARTS) * exp.slack:
         msg = MESSAGES["close_graphical" if q.route == "graphical" else "close"].format(tolerance=tol, off=off)
         return _verdict(exp, "wrong", None, 0.0, msg, text, reveal)
     hint = exp.hint.rstrip(".") if exp.hint else ""
-    msg = MESSAGES["wrong" if hint else "wrong_nohint"].format(tolerance=tol, off=off, hint=hint)
+    parts = "" if distance else _parts(exp, a)
+    if parts:
+        msg = MESSAGES["wrong_parts" if hint else "wrong_parts_nohint"].format(tolerance=tol, parts=parts, hint=hint)
+    else:
+        msg = MESSAGES["wrong" if hint else "wrong_nohint"].format(tolerance=tol, off=off, hint=hint)
     return _verdict(exp, "wrong", None, 0.0, msg, text, reveal)
 
 
-def grade_question(variant, q, answer, *, reveal: bool = False, classmates: Classmates | None = None) -> dict:
+def grade_question(variant, q, answer, *, reveal: bool = False, classmates: Classmates | None = None,
+                   copied: bool = False, feedback: str | None = None) -> dict:
     """Grade one answer; never raises on the answer, whatever it is.
 
     Parameters
@@ -481,18 +552,26 @@ def grade_question(variant, q, answer, *, reveal: bool = False, classmates: Clas
     reveal : bool
         Show the expected value.
     classmates : Classmates, optional
-        The class's answers: an answer that fits another student's data is named as such.
+        The class's answers: an answer that fits another student's data is named as such (the nearer of it
+        and a slip wins, as between two slips).
+    copied : bool
+        Whether ``classmates`` are known to have lent this sheet answers (:func:`grade_variant`: their data
+        explain two or more of its answers): an answer their data explain then earns nothing, even when it
+        also fits a slip.
+    feedback : str, optional
+        What the feedback on a wrong answer says (:data:`graphkin.exercises.exercise.FEEDBACK`); default the
+        exercise's ``feedback``.
     """
     exp = variant.expected(q)
     try:
-        return _grade(variant, q, exp, answer, reveal, classmates)
+        return _grade(variant, q, exp, answer, reveal, classmates, copied, _mode(variant.exercise, feedback))
     except Exception:  # a bug in the grader must not void this answer's neighbours, nor show a traceback
         print(f"graphkin: grading {q.id} of {variant.student!r} failed:", file=sys.stderr)
         traceback.print_exc(file=sys.stderr)
         return _verdict(exp, "unreadable", None, 0.0, MESSAGES["error"], echo(answer), reveal)
 
 
-def _grade(variant, q, exp: Expected, answer, reveal: bool, classmates) -> dict:
+def _grade(variant, q, exp: Expected, answer, reveal: bool, classmates, copied: bool, mode: str) -> dict:
     r = read_given(q, answer, decimal_comma=variant.exercise.decimal_comma)
     if isinstance(r, Refusal):
         return _verdict(exp, r.verdict, None, 0.0, r.sentence, "" if r.verdict == "missing" else echo(answer), reveal)
@@ -517,17 +596,18 @@ def _grade(variant, q, exp: Expected, answer, reveal: bool, classmates) -> dict:
                         reveal)
     if exp.close(a):
         return _verdict(exp, "correct", None, q.points, MESSAGES["correct"], text, reveal)
-    found = _diagnose(exp, a, variant, classmates)
+    found = _diagnose(exp, a, variant, classmates, copied)
     if found is None:
-        return _wrong(exp, a, variant, text, reveal)
-    fit, ties = found
+        return _wrong(exp, a, variant, text, reveal, mode)
+    fit, ties, theirs = found
     msg = MESSAGES[fit.msg].format(**fit.words)
     if ties:
         msg += MESSAGES["tie"].format(others=" and ".join(SLIP_WORDS.get(t.slip, t.slip) for t in ties))
     if fit.slip == "other_data":
         return _verdict(exp, "wrong", "other_data", 0.0, msg, text, reveal, other=fit.other)
-    # A classmate's data about as near as the slip: named in the feedback, and for the teacher here.
-    other = {"other": t.other for t in ties if t.slip == "other_data"}
+    # A classmate whose data explain the answer too, slip or not: for the teacher (and to count how many of the
+    # sheet's answers they explain); the feedback names them only when about as near as the slip.
+    other = {"other": theirs.other} if theirs is not None else {}
     return _verdict(exp, "slip", fit.slip, q.points * variant.exercise.partial[fit.slip], msg, text, reveal, **other)
 
 
@@ -559,7 +639,8 @@ def _factor(q) -> float:
     return unit_factor(q.unit, dimension_of(q.kind, q.part))
 
 
-def grade_variant(variant, answers, *, reveal: bool | None = None, classmates: Classmates | None = None) -> dict:
+def grade_variant(variant, answers, *, reveal: bool | None = None, classmates: Classmates | None = None,
+                  feedback: str | None = None) -> dict:
     """Grade a student's answers to their variant.
 
     Parameters
@@ -571,9 +652,14 @@ def grade_variant(variant, answers, *, reveal: bool | None = None, classmates: C
     reveal : bool, optional
         Show the expected value of every question (default: the exercise's ``reveal``).
     classmates : Classmates, optional
-        The class's answers: an answer that fits another student's data earns nothing and says so, when
-        that student's data explain at least :data:`CORROBORATE` of the sheet's answers (or all of them,
-        for a sheet of fewer questions).
+        The class's answers. When one student's data explain at least :data:`CORROBORATE` of the sheet's
+        answers, each answer they explain earns nothing and says so, even one that also fits a slip. One
+        answer alone that fits a classmate's data is graded as the student's own (a slip's share if it fits
+        one, else nothing), without naming anyone; on a one-question sheet it is named, unless a slip fits it
+        at least as well.
+    feedback : str, optional
+        What the feedback on a wrong answer says (:data:`graphkin.exercises.exercise.FEEDBACK`); default the
+        exercise's ``feedback``.
 
     Returns
     -------
@@ -588,17 +674,21 @@ def grade_variant(variant, answers, *, reveal: bool | None = None, classmates: C
         answers = {}
     # Whatever the sheet holds (a list, a table, null) goes to the reader as it is: it refuses what is not text
     # or a number with a sentence, rather than the grader guessing at str(value).
-    results = [grade_question(variant, q, answers.get(q.id), reveal=reveal, classmates=classmates)
+    results = [grade_question(variant, q, answers.get(q.id), reveal=reveal, classmates=classmates, feedback=feedback)
                for q in ex.questions]
     if classmates is not None:
         named = Counter(r["other"] for r in results if r.get("other"))
         need = min(CORROBORATE, len(ex.questions))
-        if any(n < need for n in named.values()):
+        # Copying is shown when one classmate's data explain two or more of the sheet's answers: then each answer
+        # their data explain is theirs, even one that also fits a slip of the student's own.
+        copied = need == CORROBORATE and any(n >= need for n in named.values())
+        if copied or any(n < need for n in named.values()):
             # One answer near one classmate's is as likely a slip of one's own (each classmate's answer has its
             # 1 % of slack, and a class covers much of the range): grade again with only the classmates whose
             # data explain several of this sheet's answers.
             kept = classmates.only(s for s, n in named.items() if n >= need)
-            results = [grade_question(variant, q, answers.get(q.id), reveal=reveal, classmates=kept)
+            results = [grade_question(variant, q, answers.get(q.id), reveal=reveal, classmates=kept, copied=copied,
+                                      feedback=feedback)
                        for q in ex.questions]
     known = {q.id for q in ex.questions}
     ignored = sorted(echo(k, 100) for k in answers if k not in known)[:50]
@@ -606,5 +696,5 @@ def grade_variant(variant, answers, *, reveal: bool | None = None, classmates: C
             "max": sum(q.points for q in ex.questions), "questions": results, "ignored": ignored}
 
 
-__all__ = ["CLOSE", "CORROBORATE", "Classmates", "MESSAGES", "RESOLVED_SLIPS", "Refusal", "SLIP_WORDS", "TIE", "VERDICTS",
-           "answer_example", "echo", "grade_question", "grade_variant", "read_given"]
+__all__ = ["CLOSE", "CLOSE_PARTS", "CORROBORATE", "Classmates", "MESSAGES", "PARTS", "RESOLVED_SLIPS", "Refusal",
+           "SLIP_WORDS", "TIE", "VERDICTS", "answer_example", "echo", "grade_question", "grade_variant", "read_given"]

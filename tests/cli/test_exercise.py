@@ -279,3 +279,20 @@ def test_one_long_answer_in_a_class_csv_voids_nothing_else(capsys, tmp_path):
     verdicts = {q["id"]: q["verdict"] for q in s1["questions"]}
     assert verdicts == {"F12": "unreadable", "T12": "correct"} and s2["student"] == "s2"
     assert "too long (1000000 characters" in s1["questions"][0]["feedback"]
+
+
+def test_grade_with_distance_feedback_for_a_regrade_after_the_due_date(capsys, tmp_path):
+    """--feedback distance tells a wrong answer how far off it is, whatever the exercise file says (issue 34);
+    the verdicts and scores are the default's. On handed-in notebooks too (graded as the platforms grade)."""
+    v = exercises.variant("single_link", "s1", "k")
+    e = v.expected(v.exercise.question("T12")).value
+    nb = _notebook(tmp_path, "nb.ipynb", ['STUDENT = "s1"', f'T12 = "{1.3 * e:.6g} N*m"'])
+    reports = {}
+    for feedback in ([], ["--feedback", "distance"]):
+        code, out, err = run(capsys, "exercise", "grade", "single_link", "--secret", "k", "--json", "--answers",
+                             str(nb), *feedback)
+        assert code == 0, err
+        reports[bool(feedback)] = json.loads(out)[0]["questions"][1]
+    assert (reports[False]["verdict"], reports[False]["score"]) == (reports[True]["verdict"], reports[True]["score"])
+    assert "(yours is +30.0 % off)" in reports[True]["feedback"] and "% off" not in reports[False]["feedback"]
+    assert "the sense (CCW or CW) is right; the size is not" in reports[False]["feedback"]

@@ -175,6 +175,7 @@ def test_an_exercise_with_no_usable_data_says_so():
         ('step = "1 mm"', 'step = "0.000001 mm"', "vary.x.step"),
         ('title = "Double slider close to its toggle"', 'titel = "x"', "titel"),
         ('problem = "double_slider"', 'problem = "no_such"', "problem"),
+        ('problem = "double_slider"', 'problem = "double_slider"\nfeedback = "percent"', "feedback"),
         ('id = "F23"', 'id = "F 23"', "questions[0].id"),
         ('find = "F23"', 'find = "F23"\npart = "radius"', "questions[0].part"),
         ('find = "F23"', 'find = "F23"\nunit = "mm"', "questions[0].unit"),

@@ -140,7 +140,7 @@ def refused(exercise, student: str, reason: str) -> dict:
             "refused": reason}
 
 
-def grade_one(keys: Keys, student, answers: dict, claimed=_NO_CLAIM, *, reveal=None) -> dict:
+def grade_one(keys: Keys, student, answers: dict, claimed=_NO_CLAIM, *, reveal=None, feedback=None) -> dict:
     """A submission's report: graded as ``student`` with the keys, or refused with a sentence.
 
     It is refused when ``student`` is not on the roster or, when ``claimed`` is given (the id the notebook
@@ -160,7 +160,7 @@ def grade_one(keys: Keys, student, answers: dict, claimed=_NO_CLAIM, *, reveal=N
     except GraphkinError as exc:
         text = str(exc)
         return refused(ex, str(student), text[0].upper() + text[1:] + ".")
-    report = grade_variant(variant, answers, reveal=reveal, classmates=keys.classmates())
+    report = grade_variant(variant, answers, reveal=reveal, classmates=keys.classmates(), feedback=feedback)
     report["data"] = [g["shown"] for g in variant.sheet()["data"]]
     return report
 
