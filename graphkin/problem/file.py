@@ -37,7 +37,7 @@ _JOINT = {
     "gear": {"type", "links", "centers", "radii", "pressure_angle", "internal"},
 }
 _DRIVER = {
-    "crank": {"type", "link", "theta", "omega", "alpha", "from", "sense"},
+    "crank": {"type", "link", "theta", "travel", "moving", "omega", "alpha", "from", "sense"},
     "slider": {"type", "link", "s", "v", "a", "place"},
 }
 _LOAD = {"force": {"type", "link", "point", "force", "direction", "table", "csv", "decimal", "sense", "active", "name"},
@@ -183,6 +183,9 @@ def build_problem(data: Mapping[str, Any], *, file: str = "<problem>", base: str
     kind = d.get("type", "crank")
     if kind not in _DRIVER:
         raise rd.fail("driver.type", f"must be 'crank' or 'slider', got {kind!r}")
+    if kind == "slider" and "travel" in d:
+        raise rd.fail("driver.travel", "places a crank by its piston's travel from a dead centre; a slider driver's "
+                      "position is s itself (along the guide from its through point)")
     rd.table(d, "driver", _DRIVER[kind])
     driver = Driver(rd.whole(rd.need(d, "link", "driver"), "driver.link"), kind)
     q, q_dot, q_ddot = _motion(rd, d, kind, static)
@@ -236,7 +239,9 @@ def build_problem(data: Mapping[str, Any], *, file: str = "<problem>", base: str
         groups = plan_of(mech).groups
     except ModelError as exc:
         raise rd.fail(_field_of(exc.at) or "joints", str(exc)) from None
-    if "from" in d:
+    if "travel" in d:
+        q = books.crank_from_travel(rd, d, mech, q_dot)
+    elif "from" in d:
         q = books.crank_from_dead_centre(rd, d, mech, q)
     if "place" in d:
         q = books.placed(rd, d, mech)
@@ -447,7 +452,14 @@ def _motion(rd, d, kind, static=False):
         if "s" in d:
             raise rd.fail("driver.place", "places the slider by another link's angle: give it or s, not both")
         q = np.zeros(1)  # found once the mechanism is known (books.placed)
+    elif "travel" in d:
+        if "theta" in d:
+            raise rd.fail("driver.travel", "places the crank by its piston's travel: give it or theta, not both")
+        q = np.zeros(len(books.read_travel(rd, d["travel"])[0]))  # the angles need the mechanism (books.crank_from_travel)
     else:
+        if "moving" in d:
+            raise rd.fail("driver.moving", "chooses the stroke on which the piston has travelled driver.travel: "
+                          "give it with travel, not with theta")
         q = rd.array(rd.need(d, names[0], "driver"), dims[0], f"driver.{names[0]}")
     accel = names[2]
     if static and accel in d:
