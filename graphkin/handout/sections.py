@@ -177,6 +177,8 @@ def _gear_text(j: dict) -> str:
     text = " meshes with ".join(gears)
     if "pressure_angle" in j:
         text += f"; pressure angle φ = {_pretty(j['pressure_angle'])}"
+    if "efficiency" in j:
+        text += f"; mesh efficiency η = {_pretty(j['efficiency'])}"
     return text
 
 

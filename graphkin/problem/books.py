@@ -18,7 +18,7 @@ import numpy as np
 from graphkin.errors import ModelError
 from graphkin.kinematics import decompose, solve_kinematics
 from graphkin.kinematics.structure import Dyad
-from graphkin.model import PointForce, Prismatic, Revolute, StrokeForce, Table, Torque, spring
+from graphkin.model import GearMesh, PointForce, Prismatic, Revolute, StrokeForce, Table, Torque, spring
 from graphkin.problem.problem import Forward
 from graphkin.problem.reader import shown
 from graphkin.problem.tables import load_table, parse_table
@@ -514,6 +514,11 @@ def unknown(rd, value, mech):
     if link == mech.driver.link:
         raise rd.fail("unknown.link", f"link {link} is the driver, whose effort graphkin finds anyway: leave out "
                       "[unknown], or name the link whose torque (or slider force) the book asks for")
+    lossy = [k for k, j in enumerate(mech.joints) if isinstance(j, GearMesh) and j.efficiency < 1]
+    if lossy:
+        raise rd.fail("unknown", f"is found from two solutions, as loads are linear; the efficiency of joints"
+                      f"[{lossy[0]}] makes them not so (which gear loses depends on the way the power flows): drive "
+                      f"link {link} instead (its effort is then the driver's) and give the other effort as a load")
     name = t.get("name", "")
     if not isinstance(name, str):
         raise rd.fail("unknown.name", f"must be a string such as \"T4\", got {name!r}")

@@ -34,7 +34,7 @@ _LINK = {"number", "name", "points", "mass", "G", "I_G", "k", "shape"}
 _JOINT = {
     "revolute": {"type", "links", "point"},
     "prismatic": {"type", "guide", "slider", "point", "through", "direction", "slider_direction", "mu"},
-    "gear": {"type", "links", "centers", "radii", "pressure_angle", "internal"},
+    "gear": {"type", "links", "centers", "radii", "pressure_angle", "internal", "efficiency"},
 }
 _DRIVER = {
     "crank": {"type", "link", "theta", "travel", "moving", "omega", "alpha", "from", "sense"},
@@ -229,6 +229,11 @@ def build_problem(data: Mapping[str, Any], *, file: str = "<problem>", base: str
         raise rd.fail(f"driver.{speed}", f"is missing: a dynamic analysis needs the input speed, e.g. {speed} = "
                       + ('"900 rpm"' if kind == "crank" else '"2 m/s"')
                       + ' (for a linkage at rest or at negligible speed write analysis = "static")')
+    for k, joint in enumerate(joints):
+        if isinstance(joint, GearMesh) and joint.efficiency < 1 and not np.all(q_dot):
+            raise rd.fail(f"joints[{k}].efficiency", "a mesh efficiency takes power off the driven gear, and which gear "
+                          f"drives depends on the motion: give driver.{speed} at every position (a static analysis "
+                          "uses it only for that)")
     for k, load in enumerate(loads):
         if load.sense != "fixed" and not np.any(q_dot):
             raise rd.fail(f"loads[{origin[k]}].sense", f"{load.sense!r} follows the motion, but the input does not move: give "
@@ -431,7 +436,8 @@ def _joint(rd, t, where):
                           f"{internal!r}")
         return GearMesh(_pair(rd, rd.need(t, "links", where), f"{where}.links"), tuple(centers),
                         tuple(rd.si(r, "length", f"{where}.radii[{i}]", "length") for i, r in enumerate(radii)),
-                        rd.si(t.get("pressure_angle", "20 deg"), "angle", f"{where}.pressure_angle"), internal)
+                        rd.si(t.get("pressure_angle", "20 deg"), "angle", f"{where}.pressure_angle"), internal,
+                        rd.si(t.get("efficiency", 1.0), "dimensionless", f"{where}.efficiency", None))
     except ProblemFileError:
         raise
     except ModelError as exc:
