@@ -570,8 +570,9 @@ class Builder:
         # and with it the way the power flows through the mesh (which gear loses to the efficiency).
         flank = float(np.sign(-R.about(Ck))) if self.fixed is None else self.fixed.get(id(mesh), 0.0)
         self.sides[id(mesh)] = flank
-        turning = float(self.kin.omega[g.k][self.i] - self.kin.omega[g.b][self.i])
-        flow = flank * float(np.sign(turning)) if mesh.efficiency < 1 else 0.0
+        flow = 0.0
+        if mesh.efficiency < 1:  # the power into gear k, relative to the carrier: which side loses
+            flow = flank * float(np.sign(self.kin.omega[g.k][self.i] - self.kin.omega[g.b][self.i]))
         P, t, r, rho = contact(mesh, g.k, Ck, Cj, flow)
         self.contacts[tuple(sorted(mesh.links))] = xy(P)
         d = t + flank * math.tan(mesh.pressure_angle) * r
