@@ -37,10 +37,21 @@ import tomllib
 from pathlib import Path
 
 from graphkin.errors import GraphkinError
+from graphkin.exercises import load
+from graphkin.exercises.handins import (
+    HandIn,
+    clear_folder,
+    literal,
+    notebook_text,
+    own_files,
+    read_handin,
+    stripped_notebook,
+)
 from graphkin.exercises.keys import keys_text
-from graphkin.exercises.notebooks import STUDENT_VARIABLE, answer_variables, notebook_answers
+from graphkin.exercises.notebooks import STUDENT_VARIABLE, answer_variables
 from graphkin.exercises.platforms import requirements, runtime, vendor_files
 from graphkin.exercises.platforms.isolated import grade_submissions, submission
+from graphkin.files import write_text
 from graphkin.optional import require
 
 VENDOR = "vendor"
@@ -101,7 +112,7 @@ def _submitters(metadata) -> list[str]:
 
 
 class Plugin:
-    """otter-grader's plugin: grades the notebook read as data, in an isolated process, and writes the result.
+    """otter-grader's plugin: grades the hand-in read as data, in an isolated process, and writes the result.
 
     otter makes one per submission, with its path, Gradescope's submission metadata (``{}`` under
     ``otter run``) and this plugin's configuration from ``otter_config.json``: ``keys`` (the keys file,
@@ -112,41 +123,72 @@ class Plugin:
         self.submission_path = Path(submission_path) if submission_path else None
         self.metadata = submission_metadata if isinstance(submission_metadata, dict) else {}
         self.config = plugin_config if isinstance(plugin_config, dict) else {}
+        self.handin = HandIn()
+        self.names: dict = {}
         self.report = None
 
-    def _files(self) -> Path:
-        # The autograder's own copy of the assignment's files (source/files/), which the student's upload
-        # cannot replace: otter copies them into the submission folder, but keeps a folder the upload has.
-        return self.submission_path.parent.parent / "source" / "files"
+    def _source(self) -> Path:
+        # The autograder's own folder (source/: the zip's files/, tests/), which the upload cannot replace.
+        return self.submission_path.parent.parent / "source"
+
+    def _own(self) -> dict:
+        """The files otter itself puts in the submission folder: the assignment's, its tests, a blank package."""
+        source = self._source()
+        return {**own_files(source / "files"), **own_files(source / "tests", prefix="tests/"), "__init__.py": b""}
 
     def before_grading(self, config) -> None:
-        """Start the notebook's time limit (otter stops with its own error when it runs out)."""
+        """The first of graphkin's code that otter runs: grade the hand-in read as data, then leave it nothing.
+
+        It comes before otter reads the submission's ``.OTTER_LOG`` (a pickle otter loads whenever it is
+        there) and before the kernel starts in the submission folder (importing from it first). So here,
+        in otter's process: the notebook is read as data (:func:`graphkin.exercises.handins.read_handin`)
+        and graded in an isolated process; the keys are then deleted from the autograder's folders; every
+        other file of the student's is removed from the submission folder and named in otter's log
+        (:meth:`generate_report`); and the notebook is replaced by one of the answers' literals, which
+        is all the kernel runs. A time limit starts (otter stops with its own error when it runs out).
+        """
+        from otter.run.run_autograder.utils import OtterRuntimeError
+
         limit = int(self.config.get("timeout") or 0)
         if limit > 0 and threading.current_thread() is threading.main_thread():
             signal.signal(signal.SIGALRM, _out_of_time(limit))
             signal.alarm(limit)
-
-    def before_execution(self, submission_nb):
-        """Grade the notebook read as data; give otter a notebook of the answers' literals to run instead."""
-        from otter.run.run_autograder.utils import OtterRuntimeError
-
-        files = self._files()
-        keys_path = files / self.config.get("keys", "")
         try:
-            qids = [q["id"] for q in _questions(keys_path)]
-            names = answer_variables(qids)
-            claimed, answers = notebook_answers(submission_nb, names)
-            ids = _submitters(self.metadata)
-            # On Gradescope the notebook's id must be the submitter's (any member of a group); locally, it is.
-            if ids:
-                student = claimed if isinstance(claimed, str) and claimed.strip() in ids else ids[0]
-            else:
-                student = claimed if isinstance(claimed, str) else ""
-            vendor = files / VENDOR if (files / VENDOR / "graphkin").is_dir() else None
-            self.report = grade_submissions(keys_path, [submission(student, answers, claimed)], vendor=vendor)[0]
+            self._grade_and_clear()
         except GraphkinError as exc:
             raise OtterRuntimeError(f"graphkin could not grade this notebook: {exc}") from None
-        return _literal_notebook(submission_nb, claimed, answers, names)
+
+    def _grade_and_clear(self) -> None:
+        files = self._source() / "files"
+        keys_name = self.config.get("keys", "")
+        keys_path = files / keys_name
+        names = answer_variables([q["id"] for q in _questions(keys_path)])
+        folder = self.submission_path.parent
+        own = self._own()
+        handin = read_handin(folder, names, notebook=self.submission_path.name, own=own)
+        ids = _submitters(self.metadata)
+        claimed = handin.claimed
+        # On Gradescope the notebook's id must be the submitter's (any member of a group); locally, it is.
+        if ids:
+            student = claimed if isinstance(claimed, str) and claimed.strip() in ids else ids[0]
+        else:
+            student = claimed if isinstance(claimed, str) else ""
+        vendor = files / VENDOR if (files / VENDOR / "graphkin").is_dir() else None
+        sub = submission(student, handin.answers, claimed, refused=handin.refused)
+        self.report = grade_submissions(keys_path, [sub], vendor=vendor)[0]
+        self.handin, self.names = handin, names
+        # Graded: the keys leave every folder of this machine's autograder before anything runs in a kernel.
+        for path in (keys_path, folder / keys_name):
+            path.unlink(missing_ok=True)
+        own.pop(keys_name, None)
+        clear_folder(folder, own, leave={self.submission_path.name})
+        write_text(self.submission_path, notebook_text(_literal_notebook(handin, names)))
+
+    def before_execution(self, submission_nb):
+        """The notebook otter runs: the id and the answers as literals (:meth:`before_grading` wrote it)."""
+        import nbformat
+
+        return nbformat.from_dict(_literal_notebook(self.handin, self.names))
 
     def after_grading(self, results) -> None:
         """graphkin's score and feedback, question by question, in place of what the kernel's tests said."""
@@ -171,6 +213,16 @@ class Plugin:
         results.set_output(html.escape(runtime.summary(report), quote=False))
         results.set_plugin_data("graphkin", report)
 
+    def generate_report(self) -> str:
+        """The teacher's log (otter prints it after grading; Gradescope keeps it from students): what else was
+        handed in, removed unread, and why a hand-in was not graded."""
+        lines = []
+        if self.handin.ignored:
+            lines.append("graphkin: handed in beside the notebook, removed unread: " + ", ".join(self.handin.ignored))
+        if self.handin.refused:
+            lines.append(f"graphkin: not graded: {self.handin.reason}")
+        return "\n".join(lines)
+
 
 def _out_of_time(limit: int):
     def stop(signum, frame):
@@ -190,21 +242,61 @@ def _questions(path: Path) -> list[dict]:
         raise GraphkinError(f"the keys file {path} cannot be read ({exc})") from None
 
 
-def _literal_notebook(nb, claimed, answers: dict, names: dict):
-    """The notebook otter runs: the id and each answer as a literal, nothing else of the student's."""
-    import nbformat
+_KERNEL = {"kernelspec": {"name": "python3", "display_name": "Python 3", "language": "python"},
+           "language_info": {"name": "python"}}
 
-    def literal(value) -> str:
-        if isinstance(value, str) or (isinstance(value, (int, float)) and not isinstance(value, bool)
-                                      and abs(value) < 1e300):
-            return repr(value)
-        return "None"
 
-    cells = [nbformat.v4.new_code_cell(f"{STUDENT_VARIABLE} = {literal(claimed)}  # read from the notebook as data")]
-    for qid, value in answers.items():
-        cells.append(nbformat.v4.new_code_cell(f"{names[qid]} = {literal(value)}  # read from the notebook as data"))
-    out = nbformat.v4.new_notebook(cells=cells, metadata=dict(nb.get("metadata", {})))
-    return nbformat.from_dict(out)
+def _literal_notebook(handin: HandIn, names: dict) -> dict:
+    """The notebook otter's kernel runs: the id and each answer as a literal, nothing else of the student's."""
+    lines = [f"{STUDENT_VARIABLE} = {literal(handin.claimed)}",
+             *(f"{names[qid]} = {literal(value)}" for qid, value in handin.answers.items())]
+    cells = [{"cell_type": "code", "id": f"c{i}", "metadata": {}, "execution_count": None, "outputs": [],
+              "source": f"{line}  # read from the notebook as data"} for i, line in enumerate(lines)]
+    return {"cells": cells, "metadata": dict(_KERNEL), "nbformat": 4, "nbformat_minor": 5}
+
+
+def strip(exercise, handins, dest) -> list[tuple[Path, HandIn]]:
+    """Each hand-in as a notebook for ``otter run``: its code cells' text only, and nothing that was beside it.
+
+    ``otter run`` reads a submission before graphkin's plugin can: it refuses a zip of two notebooks and
+    stops on a notebook it cannot parse. Stripped first, every hand-in reaches it as a well-formed notebook
+    of one file, and one that cannot be read carries why, so that otter's row and graphkin's regrade give
+    the same verdict (:func:`graphkin.exercises.handins.stripped_notebook`).
+
+    Parameters
+    ----------
+    exercise : str, Path or Exercise
+    handins : iterable of str or Path
+        Notebooks, otter's zips (``grader.export()``), or folders.
+    dest : str or Path
+        The folder to write ``<hand-in name>.ipynb`` into.
+
+    Returns
+    -------
+    list of (Path, HandIn)
+        Each notebook written, with what was read of its hand-in (for the teacher's log).
+
+    Raises
+    ------
+    GraphkinError
+        Two hand-ins of one name (``alice.zip`` and ``alice.ipynb``), or a hand-in that is not there.
+    """
+    ex = load(exercise)
+    names = answer_variables([q.id for q in ex.questions])
+    paths = [Path(p) for p in handins]
+    stems: dict[str, Path] = {}
+    for p in paths:
+        stem = p.stem if p.suffix.lower() in (".ipynb", ".zip") else p.name
+        if stem in stems:
+            raise GraphkinError(f"{stems[stem]} and {p} would both be {stem}.ipynb: rename one of them")
+        stems[stem] = p
+    meta = {**_KERNEL, "otter": {"assignment_name": ex.id}}
+    out = []
+    for stem, p in stems.items():
+        handin = read_handin(p, names, notebook=f"{ex.id}.ipynb")
+        out.append((write_text(Path(dest) / f"{stem}.ipynb", notebook_text(stripped_notebook(handin, meta)), "-o"),
+                    handin))
+    return out
 
 
 # ---------------------------------------------------------------------------------------------------------
@@ -426,12 +518,14 @@ def readme_commands(bundle) -> dict[str, str]:
         "check": (f"mkdir -p check\n"
                   f"timeout {TIMEOUT + 60} otter run -a dist/autograder/{name}-autograder_*.zip -o check "
                   f"dist/autograder/{name}.ipynb\n"),
-        "grade": ("for nb in submissions/*.ipynb; do\n"
+        "grade": (f"graphkin exercise strip {exercise} submissions/* -o handed-in\n"
+                  "for nb in handed-in/*.ipynb; do\n"
                   '    out=results/$(basename "$nb" .ipynb); mkdir -p "$out"\n'
-                  f'    timeout {TIMEOUT + 60} otter run -a dist/autograder/{name}-autograder_*.zip -o "$out" "$nb"\n'
+                  f'    timeout {TIMEOUT + 60} otter run -a dist/autograder/{name}-autograder_*.zip -o "$out" "$nb" '
+                  '|| echo "otter could not grade $nb" >&2\n'
                   "done\n"
                   f"graphkin exercise collect results -o class.csv\n"),
-        "regrade": (f"graphkin exercise grade {exercise} --keys {keys_file(bundle)} --answers submissions/*.ipynb "
+        "regrade": (f"graphkin exercise grade {exercise} --keys {keys_file(bundle)} --answers submissions/* "
                     f"-o regraded.csv\n"),
     }
 
