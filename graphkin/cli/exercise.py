@@ -145,7 +145,7 @@ def _export(args) -> int:
     from graphkin.exercises import platforms
     from graphkin.exercises.roster import read_roster
 
-    platforms.platform(args.to)
+    module = platforms.platform(args.to)
     secret = _secret(args)
     students = read_roster(args.roster) if args.roster else None
     with _progress(len(students or ()), "export") as bar:
@@ -153,6 +153,8 @@ def _export(args) -> int:
                                    progress=bar.update)
     print(f"{len(written)} files written to {args.output}; next: see {Path(args.output) / 'README.md'}",
           file=sys.stderr)
+    for note in getattr(module, "NOTES", ()):
+        _note(f"{args.to}: {note}")
     return 0
 
 

@@ -73,6 +73,8 @@ REFUSALS = {
 METADATA = "graphkin"
 """The notebook metadata key of a notebook graphkin made from a hand-in (:func:`stripped_notebook`)."""
 
+_NAMED = 20  # names of what else a hand-in holds, at most, in the log
+
 _HINTS = {".pkl": "a pickle", ".pickle": "a pickle", ".dill": "a pickle", ".py": "Python code",
           ".pth": "a Python path file", ".ipynb": "another notebook", ".zip": "a zip", ".so": "compiled code"}
 
@@ -315,8 +317,8 @@ def _from_folder(folder: Path, variables, wanted, own) -> HandIn:
                         and not e.is_dir(follow_symlinks=False))
     chosen = _choose(candidates, wanted)
     found = chosen if chosen in entries else None
-    ignored = tuple(_describe(folder, n, own) for n in sorted(entries) if n != found
-                    and not (n in _tops(own) and _unchanged(folder, n, own)))
+    ignored = _capped([_describe(folder, n, own) for n in sorted(entries) if n != found
+                       and not (n in _tops(own) and _unchanged(folder, n, own))])
     if found is None:
         return HandIn(refused=chosen, ignored=ignored)
     if entries[found].is_symlink():
@@ -341,7 +343,7 @@ def _from_zip(path: Path, variables, wanted) -> HandIn:
                                 and len(members) == 1 and members[0].filename == t)
             chosen = _choose(candidates, wanted)
             found = chosen if chosen in tops else None
-            ignored = tuple(_describe_zip(t, tops[t]) for t in sorted(tops) if t != found)
+            ignored = _capped([_describe_zip(t, tops[t]) for t in sorted(tops) if t != found])
             if found is None:
                 return HandIn(refused=chosen, ignored=ignored)
             info = tops[found][0]
@@ -362,6 +364,13 @@ def _from_zip(path: Path, variables, wanted) -> HandIn:
 # Naming what else a hand-in holds
 
 
+def _capped(names: list[str]) -> tuple:
+    """At most :data:`_NAMED` names for the log, and how many more there were."""
+    if len(names) <= _NAMED:
+        return tuple(names)
+    return (*names[:_NAMED], f"and {len(names) - _NAMED} more")
+
+
 def _tops(own) -> set[str]:
     return {PurePosixPath(rel).parts[0] for rel in own}
 
@@ -370,13 +379,19 @@ def _content(source) -> bytes:
     return source if isinstance(source, bytes) else Path(source).read_bytes()
 
 
+def _same(path: Path, source) -> bool:
+    """Whether the file ``path`` holds ``source`` (bytes, or a file's), sizes compared before any byte is read."""
+    size = len(source) if isinstance(source, bytes) else Path(source).stat().st_size
+    return path.stat().st_size == size and path.read_bytes() == _content(source)
+
+
 def _unchanged(folder: Path, top: str, own) -> bool:
     """Whether ``folder/top`` is exactly the platform's own file or folder of that name (no link, nothing added)."""
     path = folder / top
     if path.is_symlink():
         return False
     if path.is_file():
-        return top in own and path.read_bytes() == _content(own[top])
+        return top in own and _same(path, own[top])
     if not path.is_dir():
         return False
     wanted = {rel: src for rel, src in own.items() if rel.startswith(top + "/")}
@@ -387,7 +402,7 @@ def _unchanged(folder: Path, top: str, own) -> bool:
                 return False
         for name in filenames:
             rel = Path(dirpath, name).relative_to(folder).as_posix()
-            if rel not in wanted or Path(dirpath, name).read_bytes() != _content(wanted[rel]):
+            if rel not in wanted or not _same(Path(dirpath, name), wanted[rel]):
                 return False
             seen += 1
     return seen == len(wanted)

@@ -60,6 +60,14 @@ GRADE_WRITER = "graphkin.exercises.platforms.nbgrader.write_grades"
 EXPORTER = "graphkin.exercises.platforms.nbgrader.HandInExporter"
 """The importable name of the exporter ``nbgrader autograde`` reads submissions with (``HandInExporter``)."""
 
+CLASSMATES = (
+    "any student can compute any classmate's answers with graphkin and the folder released to them, whose "
+    "sheets carry every roster student's data. A classmate's answers handed in score 0.")
+"""What the released folder lets every student do."""
+
+NOTES = (CLASSMATES,)
+"""Said when the export is made (``graphkin exercise export`` prints them) and in its README."""
+
 GRADES = "graphkin_grades"
 """The key of nbgrader's resources under which :func:`read_as_data` leaves the grades for :func:`write_grades`."""
 
@@ -75,7 +83,8 @@ _READ = "  # read from your notebook as data"
 _KERNEL = {"kernelspec": {"name": "python3", "display_name": "Python 3", "language": "python"},
            "language_info": {"name": "python"}}
 # nbgrader's course layout (its default CourseDirectory settings, which graphkin's lines assume).
-_SUBMITTED, _TIMESTAMP = "submitted", "timestamp.txt"
+_SUBMITTED, _AUTOGRADED, _TIMESTAMP = "submitted", "autograded", "timestamp.txt"
+_LAYOUT = "{nbgrader_step}/{student_id}/{assignment_id}"
 _IGNORED_BY_NBGRADER = (".ipynb_checkpoints", "__pycache__", "feedback")
 
 
@@ -212,9 +221,14 @@ def _reduce_submission(exporter, filename, resources):
     root = Path(coursedir.root)
     student, assignment, notebook = info.get("student"), info.get("assignment"), info.get("notebook")
     keys = root / KEYS_FOLDER / f"{assignment}.json"
-    submitted = root / _SUBMITTED / str(student) / str(assignment)
-    if not keys.is_file() or os.path.abspath(Path(filename).parent) != os.path.abspath(submitted):
+    if not keys.is_file():
         return None
+    if (coursedir.submitted_directory, coursedir.autograded_directory) != (_SUBMITTED, _AUTOGRADED) or \
+            coursedir.directory_structure != _LAYOUT:
+        raise GraphkinError("graphkin's nbgrader lines need nbgrader's default course layout "
+                            f"(c.CourseDirectory.directory_structure = {_LAYOUT!r}, submitted/ and autograded/)")
+    if os.path.abspath(Path(filename).parent) != os.path.abspath(root / _SUBMITTED / str(student) / str(assignment)):
+        return None  # nbgrader's own autograded copy, which it reads in its second pass
     exercise = Keys(keys).exercise
     handin = _handin(root, student, assignment, notebook, answer_variables([q.id for q in exercise.questions]))
     if handin.ignored:
@@ -273,11 +287,14 @@ def read_as_data(nb, resources):
     qids = [q["id"] for q in tomllib.loads(json.loads(keys.read_text(encoding="utf-8"))["exercise"]["text"])
             ["questions"]]
     names = answer_variables(qids)
+    kernel_folder = Path(resources["metadata"]["path"])
+    if os.path.abspath(kernel_folder) != os.path.abspath(root / _AUTOGRADED / student / assignment):
+        raise GraphkinError(f"graphkin: {kernel_folder} is not {_AUTOGRADED}/{student}/{assignment}/ of the course "
+                            "directory: graphkin's nbgrader lines need nbgrader's default course layout")
     handin = _handin(root, student, assignment, str(info.get("notebook")), names)
     report = grade_submissions(keys, [submission(student, handin.answers, handin.claimed,
                                                  refused=handin.refused)])[0]
-    clear_folder(resources["metadata"]["path"], assignment_files(root, assignment),
-                 leave={f"{info.get('notebook')}.ipynb", _TIMESTAMP})
+    clear_folder(kernel_folder, assignment_files(root, assignment), leave={f"{info.get('notebook')}.ipynb", _TIMESTAMP})
     results = {r["id"]: r for r in report["questions"]}
     resources[GRADES] = {"tests": {_grade_id("test", r["id"]): (runtime.feedback_line(r), float(r["score"]))
                                    for r in report["questions"]},
@@ -620,8 +637,9 @@ def _readme(bundle) -> str:
     files += [f"- `{KEYS_FOLDER}/{name}.json`: the **keys**: each roster student's answers, computed with the "
               "course secret (which they do not hold). Teachers only: it goes into the course directory, never "
               "into `source/` (whatever is there is released).",
-              "- `nbgrader_config.example.py`: the configuration graphkin needs (its preprocessor, a time limit per "
-              "cell), to merge into your own `nbgrader_config.py` (named so that it never replaces yours).",
+              "- `nbgrader_config.example.py`: the configuration graphkin needs (its exporter and preprocessors, a "
+              "time limit per notebook), to merge into your own `nbgrader_config.py` (named so that it never "
+              "replaces yours).",
               "- `README.md`: this file."]
     if bundle.secret:
         secret_note = "The course secret is in none of these files: grading uses the keys."
@@ -634,19 +652,22 @@ def _readme(bundle) -> str:
     config = "\n".join(f"    {line}" for line in config_lines())
     return f"""# {bundle.exercise.title}: nbgrader
 
-Exported by graphkin for nbgrader (tried with nbgrader 0.9.6). **The grade never comes from the student's
-code**: graphkin's preprocessor reads each handed-in notebook as a file (the text assigned to `STUDENT` and
-to each answer), grades those answers in a separate Python process that holds the keys, and leaves
-nbgrader's kernel only the answers as literals; after the kernel, its grade writer sets each test cell's
-output to graphkin's feedback line and score. Files a student hands in beside the notebook still sit in
-the folder the kernel starts in (nbgrader copies them), where Python may import them: autograde in a
-container, or as a user that cannot write the course directory.
+Exported by graphkin for nbgrader (tried with nbgrader 0.9.6). **Only the answers a student typed count,
+whatever else they hand in.** graphkin's exporter reads each submitted notebook as a file before nbgrader
+does (the text assigned to `STUDENT` and to each answer) and hands nbgrader graphkin's own cells with those
+answers as literals; what else the submission holds (files, packages, pickles, links, other notebooks,
+extra grade cells) is named in nbgrader's log, and a notebook that cannot be read (too big, too deep, not
+UTF-8, not JSON) scores 0 with a sentence saying why. graphkin's preprocessor grades the answers in a
+separate Python process that holds the keys, and empties the folder the kernel starts in of what nbgrader
+copied of the submission, so the kernel runs only the literals and `generate_feedback` hands back nothing of
+it; after the kernel, its grade writer sets each test cell's output to graphkin's feedback line and score.
 
 ## Files
 
 {chr(10).join(files)}
 
-{secret_note} See `docs/platforms/nbgrader.md` in graphkin for what students can and cannot learn or do.
+{secret_note} {CLASSMATES[0].upper() + CLASSMATES[1:]} See `docs/platforms/nbgrader.md` in graphkin for what
+students can and cannot learn or do.
 
 ## Steps
 
@@ -710,6 +731,7 @@ def _indent(text: str) -> str:
     return "".join(f"   {line}\n" for line in text.splitlines())
 
 
-__all__ = ["GRADES", "GRADE_WRITER", "KEYS_FOLDER", "PREPROCESSOR", "STUDENT_VARIABLE", "TIMEOUT", "TimeLimit", "build",
+__all__ = ["CLASSMATES", "EXPORTER", "GRADES", "GRADE_WRITER", "KEYS_FOLDER", "NOTES", "PREPROCESSOR",
+           "STUDENT_VARIABLE", "TIMEOUT", "TimeLimit", "assignment_files", "build", "reduced_notebook",
            "check_answer", "config_lines", "course_root", "not_read_as_data", "read_as_data", "readme_commands",
            "variables", "write_grades"]

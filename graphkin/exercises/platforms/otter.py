@@ -63,6 +63,24 @@ TIMEOUT = 120
 PLUGIN = "graphkin.exercises.platforms.otter.Plugin"
 """The plugin's importable name, as the assignment's configuration lists it."""
 
+NOT_CLOSED = (
+    "on Gradescope, otter opens an upload before graphkin's plugin runs: a zip of two notebooks, or a notebook "
+    "otter cannot parse (not JSON, nested too deeply), gets otter's own error and no grade, where graphkin gives "
+    "that student's row with a sentence. Grade the submissions you download from Gradescope with the README's "
+    "steps 3 and 4 (graphkin exercise strip, then otter run; or the regrade). And otter imports the plugin once "
+    "it is in the submission folder: run otter as its commands do (otter run), never from a Python whose "
+    "sys.path starts with the current folder (python -c, a notebook), where a graphkin/ handed in would be "
+    "imported in its place.")
+"""What otter's own design leaves open that graphkin cannot close from its side."""
+
+CLASSMATES = (
+    "any student can compute any classmate's answers with graphkin and the folder students are given, which "
+    "holds graphkin and the sheets (every roster student's data). A classmate's answers handed in score 0.")
+"""What the student folder lets every student do."""
+
+NOTES = (NOT_CLOSED, CLASSMATES)
+"""Said when the export is made (``graphkin exercise export`` prints them) and in its README."""
+
 
 # ---------------------------------------------------------------------------------------------------------
 # What the exported tests call, in the student's kernel (they decide nothing)
@@ -553,22 +571,27 @@ def _readme(bundle) -> str:
         f"- `{VENDOR}/graphkin/`: graphkin itself, for the student notebook (which prints the sheet and checks "
         "that an answer can be read) and for the grading.",
     ]
-    secret = ("This export has a course secret: it is in none of these files. The autograder grades with the keys; "
+    secret = ("This export has a course secret: it is in none of these files. The autograder grades with the keys. "
               if bundle.secret else "There is no course secret: anyone with graphkin can compute any student's key. ")
     return f"""\
 # {bundle.exercise.title}: otter-grader
 
 Made by `graphkin exercise export` for the exercise `{name}`. Each student types their id into the notebook
-and gets their own data. **Grading never runs the student's notebook**: graphkin's otter plugin reads each
-handed-in notebook as a file (the text assigned to `STUDENT` and to each answer), grades those answers in a
-separate Python process that holds the keys, and writes graphkin's score and feedback into otter's results.
-Otter's kernel runs only those answers, typed back as literals.
+and gets their own data. **Only the answers a student typed count, whatever else they hand in.** Before otter
+loads anything of a submission (its `.OTTER_LOG`, the files beside the notebook), graphkin's otter plugin
+reads the notebook as a file (the text assigned to `STUDENT` and to each answer), grades those answers in a
+separate Python process that holds the keys, deletes the keys, removes everything else the student handed
+in (naming it in otter's log), and later writes graphkin's score and feedback into otter's results. Otter's
+kernel runs only those answers, typed back as literals.
+
+**What graphkin cannot close from its side:** {NOT_CLOSED}
 
 ## Files
 
 {chr(10).join(files)}
 
-{secret}see `docs/platforms/otter.md` in graphkin for what students can and cannot learn or do.
+{secret}{CLASSMATES[0].upper() + CLASSMATES[1:]} See `docs/platforms/otter.md` in graphkin for what
+students can and cannot learn or do.
 
 ## Next steps
 
@@ -587,16 +610,19 @@ In this folder, with a Python that has `otter-grader`, `ipykernel` and graphkin.
    ```sh
 {_indent(cmd['check'])}   ```
 
-3. Put the handed-in notebooks in `submissions/` and grade them. `otter run` grades one notebook in a few
-   seconds and writes its `results.json` (Gradescope's format: per question `score`, `max_score` and
-   graphkin's feedback); `timeout` and the plugin stop a notebook that takes too long; `graphkin exercise
-   collect` makes one class table (`student`, `score`, `max`, each question's points):
+3. Put what students handed in (notebooks, or the zips `grader.export()` writes) in `submissions/` and grade
+   them. `graphkin exercise strip` makes of each hand-in a notebook otter can read: its code cells' text,
+   nothing that was beside it (it names what it left out, and why a hand-in cannot be graded). `otter run`
+   grades one notebook in a few seconds and writes its `results.json` (Gradescope's format: per question
+   `score`, `max_score` and graphkin's feedback); `timeout` and the plugin stop a notebook that takes too
+   long; `graphkin exercise collect` makes one class table (`student`, `score`, `max`, each question's
+   points, and `refused`: why a hand-in was not graded):
 
    ```sh
 {_indent(cmd['grade'])}   ```
 
-4. Grade the same notebooks again on your own machine, outside otter (read as data, never run); the
-   scores are those of step 3:
+4. Grade the same hand-ins again on your own machine, outside otter (read as data, never run); the
+   scores and verdicts are those of step 3:
 
    ```sh
 {_indent(cmd['regrade'])}   ```
@@ -605,7 +631,9 @@ In this folder, with a Python that has `otter-grader`, `ipykernel` and graphkin.
 
 5. Or grade on Gradescope: upload the zip as a programming assignment's autograder. The grading image
    installs graphkin from the zip; the tests compare the id in the notebook with who handed it in
-   (Gradescope's Student ID, else the email), so the roster's ids must be those. Not tried here.
+   (Gradescope's Student ID, else the email), so the roster's ids must be those. A zip of two notebooks, or
+   a notebook otter cannot parse, gets otter's own error there (above): grade the download with steps 3
+   and 4. Not tried here.
 
 ## What the machines need
 
@@ -618,5 +646,5 @@ def _indent(text: str) -> str:
     return "".join(f"   {line}\n" for line in text.splitlines())
 
 
-__all__ = ["PLUGIN", "Plugin", "TIMEOUT", "VENDOR", "build", "graded_by_plugin", "keys_file", "readable",
-           "readme_commands", "variable"]
+__all__ = ["CLASSMATES", "NOTES", "NOT_CLOSED", "PLUGIN", "Plugin", "TIMEOUT", "VENDOR", "build", "graded_by_plugin",
+           "keys_file", "readable", "readme_commands", "strip", "variable"]

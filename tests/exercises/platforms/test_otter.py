@@ -183,7 +183,8 @@ def graded(tmp_path_factory):
     _bash(dest, cmd["regrade"], 300)
     raw = _raw_handins(dest, student_nb, canary)
     zips = sorted(str(p) for p in (dest / "raw").glob("*.zip"))
-    ran = subprocess.run([sys.executable, "-c", _RUN_ALL, f"dist/autograder/{NAME}-autograder_*.zip", "raw-results",
+    # -P: no current folder on sys.path (otter imports the plugin once it is in the submission folder).
+    ran = subprocess.run([sys.executable, "-P", "-c", _RUN_ALL, f"dist/autograder/{NAME}-autograder_*.zip", "raw-results",
                           *zips], cwd=dest, env=_env(), capture_output=True, text=True, timeout=3000)
     assert ran.returncode == 0, ran.stderr[-3000:]
     results = {label: json.loads((dest / "results" / label / "results.json").read_text(encoding="utf-8"))
