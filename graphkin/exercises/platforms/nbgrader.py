@@ -1,4 +1,4 @@
-"""nbgrader: a source notebook for a course directory, and a preprocessor that grades it read as data.
+"""nbgrader: a source notebook for a course directory, and the exporter and preprocessors that grade it as data.
 
 ``build(bundle)`` writes ``source/<name>/``, which the teacher copies into their nbgrader course
 directory, then runs ``nbgrader generate_assignment`` and, once the submissions are collected,
@@ -11,18 +11,26 @@ directory, then runs ``nbgrader generate_assignment`` and, once the submissions 
 - each question has an autograder test cell worth the question's points. Its visible part only checks
   that the answer can be read.
 
-**The grade never depends on the student's code.** nbgrader grades by running the notebook in a kernel, where
-the student's code runs beside the tests. The export's ``nbgrader_config.example.py`` puts
-:func:`read_as_data` first among ``Autograde.autograde_preprocessors``: before nbgrader's ``Execute``,
-it reads the notebook as data (the literals assigned to ``STUDENT`` and to each answer's variable),
-grades them in a separate, isolated Python process with the precomputed keys
-(``graphkin-keys/<name>.json`` in the course directory, beside ``source/``; never the secret), and
-rewrites the notebook nbgrader then runs: the id and the answers as literals, each test cell as the
-feedback line and the score, and any other cell the student wrote as comments. nbgrader's ``Execute``
-then runs nothing the student wrote in the notebook, and :func:`write_grades`, after it, sets each test
-cell's output to graphkin's feedback line and score, whatever the kernel printed: nbgrader records that
-number (its partial credit). The student's id is the one nbgrader grades under; a notebook carrying
-another's scores 0.
+**Only the answers a student typed count, whatever else they hand in.** nbgrader grades by running the
+notebook in a kernel, where the student's code runs beside the tests; before that it parses the submitted
+notebook and copies the submission's other files (and what its links point to) into the folder the kernel
+starts in, where Python imports them first, and which ``generate_feedback`` copies back to the student. The
+export's ``nbgrader_config.example.py`` names three hooks, each in nbgrader's own process:
+
+- ``HandInExporter`` (``Autograde.exporter_class``) reads each submission of an assignment with keys before
+  nbgrader does (:func:`graphkin.exercises.handins.read_handin`: the literals assigned to ``STUDENT`` and to
+  each answer's variable) and hands nbgrader :func:`reduced_notebook`: graphkin's cells, the answers as
+  literals, nothing else of the student's; what else was handed in, and a notebook that cannot be read, are
+  named in nbgrader's log;
+- :func:`read_as_data`, first among ``Autograde.autograde_preprocessors``, before nbgrader's ``Execute``,
+  grades the submission read as data in a separate, isolated Python process with the precomputed keys
+  (``graphkin-keys/<name>.json`` in the course directory, beside ``source/``; never the secret), empties the
+  kernel's folder of what nbgrader copied of the submission, and writes each test cell as the feedback line
+  and the score;
+- :func:`write_grades`, after ``Execute``, sets each test cell's output to graphkin's feedback line and
+  score, whatever the kernel printed: nbgrader records that number (its partial credit).
+
+The student's id is the one nbgrader grades under; a notebook carrying another's scores 0.
 
 A test cell's hidden part fails loudly when the preprocessor was not configured: under ``nbgrader
 autograde`` it stops the kernel, so nbgrader keeps no grade rather than one the notebook decided.
@@ -65,7 +73,14 @@ CLASSMATES = (
     "sheets carry every roster student's data. A classmate's answers handed in score 0.")
 """What the released folder lets every student do."""
 
-NOTES = (CLASSMATES,)
+NOT_CLOSED = (
+    "nbgrader autograde copies the files of a submission folder, and what its links point to, as you, before "
+    "graphkin's exporter runs: graphkin reads none of it and removes the copies before the kernel starts, so "
+    "generate_feedback hands none of it back. To keep nbgrader from reading through links at all, remove them "
+    "from submitted/ before you autograde: find submitted -type l -delete")
+"""What nbgrader's own design leaves open that graphkin cannot close from its side."""
+
+NOTES = (NOT_CLOSED, CLASSMATES)
 """Said when the export is made (``graphkin exercise export`` prints them) and in its README."""
 
 GRADES = "graphkin_grades"
@@ -666,6 +681,8 @@ it; after the kernel, its grade writer sets each test cell's output to graphkin'
 
 {chr(10).join(files)}
 
+**What graphkin cannot close from its side:** {NOT_CLOSED.replace("find submitted", "`find submitted")}`.
+
 {secret_note} {CLASSMATES[0].upper() + CLASSMATES[1:]} See `docs/platforms/nbgrader.md` in graphkin for what
 students can and cannot learn or do.
 
@@ -731,7 +748,7 @@ def _indent(text: str) -> str:
     return "".join(f"   {line}\n" for line in text.splitlines())
 
 
-__all__ = ["CLASSMATES", "EXPORTER", "GRADES", "GRADE_WRITER", "KEYS_FOLDER", "NOTES", "PREPROCESSOR",
+__all__ = ["CLASSMATES", "EXPORTER", "GRADES", "GRADE_WRITER", "KEYS_FOLDER", "NOTES", "NOT_CLOSED", "PREPROCESSOR",
            "STUDENT_VARIABLE", "TIMEOUT", "TimeLimit", "assignment_files", "build", "reduced_notebook",
            "check_answer", "config_lines", "course_root", "not_read_as_data", "read_as_data", "readme_commands",
            "variables", "write_grades"]

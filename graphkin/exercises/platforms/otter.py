@@ -8,23 +8,30 @@ Otter has one seed per class, not one per student, so nothing here asks it for r
 student's data come from their id, as in ``graphkin exercise make``: the notebook asks for the id
 (``STUDENT``) and prints the student's sheet from the roster's sheets.
 
-**Grading never runs the student's notebook.** Otter grades by running the notebook and its tests in one
-kernel, where a notebook can replace any function a test calls. The export registers :class:`Plugin`
-with otter instead, which, before otter runs anything:
+**Only the answers a student typed count, whatever else they hand in.** Otter grades by running the notebook
+and its tests in one kernel, where a notebook can replace any function a test calls; its runner unpickles a
+hand-in's ``.OTTER_LOG`` and the results the kernel sends back; and the kernel, started in the submission
+folder, imports modules from it first. The export registers :class:`Plugin` with otter instead, whose
+first hook runs before otter reads ``.OTTER_LOG`` or starts a kernel:
 
-1. reads the handed-in notebook as data (:func:`graphkin.exercises.notebooks.notebook_answers`: the
-   literal assigned to ``STUDENT`` and to each answer's variable, never run);
-2. grades those answers in a separate, isolated Python process that holds the precomputed keys and
+1. it reads the hand-in as data (:func:`graphkin.exercises.handins.read_handin`: the literal assigned to
+   ``STUDENT`` and to each answer's variable, never run), and names everything else handed in;
+2. it grades those answers in a separate, isolated Python process that holds the precomputed keys and
    not the course secret (:mod:`graphkin.exercises.platforms.isolated`), importing graphkin from the
    autograder's own copy;
-3. hands otter, in place of the student's notebook, one made of those literals only, so the kernel
-   otter starts runs nothing the student wrote;
+3. it deletes the keys, empties the submission folder of all but the autograder's own files, and puts a
+   notebook of those literals in place of the student's, so the kernel otter starts runs nothing the
+   student wrote and imports nothing they handed in;
 
-and after otter's tests, writes graphkin's score and feedback into otter's results, question by
+and after otter's tests, it writes graphkin's score and feedback into otter's results, question by
 question (partial credit as it is; the hidden test case itself, in the kernel, never passes: a grade
 comes from the plugin or not at all). ``otter run`` gives each notebook a time limit (the plugin
 stops it with otter's own error after ``timeout`` seconds), and ``graphkin exercise collect`` makes
 one class table of the ``results.json`` files.
+
+Otter opens a submission before any plugin: it refuses a zip of two notebooks and stops on a notebook it
+cannot parse. :func:`strip` makes of each hand-in a notebook it can read, for ``otter run``; on Gradescope
+that stays open (:data:`NOT_CLOSED`).
 """
 
 from __future__ import annotations
