@@ -215,7 +215,7 @@ def _exporter_class():
             nb, resources = reduced
             return self.from_notebook_node(nb, resources, **kw)
 
-    HandInExporter.__module__ = __name__
+    HandInExporter.__module__, HandInExporter.__qualname__ = __name__, "HandInExporter"  # where nbgrader finds it
     return HandInExporter
 
 
