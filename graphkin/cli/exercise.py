@@ -382,6 +382,8 @@ def _strip(args) -> int:
     for path, handin in done:
         if handin.ignored:
             _note(f"{path.name}: handed in beside the notebook, not carried: {', '.join(handin.ignored)}")
+        if handin.grade_ids:
+            _note(f"{path.name}: grade cells of the student's own, carried as text only: {otter.grade_cells(handin)}")
         if handin.refused:
             _note(f"{path.name}: not graded: {handin.reason}")
     print(f"{len(done)} notebook{'s' if len(done) != 1 else ''} written to {args.output}", file=sys.stderr)

@@ -99,6 +99,9 @@ class HandIn:
         Everything else it holds, named for the teacher's log (never opened).
     sources : tuple of str
         The text of the notebook's code cells, in order: all the answers are read from (never run).
+    grade_ids : tuple of str
+        The nbgrader grade ids its cells' metadata carry, in order (read as data, for the log of what a
+        platform was not given: a cell the student added, a grade cell twice).
     """
 
     claimed: object = None
@@ -107,6 +110,7 @@ class HandIn:
     notebook: str | None = None
     ignored: tuple = ()
     sources: tuple = ()
+    grade_ids: tuple = ()
 
     @property
     def reason(self) -> str | None:
@@ -296,7 +300,17 @@ def _reading(data: bytes | None, variables, name: str, ignored: tuple) -> HandIn
     if isinstance(mark, dict) and mark.get("refused") in REFUSALS:
         return HandIn(refused=mark["refused"], notebook=name, ignored=ignored)
     claimed, answers = notebook_answers(nb, variables)
-    return HandIn(claimed, answers, None, name, ignored, tuple(code_sources(nb)))
+    return HandIn(claimed, answers, None, name, ignored, tuple(code_sources(nb)), _grade_ids(nb))
+
+
+def _grade_ids(nb: dict) -> tuple:
+    ids = []
+    for cell in nb["cells"]:
+        meta = cell.get("metadata") if isinstance(cell, dict) else None
+        marks = meta.get("nbgrader") if isinstance(meta, dict) else None
+        if isinstance(marks, dict) and isinstance(marks.get("grade_id"), str):
+            ids.append(marks["grade_id"])
+    return tuple(ids)
 
 
 def _choose(names: list[str], wanted: str | None):

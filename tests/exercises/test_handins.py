@@ -191,3 +191,12 @@ def test_clear_folder_leaves_only_the_platforms_own_files(tmp_path):
     assert sorted(p.relative_to(folder).as_posix() for p in folder.rglob("*") if p.is_file()) == [
         "__init__.py", "hw.ipynb", "hw.toml", "vendor/graphkin/__init__.py"]
     assert (folder / "vendor" / "graphkin" / "__init__.py").read_text() == "real"
+
+
+def test_the_grade_ids_its_cells_carry_are_read_for_the_log(tmp_path):
+    cells = [{"cell_type": "code", "source": "x = 1", "metadata": {"nbgrader": {"grade_id": gid, "grade": True}}}
+             for gid in ("test_F23", "extra", "test_F23")]
+    cells += [{"cell_type": "code", "source": "", "metadata": {"nbgrader": {"grade_id": 5}}}, "not a cell"]
+    f = tmp_path / "hw.ipynb"
+    f.write_text(json.dumps({"cells": cells}), encoding="utf-8")
+    assert read_handin(f, NAMES).grade_ids == ("test_F23", "extra", "test_F23")

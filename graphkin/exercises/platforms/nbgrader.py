@@ -48,7 +48,7 @@ from functools import cache
 from pathlib import Path
 
 from graphkin.errors import GraphkinError
-from graphkin.exercises.grading import answer_example
+from graphkin.exercises.grading import answer_example, echo
 from graphkin.exercises.handins import METADATA, HandIn, clear_folder, literal, own_files, read_handin
 from graphkin.exercises.keys import Keys, keys_text
 from graphkin.exercises.notebooks import STUDENT_VARIABLE, answer_variables
@@ -249,6 +249,10 @@ def _reduce_submission(exporter, filename, resources):
     if handin.ignored:
         exporter.log.warning("%s: handed in beside the notebook, not read (graphkin): %s", student,
                              ", ".join(handin.ignored))
+    added = _cells_added(exercise, handin.grade_ids)
+    if added:
+        exporter.log.warning("%s: cells of the student's own, not given to nbgrader (graphkin): %s", student,
+                             ", ".join(added))
     if handin.refused:
         exporter.log.warning("%s: not graded (graphkin): %s", student, handin.reason)
     path, name = os.path.split(filename)
@@ -258,6 +262,18 @@ def _reduce_submission(exporter, filename, resources):
     resources = dict(resources)
     resources["metadata"] = {**(resources.get("metadata") or {}), **meta}
     return reduced_notebook(exercise, handin), resources
+
+
+def _cells_added(exercise, grade_ids) -> list[str]:
+    """The grade ids of a submission's cells that are not the source notebook's, or are there twice, for the log."""
+    ours = {"intro", "student", "sheet"} | {_grade_id(kind, q.id) for q in exercise.questions
+                                             for kind in ("question", "answer", "test")}
+    seen, added = set(), []
+    for gid in grade_ids:
+        if gid not in ours or gid in seen:
+            added.append(repr(echo(gid, 40)) + (" (again)" if gid in seen else ""))
+        seen.add(gid)
+    return added
 
 
 def read_as_data(nb, resources):

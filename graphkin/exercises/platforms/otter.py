@@ -45,6 +45,7 @@ from pathlib import Path
 
 from graphkin.errors import GraphkinError
 from graphkin.exercises import load
+from graphkin.exercises.grading import echo
 from graphkin.exercises.handins import (
     HandIn,
     clear_folder,
@@ -244,9 +245,16 @@ class Plugin:
         lines = []
         if self.handin.ignored:
             lines.append("graphkin: handed in beside the notebook, removed unread: " + ", ".join(self.handin.ignored))
+        if self.handin.grade_ids:
+            lines.append("graphkin: grade cells of the student's own, not run: " + grade_cells(self.handin))
         if self.handin.refused:
             lines.append(f"graphkin: not graded: {self.handin.reason}")
         return "\n".join(lines)
+
+
+def grade_cells(handin: HandIn) -> str:
+    """The nbgrader grade ids a notebook's cells carry (none of otter's own notebooks has one), for the log."""
+    return ", ".join(repr(echo(gid, 40)) for gid in handin.grade_ids)
 
 
 def _out_of_time(limit: int):
@@ -653,5 +661,5 @@ def _indent(text: str) -> str:
     return "".join(f"   {line}\n" for line in text.splitlines())
 
 
-__all__ = ["CLASSMATES", "NOTES", "NOT_CLOSED", "PLUGIN", "Plugin", "TIMEOUT", "VENDOR", "build", "graded_by_plugin",
-           "keys_file", "readable", "readme_commands", "strip", "variable"]
+__all__ = ["CLASSMATES", "NOTES", "NOT_CLOSED", "PLUGIN", "Plugin", "TIMEOUT", "VENDOR", "build", "grade_cells",
+           "graded_by_plugin", "keys_file", "readable", "readme_commands", "strip", "variable"]

@@ -289,6 +289,8 @@ def test_autograde_graded_every_student_and_named_what_it_did_not_read(course):
     assert "alice.ipynb (another notebook)" in log
     assert "keys.json (a link)" in log and "course-keys (a link)" in log
     assert f"t_too_deep: not graded (graphkin): {REFUSALS['too_deep']}" in log
+    assert ("t_extra_grade_cells: cells of the student's own, not given to nbgrader (graphkin): 'test_F23' (again), "
+            "'extra_points'") in log
 
 
 def test_grades_csv_is_the_class_table(course):

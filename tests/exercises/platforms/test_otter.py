@@ -118,9 +118,11 @@ def _readme_handins(dest: Path, student_nb: Path, canary: Path) -> dict:
     for label, (data, code) in UNREADABLE.items():
         (folder / f"{label}.ipynb").write_bytes(data)
         expected[label] = refused_report("", code)
-    # otter's zip with a second notebook (s002's right answers) and otter's log: the assignment's is read.
+    # otter's zip with a second notebook (s002's right answers) and otter's log: the assignment's is read
+    # (it carries grade cells worth 100 points too).
     bad = PLAIN["bad"]
-    write_zip(folder / "two_notebooks.zip", {f"{NAME}.ipynb": _filled(student_nb, "s001", bad).encode(),
+    named = with_extra_grade_cells(fill(nbformat.read(student_nb, as_version=4), "s001", bad))
+    write_zip(folder / "two_notebooks.zip", {f"{NAME}.ipynb": nbformat.writes(named).encode(),
                                              "copy.ipynb": _filled(student_nb, "s002", PLAIN["good"]).encode(),
                                              **beside(canary)["pickles"]}, {})
     expected["two_notebooks"] = expected_report("s001", bad, ROSTER)
@@ -243,9 +245,12 @@ def test_what_was_beside_the_notebook_is_named_in_the_teachers_log(graded):
                  "evil.pth (a Python path file)", "ipykernel_launcher.py", "vendor/ (a folder, not the assignment's "
                  "own, 1 file)", "keys.json"):
         assert name in raw, name
+    assert "graphkin: grade cells of the student's own, not run: 'test_F23', 'extra_points'" in raw
     log = graded["log"]
     assert "two_notebooks.ipynb: handed in beside the notebook, not carried: .OTTER_LOG" in log
     assert "copy.ipynb (another notebook)" in log
+    assert "two_notebooks.ipynb: grade cells of the student's own, carried as text only: 'test_F23', 'extra_points'" \
+        in log
     assert f"too_deep.ipynb: not graded: {REFUSALS['too_deep']}" in log
 
 
