@@ -302,3 +302,22 @@ def test_one_long_answer_in_a_class_csv_voids_nothing_else(capsys, tmp_path):
     verdicts = {q["id"]: q["verdict"] for q in s1["questions"]}
     assert verdicts == {"F12": "unreadable", "T12": "correct"} and s2["student"] == "s2"
     assert "too long (1000000 characters" in s1["questions"][0]["feedback"]
+
+
+@pytest.mark.parametrize("to", ["otter", "nbgrader"])
+def test_an_export_says_what_the_platform_leaves_open(capsys, tmp_path, to):
+    """Issue 34: what graphkin cannot close on a platform, and that students can compute any classmate's answers,
+    are said when the export is made (and in its README)."""
+    pytest.importorskip("nbformat")
+    from graphkin.exercises import platforms
+
+    (tmp_path / "roster.csv").write_text("student\ns1\ns2\n", encoding="utf-8")
+    code, _, err = run(capsys, "exercise", "export", "single_link", "--to", to, "-o", str(tmp_path / "x"),
+                       "--roster", str(tmp_path / "roster.csv"))
+    assert code == 0, err
+    module = platforms.platform(to)
+    readme = (tmp_path / "x" / "README.md").read_text(encoding="utf-8")
+    for note in module.NOTES:
+        assert f"graphkin: note: {to}: {note}\n" in err
+        assert note[1:40] in readme
+    assert "any student compute any classmate's answers with graphkin" in err

@@ -69,8 +69,8 @@ EXPORTER = "graphkin.exercises.platforms.nbgrader.HandInExporter"
 """The importable name of the exporter ``nbgrader autograde`` reads submissions with (``HandInExporter``)."""
 
 CLASSMATES = (
-    "any student can compute any classmate's answers with graphkin and the folder released to them, whose "
-    "sheets carry every roster student's data. A classmate's answers handed in score 0.")
+    "the folder released to students lets any student compute any classmate's answers with graphkin: its sheets "
+    "hold every roster student's data. A classmate's answers handed in score 0.")
 """What the released folder lets every student do."""
 
 NOT_CLOSED = (

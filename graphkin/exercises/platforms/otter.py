@@ -82,8 +82,8 @@ NOT_CLOSED = (
 """What otter's own design leaves open that graphkin cannot close from its side."""
 
 CLASSMATES = (
-    "any student can compute any classmate's answers with graphkin and the folder students are given, which "
-    "holds graphkin and the sheets (every roster student's data). A classmate's answers handed in score 0.")
+    "the folder students are given lets any student compute any classmate's answers with graphkin: it holds "
+    "graphkin and the sheets, every roster student's data. A classmate's answers handed in score 0.")
 """What the student folder lets every student do."""
 
 NOTES = (NOT_CLOSED, CLASSMATES)
