@@ -102,12 +102,15 @@ def applied(kin: Kinematics, load) -> np.ndarray:
             f = np.full(kin.n, f)
         if load.sense != "fixed":
             v = kin.z_velocity(load.link, load.point)
-            along = v.real * f.real + v.imag * f.imag     # v · F: negative while the point moves against F
+            with np.errstate(invalid="ignore"):  # a dead point's infinite velocity across the line: 0 · ∞
+                along = v.real * f.real + v.imag * f.imag     # v · F: negative while the point moves against F
             f = _by_sense(load.sense, f, along)
     else:
         f = load.table(q) if load.table is not None else np.full(kin.n, float(load.torque))
         if load.sense != "fixed":
-            f = _by_sense(load.sense, f, kin.w(load.link) * f)
+            with np.errstate(invalid="ignore"):  # a dead point's infinite ω times a torque of 0
+                power = kin.w(load.link) * f
+            f = _by_sense(load.sense, f, power)
     if load.active is not None:
         f = np.where(load.active.mask(q), f, 0.0 * f)
     return f + 0.0
@@ -132,8 +135,11 @@ def springs_without_a_line(kin, mech, kin_valid) -> dict[str, np.ndarray]:
     """Where a spring's ends meet although its free length is not 0: its force has no direction (named, per spring)."""
     out, seen = {}, set()
     for load in mech.loads:
-        ends = frozenset([(load.link, load.point), (getattr(load, "anchor_link", 0), getattr(load, "anchor_point", ""))])
-        if not (isinstance(load, SpringForce) and load.free_length and load.rate) or ends in seen:
+        # Only a spring has two ends (a torque has not even one point): look at nothing else.
+        if not (isinstance(load, SpringForce) and load.free_length and load.rate):
+            continue
+        ends = frozenset([(load.link, load.point), (load.anchor_link, load.anchor_point)])
+        if ends in seen:
             continue
         seen.add(ends)  # a spring between two moving links puts a load on each: one message
         d = kin.z(load.anchor_link, load.anchor_point) - kin.z(load.link, load.point)

@@ -97,10 +97,12 @@ def reversals(problem: "Problem", load) -> list[float]:
         if hasattr(load, "point"):
             v = kin.z_velocity(load.link, load.point)
             u = complex(*load.force)
-            r = v.real * u.real + v.imag * u.imag
+            # At a dead point a velocity is infinite, and along a line it does not move on (0 · ∞) not a number.
+            with np.errstate(invalid="ignore"):
+                r = v.real * u.real + v.imag * u.imag
         else:
             r = kin.w(load.link)
-        # Where the linkage does not assemble there is no motion to follow.
+        # Where the linkage does not assemble, or stands at a dead point, there is no motion to follow.
         return np.where(kin.valid, r, np.nan)
 
     r = rate(q)

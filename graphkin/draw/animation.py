@@ -40,6 +40,7 @@ from pathlib import Path
 
 import numpy as np
 
+from graphkin.analytical import solve_forces
 from graphkin.draw import films
 from graphkin.draw import style as _style
 from graphkin.draw.arrows import arrow, unit
@@ -53,6 +54,7 @@ from graphkin.draw.text import input_text, sub
 from graphkin.errors import GraphkinError
 from graphkin.graphical import construct_forces
 from graphkin.graphical.construction import nice_scale
+from graphkin.graphical.guard import check_forces
 from graphkin.model import GearMesh, Prismatic
 from graphkin.model.names import force_name
 from graphkin.notation import num
@@ -154,7 +156,9 @@ def animate(problem, path=None, *, frames: int = 72, fps: float = 24.0, polygons
     if not (isinstance(dpi, (int, float)) and 10 <= dpi <= 600):
         raise GraphkinError(f"--dpi {dpi}: the resolution must be from 10 to 600 pixels per inch")
     kin = _kinematics(problem, frames)
-    cs = [construct_forces(kin, i) for i in range(frames)]
+    result = solve_forces(kin)
+    # Each frame's construction checked against the analytical route before it is drawn (graphical/guard.py).
+    cs = [check_forces(result, construct_forces(kin, i), i) for i in range(frames)]
     gaps = tuple((c.q, c.reason) for c in cs if not (c.valid and c.points))
     if len(gaps) == frames:
         raise GraphkinError(f"{problem.name}: no crank angle of the turn has a solution, so there is nothing to "
@@ -198,7 +202,7 @@ def joint_forces(c):
 
     ``F23`` is the force of link 2 on link 3 at their joint, as the reports
     name it; a sliding pair's force is at its slider point, a mesh's at its
-    pitch point.
+    pitch point (off it, on the line of centres, with a mesh efficiency).
     """
     out = []
     for joint in c.mechanism.joints:
@@ -206,7 +210,7 @@ def joint_forces(c):
         if isinstance(joint, Prismatic):
             at = c.points[joint.slider][joint.point]
         elif isinstance(joint, GearMesh):
-            at = c.pitch_points[(lo, hi)]
+            at = c.contacts[(lo, hi)]
         else:
             at = c.points[hi][joint.point]
         out.append((force_name(c.mechanism, lo, hi), np.asarray(c.force(lo, hi), float), np.asarray(at, float) * MM))

@@ -32,12 +32,10 @@ Examples
 from __future__ import annotations
 
 import ast
-import json
 import keyword
 import re
 from collections.abc import Mapping
 from dataclasses import dataclass
-from pathlib import Path
 
 from graphkin.errors import GraphkinError
 
@@ -194,29 +192,6 @@ def _source(cell) -> str:
     return source if isinstance(source, str) else ""
 
 
-def read_notebook(path) -> dict:
-    """A notebook file's JSON, checked to be one (its code is not run).
-
-    Raises
-    ------
-    GraphkinError
-        The file cannot be read, is too large, or is not a notebook.
-    """
-    p = Path(path)
-    try:
-        size = p.stat().st_size
-        if size > MAX_NOTEBOOK_BYTES:
-            raise GraphkinError(f"{p}: {size} bytes; a notebook of answers is at most {MAX_NOTEBOOK_BYTES} bytes")
-        data = json.loads(p.read_bytes().decode("utf-8-sig"))
-    except OSError as exc:
-        raise GraphkinError(f"{p}: cannot be read ({exc.strerror or exc})") from None
-    except (UnicodeDecodeError, ValueError) as exc:
-        raise GraphkinError(f"{p}: not a notebook (not JSON in UTF-8: {str(exc)[:80]})") from None
-    if not isinstance(data, dict) or not isinstance(data.get("cells"), list):
-        raise GraphkinError(f"{p}: not a notebook (no list of cells)")
-    return data
-
-
 def read_cells(sources, variables: Mapping[str, str], student_variable: str = STUDENT_VARIABLE):
     """The id and the answers that code cells hold, read as data: the one reader of answers in a notebook.
 
@@ -253,6 +228,13 @@ def read_cells(sources, variables: Mapping[str, str], student_variable: str = ST
     return claimed, {qid: get(var) for qid, var in variables.items()}
 
 
+def code_sources(notebook) -> list[str]:
+    """The text of a notebook's code cells, in order: all that :func:`notebook_answers` reads."""
+    cells = notebook.get("cells", []) if isinstance(notebook, Mapping) else []
+    return [_source(c) for c in (cells if isinstance(cells, list) else [])
+            if isinstance(c, Mapping) and c.get("cell_type") == "code"]
+
+
 def notebook_answers(notebook, variables: Mapping[str, str], student_variable: str = STUDENT_VARIABLE):
     """The id and the answers a notebook holds, read as data (:func:`read_cells` of its code cells).
 
@@ -270,10 +252,7 @@ def notebook_answers(notebook, variables: Mapping[str, str], student_variable: s
     claimed, answers
         As :func:`read_cells` gives them.
     """
-    cells = notebook.get("cells", []) if isinstance(notebook, Mapping) else []
-    code = (_source(cell) for cell in (cells if isinstance(cells, list) else [])
-            if isinstance(cell, Mapping) and cell.get("cell_type") == "code")
-    return read_cells(code, variables, student_variable)
+    return read_cells(code_sources(notebook), variables, student_variable)
 
 
 def kernel_cells() -> list[str] | None:
@@ -298,4 +277,4 @@ def kernel_cells() -> list[str] | None:
 
 
 __all__ = ["MAX_CELL_CHARS", "MAX_NOTEBOOK_BYTES", "NotData", "RESERVED", "STUDENT_VARIABLE", "answer_variables",
-           "kernel_cells", "notebook_answers", "read_cells", "read_notebook"]
+           "code_sources", "kernel_cells", "notebook_answers", "read_cells"]

@@ -25,11 +25,12 @@ import numpy as np
 
 from graphkin.cycle import sweep
 from graphkin.errors import GraphkinError
-from graphkin.exercises.exercise import CYCLE_KINDS, Exercise, Question, set_field
+from graphkin.exercises.exercise import CYCLE_KINDS, MOTION_KINDS, Exercise, Question, set_field
 from graphkin.exercises.grading import grade_variant
 from graphkin.exercises.quantities import _span, expected, message_words, question_data, undefined, value_of, within
 from graphkin.exercises.symbols import fill_symbols
 from graphkin.graphical import construct_forces, construct_kinematics
+from graphkin.graphical.guard import check_forces, is_disagreement
 from graphkin.graphical.polygons import SLIPS as POLYGON_SLIPS
 from graphkin.notation import input_text
 from graphkin.problem import build_problem
@@ -120,7 +121,8 @@ class Solved:
 
     @cached_property
     def construction(self):
-        return construct_forces(self.result.kinematics, 0)
+        # Checked against the analytical route: a value that disagrees is never keyed (graphical/guard.py).
+        return check_forces(self.result, construct_forces(self.result.kinematics, 0), 0)
 
     @cached_property
     def span(self) -> float:
@@ -286,6 +288,7 @@ def _unusable(ex: Exercise, solved: Solved) -> str | None:
         return (f"a point moves {ratio:.0f} times as fast as the input: the linkage is near a dead point")
     c = solved.construction
     if not c.valid:
+        _refuse_disagreement(ex, solved, c.reason)
         return f"the graphical construction fails: {c.reason}"
     if c.warnings:
         return f"the graphical construction is not clean: {c.warnings[0]}"
@@ -296,12 +299,22 @@ def _unusable(ex: Exercise, solved: Solved) -> str | None:
         return (f"the joint forces are {largest / max(loads):.0f} times the largest load: the linkage is near a dead "
                 "point")
 
+    if any(q.kind in MOTION_KINDS for q in ex.questions) and not solved.motion.valid:
+        _refuse_disagreement(ex, solved, solved.motion.reason)
     for q in ex.questions:
         if q.kind not in CYCLE_KINDS:
             why = undefined(solved, q)
             if why:
                 return why
     return None
+
+
+def _refuse_disagreement(ex: Exercise, solved: Solved, reason: str) -> None:
+    """Stop making the exercise where a construction disagrees with the analytical route: drawing other data would
+    hide a fault that every student drawing these values would be graded against."""
+    if is_disagreement(reason):
+        raise GraphkinError(f"exercise {ex.id}: no key is made for the data {solved.problem.name}: {reason}; this is "
+                            "a fault of graphkin's, please report it with the exercise file")
 
 
 def _span_of(solved: Solved) -> float:

@@ -21,9 +21,10 @@ from itertools import combinations
 
 import numpy as np
 
-from graphkin.analytical.kinetostatics import pitch as pitch_point
+from graphkin.analytical.meshes import pitch as pitch_point
 from graphkin.errors import GraphkinError
 from graphkin.graphical.captions import number
+from graphkin.graphical.guard import centres_disagreement, derived
 from graphkin.kinematics import DriverGroup, Kinematics
 from graphkin.model import GearMesh, Prismatic, Revolute
 
@@ -112,7 +113,9 @@ def instant_centres(kin: Kinematics, index: int = 0) -> InstantCentres:
     Returns
     -------
     InstantCentres
-        Links whose centres are not all reached have no velocities here (see ``missing``).
+        Links whose centres are not all reached have no velocities here (see ``missing``). Not ``valid``, with
+        the reason, where a centre or a velocity it gives differs from the analytical kinematics
+        (:mod:`graphkin.graphical.guard`).
     """
     if not isinstance(kin, Kinematics):
         raise GraphkinError(f"instant_centres takes the Kinematics of a problem, got {type(kin).__name__}")
@@ -123,9 +126,10 @@ def instant_centres(kin: Kinematics, index: int = 0) -> InstantCentres:
     if not kin.valid[i]:
         return InstantCentres(mech, i, valid=False, reason=kin.reason(i))
     frame = mech.frame
+    kin, at = derived(kin, i)  # placed by the input motion alone, a problem's given values left out
 
-    O = {n: complex(kin.O[n][i]) for n in mech.moving}
-    e = {n: complex(kin.e[n][i]) for n in mech.moving}
+    O = {n: complex(kin.O[n][at]) for n in mech.moving}
+    e = {n: complex(kin.e[n][at]) for n in mech.moving}
 
     def pos(link, name):
         x, y = mech.link(link).point(name)
@@ -192,7 +196,7 @@ def instant_centres(kin: Kinematics, index: int = 0) -> InstantCentres:
     # Link by link: Ω, X, w with v(P) = iΩ (P w − X) (P in units of ``size``), X/w being the centre I_1k.
     fields = {frame: (0.0, 0j, 1.0)}
     g = next(g for g in kin.groups if isinstance(g, DriverGroup))
-    q_dot = float(kin.q_dot[i])
+    q_dot = float(kin.q_dot[at])
     if isinstance(g.joint, Revolute):
         I12 = known[frozenset((frame, g.link))]
         fields[g.link] = (q_dot * size / I12[2], complex(I12[0], I12[1]), I12[2])
@@ -242,5 +246,10 @@ def instant_centres(kin: Kinematics, index: int = 0) -> InstantCentres:
         else:
             centres[lo, hi] = (float(P[0] / P[2] * size), float(P[1] / P[2] * size))
     missing = tuple(sorted((a, b) for a, b in combinations(sorted(links), 2) if frozenset((a, b)) not in known))
-    return InstantCentres(mech, i, centres, infinite, tuple(steps), missing, omega, velocity, v_G)
+    ic = InstantCentres(mech, i, centres, infinite, tuple(steps), missing, omega, velocity, v_G)
+    # Checked against the analytical kinematics before anyone sees them (graphical/guard.py).
+    why = centres_disagreement(kin, at, ic)
+    if why:
+        return InstantCentres(mech, i, steps=tuple(steps) + (f"{why}.",), valid=False, reason=why)
+    return ic
 

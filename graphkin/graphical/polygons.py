@@ -28,11 +28,12 @@ import math
 
 import numpy as np
 
-from graphkin.analytical.kinetostatics import pitch as pitch_point
+from graphkin.analytical.meshes import pitch as pitch_point
 from graphkin.errors import GraphkinError
 from graphkin.geometry import zcross as cross
 from graphkin.graphical.captions import number
 from graphkin.graphical.construction import nice_scale
+from graphkin.graphical.guard import derived, motion_disagreement
 from graphkin.graphical.motion import MotionConstruction, MotionStep, PolygonLine, Vector
 from graphkin.kinematics import DriverGroup, Dyad, GearGroup, Kinematics
 from graphkin.kinematics.groups import DEAD_POINT
@@ -169,6 +170,9 @@ class _Polygons:
         self.v_img = {"o": (0.0, 0.0)}
         self.a_img = {"o′": (0.0, 0.0)}
         self.velocity, self.acceleration = {}, {}
+        # Whose point each image is, and what each Coriolis component is of, for the guard (graphical/guard.py).
+        self.where: dict[str, tuple[int, complex]] = {}
+        self.coriolis: dict[str, tuple[int, int, int, complex]] = {}
         self._O = {n: complex(kin.O[n][i]) for n in mech.moving}
         self._e = {n: complex(kin.e[n][i]) for n in mech.moving}
         # What a residue of rounding is beside, in the captions: the input's speed over the mechanism's size.
@@ -217,6 +221,7 @@ class _Polygons:
             X = self.pos(link, J.point)
             self.motion[link] = _Motion(X, v, 0.0)
             s = self.sym(link, J.point)
+            self.where[s.lower()] = self.where[f"{s.lower()}′"] = (link, X)
             caption = (f"Driver {link} slides along its guide at v = {number(w2)} m/s: v_{s} = {self.text(v, V)}, "
                        f"drawn from the pole o to {s.lower()}.")
             self.step("velocity", "driver", caption, (link,), [(f"v_{s}", 0j, v, "size and direction")],
@@ -249,6 +254,7 @@ class _Polygons:
         for key, s, label, p in self.fixed.images[link]:
             v = m.vel(O + e * p)
             found[label] = v
+            self.where[label] = (link, O + e * p)
             vectors.append((f"v_{s}", 0j, v, "found"))
             if label not in self.v_img:  # a point a step before has found is not read off again
                 listed.append(f"v_{s} = {self.text(v, V)}")
@@ -271,6 +277,7 @@ class _Polygons:
         for key, s, label, p in self.fixed.images[link]:
             a = m.acc(O + e * p)
             found[label + "′"] = a
+            self.where[label + "′"] = (link, O + e * p)
             vectors.append((f"a_{s}", 0j, a, "found"))
             if label + "′" not in self.a_img:
                 listed.append(f"a_{s} = {self.text(a, A)}")
@@ -347,6 +354,7 @@ class _Polygons:
         caption = (f"{d.label}: {' and '.join(phrases)}. The two lines meet at {x.lower()}: "
                    f"v_{x} = {self.text(v_X, V)}." + (f" {read}." if read else "")
                    + self.tied_phrase(d, sides, w))
+        self.where[x.lower()] = self.where[f"{x.lower()}′"] = (d.k, X)
         self.step("velocity", "dyad", caption, (d.j, d.k), vectors, lines, {x.lower(): v_X}, values)
 
         on_j = d.type in ("RRR", "RRP", "PRP")
@@ -414,6 +422,7 @@ class _Polygons:
                 coriolis = (2j if self.slip != "coriolis_reversed" else -2j) * wm * v_rel
                 direction = self.guide(s.joint)
                 c_name, r_name = f"a^c_{x}{k}", f"a^r_{x}{k}"
+                self.coriolis[c_name] = (s.m, d.k, s.base, X)
                 # The two links of a sliding pair turn together: the guide's ω is the one the books name.
                 g = s.joint.guide
                 if wm == 0 or v_rel == 0:
@@ -472,6 +481,8 @@ class _Polygons:
         arm = P - Ck
         w = cross(arm, v_P - v_C) / abs(arm) ** 2
         p = f"P{g.j}{g.k}"
+        self.where[p.lower()] = (g.j, P)  # the pitch point of gear j: gear k's has its velocity (rolling)
+        self.where[f"{p.lower()}′"] = (g.k, P)  # the acceleration polygon finds gear k's (gear_acceleration)
         caption = (f"Gear {g.k} meshes with gear {g.j} at the pitch point {p}, where the gears roll: v_{p} on gear {g.k} "
                    f"equals v_{p} on gear {g.j} = {self.text(v_P, V)}. Gear {g.k} turns about {c}: "
                    f"ω{g.k} = v_{p}{c} / {c}{p} = {_rad(w, 'rad/s')}.")
@@ -546,8 +557,9 @@ def construct_kinematics(kin: Kinematics, index: int = 0, *, slip: str | None = 
     Returns
     -------
     MotionConstruction
-        Not ``valid`` (with the reason) where the position cannot be assembled or the polygon's lines are
-        parallel (a dead point).
+        Not ``valid`` (with the reason) where the position cannot be assembled, the polygon's lines are
+        parallel (a dead point), or a value it yields differs from the analytical kinematics
+        (:mod:`graphkin.graphical.guard`; a construction made with a ``slip`` is not compared).
     """
     if not isinstance(kin, Kinematics):
         raise GraphkinError(f"construct_kinematics takes the Kinematics of a problem (problem.kinematics()), "
@@ -562,13 +574,15 @@ def construct_kinematics(kin: Kinematics, index: int = 0, *, slip: str | None = 
     q = float(kin.q[index])
     if not kin.valid[index]:
         return MotionConstruction(mech, index, q, valid=False, reason=kin.reason(index))
-    b = _Polygons(kin, index, slip)
+    own, at = derived(kin, index)  # the input motion's own kinematics: a problem's given values left out
+    b = _Polygons(own, at, slip)
     if kin.given:
         # Values a problem gives (measured off its drawing) are what the force route uses; the polygons are the
         # construction from the input motion, so say which of the two the reader is looking at.
         named = sorted({f"{k[1]} of link {k[0]}" for k in kin.given if k[1] != "at"})
         b.step("velocity", "note", f"The problem gives {', '.join(named) or 'point positions'} instead of deriving "
-               "them; these polygons are constructed from the input motion and may differ from those values.", ())
+               "them; these polygons are constructed from the input motion alone (the linkage placed by it) and "
+               "may differ from those values.", ())
     try:
         b.run()
     except Degenerate as exc:
@@ -583,6 +597,13 @@ def construct_kinematics(kin: Kinematics, index: int = 0, *, slip: str | None = 
     alpha = {link: float(m.al) for link, m in b.motion.items()}
     top_v = max([math.hypot(*v) for v in b.v_img.values()] + [0.0])
     top_a = max([math.hypot(*a) for a in b.a_img.values()] + [0.0])
-    return MotionConstruction(mech, index, q, tuple(b.steps), omega, alpha, velocity, acceleration, v_G, a_G,
-                              {"velocity": dict(b.v_img), "acceleration": dict(b.a_img)},
-                              nice_scale(top_v), nice_scale(top_a))
+    c = MotionConstruction(mech, index, q, tuple(b.steps), omega, alpha, velocity, acceleration, v_G, a_G,
+                           {"velocity": dict(b.v_img), "acceleration": dict(b.a_img)},
+                           nice_scale(top_v), nice_scale(top_a))
+    if slip is None:
+        # Checked against the analytical kinematics before anyone sees it: a disagreement is a reason, not a number.
+        why = motion_disagreement(own, at, c, b.where, b.coriolis)
+        if why:
+            b.step("acceleration", "note", f"{why}.", ())
+            return MotionConstruction(mech, index, q, tuple(b.steps), valid=False, reason=why)
+    return c

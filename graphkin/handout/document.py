@@ -17,6 +17,7 @@ from graphkin.errors import GraphkinError
 from graphkin.exercises.exercise import CYCLE_KINDS, set_field
 from graphkin.exercises.variants import Variant
 from graphkin.graphical import construct_forces, construct_kinematics
+from graphkin.graphical.guard import check_forces
 from graphkin.handout import maths as M
 from graphkin.handout.figures import Picture
 from graphkin.notation import input_text, typeset
@@ -133,7 +134,9 @@ class Subject:
         """The graphical construction at position ``i`` (None where the linkage has no solution), built once."""
         key = f"construction-{i}"
         if key not in self.__dict__:
-            self.__dict__[key] = construct_forces(self.result.kinematics, i) if self.result.valid[i] else None
+            # Checked against the analytical route before it is drawn or written (graphical/guard.py).
+            self.__dict__[key] = (check_forces(self.result, construct_forces(self.result.kinematics, i), i)
+                                  if self.result.valid[i] else None)
         return self.__dict__[key]
 
     def motion(self, i: int):

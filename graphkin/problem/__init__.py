@@ -6,6 +6,7 @@
 :mod:`.reader`              :class:`FieldReader`: fields to SI, errors naming file and field
 :mod:`.tables`              tables against the input (a torque curve), inline or in a CSV
 :mod:`.books`               pressures, powers, dead centres, a slider placed by an angle, ``[forward]``
+:mod:`.placement`           where a link stands at an angle as the slider moves (``driver.place``)
 ==========================  ===========================================================
 
 The format is documented field by field in ``docs/problem-files.md``.

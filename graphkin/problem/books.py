@@ -1,5 +1,6 @@
 """Loads and inputs as books give them: a pressure on a piston, a power at a speed, a crank angle from a dead centre
-in the sense of rotation, a slider placed by another link's angle, and a forward step (``[forward]``).
+in the sense of rotation, a crank placed by its piston's travel, a slider placed by another link's angle, and a
+forward step (``[forward]``).
 
 Each becomes what graphkin's core solves — a force, a torque, an input position, a :class:`Forward` — at the
 boundary, with every error naming the file and the field (``docs/problem-files.md``).
@@ -8,6 +9,7 @@ boundary, with every error naming the file and the field (``docs/problem-files.m
 from __future__ import annotations
 
 import math
+import re
 from collections import OrderedDict
 from dataclasses import dataclass, replace
 
@@ -16,8 +18,11 @@ import numpy as np
 from graphkin.errors import ModelError
 from graphkin.kinematics import decompose, solve_kinematics
 from graphkin.kinematics.structure import Dyad
-from graphkin.model import PointForce, Prismatic, Revolute, StrokeForce, Table, Torque, spring
+from graphkin.model import GearMesh, PointForce, Prismatic, Revolute, StrokeForce, Table, Torque, spring
+from graphkin.notation import num
+from graphkin.problem.placement import placements
 from graphkin.problem.problem import Forward
+from graphkin.problem.reader import shown
 from graphkin.problem.tables import load_table, parse_table
 from graphkin.problem.unknown import Unknown
 
@@ -86,6 +91,120 @@ def crank_from_dead_centre(rd, d, mech, q):
     return theta + SENSES_OF_ROTATION[d.get("sense", "counter-clockwise")] * q
 
 
+MOVING = ("away", "towards")
+"""Which of the two crank angles at a piston's travel ``driver.moving`` names: the piston moving away from the dead
+centre the travel is measured from (on the stroke that begins there), or back towards it."""
+_FRACTION = re.compile(r"^\s*(\d+(?:\.\d*)?|\.\d+)\s*(?:/\s*(\d+(?:\.\d*)?|\.\d+)\s*)?$")
+
+
+def read_travel(rd, value) -> tuple[np.ndarray, np.ndarray]:
+    """``driver.travel`` as written: each value a length [m] or a fraction of the stroke, and which are fractions.
+
+    A length carries its unit (``"80 mm"``); a fraction is a bare number (``0.25``) or a ratio of two
+    (``"1/3"``), since a third has no exact decimal. A range is of lengths, or of bare numbers.
+    """
+    field = "driver.travel"
+    if isinstance(value, dict):
+        fraction = isinstance(value.get("start"), (int, float)) and not isinstance(value.get("start"), bool)
+        x = rd.array(value, "dimensionless" if fraction else "length", field)
+        return x, np.full(len(x), fraction)
+    items = value if isinstance(value, list) else [value]
+    if not items:
+        raise rd.fail(field, "the list is empty; give at least one travel")
+    x, fraction = np.empty(len(items)), np.zeros(len(items), bool)
+    for i, raw in enumerate(items):
+        where = f"{field}[{i}]" if isinstance(value, list) else field
+        if isinstance(raw, bool) or not isinstance(raw, (int, float, str)):
+            raise rd.fail(where, f"must be a length (\"80 mm\") or a fraction of the stroke (0.25, \"1/3\"), got "
+                          f"{raw!r}")
+        ratio = _FRACTION.match(raw) if isinstance(raw, str) else None
+        if isinstance(raw, (int, float)) or ratio:
+            top, bottom = (float(raw), 1.0) if not ratio else (float(ratio[1]), float(ratio[2] or 1.0))
+            if bottom == 0:
+                raise rd.fail(where, f"\"{raw}\" divides by zero: a fraction of the stroke is p/q with q > 0")
+            x[i], fraction[i] = top / bottom, True
+            if not 0 <= x[i] <= 1:
+                raise rd.fail(where, f"{raw!r} is not a fraction of the stroke: give one from 0 to 1, or a length "
+                              "with its unit (\"80 mm\")")
+        else:
+            x[i] = rd.si(raw, "length", where, None)
+            if not x[i] >= 0:
+                raise rd.fail(where, f"\"{raw}\" is the piston's distance from the dead centre: give it ≥ 0 (the "
+                              "stroke it is on is driver.moving)")
+            rd.ranged(x[i], raw, "coordinate", where)
+    return x, fraction
+
+
+def crank_from_travel(rd, d, mech, q_dot) -> np.ndarray:
+    """``driver.travel``: the crank angles [rad] at which the piston has travelled a length from a dead centre.
+
+    The piston's pin is then at X = X_dc + s u on its guide (u from that dead centre towards the other, s the travel
+    or its fraction of the stroke |X_other − X_dc|), and the crank pin is where the crank's circle about its pivot
+    O (radius r) meets the connecting rod's about X (radius l): two points, one on each stroke, in closed form. Of
+    the two, ``driver.moving`` takes the one where the piston moves away from the dead centre as the crank turns in
+    its sense of rotation (``driver.sense``; the default) or back towards it. Each angle is checked by solving the
+    linkage there: the pin is at X on the file's assembly branch.
+    """
+    which = d.get("from", "inner dead centre")
+    if which not in DEAD_CENTRES:
+        raise rd.fail("driver.from", f"must be one of {', '.join(repr(k) for k in DEAD_CENTRES)}, got {which!r}")
+    moving = d.get("moving", "away")
+    if moving not in MOVING:
+        raise rd.fail("driver.moving", f"must be \"away\" (the piston moving away from the {which}, on the stroke "
+                      f"that begins there: the default) or \"towards\" (coming back to it), got {moving!r}")
+    sense = SENSES_OF_ROTATION[d.get("sense", "counter-clockwise")]
+    if "sense" not in d and (q_dot < 0).any():
+        raise rd.fail("driver.omega", f"is negative ({float(q_dot[q_dot < 0][0]):.6g} rad/s, clockwise) but driver."
+                      "sense is not given: the piston's travel is on the stroke it makes in the crank's sense of "
+                      "rotation, so write sense = \"clockwise\" and omega as its size")
+    field = "driver.travel"
+    s, fraction = read_travel(rd, d["travel"])
+    theta_a, X_a = dead_centre(rd, mech, which, field)
+    other = "outer dead centre" if DEAD_CENTRES[which] > 0 else "inner dead centre"
+    theta_b, X_b = dead_centre(rd, mech, other, field)
+    stroke = abs(X_b - X_a)
+    s = np.where(fraction, s * stroke, s)
+    beyond = np.flatnonzero(s > stroke * (1 + 1e-12))
+    if len(beyond):
+        k = beyond[0]
+        raw = d["travel"][k] if isinstance(d["travel"], list) else d["travel"]
+        raw = shown(raw) if not isinstance(raw, dict) else f"{s[k] * 1e3:.6g} mm"
+        raise rd.fail(f"{field}[{k}]" if isinstance(d["travel"], list) else field,
+                      f"{raw} is beyond the stroke: the piston travels {stroke * 1e3:.6g} mm from the {which} to "
+                      f"the {other}")
+    # The stroke is the distance between two computed points: a travel of the whole stroke, as written, may exceed
+    # or fall short of it by rounding, which at a dead centre (where the piston stands still) would turn the crank
+    # by ~1e-8 rad. Within rounding of either end the piston is at that dead centre.
+    s = np.where(s >= stroke * (1 - 1e-13), stroke, np.where(s <= stroke * 1e-13, 0.0, s))
+    pivot, C, rod, P, _ = piston(rd, mech, field)
+    link_c = mech.link(mech.driver.link)
+    (ox, oy), (cx, cy) = link_c.point(pivot.point), link_c.point(C.point)
+    r, beta = math.hypot(cx - ox, cy - oy), math.atan2(cy - oy, cx - ox)
+    (ax, ay), (bx, by) = mech.link(rod).point(C.point), mech.link(rod).point(P.point)
+    l = math.hypot(bx - ax, by - ay)
+    O = complex(*mech.link(mech.frame).point(pivot.point))
+    X = X_a + s * (X_b - X_a) / stroke
+    # The crank pin: on the circle |C − O| = r and on |C − X| = l, a from O along OX and h either side of it.
+    D = np.abs(X - O)
+    a = (r * r - l * l + D * D) / (2 * D)
+    h = np.sqrt(np.maximum(r * r - a * a, 0.0))
+    along = (X - O) / D
+    turned = np.stack([np.angle((a + side * 1j * h) * along) - beta for side in (1.0, -1.0)])
+    # Each candidate's angle from the dead centre in the sense of rotation: the piston moves away from it until
+    # the crank has turned as far as the other dead centre, and comes back after.
+    phi = np.mod(sense * (turned - theta_a), 2 * math.pi)
+    phi = phi.min(axis=0) if moving == "away" else phi.max(axis=0)
+    phi = np.where(s == 0, 0.0, np.where(s == stroke, np.mod(sense * (theta_b - theta_a), 2 * math.pi), phi))
+    theta = theta_a + sense * phi
+    kin = solve_kinematics(mech, theta, 0.0, 0.0)
+    at = kin.position(rod, P.point)[:, 0] + 1j * kin.position(rod, P.point)[:, 1]
+    wrong = np.flatnonzero(~kin.valid | ~(np.abs(at - X) <= 1e-9 * (r + l)))
+    if len(wrong):
+        raise rd.fail(field, f"the mechanism cannot be assembled with the piston {s[wrong[0]] * 1e3:.6g} mm from "
+                      f"its {which} (on the file's assembly branch)")
+    return theta
+
+
 def piston(rd, mech, field):
     """The slider-crank of a crank driver: (the piston's pin joint, its guide, the rod's link, r, l, β)."""
     crank = mech.driver.link
@@ -152,63 +271,67 @@ def _dead_centre(rd, mech, which, field):
         # The crank points at the piston at the inner dead centre, away from it at the outer one.
         theta = float(np.angle((X - O) * DEAD_CENTRES[which])) - beta
         kin = solve_kinematics(mech, [theta], 0.0, 0.0)
-        if kin.valid[0] and abs(complex(*kin.position(rod, P.point)[0]) - X) <= 1e-6 * (r + l):
+        # The slider-crank alone decides: a linkage that goes on from it may not assemble there (its row says so
+        # when solved), and the piston's pin is then still placed (nan only where the slider-crank is not).
+        if abs(complex(*kin.position(rod, P.point)[0]) - X) <= 1e-6 * (r + l):
             return theta, X
     raise rd.fail(field, f"the mechanism cannot be assembled at its {which}")
 
 
 def placed(rd, d, mech):
-    """``driver.place``: the slider's position s [m] at which a named link stands at a given angle."""
+    """``driver.place``: the slider's position s [m] at which a named link stands at a given angle.
+
+    Every position the linkage reaches counts, its dead centres too (:mod:`.placement`); an angle it never
+    reaches is refused with the angles it does.
+    """
     t = rd.table(d["place"], "driver.place", {"link", "theta"})
     link = rd.whole(rd.need(t, "link", "driver.place"), "driver.place.link")
     if link not in mech.moving or link == mech.driver.link:
         raise rd.fail("driver.place.link", f"must be a moving link other than the slider "
                       f"({', '.join(str(n) for n in mech.moving if n != mech.driver.link)}), got {link!r}")
     target = rd.si(rd.need(t, "theta", "driver.place"), "angle", "driver.place.theta")
-    roots = _placements(mech, link, target)
-    if not roots:
+    found = placements(mech, link, target)
+    if not found.s:
+        reach = _reach(found)
         # Not on the file's branch: say which other branch has it, so the book's figure can be matched.
         for key in sorted({g.key for g in decompose(mech) if isinstance(g, Dyad)}):
             other = replace(mech, assembly={**mech.assembly, key: -mech.assembly.get(key, 1)})
-            found = _placements(other, link, target)
-            if found:
+            there = placements(other, link, target).s
+            if there:
                 raise rd.fail("driver.place.theta", f"link {link} never stands at {t['theta']!r} on the branch the "
-                              f"file assembles, but does on the other branch at {key} (s = "
-                              + ", ".join(f"{x * 1e3:.6g} mm" for x in found)
+                              f"file assembles (there {reach}), but does on the other branch at {key} (s = "
+                              + ", ".join(f"{x} mm" for x in _apart(there))
                               + f"): add [assembly] {key} = {-mech.assembly.get(key, 1)} if the book's figure is that one")
-        raise rd.fail("driver.place.theta", f"link {link} never stands at {t['theta']!r} as the slider moves")
-    if len(roots) > 1:
+        raise rd.fail("driver.place.theta", f"link {link} never stands at {t['theta']!r} as the slider moves: {reach}")
+    if len(found.s) > 1:
         raise rd.fail("driver.place.theta", f"link {link} stands at {t['theta']!r} at more than one slider position ("
-                      + ", ".join(f"s = {x * 1e3:.6g} mm" for x in roots) + "): give the one the book means as s")
-    return np.array(roots)
+                      + ", ".join(f"s = {x} mm" for x in _apart(found.s)) + "): give the one the book means as s")
+    return np.array(found.s)
 
 
-def _placements(mech, link, target) -> list[float]:
-    """The slider positions s [m] at which ``link`` stands at ``target`` [rad], on the mechanism's assembly branch."""
-    # The slider's reach: a few times the mechanism's size either way, sampled finely, then Newton on θ(s).
-    size = max([math.hypot(x1 - x0, y1 - y0) for k in mech.links for (x0, y0) in k.points.values()
-                for (x1, y1) in k.points.values()] + [1e-3])
-    s = np.linspace(-4 * size, 4 * size, 4001)
-    kin = solve_kinematics(mech, s, 1.0, 0.0)
-    gap = np.angle(np.exp(1j * (kin.theta[link] - target)))
-    ok = kin.valid & np.isfinite(gap)
-    k = np.flatnonzero(ok[:-1] & ok[1:] & (np.sign(gap[:-1]) != np.sign(gap[1:])) & (np.abs(gap[:-1] - gap[1:]) < 1))
-    roots = []
-    for i in k:
-        x = s[i] - gap[i] * (s[i + 1] - s[i]) / (gap[i + 1] - gap[i])
-        for _ in range(50):
-            kx = solve_kinematics(mech, [x], 1.0, 0.0)
-            g, dg = float(np.angle(np.exp(1j * (kx.theta[link][0] - target)))), float(kx.omega[link][0])
-            if not (kx.valid[0] and dg):
-                break
-            step = g / dg
-            x -= step
-            if abs(step) <= 1e-15 * size:
-                break
-        kx = solve_kinematics(mech, [x], 1.0, 0.0)
-        if kx.valid[0] and abs(np.angle(np.exp(1j * (kx.theta[link][0] - target)))) <= 1e-12:
-            roots.append(x)
-    return [x for k, x in enumerate(sorted(roots)) if k == 0 or x - sorted(roots)[k - 1] > 1e-9 * size]
+def _apart(s) -> list[str]:
+    """Slider positions [m] in mm, with 6 significant digits or as many more as tell them apart."""
+    for digits in range(6, 18):
+        shown = [f"{x * 1e3:.{digits}g}" for x in s]
+        if len(set(shown)) == len(shown):
+            return shown
+    return shown
+
+
+def _reach(found) -> str:
+    """Where a link stands, stretch by stretch of the slider's travel, for a message: "it stands from … to …"."""
+    if not found.reach:
+        return "the linkage cannot be assembled anywhere along the guide"
+
+    def deg(r, x):
+        return num(math.degrees(x), 6, minus="-", zero=math.degrees(r.rounding))
+
+    def mm(x):
+        return num(x * 1e3, 6, minus="-")
+
+    return "it stands " + "; ".join(
+        ("at every angle" if r.every_angle else f"from {deg(r, r.theta[0])}° to {deg(r, r.theta[1])}°")
+        + f" for s = {mm(r.s[0])} mm to {mm(r.s[1])} mm" for r in found.reach)
 
 
 def pressure(rd, t, where, link, driver_kind, active, name):
@@ -397,6 +520,11 @@ def unknown(rd, value, mech):
     if link == mech.driver.link:
         raise rd.fail("unknown.link", f"link {link} is the driver, whose effort graphkin finds anyway: leave out "
                       "[unknown], or name the link whose torque (or slider force) the book asks for")
+    lossy = [k for k, j in enumerate(mech.joints) if isinstance(j, GearMesh) and j.efficiency < 1]
+    if lossy:
+        raise rd.fail("unknown", f"is found from two solutions, as loads are linear; the efficiency of joints"
+                      f"[{lossy[0]}] makes them not so (which gear loses depends on the way the power flows): drive "
+                      f"link {link} instead (its effort is then the driver's) and give the other effort as a load")
     name = t.get("name", "")
     if not isinstance(name, str):
         raise rd.fail("unknown.name", f"must be a string such as \"T4\", got {name!r}")

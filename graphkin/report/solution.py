@@ -16,8 +16,9 @@ from graphkin import notation
 from graphkin.analytical import ForceAnalysis
 from graphkin.analytical.loads import applied
 from graphkin.graphical import construct_forces
+from graphkin.graphical.guard import forces_disagreement, mechanism_size
 from graphkin.kinematics.points import link_points
-from graphkin.model import PointForce
+from graphkin.model import PointForce, Prismatic
 from graphkin.notation import PICOMETRE, RESIDUE, input_text, largest, num, unless_rounding
 from graphkin.report.polygons import graphical_kinematics_data
 from graphkin.units.systems import SI, UnitSystem
@@ -32,21 +33,14 @@ def constructions(result: ForceAnalysis) -> list:
     return [construct_forces(result.kinematics, i) if result.valid[i] else None for i in range(result.n)]
 
 
-AGREEMENT = 1e-7
-"""How far the graphical route may differ from the analytical one before a position is not valid: relative to the
-largest joint force at the position (a torque: to that force times the mechanism's size). The two routes are
-independent arithmetic on the same numbers, so they differ by rounding: ~1e-13 on textbook problems and at most
-~1e-10 on the property tests' random linkages near their transmission limits (sines of 0.2). A wrong term in
-either route (a reaction not passed on, a sign) is an O(1) difference; 1e-7 lies far from both."""
-
-
 def cross_check(result: ForceAnalysis, graphical: list) -> ForceAnalysis:
     """The result with every position where its two routes disagree marked not valid, with the reason.
 
     The graphical route (:func:`constructions`) solves each position with other arithmetic (resultants, two- and
     three-force members, polygons); where it gives another force or effort than the analytical route beyond
-    :data:`AGREEMENT`, or cannot close where the analytical route found a solution, neither answer can be
-    trusted, and the position is reported with the disagreement instead of either.
+    :data:`graphkin.graphical.guard.AGREEMENT`, or cannot close where the analytical route found a solution,
+    neither answer can be trusted, and the position is reported with the disagreement instead of either
+    (:func:`graphkin.graphical.guard.forces_disagreement`, the one guard of everything graphical).
 
     Parameters
     ----------
@@ -62,11 +56,11 @@ def cross_check(result: ForceAnalysis, graphical: list) -> ForceAnalysis:
         positions where they disagree, with the reason in its ``failures``.
     """
     failures: dict[str, np.ndarray] = {}
-    size = _size(result.mechanism)
+    size = mechanism_size(result.mechanism)
     for i, c in enumerate(graphical):
         if c is None or not result.valid[i]:
             continue
-        why = _disagreement(result, c, i, size)
+        why = forces_disagreement(result, c, i, size)
         if why:
             failures.setdefault(why, np.zeros(result.n, bool))[i] = True
     if not failures:
@@ -77,47 +71,9 @@ def cross_check(result: ForceAnalysis, graphical: list) -> ForceAnalysis:
     return replace(result, valid=valid, failures={**result.failures, **failures})
 
 
-def _size(mech) -> float:
-    """The mechanism's size [m]: the largest distance between two points of one link (1 m for a point-sized one)."""
-    size = 0.0
-    for link in mech.links:
-        pts = [complex(*p) for p in link.points.values()]
-        size = max([size] + [abs(a - b) for a in pts for b in pts])
-    return size or 1.0
-
-
-def _disagreement(result: ForceAnalysis, c, i: int, size: float) -> str:
-    """Why the graphical route ``c`` at position ``i`` disagrees with the analytical one ('' if it does not).
-
-    Every difference is measured as a force: a joint force's as it is, the driving torque's divided by the
-    mechanism's size; the largest, against :data:`AGREEMENT` of the largest force (or effort) at the position.
-    """
-    if not c.valid:
-        return f"the graphical route cannot close ({c.reason}) where the analytical one finds a solution"
-    scale = largest(result.force(a, b)[i] for a, b in result.forces)
-    worst, what = 0.0, ""
-    for a, b in result.forces:
-        A, G = result.force(a, b)[i], c.force(a, b)
-        gap = float(np.hypot(*(G - A)))
-        if not gap <= worst:  # nan counts as the worst
-            worst, what = gap, (f"{result.name_of(a, b)} is {polar_text(G, scale=scale)} graphically, "
-                                f"{polar_text(A, scale=scale)} analytically")
-    crank = result.mechanism.driver.crank
-    arm = size if crank else 1.0  # a torque [N·m] per metre of the mechanism is a force
-    effort = float(result.effort[i])
-    gap = abs(c.effort - effort) / arm
-    if not gap <= worst:
-        unit = "N·m" if crank else "N"
-        worst, what = gap, (f"{result.driver_name} is {num(c.effort, 6, minus='-')} {unit} graphically, "
-                            f"{num(effort, 6, minus='-')} {unit} analytically")
-    if worst <= AGREEMENT * max(scale, abs(effort) / arm):
-        return ""
-    return f"the graphical and analytical routes disagree: {what}"
-
-
 def _graphical(result: ForceAnalysis, c, i, size: float) -> dict:
     """The graphical route at position i as plain data, with its difference from the analytical one (``size``:
-    :func:`_size` of the mechanism, worked out once for every position)."""
+    :func:`graphkin.graphical.guard.mechanism_size` of the mechanism, worked out once for every position)."""
     if c is None:
         return {"valid": False, "reason": result.reason(i)}
     if not c.valid:
@@ -203,7 +159,8 @@ def solution(problem, result: ForceAnalysis, graphical: list | None = None, kine
     step = forward.step(result.effort, kin.q_dot) if forward is not None else None
     unknown = getattr(problem, "unknown", None)
     found = unknown.values(result) if unknown is not None else None
-    size = _size(mech)
+    size = mechanism_size(mech)
+    sliding = _sliding(kin)
     for i in range(result.n):
         entry = {
             "index": i,
@@ -246,7 +203,10 @@ def solution(problem, result: ForceAnalysis, graphical: list | None = None, kine
             if not crank:
                 driver["vector"] = _vec(result.driver_force()[i])
             entry.update(links=links, forces=forces, prismatic=prismatic, driver=driver,
-                         loads=[_load_entry(ld, value[i]) for ld, value in applied])
+                         loads=[_load_entry(ld, value[i]) for ld, value in applied],
+                         sliding=[{**about, "guide_direction": _vec(u[i]), "velocity": float(v_r[i]),
+                                   "acceleration": float(a_r[i]), "coriolis": [float(a_c[i].real), float(a_c[i].imag)]}
+                                  for about, u, v_r, a_r, a_c in sliding])
             if step is not None:
                 entry["forward"] = {"I": forward.I, **{key: float(v[i]) for key, v in step.items()}}
             if found is not None:
@@ -269,6 +229,40 @@ def solution(problem, result: ForceAnalysis, graphical: list | None = None, kine
         "given": _given(kin),
         "positions": positions,
     }
+
+
+def _sliding(kin) -> list:
+    """Each sliding pair between two moving links (a slider on a guide that turns) with its motion along the guide at
+    every position: ``(about, u, v_r, a_r, a_c)``, ``about`` the pair's names, the rest arrays
+    (:meth:`graphkin.kinematics.Kinematics.sliding`)."""
+    mech = kin.mechanism
+    out = []
+    for joint in mech.joints:
+        if isinstance(joint, Prismatic) and mech.frame not in joint.links:
+            about = {"name": f"{joint.point}{joint.slider}{joint.point}{joint.guide}", "slider": joint.slider,
+                     "guide": joint.guide, "point": joint.point}
+            out.append((about, kin.guide_direction(joint), *kin.sliding(joint)))
+    return out
+
+
+def _sliding_text(entry, u: UnitSystem = SI) -> list[str]:
+    """The sliding pairs on moving guides at one position, as the text report prints them (two lines each)."""
+    lines = []
+    v, a = u.symbol("velocity"), u.symbol("acceleration")
+    kv, ka = u.scales["velocity"], u.scales["acceleration"]
+    # What a rate here is rounding beside: the fastest (most accelerated) point of the mechanism at this position.
+    points = [m for s in entry["links"].values() for m in s["points"].values()]
+    v_max, a_max = largest(m["velocity"] for m in points), largest(m["acceleration"] for m in points)
+    for s in entry.get("sliding", []):
+        name, g = s["name"], s["guide"]
+        still = "" if entry["links"][str(g)]["omega"] else f" (ω{g} = 0)"
+        lines += [f"    {s['point']} of link {s['slider']} on link {g}, along the guide "
+                  f"∠ {math.degrees(math.atan2(*s['guide_direction'][::-1])):.2f}°: "
+                  f"v_{name} = {num(kv * s['velocity'], minus='-', zero=kv * RESIDUE * v_max)} {v}, "
+                  f"a^r_{name} = {num(ka * s['acceleration'], minus='-', zero=ka * RESIDUE * a_max)} {a}",
+                  f"      Coriolis a^c_{name} = 2 ω{g} × v_{name} = "
+                  f"{_polar(s['coriolis'], 'acceleration', u, scale=a_max)}{still}"]
+    return (["  Sliding on moving guides (the slider relative to the guide's coincident point)"] + lines) if lines else []
 
 
 def _given(kin) -> list:
@@ -428,6 +422,7 @@ def format_solution(problem, result: ForceAnalysis, graphical: list | None = Non
             for link, s in entry["links"].items():
                 out.append(f"    {link:<6}{u.show(s['theta'], 'angle'):>10.3f}{u.show(s['omega'], 'angular_velocity'):>12.4f}"
                            f"{u.show(s['alpha'], 'angular_acceleration'):>13.4f}   {_polar(s['a_G'], 'acceleration', u)}")
+            out.extend(_sliding_text(entry, u))
             out.append("  Inertia loads (d'Alembert: F_i = −m a_G at G, T_i = −I_G α, h = |T_i|/|F_i|)")
         for link, s in ([] if static else entry["links"].items()):
             if mech.link(int(link)).mass == 0:

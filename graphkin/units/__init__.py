@@ -35,7 +35,7 @@ every check that fails, goes through pint.
 :mod:`.dimensions`         the dimensions, their SI units, examples for messages
 :mod:`.registries`         the one pint registry and the disk caches
 :mod:`.checks`             which units a dimension accepts, and the slips refused
-:mod:`.convert`            :func:`to_si`, :func:`to_si_vector`, :func:`to_si_array`
+:mod:`.convert`            :func:`to_si`, :func:`to_si_vector`, :func:`to_si_array`, :func:`written`
 :mod:`.format`             :func:`format_si`
 :mod:`.systems`            the units a report prints in (``--units SI|US|FILE``)
 =========================  ============================================================
@@ -64,9 +64,10 @@ naming the file and the field):
 Offset units (degC, degF) are not supported.
 """
 
-from graphkin.units.convert import to_si, to_si_array, to_si_vector
+from graphkin.units.convert import Written, to_si, to_si_array, to_si_vector, written
 from graphkin.units.dimensions import DIMENSIONS, SI_UNITS
 from graphkin.units.format import format_si
 from graphkin.units.registries import cache_folder, registry
 
-__all__ = ["DIMENSIONS", "SI_UNITS", "cache_folder", "format_si", "registry", "to_si", "to_si_array", "to_si_vector"]
+__all__ = ["DIMENSIONS", "SI_UNITS", "Written", "cache_folder", "format_si", "registry", "to_si", "to_si_array",
+           "to_si_vector", "written"]

@@ -5,7 +5,7 @@ from __future__ import annotations
 import math
 import numbers
 import re
-from typing import Any
+from typing import Any, NamedTuple
 
 import numpy as np
 
@@ -229,6 +229,52 @@ def to_si(value: Any, dimension: str, *, field: str, file: str = "<input>") -> f
     """
     check_dimension(dimension)
     return _scalar_si(value, dimension, file, field)
+
+
+class Written(NamedTuple):
+    """How a problem file writes a value: its unit, that unit's size in SI, and the value's rounding in SI."""
+
+    unit: str
+    size: float
+    rounding: float
+
+
+def written(value: Any, dimension: str, *, field: str, file: str = "<input>") -> Written:
+    """The unit a value is written in, the unit's size in SI, and the value's rounding as written.
+
+    A book's number is rounded to the digits it prints: ``"862.5 rpm"`` stands for anything from 862.45 to
+    862.55 rpm. The rounding is half a unit in the last digit written (``"1500 rpm"``: 0.5 rpm; ``"1.5e3 rpm"``:
+    50 rpm), in SI. A value given as a number or a pint quantity has no written digits: its unit is the SI one
+    and its rounding 0.
+
+    Parameters
+    ----------
+    value : str, int, float or pint.Quantity
+        As :func:`to_si` takes it (and checked as it checks it).
+    dimension : str
+        A key of :data:`DIMENSIONS`.
+    field, file : str
+        For messages, as :func:`to_si`.
+
+    Returns
+    -------
+    Written
+        ``unit`` (the text after the number), ``size`` (one of that unit in SI) and ``rounding`` (SI).
+
+    Examples
+    --------
+    >>> w = written("862.5 rpm", "angular_velocity", field="speed")
+    >>> w.unit, round(w.size, 6), round(w.rounding / w.size, 6)
+    ('rpm', 0.10472, 0.05)
+    """
+    to_si(value, dimension, field=field, file=file)
+    match = _NUMBER_RE.match(value) if isinstance(value, str) else None
+    if match is None or not match["unit"]:
+        return Written(SI_UNITS[dimension], 1.0, 0.0)
+    mantissa, _, exponent = match["number"].lower().partition("e")
+    last = 10.0 ** (int(exponent or 0) - len(mantissa.partition(".")[2]))
+    size = to_si(f"1 {match['unit']}", dimension, field=field, file=file)
+    return Written(match["unit"], size, 0.5 * last * size)
 
 
 def to_si_vector(

@@ -26,6 +26,7 @@ from graphkin.analytical import solve_forces
 from graphkin.cycle.sweep import Cycle, sweep
 from graphkin.errors import GraphkinError
 from graphkin.graphical import construct_forces, construct_kinematics
+from graphkin.graphical.guard import check_forces
 from graphkin.optional import require
 from graphkin.widgets.canvas import PAGE_WIDTH, Canvas, force_table
 from graphkin.widgets.controls import make_controls, snap
@@ -459,6 +460,7 @@ class Explorer(DrawingAhead):
             mc = construct_kinematics(kin, 0) if self.motion.value else None
 
             a = solve_forces(kin)
+            c = check_forces(a, c, 0)  # a construction that disagrees with the analytical route is not shown
         except GraphkinError as exc:
             message = str(exc)
         if c is not None and not c.valid:

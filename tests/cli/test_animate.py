@@ -90,8 +90,8 @@ def test_bad_input_is_one_line_naming_it(capsys, tmp_path, monkeypatch, args, na
 
     (tmp_path / "a_file.txt").write_text("x")
     (tmp_path / "b.gif").mkdir()
-    # Kinematics measured at one position hold there only.
-    given = catalog.path("engine_gas_force").read_text(encoding="utf-8") + '\n[given.3]\nomega = "4 rad/s"\n'
+    # Kinematics measured at one position hold there only (ω3 read off a drawing: graphkin's is −3.352 rad/s).
+    given = catalog.path("engine_gas_force").read_text(encoding="utf-8") + '\n[given.3]\nomega = "-3.35 rad/s"\n'
     (tmp_path / "given.toml").write_text(given, encoding="utf-8")
     monkeypatch.chdir(tmp_path)
     monkeypatch.setenv("PATH", str(tmp_path / "b.gif"))  # no ffmpeg

@@ -13,7 +13,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from graphkin.errors import ProblemFileError
-from graphkin.units import DIMENSIONS, SI_UNITS, format_si, registry, to_si, to_si_array, to_si_vector
+from graphkin.units import DIMENSIONS, SI_UNITS, format_si, registry, to_si, to_si_array, to_si_vector, written
 
 FILE = "problems/slider_crank.toml"
 FIELD = "links[2].value"
@@ -128,6 +128,26 @@ def test_to_si_accepts_pint_quantities():
     assert to_si(ureg.Quantity(90, "deg"), "angle", field="a") == pytest.approx(math.pi / 2)
     message = raises_pfe(ureg.Quantity(5, "N"), "length")
     assert "length" in message and "force" in message
+
+
+@pytest.mark.parametrize("value, dimension, unit, size, half", [
+    ("862.5 rpm", "angular_velocity", "rpm", math.pi / 30, 0.05),
+    ("1500 rpm", "angular_velocity", "rpm", math.pi / 30, 0.5),
+    ("-1.5e3 rpm", "angular_velocity", "rpm", math.pi / 30, 50.0),
+    ("2.50E-1 m/s", "velocity", "m/s", 1.0, 0.0005),
+    ("0 deg", "angle", "deg", math.pi / 180, 0.5),
+    (".25 mm", "length", "mm", 1e-3, 0.005),
+])
+def test_written_says_a_values_unit_and_its_rounding(value, dimension, unit, size, half):
+    """Half a unit in the last digit written, in SI: what a book's printed number may differ from its value by."""
+    w = written(value, dimension, field="x")
+    assert w.unit == unit and w.size == pytest.approx(size, rel=1e-15)
+    assert w.rounding == pytest.approx(half * size, rel=1e-12)
+
+
+def test_written_has_no_digits_for_a_pint_quantity_and_checks_as_to_si_does():
+    assert written(registry().Quantity(90, "deg"), "angle", field="a") == ("rad", 1.0, 0.0)
+    assert "angular velocity" in raises_pfe("5 N", "angular_velocity", fn=written)
 
 
 _UNIT_TABLE = [
