@@ -16,8 +16,9 @@ from pathlib import Path
 from graphkin.errors import GraphkinError
 from graphkin.exercises import load_exercise
 from graphkin.exercises.exercise import Exercise
-from graphkin.exercises.grading import Refusal, grade_variant, read_given
+from graphkin.exercises.feedback import Refusal, read_given
 from graphkin.exercises.grading import grade_question as _grade_one
+from graphkin.exercises.grading import grade_variant
 from graphkin.exercises.notebooks import kernel_cells, read_cells
 from graphkin.exercises.sheets import format_sheet
 from graphkin.exercises.variants import check_student, make_variant
