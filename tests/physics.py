@@ -15,7 +15,7 @@ from hypothesis import HealthCheck, settings
 from graphkin.analytical import solve_forces
 from graphkin.graphical import construct_forces, construct_kinematics, instant_centres, kinematics_from_polygons
 from graphkin.kinematics import solve_kinematics
-from graphkin.model import FRAME, GearMesh, Mechanism, PointForce, Prismatic, Revolute, SpringForce
+from graphkin.model import GearMesh, Mechanism, PointForce, Prismatic, Revolute, SpringForce
 from tests.strategies import length_scale
 from tests.vectors import cross, dot, perp
 
@@ -154,7 +154,7 @@ def loads_on(kin, r, link):
         if d.kind == "crank":
             out.append((None, None, r.effort, "driving torque"))
         else:
-            J = mech.joint_between(FRAME, link)
+            J = mech.joint_between(mech.frame, link)
             out.append((r.effort[:, None] * kin.guide_direction(J), kin.position(link, J.point), None, "driving force"))
     for load in mech.loads:
         if load.link != link:
@@ -221,7 +221,7 @@ def power_terms(kin, r):
     for joint in mech.joints:
         lo, hi = _lohi(joint)
         for link in (lo, hi):
-            if link != FRAME:
+            if link != mech.frame:
                 X = joint_point(kin, joint, link)
                 v_max = np.maximum(v_max, np.linalg.norm(_velocity_at(kin, link, X), axis=-1))
         f_max = np.maximum(f_max, np.linalg.norm(r.force(lo, hi), axis=-1))

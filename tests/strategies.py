@@ -38,7 +38,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
-from typing import NamedTuple
+from typing import Mapping, NamedTuple
 
 import numpy as np
 from hypothesis import assume
@@ -71,12 +71,65 @@ GRID = 720
 
 
 class Case(NamedTuple):
-    """A drawn example: unpacks as ``mechanism, q, q_dot, q_ddot``."""
+    """A drawn example: unpacks as ``mechanism, q, q_dot, q_ddot``.
+
+    Its repr is the Python that rebuilds it, which is what hypothesis prints for a failing (shrunk) example:
+    paste it into a test after ``from tests.strategies import *`` (which brings ``np``, ``Case`` and the classes
+    of :mod:`graphkin.model`).
+    """
 
     mechanism: Mechanism
     q: np.ndarray
     q_dot: np.ndarray
     q_ddot: np.ndarray
+
+    def __repr__(self):
+        m = self.mechanism
+        lines = ["Case(", "    mechanism=Mechanism("]
+        for name in ("links", "joints", "loads"):
+            lines += [f"        {name}=[", *(f"            {_code(x)}," for x in getattr(m, name)), "        ],"]
+        lines += [f"        {f.name}={_code(getattr(m, f.name))}," for f in dataclasses.fields(m)
+                  if f.name not in ("links", "joints", "loads") and not _default(m, f)]
+        lines.append("    ),")
+        lines += [f"    {name}={_code(getattr(self, name))}," for name in ("q", "q_dot", "q_ddot")]
+        return "\n".join([*lines, ")"])
+
+    def _repr_pretty_(self, p, cycle):
+        """What hypothesis's printer calls: the same Python as the repr."""
+        p.text(repr(self))
+
+
+def _default(obj, f) -> bool:
+    """Whether field ``f`` of dataclass ``obj`` holds its default (the rebuilding code leaves it out)."""
+    default = f.default if f.default_factory is dataclasses.MISSING else f.default_factory()
+    value = getattr(obj, f.name)
+    if default is dataclasses.MISSING or isinstance(value, np.ndarray):
+        return False
+    value = dict(value) if isinstance(value, Mapping) else value
+    return type(value) is type(default) and value == default
+
+
+def _code(value) -> str:
+    """Python source for a value of a case: dataclasses by their fields, floats exactly (repr round-trips)."""
+    if dataclasses.is_dataclass(value) and not isinstance(value, type):
+        args = (f"{f.name}={_code(getattr(value, f.name))}" for f in dataclasses.fields(value)
+                if f.init and not _default(value, f))
+        return f"{type(value).__name__}({', '.join(args)})"
+    if isinstance(value, np.ndarray):
+        return f"np.array({_code(value.tolist())})"
+    if isinstance(value, Mapping):
+        return "{" + ", ".join(f"{_code(k)}: {_code(v)}" for k, v in value.items()) + "}"
+    if isinstance(value, tuple):
+        return "(" + ", ".join(map(_code, value)) + (",)" if len(value) == 1 else ")")
+    if isinstance(value, list):
+        return "[" + ", ".join(map(_code, value)) + "]"
+    if isinstance(value, (bool, np.bool_)):
+        return repr(bool(value))
+    if isinstance(value, (int, np.integer)):
+        return repr(int(value))
+    if isinstance(value, (float, np.floating)):
+        return repr(float(value))
+    return repr(value)
 
 
 # --------------------------------------------------------------------------
@@ -313,19 +366,21 @@ def _case(draw, mech, q_range, periodic, scale):
 
 
 def _numbering(draw, moving):
-    """Half the time, a random renumbering of the moving links (2…9, any order).
+    """A numbering of the links as books give it: the frame 1 or 0, the moving links from the next number up, in
+    order or (half the time) in a random order.
 
-    So the driver need not be link 2, and which link of a pair has the lower
-    number (the sign convention of ``F_ij``, ``N``, ``C``) varies.
+    So every name follows the frame's number (``T12`` or ``T01``), the driver need not be the first moving link,
+    and which link of a pair has the lower number (the sign convention of ``F_ij``, ``N``, ``C``) varies.
     """
-    if not draw(st.booleans()):
-        return {n: n for n in (FRAME, *moving)}
-    new = draw(st.permutations(range(2, 10)))[: len(moving)]
-    return {FRAME: FRAME, **dict(zip(moving, new))}
+    frame = draw(st.sampled_from((FRAME, 0)))
+    numbers = list(range(frame + 1, frame + 9))
+    if draw(st.booleans()):
+        numbers = draw(st.permutations(numbers))
+    return {FRAME: frame, **dict(zip(moving, numbers))}
 
 
 def _relabel(mech: Mechanism, m) -> Mechanism:
-    """The same mechanism with link n renumbered m[n]."""
+    """The same mechanism with link n renumbered m[n] (the frame, link 1, too)."""
     links = [dataclasses.replace(l, number=m[l.number], points=dict(l.points)) for l in mech.links]
     joints = []
     for j in mech.joints:
@@ -337,7 +392,7 @@ def _relabel(mech: Mechanism, m) -> Mechanism:
                                                             if isinstance(load, SpringForce) else {}))
              for load in mech.loads]
     driver = Driver(m[mech.driver.link], mech.driver.kind)
-    return Mechanism(links, joints, driver, loads, mech.gravity, dict(mech.assembly), mech.title)
+    return Mechanism(links, joints, driver, loads, mech.gravity, dict(mech.assembly), mech.title, frame=m[FRAME])
 
 
 def _finish(draw, links, joints, driver, assembly, q_range, periodic, scale, title, loads=(), numbering=None):

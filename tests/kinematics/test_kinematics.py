@@ -41,7 +41,7 @@ from hypothesis import strategies as st
 
 from graphkin.analytical import solve_forces
 from graphkin.kinematics import Dyad, decompose, solve_kinematics
-from graphkin.model import FRAME, Driver, GearMesh, Link, Mechanism, Prismatic, Revolute
+from graphkin.model import Driver, GearMesh, Link, Mechanism, Prismatic, Revolute
 from tests.physics import pitch_point
 from tests.strategies import crank_families, families, length_scale
 from tests.vectors import cross, dot, perp
@@ -167,7 +167,7 @@ def test_positions_satisfy_every_joint(family, data):
     kin = solve_kinematics(mech, q, q_dot, q_ddot)
     assert kin.valid.all()
     tol = GEOM_RTOL * 100 * (_extent(kin) + length_scale(mech))
-    pivoted = {link for link in mech.moving if any(isinstance(jt, Revolute) and FRAME in jt.links
+    pivoted = {link for link in mech.moving if any(isinstance(jt, Revolute) and mech.frame in jt.links
                                                   for jt in mech.joints_of(link))}
     for joint in mech.joints:
         if isinstance(joint, Revolute):
@@ -198,18 +198,18 @@ def test_positions_satisfy_every_joint(family, data):
             scale = (np.linalg.norm(kin.velocity(a, ca), axis=-1) + np.linalg.norm(kin.velocity(b, cb), axis=-1)
                      + np.abs(kin.omega[a]) * ra + np.abs(kin.omega[b]) * rb + 1e-300)
             assert np.all(np.linalg.norm(va - vb, axis=-1) <= 1e-12 * scale), "gears slip at the pitch point"
-            if a in (FRAME, *pivoted) and b in (FRAME, *pivoted):  # both centres still: the ratio of the pitch radii
+            if a in (mech.frame, *pivoted) and b in (mech.frame, *pivoted):  # both centres still: the ratio of the pitch radii
                 np.testing.assert_allclose(kin.omega[b] * rb, (1 if joint.internal else -1) * kin.omega[a] * ra,
                                            rtol=1e-12, atol=1e-300)
     d = mech.driver
-    J = mech.joint_between(FRAME, d.link)
+    J = mech.joint_between(mech.frame, d.link)
     if d.kind == "crank":
         assert np.all(np.abs(wrap(kin.theta[d.link] - q)) <= 1e-12)
         np.testing.assert_array_equal(kin.omega[d.link], q_dot)
         np.testing.assert_array_equal(kin.alpha[d.link], q_ddot)
     else:
         u = kin.guide_direction(J)
-        X = kin.position(FRAME, J.through) + q[:, None] * u
+        X = kin.position(mech.frame, J.through) + q[:, None] * u
         assert np.all(np.linalg.norm(kin.position(d.link, J.point) - X, axis=-1) <= tol)
         np.testing.assert_allclose(dot(kin.velocity(d.link, J.point), u), q_dot, rtol=1e-12, atol=1e-300)
         np.testing.assert_allclose(dot(kin.acceleration(d.link, J.point), u), q_ddot, rtol=1e-12, atol=1e-300)

@@ -37,7 +37,7 @@ from graphkin.analytical import solve_forces
 from graphkin.analytical.matrix import assemble, solve_matrix
 from graphkin.errors import GraphkinError
 from graphkin.kinematics import solve_kinematics
-from graphkin.model import FRAME, GearMesh, Mechanism, Prismatic, Revolute
+from graphkin.model import GearMesh, Mechanism, Prismatic, Revolute
 from tests.physics import (
     BATCH_RTOL,
     RTOL,
@@ -99,7 +99,7 @@ def test_action_equals_minus_reaction(family, data):
     if d.kind == "crank":
         np.testing.assert_array_equal(r[d.symbol], r.effort)
     else:
-        u = kin.guide_direction(mech.joint_between(FRAME, d.link))
+        u = kin.guide_direction(mech.joint_between(mech.frame, d.link))
         np.testing.assert_array_equal(r[d.symbol], r.effort[:, None] * u)
 
 
