@@ -1,7 +1,10 @@
 """The velocity and acceleration polygons, and the instant centres, equal the analytical kinematics (hypothesis).
 
-On random mechanisms of every family the core supports: each dyad type (sliders on moving links, so
-Coriolis components, included), gears, random link numbering.
+On random mechanisms of every family the core supports: each dyad type (sliders on turning guides, so
+Coriolis components, included), a slider driver, external and internal gears (an annulus found from its pinion,
+on the frame or on an arm), compound planets, planets on driven arms, input turning either way, random link
+numbering with the frame 1 or 0. A failure names the quantity, the position and both values, and hypothesis prints
+the shrunk case as code (``tests.strategies.Case``).
 """
 
 import pytest
