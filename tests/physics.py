@@ -325,6 +325,24 @@ def graphical_equals_analytical(case):
     return checked
 
 
+def motion_scales(kin, i):
+    """The scales of position ``i``'s motion: (ω [rad/s], α [rad/s²], v [m/s], a [m/s²]).
+
+    The largest ω; the largest |α| + ω²; the largest speed and acceleration of a named point or a G, plus what the
+    links' turning gives across the mechanism (a pitch point is no named point; a gear's named points may all sit
+    on its pivot, where they stand still).
+    """
+    mech = kin.mechanism
+    links = mech.moving
+    size = length_scale(mech)
+    points = [(l, n) for l in links for n in (*mech.link(l).points, mech.link(l).G)]
+    w_scale = max(abs(kin.omega[l][i]) for l in links)
+    al_scale = max(abs(kin.alpha[l][i]) + kin.omega[l][i] ** 2 for l in links)
+    v_scale = max(np.hypot(*kin.velocity(l, n)[i]) for l, n in points) + w_scale * size
+    a_scale = max(np.hypot(*kin.acceleration(l, n)[i]) for l, n in points) + al_scale * size
+    return w_scale, al_scale, v_scale, a_scale
+
+
 def polygons_equal_analytical(case):
     """The velocity and acceleration polygons (and the instant centres) give the analytical kinematics.
 
@@ -342,13 +360,7 @@ def polygons_equal_analytical(case):
         links = mech.moving
         v = {(l, n): kin.velocity(l, n)[i] for l in links for n in mech.link(l).points}
         a = {(l, n): kin.acceleration(l, n)[i] for l in links for n in mech.link(l).points}
-        # The scales of the position's motion: the named points' and G's, and what the links' turning gives across
-        # the mechanism (a pitch point is no named point; a gear's named points may all sit on its pivot).
-        size = length_scale(mech)
-        w_scale = max(abs(kin.omega[l][i]) for l in links)
-        al_scale = max(abs(kin.alpha[l][i]) + kin.omega[l][i] ** 2 for l in links)
-        v_scale = max([np.hypot(*x) for x in v.values()] + [np.hypot(*kin.v_G(l)[i]) for l in links]) + w_scale * size
-        a_scale = max([np.hypot(*x) for x in a.values()] + [np.hypot(*kin.a_G(l)[i]) for l in links]) + al_scale * size
+        w_scale, al_scale, v_scale, a_scale = motion_scales(kin, i)
         for l, n in v:
             agree(f"{at}: v_{n} of link {l}", c.velocity[l, n], v[l, n], RTOL * v_scale)
             agree(f"{at}: a_{n} of link {l}", c.acceleration[l, n], a[l, n], RTOL * a_scale)
@@ -377,19 +389,29 @@ def polygons_equal_analytical(case):
 
 
 def forces_from_polygons_equal_analytical(case):
-    """The force route with its inertia loads from the polygons gives the analytical forces and driving effort."""
+    """The force route with its inertia loads from the polygons gives the analytical forces and driving effort.
+
+    To 1e-9 of the position's largest joint force, or of the largest inertia loads the motion's scales give (the
+    polygons' a_G and α are the analytical ones to 1e-9 of those scales, :func:`polygons_equal_analytical`):
+    where every force is 0 in exact arithmetic (a massive gear whose G is on its pivot, and no other load), the
+    analytical route's forces are rounding, ε m ω² |O|, and the polygons' may be exactly 0.
+    """
     mech, q, q_dot, q_ddot = case
     kin = solve_kinematics(mech, q, q_dot, q_ddot)
     r = solve_forces(kin)
     p = solve_forces(kinematics_from_polygons(kin))
+    size = length_scale(mech)
+    m = max(mech.link(l).mass for l in mech.moving)
+    I_G = max(mech.link(l).I_G for l in mech.moving)
     checked = 0
     for i in np.flatnonzero(r.valid):
         at = _at(kin, i)
         assert p.valid[i], f"{at}: {p.reason(i)}"
-        scale = max(np.abs(r.force(*k)[i]).max() for k in r.forces)
+        _, al_scale, _, a_scale = motion_scales(kin, i)
+        scale = max(max(np.abs(r.force(*k)[i]).max() for k in r.forces), m * a_scale + I_G * al_scale / size)
         for key in r.forces:
             agree(f"{at}: force of {key[0]} on {key[1]} (inertia loads from the polygons)", p.force(*key)[i],
-                  r.force(*key)[i], RTOL * max(scale, 1e-300))
+                  r.force(*key)[i], RTOL * scale + 1e-300)
         effort_scale = max(abs(r.effort[i]), scale * 1e-3)
         agree(f"{at}: driving effort {mech.driver.symbol} (inertia loads from the polygons)", p.effort[i],
               r.effort[i], 10 * RTOL * effort_scale)
