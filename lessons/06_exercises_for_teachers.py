@@ -17,15 +17,13 @@
 # # Lesson 06 — Exercises for a course (for teachers)
 #
 # The other lessons are for students. This one is for you, the teacher: how to give each student
-# **their own numbers** for an exercise, grade what they type, and see at a glance which slips the
-# class made. `graphkin.exercises` does the work; every result is plain data (dicts, strings, numbers)
-# that you can save as CSV or JSON. The weekly loop: choose or write an exercise (section 1); make every
+# **their own numbers** for an exercise, grade what they type, and see which slips the class made. Every
+# result is plain data (dicts, strings, numbers) to save as CSV or JSON. The weekly loop: choose or write an exercise (section 1); make every
 # student's sheet and your key from the roster and a **course secret** (2), also from the command line
 # (3); grade the answers and read the class's slips (4); set partial credit, reveal the answers and keep
 # the secret (5). Lesson 07 puts the same on Gradescope, otter-grader, nbgrader and PrairieLearn.
 #
-# Everything happens in a temporary folder, deleted when the kernel stops; the class of section 4 is
-# simulated from the keys with a fixed seed, so the numbers are the same every time.
+# Everything happens in a temporary folder; the class of section 4 is simulated with a fixed seed.
 
 # %%
 # %matplotlib inline
@@ -273,7 +271,7 @@ print(graphkin("exercise", "make", NAME, "--student", "s001", "--secret", SECRET
 # * **no inertia torque**: the variant solved again without $-I_G\alpha$ (`variant.altered(...)`).
 #
 # A wrong answer is 5 to 15 % off; an unreadable one is "see my drawing", "?", or a comma that could be
-# a decimal comma or a thousands separator (`2,643 N`), which the grader refuses to guess. Answers are
+# a decimal comma or a thousands separator (`2,643 N`). Answers are
 # typed as students type them: `2643 N ∠ -126.57°`, `(-1575, -2123) N`, `216.6 N·m CCW`, `0.2166 kN·m`.
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
@@ -434,15 +432,28 @@ for q in strict_reports[shown]["questions"]:
     print(f"{q['id']}: {q['verdict']:<10} {q['score']:g}/{q['max']:g}   typed {q['answer']!r:<24} expected {q['expected']}")
 
 # %% [markdown]
+# ### How far off? What the feedback gives away
+#
+# A wrong answer is told its slip, or which part is wrong (sign, size, direction, a factor of ten), never
+# how far off: "+19.5 % off" gives the key in one more try. After the deadline, `feedback = "distance"` in
+# the exercise file (`feedback="distance"` in Python, `--feedback distance`) says how far. Both ways:
+
+# %%
+s_wrong, q_wrong = next((s, q.id) for s in students for q in ex.questions if made[s, q.id] == "wrong")
+told = {}
+for feedback in ("parts", "distance"):
+    report = gk.exercises.grade(NAME, s_wrong, handed_in[s_wrong], secret=SECRET, feedback=feedback)
+    told[feedback] = next(q for q in report["questions"] if q["id"] == q_wrong)
+    print(f"{feedback:<9} {told[feedback]['feedback']}")
+
+# %% [markdown]
 # ### Keeping the secret out of the students' notebook
 #
-# Whoever has the secret can compute every key. So never write it in a notebook, a script or a shared
-# repository: put it in the environment of *your* terminal (`export GRAPHKIN_SECRET=...`, then start
-# Jupyter from it). The command line reads `GRAPHKIN_SECRET` when there is no `--secret`; the Python
-# functions don't: pass `secret=os.environ["GRAPHKIN_SECRET"]`. Choose a new secret each term. Without
-# a secret anyone can compute any key: fine for practice (the exercise boxes of lessons 01–05), not for
-# graded work. The command line with the secret in the environment gives the same key as
-# `gk.exercises.key` with `secret=SECRET`:
+# Whoever has the secret can compute every key: keep it out of notebooks and repositories, in *your*
+# terminal's environment (`export GRAPHKIN_SECRET=...`, then start Jupyter from it). The command line reads
+# it when there is no `--secret`; in Python pass `secret=os.environ["GRAPHKIN_SECRET"]`. Choose a new one
+# each term. Without a secret anyone can compute any key: fine for practice, not for graded work. The
+# command line with the secret in the environment gives the same key as `gk.exercises.key`:
 
 # %%
 import os
@@ -468,6 +479,8 @@ for s in students:
 assert mean["strict"] < mean["default"]
 assert [q["expected"] for q in strict_reports[shown]["questions"]] == \
        [q["answer"]["text"] for q in keys[shown]["questions"]]
+assert (told["parts"]["verdict"], told["parts"]["score"]) == (told["distance"]["verdict"], told["distance"]["score"])
+assert "% off" in told["distance"]["feedback"] and "% off" not in told["parts"]["feedback"]
 assert all("expected" in q for q in gk.exercises.grade(NAME, shown, handed_in[shown], SECRET, reveal=True)["questions"])
 # GRAPHKIN_SECRET: the CLI without --secret uses it; the Python functions don't read it.
 env_key = subprocess.run([sys.executable, "-m", "graphkin", "exercise", "key", NAME, "--student", "s001",

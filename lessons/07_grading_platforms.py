@@ -237,6 +237,11 @@ for t in r["tests"]:
     print(f"[{t['score']:g} / {t['max_score']:g}] {t['output']}")
 
 # %% [markdown]
+# Gradescope shows this at once, and a student may submit again: so a wrong answer is told its slip, or
+# which part is wrong (the sign or sense, the size or the direction), never how far off, which would give
+# the key away in one more try. Lesson 06 shows the exercise file's `feedback = "distance"` for after the
+# deadline; `docs/exercises.md` says what each choice gives away.
+#
 # And the student who uploaded a friend's file:
 
 # %%
@@ -258,7 +263,10 @@ gk.draw.draw_grades(reports)
 # Read it as a teacher: a sign slip on T12 means the torque's sense is not settled (go back to the
 # sign convention); a power of ten means a unit was carried wrong; "wrong" answers are the ones to
 # look at by hand. The student who copied scored 0, with a sentence saying why; their `results.json`
-# carries no report (nothing of theirs was graded), so the charts leave them out.
+# carries no report (nothing of theirs was graded), so the charts leave them out. A student who copies a
+# friend's answers into a file of their own is graded against the class too: where the friend's data
+# explain two or more of the answers, each of those earns nothing ("This is the answer for another
+# student's data"); one such answer alone is graded as the student's own.
 
 # %% [markdown]
 # ## 6. The other platforms
@@ -268,26 +276,34 @@ gk.draw.draw_grades(reports)
 #
 # * **otter-grader** (`--to otter`): an assignment notebook with the student's id, a cell that
 #   prints their data and one answer cell per question. `otter assign` makes the student notebook
-#   and the autograder; `otter run` grades, through graphkin's otter plugin (below), and
-#   `graphkin exercise collect` makes one class table of the `results.json` files.
-# * **nbgrader** (`--to nbgrader`): a source notebook for your course directory and two lines for
-#   `nbgrader_config.py`; `nbgrader generate_assignment`, then `nbgrader autograde`. Each question's
-#   test cell shows graphkin's feedback and ends in the score (nbgrader's partial credit); a notebook
-#   carrying another student's id than the one nbgrader grades it under scores 0.
+#   and the autograder; `graphkin exercise strip` makes of each hand-in a notebook otter can read,
+#   `otter run` grades it through graphkin's otter plugin (below), and `graphkin exercise collect`
+#   makes one class table of the `results.json` files.
+# * **nbgrader** (`--to nbgrader`): a source notebook for your course directory and the lines for
+#   `nbgrader_config.py` (graphkin's exporter and preprocessors); `nbgrader generate_assignment`, then
+#   `nbgrader autograde`. Each question's test cell shows graphkin's feedback and ends in the score
+#   (nbgrader's partial credit); a notebook carrying another student's id than the one nbgrader grades
+#   it under scores 0.
 # * **PrairieLearn** (`--to prairielearn`): a question folder (`info.json`, `question.html`,
 #   `server.py`) and graphkin under `serverFilesCourse/`. `generate` draws a variant per
 #   PrairieLearn variant; `grade` writes graphkin's feedback per answer box.
 #
 # With a course secret, the notebook platforms need `--roster`: the student notebook then carries
 # each student's data (never the answers), and grading carries the roster's keys, never the secret.
+# **On otter and nbgrader, the folder students are given lets any student compute any classmate's
+# answers with graphkin**: its sheets hold every roster student's data, and graphkin solves the
+# exercise. What protects the grade is that a classmate's answers, handed in, score 0.
 #
 # **Why a notebook cannot grade itself.** otter and nbgrader grade by running the student's notebook,
-# and code in a notebook can replace any function a test calls. So graphkin never lets it: otter's
-# plugin and nbgrader's preprocessor read the handed-in notebook **as a file**, take the text
-# assigned to `STUDENT` and to each answer (literals only; nothing is run), grade those answers in a
-# separate Python process that holds the keys, and write the grade themselves. You can do the same
-# on your own machine with `graphkin exercise grade --keys`. Here is a notebook that tries to give
-# itself full marks, graded as the platforms grade it (the otter export writes the keys file):
+# and code in a notebook can replace any function a test calls; they also load more of a hand-in than
+# its notebook (otter unpickles the `.OTTER_LOG` in the zip; both start the kernel in a folder where
+# modules handed in beside the notebook are imported first). So graphkin never lets them: before the
+# platform loads anything of a hand-in, otter's plugin and nbgrader's exporter read the notebook
+# **as a file**, take the text assigned to `STUDENT` and to each answer (literals only; nothing is
+# run), remove everything else that was handed in, grade those answers in a separate Python process
+# that holds the keys, and write the grade themselves. You can do the same on your own machine with
+# `graphkin exercise grade --keys`. Here is a notebook that tries to give itself full marks, graded as
+# the platforms grade it (the otter export writes the keys file):
 
 # %%
 graphkin("exercise", "export", NAME, "--to", "otter", "-o", "otter", "--roster", "roster.csv", "--secret", SECRET)
@@ -314,8 +330,10 @@ print(graphkin("exercise", "grade", NAME, "--keys", "otter/strip_cutter_cut-keys
 # %% [markdown]
 # It scores what its answers earn: nothing. The line that replaced the grader never ran, and the
 # answer written as code was not read (its feedback says to type the answer as text). The tests of
-# `tests/exercises/platforms/` hand in a dozen such notebooks to the real otter and nbgrader, and
-# `docs/platforms/` says, for each platform, what a student can and cannot learn or do.
+# `tests/exercises/platforms/` hand in dozens of such notebooks, zips and folders to the real otter
+# and nbgrader (shadow packages, pickles, links to the keys, notebooks too big or too deep to read),
+# and `docs/platforms/` says, for each platform, what a student can and cannot learn or do, and what
+# the platform leaves open that graphkin cannot close.
 #
 # PrairieLearn's export is a question folder:
 

@@ -9,13 +9,12 @@ import math
 import os
 
 import numpy as np
-import pytest
 from hypothesis import HealthCheck, settings
 
 from graphkin.analytical import solve_forces
 from graphkin.graphical import construct_forces, construct_kinematics, instant_centres, kinematics_from_polygons
 from graphkin.kinematics import solve_kinematics
-from graphkin.model import FRAME, GearMesh, Mechanism, PointForce, Prismatic, Revolute, SpringForce
+from graphkin.model import GearMesh, Mechanism, PointForce, Prismatic, Revolute, SpringForce
 from tests.strategies import length_scale
 from tests.vectors import cross, dot, perp
 
@@ -154,7 +153,7 @@ def loads_on(kin, r, link):
         if d.kind == "crank":
             out.append((None, None, r.effort, "driving torque"))
         else:
-            J = mech.joint_between(FRAME, link)
+            J = mech.joint_between(mech.frame, link)
             out.append((r.effort[:, None] * kin.guide_direction(J), kin.position(link, J.point), None, "driving force"))
     for load in mech.loads:
         if load.link != link:
@@ -221,7 +220,7 @@ def power_terms(kin, r):
     for joint in mech.joints:
         lo, hi = _lohi(joint)
         for link in (lo, hi):
-            if link != FRAME:
+            if link != mech.frame:
                 X = joint_point(kin, joint, link)
                 v_max = np.maximum(v_max, np.linalg.norm(_velocity_at(kin, link, X), axis=-1))
         f_max = np.maximum(f_max, np.linalg.norm(r.force(lo, hi), axis=-1))
@@ -278,30 +277,70 @@ def load_scales(kin, r):
     return f, f * (L + ext) + c
 
 
+def agree(what, graphical, analytical, tol):
+    """Assert that a value the graphical route gives equals the analytical one within ``tol`` (absolute).
+
+    The message names the value and gives both, so that a failing example says what disagrees and by how much.
+    """
+    graphical, analytical = np.asarray(graphical, float), np.asarray(analytical, float)
+    off = float(np.max(np.abs(graphical - analytical)))
+    assert off <= tol, (f"{what}: graphical {graphical.tolist()} ≠ analytical {analytical.tolist()} "
+                        f"(off by {off:.3g}, allowed {tol:.3g})")
+
+
+def _at(kin, i):
+    return f"position {i} (q = {float(kin.q[i])!r})"
+
+
 def graphical_equals_analytical(case):
+    """The force polygons give the analytical joint forces, normal forces, couples and driving effort.
+
+    Each to 1e-9 of the position's largest joint force (couples: of the largest couple; the effort: of itself, or
+    of the forces); every polygon closes. Returns how many positions were checked.
+    """
     mech, q, q_dot, q_ddot = case
     r = solve_forces(solve_kinematics(mech, q, q_dot, q_ddot))
     checked = 0
     for i in np.flatnonzero(r.valid):
+        at = _at(r.kinematics, i)
         c = construct_forces(r.kinematics, int(i))
-        assert c.valid, c.reason
-        assert not c.warnings, c.warnings
+        assert c.valid, f"{at}: {c.reason}"
+        assert not c.warnings, f"{at}: {c.warnings}"
         scale = max(np.abs(r.force(*k)[i]).max() for k in r.forces)
         if scale == 0:
             continue
         for key in r.forces:
-            np.testing.assert_allclose(c.force(*key), r.force(*key)[i], rtol=0, atol=1e-9 * scale)
+            agree(f"{at}: force of {key[0]} on {key[1]}", c.force(*key), r.force(*key)[i], RTOL * scale)
         for key in r.normal:
-            assert c.normal[key] == pytest.approx(r.normal[key][i], rel=0, abs=1e-9 * scale)
+            agree(f"{at}: normal force N{key[0]}{key[1]}", c.normal[key], r.normal[key][i], RTOL * scale)
         lever = max(np.abs(r.couple[k][i]) for k in r.couple) if r.couple else 0.0
         for key in r.couple:
-            assert c.couple[key] == pytest.approx(r.couple[key][i], rel=0, abs=1e-9 * max(lever, scale * 1e-3))
+            agree(f"{at}: couple C{key[0]}{key[1]}", c.couple[key], r.couple[key][i],
+                  RTOL * max(lever, scale * 1e-3))
         effort_scale = max(abs(r.effort[i]), scale * 1e-3)
-        assert c.effort == pytest.approx(r.effort[i], rel=0, abs=1e-9 * effort_scale * 10)
+        agree(f"{at}: driving effort {mech.driver.symbol}", c.effort, r.effort[i], 10 * RTOL * effort_scale)
         for step in c.steps:
-            assert step.closure() < 1e-9
+            assert step.closure() < RTOL, f"{at}: the polygon of {step.caption!r} does not close"
         checked += 1
     return checked
+
+
+def motion_scales(kin, i):
+    """The scales of position ``i``'s motion: (ω [rad/s], α [rad/s²], v [m/s], a [m/s²]).
+
+    The largest ω; the largest |α| + ω²; the largest speed and acceleration of a named point or a G, plus what the
+    links' turning gives across the mechanism (a pitch point is no named point; a gear's named points may all sit
+    on its pivot, where they stand still).
+    """
+    mech = kin.mechanism
+    links = mech.moving
+    size = length_scale(mech)
+    points = [(l, n) for l in links for n in (*mech.link(l).points, mech.link(l).G)]
+    w_scale = max(abs(kin.omega[l][i]) for l in links)
+    al_scale = max(abs(kin.alpha[l][i]) + kin.omega[l][i] ** 2 for l in links)
+    v_scale = max(np.hypot(*kin.velocity(l, n)[i]) for l, n in points) + w_scale * size
+    a_scale = max(np.hypot(*kin.acceleration(l, n)[i]) for l, n in points) + al_scale * size
+    return w_scale, al_scale, v_scale, a_scale
 
 
 def polygons_equal_analytical(case):
@@ -315,61 +354,70 @@ def polygons_equal_analytical(case):
     kin = solve_kinematics(mech, q, q_dot, q_ddot)
     checked = 0
     for i in np.flatnonzero(kin.valid):
+        at = _at(kin, i)
         c = construct_kinematics(kin, int(i))
-        assert c.valid, c.reason
+        assert c.valid, f"{at}: {c.reason}"
         links = mech.moving
         v = {(l, n): kin.velocity(l, n)[i] for l in links for n in mech.link(l).points}
         a = {(l, n): kin.acceleration(l, n)[i] for l in links for n in mech.link(l).points}
-        # The scales of the position's motion: the named points' and G's, and what the links' turning gives across
-        # the mechanism (a pitch point is no named point; a gear's named points may all sit on its pivot).
-        size = length_scale(mech)
-        w_scale = max(abs(kin.omega[l][i]) for l in links)
-        al_scale = max(abs(kin.alpha[l][i]) + kin.omega[l][i] ** 2 for l in links)
-        v_scale = max([np.hypot(*x) for x in v.values()] + [np.hypot(*kin.v_G(l)[i]) for l in links]) + w_scale * size
-        a_scale = max([np.hypot(*x) for x in a.values()] + [np.hypot(*kin.a_G(l)[i]) for l in links]) + al_scale * size
-        for key in v:
-            np.testing.assert_allclose(c.velocity[key], v[key], rtol=0, atol=RTOL * v_scale)
-            np.testing.assert_allclose(c.acceleration[key], a[key], rtol=0, atol=RTOL * a_scale)
+        w_scale, al_scale, v_scale, a_scale = motion_scales(kin, i)
+        for l, n in v:
+            agree(f"{at}: v_{n} of link {l}", c.velocity[l, n], v[l, n], RTOL * v_scale)
+            agree(f"{at}: a_{n} of link {l}", c.acceleration[l, n], a[l, n], RTOL * a_scale)
         for l in links:
-            np.testing.assert_allclose(c.v_G[l], kin.v_G(l)[i], rtol=0, atol=RTOL * v_scale)
-            np.testing.assert_allclose(c.a_G[l], kin.a_G(l)[i], rtol=0, atol=RTOL * a_scale)
-            assert c.omega[l] == pytest.approx(kin.omega[l][i], rel=0, abs=RTOL * w_scale)
-            assert c.alpha[l] == pytest.approx(kin.alpha[l][i], rel=0, abs=RTOL * al_scale)
+            agree(f"{at}: v_G{l}", c.v_G[l], kin.v_G(l)[i], RTOL * v_scale)
+            agree(f"{at}: a_G{l}", c.a_G[l], kin.a_G(l)[i], RTOL * a_scale)
+            agree(f"{at}: ω{l}", c.omega[l], kin.omega[l][i], RTOL * w_scale)
+            agree(f"{at}: α{l}", c.alpha[l], kin.alpha[l][i], RTOL * al_scale)
         for step in c.steps:
             scale = v_scale if step.polygon == "velocity" else a_scale
             for found in step.points.values() if step.lines else ():
                 for line in step.lines:
                     off = np.subtract(found, line.point)
-                    assert abs(cross(line.direction, off)) <= RTOL * scale, (step.caption, line.name)
+                    assert abs(cross(line.direction, off)) <= RTOL * scale, f"{at}: {step.caption}: off {line.name}"
 
         ic = instant_centres(kin, int(i))
-        assert ic.valid, ic.reason
+        assert ic.valid, f"{at}: instant centres: {ic.reason}"
         for (l, n), value in ic.velocity.items():
-            np.testing.assert_allclose(value, v[l, n], rtol=0, atol=RTOL * v_scale)
+            agree(f"{at}: v_{n} of link {l} from the instant centres", value, v[l, n], RTOL * v_scale)
         for l, w in ic.omega.items():
-            assert w == pytest.approx(kin.omega[l][i], rel=0, abs=RTOL * w_scale)
+            agree(f"{at}: ω{l} from the instant centres", w, kin.omega[l][i], RTOL * w_scale)
         if not ic.missing:
-            assert set(ic.omega) == set(links)
+            assert set(ic.omega) == set(links), f"{at}: the instant centres give ω of {sorted(ic.omega)} only"
         checked += 1
     return checked
 
 
 def forces_from_polygons_equal_analytical(case):
-    """The force route with its inertia loads from the polygons gives the analytical forces and driving effort."""
+    """The force route with its inertia loads from the polygons gives the analytical forces and driving effort.
+
+    To 1e-9 of the position's largest joint force, or of the largest inertia loads the motion's scales give (the
+    polygons' a_G and α are the analytical ones to 1e-9 of those scales, :func:`polygons_equal_analytical`):
+    where every force is 0 in exact arithmetic (a massive gear whose G is on its pivot, and no other load), the
+    analytical route's forces are rounding, ε m ω² |O|, and the polygons' may be exactly 0.
+    """
     mech, q, q_dot, q_ddot = case
     kin = solve_kinematics(mech, q, q_dot, q_ddot)
     r = solve_forces(kin)
     p = solve_forces(kinematics_from_polygons(kin))
+    size = length_scale(mech)
+    m = max(mech.link(l).mass for l in mech.moving)
+    I_G = max(mech.link(l).I_G for l in mech.moving)
     checked = 0
     for i in np.flatnonzero(r.valid):
-        assert p.valid[i], p.reason(i)
-        scale = max(np.abs(r.force(*k)[i]).max() for k in r.forces)
+        at = _at(kin, i)
+        assert p.valid[i], f"{at}: {p.reason(i)}"
+        _, al_scale, _, a_scale = motion_scales(kin, i)
+        scale = max(max(np.abs(r.force(*k)[i]).max() for k in r.forces), m * a_scale + I_G * al_scale / size)
         for key in r.forces:
-            np.testing.assert_allclose(p.force(*key)[i], r.force(*key)[i], rtol=0, atol=RTOL * max(scale, 1e-300))
+            agree(f"{at}: force of {key[0]} on {key[1]} (inertia loads from the polygons)", p.force(*key)[i],
+                  r.force(*key)[i], RTOL * scale + 1e-300)
         effort_scale = max(abs(r.effort[i]), scale * 1e-3)
-        assert p.effort[i] == pytest.approx(r.effort[i], rel=0, abs=10 * RTOL * effort_scale)
+        agree(f"{at}: driving effort {mech.driver.symbol} (inertia loads from the polygons)", p.effort[i],
+              r.effort[i], 10 * RTOL * effort_scale)
         c = construct_forces(p.kinematics, int(i))
-        assert c.valid, c.reason
-        assert c.effort == pytest.approx(r.effort[i], rel=0, abs=10 * RTOL * effort_scale)
+        assert c.valid, f"{at}: {c.reason}"
+        agree(f"{at}: driving effort {mech.driver.symbol} (force polygons on the polygons' inertia loads)", c.effort,
+              r.effort[i], 10 * RTOL * effort_scale)
         checked += 1
     return checked

@@ -17,28 +17,38 @@ Everything else is random too: the overall size (3 cm to 5 m links), where
 each link's own frame sits (a pin is rarely at a link's origin and a bar is
 rarely along its x-axis), masses (zero allowed), centres of mass, moments of
 inertia, external point forces and torques (sometimes acting over part of the
-cycle only), gravity, the assembly branch σ = ±1, Coulomb friction at
-sliders, and (half the time) the numbering of the moving links.
+cycle only), gravity, the input's rates (either sense: clockwise input too),
+the assembly branch σ = ±1, Coulomb friction at sliders, which gear of a mesh
+is listed first, and the numbering of the links (the frame 1 or 0; the moving
+links, half the time, in a random order).
 
 Families (keys of :data:`families`):
 
 ``fourbar``                 Grashof crank-rocker, open or crossed (RRR dyad)
 ``slider_crank``            offset slider-crank, guide at any angle (RRP)
 ``double_slider``           two sliders on non-parallel guides, slider-driven
-``inverted_slider_crank``   block on the crank pin slides on a rocker (RPR)
+``inverted_slider_crank``   block on the crank pin slides on a rocker, a turning guide (RPR)
 ``scotch_yoke``             block on the crank pin in a slotted yoke (RPP)
 ``watt2``                   Watt II: two four-bars in series sharing the rocker
 ``stephenson3``             Stephenson III: RRR dyad from a coupler point to the frame
-``quick_return``            crank-shaper: RPR, then RRP from the rocker to a ram
+``quick_return``            crank-shaper: RPR (a turning guide), then RRP from the rocker to a ram
 ``gear_pair``               two gears pivoted on the frame, load torque on the driven one
-``epicyclic``               a planet on a driven arm, meshing with a fixed sun or annulus (and a sun on the arm's axis)
+``epicyclic``               a planet on the driving arm, meshing with a fixed sun or annulus (and a sun on the arm's axis)
+``annulus``                 an annulus found from its pinion: on the frame, about a driving arm's axis, or on the arm
+``compound_planet``         a planet of two gears on the driving arm, meshing with a fixed gear and a turning one
+``driven_arm``              a planet on an arm that is not the driver: a gear turned by a pinion, or a four-bar's rocker
+``piston_driven``           a slider-crank driven by its slider (RRR), the crank half the time a planet's arm
+
+Graphkin also accepts, and no family draws: a PRP dyad (tests/handout has one). It does not accept an arm found
+from two meshes of its planet (the sun driving, the annulus held, the arm the output: Khurmi's trains are solved
+with the arm as the driver and the sun's torque as a load), so no family draws that.
 """
 
 from __future__ import annotations
 
 import dataclasses
 import math
-from typing import NamedTuple
+from typing import Mapping, NamedTuple
 
 import numpy as np
 from hypothesis import assume
@@ -71,12 +81,65 @@ GRID = 720
 
 
 class Case(NamedTuple):
-    """A drawn example: unpacks as ``mechanism, q, q_dot, q_ddot``."""
+    """A drawn example: unpacks as ``mechanism, q, q_dot, q_ddot``.
+
+    Its repr is the Python that rebuilds it, which is what hypothesis prints for a failing (shrunk) example:
+    paste it into a test after ``from tests.strategies import *`` (which brings ``np``, ``Case`` and the classes
+    of :mod:`graphkin.model`).
+    """
 
     mechanism: Mechanism
     q: np.ndarray
     q_dot: np.ndarray
     q_ddot: np.ndarray
+
+    def __repr__(self):
+        m = self.mechanism
+        lines = ["Case(", "    mechanism=Mechanism("]
+        for name in ("links", "joints", "loads"):
+            lines += [f"        {name}=[", *(f"            {_code(x)}," for x in getattr(m, name)), "        ],"]
+        lines += [f"        {f.name}={_code(getattr(m, f.name))}," for f in dataclasses.fields(m)
+                  if f.name not in ("links", "joints", "loads") and not _default(m, f)]
+        lines.append("    ),")
+        lines += [f"    {name}={_code(getattr(self, name))}," for name in ("q", "q_dot", "q_ddot")]
+        return "\n".join([*lines, ")"])
+
+    def _repr_pretty_(self, p, cycle):
+        """What hypothesis's printer calls: the same Python as the repr."""
+        p.text(repr(self))
+
+
+def _default(obj, f) -> bool:
+    """Whether field ``f`` of dataclass ``obj`` holds its default (the rebuilding code leaves it out)."""
+    default = f.default if f.default_factory is dataclasses.MISSING else f.default_factory()
+    value = getattr(obj, f.name)
+    if default is dataclasses.MISSING or isinstance(value, np.ndarray):
+        return False
+    value = dict(value) if isinstance(value, Mapping) else value
+    return type(value) is type(default) and value == default
+
+
+def _code(value) -> str:
+    """Python source for a value of a case: dataclasses by their fields, floats exactly (repr round-trips)."""
+    if dataclasses.is_dataclass(value) and not isinstance(value, type):
+        args = (f"{f.name}={_code(getattr(value, f.name))}" for f in dataclasses.fields(value)
+                if f.init and not _default(value, f))
+        return f"{type(value).__name__}({', '.join(args)})"
+    if isinstance(value, np.ndarray):
+        return f"np.array({_code(value.tolist())})"
+    if isinstance(value, Mapping):
+        return "{" + ", ".join(f"{_code(k)}: {_code(v)}" for k, v in value.items()) + "}"
+    if isinstance(value, tuple):
+        return "(" + ", ".join(map(_code, value)) + (",)" if len(value) == 1 else ")")
+    if isinstance(value, list):
+        return "[" + ", ".join(map(_code, value)) + "]"
+    if isinstance(value, (bool, np.bool_)):
+        return repr(bool(value))
+    if isinstance(value, (int, np.integer)):
+        return repr(int(value))
+    if isinstance(value, (float, np.floating)):
+        return repr(float(value))
+    return repr(value)
 
 
 # --------------------------------------------------------------------------
@@ -313,19 +376,21 @@ def _case(draw, mech, q_range, periodic, scale):
 
 
 def _numbering(draw, moving):
-    """Half the time, a random renumbering of the moving links (2…9, any order).
+    """A numbering of the links as books give it: the frame 1 or 0, the moving links from the next number up, in
+    order or (half the time) in a random order.
 
-    So the driver need not be link 2, and which link of a pair has the lower
-    number (the sign convention of ``F_ij``, ``N``, ``C``) varies.
+    So every name follows the frame's number (``T12`` or ``T01``), the driver need not be the first moving link,
+    and which link of a pair has the lower number (the sign convention of ``F_ij``, ``N``, ``C``) varies.
     """
-    if not draw(st.booleans()):
-        return {n: n for n in (FRAME, *moving)}
-    new = draw(st.permutations(range(2, 10)))[: len(moving)]
-    return {FRAME: FRAME, **dict(zip(moving, new))}
+    frame = draw(st.sampled_from((FRAME, 0)))
+    numbers = list(range(frame + 1, frame + 9))
+    if draw(st.booleans()):
+        numbers = draw(st.permutations(numbers))
+    return {FRAME: frame, **dict(zip(moving, numbers))}
 
 
 def _relabel(mech: Mechanism, m) -> Mechanism:
-    """The same mechanism with link n renumbered m[n]."""
+    """The same mechanism with link n renumbered m[n] (the frame, link 1, too)."""
     links = [dataclasses.replace(l, number=m[l.number], points=dict(l.points)) for l in mech.links]
     joints = []
     for j in mech.joints:
@@ -337,7 +402,7 @@ def _relabel(mech: Mechanism, m) -> Mechanism:
                                                             if isinstance(load, SpringForce) else {}))
              for load in mech.loads]
     driver = Driver(m[mech.driver.link], mech.driver.kind)
-    return Mechanism(links, joints, driver, loads, mech.gravity, dict(mech.assembly), mech.title)
+    return Mechanism(links, joints, driver, loads, mech.gravity, dict(mech.assembly), mech.title, frame=m[FRAME])
 
 
 def _finish(draw, links, joints, driver, assembly, q_range, periodic, scale, title, loads=(), numbering=None):
@@ -695,6 +760,163 @@ def _pressure_angle(draw):
     return draw(st.one_of(st.just(0.0), st.just(math.radians(20)), _floats(0.0, math.radians(30))))
 
 
+def _mesh(draw, gears, centres, radii, internal=False):
+    """A mesh of ``gears`` (pivoted at ``centres``, of pitch ``radii``), the two listed in a random order: which gear
+    comes first must not matter."""
+    if draw(st.booleans()):
+        gears, centres, radii = gears[::-1], centres[::-1], radii[::-1]
+    return GearMesh(tuple(gears), tuple(centres), tuple(radii), _pressure_angle(draw), internal=internal)
+
+
+def _gear(draw, number, centre, scale, name):
+    """A gear: a link whose pivot ``centre`` sits anywhere in its own frame, as a pin elsewhere on a link would."""
+    return _local_link(draw, number, {centre: _point(draw, scale, 0.3)}, scale, name)
+
+
+def _planet_train(draw, scale, arm, pivot, a, planet, output=True, fixed=None, out=None, compound=False):
+    """A planet ``planet`` pinned at C of link ``arm``, ``a`` [m] from the arm's ``pivot`` on the frame.
+
+    The planet meshes with a sun or an annulus (``fixed``, random if None) fixed to the frame about the pivot; with
+    ``output``, also with a gear turning about the pivot (``out``: a sun or an annulus), found from the planet: of
+    the other kind than the fixed one, or of either kind with a ``compound`` planet, which carries a second gear of
+    its own radius for that mesh. Returns (links, joints, loads): the planet and output gear, their pins and meshes,
+    and a load torque on the last gear.
+    """
+    fixed = fixed or draw(st.sampled_from(("sun", "annulus")))
+    r1 = draw(_floats(0.15, 0.7)) * a
+    links = [_gear(draw, planet, "C", scale, "compound planet" if compound else "planet")]
+    ring = fixed == "annulus"
+    joints = [Revolute((arm, planet), "C"),
+              _mesh(draw, (planet, FRAME), ("C", pivot), (r1, a + r1 if ring else a - r1), ring)]
+    last = planet
+    if output:
+        r2 = draw(_floats(0.15, 0.7)) * a if compound else r1
+        if out is None:
+            out = draw(st.sampled_from(("sun", "annulus"))) if compound else "sun" if ring else "annulus"
+        ring = out == "annulus"
+        last = planet + 1
+        links.append(_gear(draw, last, pivot, scale, out))
+        joints += [Revolute((FRAME, last), pivot),
+                   _mesh(draw, (last, planet), (pivot, "C"), (a + r2 if ring else a - r2, r2), ring)]
+    return links, joints, [Torque(last, draw(_floats(-200, 200)) * scale, name="output load")]
+
+
+@st.composite
+def annulus(draw, friction=None):
+    """An annulus (internal gear) found from the pinion inside it, as issue 35 met it, loaded by a torque.
+
+    Where it turns: on the frame, about a pinion 2 also on the frame (the pinion drives, or half the time the
+    annulus); about the frame pivot O of a driving arm 2 whose planet 3 meshes with a sun fixed about O; or
+    pivoted on that arm itself at D, beside the planet (which meshes with a fixed sun or annulus).
+    """
+    scale = draw(_scales)
+    where = draw(st.sampled_from(("frame", "arm's axis", "arm")))
+    O = _point(draw, scale)
+    if where == "frame":
+        r = draw(_floats(0.1, 0.5)) * scale
+        R = r * draw(_floats(1.3, 4.0))
+        links = [Link(1, {"O2": _t(O), "O3": _t(O + (R - r) * _u(draw(_angles)))}),
+                 _gear(draw, 2, "O2", scale, "pinion"), _gear(draw, 3, "O3", scale, "annulus")]
+        joints = [Revolute((1, 2), "O2"), Revolute((1, 3), "O3"), _mesh(draw, (2, 3), ("O2", "O3"), (r, R), True)]
+        driver = draw(st.sampled_from((2, 3)))
+        loads = [Torque(5 - driver, draw(_floats(-200, 200)) * scale, name="load")]
+        return _finish(draw, links, joints, Driver(driver), {}, (0.0, TWO_PI), True, scale, "internal gear pair",
+                       loads=loads)
+    a = draw(_floats(0.3, 1.0)) * scale
+    if where == "arm's axis":
+        arm = _link(draw, 2, {"O": (0, 0), "C": (a, 0)}, scale, "arm")
+        gears, joints, loads = _planet_train(draw, scale, 2, "O", a, 3, fixed="sun", out="annulus")
+    else:
+        gears, joints, _ = _planet_train(draw, scale, 2, "O", a, 3, output=False)
+        rp = joints[1].radius(3)
+        R = rp * draw(_floats(1.3, 4.0))
+        D = np.array([a, 0.0]) + (R - rp) * _u(draw(_angles))
+        assume(np.hypot(*D) > 0.1 * a)  # D away from the arm's pivot O
+        arm = _link(draw, 2, {"O": (0, 0), "C": (a, 0), "D": _t(D)}, scale, "arm")
+        gears.append(_gear(draw, 4, "D", scale, "annulus"))
+        joints += [Revolute((2, 4), "D"), _mesh(draw, (3, 4), ("C", "D"), (rp, R), True)]
+        loads = [Torque(4, draw(_floats(-200, 200)) * scale, name="annulus load")]
+    links = [Link(1, {"O": _t(O)}), arm, *gears]
+    return _finish(draw, links, [Revolute((1, 2), "O"), *joints], Driver(2), {}, (0.0, TWO_PI), True, scale,
+                   "annulus on an arm", loads=loads)
+
+
+@st.composite
+def compound_planet(draw, friction=None):
+    """Arm 2 drives about O; planet 3 on it carries two gears of their own radii, one meshing with a sun or annulus
+    fixed about O, the other with a sun or annulus 4 turning about O (found from the planet), loaded by a torque."""
+    scale = draw(_scales)
+    a = draw(_floats(0.3, 1.0)) * scale
+    arm = _link(draw, 2, {"O": (0, 0), "C": (a, 0)}, scale, "arm")
+    gears, joints, loads = _planet_train(draw, scale, 2, "O", a, 3, compound=True)
+    links = [Link(1, {"O": _t(_point(draw, scale))}), arm, *gears]
+    return _finish(draw, links, [Revolute((1, 2), "O"), *joints], Driver(2), {}, (0.0, TWO_PI), True, scale,
+                   "compound planet", loads=loads)
+
+
+@st.composite
+def driven_arm(draw, friction=None):
+    """A planet on an arm that is not the driver: the arm a gear 3 turned by a driving pinion 2 (outside it, or
+    inside it: the arm an annulus), or the rocker 4 of a crank-rocker. The planet meshes with a sun or annulus fixed
+    about the arm's pivot, and half the time with a gear of the other kind turning about it."""
+    scale = draw(_scales)
+    if draw(st.booleans()):
+        r2 = draw(_floats(0.1, 0.5)) * scale
+        internal = draw(st.booleans())
+        R3 = r2 * draw(_floats(1.3, 3.0)) if internal else draw(_floats(0.2, 1.0)) * scale
+        O = _point(draw, scale)
+        O2 = O + (R3 - r2 if internal else R3 + r2) * _u(draw(_angles))
+        a = draw(_floats(0.3, 1.0)) * scale
+        frame = {"O2": _t(O2), "O": _t(O)}
+        moving = [_gear(draw, 2, "O2", scale, "pinion"), _link(draw, 3, {"O": (0, 0), "C": (a, 0)}, scale, "arm")]
+        joints = [Revolute((1, 2), "O2"), Revolute((1, 3), "O"), _mesh(draw, (2, 3), ("O2", "O"), (r2, R3), internal)]
+        arm, pivot, assembly = 3, "O", {}
+    else:
+        C = _extra_point(draw, scale)
+        a = math.hypot(*C)
+        frame, moving, joints = _fourbar_parts(draw, scale, rocker_extra={"C": C})
+        arm, pivot, assembly = 4, "O4", {"B": draw(_sigma)}
+    gears, more, loads = _planet_train(draw, scale, arm, pivot, a, arm + 1, output=draw(st.booleans()))
+    links = [Link(1, frame), *moving, *gears]
+    return _finish(draw, links, [*joints, *more], Driver(2), assembly, (0.0, TWO_PI), True, scale,
+                   "planet on a driven arm", loads=loads)
+
+
+@st.composite
+def piston_driven(draw, friction=None):
+    """An offset slider-crank driven by its slider 4 (an engine's piston), the crank 2 and rod 3 found as an RRR
+    dyad, over the stroke on one side of the crank's pivot, away from the dead centres; half the time the crank is
+    also the arm of a planet meshing with a sun or annulus fixed about the crank's pivot (and perhaps a gear turning
+    about it)."""
+    scale = draw(_scales)
+    r = draw(_floats(0.2, 1.0)) * scale
+    e = r * draw(_floats(-0.8, 0.8))
+    l = (r + abs(e)) * draw(_floats(1.4, 3.0))
+    O2 = _point(draw, scale)
+    phi = draw(_angles)
+    C = _extra_point(draw, scale) if draw(st.booleans()) else None
+    crank = _link(draw, 2, {"O2": (0, 0), "A": (r, 0), **({"C": C} if C else {})}, scale, "crank")
+    coupler = _link(draw, 3, {"A": (0, 0), "B": (l, 0)}, scale, "connecting rod")
+    F = O2 + e * _n(phi)  # the foot of the perpendicular from O2 to the line of the piston's pin B
+    piston, guide, S = _slider(draw, 4, phi, F, scale, friction)
+    piston = _rename(piston, "D", "B")
+    # q is the slider point's place from S along the guide; the pin B is then at F + (q + t) u.
+    w = _rot(np.subtract(piston.point(guide.point), piston.point("B")), phi - guide.slider_direction)
+    t = float(np.dot(S - F - w, _u(phi)))
+    # The stroke on one side, crank and rod at 30° to 150° (|F B|² = r² + l² − 2 r l cos γ − e²): near a dead centre
+    # the crank's angle goes as the root of the piston's travel, and its rates grow without bound.
+    near, far = (math.sqrt(r * r + l * l - 2 * r * l * c - e * e) for c in (math.cos(math.pi / 6), -math.cos(math.pi / 6)))
+    q_range = draw(st.sampled_from(((near - t, far - t), (-far - t, -near - t))))
+    links = [Link(1, {"O2": _t(O2), "S": _t(S)}), crank, coupler, piston]
+    joints = [Revolute((1, 2), "O2"), Revolute((2, 3), "A"), Revolute((3, 4), "B"), guide]
+    loads = []
+    if C:
+        gears, more, loads = _planet_train(draw, scale, 2, "O2", math.hypot(*C), 5, output=draw(st.booleans()))
+        links, joints = [*links, *gears], [*joints, *more]
+    return _finish(draw, links, joints, Driver(4, "slider"), {"A": draw(_sigma)}, q_range, False, scale,
+                   "piston-driven slider-crank", loads=loads)
+
+
 _builders = {
     "fourbar": fourbar,
     "slider_crank": slider_crank,
@@ -706,6 +928,10 @@ _builders = {
     "quick_return": quick_return,
     "gear_pair": gear_pair,
     "epicyclic": epicyclic,
+    "annulus": annulus,
+    "compound_planet": compound_planet,
+    "driven_arm": driven_arm,
+    "piston_driven": piston_driven,
 }
 
 families = {name: build() for name, build in _builders.items()}
@@ -713,15 +939,19 @@ families = {name: build() for name, build in _builders.items()}
 
 friction_families = {
     name: _builders[name](friction=True)
-    for name in ("slider_crank", "double_slider", "inverted_slider_crank", "scotch_yoke", "quick_return")
+    for name in ("slider_crank", "double_slider", "inverted_slider_crank", "scotch_yoke", "quick_return",
+                 "piston_driven")
 }
 """The families with sliders, every slider with Coulomb friction μ > 0."""
 
 frictionless_families = {name: build(friction=False) for name, build in _builders.items()}
 """Every family with friction-free sliders."""
 
-crank_families = [name for name in families if name != "double_slider"]
-"""Families driven by a fully rotating crank."""
+crank_families = [name for name in families if name not in ("double_slider", "piston_driven")]
+"""Families driven by a fully rotating crank (the others by a slider)."""
+
+gear_families = ["gear_pair", "epicyclic", "annulus", "compound_planet", "driven_arm"]
+"""Families with gears in every mechanism (a gear's period is not one turn of the input)."""
 
 cases = st.one_of(*families.values())
 """Any family."""

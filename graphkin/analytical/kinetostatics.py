@@ -29,6 +29,7 @@ from dataclasses import replace
 import numpy as np
 
 from graphkin.analytical.loads import _external_fast, _inertia_fast, _known, load_specs, springs_without_a_line
+from graphkin.analytical.meshes import contact, power_flow
 from graphkin.analytical.result import ForceAnalysis
 from graphkin.errors import GraphkinError
 from graphkin.geometry import zcross as cross
@@ -149,34 +150,18 @@ def _driver(kin: Kinematics, g: DriverGroup, L, M):
     return [_Reactions(J, link, G, X, C, N)], P
 
 
-def pitch(mesh, k, Ck, Cj):
-    """The pitch point of a mesh, and the unit vectors of gear k's tooth force there, from the centres of k and j.
-
-    Returns ``(P, t, r)``: the pitch point [m], the tangent t along which a positive tangential force turns k
-    counter-clockwise about Ck, and the radial direction r of the separating part of the tooth force on k. With
-    e the unit vector from k's centre to j's: external, P = Ck + r_k e and r = −e (each gear is pushed away from
-    the other); internal, the pitch point lies beyond the pinion's centre on the annulus's side (P = Ck + r_k e
-    for the annulus, Ck − r_k e for the pinion) and r = +e (the pinion is pushed towards the annulus's centre,
-    the annulus away from it).
-    """
-    rk = mesh.radius(k)
-    e = (Cj - Ck) / np.abs(Cj - Ck)
-    out = -1.0 if mesh.internal and k != mesh.ring else 1.0  # which way from Ck the pitch point lies, along e
-    return Ck + out * rk * e, out * 1j * e, e if mesh.internal else -e
-
-
 def _gear(kin: Kinematics, g: GearGroup, L, M):
     mesh = g.mesh
-    rk = mesh.radius(g.k)
     Ck = kin.z(g.b, g.ck)
     Cj = kin.z(g.b, g.cj)
-    P, t, r = pitch(mesh, g.k, Ck, Cj)
-    # The tooth force's tangential part balances k's moment about its centre;
-    # its radial part, |W_t| tan φ, separates the teeth.
-    W_t = -(M[g.k] - cross(Ck, L[g.k])) / rk
+    # The tooth force's moment on k balances k's other loads about its centre; its tangential part is that over
+    # the arm, and its radial part, |W_t| tan φ, separates the teeth.
+    T = -(M[g.k] - cross(Ck, L[g.k]))
+    X, t, r, rho = contact(mesh, g.k, Ck, Cj, power_flow(kin, g, T))
+    W_t = T / rho
     W = W_t * t + np.abs(W_t) * np.tan(mesh.pressure_angle) * r
     F = -L[g.k] - W
-    return [_Reactions(mesh, g.k, W, P), _Reactions(g.pivot, g.k, F, Ck)]
+    return [_Reactions(mesh, g.k, W, X), _Reactions(g.pivot, g.k, F, Ck)]
 
 
 def _friction_joints(d: Dyad):

@@ -9,7 +9,9 @@ holds the known loads moved across: m a_G − ΣF_ext, I_G α − ΣM_ext.
 
 Where a coefficient depends on the sign of an unknown — Coulomb friction
 (μ|N|) or the flank a gear tooth pushes on — the sign is taken from the
-closed-form solution, as the seeds do with F14x = ±μF14y and F32x = c F32y.
+closed-form solution, as the seeds do with F14x = ±μF14y and F32x = c F32y; so is
+the side of a mesh with an efficiency that loses power, which moves its tooth
+force's line off the pitch point (:func:`graphkin.analytical.meshes.contact`).
 The lessons display this system; the tests check that solving it gives the
 same answer as :func:`graphkin.analytical.solve_forces`.
 """
@@ -20,10 +22,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from graphkin.analytical.kinetostatics import _w, pitch
+from graphkin.analytical.kinetostatics import _w
 from graphkin.analytical.loads import known_loads
+from graphkin.analytical.meshes import contact, pitch, power_flow
 from graphkin.analytical.result import ForceAnalysis
-from graphkin.geometry import as_xy, cross
+from graphkin.geometry import as_xy, as_z, cross
+from graphkin.geometry import zdot as dot
+from graphkin.kinematics import GearGroup
 from graphkin.model import GearMesh, Prismatic, Revolute
 
 
@@ -140,10 +145,15 @@ def assemble(result: ForceAnalysis) -> System:
             size = np.linalg.norm(F, axis=-1)
             centre = kin.z(hi, joint.centers[joint.links.index(hi)])
             other = kin.z(lo, joint.centers[joint.links.index(lo)])
-            P, t, _ = pitch(joint, hi, centre, other)
+            t = pitch(joint, hi, centre, other)[1]
+            # Where the tooth force acts: the pitch point, or off it with a mesh efficiency, on the side the power
+            # flows (from the closed form's force on the gear its group locates, relative to its carrier).
+            g = next(g for g in kin.groups if isinstance(g, GearGroup) and g.mesh is joint)
+            Ck, Cj = kin.z(g.b, g.ck), kin.z(g.b, g.cj)
+            on_k = as_z(result.force(g.j, g.k))
+            X = as_xy(contact(joint, g.k, Ck, Cj, power_flow(kin, g, dot(on_k, pitch(joint, g.k, Ck, Cj)[1])))[0])
             # Unit direction of the tooth force on hi (its tangent where it vanishes).
             d = np.where(size[:, None] > 0, F / np.where(size > 0, size, 1.0)[:, None], as_xy(t))
-            X = as_xy(P)
             put(hi, c, d, X)
             put(lo, c, -d, X)
             unknowns.append(f"F{name}")

@@ -22,7 +22,7 @@ import numpy as np
 from graphkin.analytical.loads import applied, inertia
 from graphkin.errors import GraphkinError
 from graphkin.kinematics import Kinematics, solve_kinematics
-from graphkin.model import PointForce, Prismatic
+from graphkin.model import GearMesh, PointForce, Prismatic
 
 
 def load_powers(kin: Kinematics) -> dict[str, np.ndarray]:
@@ -92,8 +92,9 @@ def effort_by_virtual_work(kin: Kinematics) -> np.ndarray:
     Raises
     ------
     GraphkinError
-        If a sliding pair has friction: its power needs the normal force, a
-        joint force, which is what virtual work leaves out.
+        If a sliding pair has friction, or a gear mesh an efficiency below 1:
+        the power they lose needs a joint force, which is what virtual work
+        leaves out.
 
     Notes
     -----
@@ -113,6 +114,9 @@ def effort_by_virtual_work(kin: Kinematics) -> np.ndarray:
         if isinstance(joint, Prismatic) and joint.mu:
             raise GraphkinError(f"virtual work: the slider {joint.slider} on {joint.guide} has friction "
                                 f"(mu = {joint.mu:g}); its power needs the normal force, so solve the joint forces")
+        if isinstance(joint, GearMesh) and joint.efficiency < 1:
+            raise GraphkinError(f"virtual work: the {joint.label} has an efficiency of {joint.efficiency:g}; the "
+                                "power it loses needs its tooth force, so solve the joint forces")
     moving = _moving(kin)
     total = sum(load_powers(moving).values(), np.zeros(moving.n))
     with np.errstate(divide="ignore", invalid="ignore"):

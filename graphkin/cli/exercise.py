@@ -26,7 +26,8 @@ from graphkin.files import check_destination, json_text, read_text, write_text
 
 def add_parser(sub) -> None:
     """Add ``exercise`` and its subcommands to the ``graphkin`` parser."""
-    e = sub.add_parser("exercise", help="exercises with per-student data: list, make, key, grade, export")
+    e = sub.add_parser("exercise", help="exercises with per-student data: list, make, key, grade, collect, strip, "
+                       "export")
     esub = e.add_subparsers(dest="action", required=True)
     esub.add_parser("list", help="list the catalog exercises")
     for action, text in (("make", "a student's data and questions (no answers)"),
@@ -56,10 +57,19 @@ def add_parser(sub) -> None:
                                 "assignment's, as nbgrader lays out submitted/<student>/<assignment>/ (then the "
                                 "notebook's STUDENT must match it)")
             a.add_argument("--reveal", action="store_true", help="show the expected value of every question")
+            a.add_argument("--feedback", choices=("parts", "distance"),
+                           help="what a wrong answer is told (default: the exercise's feedback): 'distance' adds how "
+                                "far off it is, which gives the answer away (e.g. for a regrade after the due date)")
     c = esub.add_parser("collect", help="one class table from the results.json files of otter run (or Gradescope)")
     c.add_argument("results", nargs="+", metavar="PATH", help="results.json files, or folders holding them")
     c.add_argument("--json", action="store_true", help="print plain data as JSON")
     c.add_argument("-o", "--output", metavar="FILE", help="write to FILE instead of standard output")
+    s = esub.add_parser("strip", help="for otter run: each hand-in (a notebook, or otter's zip) as a notebook of "
+                        "its code cells' text only, nothing that was beside it; what else it held is named")
+    s.add_argument("exercise", help="catalog name or path to the exercise file the export carried")
+    s.add_argument("handins", nargs="+", metavar="HANDIN", help="the hand-ins: notebooks, otter's zips, or folders")
+    s.add_argument("-o", "--output", required=True, metavar="DIR",
+                   help="the folder to write <hand-in>.ipynb into (made if missing)")
     x = esub.add_parser("export", help="everything a grading platform needs: otter-grader, nbgrader, "
                         "PrairieLearn or Gradescope")
     x.add_argument("exercise", help="catalog name (see 'graphkin exercise list') or path to an exercise file")
@@ -104,6 +114,8 @@ def _run(args) -> int:
         return _export(args)
     if args.action == "collect":
         return _collect(args)
+    if args.action == "strip":
+        return _strip(args)
     if args.output:
         check_destination(args.output, "-o")
     figure = getattr(args, "figure", None)
@@ -136,7 +148,7 @@ def _export(args) -> int:
     from graphkin.exercises import platforms
     from graphkin.exercises.roster import read_roster
 
-    platforms.platform(args.to)
+    module = platforms.platform(args.to)
     secret = _secret(args)
     students = read_roster(args.roster) if args.roster else None
     with _progress(len(students or ()), "export") as bar:
@@ -144,6 +156,8 @@ def _export(args) -> int:
                                    progress=bar.update)
     print(f"{len(written)} files written to {args.output}; next: see {Path(args.output) / 'README.md'}",
           file=sys.stderr)
+    for note in getattr(module, "NOTES", ()):
+        _note(f"{args.to}: {note}")
     return 0
 
 
@@ -235,6 +249,7 @@ def _grade(ex, args, secret) -> int:
     from graphkin.exercises.sheets import format_report
 
     reveal = True if args.reveal else None
+    feedback = args.feedback
     keys = _keys(ex, args.keys) if args.keys else None
     files = args.answers
     if args.student:
@@ -242,17 +257,19 @@ def _grade(ex, args, secret) -> int:
             raise GraphkinError("--answers: with --student, give one JSON file of that student's answers")
         answers = _answers_json(files[0])
         v = keys.variant(args.student) if keys else exercises.variant(ex, args.student, secret)
-        report = grade_variant(v, answers, reveal=reveal, classmates=keys.classmates() if keys else None)
+        report = grade_variant(v, answers, reveal=reveal, classmates=keys.classmates() if keys else None,
+                               feedback=feedback)
         text = json_text(report) if args.json else format_report(report)
         _emit(text, args.output)
         return 0
     roster = read_roster(args.roster) if args.roster else None
-    if all(str(f).lower().endswith(".ipynb") for f in files):
+    if all(str(f).lower().endswith((".ipynb", ".zip")) for f in files):
         subs = _notebook_submissions(ex, files, args.student_from)
     elif len(files) == 1:
         subs = _csv_submissions(files[0], roster)
     else:
-        raise GraphkinError("--answers: give one CSV of the class's answers, or handed-in notebooks (.ipynb)")
+        raise GraphkinError("--answers: give one CSV of the class's answers, or handed-in notebooks (.ipynb, or "
+                            "otter's .zip)")
     class_ids = roster if roster is not None else list(dict.fromkeys(s["student"] for s in subs))
     if keys is None:
         # The class's keys, made here with the secret: the same grade as the platform's, which carried them.
@@ -264,7 +281,7 @@ def _grade(ex, args, secret) -> int:
     with _progress(len(subs), "grading") as bar:
         reports = []
         for sub in subs:
-            reports.append(_graded(keys, sub, reveal))
+            reports.append(_graded(keys, sub, reveal, feedback))
             bar.update(1)
     text = json_text(reports) if args.json else _csv(_report_rows(reports))
     _emit(text, args.output)
@@ -281,17 +298,20 @@ def _keys(ex, path):
     return keys
 
 
-def _graded(keys, sub: dict, reveal) -> dict:
+def _graded(keys, sub: dict, reveal, feedback) -> dict:
     from graphkin.exercises.grading import grade_variant
-    from graphkin.exercises.platforms.isolated import grade_one
+    from graphkin.exercises.handins import REFUSALS
+    from graphkin.exercises.platforms.isolated import grade_one, refused
 
+    if sub.get("refused"):  # a hand-in that cannot be read: its row, with why
+        return refused(keys.exercise, sub["student"], REFUSALS[sub["refused"]])
     if "claimed" in sub:  # a notebook: refused, with a sentence, if its id is not usable or not the graded one's
-        return grade_one(keys, sub["student"], sub["answers"], sub["claimed"], reveal=reveal)
+        return grade_one(keys, sub["student"], sub["answers"], sub["claimed"], reveal=reveal, feedback=feedback)
     try:
         variant = keys.variant(sub["student"])
     except GraphkinError as exc:
         return {"student": sub["student"], "error": str(exc)}
-    return grade_variant(variant, sub["answers"], reveal=reveal, classmates=keys.classmates())
+    return grade_variant(variant, sub["answers"], reveal=reveal, classmates=keys.classmates(), feedback=feedback)
 
 
 def _csv_submissions(path, roster) -> list[dict]:
@@ -316,22 +336,30 @@ def _csv_submissions(path, roster) -> list[dict]:
 
 
 def _notebook_submissions(ex, files, student_from: str) -> list[dict]:
-    """Each handed-in notebook read as data: whom it is graded as, the id it carries, its answers."""
-    from graphkin.exercises.notebooks import answer_variables, notebook_answers, read_notebook
+    """Each hand-in (a notebook, or otter's zip) read as data: whom it is graded as, the id it carries, its
+    answers; or why it cannot be read. What else a zip holds is named, never opened."""
+    from graphkin.exercises.handins import read_handin
+    from graphkin.exercises.notebooks import answer_variables
 
     names = answer_variables([q.id for q in ex.questions])
     subs = []
     for f in files:
-        claimed, answers = notebook_answers(read_notebook(f), names)
+        handin = read_handin(f, names, notebook=f"{ex.id}.ipynb")
+        if handin.ignored:
+            _note(f"{f}: not read: {', '.join(handin.ignored)}")
+        if handin.refused:
+            _note(f"{f}: not graded: {handin.reason}")
+        claimed = handin.claimed
         if student_from == "folder":
-            # nbgrader's submitted/<student>/<assignment>/<notebook>.ipynb
-            parts = Path(f).resolve().parts
+            # nbgrader's submitted/<student>/<assignment>/<notebook>.ipynb (not resolved: the file may be a link)
+            parts = Path(os.path.abspath(f)).parts
             if len(parts) < 3:
                 raise GraphkinError(f"--student-from folder: {f} is not in <student>/<assignment>/")
-            subs.append({"student": parts[-3], "claimed": claimed, "answers": answers, "file": str(f)})
+            student = parts[-3]
         else:
-            subs.append({"student": claimed if isinstance(claimed, str) else "", "claimed": claimed,
-                         "answers": answers, "file": str(f)})
+            student = claimed if isinstance(claimed, str) else ""
+        subs.append({"student": student, "claimed": claimed, "answers": handin.answers, "file": str(f),
+                     "refused": handin.refused})
     return subs
 
 
@@ -350,6 +378,21 @@ def _report_rows(reports) -> list[dict]:
                 row[f"{q['id']} expected"] = q["expected"]
         flat.append(row)
     return flat
+
+
+def _strip(args) -> int:
+    from graphkin.exercises.platforms import otter
+
+    done = otter.strip(args.exercise, args.handins, args.output)
+    for path, handin in done:
+        if handin.ignored:
+            _note(f"{path.name}: handed in beside the notebook, not carried: {', '.join(handin.ignored)}")
+        if handin.grade_ids:
+            _note(f"{path.name}: grade cells of the student's own, carried as text only: {otter.grade_cells(handin)}")
+        if handin.refused:
+            _note(f"{path.name}: not graded: {handin.reason}")
+    print(f"{len(done)} notebook{'s' if len(done) != 1 else ''} written to {args.output}", file=sys.stderr)
+    return 0
 
 
 def _collect(args) -> int:

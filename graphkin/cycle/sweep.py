@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING, Mapping
 import numpy as np
 
 from graphkin.analytical import ForceAnalysis
-from graphkin.analytical.kinetostatics import pitch
+from graphkin.analytical.meshes import pitch
 from graphkin.cycle._sampling import (
     SWITCH,
     Peak,

@@ -202,7 +202,7 @@ def joint_forces(c):
 
     ``F23`` is the force of link 2 on link 3 at their joint, as the reports
     name it; a sliding pair's force is at its slider point, a mesh's at its
-    pitch point.
+    pitch point (off it, on the line of centres, with a mesh efficiency).
     """
     out = []
     for joint in c.mechanism.joints:
@@ -210,7 +210,7 @@ def joint_forces(c):
         if isinstance(joint, Prismatic):
             at = c.points[joint.slider][joint.point]
         elif isinstance(joint, GearMesh):
-            at = c.pitch_points[(lo, hi)]
+            at = c.contacts[(lo, hi)]
         else:
             at = c.points[hi][joint.point]
         out.append((force_name(c.mechanism, lo, hi), np.asarray(c.force(lo, hi), float), np.asarray(at, float) * MM))

@@ -86,24 +86,27 @@ def key(exercise: str | Exercise, student: str, secret: str = "") -> dict:
 
 
 def grade(exercise: str | Exercise, student: str, answers, secret: str = "", *, reveal: bool | None = None,
-          classmates=None) -> dict:
+          classmates=None, feedback: str | None = None) -> dict:
     """Grade a student's answers (question id → text as typed) to their variant.
 
     Returns plain data: ``score``, ``max`` and per question the verdict
     (``correct``, ``slip``, ``wrong``, ``unreadable``, ``missing``), the slip
     diagnosed, the points and a sentence of feedback; the expected value only
     where the exercise (or ``reveal``) allows it. With ``classmates`` (the
-    class's ids), an answer that fits another student's data earns nothing and
-    is named as such (slip ``other_data``; ``other`` names the classmate).
+    class's ids), answers that fit another student's data (two of them, on a sheet
+    of several questions) earn nothing and are named as such (slip ``other_data``;
+    ``other`` names the classmate). ``feedback`` (``"parts"`` or ``"distance"``)
+    overrides the exercise's: whether a wrong answer is told how far off it is.
     """
     ex = load(exercise)
     if classmates is not None and not isinstance(classmates, Classmates):
         classmates = Classmates({s: {q.id: v.expected(q).value for q in ex.questions if v.expected(q).undefined is None}
                                  for s, v in ((s, make_variant(ex, s, secret)) for s in classmates)})
-    return grade_variant(variant(ex, student, secret), answers, reveal=reveal, classmates=classmates)
+    return grade_variant(variant(ex, student, secret), answers, reveal=reveal, classmates=classmates, feedback=feedback)
 
 
-def check(exercise: str | Exercise, student: str, answers, secret: str = "", *, reveal: bool | None = None) -> str:
+def check(exercise: str | Exercise, student: str, answers, secret: str = "", *, reveal: bool | None = None,
+          feedback: str | None = None) -> str:
     """Grade answers and return the feedback as text, one line per question (for a notebook cell).
 
     Examples
@@ -111,7 +114,7 @@ def check(exercise: str | Exercise, student: str, answers, secret: str = "", *, 
     >>> print(check("single_link", "s001", {"T12": "4.531 N*m CW"}).splitlines()[1])
     F12: missing — No answer was given for F12.
     """
-    report = grade(exercise, student, answers, secret, reveal=reveal)
+    report = grade(exercise, student, answers, secret, reveal=reveal, feedback=feedback)
     lines = [f"{report['exercise']} (student {report['student']}): {report['score']:g} / {report['max']:g} points"]
     for q in report["questions"]:
         slip = f" ({q['slip'].replace('_', ' ')})" if q["slip"] else ""

@@ -59,7 +59,8 @@ Rules:
   to write the answer): empty text; anything but a string or a real number
   (``None``, ``True``, lists, ...); more than :data:`MAX_CHARS` characters;
   a decimal comma where the exercise reads none (``decimal_comma=False``),
-  and an ambiguous one (``"1,352"``) either way; unknown units (named); two
+  and an ambiguous one (``"1,352"``) either way (``"0,799"`` is not: no
+  thousands separator follows a 0); unknown units (named); two
   numbers where one is expected; anything that is not a number first (``"__import__('os')"``);
   ``nan``, ``inf`` and numbers too large for a float, in the text or once in
   SI; a power of a power (``"m^2^3"``, ``"9**9**9"``) and powers of three
@@ -180,7 +181,9 @@ _NOT_FINITE_RE = re.compile(r"[+-]? ?(?:nan|inf(?:inity)?)(?![^\W\d_])", re.IGNO
 _DECIMAL_COMMA_RE = re.compile(r"\d,\d")
 # A number written with commas: "1,29", "1,352", "12,345,678", "12,352.5".
 _COMMA_NUMBER_RE = re.compile(r"(?<![\w.,])\d+(?:,\d+)+(?:\.\d+)?(?:[eE][+-]?\d+)?(?![\w,])")
-_THOUSANDS_RE = re.compile(r"\d{1,3}(?:,\d{3})+(?:\.\d+)?")
+# Thousands separated by commas: a first group of one to three digits that does not start with 0 ("0,799" and
+# "1234,567" are decimal commas), then groups of three.
+_THOUSANDS_RE = re.compile(r"[1-9]\d{0,2}(?:,\d{3})+(?:\.\d+)?")
 # Spaces around operators go; a space left between two units multiplies.
 _OPERATOR_SPACES_RE = re.compile(r" ?([*/^()]) ?")
 _EXPONENT_RE = re.compile(r"(?:\^|\*\*)[+-]?\d+(?:\.\d+)?")
@@ -629,7 +632,7 @@ def _commas(text: str, ctx: _Context) -> str:
         if number.count(",") > 1 or "." in number:
             return m[0]  # a list of numbers, not one: the caller says how to write a vector
         whole, frac = number.split(",")
-        if len(frac) == 3 and not exponent:
+        if _THOUSANDS_RE.fullmatch(number) and not exponent:
             if ctx.comma:
                 raise ctx.fail(f'"{number}" could be {whole}.{frac} or {plain}: write {whole}.{frac} (a decimal '
                                f'point) or {plain} (no separator)')

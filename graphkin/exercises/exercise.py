@@ -26,10 +26,15 @@ from graphkin.problem import FieldReader, build_problem
 from graphkin.units import to_si
 
 _TOP = {"title", "source", "problem", "intro", "route", "vary", "questions", "partial", "positions", "flywheel",
-        "reveal", "max_force_ratio", "max_speed_ratio", "draw", "decimal_comma"}
+        "reveal", "max_force_ratio", "max_speed_ratio", "draw", "decimal_comma", "feedback"}
 _VARY = {"field", "from", "to", "step", "values", "label"}
 _QUESTION = {"id", "ask", "find", "part", "unit", "tolerance", "floor", "points", "route"}
 _FLYWHEEL = {"Cs"}
+
+#: What the feedback on a wrong answer says (the exercise file's ``feedback``): ``"parts"`` (the default) names the
+#: slip, else which part is wrong (sign or sense, size or direction, a size more than ten times off), never how
+#: far off; ``"distance"`` says how far off too (%, degrees, mm), from which the answer follows in one more try.
+FEEDBACK = ("parts", "distance")
 
 #: Slips the grader can diagnose, with the share of the question's points each earns by default.
 SLIPS: dict[str, float] = {
@@ -188,6 +193,8 @@ class Exercise:
     decimal_comma : bool
         Whether answers may use a decimal comma (``"1,29 kN"``); a comma that could separate
         thousands (``"1,352"``) is refused with a sentence either way.
+    feedback : str
+        What the feedback on a wrong answer says: one of :data:`FEEDBACK`.
     file : str
     fingerprint : str
         SHA-256 of the id, the exercise file and the base problem file: two
@@ -218,6 +225,7 @@ class Exercise:
     text: str = ""
     base_text: str = ""
     decimal_comma: bool = True
+    feedback: str = "parts"
 
     @property
     def cycle(self) -> bool:
@@ -521,6 +529,9 @@ def parse_exercise(text: str, *, file: str = "<exercise>", id: str = "exercise",
     decimal_comma = data.get("decimal_comma", True)
     if not isinstance(decimal_comma, bool):
         raise rd.fail("decimal_comma", f"must be true or false, got {decimal_comma!r}")
+    feedback = data.get("feedback", "parts")
+    if feedback not in FEEDBACK:
+        raise rd.fail("feedback", f"must be {' or '.join(map(repr, FEEDBACK))}, got {feedback!r}")
     intro = rd.string(data, "intro", "", "")
     symbols = [v.symbol for v in vary]
     for where, statement in [("intro", intro)] + [(f"questions[{i}].ask", q.ask) for i, q in enumerate(questions)]:
@@ -532,7 +543,7 @@ def parse_exercise(text: str, *, file: str = "<exercise>", id: str = "exercise",
                     rd.number(data, "max_force_ratio", "", 20.0, low=1.0),
                     rd.number(data, "max_speed_ratio", "", 5.0, low=1.0), draw, file,
                     hashlib.sha256("\x1f".join((id, text, base_text)).encode("utf-8")).hexdigest(), text, base_text,
-                    decimal_comma)
+                    decimal_comma, feedback)
 
 
 _TOKEN = re.compile(r"([A-Za-z_]\w*)|\[(\d+)\]")

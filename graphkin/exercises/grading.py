@@ -9,12 +9,19 @@ and (when the grader is given the class) every classmate's answer. Each candidat
 question's tolerance of that value); of those within their slack, the **nearest** wins, measured in
 slacks. When two are about as near (within a tenth of a slack), the one worth more is given and the
 feedback names the other too. An answer that fits another student's data earns nothing and is named as
-such. A vector whose size is right but whose direction is not is named with its degrees off; any other
-wrong answer gets how far off it is (%, degrees, or mm) and the step of its route to revisit, or, when
-it is close, to carry more digits.
+such, once that student's data explain two of the sheet's answers (then even where it also fits a slip).
+
+Any other wrong answer gets, besides the step of its route to revisit (or, when it is close, to carry
+more digits), what the exercise's ``feedback`` allows. By default (``"parts"``) that is which part is
+wrong, never how far off: a vector's size or direction, a scalar's sign or sense, a size more than ten
+times off (counted on the decades of the question's unit), so that the feedback cannot be inverted into
+the key (each word is true on a whole region, whose bounds are either fixed, as the decades and the sign
+are, or a few slacks wide around the key, as "close" and the slips are). With ``"distance"`` it also says
+how far off (%, degrees, mm), from which the key follows in one more submission.
 
 The grader never raises on anything a student typed and never evaluates it: answers are read as data
-by :mod:`graphkin.exercises.answers` (and, from a notebook, by :mod:`graphkin.exercises.notebooks`).
+by :mod:`graphkin.exercises.answers` (and, from a notebook, by :mod:`graphkin.exercises.notebooks`). What
+a student is told, sentence by sentence, is :mod:`graphkin.exercises.feedback`.
 
 It asks a variant for four things only, so the same code grades a live
 :class:`graphkin.exercises.Variant` and a student's precomputed key
@@ -34,16 +41,29 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from graphkin.exercises.answers import Reading, Unreadable, read_answer
-from graphkin.exercises.exercise import CYCLE_KINDS, MOTION_KINDS, dimension_of
+from graphkin.errors import GraphkinError
+from graphkin.exercises.answers import Reading
+from graphkin.exercises.exercise import CYCLE_KINDS, FEEDBACK, MOTION_KINDS, dimension_of
+from graphkin.exercises.feedback import (
+    _TORQUE_KINDS,
+    DIMENSION_WORDS,
+    MESSAGES,
+    PARTS,
+    SLIP_WORDS,
+    Refusal,
+    _factor,
+    answer_example,
+    how_far_off,
+    read_given,
+    tolerance_text,
+    which_part,
+)
 from graphkin.exercises.notebooks import NotData
-from graphkin.exercises.quantities import Expected, _distance, _unit_text, unit_factor
+from graphkin.exercises.quantities import Expected, _distance, _unit_text
 
 #: Verdicts a question can get ("refused": the whole submission is not graded as this student's, e.g. it
 #: carries another student's id; every question then says why).
 VERDICTS = ("correct", "slip", "wrong", "unreadable", "missing", "refused")
-
-_TORQUE_KINDS = ("driver_torque", "inertia_torque", "peak_torque", "lowest_torque", "average_torque")
 
 #: Slips found by solving the variant again as the student did.
 RESOLVED_SLIPS = ("rpm_as_rad_s", "no_inertia_torque", "no_inertia_force", "no_normal", "coriolis_reversed",
@@ -63,99 +83,13 @@ TIE = 0.1
 #: A wrong answer within this many slacks of the right one is a rounding slip, not a wrong method.
 CLOSE = 2.5
 
-#: The feedback catalogue: one sentence (or two) per slip; ``{name}`` is the quantity, ``{hint}`` the step.
-MESSAGES = {
-    "correct": "Correct.",
-    "missing": "No answer was given for {name}.",
-    "sign_force": ("The size is right but the direction is reversed: you gave {other} (the force of link {j} on "
-                   "link {i}), and {name} = −{other}. Check which link acts on which."),
-    "sign_torque": ("The size is right but the sense is wrong: {name} is {sense}. Positive torques turn "
-                    "counter-clockwise (CCW), negative ones clockwise (CW)."),
-    "sign_value": "The size is right but the sign is wrong; check the sign convention (x right, y up, CCW positive).",
-    "sign_magnitude": "A magnitude is never negative: give the size of {name} and, where asked, its direction apart.",
-    "opposite": ("The direction is off by 180°: that is the direction of {other}. Check which link acts on "
-                 "which ({name} is the force of link {i} on link {j})."),
-    "opposite_other": ("The direction is off by 180°: check which way {name} acts (angles from +x, "
-                       "counter-clockwise positive)."),
-    "power_of_ten": ("The digits are right but the value is {factor} too {way}: check the unit conversion "
-                     "(N·mm and N·m, mm and m, kN and N)."),
-    "degrees_radians": "That angle looks like {wrong} read as {right}: write the angle in degrees, e.g. \"-45 deg\".",
-    "rpm_as_rad_s": ("This is the answer for a crank turning at {rpm} rad/s: the speed was given in rpm. "
-                     "Convert first: ω = 2π n / 60 = {omega} rad/s."),
-    "no_inertia_torque": ("This is the answer without the inertia torque −I_G α: include it (or offset the inertia "
-                          "force by h = |T|/|F|). Revisit {hint}."),
-    "no_inertia_force": ("This is the answer without the inertia force −m a_G (only the inertia torque kept): "
-                         "include the d'Alembert force at G. Revisit {hint}."),
-    "wrong_side": ("The offset h is right but on the wrong side of G: the resultant must turn the link the same way "
-                   "as the inertia torque T = −I_G α ({sense}). Revisit {hint}."),
-    "swapped": ("The x and y components are swapped (or the angle is measured clockwise from +y): x is along the "
-                "horizontal axis, to the right, y along the vertical, up, and angles are measured from +x."),
-    "angle_from_y": ("The size is right but the angle is measured from +y: angles are measured from +x, "
-                     "counter-clockwise positive (yours is 90° short)."),
-    "clockwise": ("The size is right but the angle is measured clockwise: angles are measured from +x, "
-                  "counter-clockwise positive."),
-    "direction": "The size is right but the direction is {degrees}° off. Revisit {hint}.",
-    "other_data": ("This is the answer for another student's data, not yours: work with the values on your own "
-                   "sheet."),
-    "no_normal": ("This is what the acceleration polygon gives without the normal components: each relative "
-                  "acceleration of two points of a link has a normal part ω² r, towards the point it turns about, "
-                  "drawn before the tangential one. Revisit {hint}."),
-    "coriolis_reversed": ("This is what the acceleration polygon gives with the Coriolis component reversed: 2ωv points "
-                          "along the sliding velocity turned 90° in the sense of the guide's ω. Revisit {hint}."),
-    "image_misplaced": ("This is the acceleration of another point of the link, not of G: place g′ on the link's "
-                        "acceleration image as G sits on the link (the same shape, turned and scaled). "
-                        "Revisit {hint}."),
-    "tie": " It fits {others} about as well; it is graded as the one worth more.",
-    "dimension": ("{unit} is a unit of {given}, but {name} is {wanted}, measured in {right} (e.g. \"{example}\")."),
-    "need_vector": "Give both the size and the direction of {name}, e.g. \"{example}\" or as components \"(x, y) N\".",
-    "need_scalar": "Give one number with its unit for {name}, e.g. \"{example}\".",
-    "not_data": ("{name} must be typed as text in quotes, e.g. {name} = \"{example}\": the notebook is read as a "
-                 "file, not run, so {what} is not an answer."),
-    "wrong": "Not within {tolerance} of the answer{off}. Revisit {hint}.",
-    "wrong_nohint": "Not within {tolerance} of the answer{off}.",
-    "close": ("Close, but not within {tolerance} of the answer{off}: carry four significant figures through every "
-              "step and round only the answer."),
-    "close_graphical": ("Close, but not within {tolerance} of the answer{off}: draw the construction larger and "
-                        "measure its lines more carefully."),
-    "error": ("This answer could not be graded because of an error in the grader, not in the answer; your "
-              "teacher can read why in the grader's log."),
-}
-
-#: A slip in a few words, for the sentence that names a tie.
-SLIP_WORDS = {
-    "sign": "the sign reversed", "opposite": "the direction turned by 180°", "power_of_ten": "a power of ten off",
-    "degrees_radians": "degrees and radians mixed up", "rpm_as_rad_s": "the speed in rpm used as rad/s",
-    "no_inertia_torque": "the inertia torque left out", "no_inertia_force": "the inertia force left out",
-    "wrong_side": "the offset on the wrong side of G", "swapped": "the components swapped",
-    "angle_from_y": "the angle measured from +y", "clockwise": "the angle measured clockwise",
-    "other_data": "another student's data", "no_normal": "the normal components left out",
-    "coriolis_reversed": "the Coriolis component reversed", "image_misplaced": "G's image misplaced",
-}
-
-_DIMENSION_WORDS = {"force": "a force", "torque": "a torque", "length": "a length", "angle": "an angle",
-                    "energy": "an energy", "moment_of_inertia": "a moment of inertia", "dimensionless": "a pure number",
-                    "power": "a power", "mass": "a mass", "velocity": "a velocity", "acceleration": "an acceleration",
-                    "angular_velocity": "an angular velocity", "angular_acceleration": "an angular acceleration",
-                    "time": "a time", "density": "a density"}
+#: The same, where the feedback does not say how far off (feedback = "parts"): narrower, because where "close" begins
+#: is what a search for the key learns from each submission (the band's width sets how many submissions it takes);
+#: 1.5 slacks still holds the rounding slip of a 1 % question (1.5 %) and the drawing slip of a 3 % one (4.5 %).
+CLOSE_PARTS = 1.5
 
 # How much of an answer the report echoes (the feedback quotes at most the reader's short excerpt).
 _ECHO_CHARS = 120
-
-
-def answer_example(exp: Expected) -> str:
-    """How to write an answer to this question, with a made-up number (never the answer itself)."""
-    q = exp.question
-    u = _unit_text(q.unit)
-    u = f" {u}" if u else ""
-    if exp.form == "vector":
-        return f"12.3{u} ∠ −45°"
-    if exp.form == "point":
-        return f"(120, −35){u}"
-    if exp.form == "direction":
-        return "−45°"
-    if q.kind in _TORQUE_KINDS:
-        return f"12.3{u} CCW"
-    return f"12.3{u}"
 
 
 class Classmates:
@@ -358,11 +292,16 @@ def _credit(exercise, slip: str) -> float:
     return 0.0 if slip == "other_data" else exercise.partial.get(slip, 0.0)
 
 
-def _diagnose(exp: Expected, a, variant, classmates) -> tuple[_Fit, list[_Fit]] | None:
-    """The slip to name (the nearest, or of the about-as-near ones the one worth more) and the others as near."""
+def _diagnose(exp: Expected, a, variant, classmates, copied: bool) -> tuple[_Fit, list[_Fit], _Fit | None] | None:
+    """The slip to name (the nearest, or of the about-as-near ones the one worth more), the others as near, and
+    the classmate whose data explain the answer (if any). With ``copied`` (the classmates are known to have lent
+    this sheet answers) a classmate's data come first, whatever slip the answer also fits."""
     fits = _fits(exp, a, variant, classmates)
     if not fits:
         return None
+    theirs = next((f for f in fits if f.slip == "other_data"), None)
+    if copied and theirs is not None:
+        return theirs, [], theirs
     near = [f for f in fits if f.ratio - fits[0].ratio <= TIE]
     # One fit per slip: the same slip may fit twice (×10³ and ×10⁶ are never both near; a tie of one slip with
     # itself says nothing).
@@ -373,53 +312,42 @@ def _diagnose(exp: Expected, a, variant, classmates) -> tuple[_Fit, list[_Fit]] 
             unique.append(f)
     ex = variant.exercise
     chosen = max(unique, key=lambda f: (_credit(ex, f.slip), -f.ratio))
-    return chosen, [f for f in unique if f is not chosen]
+    return chosen, [f for f in unique if f is not chosen], theirs
 
 
-def _off(exp: Expected, a) -> str:
-    """How far off a wrong answer is, in words: ``" (yours is +19.5 % off)"``."""
-    e = exp.value
-    if exp.form in ("scalar", "magnitude") and e:
-        return f" (yours is {100 * (a - e) / abs(e):+.1f} % off)".replace("-", "−")
-    if exp.form == "vector" and e:
-        size = 100 * (abs(a) - abs(e)) / abs(e)
-        turn = math.degrees(abs(cmath.phase(a / e))) if a else 180.0
-        return f" (yours: the size is {size:+.1f} % off, the direction {turn:.1f}° off)".replace("-", "−")
-    if exp.form == "direction":
-        return f" (yours is {math.degrees(_distance('direction', a, e)):.1f}° off)"
-    if exp.form == "point":
-        return f" (yours is {1000 * abs(a - e):.3g} mm away)"
-    return ""
+def _mode(exercise, feedback: str | None) -> str:
+    """The feedback a wrong answer gets: ``feedback`` when given, else the exercise's (:data:`FEEDBACK`)."""
+    mode = exercise.feedback if feedback is None else feedback
+    if mode not in FEEDBACK:
+        raise GraphkinError(f"feedback must be {' or '.join(map(repr, FEEDBACK))}, got {mode!r}")
+    return mode
 
 
-def _tolerance_text(exp: Expected) -> str:
-    q = exp.question
-    if exp.form == "direction":
-        return f"{math.degrees(exp.slack):.2g}°"
-    tol = f"{100 * q.tolerance:g} %"
-    if exp.form == "point":
-        tol = f"{1000 * exp.slack:.3g} mm ({tol} of the mechanism's size)"
-    return tol
-
-
-def _wrong(exp: Expected, a, variant, text: str, reveal: bool) -> dict:
-    """A wrong answer's verdict: the size right (a vector), close (rounding), or how far off and where to look."""
+def _wrong(exp: Expected, a, variant, text: str, reveal: bool, mode: str) -> dict:
+    """A wrong answer's verdict: the size right (a vector), close (rounding), or which part is wrong (``mode``
+    "parts") or how far off (``mode`` "distance"), and where to look."""
     q = exp.question
     words = variant.words(q)
-    tol, off = _tolerance_text(exp), _off(exp, a)
+    distance = mode == "distance"
+    tol, off = tolerance_text(exp), how_far_off(exp, a) if distance else ""
     if exp.form == "vector" and exp.value and abs(abs(a) - abs(exp.value)) <= exp.slack:
         degrees = f"{math.degrees(abs(cmath.phase(a / exp.value))):.1f}" if a else "180"
-        msg = MESSAGES["direction"].format(degrees=degrees, hint=words["hint"])
+        msg = MESSAGES["direction_distance" if distance else "direction"].format(degrees=degrees, hint=words["hint"])
         return _verdict(exp, "slip", "direction", q.points * variant.exercise.partial["direction"], msg, text, reveal)
-    if exp.slack > 0 and _distance(exp.form, a, exp.value) <= CLOSE * exp.slack:
+    if exp.slack > 0 and _distance(exp.form, a, exp.value) <= (CLOSE if distance else CLOSE_PARTS) * exp.slack:
         msg = MESSAGES["close_graphical" if q.route == "graphical" else "close"].format(tolerance=tol, off=off)
         return _verdict(exp, "wrong", None, 0.0, msg, text, reveal)
     hint = exp.hint.rstrip(".") if exp.hint else ""
-    msg = MESSAGES["wrong" if hint else "wrong_nohint"].format(tolerance=tol, off=off, hint=hint)
+    parts = "" if distance else which_part(exp, a)
+    if parts:
+        msg = MESSAGES["wrong_parts" if hint else "wrong_parts_nohint"].format(tolerance=tol, parts=parts, hint=hint)
+    else:
+        msg = MESSAGES["wrong" if hint else "wrong_nohint"].format(tolerance=tol, off=off, hint=hint)
     return _verdict(exp, "wrong", None, 0.0, msg, text, reveal)
 
 
-def grade_question(variant, q, answer, *, reveal: bool = False, classmates: Classmates | None = None) -> dict:
+def grade_question(variant, q, answer, *, reveal: bool = False, classmates: Classmates | None = None,
+                   copied: bool = False, feedback: str | None = None) -> dict:
     """Grade one answer; never raises on the answer, whatever it is.
 
     Parameters
@@ -433,35 +361,37 @@ def grade_question(variant, q, answer, *, reveal: bool = False, classmates: Clas
     reveal : bool
         Show the expected value.
     classmates : Classmates, optional
-        The class's answers: an answer that fits another student's data is named as such.
+        The class's answers: an answer that fits another student's data is named as such (the nearer of it
+        and a slip wins, as between two slips).
+    copied : bool
+        Whether ``classmates`` are known to have lent this sheet answers (:func:`grade_variant`: their data
+        explain two or more of its answers): an answer their data explain then earns nothing, even when it
+        also fits a slip.
+    feedback : str, optional
+        What the feedback on a wrong answer says (:data:`graphkin.exercises.exercise.FEEDBACK`); default the
+        exercise's ``feedback``.
     """
     exp = variant.expected(q)
     try:
-        return _grade(variant, q, exp, answer, reveal, classmates)
+        return _grade(variant, q, exp, answer, reveal, classmates, copied, _mode(variant.exercise, feedback))
     except Exception:  # a bug in the grader must not void this answer's neighbours, nor show a traceback
         print(f"graphkin: grading {q.id} of {variant.student!r} failed:", file=sys.stderr)
         traceback.print_exc(file=sys.stderr)
         return _verdict(exp, "unreadable", None, 0.0, MESSAGES["error"], echo(answer), reveal)
 
 
-def _grade(variant, q, exp: Expected, answer, reveal: bool, classmates) -> dict:
-    if answer is None or (isinstance(answer, str) and not answer.strip()):
-        return _verdict(exp, "missing", None, 0.0, MESSAGES["missing"].format(name=q.id), "", reveal)
-    if isinstance(answer, NotData):
-        msg = MESSAGES["not_data"].format(name=q.id, example=answer_example(exp), what=answer.reason)
-        return _verdict(exp, "unreadable", None, 0.0, msg, echo(answer), reveal)
+def _grade(variant, q, exp: Expected, answer, reveal: bool, classmates, copied: bool, mode: str) -> dict:
+    r = read_given(q, answer, decimal_comma=variant.exercise.decimal_comma)
+    if isinstance(r, Refusal):
+        return _verdict(exp, r.verdict, None, 0.0, r.sentence, "" if r.verdict == "missing" else echo(answer), reveal)
     dim = dimension_of(q.kind, q.part)
-    try:
-        r = read_answer(answer, dimension=dim, unit=q.unit, decimal_comma=variant.exercise.decimal_comma)
-    except Unreadable as exc:
-        return _verdict(exp, "unreadable", None, 0.0, str(exc), echo(answer), reveal)
     text = echo(r.text)
     if r.value is None and r.vector is None and not r.bare:
         right = _unit_text(q.unit) or "no unit"
         words = variant.words(q)
-        given = _DIMENSION_WORDS.get(r.dimension, r.dimension or "something else")
+        given = DIMENSION_WORDS.get(r.dimension, r.dimension or "something else")
         msg = MESSAGES["dimension"].format(unit=echo(_unit_text(r.unit), 40), given=given, name=words["name"],
-                                           wanted=_DIMENSION_WORDS.get(dim, dim), right=right,
+                                           wanted=DIMENSION_WORDS.get(dim, dim), right=right,
                                            example=answer_example(exp))
         share = variant.exercise.partial["dimension"]
         # A wrong dimension earns the share (0 by default) only when the number itself is right.
@@ -475,17 +405,18 @@ def _grade(variant, q, exp: Expected, answer, reveal: bool, classmates) -> dict:
                         reveal)
     if exp.close(a):
         return _verdict(exp, "correct", None, q.points, MESSAGES["correct"], text, reveal)
-    found = _diagnose(exp, a, variant, classmates)
+    found = _diagnose(exp, a, variant, classmates, copied)
     if found is None:
-        return _wrong(exp, a, variant, text, reveal)
-    fit, ties = found
+        return _wrong(exp, a, variant, text, reveal, mode)
+    fit, ties, theirs = found
     msg = MESSAGES[fit.msg].format(**fit.words)
     if ties:
         msg += MESSAGES["tie"].format(others=" and ".join(SLIP_WORDS.get(t.slip, t.slip) for t in ties))
     if fit.slip == "other_data":
         return _verdict(exp, "wrong", "other_data", 0.0, msg, text, reveal, other=fit.other)
-    # A classmate's data about as near as the slip: named in the feedback, and for the teacher here.
-    other = {"other": t.other for t in ties if t.slip == "other_data"}
+    # A classmate whose data explain the answer too, slip or not: for the teacher (and to count how many of the
+    # sheet's answers they explain); the feedback names them only when about as near as the slip.
+    other = {"other": theirs.other} if theirs is not None else {}
     return _verdict(exp, "slip", fit.slip, q.points * variant.exercise.partial[fit.slip], msg, text, reveal, **other)
 
 
@@ -513,11 +444,8 @@ def _safe_repr(value) -> str:
         return f"(a {type(value).__name__})"
 
 
-def _factor(q) -> float:
-    return unit_factor(q.unit, dimension_of(q.kind, q.part))
-
-
-def grade_variant(variant, answers, *, reveal: bool | None = None, classmates: Classmates | None = None) -> dict:
+def grade_variant(variant, answers, *, reveal: bool | None = None, classmates: Classmates | None = None,
+                  feedback: str | None = None) -> dict:
     """Grade a student's answers to their variant.
 
     Parameters
@@ -529,9 +457,14 @@ def grade_variant(variant, answers, *, reveal: bool | None = None, classmates: C
     reveal : bool, optional
         Show the expected value of every question (default: the exercise's ``reveal``).
     classmates : Classmates, optional
-        The class's answers: an answer that fits another student's data earns nothing and says so, when
-        that student's data explain at least :data:`CORROBORATE` of the sheet's answers (or all of them,
-        for a sheet of fewer questions).
+        The class's answers. When one student's data explain at least :data:`CORROBORATE` of the sheet's
+        answers, each answer they explain earns nothing and says so, even one that also fits a slip. One
+        answer alone that fits a classmate's data is graded as the student's own (a slip's share if it fits
+        one, else nothing), without naming anyone; on a one-question sheet it is named, unless a slip fits it
+        at least as well.
+    feedback : str, optional
+        What the feedback on a wrong answer says (:data:`graphkin.exercises.exercise.FEEDBACK`); default the
+        exercise's ``feedback``.
 
     Returns
     -------
@@ -546,17 +479,21 @@ def grade_variant(variant, answers, *, reveal: bool | None = None, classmates: C
         answers = {}
     # Whatever the sheet holds (a list, a table, null) goes to the reader as it is: it refuses what is not text
     # or a number with a sentence, rather than the grader guessing at str(value).
-    results = [grade_question(variant, q, answers.get(q.id), reveal=reveal, classmates=classmates)
+    results = [grade_question(variant, q, answers.get(q.id), reveal=reveal, classmates=classmates, feedback=feedback)
                for q in ex.questions]
     if classmates is not None:
         named = Counter(r["other"] for r in results if r.get("other"))
         need = min(CORROBORATE, len(ex.questions))
-        if any(n < need for n in named.values()):
+        # Copying is shown when one classmate's data explain two or more of the sheet's answers: then each answer
+        # their data explain is theirs, even one that also fits a slip of the student's own.
+        copied = need == CORROBORATE and any(n >= need for n in named.values())
+        if copied or any(n < need for n in named.values()):
             # One answer near one classmate's is as likely a slip of one's own (each classmate's answer has its
             # 1 % of slack, and a class covers much of the range): grade again with only the classmates whose
             # data explain several of this sheet's answers.
             kept = classmates.only(s for s, n in named.items() if n >= need)
-            results = [grade_question(variant, q, answers.get(q.id), reveal=reveal, classmates=kept)
+            results = [grade_question(variant, q, answers.get(q.id), reveal=reveal, classmates=kept, copied=copied,
+                                      feedback=feedback)
                        for q in ex.questions]
     known = {q.id for q in ex.questions}
     ignored = sorted(echo(k, 100) for k in answers if k not in known)[:50]
@@ -564,5 +501,5 @@ def grade_variant(variant, answers, *, reveal: bool | None = None, classmates: C
             "max": sum(q.points for q in ex.questions), "questions": results, "ignored": ignored}
 
 
-__all__ = ["CLOSE", "CORROBORATE", "Classmates", "MESSAGES", "RESOLVED_SLIPS", "SLIP_WORDS", "TIE", "VERDICTS", "answer_example",
-           "echo", "grade_question", "grade_variant"]
+__all__ = ["CLOSE", "CLOSE_PARTS", "CORROBORATE", "Classmates", "MESSAGES", "PARTS", "RESOLVED_SLIPS", "Refusal",
+           "SLIP_WORDS", "TIE", "VERDICTS", "answer_example", "echo", "grade_question", "grade_variant", "read_given"]

@@ -197,10 +197,11 @@ class Keys:
                                            for s, entry in self._students.items()})
         return self._classmates
 
-    def grade(self, student: str, answers, *, reveal=None) -> dict:
+    def grade(self, student: str, answers, *, reveal=None, feedback=None) -> dict:
         """Grade a student's answers (question id → text as typed), as :func:`graphkin.exercises.grade` does,
         with the roster as the class."""
-        return grade_variant(self.variant(student), answers, reveal=reveal, classmates=self.classmates())
+        return grade_variant(self.variant(student), answers, reveal=reveal, classmates=self.classmates(),
+                             feedback=feedback)
 
 
 def _read(path) -> dict:

@@ -4,10 +4,16 @@ A student answers in a notebook by assigning text to a variable (``F23 = "3226 N
 graders of the notebook platforms (otter-grader, nbgrader) run the notebook to read those values,
 which lets whatever else the notebook holds run too: code that replaces the grader, reads the course's
 files or waits for ever. Here the notebook is read as a file instead. Each code cell is parsed with
-:mod:`ast`; the last top-level assignment to an answer's variable gives the answer, and its right-hand
-side is read with :func:`ast.literal_eval`, which accepts literals only (text, numbers, ``...``) and
-never calls anything. An answer that is not a literal (a call, a name, an f-string) is
-:class:`NotData`: it is graded unreadable with a sentence saying to type the answer as text.
+:mod:`ast`; the last statement that gives an answer's variable a value decides the answer. When it is
+an assignment on a line of its own (``F23 = ...``, at the top level of the cell), its right-hand side is
+read with :func:`ast.literal_eval`, which accepts literals only (text, numbers, ``...``) and never calls
+anything. An answer that is not a literal (a call, a name, an f-string), or that is assigned inside an
+``if``, ``try``, ``with``, a loop or a function (which may or may not run), is :class:`NotData`: it is
+graded unreadable with a sentence saying to type the answer as text, on a line of its own.
+
+:func:`read_cells` is the one reader: the grader reads a handed-in notebook's code cells with it
+(:func:`notebook_answers`), and a notebook's own check reads the cells run so far in its kernel with it
+(:func:`kernel_cells`), so that what the check calls readable is what the grader reads, and the reverse.
 
 Examples
 --------
@@ -19,17 +25,17 @@ Examples
 ('s001', '12 N', None)
 >>> answers["T12"].reason
 'a call'
+>>> read_cells(['if True:\\n    F23 = "12 N"', "STUDENT = 231006"], {"F23": "F23"})
+('231006', {'F23': NotData(reason='an assignment inside an `if` block')})
 """
 
 from __future__ import annotations
 
 import ast
-import json
 import keyword
 import re
 from collections.abc import Mapping
 from dataclasses import dataclass
-from pathlib import Path
 
 from graphkin.errors import GraphkinError
 
@@ -48,6 +54,17 @@ RESERVED = frozenset({STUDENT_VARIABLE, "grader", "otter", "runtime", "sys", "gr
 
 # `NAME = value` or `NAME: type = value` on one line, for a cell that does not parse as a whole.
 _LINE = re.compile(r"^([A-Za-z_]\w*)\s*(?::[^=]*)?=(?!=)\s*(.+?)\s*$")
+
+# Where a statement that is not a plain assignment gives a variable its value, in words.
+_WHERE = {ast.If: "an assignment inside an `if` block", ast.Try: "an assignment inside a `try` block",
+          ast.With: "an assignment inside a `with` block", ast.AsyncWith: "an assignment inside a `with` block",
+          ast.For: "an assignment inside a loop", ast.AsyncFor: "an assignment inside a loop",
+          ast.While: "an assignment inside a loop", ast.FunctionDef: "an assignment inside a function",
+          ast.AsyncFunctionDef: "an assignment inside a function", ast.ClassDef: "an assignment inside a class",
+          ast.Match: "an assignment inside a `match` block", ast.Import: "an import",
+          ast.ImportFrom: "an import", ast.Delete: "a `del` statement"}
+if hasattr(ast, "TryStar"):  # Python 3.11: try ... except*
+    _WHERE[ast.TryStar] = "an assignment inside a `try` block"
 
 _WHAT = {ast.Call: "a call", ast.Name: "a variable", ast.JoinedStr: "an f-string", ast.Attribute: "an attribute",
          ast.Subscript: "an index", ast.BinOp: "a calculation", ast.BoolOp: "an expression",
@@ -103,8 +120,27 @@ def _value(node: ast.expr):
         return NotData(_WHAT.get(type(node), "an expression"))
 
 
+def _bound(node: ast.AST):
+    """Every name a statement gives a value to (or deletes), at any depth: targets, loop variables, ``as``
+    names, imports, functions and classes, ``:=``."""
+    for sub in ast.walk(node):
+        if isinstance(sub, ast.Name) and isinstance(sub.ctx, (ast.Store, ast.Del)):
+            yield sub.id
+        elif isinstance(sub, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
+            yield sub.name
+        elif isinstance(sub, ast.alias):
+            yield (sub.asname or sub.name).split(".")[0]
+        elif isinstance(sub, ast.ExceptHandler) and sub.name:
+            yield sub.name
+        elif isinstance(sub, (ast.MatchAs, ast.MatchStar)) and sub.name:
+            yield sub.name
+        elif isinstance(sub, ast.MatchMapping) and sub.rest:
+            yield sub.rest
+
+
 def _cell_assignments(source: str) -> dict:
-    """Every top-level assignment in a cell, in order: name → the value read (the last one wins)."""
+    """Every statement of a cell that gives a variable a value, in order: name → the value read (the last one
+    wins); a value given any other way than by a plain assignment at the top level is :class:`NotData`."""
     found: dict = {}
     if len(source) > MAX_CELL_CHARS:
         return found
@@ -123,18 +159,29 @@ def _cell_assignments(source: str) -> dict:
                 found[m[1]] = _value(expr)
         return found
     for node in tree.body:
+        if isinstance(node, (ast.Assign, ast.AnnAssign)) and node.value is not None:
+            # A name given a value by ":=" inside the right-hand side, before the assignment itself.
+            for sub in ast.walk(node.value):
+                if isinstance(sub, ast.NamedExpr) and isinstance(sub.target, ast.Name):
+                    found[sub.target.id] = NotData("an assignment inside an expression")
         if isinstance(node, ast.Assign):
             for target in node.targets:
                 if isinstance(target, ast.Name):
                     found[target.id] = _value(node.value)
-                elif isinstance(target, (ast.Tuple, ast.List)):
-                    for element in target.elts:
-                        if isinstance(element, ast.Name):
-                            found[element.id] = NotData("an unpacking")
-        elif isinstance(node, ast.AnnAssign) and isinstance(node.target, ast.Name) and node.value is not None:
-            found[node.target.id] = _value(node.value)
-        elif isinstance(node, ast.AugAssign) and isinstance(node.target, ast.Name):
-            found[node.target.id] = NotData("a calculation")
+                elif isinstance(target, (ast.Tuple, ast.List, ast.Starred)):
+                    for name in _bound(target):
+                        found[name] = NotData("an unpacking")
+        elif isinstance(node, ast.AnnAssign):  # without a value (F23: str) it gives none
+            if isinstance(node.target, ast.Name) and node.value is not None:
+                found[node.target.id] = _value(node.value)
+        elif isinstance(node, ast.AugAssign):
+            if isinstance(node.target, ast.Name):
+                found[node.target.id] = NotData("a calculation")
+        else:
+            # Inside an if, a loop, a function ...: the grader cannot know whether it runs, and never runs it.
+            where = NotData(_WHERE.get(type(node), "an assignment inside an expression"))
+            for name in _bound(node):
+                found[name] = where
     return found
 
 
@@ -145,55 +192,51 @@ def _source(cell) -> str:
     return source if isinstance(source, str) else ""
 
 
-def read_notebook(path) -> dict:
-    """A notebook file's JSON, checked to be one (its code is not run).
+def read_cells(sources, variables: Mapping[str, str], student_variable: str = STUDENT_VARIABLE):
+    """The id and the answers that code cells hold, read as data: the one reader of answers in a notebook.
 
-    Raises
-    ------
-    GraphkinError
-        The file cannot be read, is too large, or is not a notebook.
+    Parameters
+    ----------
+    sources : iterable of str
+        The code cells' sources, in order (a notebook's, or the cells run in a kernel).
+    variables : mapping of str to str
+        Question id → the variable its answer is typed into.
+    student_variable : str
+        The variable holding the student's id.
+
+    Returns
+    -------
+    claimed : object
+        What ``student_variable`` holds: text (an id typed as a whole number, ``231006``, is read as its
+        digits), ``...`` if left blank, :class:`NotData`, or None if it is never assigned.
+    answers : dict
+        Question id → text or number as typed, ``None`` when the variable is never assigned or holds
+        ``...`` (unanswered), or :class:`NotData`.
     """
-    p = Path(path)
-    try:
-        size = p.stat().st_size
-        if size > MAX_NOTEBOOK_BYTES:
-            raise GraphkinError(f"{p}: {size} bytes; a notebook of answers is at most {MAX_NOTEBOOK_BYTES} bytes")
-        data = json.loads(p.read_bytes().decode("utf-8-sig"))
-    except OSError as exc:
-        raise GraphkinError(f"{p}: cannot be read ({exc.strerror or exc})") from None
-    except (UnicodeDecodeError, ValueError) as exc:
-        raise GraphkinError(f"{p}: not a notebook (not JSON in UTF-8: {str(exc)[:80]})") from None
-    if not isinstance(data, dict) or not isinstance(data.get("cells"), list):
-        raise GraphkinError(f"{p}: not a notebook (no list of cells)")
-    return data
+    seen: dict = {}
+    for source in sources:
+        if isinstance(source, str):
+            seen.update(_cell_assignments(source))
+
+    def get(name):
+        value = seen.get(name)
+        return None if value is Ellipsis else value
+
+    claimed = get(student_variable)
+    if isinstance(claimed, int) and not isinstance(claimed, bool) and claimed >= 0 and claimed.bit_length() < 300:
+        claimed = str(claimed)  # a student number typed without quotes is still that number
+    return claimed, {qid: get(var) for qid, var in variables.items()}
 
 
-_UNSEEN = object()
-
-
-def typed_in_kernel(variable: str):
-    """What the latest cell run in this IPython kernel assigned to ``variable``, read as the grader reads it.
-
-    A notebook's own check cell calls it, so that a student learns before handing in that an answer typed
-    as a calculation (``F23 = f"{x} N"``) will not be read. Returns :class:`NotData`, the literal, or
-    None when no cell run so far assigns it (or outside IPython).
-    """
-    try:
-        from IPython import get_ipython
-    except ImportError:
-        return None
-    shell = get_ipython()
-    history = shell.user_ns.get("In", []) if shell is not None else []
-    for source in reversed(history if isinstance(history, list) else []):
-        if isinstance(source, str) and variable in source:
-            value = _cell_assignments(source).get(variable, _UNSEEN)
-            if value is not _UNSEEN:
-                return value
-    return None
+def code_sources(notebook) -> list[str]:
+    """The text of a notebook's code cells, in order: all that :func:`notebook_answers` reads."""
+    cells = notebook.get("cells", []) if isinstance(notebook, Mapping) else []
+    return [_source(c) for c in (cells if isinstance(cells, list) else [])
+            if isinstance(c, Mapping) and c.get("cell_type") == "code"]
 
 
 def notebook_answers(notebook, variables: Mapping[str, str], student_variable: str = STUDENT_VARIABLE):
-    """The id and the answers a notebook holds, read as data.
+    """The id and the answers a notebook holds, read as data (:func:`read_cells` of its code cells).
 
     Parameters
     ----------
@@ -206,25 +249,32 @@ def notebook_answers(notebook, variables: Mapping[str, str], student_variable: s
 
     Returns
     -------
-    claimed : object
-        What ``student_variable`` holds (text, ``...`` if left blank, :class:`NotData`, or None if
-        it is never assigned).
-    answers : dict
-        Question id → text or number as typed, ``None`` when the variable is never assigned or holds
-        ``...`` (unanswered), or :class:`NotData`.
+    claimed, answers
+        As :func:`read_cells` gives them.
     """
-    seen: dict = {}
-    cells = notebook.get("cells", []) if isinstance(notebook, Mapping) else []
-    for cell in cells if isinstance(cells, list) else []:
-        if isinstance(cell, Mapping) and cell.get("cell_type") == "code":
-            seen.update(_cell_assignments(_source(cell)))
+    return read_cells(code_sources(notebook), variables, student_variable)
 
-    def get(name):
-        value = seen.get(name)
-        return None if value is Ellipsis else value
 
-    return get(student_variable), {qid: get(var) for qid, var in variables.items()}
+def kernel_cells() -> list[str] | None:
+    """The cells run so far in this IPython kernel, as they were typed, in the order they ran; None outside
+    IPython.
+
+    A notebook's own check reads them with :func:`read_cells`, as the grader reads the handed-in notebook,
+    so that a student learns before handing in how the grader will read an answer.
+    """
+    try:
+        from IPython import get_ipython
+    except ImportError:
+        return None
+    shell = get_ipython()
+    if shell is None:
+        return None
+    # The raw input (magics as typed, as the notebook file holds them), else IPython's transformed copy.
+    history = getattr(getattr(shell, "history_manager", None), "input_hist_raw", None)
+    if not isinstance(history, list):
+        history = shell.user_ns.get("In", [])
+    return [s for s in history if isinstance(s, str)] if isinstance(history, list) else []
 
 
 __all__ = ["MAX_CELL_CHARS", "MAX_NOTEBOOK_BYTES", "NotData", "RESERVED", "STUDENT_VARIABLE", "answer_variables",
-           "notebook_answers", "read_notebook", "typed_in_kernel"]
+           "code_sources", "kernel_cells", "notebook_answers", "read_cells"]

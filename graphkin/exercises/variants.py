@@ -45,7 +45,13 @@ _SEED_TAG = "graphkin-variant-v1"
 
 
 def check_student(student) -> str:
-    """The student id as used in the seed (stripped), or a clear error."""
+    """The student id as used in the seed (stripped), or a clear error.
+
+    An id typed as a whole number (``STUDENT = 231006`` in a notebook, ``student = 231006`` in an answers
+    file) is its digits: the same student as ``"231006"``.
+    """
+    if isinstance(student, int) and not isinstance(student, bool) and 0 <= student < 10**MAX_STUDENT_CHARS:
+        student = str(student)
     if not isinstance(student, str) or not student.strip():
         raise GraphkinError(f"student id must be a non-empty text, got {student!r}")
     # The same id typed on any keyboard or pasted from a spreadsheet gives the same data: Unicode NFC

@@ -44,8 +44,8 @@ import math
 
 import numpy as np
 
-from graphkin.analytical.kinetostatics import pitch as pitch_point
 from graphkin.analytical.loads import inertia
+from graphkin.analytical.meshes import pitch as pitch_point
 from graphkin.errors import GraphkinError
 from graphkin.graphical.builder import Builder, DeadPoint, xy
 from graphkin.graphical.construction import Arrow, Construction, nice_scale
@@ -189,8 +189,9 @@ def _geometry(b: Builder) -> dict:
     pitch = {}
     for joint in mech.joints:
         if isinstance(joint, GearMesh):
-            (a, b), (ca, cb) = joint.links, joint.centers
-            A, B = complex(kin.z(a, ca)[i]), complex(kin.z(b, cb)[i])
-            pitch[tuple(sorted(joint.links))] = xy(pitch_point(joint, a, A, B)[0])
+            (m, n), (cm, cn) = joint.links, joint.centers
+            A, B = complex(kin.z(m, cm)[i]), complex(kin.z(n, cn)[i])
+            pitch[tuple(sorted(joint.links))] = xy(pitch_point(joint, m, A, B)[0])
     return {"points": points, "G": G, "inertia": inert, "external": external, "pitch_points": pitch,
+            "contacts": {key: b.contacts.get(key, P) for key, P in pitch.items()},
             "torques": torques, "guides": guides, "angles": angles}

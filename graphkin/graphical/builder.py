@@ -46,8 +46,8 @@ import struct
 import numpy as np
 import shapely
 
-from graphkin.analytical.kinetostatics import pitch
 from graphkin.analytical.loads import applied_at
+from graphkin.analytical.meshes import contact
 from graphkin.geometry import zcross as cross
 from graphkin.geometry import zdot as dot
 from graphkin.graphical.captions import Later, and_list, number, polar, sense
@@ -144,6 +144,7 @@ class Builder:
         # Reactions passed on to the links of the groups still to solve: link -> [(name unmarked, name, F, X, couple)].
         self.passed: dict[int, list] = {}
         self.superposed: list[str] = []  # the dyads found with both links loaded
+        self.contacts: dict[tuple, tuple] = {}  # where each mesh's tooth force acts: (lo, hi) -> (x, y) [m]
         # Positions of points, guide directions and slide senses are the same in every sub-problem: ``like`` (another
         # builder of this position) shares them.
         self._z: dict = like._z if like is not None else {}
@@ -555,28 +556,43 @@ class Builder:
     # -- gears and the driver ----------------------------------------------------
     def gear(self, g: GearGroup, R: _Load):
         mesh = g.mesh
-        rk = mesh.radius(g.k)
         Ck, Cj = self.z(g.b, g.ck), self.z(g.b, g.cj)
-        P, t, r = pitch(mesh, g.k, Ck, Cj)
         self.order.setdefault(id(mesh), (mesh, g.k))
         self.order.setdefault(id(g.pivot), (g.pivot, g.k))
         if R.F == 0 and R.M0 == 0:
+            P = contact(mesh, g.k, Ck, Cj)[0]
             self.add("note", self.lead(f"gear {g.k} carries no load, so its tooth and pivot forces are zero."), g.k)
             self.store(g.mesh, g.k, 0j)
             self.store(g.pivot, g.k, 0j)
+            self.contacts[tuple(sorted(mesh.links))] = xy(P)
             return {id(g.mesh): (0j, P), id(g.pivot): (0j, Ck)}
-        W_t = -R.about(Ck) / rk
-        # The flank the tooth force presses on follows the tangential load; a sub-problem keeps the whole problem's.
-        flank = float(np.sign(W_t)) if self.fixed is None else self.fixed.get(id(mesh), 0.0)
+        # The flank the tooth force presses on follows the tangential load; a sub-problem keeps the whole problem's,
+        # and with it the way the power flows through the mesh (which gear loses to the efficiency).
+        flank = float(np.sign(-R.about(Ck))) if self.fixed is None else self.fixed.get(id(mesh), 0.0)
         self.sides[id(mesh)] = flank
+        flow = 0.0
+        if mesh.efficiency < 1:  # the power into gear k, relative to the carrier: which side loses
+            flow = flank * float(np.sign(self.kin.omega[g.k][self.i] - self.kin.omega[g.b][self.i]))
+        P, t, r, rho = contact(mesh, g.k, Ck, Cj, flow)
+        self.contacts[tuple(sorted(mesh.links))] = xy(P)
         d = t + flank * math.tan(mesh.pressure_angle) * r
         d /= abs(d)
         nW, nF = self.name(g.j, g.k), self.name(g.support, g.k)
         Rk = self.rname[g.k]
-        self.add("line", Later(lambda scope, nW, angle, k: _lead(
-            scope, f"the tooth force {nW} lies on the pressure line through the pitch point P, inclined "
-            f"{number(math.degrees(angle))}° to the common tangent, on the flank that opposes the load on gear {k}."),
-            self.scope, nW, mesh.pressure_angle, g.k), g.k, (Line(nW, xy(P), xy(d)),), {"P": xy(P)})
+        if flow:
+            where = Later(lambda scope, nW, angle, k, eta, rho, rk, driven: _lead(
+                scope, f"the tooth force {nW} lies on a line inclined {number(math.degrees(angle))}° to the common "
+                f"tangent, on the flank that opposes the load on gear {k}; with the mesh efficiency η = {number(eta)} "
+                f"it crosses the line of centres at P′, {number(rho * 1e3)} mm from gear {k}'s centre instead of the "
+                f"pitch radius {number(rk * 1e3)} mm, so that the driven gear {driven} receives η times the ideal "
+                f"torque (relative to the carrier)."), self.scope, nW, mesh.pressure_angle, g.k, mesh.efficiency,
+                rho, mesh.radius(g.k), g.k if flow > 0 else g.j)
+            self.add("line", where, g.k, (Line(nW, xy(P), xy(d)),), {"P′": xy(P)})
+        else:
+            self.add("line", Later(lambda scope, nW, angle, k: _lead(
+                scope, f"the tooth force {nW} lies on the pressure line through the pitch point P, inclined "
+                f"{number(math.degrees(angle))}° to the common tangent, on the flank that opposes the load on gear "
+                f"{k}."), self.scope, nW, mesh.pressure_angle, g.k), g.k, (Line(nW, xy(P), xy(d)),), {"P": xy(P)})
         arm = cross(P - Ck, d)
         F_W = (-R.about(Ck) / arm) * d
         F_piv = -R.F - F_W

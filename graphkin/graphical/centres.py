@@ -21,7 +21,7 @@ from itertools import combinations
 
 import numpy as np
 
-from graphkin.analytical.kinetostatics import pitch as pitch_point
+from graphkin.analytical.meshes import pitch as pitch_point
 from graphkin.errors import GraphkinError
 from graphkin.graphical.captions import number
 from graphkin.graphical.guard import centres_disagreement, derived

@@ -277,6 +277,9 @@ class Construction:
         External forces (and weight) on each link, at their points.
     pitch_points : dict of (int, int) to (float, float)
         Pitch point of each gear mesh [m].
+    contacts : dict of (int, int) to (float, float)
+        Where each gear mesh's tooth force acts [m]: its pitch point, or with a mesh efficiency the point of the
+        line of centres its line crosses (:func:`graphkin.analytical.meshes.contact`).
     torques : dict of int to list of (str, float)
         External torques acting on each link at this position [N·m].
     guides : dict of (int, int) to (float, float)
@@ -326,7 +329,7 @@ class Construction:
             if isinstance(joint, Prismatic):
                 at = self.points[joint.slider][joint.point]
             elif isinstance(joint, GearMesh):
-                at = self.pitch_points[tuple(sorted(joint.links))]
+                at = self.contacts[tuple(sorted(joint.links))]
             else:
                 at = self.points[link][joint.point]
             out.append(Arrow(force_name(self.mechanism, other, link), (float(F[0]), float(F[1])), False, at))
@@ -343,6 +346,7 @@ class Construction:
         return total
 
     pitch_points: dict = field(default_factory=dict)
+    contacts: dict = field(default_factory=dict)
     torques: dict = field(default_factory=dict)
     guides: dict = field(default_factory=dict)
     angles: dict = field(default_factory=dict)

@@ -28,7 +28,7 @@ import math
 
 import numpy as np
 
-from graphkin.analytical.kinetostatics import pitch as pitch_point
+from graphkin.analytical.meshes import pitch as pitch_point
 from graphkin.errors import GraphkinError
 from graphkin.geometry import zcross as cross
 from graphkin.graphical.captions import number

@@ -144,6 +144,11 @@ def _driver_text(s: Subject, d: dict, i: int | None) -> str:
         if key in ("theta", "s") and i is not None and not s.whole_cycle:
             parts.append(s.where(i))
             continue
+        if key == "travel" and i is not None and not s.whole_cycle:
+            # The piston's travel as the book gives it, and the crank angle it puts the crank at.
+            one = not isinstance(value, (list, dict))
+            parts.append((f"piston travel = {_pretty(value)}, so " if one else "") + s.where(i))
+            continue
         parts.append(f"{names.get(key, key)} = {_pretty(value)}" if not isinstance(value, dict) or
                      {"start", "stop"} > value.keys() else f"{names.get(key, key)} {_pretty(value)}")
     return "; ".join(parts)
@@ -172,6 +177,8 @@ def _gear_text(j: dict) -> str:
     text = " meshes with ".join(gears)
     if "pressure_angle" in j:
         text += f"; pressure angle φ = {_pretty(j['pressure_angle'])}"
+    if "efficiency" in j:
+        text += f"; mesh efficiency η = {_pretty(j['efficiency'])}"
     return text
 
 

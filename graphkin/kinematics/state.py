@@ -232,6 +232,35 @@ class Kinematics:
         v_other = self.v_O[other] + 1j * self.w(other) * (X - self.O[other])
         return dot(v_on - v_other, self.z_guide(joint))
 
+    def sliding(self, joint: Prismatic) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """The slider's motion relative to its guide link, at the slider's point P: the textbook's decomposition
+
+        a_P(slider) = a_P(guide) + a_c + a_r u,    a_c = 2 ω_g × v_r u,
+
+        where P(guide) is the guide link's point coinciding with P, u the guide's direction (turning with the
+        guide link, :meth:`z_guide`) and ω_g the guide's angular velocity (the slider's too: the pair keeps them
+        turning together). All from the derived motion, not values a problem gives (:meth:`with_given`).
+
+        Returns
+        -------
+        v_r : ndarray, shape (n,)
+            Sliding velocity [m/s] along u: (v_P(slider) − v_P(guide)) · u.
+        a_r : ndarray, shape (n,)
+            Sliding acceleration [m/s²] along u, the rate of v_r as the guide link sees it:
+            (a_P(slider) − a_P(guide)) · u (a_c is perpendicular to u).
+        a_c : complex ndarray, shape (n,)
+            Coriolis component [m/s²] as x + iy: v_r u turned 90° in the sense of ω_g, of size 2 |ω_g v_r|.
+        """
+        g, p = joint.guide, self._p(joint.slider, joint.point)
+        u = self.z_guide(joint)
+        w = self.omega[g]
+        r = self.O[joint.slider] + self.e[joint.slider] * p - self.O[g]  # P from the guide link's origin
+        with np.errstate(invalid="ignore", over="ignore"):
+            v_r = dot(self.z_velocity(joint.slider, joint.point) - (self.v_O[g] + 1j * w * r), u)
+            a_r = dot(self.z_acceleration(joint.slider, joint.point) - (self.a_O[g] + (1j * self.alpha[g] - w * w) * r),
+                      u)
+            return v_r, a_r, 2j * w * v_r * u
+
     def slide_sense(self, joint: Prismatic, on: int) -> np.ndarray:
         """Sense of :meth:`slide_rate`: +1, −1, or 0 where the pair is still, shape (n,).
 

@@ -143,6 +143,13 @@ class GearMesh:
         pinion inside it: the gear with the larger pitch radius is the
         annulus. Relative to a carrier that holds both centres, the two then
         turn the same way (external gears turn opposite ways).
+    efficiency : float
+        Mesh efficiency η, 0 < η ≤ 1 (default 1, no loss): the power the
+        driven gear receives is η times what the driving gear gives, both
+        measured relative to the carrier. An internal mesh needs η above the
+        ratio of the pinion's pitch radius to the annulus's (below it no
+        tooth force can turn the two that way). See
+        :func:`graphkin.analytical.meshes.contact`.
     """
 
     links: tuple[int, int]
@@ -150,6 +157,7 @@ class GearMesh:
     radii: tuple[float, float]
     pressure_angle: float = math.radians(20.0)
     internal: bool = False
+    efficiency: float = 1.0
 
     def __post_init__(self):
         object.__setattr__(self, "links", _pair(self.links, "gear mesh"))
@@ -177,6 +185,16 @@ class GearMesh:
         if self.internal and abs(r[0] - r[1]) <= 1e-9 * max(r):
             raise ModelError(f"{label}: an internal mesh needs an annulus larger than its pinion, got equal pitch radii "
                              f"{r[0] * 1e3:.6g} mm", at=("radii",))
+        eta = finite(self.efficiency, f"{label}: efficiency")
+        if not 0 < eta <= 1:
+            raise ModelError(f"{label}: efficiency must be above 0 and at most 1 (the fraction of the power the driving "
+                             f"gear gives that the driven one receives), got {eta:g}", at=("efficiency",))
+        if self.internal and eta <= min(r) / max(r):
+            raise ModelError(f"{label}: an internal mesh's efficiency must be above the pinion's pitch radius over the "
+                             f"annulus's ({min(r) / max(r):.6g}): below it the tooth force's line, which divides the "
+                             f"line of centres in the ratio of the torques, would have to lie outside both gears, "
+                             f"got {eta:g}", at=("efficiency",))
+        object.__setattr__(self, "efficiency", float(eta))
 
     @property
     def label(self) -> str:

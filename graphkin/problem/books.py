@@ -1,5 +1,6 @@
 """Loads and inputs as books give them: a pressure on a piston, a power at a speed, a crank angle from a dead centre
-in the sense of rotation, a slider placed by another link's angle, and a forward step (``[forward]``).
+in the sense of rotation, a crank placed by its piston's travel, a slider placed by another link's angle, and a
+forward step (``[forward]``).
 
 Each becomes what graphkin's core solves — a force, a torque, an input position, a :class:`Forward` — at the
 boundary, with every error naming the file and the field (``docs/problem-files.md``).
@@ -8,6 +9,7 @@ boundary, with every error naming the file and the field (``docs/problem-files.m
 from __future__ import annotations
 
 import math
+import re
 from collections import OrderedDict
 from dataclasses import dataclass, replace
 
@@ -17,10 +19,11 @@ from graphkin.errors import ModelError
 from graphkin.kinematics import decompose, solve_kinematics
 from graphkin.kinematics.plan import kept_plan
 from graphkin.kinematics.structure import Dyad
-from graphkin.model import PointForce, Prismatic, Revolute, StrokeForce, Table, Torque, spring
+from graphkin.model import GearMesh, PointForce, Prismatic, Revolute, StrokeForce, Table, Torque, spring
 from graphkin.notation import num
 from graphkin.problem.placement import placements
 from graphkin.problem.problem import Forward
+from graphkin.problem.reader import shown
 from graphkin.problem.tables import load_table, parse_table
 from graphkin.problem.unknown import Unknown
 
@@ -87,6 +90,120 @@ def crank_from_dead_centre(rd, d, mech, q):
         raise rd.fail("driver.from", f"must be one of {', '.join(repr(k) for k in DEAD_CENTRES)}, got {which!r}")
     theta, _ = dead_centre(rd, mech, which, "driver.from")
     return theta + SENSES_OF_ROTATION[d.get("sense", "counter-clockwise")] * q
+
+
+MOVING = ("away", "towards")
+"""Which of the two crank angles at a piston's travel ``driver.moving`` names: the piston moving away from the dead
+centre the travel is measured from (on the stroke that begins there), or back towards it."""
+_FRACTION = re.compile(r"^\s*(\d+(?:\.\d*)?|\.\d+)\s*(?:/\s*(\d+(?:\.\d*)?|\.\d+)\s*)?$")
+
+
+def read_travel(rd, value) -> tuple[np.ndarray, np.ndarray]:
+    """``driver.travel`` as written: each value a length [m] or a fraction of the stroke, and which are fractions.
+
+    A length carries its unit (``"80 mm"``); a fraction is a bare number (``0.25``) or a ratio of two
+    (``"1/3"``), since a third has no exact decimal. A range is of lengths, or of bare numbers.
+    """
+    field = "driver.travel"
+    if isinstance(value, dict):
+        fraction = isinstance(value.get("start"), (int, float)) and not isinstance(value.get("start"), bool)
+        x = rd.array(value, "dimensionless" if fraction else "length", field)
+        return x, np.full(len(x), fraction)
+    items = value if isinstance(value, list) else [value]
+    if not items:
+        raise rd.fail(field, "the list is empty; give at least one travel")
+    x, fraction = np.empty(len(items)), np.zeros(len(items), bool)
+    for i, raw in enumerate(items):
+        where = f"{field}[{i}]" if isinstance(value, list) else field
+        if isinstance(raw, bool) or not isinstance(raw, (int, float, str)):
+            raise rd.fail(where, f"must be a length (\"80 mm\") or a fraction of the stroke (0.25, \"1/3\"), got "
+                          f"{raw!r}")
+        ratio = _FRACTION.match(raw) if isinstance(raw, str) else None
+        if isinstance(raw, (int, float)) or ratio:
+            top, bottom = (float(raw), 1.0) if not ratio else (float(ratio[1]), float(ratio[2] or 1.0))
+            if bottom == 0:
+                raise rd.fail(where, f"\"{raw}\" divides by zero: a fraction of the stroke is p/q with q > 0")
+            x[i], fraction[i] = top / bottom, True
+            if not 0 <= x[i] <= 1:
+                raise rd.fail(where, f"{raw!r} is not a fraction of the stroke: give one from 0 to 1, or a length "
+                              "with its unit (\"80 mm\")")
+        else:
+            x[i] = rd.si(raw, "length", where, None)
+            if not x[i] >= 0:
+                raise rd.fail(where, f"\"{raw}\" is the piston's distance from the dead centre: give it ≥ 0 (the "
+                              "stroke it is on is driver.moving)")
+            rd.ranged(x[i], raw, "coordinate", where)
+    return x, fraction
+
+
+def crank_from_travel(rd, d, mech, q_dot) -> np.ndarray:
+    """``driver.travel``: the crank angles [rad] at which the piston has travelled a length from a dead centre.
+
+    The piston's pin is then at X = X_dc + s u on its guide (u from that dead centre towards the other, s the travel
+    or its fraction of the stroke |X_other − X_dc|), and the crank pin is where the crank's circle about its pivot
+    O (radius r) meets the connecting rod's about X (radius l): two points, one on each stroke, in closed form. Of
+    the two, ``driver.moving`` takes the one where the piston moves away from the dead centre as the crank turns in
+    its sense of rotation (``driver.sense``; the default) or back towards it. Each angle is checked by solving the
+    linkage there: the pin is at X on the file's assembly branch.
+    """
+    which = d.get("from", "inner dead centre")
+    if which not in DEAD_CENTRES:
+        raise rd.fail("driver.from", f"must be one of {', '.join(repr(k) for k in DEAD_CENTRES)}, got {which!r}")
+    moving = d.get("moving", "away")
+    if moving not in MOVING:
+        raise rd.fail("driver.moving", f"must be \"away\" (the piston moving away from the {which}, on the stroke "
+                      f"that begins there: the default) or \"towards\" (coming back to it), got {moving!r}")
+    sense = SENSES_OF_ROTATION[d.get("sense", "counter-clockwise")]
+    if "sense" not in d and (q_dot < 0).any():
+        raise rd.fail("driver.omega", f"is negative ({float(q_dot[q_dot < 0][0]):.6g} rad/s, clockwise) but driver."
+                      "sense is not given: the piston's travel is on the stroke it makes in the crank's sense of "
+                      "rotation, so write sense = \"clockwise\" and omega as its size")
+    field = "driver.travel"
+    s, fraction = read_travel(rd, d["travel"])
+    theta_a, X_a = dead_centre(rd, mech, which, field)
+    other = "outer dead centre" if DEAD_CENTRES[which] > 0 else "inner dead centre"
+    theta_b, X_b = dead_centre(rd, mech, other, field)
+    stroke = abs(X_b - X_a)
+    s = np.where(fraction, s * stroke, s)
+    beyond = np.flatnonzero(s > stroke * (1 + 1e-12))
+    if len(beyond):
+        k = beyond[0]
+        raw = d["travel"][k] if isinstance(d["travel"], list) else d["travel"]
+        raw = shown(raw) if not isinstance(raw, dict) else f"{s[k] * 1e3:.6g} mm"
+        raise rd.fail(f"{field}[{k}]" if isinstance(d["travel"], list) else field,
+                      f"{raw} is beyond the stroke: the piston travels {stroke * 1e3:.6g} mm from the {which} to "
+                      f"the {other}")
+    # The stroke is the distance between two computed points: a travel of the whole stroke, as written, may exceed
+    # or fall short of it by rounding, which at a dead centre (where the piston stands still) would turn the crank
+    # by ~1e-8 rad. Within rounding of either end the piston is at that dead centre.
+    s = np.where(s >= stroke * (1 - 1e-13), stroke, np.where(s <= stroke * 1e-13, 0.0, s))
+    pivot, C, rod, P, _ = piston(rd, mech, field)
+    link_c = mech.link(mech.driver.link)
+    (ox, oy), (cx, cy) = link_c.point(pivot.point), link_c.point(C.point)
+    r, beta = math.hypot(cx - ox, cy - oy), math.atan2(cy - oy, cx - ox)
+    (ax, ay), (bx, by) = mech.link(rod).point(C.point), mech.link(rod).point(P.point)
+    l = math.hypot(bx - ax, by - ay)
+    O = complex(*mech.link(mech.frame).point(pivot.point))
+    X = X_a + s * (X_b - X_a) / stroke
+    # The crank pin: on the circle |C − O| = r and on |C − X| = l, a from O along OX and h either side of it.
+    D = np.abs(X - O)
+    a = (r * r - l * l + D * D) / (2 * D)
+    h = np.sqrt(np.maximum(r * r - a * a, 0.0))
+    along = (X - O) / D
+    turned = np.stack([np.angle((a + side * 1j * h) * along) - beta for side in (1.0, -1.0)])
+    # Each candidate's angle from the dead centre in the sense of rotation: the piston moves away from it until
+    # the crank has turned as far as the other dead centre, and comes back after.
+    phi = np.mod(sense * (turned - theta_a), 2 * math.pi)
+    phi = phi.min(axis=0) if moving == "away" else phi.max(axis=0)
+    phi = np.where(s == 0, 0.0, np.where(s == stroke, np.mod(sense * (theta_b - theta_a), 2 * math.pi), phi))
+    theta = theta_a + sense * phi
+    kin = solve_kinematics(mech, theta, 0.0, 0.0)
+    at = kin.position(rod, P.point)[:, 0] + 1j * kin.position(rod, P.point)[:, 1]
+    wrong = np.flatnonzero(~kin.valid | ~(np.abs(at - X) <= 1e-9 * (r + l)))
+    if len(wrong):
+        raise rd.fail(field, f"the mechanism cannot be assembled with the piston {s[wrong[0]] * 1e3:.6g} mm from "
+                      f"its {which} (on the file's assembly branch)")
+    return theta
 
 
 def piston(rd, mech, field):
@@ -416,6 +533,11 @@ def unknown(rd, value, mech):
     if link == mech.driver.link:
         raise rd.fail("unknown.link", f"link {link} is the driver, whose effort graphkin finds anyway: leave out "
                       "[unknown], or name the link whose torque (or slider force) the book asks for")
+    lossy = [k for k, j in enumerate(mech.joints) if isinstance(j, GearMesh) and j.efficiency < 1]
+    if lossy:
+        raise rd.fail("unknown", f"is found from two solutions, as loads are linear; the efficiency of joints"
+                      f"[{lossy[0]}] makes them not so (which gear loses depends on the way the power flows): drive "
+                      f"link {link} instead (its effort is then the driver's) and give the other effort as a load")
     name = t.get("name", "")
     if not isinstance(name, str):
         raise rd.fail("unknown.name", f"must be a string such as \"T4\", got {name!r}")

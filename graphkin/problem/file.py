@@ -35,10 +35,10 @@ _LINK = {"number", "name", "points", "mass", "G", "I_G", "k", "shape"}
 _JOINT = {
     "revolute": {"type", "links", "point"},
     "prismatic": {"type", "guide", "slider", "point", "through", "direction", "slider_direction", "mu"},
-    "gear": {"type", "links", "centers", "radii", "pressure_angle", "internal"},
+    "gear": {"type", "links", "centers", "radii", "pressure_angle", "internal", "efficiency"},
 }
 _DRIVER = {
-    "crank": {"type", "link", "theta", "omega", "alpha", "from", "sense"},
+    "crank": {"type", "link", "theta", "travel", "moving", "omega", "alpha", "from", "sense"},
     "slider": {"type", "link", "s", "v", "a", "place"},
 }
 _LOAD = {"force": {"type", "link", "point", "force", "direction", "table", "csv", "decimal", "sense", "active", "name"},
@@ -184,6 +184,9 @@ def build_problem(data: Mapping[str, Any], *, file: str = "<problem>", base: str
     kind = d.get("type", "crank")
     if kind not in _DRIVER:
         raise rd.fail("driver.type", f"must be 'crank' or 'slider', got {kind!r}")
+    if kind == "slider" and "travel" in d:
+        raise rd.fail("driver.travel", "places a crank by its piston's travel from a dead centre; a slider driver's "
+                      "position is s itself (along the guide from its through point)")
     rd.table(d, "driver", _DRIVER[kind])
     driver = Driver(rd.whole(rd.need(d, "link", "driver"), "driver.link"), kind)
     q, q_dot, q_ddot = _motion(rd, d, kind, static)
@@ -227,6 +230,11 @@ def build_problem(data: Mapping[str, Any], *, file: str = "<problem>", base: str
         raise rd.fail(f"driver.{speed}", f"is missing: a dynamic analysis needs the input speed, e.g. {speed} = "
                       + ('"900 rpm"' if kind == "crank" else '"2 m/s"')
                       + ' (for a linkage at rest or at negligible speed write analysis = "static")')
+    for k, joint in enumerate(joints):
+        if isinstance(joint, GearMesh) and joint.efficiency < 1 and not np.all(q_dot):
+            raise rd.fail(f"joints[{k}].efficiency", "a mesh efficiency takes power off the driven gear, and which gear "
+                          f"drives depends on the motion: give driver.{speed} at every position (a static analysis "
+                          "uses it only for that)")
     for k, load in enumerate(loads):
         if load.sense != "fixed" and not np.any(q_dot):
             raise rd.fail(f"loads[{origin[k]}].sense", f"{load.sense!r} follows the motion, but the input does not move: give "
@@ -237,7 +245,9 @@ def build_problem(data: Mapping[str, Any], *, file: str = "<problem>", base: str
         groups = plan_of(mech).groups
     except ModelError as exc:
         raise rd.fail(_field_of(exc.at) or "joints", str(exc)) from None
-    if "from" in d:
+    if "travel" in d:
+        q = books.crank_from_travel(rd, d, mech, q_dot)
+    elif "from" in d:
         q = books.crank_from_dead_centre(rd, d, mech, q)
     if "place" in d:
         q = books.placed(rd, d, mech)
@@ -464,7 +474,8 @@ def _joint(rd, t, where):
                           f"{internal!r}")
         return GearMesh(_pair(rd, rd.need(t, "links", where), f"{where}.links"), tuple(centers),
                         tuple(rd.si(r, "length", f"{where}.radii[{i}]", "length") for i, r in enumerate(radii)),
-                        rd.si(t.get("pressure_angle", "20 deg"), "angle", f"{where}.pressure_angle"), internal)
+                        rd.si(t.get("pressure_angle", "20 deg"), "angle", f"{where}.pressure_angle"), internal,
+                        rd.si(t.get("efficiency", 1.0), "dimensionless", f"{where}.efficiency", None))
     except ProblemFileError:
         raise
     except ModelError as exc:
@@ -485,7 +496,14 @@ def _motion(rd, d, kind, static=False):
         if "s" in d:
             raise rd.fail("driver.place", "places the slider by another link's angle: give it or s, not both")
         q = np.zeros(1)  # found once the mechanism is known (books.placed)
+    elif "travel" in d:
+        if "theta" in d:
+            raise rd.fail("driver.travel", "places the crank by its piston's travel: give it or theta, not both")
+        q = np.zeros(len(books.read_travel(rd, d["travel"])[0]))  # the angles need the mechanism (books.crank_from_travel)
     else:
+        if "moving" in d:
+            raise rd.fail("driver.moving", "chooses the stroke on which the piston has travelled driver.travel: "
+                          "give it with travel, not with theta")
         q = rd.array(rd.need(d, names[0], "driver"), dims[0], f"driver.{names[0]}")
     accel = names[2]
     if static and accel in d:

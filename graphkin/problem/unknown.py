@@ -28,7 +28,8 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from graphkin.analytical.loads import applied
-from graphkin.model import PointForce, Prismatic, Torque
+from graphkin.errors import GraphkinError
+from graphkin.model import GearMesh, PointForce, Prismatic, Torque
 from graphkin.model.loads import Table
 
 
@@ -95,6 +96,11 @@ class Unknown:
             the driver is not valid, with the reason.
         """
         mech = kin.mechanism
+        lossy = [j for j in mech.joints if isinstance(j, GearMesh) and j.efficiency < 1]
+        if lossy:
+            raise GraphkinError(f"the unknown effort on link {self.link} is found from two solutions, as the loads "
+                                f"are linear; the {lossy[0].label}'s efficiency makes them not so (its loss changes "
+                                "side with the way the power flows): give the effort as a load and drive that link")
         e0 = np.asarray(solve_forces(kin).effort, dtype=float)
         unit = self._load(kin, np.ones(len(kin.q)))
         e1 = np.asarray(solve_forces(replace(kin, mechanism=replace(mech, loads=(*mech.loads, unit)))).effort,

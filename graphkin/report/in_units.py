@@ -21,6 +21,7 @@ _SOLUTION_POSITION: dict[str, str] = {
     "prismatic.*.normal": "force", "prismatic.*.friction": "force", "prismatic.*.couple": "torque",
     "prismatic.*.offset": "length",
     "loads[].force": "force", "loads[].torque": "torque",
+    "sliding[].velocity": "velocity", "sliding[].acceleration": "acceleration", "sliding[].coriolis": "acceleration",
     "driver.vector": "force",
     "forward.I": "moment_of_inertia", "forward.T_driving": "torque", "forward.T_resisting": "torque",
     "forward.alpha": "angular_acceleration",
@@ -100,6 +101,7 @@ def solution_in(data: dict, u: UnitSystem) -> dict:
         units[path] = "SI (m, rad, N, N*m, s)"
     units["positions[].graphical.force_scale_N_per_mm"] = "N/mm"
     units["positions[].prismatic.*.guide_direction"] = "(unit vector)"
+    units["positions[].sliding[].guide_direction"] = "(unit vector)"
     units["positions[].graphical.relative_difference"] = "(ratio)"
     return {**data, "units": units, "given": given, "positions": positions}
 

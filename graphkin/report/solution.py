@@ -18,7 +18,7 @@ from graphkin.analytical.loads import applied
 from graphkin.graphical import construct_forces
 from graphkin.graphical.guard import forces_disagreement, mechanism_size
 from graphkin.kinematics.points import link_points
-from graphkin.model import PointForce
+from graphkin.model import PointForce, Prismatic
 from graphkin.notation import PICOMETRE, RESIDUE, input_text, largest, num, unless_rounding
 from graphkin.report.polygons import graphical_kinematics_data
 from graphkin.units.systems import SI, UnitSystem
@@ -160,6 +160,7 @@ def solution(problem, result: ForceAnalysis, graphical: list | None = None, kine
     unknown = getattr(problem, "unknown", None)
     found = unknown.values(result) if unknown is not None else None
     size = mechanism_size(mech)
+    sliding = _sliding(kin)
     for i in range(result.n):
         entry = {
             "index": i,
@@ -202,7 +203,10 @@ def solution(problem, result: ForceAnalysis, graphical: list | None = None, kine
             if not crank:
                 driver["vector"] = _vec(result.driver_force()[i])
             entry.update(links=links, forces=forces, prismatic=prismatic, driver=driver,
-                         loads=[_load_entry(ld, value[i]) for ld, value in applied])
+                         loads=[_load_entry(ld, value[i]) for ld, value in applied],
+                         sliding=[{**about, "guide_direction": _vec(u[i]), "velocity": float(v_r[i]),
+                                   "acceleration": float(a_r[i]), "coriolis": [float(a_c[i].real), float(a_c[i].imag)]}
+                                  for about, u, v_r, a_r, a_c in sliding])
             if step is not None:
                 entry["forward"] = {"I": forward.I, **{key: float(v[i]) for key, v in step.items()}}
             if found is not None:
@@ -225,6 +229,40 @@ def solution(problem, result: ForceAnalysis, graphical: list | None = None, kine
         "given": _given(kin),
         "positions": positions,
     }
+
+
+def _sliding(kin) -> list:
+    """Each sliding pair between two moving links (a slider on a guide that turns) with its motion along the guide at
+    every position: ``(about, u, v_r, a_r, a_c)``, ``about`` the pair's names, the rest arrays
+    (:meth:`graphkin.kinematics.Kinematics.sliding`)."""
+    mech = kin.mechanism
+    out = []
+    for joint in mech.joints:
+        if isinstance(joint, Prismatic) and mech.frame not in joint.links:
+            about = {"name": f"{joint.point}{joint.slider}{joint.point}{joint.guide}", "slider": joint.slider,
+                     "guide": joint.guide, "point": joint.point}
+            out.append((about, kin.guide_direction(joint), *kin.sliding(joint)))
+    return out
+
+
+def _sliding_text(entry, u: UnitSystem = SI) -> list[str]:
+    """The sliding pairs on moving guides at one position, as the text report prints them (two lines each)."""
+    lines = []
+    v, a = u.symbol("velocity"), u.symbol("acceleration")
+    kv, ka = u.scales["velocity"], u.scales["acceleration"]
+    # What a rate here is rounding beside: the fastest (most accelerated) point of the mechanism at this position.
+    points = [m for s in entry["links"].values() for m in s["points"].values()]
+    v_max, a_max = largest(m["velocity"] for m in points), largest(m["acceleration"] for m in points)
+    for s in entry.get("sliding", []):
+        name, g = s["name"], s["guide"]
+        still = "" if entry["links"][str(g)]["omega"] else f" (ω{g} = 0)"
+        lines += [f"    {s['point']} of link {s['slider']} on link {g}, along the guide "
+                  f"∠ {math.degrees(math.atan2(*s['guide_direction'][::-1])):.2f}°: "
+                  f"v_{name} = {num(kv * s['velocity'], minus='-', zero=kv * RESIDUE * v_max)} {v}, "
+                  f"a^r_{name} = {num(ka * s['acceleration'], minus='-', zero=ka * RESIDUE * a_max)} {a}",
+                  f"      Coriolis a^c_{name} = 2 ω{g} × v_{name} = "
+                  f"{_polar(s['coriolis'], 'acceleration', u, scale=a_max)}{still}"]
+    return (["  Sliding on moving guides (the slider relative to the guide's coincident point)"] + lines) if lines else []
 
 
 def _given(kin) -> list:
@@ -384,6 +422,7 @@ def format_solution(problem, result: ForceAnalysis, graphical: list | None = Non
             for link, s in entry["links"].items():
                 out.append(f"    {link:<6}{u.show(s['theta'], 'angle'):>10.3f}{u.show(s['omega'], 'angular_velocity'):>12.4f}"
                            f"{u.show(s['alpha'], 'angular_acceleration'):>13.4f}   {_polar(s['a_G'], 'acceleration', u)}")
+            out.extend(_sliding_text(entry, u))
             out.append("  Inertia loads (d'Alembert: F_i = −m a_G at G, T_i = −I_G α, h = |T_i|/|F_i|)")
         for link, s in ([] if static else entry["links"].items()):
             if mech.link(int(link)).mass == 0:

@@ -17,7 +17,7 @@ from hypothesis import strategies as st
 
 from graphkin.analytical import applied, solve_forces
 from graphkin.kinematics import solve_kinematics
-from graphkin.model import FRAME, Driver, Link, Mechanism, Revolute, SpringForce, spring
+from graphkin.model import Driver, Link, Mechanism, Revolute, SpringForce, spring
 from graphkin.report import constructions, cross_check
 from tests.physics import SETTINGS
 from tests.strategies import families
@@ -28,11 +28,12 @@ def _with_a_spring(data, family):
     links = [lk for lk in mech.links if lk.points]
     a, b = data.draw(st.permutations(links))[:2]
     pa, pb = data.draw(st.sampled_from(sorted(a.points))), data.draw(st.sampled_from(sorted(b.points)))
-    if a.number == FRAME and b.number == FRAME:
+    if a.number == mech.frame and b.number == mech.frame:
         return None
     k, L0 = data.draw(st.floats(1.0, 1e4)), data.draw(st.one_of(st.just(0.0), st.floats(1e-3, 1.0)))
-    loads = spring((a.number, b.number), (pa, pb), k, L0, frame=FRAME, name="this spring")
-    return Mechanism(mech.links, mech.joints, mech.driver, [*mech.loads, *loads], mech.gravity, dict(mech.assembly)), \
+    loads = spring((a.number, b.number), (pa, pb), k, L0, frame=mech.frame, name="this spring")
+    return Mechanism(mech.links, mech.joints, mech.driver, [*mech.loads, *loads], mech.gravity, dict(mech.assembly),
+                     frame=mech.frame), \
         q, q_dot, q_ddot, (a.number, pa, b.number, pb, k, L0)
 
 

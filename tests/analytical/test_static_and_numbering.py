@@ -23,7 +23,7 @@ from graphkin.analytical import solve_forces
 from graphkin.cli import main
 from graphkin.graphical import construct_forces
 from graphkin.kinematics import solve_kinematics
-from graphkin.model import Driver, Mechanism, Prismatic, SpringForce
+from graphkin.model import Prismatic
 from graphkin.problem import parse_problem
 from graphkin.report import constructions, format_solution, solution
 from tests.physics import active, close, joint_point, load_value
@@ -225,25 +225,10 @@ def test_cycle_figure_follows_the_numbering():
     plt.close(fig)
 
 
-# -- hypothesis: random linkages solved statically, half of them with the frame numbered 0 -----------------------
+# -- hypothesis: random linkages solved statically (half of them with the frame numbered 0: tests/strategies.py) --
 
 SETTINGS = settings(max_examples=15, deadline=None, suppress_health_check=[HealthCheck.too_slow,
                                                                              HealthCheck.filter_too_much])
-
-
-def _frame_zero(mech: Mechanism) -> Mechanism:
-    """The same mechanism with every link renumbered one lower: the frame 0, the first moving link 1."""
-    def m(n):
-        return n - 1
-
-    links = [dataclasses.replace(l, number=m(l.number), points=dict(l.points)) for l in mech.links]
-    joints = [dataclasses.replace(j, guide=m(j.guide), slider=m(j.slider)) if isinstance(j, Prismatic)
-              else dataclasses.replace(j, links=tuple(m(i) for i in j.links)) for j in mech.joints]
-    loads = [dataclasses.replace(load, link=m(load.link), **({"anchor_link": m(load.anchor_link)}
-                                                            if isinstance(load, SpringForce) else {}))
-             for load in mech.loads]
-    return Mechanism(links, joints, Driver(m(mech.driver.link), mech.driver.kind), loads, mech.gravity,
-                     dict(mech.assembly), mech.title, frame=0)
 
 
 def static_loads(kin, r, link):
@@ -279,8 +264,7 @@ def static_loads(kin, r, link):
 
 def _static(data, family):
     case = data.draw(families[family])
-    mech = _frame_zero(case.mechanism) if data.draw(st.booleans()) else case.mechanism
-    kin = dataclasses.replace(solve_kinematics(mech, case.q, case.q_dot, case.q_ddot), static=True)
+    kin = dataclasses.replace(solve_kinematics(*case), static=True)
     r = solve_forces(kin)
     assert r.valid.all(), [r.reason(i) for i in range(r.n)]
     return kin, r

@@ -120,7 +120,7 @@ def test_roster_make_key_grade(capsys, tmp_path):
     ("a.csv:student,T12\ns1,1 N*m\ns1,2 N*m\n", ["exercise", "grade", "single_link", "--answers", "A"],
      "answers A: line 3: student 's1' is already on line 2"),
     ("k.json:{}", ["exercise", "grade", "single_link", "--keys", "A", "--answers", "x.csv"], "not graphkin keys"),
-    ("a.ipynb:{}", ["exercise", "grade", "single_link", "--answers", "A"], "not a notebook"),
+    (None, ["exercise", "grade", "single_link", "--answers", "missing.ipynb"], "missing.ipynb: no such file"),
 ])
 def test_bad_input_is_one_line_and_exit_2(capsys, tmp_path, setup, args, expected):
     target = None
@@ -130,7 +130,8 @@ def test_bad_input_is_one_line_and_exit_2(capsys, tmp_path, setup, args, expecte
         target.write_bytes(text.encode("latin-1") if ("\xff" in text or "\xb7" in text) else text.encode("utf-8"))
     (tmp_path / "DIR").mkdir()
     (tmp_path / "FILE").write_text("x")
-    args = [str(target) if a == "A" else str(tmp_path / a) if a in ("DIR", "FILE/x.txt", "missing.json") else a
+    args = [str(target) if a == "A" else str(tmp_path / a) if a in ("DIR", "FILE/x.txt", "missing.json",
+                                                                     "missing.ipynb") else a
             for a in args]
     expected = expected.replace("answers A", f"answers {target}")
     code, out, err = run(capsys, *args)
@@ -208,6 +209,28 @@ def test_grade_handed_in_notebooks_read_as_data(capsys, tmp_path):
     assert reports[2]["refused"].startswith("This notebook carries no student id")
 
 
+def test_a_notebook_that_cannot_be_read_is_its_row_and_never_stops_the_class(capsys, tmp_path):
+    """Issue 34: one student's notebook of 58 MB, or of JSON nested 100 000 deep, stopped the whole regrade."""
+    key = {q["id"]: q["answer"]["text"] for q in exercises.key("single_link", "s1", "k")["questions"]}
+    good = _notebook(tmp_path, "good.ipynb", ['STUDENT = "s1"', f"F12 = {key['F12']!r}", f"T12 = {key['T12']!r}"])
+    deep = tmp_path / "deep.ipynb"
+    deep.write_bytes(b'{"cells": ' + b"[" * 100_000 + b"]" * 100_000 + b"}")
+    big = tmp_path / "big.ipynb"
+    with open(big, "wb") as f:
+        f.truncate(60_000_000)
+    (tmp_path / "not.ipynb").write_bytes(b"\xff\xfe not a notebook")
+    code, out, err = run(capsys, "exercise", "grade", "single_link", "--secret", "k", "--json", "--answers",
+                         str(deep), str(good), str(big), str(tmp_path / "not.ipynb"))
+    assert code == 0, err
+    reports = json.loads(out)
+    assert [(r["student"], r["score"]) for r in reports] == [("", 0.0), ("s1", 2.0), ("", 0.0), ("", 0.0)]
+    assert [r.get("refused", "").split(",")[0] for r in reports] == [
+        "This file is nested too deeply to be a notebook: hand in the notebook as Jupyter saved it.", "",
+        "This notebook is larger than 50 MB", "This file is not UTF-8 text"]
+    assert f"graphkin: note: {deep}: not graded: This file is nested too deeply" in err
+    assert "Traceback" not in err
+
+
 def test_grade_nbgrader_folders_checks_the_notebooks_id(capsys, tmp_path):
     key = {q["id"]: q["answer"]["text"] for q in exercises.key("single_link", "alice")["questions"]}
     for student, claimed in (("alice", "alice"), ("carol", "alice")):
@@ -279,3 +302,39 @@ def test_one_long_answer_in_a_class_csv_voids_nothing_else(capsys, tmp_path):
     verdicts = {q["id"]: q["verdict"] for q in s1["questions"]}
     assert verdicts == {"F12": "unreadable", "T12": "correct"} and s2["student"] == "s2"
     assert "too long (1000000 characters" in s1["questions"][0]["feedback"]
+
+
+def test_grade_with_distance_feedback_for_a_regrade_after_the_due_date(capsys, tmp_path):
+    """--feedback distance tells a wrong answer how far off it is, whatever the exercise file says (issue 34);
+    the verdicts and scores are the default's. On handed-in notebooks too (graded as the platforms grade)."""
+    v = exercises.variant("single_link", "s1", "k")
+    e = v.expected(v.exercise.question("T12")).value
+    nb = _notebook(tmp_path, "nb.ipynb", ['STUDENT = "s1"', f'T12 = "{1.3 * e:.6g} N*m"'])
+    reports = {}
+    for feedback in ([], ["--feedback", "distance"]):
+        code, out, err = run(capsys, "exercise", "grade", "single_link", "--secret", "k", "--json", "--answers",
+                             str(nb), *feedback)
+        assert code == 0, err
+        reports[bool(feedback)] = json.loads(out)[0]["questions"][1]
+    assert (reports[False]["verdict"], reports[False]["score"]) == (reports[True]["verdict"], reports[True]["score"])
+    assert "(yours is +30.0 % off)" in reports[True]["feedback"] and "% off" not in reports[False]["feedback"]
+    assert "the sense (CCW or CW) is right; the size is not" in reports[False]["feedback"]
+
+
+@pytest.mark.parametrize("to", ["otter", "nbgrader"])
+def test_an_export_says_what_the_platform_leaves_open(capsys, tmp_path, to):
+    """Issue 34: what graphkin cannot close on a platform, and that students can compute any classmate's answers,
+    are said when the export is made (and in its README)."""
+    pytest.importorskip("nbformat")
+    from graphkin.exercises import platforms
+
+    (tmp_path / "roster.csv").write_text("student\ns1\ns2\n", encoding="utf-8")
+    code, _, err = run(capsys, "exercise", "export", "single_link", "--to", to, "-o", str(tmp_path / "x"),
+                       "--roster", str(tmp_path / "roster.csv"))
+    assert code == 0, err
+    module = platforms.platform(to)
+    readme = (tmp_path / "x" / "README.md").read_text(encoding="utf-8")
+    for note in module.NOTES:
+        assert f"graphkin: note: {to}: {note}\n" in err
+        assert note[1:40] in readme
+    assert "any student compute any classmate's answers with graphkin" in err

@@ -556,7 +556,10 @@ def test_pound_force_is_converted():
 
 
 @pytest.mark.parametrize("text, value", [("1,29 kN", 1290.0), ("12,5 N", 12.5), ("-0,5 N", -0.5),
-                                         ("1,29e3 N", 1290.0)])
+                                         ("1,29e3 N", 1290.0),
+                                         # Three digits after the comma, but no thousands separator follows a
+                                         # 0 or a group of four digits: a decimal comma (issue 34).
+                                         ("0,799 kN", 799.0), ("-0,799 kN", -799.0), ("1234,567 N", 1234.567)])
 def test_a_decimal_comma_where_the_exercise_allows_it(text, value):
     assert read_answer(text, **FORCE).value == pytest.approx(value, rel=REL)
     message = unreadable_with(text, decimal_comma=False)
@@ -585,6 +588,10 @@ def test_decimal_commas_in_vectors_need_a_semicolon_or_a_space():
 ])
 def test_an_ambiguous_comma_gets_a_sentence(text, says):
     assert says in unreadable_with(text)
+
+
+def test_a_decimal_comma_in_a_vector_with_three_decimals():
+    assert read_answer("(0,799; -1,5) kN", **FORCE).vector == pytest.approx((799.0, -1500.0))
 
 
 def test_without_decimal_commas_a_thousands_comma_still_gets_a_sentence():

@@ -175,6 +175,7 @@ def test_an_exercise_with_no_usable_data_says_so():
         ('step = "1 mm"', 'step = "0.000001 mm"', "vary.x.step"),
         ('title = "Double slider close to its toggle"', 'titel = "x"', "titel"),
         ('problem = "double_slider"', 'problem = "no_such"', "problem"),
+        ('problem = "double_slider"', 'problem = "double_slider"\nfeedback = "percent"', "feedback"),
         ('id = "F23"', 'id = "F 23"', "questions[0].id"),
         ('find = "F23"', 'find = "F23"\npart = "radius"', "questions[0].part"),
         ('find = "F23"', 'find = "F23"\nunit = "mm"', "questions[0].unit"),
@@ -239,10 +240,12 @@ find = "flywheel_E"
 
 
 def test_student_ids_are_checked():
-    for bad in ("", "   ", None, 12, "x" * 101, "a\x00b"):
+    for bad in ("", "   ", None, True, -12, 1.5, "x" * 101, "a\x00b"):
         with pytest.raises(GraphkinError, match="student id"):
             exercises.make("single_link", bad)
     assert exercises.make("single_link", "  s1 ")["student"] == "s1"
+    # A student number typed without quotes (STUDENT = 231006 in a notebook, student = 231006 in answers.toml).
+    assert exercises.make("strip_cutter_cut", 231006) == exercises.make("strip_cutter_cut", "231006")
     # The same id however it was typed or pasted: composed or decomposed é, no-break or doubled spaces.
     same = {exercises.make("strip_cutter_cut", s)["data"][0]["value"] for s in ("José Ruiz", "Jose\u0301 Ruiz",
                                                                                "José\u00a0 Ruiz\n")}

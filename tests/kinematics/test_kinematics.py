@@ -41,9 +41,9 @@ from hypothesis import strategies as st
 
 from graphkin.analytical import solve_forces
 from graphkin.kinematics import Dyad, decompose, solve_kinematics
-from graphkin.model import FRAME, Driver, GearMesh, Link, Mechanism, Prismatic, Revolute
+from graphkin.model import Driver, GearMesh, Link, Mechanism, Prismatic, Revolute
 from tests.physics import pitch_point
-from tests.strategies import crank_families, families, length_scale
+from tests.strategies import crank_families, families, gear_families, length_scale
 from tests.vectors import cross, dot, perp
 
 FD_STEP = 1e-3
@@ -167,7 +167,7 @@ def test_positions_satisfy_every_joint(family, data):
     kin = solve_kinematics(mech, q, q_dot, q_ddot)
     assert kin.valid.all()
     tol = GEOM_RTOL * 100 * (_extent(kin) + length_scale(mech))
-    pivoted = {link for link in mech.moving if any(isinstance(jt, Revolute) and FRAME in jt.links
+    pivoted = {link for link in mech.moving if any(isinstance(jt, Revolute) and mech.frame in jt.links
                                                   for jt in mech.joints_of(link))}
     for joint in mech.joints:
         if isinstance(joint, Revolute):
@@ -198,18 +198,18 @@ def test_positions_satisfy_every_joint(family, data):
             scale = (np.linalg.norm(kin.velocity(a, ca), axis=-1) + np.linalg.norm(kin.velocity(b, cb), axis=-1)
                      + np.abs(kin.omega[a]) * ra + np.abs(kin.omega[b]) * rb + 1e-300)
             assert np.all(np.linalg.norm(va - vb, axis=-1) <= 1e-12 * scale), "gears slip at the pitch point"
-            if a in (FRAME, *pivoted) and b in (FRAME, *pivoted):  # both centres still: the ratio of the pitch radii
+            if a in (mech.frame, *pivoted) and b in (mech.frame, *pivoted):  # both centres still: the ratio of the pitch radii
                 np.testing.assert_allclose(kin.omega[b] * rb, (1 if joint.internal else -1) * kin.omega[a] * ra,
                                            rtol=1e-12, atol=1e-300)
     d = mech.driver
-    J = mech.joint_between(FRAME, d.link)
+    J = mech.joint_between(mech.frame, d.link)
     if d.kind == "crank":
         assert np.all(np.abs(wrap(kin.theta[d.link] - q)) <= 1e-12)
         np.testing.assert_array_equal(kin.omega[d.link], q_dot)
         np.testing.assert_array_equal(kin.alpha[d.link], q_ddot)
     else:
         u = kin.guide_direction(J)
-        X = kin.position(FRAME, J.through) + q[:, None] * u
+        X = kin.position(mech.frame, J.through) + q[:, None] * u
         assert np.all(np.linalg.norm(kin.position(d.link, J.point) - X, axis=-1) <= tol)
         np.testing.assert_allclose(dot(kin.velocity(d.link, J.point), u), q_dot, rtol=1e-12, atol=1e-300)
         np.testing.assert_allclose(dot(kin.acceleration(d.link, J.point), u), q_ddot, rtol=1e-12, atol=1e-300)
@@ -262,7 +262,9 @@ def test_assembly_branch_means_what_the_docs_say(family, data):
         assert np.all(sign == sigma), f"{label}: asked σ = {sigma}, got {sign}"
 
 
-@pytest.mark.parametrize("family", crank_families)
+# Not driven_arm: a planet on a rocker jumps where the rocker's angle crosses ±180°, a graphkin bug that
+# test_a_planet_on_a_rocker_turns_without_a_jump pins.
+@pytest.mark.parametrize("family", [f for f in crank_families if f != "driven_arm"])
 @SETTINGS
 @given(data=st.data())
 def test_branch_is_continuous_over_a_crank_cycle(family, data):
@@ -299,8 +301,41 @@ def test_branch_is_continuous_over_a_crank_cycle(family, data):
         assert np.all(sign == sigma), f"{label}: the branch changes during the cycle"
 
 
+@pytest.mark.xfail(strict=True, reason="GRAPHKIN BUG (issue 35, open): a gear's angle is taken from its carrier's and "
+                   "its mate's as np.angle gives them, wrapped at ±180°; a planet on an arm found by a dyad jumps (here by "
+                   "1.6 turns) where the arm's angle crosses ±180°, its points and G with it")
+def test_a_planet_on_a_rocker_turns_without_a_jump():
+    """A crank-rocker whose rocker 4 swings across 180° carries a planet 5 meshing with a sun fixed at the rocker's
+    pivot: over a turn of the crank, the planet's angle changes step by step by what its ω gives, as the rocker's does.
+
+    The shrunk case the property test above found on the family ``driven_arm`` (issue 35, item 2): the planet's
+    angle jumped by 10.03 rad (1.6 turns) at θ12 = 2.69 rad and back at 5.48 rad, where θ14 crosses ±π.
+    """
+    mech = Mechanism(
+        [Link(1, {"O2": (0.0, 0.0), "O4": (-0.9899924966004454, 0.1411200080598672)}),
+         Link(2, {"O2": (0.0, 0.0), "A": (0.5, 0.0)}),
+         Link(3, {"A": (0.0, 0.0), "B": (1.0, 0.0)}),
+         Link(4, {"O4": (0.0, 0.0), "B": (-0.4161468365471424, 0.9092974268256817),
+                  "C": (0.5403023058681397, 0.8414709848078965)}),
+         Link(5, {"C": (0.0, 0.0)})],
+        [Revolute((1, 2), "O2"), Revolute((2, 3), "A"), Revolute((3, 4), "B"), Revolute((4, 1), "O4"),
+         Revolute((4, 5), "C"), GearMesh((5, 1), ("C", "O4"), (0.625, 0.375), 0.0)],
+        Driver(2), assembly={"B": 1})
+    q = np.linspace(0.0, 2 * math.pi, 361)
+    kin = solve_kinematics(mech, q, 1.0, 0.0)
+    assert kin.valid.all()
+    dq = q[1] - q[0]
+    assert np.ptp(np.unwrap(kin.theta[4])) < math.pi  # a rocker: it never turns round
+    for link in (4, 5):
+        w = kin.omega[link]
+        step = np.diff(kin.theta[link])
+        predicted = 0.5 * (w[1:] + w[:-1]) * dq
+        jumps = q[1:][np.abs(wrap(step - predicted)) > 0.05 * np.abs(w).max() * dq]
+        assert not jumps.size, f"θ1{link} jumps at θ12 = {jumps} rad"
+
+
 # A gear's period is not one crank turn.
-@pytest.mark.parametrize("family", [f for f in crank_families if f not in ("gear_pair", "epicyclic")])
+@pytest.mark.parametrize("family", [f for f in crank_families if f not in gear_families])
 @SETTINGS
 @given(data=st.data())
 def test_whole_turns_of_the_crank_change_nothing(family, data):

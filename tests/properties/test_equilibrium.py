@@ -2,8 +2,10 @@
 
 For every family of ``tests/strategies.py`` (four-bar, offset slider-crank,
 double slider, inverted slider-crank, Scotch yoke, Watt II, Stephenson III,
-quick return, gear pair) with random geometry, mass properties, loads, input
-rates, gravity and slider friction:
+quick return, gear pair, epicyclic train, annulus, compound planet, planet on
+a driven arm, piston-driven slider-crank) with random geometry, mass
+properties, loads, input rates of either sense, gravity, slider friction and
+link numbering (the frame 1 or 0):
 
 - every moving link is in d'Alembert equilibrium under the joint forces the
   solver reports, the driving effort, the external loads and gravity;
@@ -13,7 +15,7 @@ rates, gravity and slider friction:
 - the closed-form solution equals the solution of the assembled matrix;
 - Coulomb friction opposes the relative sliding and has magnitude μ|N|;
 - solving a batch of positions equals solving each alone, in any order;
-- a gear's tooth force lies on the pressure line and pushes;
+- a gear's tooth force lies on the pressure line and pushes (external and internal meshes);
 - regression: the matrix solution does not depend on the unit of length.
 
 Tolerances: 1e-9 relative to the largest load in the mechanism (joint
@@ -37,7 +39,7 @@ from graphkin.analytical import solve_forces
 from graphkin.analytical.matrix import assemble, solve_matrix
 from graphkin.errors import GraphkinError
 from graphkin.kinematics import solve_kinematics
-from graphkin.model import FRAME, GearMesh, Mechanism, Prismatic, Revolute
+from graphkin.model import GearMesh, Mechanism, Prismatic, Revolute
 from tests.physics import (
     BATCH_RTOL,
     RTOL,
@@ -48,9 +50,10 @@ from tests.physics import (
     close,
     frictionless,
     load_scales,
+    pitch_point,
     power_terms,
 )
-from tests.strategies import families, friction_families
+from tests.strategies import families, friction_families, gear_families
 from tests.vectors import dot, perp
 
 FAMILIES = sorted(families)
@@ -99,7 +102,7 @@ def test_action_equals_minus_reaction(family, data):
     if d.kind == "crank":
         np.testing.assert_array_equal(r[d.symbol], r.effort)
     else:
-        u = kin.guide_direction(mech.joint_between(FRAME, d.link))
+        u = kin.guide_direction(mech.joint_between(mech.frame, d.link))
         np.testing.assert_array_equal(r[d.symbol], r.effort[:, None] * u)
 
 
@@ -253,25 +256,26 @@ def test_batch_equals_one_position_at_a_time(family, data):
 # --------------------------------------------------------------------------
 # gear mesh: the tooth force lies on the pressure line
 # --------------------------------------------------------------------------
+@pytest.mark.parametrize("family", gear_families)
 @SETTINGS
-@given(case=families["gear_pair"])
-def test_gear_tooth_force_on_the_pressure_line(case):
+@given(data=st.data())
+def test_gear_tooth_force_on_the_pressure_line(family, data):
+    """On each gear of each mesh, external or internal: the tooth force pushes the gear's tooth into its body (inside
+    the pitch circle; an annulus's outside it), inclined by the pressure angle to the common tangent."""
+    case = data.draw(families[family])
     kin, r = _solve(case)
-    mesh = next(j for j in case.mechanism.joints if isinstance(j, GearMesh))
-    a, b = mesh.links
-    W = r.force(a, b)  # of gear a on gear b
-    Ca = kin.position(a, mesh.centers[0])
-    Cb = kin.position(b, mesh.centers[1])
-    e = (Ca - Cb) / np.linalg.norm(Ca - Cb, axis=-1)[:, None]  # from b's centre towards a's
-    radial = dot(W, e)
-    tangential = dot(W, perp(e))
-    size = np.linalg.norm(W, axis=-1)
-    tol = RTOL * size
-    # pushes b away from a (teeth push, never pull) ...
-    assert np.all(radial <= tol)
-    # ... inclined by the pressure angle to the common tangent
-    ok, excess = close(-radial, np.abs(tangential) * np.tan(mesh.pressure_angle), tol)
-    assert ok, f"tooth force off the pressure line by {excess:.3g} N beyond tolerance"
+    for mesh in (j for j in case.mechanism.joints if isinstance(j, GearMesh)):
+        for gear, other in (mesh.links, mesh.links[::-1]):
+            W = r.force(other, gear)
+            P = pitch_point(kin, mesh, gear)
+            C = kin.position(gear, mesh.centers[mesh.links.index(gear)])
+            into = (C - P) / np.linalg.norm(C - P, axis=-1)[:, None] * (-1.0 if gear == mesh.ring else 1.0)
+            radial = dot(W, into)
+            tangential = dot(W, perp(into))
+            tol = RTOL * np.linalg.norm(W, axis=-1)
+            assert np.all(radial >= -tol), f"{mesh.label}: the tooth force pulls gear {gear}"
+            ok, excess = close(radial, np.abs(tangential) * np.tan(mesh.pressure_angle), tol)
+            assert ok, f"{mesh.label}: tooth force on gear {gear} off the pressure line by {excess:.3g} N beyond tolerance"
 
 
 # --------------------------------------------------------------------------

@@ -1,4 +1,7 @@
-"""Graphical = analytical on random mechanisms of every family the core supports (hypothesis)."""
+"""The force polygons equal the analytical route on random mechanisms of every family the core supports (hypothesis).
+
+The families and what a failure prints: tests/properties/test_polygons.py.
+"""
 
 import pytest
 from hypothesis import HealthCheck, given, settings

@@ -17,6 +17,7 @@ from pathlib import Path
 from graphkin.errors import GraphkinError
 
 _GRADED = re.compile(r"Graded as student ('(?:[^'\\]|\\.)*'|\"(?:[^\"\\]|\\.)*\")")
+_REFUSED = re.compile(r"^Not graded: (.*)$", re.MULTILINE)
 
 
 def find_results(paths) -> list[Path]:
@@ -45,14 +46,24 @@ def student_of(results: dict) -> str | None:
         return None
 
 
+def refusal_of(results: dict) -> str | None:
+    """Why a results file's submission was not graded, from graphkin's summary (None when it was graded)."""
+    m = _REFUSED.search(results.get("output") or "")
+    return html.unescape(m[1]) if m else None
+
+
 def row_of(results: dict, file: str) -> dict:
-    """A class-table row for one results file."""
+    """A class-table row for one results file (a hand-in that could not be read has no student: its file names it)."""
     tests = [t for t in results.get("tests", []) if isinstance(t, dict) and "score" in t and "max_score" in t]
-    row = {"student": student_of(results) or "", "score": results.get("score", sum(t["score"] for t in tests)),
+    student = student_of(results)
+    row = {"student": student or "", "score": results.get("score", sum(t["score"] for t in tests)),
            "max": sum(t["max_score"] for t in tests)}
     for t in tests:
         row[str(t.get("name", "")).split(":")[0]] = t["score"]
-    if not row["student"]:
+    refused = refusal_of(results)
+    if refused:
+        row["refused"] = refused
+    if student is None:
         row["error"] = "no graphkin summary in this file (not graded by graphkin's plugin or autograder)"
     row["file"] = file
     return row
@@ -86,4 +97,4 @@ def repeated(rows: list[dict]) -> dict[str, list[str]]:
     return {s: f for s, f in files.items() if len(f) > 1}
 
 
-__all__ = ["class_table", "find_results", "repeated", "row_of", "student_of"]
+__all__ = ["class_table", "find_results", "refusal_of", "repeated", "row_of", "student_of"]

@@ -10,7 +10,8 @@ from the notebook file as data instead (:mod:`graphkin.exercises.notebooks`) and
   variables (``PATH``, ``HOME``, ``LANG``, the cache folder) and nothing else, so no secret and no
   setting of the grading machine reaches it;
 - importing graphkin from the copy that travelled with the export when one is named (``vendor``),
-  else the installed one, before any of the student's files could be;
+  else the very copy the calling process runs (the grader and the platform's hook are one version),
+  before any of the student's files could be;
 - holding the precomputed keys (:mod:`graphkin.exercises.keys`), never the course secret;
 - reading one JSON request on standard input and writing one JSON answer on standard output.
 
@@ -28,12 +29,17 @@ import os
 import subprocess
 import sys
 import tempfile
+from pathlib import Path
 
 from graphkin.errors import GraphkinError
 from graphkin.exercises.grading import echo, grade_variant
+from graphkin.exercises.handins import REFUSALS
 from graphkin.exercises.keys import Keys
 from graphkin.exercises.notebooks import NotData
 from graphkin.exercises.platforms import runtime
+
+# The folder holding the graphkin package this module belongs to.
+_HOME = Path(__file__).resolve().parents[3]
 
 TIMEOUT = 300
 """Seconds the grading process may take for one request before it is stopped."""
@@ -79,12 +85,15 @@ def decode(data):
 _NO_CLAIM = object()
 
 
-def submission(student: str, answers: dict, claimed=_NO_CLAIM) -> dict:
+def submission(student: str, answers: dict, claimed=_NO_CLAIM, *, refused: str | None = None) -> dict:
     """One submission for :func:`grade_submissions`: whom to grade, their answers and, to be checked against
-    ``student``, the id the notebook carries (None when it carries none)."""
+    ``student``, the id the notebook carries (None when it carries none); or, with ``refused``, why the
+    hand-in is not graded (:data:`graphkin.exercises.handins.REFUSALS`)."""
     out = {"student": student, "answers": {k: encode(v) for k, v in answers.items()}}
     if claimed is not _NO_CLAIM:
         out["claimed"] = encode(claimed)
+    if refused:
+        out["refused"] = refused
     return out
 
 
@@ -98,7 +107,8 @@ def grade_submissions(keys_file, submissions: list[dict], *, vendor=None, python
         The keys (:func:`graphkin.exercises.keys.make_keys`) as a JSON file.
     submissions : list of dict
     vendor : str or Path, optional
-        A folder holding the ``graphkin`` package to import (the copy the export carries).
+        A folder holding the ``graphkin`` package to import (the copy the export carries); by default
+        the folder of the graphkin this process imported.
     python : str, optional
         The interpreter (default: this one).
     timeout : float
@@ -120,7 +130,7 @@ def grade_submissions(keys_file, submissions: list[dict], *, vendor=None, python
     env.setdefault("LANG", "C.UTF-8")
     with tempfile.TemporaryDirectory(prefix="graphkin-grade-") as cwd:
         try:
-            done = subprocess.run([python or sys.executable, "-I", "-c", _BOOT, os.fspath(vendor or "")],
+            done = subprocess.run([python or sys.executable, "-I", "-c", _BOOT, os.fspath(vendor or _HOME)],
                                   input=request, capture_output=True, text=True, encoding="utf-8", env=env, cwd=cwd,
                                   timeout=timeout)
         except subprocess.TimeoutExpired:
@@ -140,7 +150,7 @@ def refused(exercise, student: str, reason: str) -> dict:
             "refused": reason}
 
 
-def grade_one(keys: Keys, student, answers: dict, claimed=_NO_CLAIM, *, reveal=None) -> dict:
+def grade_one(keys: Keys, student, answers: dict, claimed=_NO_CLAIM, *, reveal=None, feedback=None) -> dict:
     """A submission's report: graded as ``student`` with the keys, or refused with a sentence.
 
     It is refused when ``student`` is not on the roster or, when ``claimed`` is given (the id the notebook
@@ -160,7 +170,7 @@ def grade_one(keys: Keys, student, answers: dict, claimed=_NO_CLAIM, *, reveal=N
     except GraphkinError as exc:
         text = str(exc)
         return refused(ex, str(student), text[0].upper() + text[1:] + ".")
-    report = grade_variant(variant, answers, reveal=reveal, classmates=keys.classmates())
+    report = grade_variant(variant, answers, reveal=reveal, classmates=keys.classmates(), feedback=feedback)
     report["data"] = [g["shown"] for g in variant.sheet()["data"]]
     return report
 
@@ -173,6 +183,9 @@ def main() -> int:
         keys = Keys(request["keys"])
         reports = []
         for sub in request["submissions"]:
+            if sub.get("refused"):
+                reports.append(refused(keys.exercise, sub["student"], REFUSALS[sub["refused"]]))
+                continue
             answers = {str(k): decode(v) for k, v in sub["answers"].items()}
             claimed = decode(sub["claimed"]) if "claimed" in sub else _NO_CLAIM
             reports.append(grade_one(keys, sub["student"], answers, claimed))

@@ -1,4 +1,4 @@
-"""nbgrader: a source notebook for a course directory, and a preprocessor that grades it read as data.
+"""nbgrader: a source notebook for a course directory, and the exporter and preprocessors that grade it as data.
 
 ``build(bundle)`` writes ``source/<name>/``, which the teacher copies into their nbgrader course
 directory, then runs ``nbgrader generate_assignment`` and, once the submissions are collected,
@@ -11,18 +11,26 @@ directory, then runs ``nbgrader generate_assignment`` and, once the submissions 
 - each question has an autograder test cell worth the question's points. Its visible part only checks
   that the answer can be read.
 
-**The grade never depends on the student's code.** nbgrader grades by running the notebook in a kernel, where
-the student's code runs beside the tests. The export's ``nbgrader_config.example.py`` puts
-:func:`read_as_data` first among ``Autograde.autograde_preprocessors``: before nbgrader's ``Execute``,
-it reads the notebook as data (the literals assigned to ``STUDENT`` and to each answer's variable),
-grades them in a separate, isolated Python process with the precomputed keys
-(``graphkin-keys/<name>.json`` in the course directory, beside ``source/``; never the secret), and
-rewrites the notebook nbgrader then runs: the id and the answers as literals, each test cell as the
-feedback line and the score, and any other cell the student wrote as comments. nbgrader's ``Execute``
-then runs nothing the student wrote in the notebook, and :func:`write_grades`, after it, sets each test
-cell's output to graphkin's feedback line and score, whatever the kernel printed: nbgrader records that
-number (its partial credit). The student's id is the one nbgrader grades under; a notebook carrying
-another's scores 0.
+**Only the answers a student typed count, whatever else they hand in.** nbgrader grades by running the
+notebook in a kernel, where the student's code runs beside the tests; before that it parses the submitted
+notebook and copies the submission's other files (and what its links point to) into the folder the kernel
+starts in, where Python imports them first, and which ``generate_feedback`` copies back to the student. The
+export's ``nbgrader_config.example.py`` names three hooks, each in nbgrader's own process:
+
+- ``HandInExporter`` (``Autograde.exporter_class``) reads each submission of an assignment with keys before
+  nbgrader does (:func:`graphkin.exercises.handins.read_handin`: the literals assigned to ``STUDENT`` and to
+  each answer's variable) and hands nbgrader :func:`reduced_notebook`: graphkin's cells, the answers as
+  literals, nothing else of the student's; what else was handed in, and a notebook that cannot be read, are
+  named in nbgrader's log;
+- :func:`read_as_data`, first among ``Autograde.autograde_preprocessors``, before nbgrader's ``Execute``,
+  grades the submission read as data in a separate, isolated Python process with the precomputed keys
+  (``graphkin-keys/<name>.json`` in the course directory, beside ``source/``; never the secret), empties the
+  kernel's folder of what nbgrader copied of the submission, and writes each test cell as the feedback line
+  and the score;
+- :func:`write_grades`, after ``Execute``, sets each test cell's output to graphkin's feedback line and
+  score, whatever the kernel printed: nbgrader records that number (its partial credit).
+
+The student's id is the one nbgrader grades under; a notebook carrying another's scores 0.
 
 A test cell's hidden part fails loudly when the preprocessor was not configured: under ``nbgrader
 autograde`` it stops the kernel, so nbgrader keeps no grade rather than one the notebook decided.
@@ -30,17 +38,20 @@ autograde`` it stops the kernel, so nbgrader keeps no grade rather than one the 
 
 from __future__ import annotations
 
+import datetime
 import json
 import math
 import os
 import time
 import tomllib
+from functools import cache
 from pathlib import Path
 
 from graphkin.errors import GraphkinError
-from graphkin.exercises.grading import answer_example
-from graphkin.exercises.keys import keys_text
-from graphkin.exercises.notebooks import STUDENT_VARIABLE, answer_variables, notebook_answers
+from graphkin.exercises.grading import answer_example, echo
+from graphkin.exercises.handins import METADATA, HandIn, clear_folder, literal, own_files, read_handin
+from graphkin.exercises.keys import Keys, keys_text
+from graphkin.exercises.notebooks import STUDENT_VARIABLE, answer_variables
 from graphkin.exercises.platforms import requirements, runtime
 from graphkin.exercises.platforms.isolated import grade_submissions, submission
 from graphkin.optional import require
@@ -54,6 +65,24 @@ PREPROCESSOR = "graphkin.exercises.platforms.nbgrader.read_as_data"
 GRADE_WRITER = "graphkin.exercises.platforms.nbgrader.write_grades"
 """The importable name of :func:`write_grades`, as ``nbgrader_config.py`` lists it (after ``Execute``)."""
 
+EXPORTER = "graphkin.exercises.platforms.nbgrader.HandInExporter"
+"""The importable name of the exporter ``nbgrader autograde`` reads submissions with (``HandInExporter``)."""
+
+CLASSMATES = (
+    "the folder released to students lets any student compute any classmate's answers with graphkin: its sheets "
+    "hold every roster student's data. A classmate's answers handed in score 0.")
+"""What the released folder lets every student do."""
+
+NOT_CLOSED = (
+    "nbgrader autograde copies the files of a submission folder, and what its links point to, as you, before "
+    "graphkin's exporter runs: graphkin reads none of it and removes the copies before the kernel starts, so "
+    "generate_feedback hands none of it back. To keep nbgrader from reading through links at all, remove them "
+    "from submitted/ before you autograde: find submitted -type l -delete")
+"""What nbgrader's own design leaves open that graphkin cannot close from its side."""
+
+NOTES = (NOT_CLOSED, CLASSMATES)
+"""Said when the export is made (``graphkin exercise export`` prints them) and in its README."""
+
 GRADES = "graphkin_grades"
 """The key of nbgrader's resources under which :func:`read_as_data` leaves the grades for :func:`write_grades`."""
 
@@ -66,6 +95,12 @@ SCHEMA_VERSION = 3
 _BEGIN, _END = "### BEGIN SOLUTION", "### END SOLUTION"
 _BEGIN_HIDDEN, _END_HIDDEN = "### BEGIN HIDDEN TESTS", "### END HIDDEN TESTS"
 _READ = "  # read from your notebook as data"
+_KERNEL = {"kernelspec": {"name": "python3", "display_name": "Python 3", "language": "python"},
+           "language_info": {"name": "python"}}
+# nbgrader's course layout (its default CourseDirectory settings, which graphkin's lines assume).
+_SUBMITTED, _AUTOGRADED, _TIMESTAMP = "submitted", "autograded", "timestamp.txt"
+_LAYOUT = "{nbgrader_step}/{student_id}/{assignment_id}"
+_IGNORED_BY_NBGRADER = (".ipynb_checkpoints", "__pycache__", "feedback")
 
 
 # ---------------------------------------------------------------------------
@@ -116,57 +151,205 @@ def course_root(resources) -> Path:
     return path.parents[2] if len(path.parents) > 2 else Path.cwd()
 
 
+def assignment_files(root: Path, assignment: str) -> dict[str, Path]:
+    """The assignment's own files, as nbgrader copies them into a student's folders: those of
+    ``source/<assignment>/`` but its notebooks (which hold the solutions) and what nbgrader ignores."""
+    files = own_files(root / "source" / assignment, skip=_IGNORED_BY_NBGRADER)
+    return {rel: path for rel, path in files.items() if not rel.lower().endswith(".ipynb")}
+
+
+def _handin(root: Path, student: str, assignment: str, notebook: str, names: dict) -> HandIn:
+    """A student's submission folder (``submitted/<student>/<assignment>/``) read as data."""
+    submitted = root / _SUBMITTED / student / assignment
+    # nbgrader's own record of when it was handed in sits beside the notebook: not the student's to name.
+    own = {**assignment_files(root, assignment), _TIMESTAMP: submitted / _TIMESTAMP}
+    return read_handin(submitted, names, notebook=f"{notebook}.ipynb", own=own)
+
+
+def reduced_notebook(exercise, handin: HandIn):
+    """The notebook nbgrader gets in place of a submission: graphkin's cells, the id and each answer as literals.
+
+    Each cell is one of the source notebook's, with its nbgrader metadata, in its order; a locked cell is
+    left empty (nbgrader's ``OverwriteCells`` writes it back from the gradebook), a cell the student
+    types in holds the literal read. A cell the student added (an extra grade cell), a cell's outputs and
+    the student's metadata are not carried.
+    """
+    import nbformat
+
+    names = answer_variables([q.id for q in exercise.questions])
+    cells = [_cell("markdown", "", "intro"),
+             _cell("code", f"{STUDENT_VARIABLE} = {literal(handin.claimed)}{_READ}", "student", solution=True),
+             _cell("code", "", "sheet")]
+    for q in exercise.questions:
+        value = handin.answers.get(q.id)
+        cells += [_cell("markdown", "", _grade_id("question", q.id)),
+                  _cell("code", f"{names[q.id]} = {literal(value)}{_READ}", _grade_id("answer", q.id), solution=True),
+                  _cell("code", "", _grade_id("test", q.id), grade=True, points=q.points)]
+    for i, cell in enumerate(cells):
+        cell["id"] = f"graphkin-{i:02d}"
+    return nbformat.v4.new_notebook(cells=cells, metadata={**_KERNEL, METADATA: {"reduced": True}})
+
+
+@cache
+def _exporter_class():
+    # nbconvert is imported only when nbgrader asks for the class (importing graphkin never loads it).
+    from nbconvert.exporters import NotebookExporter
+
+    class HandInExporter(NotebookExporter):
+        """nbgrader's exporter for ``nbgrader autograde``: a submission of a graphkin assignment is read as data.
+
+        nbgrader reads a submitted notebook (``nbformat.read``) before any preprocessor runs, so a
+        notebook nested 100 000 deep or not JSON would stop that student's autograde with a traceback,
+        and an extra grade cell could stop the gradebook for the students after. This exporter comes
+        first: a submitted notebook of an assignment with keys in ``graphkin-keys/`` is read as data
+        (:func:`graphkin.exercises.handins.read_handin`, within its limits), and nbgrader gets
+        :func:`reduced_notebook` in its place; what else the submission folder holds is named in
+        nbgrader's log. Every other notebook (another assignment's, and nbgrader's own autograded copy) is
+        read as nbgrader reads it.
+        """
+
+        def from_filename(self, filename, resources=None, **kw):
+            reduced = _reduce_submission(self, filename, resources)
+            if reduced is None:
+                return super().from_filename(filename, resources, **kw)
+            nb, resources = reduced
+            return self.from_notebook_node(nb, resources, **kw)
+
+    HandInExporter.__module__, HandInExporter.__qualname__ = __name__, "HandInExporter"  # where nbgrader finds it
+    return HandInExporter
+
+
+def __getattr__(name):
+    # ``c.Autograde.exporter_class = "graphkin.exercises.platforms.nbgrader.HandInExporter"``: the class is
+    # made when nbgrader imports it (PEP 562), so that importing this module does not load nbconvert.
+    if name == "HandInExporter":
+        return _exporter_class()
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+def _reduce_submission(exporter, filename, resources):
+    """(reduced notebook, resources) for a submitted notebook of a graphkin assignment; None for any other."""
+    coursedir = getattr(exporter.parent, "coursedir", None)
+    info = (resources or {}).get("nbgrader") or {}
+    if coursedir is None or not info:
+        return None
+    root = Path(coursedir.root)
+    student, assignment, notebook = info.get("student"), info.get("assignment"), info.get("notebook")
+    keys = root / KEYS_FOLDER / f"{assignment}.json"
+    if not keys.is_file():
+        return None
+    if (coursedir.submitted_directory, coursedir.autograded_directory) != (_SUBMITTED, _AUTOGRADED) or \
+            coursedir.directory_structure != _LAYOUT:
+        raise GraphkinError("graphkin's nbgrader lines need nbgrader's default course layout "
+                            f"(c.CourseDirectory.directory_structure = {_LAYOUT!r}, submitted/ and autograded/)")
+    if os.path.abspath(Path(filename).parent) != os.path.abspath(root / _SUBMITTED / str(student) / str(assignment)):
+        return None  # nbgrader's own autograded copy, which it reads in its second pass
+    exercise = Keys(keys).exercise
+    handin = _handin(root, student, assignment, notebook, answer_variables([q.id for q in exercise.questions]))
+    if handin.ignored:
+        exporter.log.warning("%s: handed in beside the notebook, not read (graphkin): %s", student,
+                             ", ".join(handin.ignored))
+    added = _cells_added(exercise, handin.grade_ids)
+    if added:
+        exporter.log.warning("%s: cells of the student's own, not given to nbgrader (graphkin): %s", student,
+                             ", ".join(added))
+    if handin.refused:
+        exporter.log.warning("%s: not graded (graphkin): %s", student, handin.reason)
+    path, name = os.path.split(filename)
+    changed = datetime.datetime.fromtimestamp(os.lstat(filename).st_mtime, tz=datetime.timezone.utc)
+    meta = {"name": os.path.splitext(name)[0], "path": path,  # as nbconvert's own from_filename sets them
+            "modified_date": f"{changed:%B} {changed.day}, {changed.year}"}
+    resources = dict(resources)
+    resources["metadata"] = {**(resources.get("metadata") or {}), **meta}
+    return reduced_notebook(exercise, handin), resources
+
+
+def _cells_added(exercise, grade_ids) -> list[str]:
+    """The grade ids of a submission's cells that are not the source notebook's, or are there twice, for the log."""
+    ours = {"intro", "student", "sheet"} | {_grade_id(kind, q.id) for q in exercise.questions
+                                             for kind in ("question", "answer", "test")}
+    seen, added = set(), []
+    for gid in grade_ids:
+        if gid not in ours or gid in seen:
+            added.append(repr(echo(gid, 40)) + (" (again)" if gid in seen else ""))
+        seen.add(gid)
+    return added
+
+
 def read_as_data(nb, resources):
-    """nbgrader preprocessor: grade the notebook read as data, and leave it nothing of the student's to run.
+    """nbgrader preprocessor: grade the submission read as data, and leave the kernel nothing of the student's.
+
+    Before nbgrader's ``Execute``: the student's submission folder is read as data again (the notebook's
+    answers; :func:`graphkin.exercises.handins.read_handin`) and graded in a separate, isolated process
+    with the precomputed keys; the folder the kernel starts in (``autograded/<student>/<assignment>/``)
+    is emptied of everything but the assignment's own files (what nbgrader copied of the student's, and
+    what their links pointed to), so the kernel imports nothing of theirs and ``generate_feedback`` hands
+    back nothing of it; and each cell becomes the id, an answer as a literal, or a test cell that prints
+    graphkin's feedback line and ends in the score. A cell that is not one of graphkin's is dropped.
 
     Parameters
     ----------
     nb : nbformat.NotebookNode
-        The submitted notebook, after nbgrader's sanitizing (locked cells restored).
+        The notebook :class:`HandInExporter` made of the submission, after nbgrader's sanitizing (locked
+        cells restored).
     resources : dict
         nbgrader's resources; ``resources["nbgrader"]`` names the student and the assignment.
 
     Returns
     -------
     nb, resources
-        The notebook with the id and each answer as literals, each test cell printing graphkin's feedback
-        line and ending in the score, every other cell of the student's commented out. A notebook of an
-        assignment without keys (not graphkin's) is returned as it is.
+        A notebook of an assignment without keys (not graphkin's) is returned as it is.
+
+    Raises
+    ------
+    GraphkinError
+        The notebook was not made by :class:`HandInExporter` (``nbgrader_config.py`` lacks its line).
     """
     info = resources.get("nbgrader") or {}
-    keys = course_root(resources) / KEYS_FOLDER / f"{info.get('assignment')}.json"
+    root = course_root(resources)
+    assignment, student = str(info.get("assignment")), str(info.get("student"))
+    keys = root / KEYS_FOLDER / f"{assignment}.json"
     if not keys.is_file():
         return nb, resources
-    data = json.loads(keys.read_text(encoding="utf-8"))
-    qids = [q["id"] for q in tomllib.loads(data["exercise"]["text"])["questions"]]
+    if not ((nb.get("metadata") or {}).get(METADATA) or {}).get("reduced"):
+        raise GraphkinError(f"graphkin: {assignment!r} must be read as data before nbgrader reads it: add "
+                            f"c.Autograde.exporter_class = {EXPORTER!r} to nbgrader_config.py (see the export's "
+                            "nbgrader_config.example.py), then run nbgrader autograde again")
+    qids = [q["id"] for q in tomllib.loads(json.loads(keys.read_text(encoding="utf-8"))["exercise"]["text"])
+            ["questions"]]
     names = answer_variables(qids)
-    claimed, answers = notebook_answers(nb, names)
-    report = grade_submissions(keys, [submission(str(info.get("student")), answers, claimed)])[0]
+    kernel_folder = Path(resources["metadata"]["path"])
+    if os.path.abspath(kernel_folder) != os.path.abspath(root / _AUTOGRADED / student / assignment):
+        raise GraphkinError(f"graphkin: {kernel_folder} is not {_AUTOGRADED}/{student}/{assignment}/ of the course "
+                            "directory: graphkin's nbgrader lines need nbgrader's default course layout")
+    handin = _handin(root, student, assignment, str(info.get("notebook")), names)
+    report = grade_submissions(keys, [submission(student, handin.answers, handin.claimed,
+                                                 refused=handin.refused)])[0]
+    clear_folder(kernel_folder, assignment_files(root, assignment), leave={f"{info.get('notebook')}.ipynb", _TIMESTAMP})
     results = {r["id"]: r for r in report["questions"]}
     resources[GRADES] = {"tests": {_grade_id("test", r["id"]): (runtime.feedback_line(r), float(r["score"]))
                                    for r in report["questions"]},
                          "sheet": runtime.summary(report)}
-    by_grade_id = {_grade_id("answer", q): q for q in qids}
+    answer_ids = {_grade_id("answer", q): q for q in qids}
     tests = {_grade_id("test", q): q for q in qids}
+    fixed = {"intro", "sheet", *(_grade_id("question", q) for q in qids)}
+    kept, seen = [], set()
     for cell in nb.cells:
-        if cell.get("cell_type") != "code":
+        gid = cell.get("metadata", {}).get("nbgrader", {}).get("grade_id", "")
+        if gid in seen or gid not in {"student", *fixed, *answer_ids, *tests}:
             continue
-        meta = cell.get("metadata", {}).get("nbgrader", {})
-        gid = meta.get("grade_id", "")
+        seen.add(gid)
         if gid == "student":
-            cell.source = f"{STUDENT_VARIABLE} = {_python_literal(claimed)}{_READ}"
-        elif gid in by_grade_id:
-            qid = by_grade_id[gid]
-            cell.source = f"{names[qid]} = {_python_literal(answers[qid])}{_READ}"
+            cell.source = f"{STUDENT_VARIABLE} = {literal(handin.claimed)}{_READ}"
+        elif gid in answer_ids:
+            qid = answer_ids[gid]
+            cell.source = f"{names[qid]} = {literal(handin.answers.get(qid))}{_READ}"
         elif gid in tests:
             r = results[tests[gid]]
             cell.source = ("# graded by graphkin from your notebook read as data\n"
                            f"print({runtime.feedback_line(r)!r})\n{float(r['score'])!r}")
-        elif not (meta.get("locked") and not meta.get("solution")):
-            # A cell the student wrote or could edit: kept for the teacher to read, never run.
-            lines = cell.source.splitlines() or [""]
-            cell.source = "# not run when graded: answers are read from the notebook as data\n" + \
-                "\n".join("# " + line for line in lines)
+        kept.append(cell)
+    nb.cells = kept
     return nb, resources
 
 
@@ -215,15 +398,6 @@ def write_grades(nb, resources):
             # their files, beside the course's keys).
             cell.outputs = []
     return nb, resources
-
-
-def _python_literal(value) -> str:
-    """A value as a Python literal for the rewritten notebook (text and numbers; anything else None)."""
-    if isinstance(value, str):
-        return repr(value)
-    if isinstance(value, (int, float)) and not isinstance(value, bool) and abs(value) < 1e300:
-        return repr(value)
-    return "None"
 
 
 def not_read_as_data() -> None:
@@ -412,10 +586,13 @@ def config_lines(seconds: float = TIMEOUT) -> list[str]:
         The time limit of one notebook [s] (:class:`TimeLimit`).
     """
     return [
-        "# graphkin's notebooks are graded read as data: its preprocessor comes before nbgrader's Execute, grades",
-        "# the answers in a process of its own, and leaves the kernel nothing of the student's to run. (It passes",
-        "# the notebooks of other assignments, which have no graphkin-keys/<assignment>.json, through unchanged.)",
-        "# After Execute, its grade writer sets each test cell's output from that grading, whatever the kernel did.",
+        "# graphkin's notebooks are graded read as data. Its exporter reads each submission before nbgrader does,",
+        "# as data, and hands nbgrader graphkin's cells with the answers as literals (nothing else of the",
+        "# student's). Its preprocessor, before nbgrader's Execute, grades the answers in a process of its own and",
+        "# empties the kernel's folder of the student's files; after Execute, its grade writer sets each test",
+        "# cell's output from that grading, whatever the kernel did. (All three pass the notebooks of other",
+        "# assignments, which have no graphkin-keys/<assignment>.json, through unchanged.)",
+        f"c.Autograde.exporter_class = {EXPORTER!r}",
         "c.Autograde.autograde_preprocessors = [",
         f"    {PREPROCESSOR!r},",
         '    "nbgrader.preprocessors.Execute",',
@@ -491,8 +668,9 @@ def _readme(bundle) -> str:
     files += [f"- `{KEYS_FOLDER}/{name}.json`: the **keys**: each roster student's answers, computed with the "
               "course secret (which they do not hold). Teachers only: it goes into the course directory, never "
               "into `source/` (whatever is there is released).",
-              "- `nbgrader_config.example.py`: the configuration graphkin needs (its preprocessor, a time limit per "
-              "cell), to merge into your own `nbgrader_config.py` (named so that it never replaces yours).",
+              "- `nbgrader_config.example.py`: the configuration graphkin needs (its exporter and preprocessors, a "
+              "time limit per notebook), to merge into your own `nbgrader_config.py` (named so that it never "
+              "replaces yours).",
               "- `README.md`: this file."]
     if bundle.secret:
         secret_note = "The course secret is in none of these files: grading uses the keys."
@@ -505,19 +683,24 @@ def _readme(bundle) -> str:
     config = "\n".join(f"    {line}" for line in config_lines())
     return f"""# {bundle.exercise.title}: nbgrader
 
-Exported by graphkin for nbgrader (tried with nbgrader 0.9.6). **The grade never comes from the student's
-code**: graphkin's preprocessor reads each handed-in notebook as a file (the text assigned to `STUDENT` and
-to each answer), grades those answers in a separate Python process that holds the keys, and leaves
-nbgrader's kernel only the answers as literals; after the kernel, its grade writer sets each test cell's
-output to graphkin's feedback line and score. Files a student hands in beside the notebook still sit in
-the folder the kernel starts in (nbgrader copies them), where Python may import them: autograde in a
-container, or as a user that cannot write the course directory.
+Exported by graphkin for nbgrader (tried with nbgrader 0.9.6). **Only the answers a student typed count,
+whatever else they hand in.** graphkin's exporter reads each submitted notebook as a file before nbgrader
+does (the text assigned to `STUDENT` and to each answer) and hands nbgrader graphkin's own cells with those
+answers as literals; what else the submission holds (files, packages, pickles, links, other notebooks,
+extra grade cells) is named in nbgrader's log, and a notebook that cannot be read (too big, too deep, not
+UTF-8, not JSON) scores 0 with a sentence saying why. graphkin's preprocessor grades the answers in a
+separate Python process that holds the keys, and empties the folder the kernel starts in of what nbgrader
+copied of the submission, so the kernel runs only the literals and `generate_feedback` hands back nothing of
+it; after the kernel, its grade writer sets each test cell's output to graphkin's feedback line and score.
 
 ## Files
 
 {chr(10).join(files)}
 
-{secret_note} See `docs/platforms/nbgrader.md` in graphkin for what students can and cannot learn or do.
+**What graphkin cannot close from its side:** {NOT_CLOSED.replace("find submitted", "`find submitted")}`.
+
+{secret_note} {CLASSMATES[0].upper() + CLASSMATES[1:]} See `docs/platforms/nbgrader.md` in graphkin for what
+students can and cannot learn or do.
 
 ## Steps
 
@@ -581,6 +764,7 @@ def _indent(text: str) -> str:
     return "".join(f"   {line}\n" for line in text.splitlines())
 
 
-__all__ = ["GRADES", "GRADE_WRITER", "KEYS_FOLDER", "PREPROCESSOR", "STUDENT_VARIABLE", "TIMEOUT", "TimeLimit", "build",
+__all__ = ["CLASSMATES", "EXPORTER", "GRADES", "GRADE_WRITER", "KEYS_FOLDER", "NOTES", "NOT_CLOSED", "PREPROCESSOR",
+           "STUDENT_VARIABLE", "TIMEOUT", "TimeLimit", "assignment_files", "build", "reduced_notebook",
            "check_answer", "config_lines", "course_root", "not_read_as_data", "read_as_data", "readme_commands",
            "variables", "write_grades"]

@@ -8,23 +8,30 @@ Otter has one seed per class, not one per student, so nothing here asks it for r
 student's data come from their id, as in ``graphkin exercise make``: the notebook asks for the id
 (``STUDENT``) and prints the student's sheet from the roster's sheets.
 
-**Grading never runs the student's notebook.** Otter grades by running the notebook and its tests in one
-kernel, where a notebook can replace any function a test calls. The export registers :class:`Plugin`
-with otter instead, which, before otter runs anything:
+**Only the answers a student typed count, whatever else they hand in.** Otter grades by running the notebook
+and its tests in one kernel, where a notebook can replace any function a test calls; its runner unpickles a
+hand-in's ``.OTTER_LOG`` and the results the kernel sends back; and the kernel, started in the submission
+folder, imports modules from it first. The export registers :class:`Plugin` with otter instead, whose
+first hook runs before otter reads ``.OTTER_LOG`` or starts a kernel:
 
-1. reads the handed-in notebook as data (:func:`graphkin.exercises.notebooks.notebook_answers`: the
-   literal assigned to ``STUDENT`` and to each answer's variable, never run);
-2. grades those answers in a separate, isolated Python process that holds the precomputed keys and
+1. it reads the hand-in as data (:func:`graphkin.exercises.handins.read_handin`: the literal assigned to
+   ``STUDENT`` and to each answer's variable, never run), and names everything else handed in;
+2. it grades those answers in a separate, isolated Python process that holds the precomputed keys and
    not the course secret (:mod:`graphkin.exercises.platforms.isolated`), importing graphkin from the
    autograder's own copy;
-3. hands otter, in place of the student's notebook, one made of those literals only, so the kernel
-   otter starts runs nothing the student wrote;
+3. it deletes the keys, empties the submission folder of all but the autograder's own files, and puts a
+   notebook of those literals in place of the student's, so the kernel otter starts runs nothing the
+   student wrote and imports nothing they handed in;
 
-and after otter's tests, writes graphkin's score and feedback into otter's results, question by
+and after otter's tests, it writes graphkin's score and feedback into otter's results, question by
 question (partial credit as it is; the hidden test case itself, in the kernel, never passes: a grade
 comes from the plugin or not at all). ``otter run`` gives each notebook a time limit (the plugin
 stops it with otter's own error after ``timeout`` seconds), and ``graphkin exercise collect`` makes
 one class table of the ``results.json`` files.
+
+Otter opens a submission before any plugin: it refuses a zip of two notebooks and stops on a notebook it
+cannot parse. :func:`strip` makes of each hand-in a notebook it can read, for ``otter run``; on Gradescope
+that stays open (:data:`NOT_CLOSED`).
 """
 
 from __future__ import annotations
@@ -37,10 +44,22 @@ import tomllib
 from pathlib import Path
 
 from graphkin.errors import GraphkinError
+from graphkin.exercises import load
+from graphkin.exercises.grading import echo
+from graphkin.exercises.handins import (
+    HandIn,
+    clear_folder,
+    literal,
+    notebook_text,
+    own_files,
+    read_handin,
+    stripped_notebook,
+)
 from graphkin.exercises.keys import keys_text
-from graphkin.exercises.notebooks import STUDENT_VARIABLE, answer_variables, notebook_answers
+from graphkin.exercises.notebooks import STUDENT_VARIABLE, answer_variables
 from graphkin.exercises.platforms import requirements, runtime, vendor_files
 from graphkin.exercises.platforms.isolated import grade_submissions, submission
+from graphkin.files import write_text
 from graphkin.optional import require
 
 VENDOR = "vendor"
@@ -51,6 +70,24 @@ TIMEOUT = 120
 
 PLUGIN = "graphkin.exercises.platforms.otter.Plugin"
 """The plugin's importable name, as the assignment's configuration lists it."""
+
+NOT_CLOSED = (
+    "on Gradescope, otter opens an upload before graphkin's plugin runs: a zip of two notebooks, or a notebook "
+    "otter cannot parse (not JSON, nested too deeply), gets otter's own error and no grade, where graphkin gives "
+    "that student's row with a sentence. Grade the submissions you download from Gradescope with the README's "
+    "steps 3 and 4 (graphkin exercise strip, then otter run; or the regrade). And otter imports the plugin once "
+    "it is in the submission folder: run otter as its commands do (otter run), never from a Python whose "
+    "sys.path starts with the current folder (python -c, a notebook), where a graphkin/ handed in would be "
+    "imported in its place.")
+"""What otter's own design leaves open that graphkin cannot close from its side."""
+
+CLASSMATES = (
+    "the folder students are given lets any student compute any classmate's answers with graphkin: it holds "
+    "graphkin and the sheets, every roster student's data. A classmate's answers handed in score 0.")
+"""What the student folder lets every student do."""
+
+NOTES = (NOT_CLOSED, CLASSMATES)
+"""Said when the export is made (``graphkin exercise export`` prints them) and in its README."""
 
 
 # ---------------------------------------------------------------------------------------------------------
@@ -101,7 +138,7 @@ def _submitters(metadata) -> list[str]:
 
 
 class Plugin:
-    """otter-grader's plugin: grades the notebook read as data, in an isolated process, and writes the result.
+    """otter-grader's plugin: grades the hand-in read as data, in an isolated process, and writes the result.
 
     otter makes one per submission, with its path, Gradescope's submission metadata (``{}`` under
     ``otter run``) and this plugin's configuration from ``otter_config.json``: ``keys`` (the keys file,
@@ -112,41 +149,72 @@ class Plugin:
         self.submission_path = Path(submission_path) if submission_path else None
         self.metadata = submission_metadata if isinstance(submission_metadata, dict) else {}
         self.config = plugin_config if isinstance(plugin_config, dict) else {}
+        self.handin = HandIn()
+        self.names: dict = {}
         self.report = None
 
-    def _files(self) -> Path:
-        # The autograder's own copy of the assignment's files (source/files/), which the student's upload
-        # cannot replace: otter copies them into the submission folder, but keeps a folder the upload has.
-        return self.submission_path.parent.parent / "source" / "files"
+    def _source(self) -> Path:
+        # The autograder's own folder (source/: the zip's files/, tests/), which the upload cannot replace.
+        return self.submission_path.parent.parent / "source"
+
+    def _own(self) -> dict:
+        """The files otter itself puts in the submission folder: the assignment's, its tests, a blank package."""
+        source = self._source()
+        return {**own_files(source / "files"), **own_files(source / "tests", prefix="tests/"), "__init__.py": b""}
 
     def before_grading(self, config) -> None:
-        """Start the notebook's time limit (otter stops with its own error when it runs out)."""
+        """The first of graphkin's code that otter runs: grade the hand-in read as data, then leave it nothing.
+
+        It comes before otter reads the submission's ``.OTTER_LOG`` (a pickle otter loads whenever it is
+        there) and before the kernel starts in the submission folder (importing from it first). So here,
+        in otter's process: the notebook is read as data (:func:`graphkin.exercises.handins.read_handin`)
+        and graded in an isolated process; the keys are then deleted from the autograder's folders; every
+        other file of the student's is removed from the submission folder and named in otter's log
+        (:meth:`generate_report`); and the notebook is replaced by one of the answers' literals, which
+        is all the kernel runs. A time limit starts (otter stops with its own error when it runs out).
+        """
+        from otter.run.run_autograder.utils import OtterRuntimeError
+
         limit = int(self.config.get("timeout") or 0)
         if limit > 0 and threading.current_thread() is threading.main_thread():
             signal.signal(signal.SIGALRM, _out_of_time(limit))
             signal.alarm(limit)
-
-    def before_execution(self, submission_nb):
-        """Grade the notebook read as data; give otter a notebook of the answers' literals to run instead."""
-        from otter.run.run_autograder.utils import OtterRuntimeError
-
-        files = self._files()
-        keys_path = files / self.config.get("keys", "")
         try:
-            qids = [q["id"] for q in _questions(keys_path)]
-            names = answer_variables(qids)
-            claimed, answers = notebook_answers(submission_nb, names)
-            ids = _submitters(self.metadata)
-            # On Gradescope the notebook's id must be the submitter's (any member of a group); locally, it is.
-            if ids:
-                student = claimed if isinstance(claimed, str) and claimed.strip() in ids else ids[0]
-            else:
-                student = claimed if isinstance(claimed, str) else ""
-            vendor = files / VENDOR if (files / VENDOR / "graphkin").is_dir() else None
-            self.report = grade_submissions(keys_path, [submission(student, answers, claimed)], vendor=vendor)[0]
+            self._grade_and_clear()
         except GraphkinError as exc:
             raise OtterRuntimeError(f"graphkin could not grade this notebook: {exc}") from None
-        return _literal_notebook(submission_nb, claimed, answers, names)
+
+    def _grade_and_clear(self) -> None:
+        files = self._source() / "files"
+        keys_name = self.config.get("keys", "")
+        keys_path = files / keys_name
+        names = answer_variables([q["id"] for q in _questions(keys_path)])
+        folder = self.submission_path.parent
+        own = self._own()
+        handin = read_handin(folder, names, notebook=self.submission_path.name, own=own)
+        ids = _submitters(self.metadata)
+        claimed = handin.claimed
+        # On Gradescope the notebook's id must be the submitter's (any member of a group); locally, it is.
+        if ids:
+            student = claimed if isinstance(claimed, str) and claimed.strip() in ids else ids[0]
+        else:
+            student = claimed if isinstance(claimed, str) else ""
+        vendor = files / VENDOR if (files / VENDOR / "graphkin").is_dir() else None
+        sub = submission(student, handin.answers, claimed, refused=handin.refused)
+        self.report = grade_submissions(keys_path, [sub], vendor=vendor)[0]
+        self.handin, self.names = handin, names
+        # Graded: the keys leave every folder of this machine's autograder before anything runs in a kernel.
+        for path in (keys_path, folder / keys_name):
+            path.unlink(missing_ok=True)
+        own.pop(keys_name, None)
+        clear_folder(folder, own, leave={self.submission_path.name})
+        write_text(self.submission_path, notebook_text(_literal_notebook(handin, names)))
+
+    def before_execution(self, submission_nb):
+        """The notebook otter runs: the id and the answers as literals (:meth:`before_grading` wrote it)."""
+        import nbformat
+
+        return nbformat.from_dict(_literal_notebook(self.handin, self.names))
 
     def after_grading(self, results) -> None:
         """graphkin's score and feedback, question by question, in place of what the kernel's tests said."""
@@ -171,6 +239,23 @@ class Plugin:
         results.set_output(html.escape(runtime.summary(report), quote=False))
         results.set_plugin_data("graphkin", report)
 
+    def generate_report(self) -> str:
+        """The teacher's log (otter prints it after grading; Gradescope keeps it from students): what else was
+        handed in, removed unread, and why a hand-in was not graded."""
+        lines = []
+        if self.handin.ignored:
+            lines.append("graphkin: handed in beside the notebook, removed unread: " + ", ".join(self.handin.ignored))
+        if self.handin.grade_ids:
+            lines.append("graphkin: grade cells of the student's own, not run: " + grade_cells(self.handin))
+        if self.handin.refused:
+            lines.append(f"graphkin: not graded: {self.handin.reason}")
+        return "\n".join(lines)
+
+
+def grade_cells(handin: HandIn) -> str:
+    """The nbgrader grade ids a notebook's cells carry (none of otter's own notebooks has one), for the log."""
+    return ", ".join(repr(echo(gid, 40)) for gid in handin.grade_ids)
+
 
 def _out_of_time(limit: int):
     def stop(signum, frame):
@@ -190,21 +275,61 @@ def _questions(path: Path) -> list[dict]:
         raise GraphkinError(f"the keys file {path} cannot be read ({exc})") from None
 
 
-def _literal_notebook(nb, claimed, answers: dict, names: dict):
-    """The notebook otter runs: the id and each answer as a literal, nothing else of the student's."""
-    import nbformat
+_KERNEL = {"kernelspec": {"name": "python3", "display_name": "Python 3", "language": "python"},
+           "language_info": {"name": "python"}}
 
-    def literal(value) -> str:
-        if isinstance(value, str) or (isinstance(value, (int, float)) and not isinstance(value, bool)
-                                      and abs(value) < 1e300):
-            return repr(value)
-        return "None"
 
-    cells = [nbformat.v4.new_code_cell(f"{STUDENT_VARIABLE} = {literal(claimed)}  # read from the notebook as data")]
-    for qid, value in answers.items():
-        cells.append(nbformat.v4.new_code_cell(f"{names[qid]} = {literal(value)}  # read from the notebook as data"))
-    out = nbformat.v4.new_notebook(cells=cells, metadata=dict(nb.get("metadata", {})))
-    return nbformat.from_dict(out)
+def _literal_notebook(handin: HandIn, names: dict) -> dict:
+    """The notebook otter's kernel runs: the id and each answer as a literal, nothing else of the student's."""
+    lines = [f"{STUDENT_VARIABLE} = {literal(handin.claimed)}",
+             *(f"{names[qid]} = {literal(value)}" for qid, value in handin.answers.items())]
+    cells = [{"cell_type": "code", "id": f"c{i}", "metadata": {}, "execution_count": None, "outputs": [],
+              "source": f"{line}  # read from the notebook as data"} for i, line in enumerate(lines)]
+    return {"cells": cells, "metadata": dict(_KERNEL), "nbformat": 4, "nbformat_minor": 5}
+
+
+def strip(exercise, handins, dest) -> list[tuple[Path, HandIn]]:
+    """Each hand-in as a notebook for ``otter run``: its code cells' text only, and nothing that was beside it.
+
+    ``otter run`` reads a submission before graphkin's plugin can: it refuses a zip of two notebooks and
+    stops on a notebook it cannot parse. Stripped first, every hand-in reaches it as a well-formed notebook
+    of one file, and one that cannot be read carries why, so that otter's row and graphkin's regrade give
+    the same verdict (:func:`graphkin.exercises.handins.stripped_notebook`).
+
+    Parameters
+    ----------
+    exercise : str, Path or Exercise
+    handins : iterable of str or Path
+        Notebooks, otter's zips (``grader.export()``), or folders.
+    dest : str or Path
+        The folder to write ``<hand-in name>.ipynb`` into.
+
+    Returns
+    -------
+    list of (Path, HandIn)
+        Each notebook written, with what was read of its hand-in (for the teacher's log).
+
+    Raises
+    ------
+    GraphkinError
+        Two hand-ins of one name (``alice.zip`` and ``alice.ipynb``), or a hand-in that is not there.
+    """
+    ex = load(exercise)
+    names = answer_variables([q.id for q in ex.questions])
+    paths = [Path(p) for p in handins]
+    stems: dict[str, Path] = {}
+    for p in paths:
+        stem = p.stem if p.suffix.lower() in (".ipynb", ".zip") else p.name
+        if stem in stems:
+            raise GraphkinError(f"{stems[stem]} and {p} would both be {stem}.ipynb: rename one of them")
+        stems[stem] = p
+    meta = {**_KERNEL, "otter": {"assignment_name": ex.id}}
+    out = []
+    for stem, p in stems.items():
+        handin = read_handin(p, names, notebook=f"{ex.id}.ipynb")
+        out.append((write_text(Path(dest) / f"{stem}.ipynb", notebook_text(stripped_notebook(handin, meta)), "-o"),
+                    handin))
+    return out
 
 
 # ---------------------------------------------------------------------------------------------------------
@@ -426,12 +551,14 @@ def readme_commands(bundle) -> dict[str, str]:
         "check": (f"mkdir -p check\n"
                   f"timeout {TIMEOUT + 60} otter run -a dist/autograder/{name}-autograder_*.zip -o check "
                   f"dist/autograder/{name}.ipynb\n"),
-        "grade": ("for nb in submissions/*.ipynb; do\n"
+        "grade": (f"graphkin exercise strip {exercise} submissions/* -o handed-in\n"
+                  "for nb in handed-in/*.ipynb; do\n"
                   '    out=results/$(basename "$nb" .ipynb); mkdir -p "$out"\n'
-                  f'    timeout {TIMEOUT + 60} otter run -a dist/autograder/{name}-autograder_*.zip -o "$out" "$nb"\n'
+                  f'    timeout {TIMEOUT + 60} otter run -a dist/autograder/{name}-autograder_*.zip -o "$out" "$nb" '
+                  '|| echo "otter could not grade $nb" >&2\n'
                   "done\n"
                   f"graphkin exercise collect results -o class.csv\n"),
-        "regrade": (f"graphkin exercise grade {exercise} --keys {keys_file(bundle)} --answers submissions/*.ipynb "
+        "regrade": (f"graphkin exercise grade {exercise} --keys {keys_file(bundle)} --answers submissions/* "
                     f"-o regraded.csv\n"),
     }
 
@@ -459,22 +586,27 @@ def _readme(bundle) -> str:
         f"- `{VENDOR}/graphkin/`: graphkin itself, for the student notebook (which prints the sheet and checks "
         "that an answer can be read) and for the grading.",
     ]
-    secret = ("This export has a course secret: it is in none of these files. The autograder grades with the keys; "
+    secret = ("This export has a course secret: it is in none of these files. The autograder grades with the keys. "
               if bundle.secret else "There is no course secret: anyone with graphkin can compute any student's key. ")
     return f"""\
 # {bundle.exercise.title}: otter-grader
 
 Made by `graphkin exercise export` for the exercise `{name}`. Each student types their id into the notebook
-and gets their own data. **Grading never runs the student's notebook**: graphkin's otter plugin reads each
-handed-in notebook as a file (the text assigned to `STUDENT` and to each answer), grades those answers in a
-separate Python process that holds the keys, and writes graphkin's score and feedback into otter's results.
-Otter's kernel runs only those answers, typed back as literals.
+and gets their own data. **Only the answers a student typed count, whatever else they hand in.** Before otter
+loads anything of a submission (its `.OTTER_LOG`, the files beside the notebook), graphkin's otter plugin
+reads the notebook as a file (the text assigned to `STUDENT` and to each answer), grades those answers in a
+separate Python process that holds the keys, deletes the keys, removes everything else the student handed
+in (naming it in otter's log), and later writes graphkin's score and feedback into otter's results. Otter's
+kernel runs only those answers, typed back as literals.
+
+**What graphkin cannot close from its side:** {NOT_CLOSED}
 
 ## Files
 
 {chr(10).join(files)}
 
-{secret}see `docs/platforms/otter.md` in graphkin for what students can and cannot learn or do.
+{secret}{CLASSMATES[0].upper() + CLASSMATES[1:]} See `docs/platforms/otter.md` in graphkin for what
+students can and cannot learn or do.
 
 ## Next steps
 
@@ -493,16 +625,19 @@ In this folder, with a Python that has `otter-grader`, `ipykernel` and graphkin.
    ```sh
 {_indent(cmd['check'])}   ```
 
-3. Put the handed-in notebooks in `submissions/` and grade them. `otter run` grades one notebook in a few
-   seconds and writes its `results.json` (Gradescope's format: per question `score`, `max_score` and
-   graphkin's feedback); `timeout` and the plugin stop a notebook that takes too long; `graphkin exercise
-   collect` makes one class table (`student`, `score`, `max`, each question's points):
+3. Put what students handed in (notebooks, or the zips `grader.export()` writes) in `submissions/` and grade
+   them. `graphkin exercise strip` makes of each hand-in a notebook otter can read: its code cells' text,
+   nothing that was beside it (it names what it left out, and why a hand-in cannot be graded). `otter run`
+   grades one notebook in a few seconds and writes its `results.json` (Gradescope's format: per question
+   `score`, `max_score` and graphkin's feedback); `timeout` and the plugin stop a notebook that takes too
+   long; `graphkin exercise collect` makes one class table (`student`, `score`, `max`, each question's
+   points, and `refused`: why a hand-in was not graded):
 
    ```sh
 {_indent(cmd['grade'])}   ```
 
-4. Grade the same notebooks again on your own machine, outside otter (read as data, never run); the
-   scores are those of step 3:
+4. Grade the same hand-ins again on your own machine, outside otter (read as data, never run); the
+   scores and verdicts are those of step 3:
 
    ```sh
 {_indent(cmd['regrade'])}   ```
@@ -511,7 +646,9 @@ In this folder, with a Python that has `otter-grader`, `ipykernel` and graphkin.
 
 5. Or grade on Gradescope: upload the zip as a programming assignment's autograder. The grading image
    installs graphkin from the zip; the tests compare the id in the notebook with who handed it in
-   (Gradescope's Student ID, else the email), so the roster's ids must be those. Not tried here.
+   (Gradescope's Student ID, else the email), so the roster's ids must be those. A zip of two notebooks, or
+   a notebook otter cannot parse, gets otter's own error there (above): grade the download with steps 3
+   and 4. Not tried here.
 
 ## What the machines need
 
@@ -524,5 +661,5 @@ def _indent(text: str) -> str:
     return "".join(f"   {line}\n" for line in text.splitlines())
 
 
-__all__ = ["PLUGIN", "Plugin", "TIMEOUT", "VENDOR", "build", "graded_by_plugin", "keys_file", "readable",
-           "readme_commands", "variable"]
+__all__ = ["CLASSMATES", "NOTES", "NOT_CLOSED", "PLUGIN", "Plugin", "TIMEOUT", "VENDOR", "build", "grade_cells",
+           "graded_by_plugin", "keys_file", "readable", "readme_commands", "strip", "variable"]

@@ -554,8 +554,10 @@ question:
 
 Answers are typed as text ("27.06 N ∠ −73.78°", "(7.56, −25.98) N", "108.9 N·m CCW"). After **Save & Grade**
 each box shows its score badge (100 %, 50 %, 0 %) and graphkin's sentence under it (the slip it diagnosed,
-how far off, which step to revisit). A blank box or an answer graphkin cannot read ("12,5 N") is
-marked *invalid* with the sentence saying how to write it, and is not graded (it does not use an attempt).
+else which part is wrong, and which step to revisit; how far off only with `feedback = "distance"` in the
+exercise file, which gives the answer away in one more try). A blank box or an answer graphkin cannot read
+("12,5 N") is marked *invalid* with the sentence saying how to write it, and is not graded (it does not use
+an attempt).
 PrairieLearn's answer panel shows the key's answers when the assessment lets it.
 
 To see a variant's key on your machine, with `GRAPHKIN_SECRET` set to the export's secret (here variant

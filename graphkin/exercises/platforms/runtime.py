@@ -15,11 +15,11 @@ from pathlib import Path
 
 from graphkin.errors import GraphkinError
 from graphkin.exercises import load_exercise
-from graphkin.exercises.answers import Unreadable, read_answer
-from graphkin.exercises.exercise import Exercise, dimension_of
-from graphkin.exercises.grading import MESSAGES, grade_variant
+from graphkin.exercises.exercise import Exercise
+from graphkin.exercises.feedback import Refusal, read_given
 from graphkin.exercises.grading import grade_question as _grade_one
-from graphkin.exercises.notebooks import NotData, typed_in_kernel
+from graphkin.exercises.grading import grade_variant
+from graphkin.exercises.notebooks import kernel_cells, read_cells
 from graphkin.exercises.sheets import format_sheet
 from graphkin.exercises.variants import check_student, make_variant
 
@@ -90,31 +90,19 @@ def grade_question(path_or_exercise, student: str, qid: str, answer, secret: str
 
 
 def readable_problem(path_or_exercise, qid: str, answer, variable: str | None = None) -> str | None:
-    """Why an answer would be graded missing or unreadable (a sentence), or None when it can be read.
+    """Why an answer would be graded missing or unreadable (the grader's sentence), or None when it is read.
 
     What a notebook's own check cell tells a student: it needs neither the key nor the secret. With
-    ``variable``, the cell that last assigned it in this kernel is read as the grader reads the notebook,
-    so an answer typed as a calculation is caught before it is handed in.
+    ``variable``, in a kernel, the answer is what the grader would read from the cells run so far
+    (:func:`graphkin.exercises.notebooks.read_cells`, the grader's own reader), never the value the kernel
+    holds; and readability is the grader's own decision (:func:`graphkin.exercises.grading.read_given`).
     """
-    q = exercise(path_or_exercise).question(qid)
-    value = answer_value(answer)
-    if variable:
-        typed = typed_in_kernel(variable)
-        if isinstance(typed, NotData):
-            return MESSAGES["not_data"].format(name=variable, example=_example(q), what=typed.reason)
-    if value is None or (isinstance(value, str) and not value.strip()):
-        return MESSAGES["missing"].format(name=qid)
-    try:
-        read_answer(value, dimension=dimension_of(q.kind, q.part), unit=q.unit,
-                    decimal_comma=exercise(path_or_exercise).decimal_comma)
-    except Unreadable as exc:
-        return str(exc)
-    return None
-
-
-def _example(q) -> str:
-    unit = q.unit.replace("*", "·")
-    return "12.3" + (f" {unit}" if unit else "")
+    ex = exercise(path_or_exercise)
+    q = ex.question(qid)
+    cells = kernel_cells() if variable else None
+    given = read_cells(cells, {qid: variable})[1][qid] if cells is not None else answer_value(answer)
+    refused = read_given(q, given, decimal_comma=ex.decimal_comma)
+    return refused.sentence if isinstance(refused, Refusal) else None
 
 
 def feedback_line(result: dict) -> str:

@@ -45,6 +45,8 @@ class Tamper:
     key_of : str or None
         When set, the answers are that student's key (right answers): ``answers``/``read`` are filled in
         by :func:`catalogue`.
+    kinds : tuple of str
+        The ways of tampering it tries (one notebook may try several).
     """
 
     label: str
@@ -52,6 +54,7 @@ class Tamper:
     answers: dict = field(default_factory=dict)
     read: dict = field(default_factory=dict)
     key_of: str | None = None
+    kinds: tuple = ()
 
 
 def _literal(qid: str, value: str) -> str:
@@ -149,12 +152,11 @@ def catalogue(student: str, classmate: str) -> list[Tamper]:
     """The tampering notebooks, as handed in by ``student`` (``classmate``: another roster student)."""
     wrong_cells, wrong_read = _wrong()
     out = [
-        Tamper("patch_graphkin", (PATCH_GRAPHKIN,), wrong_cells, wrong_read),
-        Tamper("patch_platform", (PATCH_PLATFORM,), wrong_cells, wrong_read),
-        Tamper("patch_builtins", (PATCH_BUILTINS,), wrong_cells, wrong_read),
-        Tamper("patch_sys_modules", (PATCH_SYS_MODULES,), wrong_cells, wrong_read),
-        Tamper("ipython_hooks", (IPYTHON_HOOKS,), wrong_cells, wrong_read),
-        Tamper("writes_results", (WRITES_RESULTS,), wrong_cells, wrong_read),
+        # Nothing of a notebook's code runs, so one notebook tries them all.
+        Tamper("code_patches", (PATCH_GRAPHKIN, PATCH_PLATFORM, PATCH_BUILTINS, PATCH_SYS_MODULES, IPYTHON_HOOKS,
+                                WRITES_RESULTS), wrong_cells, wrong_read,
+               kinds=("patch_graphkin", "patch_platform", "patch_builtins", "patch_sys_modules", "ipython_hooks",
+                      "writes_results")),
         Tamper("answers_as_code", (READS_FILES_AND_ENV,), {
             "F23": 'F23 = open(sorted(__import__("glob").glob("**/*keys*.json", recursive=True))[0]).read()',
             "F14": 'F14 = __import__("os").environ.get("GRAPHKIN_SECRET", "") + " N"',
@@ -177,10 +179,11 @@ def catalogue(student: str, classmate: str) -> list[Tamper]:
 
 
 def _filled(t: Tamper) -> Tamper:
+    kinds = t.kinds or (t.label,)
     if t.key_of is None:
-        return t
+        return Tamper(t.label, t.cells, t.answers, t.read, None, kinds)
     key = {q["id"]: q["answer"]["text"] for q in exercises.key(NAME, t.key_of, SECRET)["questions"]}
-    return Tamper(t.label, t.cells, {q: _literal(q, a) for q, a in key.items()}, key, t.key_of)
+    return Tamper(t.label, t.cells, {q: _literal(q, a) for q, a in key.items()}, key, t.key_of, kinds)
 
 
 SECRET = "tamper-course-secret-8c2e"
@@ -232,3 +235,126 @@ def leaks(text: str, keys_text: str) -> list[str]:
     if "graphkin-keys" in text:
         found.append("the keys' format name")
     return found
+
+
+# ---------------------------------------------------------------------------------------------------------
+# What a student hands in beside the notebook, and notebooks that cannot be read
+#
+# Each payload, if anything ever ran or loaded it (an import, a .pth line, unpickling), leaves a file named
+# after its kind in the test's canary folder: the platform tests check that the folder stays empty.
+
+
+@dataclass(frozen=True)
+class Link:
+    """A symbolic link handed in: ``target`` is a path, or ``"{keys}"`` / ``"{keys_folder}"`` for the course's
+    keys file and the folder holding it (the platform test fills them in)."""
+
+    target: str
+
+
+class _Loads:
+    """An object whose pickle runs ``code`` when it is loaded (what a forged ``.OTTER_LOG`` or results pickle is)."""
+
+    def __init__(self, code: str):
+        self.code = code
+
+    def __reduce__(self):
+        return exec, (self.code,)
+
+
+def payload(canary, kind: str) -> str:
+    """Python that leaves ``canary/kind`` behind when anything runs it, and tries to read the keys."""
+    return (f"import glob, pathlib\n"
+            f"found = [p for p in glob.glob('**/*keys*', recursive=True)] + glob.glob('../**/*keys*', recursive=True)\n"
+            f"pathlib.Path({str(canary)!r}, {kind!r}).write_text(repr(found))\n")
+
+
+def pickled(canary, kind: str) -> bytes:
+    import pickle
+
+    return pickle.dumps(_Loads(payload(canary, kind)))
+
+
+def beside(canary) -> dict[str, dict]:
+    """Files handed in beside the notebook, by group (a group goes into one hand-in): path → bytes or Link."""
+    def code(kind):
+        return payload(canary, kind).encode()
+
+    return {
+        "packages": {"graphkin/__init__.py": code("shadow_graphkin"), "otter/__init__.py": code("shadow_otter"),
+                     "nbgrader/__init__.py": code("shadow_nbgrader"), "IPython/__init__.py": code("shadow_IPython")},
+        "startup": {"sitecustomize.py": code("sitecustomize"), "usercustomize.py": code("usercustomize"),
+                    "evil.pth": payload(canary, "pth").replace("\n", "; ").encode() + b"\n",
+                    "json.py": code("shadow_json"), "ipykernel_launcher.py": code("shadow_ipykernel_launcher")},
+        "pickles": {".OTTER_LOG": pickled(canary, "otter_log"), "results.pkl": pickled(canary, "results_pickle"),
+                    "results/results.pkl": pickled(canary, "results_folder_pickle")},
+        "export": {"vendor/graphkin/__init__.py": code("shadow_vendor"), "tests/F23.py": code("shadow_tests"),
+                   "__init__.py": code("package_init")},
+        "links": {"keys.json": Link("{keys}"), "course-keys": Link("{keys_folder}"), "passwd": Link("/etc/passwd")},
+    }
+
+
+def unreadable() -> dict[str, tuple[bytes, str]]:
+    """Notebooks that cannot be read, by kind: (the file's bytes, the refusal code graphkin gives)."""
+    cells = '{"cells": [{"cell_type": "code", "source": "STUDENT = \\"s001\\"\\nF14 = \\"1 N\\""}], "metadata": {}'
+    return {
+        # Outputs of 60 MB: more than a notebook of answers may be.
+        "too_big": ((cells + ', "outputs": "').encode() + b"x" * 60_000_000 + b'"}', "too_big"),
+        "too_deep": (b'{"cells": [], "x": ' + b"[" * 100_000 + b"]" * 100_000 + b"}", "too_deep"),
+        "not_utf8": ((cells + ', "title": "\u00e9tude"}').encode("latin-1"), "not_utf8"),
+        "not_json": (b'STUDENT = "s001"\nF14 = "1 N"\n', "not_json"),
+        "not_a_notebook": (b'{"cells": "STUDENT = \\"s001\\""}', "not_notebook"),
+    }
+
+
+def write_files(folder, files: dict, fill: dict) -> None:
+    """Write ``files`` (path → bytes or Link) under ``folder``; a Link's target is formatted with ``fill``."""
+    import os
+    from pathlib import Path
+
+    for rel, content in files.items():
+        path = Path(folder, rel)
+        path.parent.mkdir(parents=True, exist_ok=True)
+        if isinstance(content, Link):
+            os.symlink(content.target.format(**fill), path)
+        else:
+            path.write_bytes(content)
+
+
+def write_zip(path, files: dict, fill: dict) -> None:
+    """Write ``files`` (path → bytes or Link) as a zip, a Link as a zip's symbolic-link entry."""
+    import stat
+    import zipfile
+
+    with zipfile.ZipFile(path, "w") as z:
+        for rel, content in files.items():
+            if isinstance(content, Link):
+                info = zipfile.ZipInfo(rel)
+                info.external_attr = (stat.S_IFLNK | 0o777) << 16
+                z.writestr(info, content.target.format(**fill))
+            else:
+                z.writestr(rel, content)
+
+
+def refused_report(student: str, code: str) -> dict:
+    """What a hand-in that cannot be read earns: every question refused, with graphkin's sentence."""
+    from graphkin.exercises.handins import REFUSALS
+    from graphkin.exercises.platforms.isolated import refused
+
+    return refused(exercises.load(NAME), student, REFUSALS[code])
+
+
+def with_extra_grade_cells(nb):
+    """``nb`` with cells the student added: nbgrader grade cells worth 100 points each that end in full marks
+    (one under a test cell's own grade id, one under a new id), and otter test metadata saying all pass."""
+    import nbformat
+
+    for gid in ("test_F23", "extra_points"):
+        cell = nbformat.v4.new_code_cell("print('F23: correct, 100 / 100')\n100.0")
+        cell.metadata["nbgrader"] = {"grade": True, "grade_id": gid, "locked": True, "points": 100.0,
+                                     "schema_version": 3, "solution": False}
+        nb.cells.append(cell)
+    passing = "from otter.test_files import test_case\nOK_FORMAT = False\nname = {q!r}\npoints = 100\n" \
+              "@test_case(points=100)\ndef passes():\n    pass\n"
+    nb.metadata.setdefault("otter", {})["tests"] = {q: passing.format(q=q) for q in WRONG}
+    return nb

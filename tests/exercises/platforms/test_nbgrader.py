@@ -1,13 +1,20 @@
 """The nbgrader export, with the real nbgrader: the README's commands in a temporary course directory.
 
-Students: alice answers her variant right; bob makes a sign slip, a wrong answer, and leaves nbgrader's
-``raise NotImplementedError()`` in one answer cell; carol hands in alice's notebook (alice's id and
-answers); and one student per tampering notebook (:mod:`tests.exercises.platforms.tampering`), plus one
-who hands in extra files beside the notebook and one whose extra file hangs the kernel (right answers: the
-grade must not wait on the kernel, and the notebook's time limit must end the wait).
-The grades nbgrader records must be the grades of the
-answers read as data, question by question; the feedback nbgrader hands back must hold no secret, no
-key, nothing of the grading machine's environment, and no unescaped HTML.
+One ``nbgrader autograde`` grades the whole class. Students: alice answers her variant right; bob makes a
+sign slip, a wrong answer, and leaves nbgrader's ``raise NotImplementedError()`` in one answer cell; carol
+hands in alice's notebook (alice's id and answers); one student per tampering notebook
+(:mod:`tests.exercises.platforms.tampering`); students who hand in files beside the notebook (shadow
+``graphkin/``, ``otter/``, ``nbgrader/``, ``IPython/`` packages, ``sitecustomize.py``, a ``.pth``, a
+``json.py``, an ``ipykernel_launcher.py``, a ``graphkin/`` that hangs the kernel, pickles and otter's log,
+links to the course's keys and to their folder, another notebook); a notebook that is a link to the keys;
+extra grade cells worth 100 points; and notebooks that cannot be read (60 MB, 100 000-deep JSON, not
+UTF-8, not JSON, not a notebook).
+
+The grades nbgrader records must be those of the answers read as data, question by question (a hand-in
+that cannot be read: 0, with graphkin's sentence); autograde must finish for every student; nothing handed
+in may run or be loaded (every payload would leave a file in a canary folder); the regrade outside nbgrader
+must agree; and no file a student gets back (the feedback folder) may hold a secret, a key or anything of
+the grading machine's environment, or unescaped HTML.
 """
 
 from __future__ import annotations
@@ -15,7 +22,6 @@ from __future__ import annotations
 import csv
 import json
 import os
-import re
 import shutil
 import subprocess
 import sys
@@ -24,9 +30,11 @@ from types import SimpleNamespace
 
 import pytest
 
+import graphkin
 from graphkin import exercises
 from graphkin.errors import GraphkinError
 from graphkin.exercises import platforms
+from graphkin.exercises.handins import REFUSALS
 from graphkin.exercises.platforms import nbgrader as nbx
 from graphkin.exercises.platforms import runtime
 from tests.exercises.platforms import tampering
@@ -35,11 +43,17 @@ from tests.exercises.platforms.tampering import (
     NAME,
     SECRET,
     WRONG,
+    Link,
     Tamper,
+    beside,
     catalogue,
     expected_report,
     fill,
     leaks,
+    refused_report,
+    unreadable,
+    with_extra_grade_cells,
+    write_files,
 )
 
 pytestmark = pytest.mark.slow  # runs the real platform
@@ -49,17 +63,18 @@ pytest.importorskip("nbgrader")
 
 BIN = Path(sys.executable).parent
 LABELS = [t.label for t in catalogue("x", "alice")]
-EXTRA_FILES = "extra_files"
-HANGING = "hanging_kernel"
-TAMPER_IDS = {label: f"t_{label}" for label in [*LABELS, EXTRA_FILES, HANGING]}
+UNREADABLE = unreadable()
+# Students who hand in files beside a notebook of wrong answers (or, for "hanging", their right answers).
+BESIDE = {"extra_files": "packages", "startup": "startup", "pickles": "pickles", "links": "links",
+          "export": "export"}
 TIME_LIMIT = 15.0
 """The course's time limit per notebook in these tests [s] (the export's default is 120 s)."""
-HANGING_GRAPHKIN = "import time\ntime.sleep(10**6)  # the kernel imports this before the real graphkin\n"
+TAMPER_IDS = {label: f"t_{label}" for label in [*LABELS, *BESIDE, "hanging", "link_notebook", "extra_grade_cells",
+                                                 *UNREADABLE]}
 ROSTER = ["alice", "bob", "carol", *TAMPER_IDS.values()]
 
-# Files handed in beside the notebook: a package named graphkin that the kernel (started in the folder
-# nbgrader copies the submission into) imports before the real one, and that tries every trick at once.
-FORGED_GRAPHKIN = """\
+# A graphkin package handed in beside the notebook that tries every trick at once, if the kernel imported it.
+FORGED_GRAPHKIN = b"""\
 import glob, os, pathlib
 ip = get_ipython()
 ip.events.register("post_run_cell", lambda result: print("3.0"))
@@ -70,10 +85,11 @@ print(keys, os.environ.get("GRAPHKIN_SECRET"), os.environ.get("GRAPHKIN_MARKER")
 
 
 def _env() -> dict:
-    # The teacher's shell: the venv first on PATH (nbgrader runs alembic from it), the course secret and a
-    # marker in the environment.
+    # The teacher's shell: the venv first on PATH (nbgrader runs alembic from it), this graphkin first on
+    # sys.path (nbgrader imports graphkin's exporter and preprocessors from it), the course secret and a marker.
     env = {k: v for k, v in os.environ.items() if k != "NBGRADER_STUDENT"}
-    env.update(PATH=f"{BIN}{os.pathsep}{env.get('PATH', '')}", GRAPHKIN_SECRET=SECRET, GRAPHKIN_MARKER=tampering.MARKER)
+    env.update(PATH=f"{BIN}{os.pathsep}{env.get('PATH', '')}", GRAPHKIN_SECRET=SECRET, GRAPHKIN_MARKER=tampering.MARKER,
+               PYTHONPATH=str(Path(graphkin.__file__).resolve().parents[1]))
     return env
 
 
@@ -93,57 +109,84 @@ def _flip_sense(text):
     return text.replace("CCW", "@").replace("CW", "CCW").replace("@", "CW")
 
 
-def _handed_in() -> dict:
-    """Student → (the id the notebook carries, the Tamper it is, extra files)."""
-    alice, bob = _key("alice"), _key("bob")
-    right = Tamper("alice", (), {q: f"{q} = {json.dumps(a, ensure_ascii=False)}" for q, a in alice.items()}, alice)
+def _own(student: str, label: str) -> Tamper:
+    key = _key(student)
+    return Tamper(label, (), {q: f"{q} = {json.dumps(a, ensure_ascii=False)}" for q, a in key.items()}, key)
+
+
+def _handed_in(canary: Path) -> dict:
+    """Student → SimpleNamespace(claimed id, Tamper, files beside, notebook bytes or Link or None, refusal code)."""
+    bob = _key("bob")
+    wrong = Tamper("wrong", (), {q: f"{q} = {v!r}" for q, v in WRONG.items()}, dict(WRONG))
     slips = {"F23": bob["F23"], "F14": "1 N", "T12": _flip_sense(bob["T12"])}
+
+    def one(claimed, t, files=None, notebook=None, refused=None, edit=None):
+        return SimpleNamespace(claimed=claimed, t=t, files=files or {}, notebook=notebook, refused=refused, edit=edit)
+
     out = {
-        "alice": ("alice", right, {}),
-        "bob": ("bob", Tamper("bob", (), {
+        "alice": one("alice", _own("alice", "alice")),
+        "bob": one("bob", Tamper("bob", (), {
             # Right, with nbgrader's stub left under it: the cell raises, the answer still counts.
             "F23": f'F23 = "{bob["F23"]}"\n# YOUR CODE HERE\nraise NotImplementedError()',
             "F14": 'F14 = "1 N"',
-            "T12": f'T12 = "{_flip_sense(bob["T12"])}"'}, slips), {}),
-        "carol": ("alice", right, {}),
+            "T12": f'T12 = "{_flip_sense(bob["T12"])}"'}, slips)),
+        "carol": one("alice", _own("alice", "alice")),
     }
-    for label, sid in TAMPER_IDS.items():
-        if label == EXTRA_FILES:
-            t = Tamper(label, (), {q: f"{q} = {v!r}" for q, v in WRONG.items()}, dict(WRONG))
-            out[sid] = (sid, t, {"graphkin/__init__.py": FORGED_GRAPHKIN})
-        elif label == HANGING:
-            own = _key(sid)
-            t = Tamper(label, (), {q: f"{q} = {json.dumps(a, ensure_ascii=False)}" for q, a in own.items()}, own)
-            out[sid] = (sid, t, {"graphkin/__init__.py": HANGING_GRAPHKIN})
-        else:
-            out[sid] = (sid, {t.label: t for t in catalogue(sid, "alice")}[label], {})
+    groups = beside(canary)
+    for label in LABELS:
+        sid = TAMPER_IDS[label]
+        out[sid] = one(sid, {t.label: t for t in catalogue(sid, "alice")}[label])
+    for label, group in BESIDE.items():
+        files = dict(groups[group])
+        if label == "extra_files":
+            files["graphkin/__init__.py"] = FORGED_GRAPHKIN
+        if label == "pickles":  # and another notebook, with someone's right answers
+            files["alice.ipynb"] = json.dumps({"cells": [{"cell_type": "code", "source": "\n".join(
+                _own("alice", "x").answers.values())}]}).encode()
+        out[TAMPER_IDS[label]] = one(TAMPER_IDS[label], wrong, files)
+    sid = TAMPER_IDS["hanging"]
+    # A graphkin the kernel would import before the real one: it would never return.
+    hangs = (tampering.payload(canary, "hanging_graphkin") + "import time\ntime.sleep(10**6)\n").encode()
+    out[sid] = one(sid, _own(sid, "hanging"), {"graphkin/__init__.py": hangs})
+    out[TAMPER_IDS["link_notebook"]] = one(None, wrong, notebook=Link("{keys}"), refused="link")
+    out[TAMPER_IDS["extra_grade_cells"]] = one(TAMPER_IDS["extra_grade_cells"], wrong, edit=with_extra_grade_cells)
+    for label, (data, code) in UNREADABLE.items():
+        out[TAMPER_IDS[label]] = one(None, wrong, notebook=data, refused=code)
     return out
 
 
-def _submit(course: Path, student: str, claimed: str, t: Tamper, extra: dict):
-    """Fill in the released notebook as the student would, and put it where ``nbgrader collect`` puts it."""
-    nb = nbformat.read(course / "release" / NAME / f"{NAME}.ipynb", as_version=4)
-    nb = fill(nb, claimed, t, {q: f"answer_{q}" for q in t.answers})
+def _submit(course: Path, student: str, h) -> None:
+    """Hand in as the student would, where ``nbgrader collect`` puts it: the released files, the notebook
+    filled in (or the bytes or link handed in in its place), and the files beside it."""
     folder = course / "submitted" / student / NAME
     folder.mkdir(parents=True)
     for f in (course / "release" / NAME).iterdir():
         if f.suffix != ".ipynb":
             shutil.copy(f, folder / f.name)
-    for rel, text in extra.items():
-        (folder / rel).parent.mkdir(parents=True, exist_ok=True)
-        (folder / rel).write_text(text, encoding="utf-8")
-    nbformat.write(nb, folder / f"{NAME}.ipynb")
+    fill_in = {"keys": str(course / nbx.KEYS_FOLDER / f"{NAME}.json"), "keys_folder": str(course / nbx.KEYS_FOLDER)}
+    write_files(folder, h.files, fill_in)
+    target = folder / f"{NAME}.ipynb"
+    if isinstance(h.notebook, Link):
+        os.symlink(h.notebook.target.format(**fill_in), target)
+    elif isinstance(h.notebook, bytes):
+        target.write_bytes(h.notebook)
+    else:
+        nb = nbformat.read(course / "release" / NAME / f"{NAME}.ipynb", as_version=4)
+        nb = fill(nb, h.claimed, h.t, {q: f"answer_{q}" for q in h.t.answers})
+        nbformat.write(h.edit(nb) if h.edit else nb, target)
 
 
 @pytest.fixture(scope="module")
 def course(tmp_path_factory):
     """The README's steps in a course directory: set up, generate, hand in, autograde, export, feedback, regrade.
 
-    First an autograde without graphkin's lines in nbgrader_config.py: it must keep no grade.
+    First, an autograde without graphkin's lines in nbgrader_config.py (it must keep no grade), and one with
+    the lines of an earlier graphkin, without its exporter (it must refuse to grade).
     """
     root = tmp_path_factory.mktemp("nbgrader")
-    course = root / "course"
+    course, canary = root / "course", root / "canary"
     course.mkdir()
+    canary.mkdir()
     platforms.export(NAME, "nbgrader", course / "export", secret=SECRET, students=ROSTER)
     b = platforms.bundle(NAME, secret=SECRET, students=ROSTER)
     cmd = nbx.readme_commands(b)
@@ -152,22 +195,30 @@ def course(tmp_path_factory):
         assert "".join(f"   {line}\n" for line in step.splitlines()) in readme
     base = (f'c = get_config()\nc.CourseDirectory.course_id = "mechanics"\n'
             f'c.CourseDirectory.db_url = "sqlite:///{(course / "gradebook.db").as_posix()}"\n')
-    (course / "nbgrader_config.py").write_text(base, encoding="utf-8")
+    config = course / "nbgrader_config.py"
+    config.write_text(base, encoding="utf-8")
     _bash(course, cmd["setup"])
     _bash(course, cmd["generate"])
-    handed_in = _handed_in()
-    for student, (claimed, t, extra) in handed_in.items():
-        _submit(course, student, claimed, t, extra)
+    handed_in = _handed_in(canary)
+    for student, h in handed_in.items():
+        _submit(course, student, h)
     unconfigured = _bash(course, f"nbgrader autograde {NAME} --student alice", check=False)
     unconfigured_grades = _grades(course, "alice")
-    (course / "nbgrader_config.py").write_text(base + "\n".join(nbx.config_lines(TIME_LIMIT)) + "\n",
-                                               encoding="utf-8")
+    lines = nbx.config_lines(TIME_LIMIT)
+    config.write_text(base + "\n".join(line for line in lines if "exporter_class" not in line) + "\n",
+                      encoding="utf-8")
+    no_exporter = _bash(course, f"nbgrader autograde {NAME} --student alice --force", check=False)
+    no_exporter_grades = _grades(course, "alice")
+    config.write_text(base + "\n".join(lines) + "\n", encoding="utf-8")
     autograded = _bash(course, cmd["autograde"].replace(f"nbgrader autograde {NAME}",
                                                         f"nbgrader autograde {NAME} --force"))
     _bash(course, cmd["feedback"])
     _bash(course, cmd["regrade"])
-    return SimpleNamespace(dir=course, handed_in=handed_in, unconfigured=unconfigured,
-                           unconfigured_grades=unconfigured_grades, autograde_log=autograded.stdout + autograded.stderr)
+    regraded = _bash(course, cmd["regrade"].replace("-o regraded.csv", "--json"))
+    return SimpleNamespace(dir=course, canary=canary, handed_in=handed_in, unconfigured=unconfigured,
+                           unconfigured_grades=unconfigured_grades, no_exporter=no_exporter,
+                           no_exporter_grades=no_exporter_grades, autograde_log=autograded.stdout + autograded.stderr,
+                           regraded={r["student"]: r for r in json.loads(regraded.stdout)})
 
 
 def _grades(course: Path, student) -> dict:
@@ -181,10 +232,12 @@ def _grades(course: Path, student) -> dict:
 
 
 def _report(course, student) -> dict:
-    claimed, t, _ = course.handed_in[student]
-    if claimed != student:
+    h = course.handed_in[student]
+    if h.refused:
+        return refused_report(student, h.refused)
+    if h.claimed != student:
         return {"questions": [{"id": q, "score": 0.0} for q in ("F23", "F14", "T12")], "score": 0.0}
-    return expected_report(student, t, ROSTER)
+    return expected_report(student, h.t, ROSTER)
 
 
 def _feedback(course, student) -> str:
@@ -201,13 +254,43 @@ def _outputs(course, student):
     return out
 
 
+def test_the_class_tries_more_than_15_kinds_of_tampering():
+    kinds = {k for t in catalogue("x", "alice") for k in t.kinds} | set(UNREADABLE)
+    kinds |= {path for group in BESIDE.values() for path in beside("canary")[group]}
+    kinds |= {"hanging", "link_notebook", "extra_grade_cells", "another_notebook", "another_students_id"}
+    assert len(kinds) >= 15, sorted(kinds)
+
+
 @pytest.mark.parametrize("student", ROSTER)
 def test_each_notebook_earns_what_its_answers_read_as_data_earn(course, student):
     """Honest notebooks, a friend's notebook, and notebooks that replace graphkin, nbgrader's helpers,
     builtins, sys.modules or IPython's hooks, read the course's files and environment, write results,
-    sleep, exit, or hand in files that the kernel imports: each earns what its answers earn, never more."""
+    sleep, exit, add grade cells, or hand in files the kernel would import, pickles and links: each earns
+    what its answers earn, never more; one that cannot be read earns 0 with graphkin's sentence."""
     report = _report(course, student)
     assert _grades(course.dir, student) == {q["id"]: q["score"] for q in report["questions"]}
+    if report.get("refused"):
+        assert all(REFUSALS[course.handed_in[student].refused] in text
+                   for gid, text in _outputs(course, student).items() if gid.startswith("test_"))
+
+
+def test_nothing_handed_in_ever_ran_or_was_loaded(course):
+    """Imported, run at start-up, unpickled: any of it would have left a file in the canary folder."""
+    assert sorted(p.name for p in course.canary.iterdir()) == []
+
+
+def test_autograde_graded_every_student_and_named_what_it_did_not_read(course):
+    """One student's extra grade cells or unreadable notebook never stops the class: autograde ends well (the
+    fixture checks its exit code) and every student after them has grades. Its log names what was handed in
+    beside each notebook and why a notebook was not graded."""
+    assert all(_grades(course.dir, s) for s in ROSTER)
+    log = course.autograde_log
+    assert "t_pickles: handed in beside the notebook, not read (graphkin): .OTTER_LOG (otter's log, a pickle)" in log
+    assert "alice.ipynb (another notebook)" in log
+    assert "keys.json (a link)" in log and "course-keys (a link)" in log
+    assert f"t_too_deep: not graded (graphkin): {REFUSALS['too_deep']}" in log
+    assert ("t_extra_grade_cells: cells of the student's own, not given to nbgrader (graphkin): 'test_F23' (again), "
+            "'extra_points'") in log
 
 
 def test_grades_csv_is_the_class_table(course):
@@ -224,11 +307,12 @@ def test_the_regrade_outside_nbgrader_agrees(course):
     assert regraded == rows
 
 
-def test_each_test_cell_shows_the_feedback_line(course):
-    for student in ("alice", "bob"):
+def test_each_test_cell_shows_the_regrades_feedback_line(course):
+    """Verdict by verdict, nbgrader's feedback is the regrade's (a refusal included)."""
+    for student in ROSTER:
         out = _outputs(course, student)
-        for result in _report(course, student)["questions"]:
-            assert runtime.feedback_line(result) in out[f"test_{result['id']}"]
+        for result in course.regraded[student]["questions"]:
+            assert runtime.feedback_line(result) in out[f"test_{result['id']}"], (student, result["id"])
     bob = _outputs(course, "bob")
     assert "The size is right but the sense is wrong" in bob["test_T12"]
     # The sheet cell shows whom the notebook was graded as, and their data.
@@ -244,16 +328,11 @@ def test_a_submission_carrying_another_students_id_scores_nothing(course):
     assert all(sentence in out[f"test_{q}"].replace("This", "this") for q in ("F23", "F14", "T12"))
 
 
-def test_a_hanging_kernel_waits_at_most_its_notebooks_time_limit(course):
-    """A file handed in beside the notebook hangs the kernel: nbclient logs each wait it ended, and each is
-    at most what was left of the notebook's time limit, not nbgrader's per-cell limit."""
-    waits = [int(w) for w in re.findall(r"Timeout waiting for execute reply \((\d+)s\)", course.autograde_log)]
-    assert waits, "the hanging kernel was never timed out: " + course.autograde_log[-2000:]
-    assert max(waits) <= TIME_LIMIT, waits
-    assert sum(w for w in waits if w > 1) <= TIME_LIMIT, waits  # the first wait spends the budget; later ones 1 s
-    report = _report(course, TAMPER_IDS[HANGING])
-    assert report["score"] == 3.0
-    assert _grades(course.dir, TAMPER_IDS[HANGING]) == {q["id"]: q["score"] for q in report["questions"]}
+def test_a_file_that_would_hang_the_kernel_is_gone_before_it_starts(course):
+    """The graphkin/ handed in would sleep for ever once imported: it was removed before the kernel started
+    (it left nothing in the canary folder), and the student's right answers earned full marks."""
+    assert not (course.canary / "hanging_graphkin").exists()
+    assert _grades(course.dir, TAMPER_IDS["hanging"]) == {"F23": 1.0, "F14": 1.0, "T12": 1.0}
 
 
 def test_the_time_limit_is_per_notebook():
@@ -271,33 +350,39 @@ def test_the_time_limit_is_per_notebook():
         nbx.TimeLimit(0)
 
 
-def test_without_graphkins_preprocessors_no_grade_is_kept(course):
+def test_without_graphkins_lines_no_grade_is_kept(course):
     run = course.unconfigured
     assert "must be graded read as data" in run.stdout + run.stderr
     assert all(v == 0 for v in course.unconfigured_grades.values())
 
 
-def test_nothing_secret_in_the_feedback_students_get(course):
+def test_without_graphkins_exporter_nothing_is_graded(course):
+    """The lines of an earlier export (no exporter): the preprocessor refuses to grade, naming the line."""
+    run = course.no_exporter
+    assert "c.Autograde.exporter_class" in run.stdout + run.stderr
+    assert all(v == 0 for v in course.no_exporter_grades.values())
+
+
+def test_nothing_secret_in_any_file_a_student_gets_back(course):
+    """Every file of feedback/ (what generate_feedback hands back) and of release/."""
     keys = (course.dir / "graphkin-keys" / f"{NAME}.json").read_text(encoding="utf-8")
-    for student in ROSTER:
-        html = _feedback(course, student)
-        assert leaks(html, keys) == [], student
-    # Nor in what is released to students.
+    for p in (course.dir / "feedback").rglob("*"):
+        if p.is_file() or p.is_symlink():
+            assert not p.is_symlink(), p
+            assert leaks(p.read_bytes().decode("utf-8", "replace"), keys) == [], p
+    assert {p.parent.parent.name for p in (course.dir / "feedback").rglob(f"{NAME}.html")} == set(ROSTER)
     for p in (course.dir / "release").rglob("*"):
         if p.is_file():
             assert SECRET.encode() not in p.read_bytes() and b"graphkin-keys-1" not in p.read_bytes(), p
 
 
-def test_what_the_kernel_printed_reaches_no_student(course):
-    """The handed-in graphkin package ran in the kernel (it printed the keys and "3.0" after every cell):
-    none of it is in the autograded notebook or the feedback; the grade is that of the answers."""
-    sid = TAMPER_IDS[EXTRA_FILES]
-    out = _outputs(course, sid)
-    assert out["sheet"].splitlines()[0] == f"Graded as student {sid!r}: 0 / 3 points."
-    assert not any("3.0" == line.strip() for text in out.values() for line in text.splitlines())
-    keys = (course.dir / "graphkin-keys" / f"{NAME}.json").read_text(encoding="utf-8")
-    autograded = (course.dir / "autograded" / sid / NAME / f"{NAME}.ipynb").read_text(encoding="utf-8")
-    assert leaks(autograded, keys) == []
+def test_the_kernels_folder_held_nothing_of_the_students(course):
+    """What nbgrader copied of a submission (the files, the targets of its links) is gone from autograded/:
+    only the notebook, the assignment's own files and nbgrader's timestamp are there."""
+    own = {"timestamp.txt", f"{NAME}.ipynb", f"{NAME}.toml", f"{NAME}-sheets.json"}
+    for student in ROSTER:
+        folder = course.dir / "autograded" / student / NAME
+        assert {p.relative_to(folder).as_posix() for p in folder.rglob("*")} <= own, student
 
 
 def test_html_in_an_answer_is_escaped_in_the_feedback(course):
@@ -347,6 +432,16 @@ def test_without_secret_or_roster_the_sheet_is_drawn_from_the_id():
     assert cells["sheet"].endswith(f'print(runtime.sheet_text("{NAME}.toml", STUDENT))')
     assert 'STUDENT = "sample"' in cells["student"]
     assert "no course secret" in tree["README.md"]
+
+
+def test_the_exporter_class_is_made_only_when_nbgrader_asks_for_it():
+    code = ("import sys, graphkin.exercises.platforms.nbgrader as m\n"
+            "assert 'nbconvert' not in sys.modules\n"
+            "from nbconvert.exporters import NotebookExporter\n"
+            "assert issubclass(m.HandInExporter, NotebookExporter) and m.HandInExporter is m.HandInExporter\n"
+            "print(m.HandInExporter.__module__ + '.' + m.HandInExporter.__name__)\n")
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=_env(), timeout=120)
+    assert done.stdout.strip() == nbx.EXPORTER, done.stderr
 
 
 def test_write_grades_replaces_whatever_the_kernel_printed():

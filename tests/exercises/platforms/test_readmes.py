@@ -18,6 +18,7 @@ from pathlib import Path
 
 import pytest
 
+import graphkin
 from graphkin import catalog, exercises
 from graphkin.exercises import platforms
 from graphkin.exercises.platforms import gradescope, nbgrader, otter, prairielearn
@@ -33,7 +34,9 @@ NAME = "mine"
 
 
 def _env() -> dict:
-    return {**os.environ, "PATH": f"{BIN}{os.pathsep}{os.environ.get('PATH', '')}", "GRAPHKIN_SECRET": SECRET}
+    # This graphkin first on sys.path: the platforms import graphkin's plugin and preprocessors from it.
+    return {**os.environ, "PATH": f"{BIN}{os.pathsep}{os.environ.get('PATH', '')}", "GRAPHKIN_SECRET": SECRET,
+            "PYTHONPATH": str(Path(graphkin.__file__).resolve().parents[1])}
 
 
 def _run(folder: Path, commands: str, timeout: float = 600) -> subprocess.CompletedProcess:
