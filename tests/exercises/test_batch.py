@@ -95,3 +95,21 @@ def test_each_students_worker_is_found_once_for_a_sessions_passes(monkeypatch):
     # Another secret is another split.
     run_roster(ex, "make", STUDENTS, SECRET + "+", workers=2)
     assert len(found) == 2 * len(STUDENTS)
+
+
+def test_the_feeding_process_pauses_its_collector_only_while_it_reads_the_workers_rows():
+    import gc
+
+    ex = exercises.load(NAME)
+    seen = []
+    assert gc.isenabled()
+    run_roster(ex, "make", STUDENTS, SECRET, workers=2, progress=lambda n: seen.append(gc.isenabled()))
+    assert seen and not any(seen) and gc.isenabled()
+    gc.disable()
+    try:
+        run_roster(ex, "make", STUDENTS, SECRET, workers=2)
+        assert not gc.isenabled()  # a caller's own choice is left as it was
+    finally:
+        gc.enable()
+    run_roster(ex, "make", STUDENTS[:PARALLEL_FROM - 1], SECRET, progress=lambda n: seen.append(gc.isenabled()))
+    assert seen[-1]  # a small roster runs here, with the collector as it is
