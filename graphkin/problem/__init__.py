@@ -7,6 +7,7 @@
 :mod:`.tables`              tables against the input (a torque curve), inline or in a CSV
 :mod:`.books`               pressures, powers, dead centres, a slider placed by an angle, ``[forward]``
 :mod:`.placement`           where a link stands at an angle as the slider moves (``driver.place``)
+:mod:`.shared`              parts read once per equal table, and the mechanism made of them
 ==========================  ===========================================================
 
 The format is documented field by field in ``docs/problem-files.md``.

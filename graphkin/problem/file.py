@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import math
 import tomllib
-from collections import OrderedDict
 from dataclasses import replace
 from pathlib import Path
 from typing import Any, Mapping
@@ -20,11 +19,12 @@ from graphkin.errors import GraphkinError, GraphkinWarning, ModelError, ProblemF
 from graphkin.files import read_text
 from graphkin.kinematics.plan import plan_of
 from graphkin.kinematics.structure import Dyad
-from graphkin.model import SENSES, Active, Driver, GearMesh, Link, Mechanism, PointForce, Prismatic, Revolute, Torque
+from graphkin.model import SENSES, Active, Driver, GearMesh, Link, PointForce, Prismatic, Revolute, Torque
 from graphkin.model import mass as massprops
 from graphkin.problem import books
 from graphkin.problem.problem import Problem
 from graphkin.problem.reader import FieldReader
+from graphkin.problem.shared import mechanism_once, read_once
 from graphkin.problem.stated import check_stated
 from graphkin.problem.tables import load_table
 
@@ -176,8 +176,8 @@ def build_problem(data: Mapping[str, Any], *, file: str = "<problem>", base: str
         raise rd.fail("analysis", f"must be \"dynamic\" (inertia loads included, the default) or \"static\" (no inertia "
                       f"loads), got {analysis!r}")
     static = analysis == "static"
-    frame = _read_once(_frame, rd, data.get("frame", {}), "frame")
-    links = [frame] + [_read_once(_link, rd, t, f"links[{i}]", frame.number, static)
+    frame = read_once(_frame, rd, data.get("frame", {}), "frame")
+    links = [frame] + [read_once(_link, rd, t, f"links[{i}]", frame.number, static)
                        for i, t in enumerate(_list(rd, data, "links"))]
     joints = [_joint_once(rd, t, f"joints[{i}]") for i, t in enumerate(_list(rd, data, "joints"))]
     d = rd.table(rd.need(data, "driver", ""), "driver", _DRIVER["crank"] | _DRIVER["slider"])
@@ -209,7 +209,7 @@ def build_problem(data: Mapping[str, Any], *, file: str = "<problem>", base: str
     # A pressure against the stroke needs the mechanism's dead centres: it joins the loads once they are known.
     plain = [k for k, ld in enumerate(loads) if not isinstance(ld, books.PendingStroke)]
     try:
-        mech = _mechanism_once(links, joints, driver, [loads[k] for k in plain], gravity, assembly,
+        mech = mechanism_once(links, joints, driver, [loads[k] for k in plain], gravity, assembly,
                                str(data.get("title", "")), str(data.get("source", "")), frame.number)
         if len(plain) < len(loads):
             plain = list(range(len(loads)))
@@ -272,61 +272,6 @@ def _list(rd, data, key):
     if not isinstance(value, list):
         raise rd.fail(key, f"must be an array of tables ([[{key}]]), got {type(value).__name__}")
     return value
-
-
-_READ: OrderedDict = OrderedDict()
-_READ_SIZE = 256
-
-
-def _read_once(read, rd, t, where, *args):
-    """``read(rd, t, where, *args)``: a part read from its table, or the part read before from an equal table.
-
-    An exercise builds a problem for every draw from the same tables with a
-    few values changed (the crank angle, a load), so most links and loads are
-    read again and again from equal tables; reading the links (units, ranges,
-    mass properties) was a third of a build. Links and loads are frozen, so
-    problems may share them. Only a table that reads without error is kept (an
-    error names the file, which differs from one caller to the next); the key
-    is the table's ``repr``, which tells apart every value TOML can hold (``1``,
-    ``1.0``, ``true``, ``"1"``).
-    """
-    key = (read, where, repr(t), args)
-    part = _READ.get(key)
-    if part is not None:
-        _READ.move_to_end(key)
-        return part
-    part = _READ[key] = read(rd, t, where, *args)
-    if len(_READ) > _READ_SIZE:
-        _READ.popitem(last=False)
-    return part
-
-
-_MECHANISMS: OrderedDict = OrderedDict()
-_MECHANISMS_SIZE = 256
-
-
-def _mechanism_once(links, joints, driver, loads, gravity, assembly, title, source, frame) -> Mechanism:
-    """The mechanism of these parts, or the one made before of the very same parts.
-
-    Links, joints and forces are read once per equal table (:func:`_read_once`), so the draws of an exercise
-    that change only the input's position or speed, or a load's size among a few, are made of the same part
-    objects again and again: they share one mechanism, and with it the plan the solvers keep for it (the
-    decomposition into groups, the compiled steps; :func:`graphkin.kinematics.plan.plan_of`), which each new
-    mechanism would work out afresh (a seventh of a draw's build and solve). A mechanism is frozen, as its parts
-    are. The key holds the parts' ids: the mechanism it leads to keeps them alive, so no other object has them
-    while the entry is kept.
-    """
-    key = (tuple(map(id, links)), tuple(map(id, joints)), driver, tuple(map(id, loads)), gravity,
-           tuple(assembly.items()), title, source, frame)
-    mech = _MECHANISMS.get(key)
-    if mech is not None:
-        _MECHANISMS.move_to_end(key)
-        return mech
-    mech = _MECHANISMS[key] = Mechanism(links, joints, driver, loads, gravity, assembly, title=title, source=source,
-                                        frame=frame)
-    if len(_MECHANISMS) > _MECHANISMS_SIZE:
-        _MECHANISMS.popitem(last=False)
-    return mech
 
 
 def _frame(rd, value, where):
@@ -429,9 +374,9 @@ def _shape(rd, t, points, where, static=False):
 
 
 def _joint_once(rd, t, where):
-    """A joint read from its table, or the one read before from an equal table (:func:`_read_once`); an unusually
-    high friction coefficient is warned of every time."""
-    joint = _read_once(_joint, rd, t, where)
+    """A joint read from its table, or the one read before from an equal table
+    (:func:`~graphkin.problem.shared.read_once`); an unusually high friction coefficient is warned of every time."""
+    joint = read_once(_joint, rd, t, where)
     if isinstance(joint, Prismatic) and joint.mu > 1:
         import warnings
 
@@ -533,13 +478,13 @@ def _motion(rd, d, kind, static=False):
 
 def _load_once(rd, t, where, driver_kind, motion, frame):
     """A force, torque or pressure read from its table, or the one read before from an equal table (see
-    :func:`_read_once`: a draw of an exercise changes one load and reads the others again, and shares the mechanism
-    of the draws before whose loads are the same objects). A load that reads a CSV file beside the problem, a
-    pressure against the stroke (resolved once the mechanism's dead centres are known), a spring or a power is read
-    every time."""
+    :func:`~graphkin.problem.shared.read_once`: a draw of an exercise changes one load and reads the others again,
+    and shares the mechanism of the draws before whose loads are the same objects). A load that reads a CSV file
+    beside the problem, a pressure against the stroke (resolved once the mechanism's dead centres are known), a
+    spring or a power is read every time."""
     if isinstance(t, dict) and "csv" not in t and (t.get("type") in ("force", "torque") or
                                                    t.get("type") == "pressure" and not books.stroke_table(t)):
-        return _read_once(_load, rd, t, where, driver_kind, None, frame)  # none of them uses the motion
+        return read_once(_load, rd, t, where, driver_kind, None, frame)  # none of them uses the motion
     return _load(rd, t, where, driver_kind, motion, frame)
 
 

@@ -255,12 +255,12 @@ def test_a_plan_is_made_once_per_mechanism_whatever_is_asked_of_it_first(monkeyp
     from graphkin import catalog
     from graphkin.graphical import construct_forces
     from graphkin.kinematics import plan as plans
-    from graphkin.problem import file as problem_file
+    from graphkin.problem import shared
 
     made = []
     monkeypatch.setattr(plans, "decompose", lambda mech: made.append(mech) or decompose(mech))
     # A new mechanism: one read from the same tables before would be shared, with the plan made for it then.
-    monkeypatch.setattr(problem_file, "_MECHANISMS", OrderedDict())
+    monkeypatch.setattr(shared, "_MECHANISMS", OrderedDict())
     p = catalog.load("strip_cutter")  # reading the file checks the decomposition: the plan is made there
     result = p.solve()
     construct_forces(result.kinematics, 0)

@@ -9,6 +9,7 @@ import pytest
 
 from graphkin.errors import ProblemFileError
 from graphkin.problem import file as problem_file
+from graphkin.problem import shared as problem_shared
 from graphkin.problem.file import build_problem
 
 TABLES = {
@@ -49,7 +50,7 @@ def test_a_shared_link_solves_as_one_read_afresh():
     tables = copy.deepcopy(TABLES)
     build_problem(copy.deepcopy(TABLES), file="warm")
     shared = build_problem(tables, file="x").solve()
-    problem_file._READ.clear()
+    problem_shared._READ.clear()
     fresh = build_problem(copy.deepcopy(TABLES), file="y").solve()
     assert shared.effort[0] == fresh.effort[0]
 
@@ -98,8 +99,8 @@ def test_equal_parts_share_one_mechanism_and_its_plan():
 def test_a_shared_mechanism_solves_as_one_made_afresh():
     build_problem(copy.deepcopy(TABLES), file="warm").solve()
     shared = build_problem(copy.deepcopy(TABLES), file="x")
-    problem_file._MECHANISMS.clear()
-    problem_file._READ.clear()
+    problem_shared._MECHANISMS.clear()
+    problem_shared._READ.clear()
     fresh = build_problem(copy.deepcopy(TABLES), file="y")
     assert fresh.mechanism is not shared.mechanism
     a, b = shared.solve(), fresh.solve()
@@ -145,7 +146,7 @@ def test_an_equal_pressure_is_read_once_and_a_stroke_table_every_time():
     from pathlib import Path
 
     stroke = tomllib.loads((Path(__file__).parent / "files" / "indicator_stroke.toml").read_text(encoding="utf-8"))
-    problem_file._READ.clear()
+    problem_shared._READ.clear()
     loads = [build_problem(copy.deepcopy(stroke), file=name).mechanism.loads[0] for name in ("d", "e")]
     assert loads[0] is not loads[1] and loads[0] == loads[1]
-    assert not any(key[0] is problem_file._load for key in problem_file._READ)
+    assert not any(key[0] is problem_file._load for key in problem_shared._READ)
