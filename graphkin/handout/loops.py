@@ -32,6 +32,7 @@ from graphkin.geometry import zcross as cross
 from graphkin.geometry import zdot as dot
 from graphkin.handout import maths as M
 from graphkin.kinematics import groups as solver
+from graphkin.kinematics.solver import branches
 from graphkin.kinematics.structure import DriverGroup, Dyad, GearGroup
 from graphkin.model import Prismatic, Revolute
 
@@ -47,9 +48,15 @@ SIGMA = {
 _FIELDS = ("e", "O", "v_O", "a_O", "theta", "omega", "alpha")
 
 
-def _state(kin):
-    """The solver's scratch state for one position with only the frame located, for its own helpers."""
-    return solver.State(kin.mechanism, 1)
+def _state(kin, i: int):
+    """The solver's scratch state for position ``i`` with only the frame located, for its own helpers.
+
+    It carries the solver's branches (:meth:`~graphkin.kinematics.groups.State.turned`), so that a gear's angle is
+    written from the angles it was found from.
+    """
+    st = solver.State(kin.mechanism, 1)
+    st.q, st.branches = kin.q[i:i + 1], branches(kin.mechanism)
+    return st
 
 
 def _locate(st, kin, i: int, links, fields=_FIELDS):
@@ -181,7 +188,7 @@ def groups(doc, kin, i: int, rates: bool = True) -> None:
         acceleration enters a static force analysis).
     """
     mech = kin.mechanism
-    st = _state(kin)
+    st = _state(kin, i)
     for g in kin.groups:
         if isinstance(g, DriverGroup):
             _driver(doc, kin, i, g, rates)
@@ -238,12 +245,12 @@ def _gear(doc, st, g: GearGroup, rates: bool = True):
     doc.text(f"Gear {k} turns about {g.ck}, a point of link {b}; relative to link {b} it turns "
              f"{'the same way as' if g.mesh.internal else 'the other way from'} gear {j}, by the ratio of the pitch "
              f"radii ρ = r{j}/r{k}:")
-    theta_k = _f(st.angle(b)) + sign * rho * (_f(st.angle(j)) - _f(st.angle(b)))
+    theta_k = _f(st.turned(b)) + sign * rho * (_f(st.turned(j)) - _f(st.turned(b)))
     w_k = _f(st.omega[b]) + sign * rho * (_f(st.omega[j]) - _f(st.omega[b]))
     a_k = _f(st.alpha[b]) + sign * rho * (_f(st.alpha[j]) - _f(st.alpha[b]))
     lines = [M.row(M.i("ρ"), M.op("="), M.frac(M.qty(rj * 1e3, "mm"), M.qty(rk * 1e3, "mm")), M.op("="), M.n(rho))]
     for sym, values, result, unit in (
-            (_th, (st.angle(b), st.angle(j)), theta_k, "°"),
+            (_th, (st.turned(b), st.turned(j)), theta_k, "°"),
             (_w, (st.omega[b], st.omega[j]), w_k, "rad/s"),
             (_al, (st.alpha[b], st.alpha[j]), a_k, "rad/s²"))[:3 if rates else 1]:
         vb, vj = (_f(v) for v in values)

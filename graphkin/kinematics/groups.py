@@ -89,6 +89,8 @@ class State:
         self.pivots: dict = {}
         self.finite = {id(self.zero)}
         self.w0 = self.al0 = None
+        # Links placed by a dyad whose angle a gear is turned by: link -> (m, c) of :meth:`turned`.
+        self.branches: dict = {}
 
     def spin(self, w):
         """iω as a number when the input speed is the same at every position, else as an array."""
@@ -131,6 +133,22 @@ class State:
         if link not in self.theta:
             self.theta[link] = np.angle(self.e[link])
         return self.theta[link]
+
+    def turned(self, link):
+        """θ of ``link`` on a branch continuous over the driver's travel: what a gear's angle is taken from.
+
+        A dyad gives a link's angle as np.angle gives it, in (−π, π]; a planet on an arm that swings across ±π
+        would jump there by (1 − ρ) turns. With ``branches[link] = (m, c)``, the link turning m times per turn
+        of the crank and the rest of its angle θ − m q ranging about c by less than half a turn either way,
+        θ = m q + c + wrap(θ − m q − c) is continuous. Links without a branch keep their angle.
+        """
+        theta = self.angle(link)
+        branch = self.branches.get(link)
+        if branch is None:
+            return theta
+        m, c = branch
+        base = m * self.q + c if m else c
+        return base + (np.remainder(theta - base + np.pi, 2 * np.pi) - np.pi)
 
     def fail(self, why, where):
         if where.any():
@@ -390,7 +408,7 @@ def gear(st: State, g: GearGroup):
     rj, rk = g.mesh.radius(g.j), g.mesh.radius(g.k)
     rho = g.sign * rj / rk
     b, j, k = g.b, g.j, g.k
-    st.theta[k] = st.angle(b) + rho * (st.angle(j) - st.angle(b))
+    st.theta[k] = st.turned(b) + rho * (st.turned(j) - st.turned(b))
     X = st.pos(b, g.ck)
     st.place(k, np.exp(1j * st.theta[k]), X, g.pivot.point)
     st.omega[k] = st.omega[b] + rho * (st.omega[j] - st.omega[b])

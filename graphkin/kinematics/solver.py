@@ -225,7 +225,52 @@ def _steps(plan: Plan, mech: Mechanism) -> list:
                 sigma = mech.assembly.get(g.key, 1)
                 steps.append((g.type == "RRR" and _rrr_step(plan, g, sigma, index)) or _dyad_step(g, sigma))
         plan.compiled["kinematics"] = steps
+        plan.compiled["branches"] = {}  # the sample below runs on np.angle's branch
+        plan.compiled["branches"] = _branches(plan, mech)
     return steps
+
+
+def branches(mech: Mechanism) -> dict:
+    """The branch (m, c) of each link placed by a dyad that a gear turns with (:func:`_branches`), by link."""
+    plan = plan_of(mech)
+    _steps(plan, mech)
+    return plan.compiled["branches"]
+
+
+SAMPLE = 721
+"""Positions over a turn of the crank (half a degree apart) from which :func:`_branches` finds each arm's branch."""
+
+
+def _branches(plan: Plan, mech: Mechanism) -> dict:
+    """For each link placed by a dyad that a gear turns with (its carrier, or its mate): its branch (m, c).
+
+    m is the turns it makes per turn of the crank (0 when a slider drives), c the middle of the range of the rest
+    of its angle, θ − m q, over a cycle sampled every half degree (over the slider's reach, four times the
+    mechanism's size either way, for a slider). :meth:`State.turned` takes the link's angle within half a turn of
+    m q + c, so that a planet carried by a rocker that swings across ±180° turns on without a jump.
+    """
+    dyads = {link for g in plan.groups if isinstance(g, Dyad) for link in g.links}
+    links = sorted({x for g in plan.groups if isinstance(g, GearGroup) for x in (g.b, g.j) if x in dyads})
+    if not links:
+        return {}
+    crank = isinstance(plan.groups[0], DriverGroup) and isinstance(plan.groups[0].joint, Revolute)
+    if crank:
+        q = np.linspace(0.0, 2 * np.pi, SAMPLE)
+    else:
+        size = max([abs(complex(*p1) - complex(*p0)) for k in mech.links for p0 in k.points.values()
+                    for p1 in k.points.values()] + [1e-3])
+        q = np.linspace(-4 * size, 4 * size, 8 * SAMPLE)
+    with np.errstate(all="ignore"):
+        st, valid = run(plan, mech, q, np.ones_like(q), np.zeros_like(q))
+    out = {}
+    for link in links:
+        theta = np.unwrap(st.angle(link)[valid])
+        if not theta.size:
+            continue
+        m = round((theta[-1] - theta[0]) / (2 * np.pi)) if crank and valid.all() else 0
+        rest = theta - m * q[valid]
+        out[link] = (m, float(rest.min() + rest.max()) / 2)
+    return out
 
 
 # -- running them ------------------------------------------------------------------------------------------
@@ -244,11 +289,13 @@ def run(plan: Plan, mech: Mechanism, q, q_dot, q_ddot, rates=(None, None), *, an
     ``rates`` are the input speed and acceleration as numbers when they are the same at every position
     (:func:`constant`), else None.
     """
+    steps = _steps(plan, mech)
     st = State(mech, len(q), plan)
     st.q, st.q_dot, st.q_ddot = q, q_dot, q_ddot
+    st.branches = plan.compiled["branches"]
     # Constant input rates (the usual case) make the crank's factors numbers instead of arrays.
     st.w0, st.al0 = rates
-    for step in _steps(plan, mech):
+    for step in steps:
         step(st)
     if angles:
         for link in plan.moving:

@@ -262,9 +262,7 @@ def test_assembly_branch_means_what_the_docs_say(family, data):
         assert np.all(sign == sigma), f"{label}: asked σ = {sigma}, got {sign}"
 
 
-# Not driven_arm: a planet on a rocker jumps where the rocker's angle crosses ±180°, a graphkin bug that
-# test_a_planet_on_a_rocker_turns_without_a_jump pins.
-@pytest.mark.parametrize("family", [f for f in crank_families if f != "driven_arm"])
+@pytest.mark.parametrize("family", crank_families)
 @SETTINGS
 @given(data=st.data())
 def test_branch_is_continuous_over_a_crank_cycle(family, data):
@@ -301,9 +299,6 @@ def test_branch_is_continuous_over_a_crank_cycle(family, data):
         assert np.all(sign == sigma), f"{label}: the branch changes during the cycle"
 
 
-@pytest.mark.xfail(strict=True, reason="GRAPHKIN BUG (issue 35, open): a gear's angle is taken from its carrier's and "
-                   "its mate's as np.angle gives them, wrapped at ±180°; a planet on an arm found by a dyad jumps (here by "
-                   "1.6 turns) where the arm's angle crosses ±180°, its points and G with it")
 def test_a_planet_on_a_rocker_turns_without_a_jump():
     """A crank-rocker whose rocker 4 swings across 180° carries a planet 5 meshing with a sun fixed at the rocker's
     pivot: over a turn of the crank, the planet's angle changes step by step by what its ω gives, as the rocker's does.
