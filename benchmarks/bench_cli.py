@@ -118,7 +118,7 @@ PHASES = {
     "graphkin solve double_slider": r"""
 import sys, time, json
 t0 = time.perf_counter()
-from graphkin.cli._common import single_threaded_blas as _single_threaded_blas
+from graphkin.cli import single_threaded_blas as _single_threaded_blas
 _single_threaded_blas()
 t1 = time.perf_counter()
 from graphkin import catalog, report
@@ -137,7 +137,7 @@ print(json.dumps({"numpy (one BLAS thread)": t1 - t0, "import the engine and rep
     "graphkin cycle strip_cutter --n 3600 --json": r"""
 import sys, time, json
 t0 = time.perf_counter()
-from graphkin.cli._common import single_threaded_blas as _single_threaded_blas
+from graphkin.cli import single_threaded_blas as _single_threaded_blas
 _single_threaded_blas()
 from graphkin import catalog
 from graphkin.cycle import sweep

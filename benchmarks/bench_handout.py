@@ -70,17 +70,17 @@ def roster(exercise: str, students: int, folder: Path) -> dict:
 
 def in_process(exercise: str, students: int, folder: Path) -> list[float]:
     """CPU seconds of each student's sheet and key (PDF) made in this process, after one warm-up student."""
-    from graphkin.handout.batch import _chunk, _worker_start
+    from graphkin.handout.batch import worker_start, write_chunk
 
     def one(student: str) -> float:
         t = time.process_time()
-        (row,) = _chunk((exercise, [student], "bench", ("sheet", "key"), "pdf", str(folder), None))
+        (row,) = write_chunk((exercise, [student], "bench", ("sheet", "key"), "pdf", str(folder), None))
         if row[2]:
             raise SystemExit(f"{student} failed: {row[2]}")
         return time.process_time() - t
 
     folder.mkdir(parents=True, exist_ok=True)
-    _worker_start()  # as a roster's worker: it settles after its first task
+    worker_start()  # as a roster's worker: it settles after its first task
     one("warm-up")  # imports, fonts, the catalog, typst's compiler: what a worker pays once
     return [one(f"s{k:04d}") for k in range(students)]
 

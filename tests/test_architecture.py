@@ -104,20 +104,37 @@ def test_no_import_circles_among_the_scripts(folder):
     assert _cycles(graph) == []
 
 
+def _private(module: str) -> bool:
+    """Whether a dotted module name has a private part (``graphkin.cycle._sampling``)."""
+    return any(part.startswith("_") and not part.startswith("__") for part in module.split("."))
+
+
+SCRIPTS = sorted(p for folder in ("benchmarks", "figures") for p in (ROOT / folder).glob("*.py"))
+
+
 def test_no_module_imports_another_packages_private_name():
-    """``from graphkin.x import _y`` or ``x._y`` across packages: a private name is its own package's."""
+    """``from graphkin.x import _y``, ``x._y``, or a private module ``graphkin.x._y`` across packages: a private
+    name is its own package's. The scripts of benchmarks/ and figures/ are outside every package: they use the
+    public names only."""
     found = []
-    for name, (path, init) in MODULES.items():
+    for name, (path, init) in [*MODULES.items(), *((f"scripts.{p.stem}", (p, False)) for p in SCRIPTS)]:
         tree = ast.parse(path.read_text())
-        here = _package_of(name)
+        here = _package_of(name) if name in MODULES else "scripts"
         aliases = {}
         for node in ast.walk(tree):
+            modules = ([node.module] if isinstance(node, ast.ImportFrom) and node.module and not node.level else
+                       [a.name for a in node.names] if isinstance(node, ast.Import) else [])
+            for module in modules:
+                if module.startswith("graphkin") and _private(module) and (
+                        module not in MODULES or _package_of(module) != here):
+                    found.append(f"{path.relative_to(ROOT)}:{node.lineno}: imports {module}")
             if isinstance(node, ast.ImportFrom) and node.module and node.module.startswith("graphkin"):
                 for a in node.names:
                     full = f"{node.module}.{a.name}"
                     if full in MODULES:
                         aliases[a.asname or a.name] = full
-                    elif a.name.startswith("_") and not a.name.startswith("__") and _package_of(node.module) != here:
+                    elif a.name.startswith("_") and not a.name.startswith("__") and (
+                            node.module not in MODULES or _package_of(node.module) != here):
                         found.append(f"{path.relative_to(ROOT)}:{node.lineno}: from {node.module} import {a.name}")
             elif isinstance(node, ast.Import):
                 aliases.update({a.asname: a.name for a in node.names if a.asname and a.name in MODULES})

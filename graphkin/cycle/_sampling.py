@@ -12,7 +12,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from graphkin.cycle._turn import TURN, closing_step
+from graphkin.cycle.turn import TURN, closing_step
 from graphkin.errors import GraphkinError
 from graphkin.ranges import MAX_POSITIONS
 

@@ -29,7 +29,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from graphkin.cycle._sampling import peak_of
-from graphkin.cycle._turn import TURN, closing_step, steps
+from graphkin.cycle.turn import TURN, closing_step, steps
 from graphkin.errors import GraphkinError
 from graphkin.ranges import complaint
 

@@ -28,9 +28,9 @@ from graphkin.cycle._sampling import (
     switching_angles,
     switching_samples,
 )
-from graphkin.cycle._turn import TURN, closing_step, weights
 from graphkin.cycle.flywheel import size_flywheel
 from graphkin.cycle.index import JointForceIndex, index_at
+from graphkin.cycle.turn import TURN, closing_step, weights
 from graphkin.errors import GraphkinError
 from graphkin.geometry import as_xy, cross
 from graphkin.model import GearMesh, Prismatic, Revolute

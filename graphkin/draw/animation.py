@@ -262,7 +262,7 @@ class Film:
     def __init__(self, constructions, *, polygons: bool = False, dpi: float = 100, **style):
         from matplotlib.figure import Figure
 
-        from graphkin.draw._stamps import StampCanvas
+        from graphkin.draw.stamps import StampCanvas
 
         self.s = _style.resolve(**style)
         good = [c for c in constructions if c.valid and c.points]

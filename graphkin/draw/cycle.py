@@ -29,7 +29,7 @@ from matplotlib.artist import Artist
 from matplotlib.figure import Figure
 from matplotlib.ticker import Formatter, MaxNLocator
 
-from graphkin.cycle._turn import TURN
+from graphkin.cycle.turn import TURN
 from graphkin.draw import style as _style
 from graphkin.draw.axes import Drawn, PanelAxes, line, markers, new_axes
 from graphkin.draw.text import halo, sub, subscript

@@ -64,10 +64,11 @@ def _one(exercise: str, student: str, secret: str, versions: tuple, fmt: str, fo
 
 
 _WORKER: list = []
-"""Set in a roster's worker process (:func:`_worker_start`): ``[False]``, then ``[True]`` once it has settled."""
+"""Set in a roster's worker process (:func:`worker_start`): ``[False]``, then ``[True]`` once it has settled."""
 
 
-def _worker_start():
+def worker_start():
+    """A roster's worker process starts: it settles (:func:`_settle`) after its first task."""
     _WORKER.append(False)
 
 
@@ -86,7 +87,11 @@ def _settle():
     _WORKER[0] = True
 
 
-def _chunk(args) -> list[tuple]:
+def write_chunk(args) -> list[tuple]:
+    """One task of a roster: each of its students' handouts written, as rows ``(student, paths, error)``.
+
+    ``args`` is ``(exercise, students, secret, versions, fmt, folder, Cs)``, as :func:`make_roster` cuts them.
+    """
     exercise, students, secret, versions, fmt, folder, Cs = args
     rows = [_one(exercise, st, secret, versions, fmt, folder, Cs) for st in students]
     if _WORKER == [False]:
@@ -127,7 +132,7 @@ def make_roster(exercise: str, students, folder, *, secret: str = "", versions=(
     results: dict[int, list] = {}
     if cores == 1 or len(students) < PARALLEL_FROM:
         for k, task in enumerate(tasks):
-            results[k] = _chunk(task)
+            results[k] = write_chunk(task)
             if progress:
                 progress(len(task[1]))
     else:
@@ -135,8 +140,8 @@ def make_roster(exercise: str, students, folder, *, secret: str = "", versions=(
         # compiler threads once a PDF has been made here, a notebook's kernel) can wait on it for ever.
         spawn = multiprocessing.get_context("spawn")
         with ProcessPoolExecutor(max_workers=min(cores, len(tasks)), mp_context=spawn,
-                                 initializer=_worker_start) as pool:
-            futures = {pool.submit(_chunk, task): k for k, task in enumerate(tasks)}
+                                 initializer=worker_start) as pool:
+            futures = {pool.submit(write_chunk, task): k for k, task in enumerate(tasks)}
             for future in as_completed(futures):
                 k = futures[future]
                 results[k] = future.result()

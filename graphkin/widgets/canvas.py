@@ -116,7 +116,7 @@ class Canvas:
     def __init__(self, dpi: int | None = None):
         from matplotlib.figure import Figure
 
-        from graphkin.draw._stamps import StampCanvas
+        from graphkin.draw.stamps import StampCanvas
 
         self.dpi = dpi
         self.figure = Figure(dpi=dpi or CSS_DPI)

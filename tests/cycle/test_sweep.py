@@ -13,8 +13,8 @@ import pytest
 
 from graphkin import catalog
 from graphkin.cycle import joint_force_index, size_flywheel, sweep
-from graphkin.cycle._turn import weights
 from graphkin.cycle.sweep import SWITCH
+from graphkin.cycle.turn import weights
 from graphkin.errors import GraphkinError
 from graphkin.model import Driver, Link, Mechanism, PointForce, Revolute
 from graphkin.problem import Problem

@@ -193,7 +193,7 @@ def test_stamped_text_looks_like_drawn_text():
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.figure import Figure
 
-    from graphkin.draw._stamps import StampCanvas
+    from graphkin.draw.stamps import StampCanvas
 
     def picture(canvas_class, draws):
         fig = Figure(figsize=(3, 2), dpi=72)
