@@ -14,7 +14,6 @@ import tomllib
 from dataclasses import dataclass
 from decimal import Decimal, InvalidOperation
 from pathlib import Path
-from typing import Any
 
 from graphkin import catalog
 from graphkin.errors import GraphkinError, ProblemFileError
@@ -23,6 +22,7 @@ from graphkin.files import read_text
 from graphkin.model import Prismatic
 from graphkin.model.names import parse_force_name
 from graphkin.problem import FieldReader, build_problem
+from graphkin.problem.fields import missing, set_field
 from graphkin.units import to_si
 
 _TOP = {"title", "source", "problem", "intro", "route", "vary", "questions", "partial", "positions", "flywheel",
@@ -546,41 +546,16 @@ def parse_exercise(text: str, *, file: str = "<exercise>", id: str = "exercise",
                     decimal_comma, feedback)
 
 
-_TOKEN = re.compile(r"([A-Za-z_]\w*)|\[(\d+)\]")
-
-
-def field_path(field: str) -> list[str | int]:
-    """The keys of a dotted field path: ``"links[1].mass"`` → ``["links", 1, "mass"]``."""
-    keys: list[str | int] = []
-    for part in field.split("."):
-        pos = 0
-        for m in _TOKEN.finditer(part):
-            if m.start() != pos:
-                raise KeyError(field)
-            keys.append(m[1] if m[1] is not None else int(m[2]))
-            pos = m.end()
-        if pos != len(part) or not part:
-            raise KeyError(field)
-    return keys
-
-
 def _check_field(rd: _Reader, base: dict, symbol: str, field: str) -> None:
     """A varied field must exist in the base problem."""
     where = f"vary.{symbol}.field"
     try:
-        keys = field_path(field)
+        absent = missing(base, field)
     except KeyError:
         raise rd.fail(where, f"could not read the path {field!r}; write it as in the problem file, "
                              "e.g. \"driver.theta\" or \"links[1].mass\"") from None
-    node: Any = base
-    for i, key in enumerate(keys):
-        last = i == len(keys) - 1
-        ok = (isinstance(key, int) and isinstance(node, list) and key < len(node)) or \
-             (isinstance(key, str) and isinstance(node, dict) and (key in node or last))
-        if not ok:
-            raise rd.fail(where, f"{field!r}: the problem has no {'.'.join(map(str, keys[:i + 1]))!r}")
-        if not last:
-            node = node[key]
+    if absent is not None:
+        raise rd.fail(where, f"{field!r}: the problem has no {absent!r}")
 
 
 def _check_values(rd: _Reader, base: dict, problem: str, vary: list[Vary]) -> None:
@@ -603,20 +578,3 @@ def _check_values(rd: _Reader, base: dict, problem: str, vary: list[Vary]) -> No
                 where = f" at {exc.field}" if exc.field else ""
                 raise rd.fail(f"vary.{v.symbol}", f"the problem does not accept {value!r}{where}: {exc.message}") \
                     from None
-
-
-def set_field(data: dict, field: str, value: str, *, copy: bool = False) -> None:
-    """Put ``value`` at the dotted ``field`` of problem data, in place.
-
-    With ``copy``, every table and list on the way is copied first, so the
-    data ``data`` shares with another dict (a shallow copy of an exercise's
-    base problem) are left untouched; copying only that path is ~10× cheaper
-    than a deep copy of the whole file.
-    """
-    keys = field_path(field)
-    node: Any = data
-    for key in keys[:-1]:
-        if copy:
-            node[key] = type(node[key])(node[key])
-        node = node[key]
-    node[keys[-1]] = value

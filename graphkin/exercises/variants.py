@@ -25,7 +25,7 @@ import numpy as np
 
 from graphkin.cycle import sweep
 from graphkin.errors import GraphkinError
-from graphkin.exercises.exercise import CYCLE_KINDS, MOTION_KINDS, Exercise, Question, set_field
+from graphkin.exercises.exercise import CYCLE_KINDS, MOTION_KINDS, Exercise, Question
 from graphkin.exercises.grading import grade_variant
 from graphkin.exercises.quantities import _span, expected, message_words, question_data, undefined, value_of, within
 from graphkin.exercises.symbols import fill_symbols
@@ -34,6 +34,7 @@ from graphkin.graphical.guard import check_forces, is_disagreement
 from graphkin.graphical.polygons import SLIPS as POLYGON_SLIPS
 from graphkin.notation import input_text
 from graphkin.problem import build_problem
+from graphkin.problem.fields import set_field
 from graphkin.units import to_si
 
 MAX_ATTEMPTS = 64

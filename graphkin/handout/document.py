@@ -14,13 +14,14 @@ import numpy as np
 
 from graphkin import catalog, exercises
 from graphkin.errors import GraphkinError
-from graphkin.exercises.exercise import CYCLE_KINDS, set_field
+from graphkin.exercises.exercise import CYCLE_KINDS
 from graphkin.exercises.variants import Variant
 from graphkin.graphical import construct_forces, construct_kinematics
 from graphkin.graphical.guard import check_forces
 from graphkin.handout import maths as M
 from graphkin.handout.figures import Picture
 from graphkin.notation import input_text, typeset
+from graphkin.problem.fields import set_field
 from graphkin.report import solution
 from graphkin.units import to_si
 from graphkin.units.systems import SI, UnitSystem

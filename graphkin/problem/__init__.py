@@ -4,6 +4,7 @@
 :mod:`.problem`             :class:`Problem`: a mechanism with its input motion, to solve
 :mod:`.file`                :func:`load_problem`, :func:`parse_problem`, :func:`build_problem`
 :mod:`.reader`              :class:`FieldReader`: fields to SI, errors naming file and field
+:mod:`.fields`              a field by its path (``links[1].mass``): read, found, set
 :mod:`.tables`              tables against the input (a torque curve), inline or in a CSV
 :mod:`.books`               pressures, powers, dead centres, a slider placed by an angle, ``[forward]``
 :mod:`.placement`           where a link stands at an angle as the slider moves (``driver.place``)
