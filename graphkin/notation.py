@@ -263,6 +263,22 @@ def position_text(q: float, crank: bool, symbol: str = "") -> str:
     return f"{name} = {text}{unit}"
 
 
+_UNIT_SIGNS = str.maketrans({"*": "·"})
+
+
+def unit_text(unit: str) -> str:
+    """A unit as a book prints it, from its pint spelling: a raised dot between units, powers raised.
+
+    The one home of a unit as printed: sheets, keys, handouts and the platforms' pages all show units so.
+
+    Examples
+    --------
+    >>> unit_text("N*m"), unit_text("m/s^2"), unit_text("kg*m^2"), unit_text("mm^3")
+    ('N·m', 'm/s²', 'kg·m²', 'mm³')
+    """
+    return unit.translate(_UNIT_SIGNS).replace("^2", "²").replace("^3", "³")
+
+
 _SEED = re.compile(r"\s*\((?:seeds?|file)\s[^()]*\)")
 
 

@@ -20,7 +20,8 @@ from dataclasses import dataclass
 from graphkin.exercises.answers import Reading, Unreadable, read_answer
 from graphkin.exercises.exercise import Question, dimension_of
 from graphkin.exercises.notebooks import NotData, answer_variables
-from graphkin.exercises.quantities import Expected, _distance, _form, _unit_text, unit_factor
+from graphkin.exercises.quantities import Expected, _distance, _form, unit_factor
+from graphkin.notation import unit_text
 
 _TORQUE_KINDS = ("driver_torque", "inertia_torque", "peak_torque", "lowest_torque", "average_torque")
 
@@ -127,7 +128,7 @@ def answer_example(question) -> str:
     """
     q = getattr(question, "question", question)
     form = _form(q)
-    u = _unit_text(q.unit)
+    u = unit_text(q.unit)
     u = f" {u}" if u else ""
     if form == "vector":
         return f"12.3{u} ∠ −45°"

@@ -59,7 +59,8 @@ from graphkin.exercises.feedback import (
     which_part,
 )
 from graphkin.exercises.notebooks import NotData
-from graphkin.exercises.quantities import Expected, _distance, _unit_text
+from graphkin.exercises.quantities import Expected, _distance
+from graphkin.notation import unit_text
 
 #: Verdicts a question can get ("refused": the whole submission is not graded as this student's, e.g. it
 #: carries another student's id; every question then says why).
@@ -387,10 +388,10 @@ def _grade(variant, q, exp: Expected, answer, reveal: bool, classmates, copied: 
     dim = dimension_of(q.kind, q.part)
     text = echo(r.text)
     if r.value is None and r.vector is None and not r.bare:
-        right = _unit_text(q.unit) or "no unit"
+        right = unit_text(q.unit) or "no unit"
         words = variant.words(q)
         given = DIMENSION_WORDS.get(r.dimension, r.dimension or "something else")
-        msg = MESSAGES["dimension"].format(unit=echo(_unit_text(r.unit), 40), given=given, name=words["name"],
+        msg = MESSAGES["dimension"].format(unit=echo(unit_text(r.unit), 40), given=given, name=words["name"],
                                            wanted=DIMENSION_WORDS.get(dim, dim), right=right,
                                            example=answer_example(exp))
         share = variant.exercise.partial["dimension"]

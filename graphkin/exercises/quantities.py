@@ -27,7 +27,7 @@ from graphkin.graphical.paper import (
 from graphkin.kinematics import DriverGroup
 from graphkin.kinematics.plan import plan_of
 from graphkin.model.names import parse_force_name
-from graphkin.notation import num, polar_text
+from graphkin.notation import num, polar_text, unit_text
 from graphkin.units import to_si
 
 # SI unit of each dimension, as printed in keys.
@@ -118,18 +118,14 @@ def _num(x: float, digits: int = 4) -> str:
     return num(x, digits, power=True)
 
 
-def _unit_text(unit: str) -> str:
-    return unit.replace("*", "·").replace("^2", "²").replace("^3", "³")
-
-
 def format_value(form: str, value, unit: str, dimension: str, *, torque: bool = False) -> str:
     """A value as the book prints it: ``27.06 N ∠ −73.78°``, ``108.9 N·m CCW``, ``(120.5, −33.3) mm``."""
     f = unit_factor(unit, dimension)
-    u = (" " + _unit_text(unit)) if unit else ""
+    u = (" " + unit_text(unit)) if unit else ""
     if form == "direction":
         return f"{math.degrees(value):.2f}°".replace("-", "−")
     if form == "vector":
-        return polar_text((value.real / f, value.imag / f), unit and _unit_text(unit))
+        return polar_text((value.real / f, value.imag / f), unit and unit_text(unit))
     if form == "point":
         return f"({_num(value.real / f)}, {_num(value.imag / f)}){u}"
     if torque and value:

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from graphkin.notation import citation
+from graphkin.notation import citation, unit_text
 
 
 def format_sheet(sheet: dict) -> str:
@@ -16,7 +16,7 @@ def format_sheet(sheet: dict) -> str:
     lines += [f"  {g['shown']}" + (f"   ({g['label']})" if g["label"] else "") for g in sheet["data"]]
     lines += ["", "Questions"]
     for q in sheet["questions"]:
-        unit = q["unit"].replace("*", "·").replace("^2", "²") or "no unit"
+        unit = unit_text(q["unit"]) or "no unit"
         lines.append(f"  {q['id']}: {q['ask']}   [{unit}, within {q['within']}, {q['points']:g} point"
                      f"{'s' if q['points'] != 1 else ''}]")
         if "answer" in q:

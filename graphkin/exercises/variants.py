@@ -32,7 +32,7 @@ from graphkin.exercises.symbols import fill_symbols
 from graphkin.graphical import construct_forces, construct_kinematics
 from graphkin.graphical.guard import check_forces, is_disagreement
 from graphkin.graphical.polygons import SLIPS as POLYGON_SLIPS
-from graphkin.notation import input_text
+from graphkin.notation import input_text, unit_text
 from graphkin.problem import build_problem
 from graphkin.problem.fields import set_field
 from graphkin.units import to_si
@@ -76,9 +76,6 @@ def draw_index(secret: str, exercise: str, student: str, attempt: int, symbol: s
     return int.from_bytes(digest[:8], "big") % count
 
 
-_PRETTY = (("deg", "°"), ("^2", "²"), ("^3", "³"), ("*", "·"))
-
-
 @lru_cache(maxsize=4096)
 def pretty(value: str) -> str:
     """A value string as a book prints it: ``"135 deg"`` → ``"135°"``, ``"8.3 rad/s^2"`` → ``"8.3 rad/s²"``.
@@ -87,9 +84,7 @@ def pretty(value: str) -> str:
     m = re.match(r"^(\S+)\s+deg$", value)
     if m:
         return f"{m[1]}°"
-    for a, b in _PRETTY[1:]:
-        value = value.replace(a, b)
-    return value
+    return unit_text(value)
 
 
 @dataclass(frozen=True)

@@ -17,7 +17,7 @@ from graphkin.handout.document import Doc, Subject
 from graphkin.handout.figures import Picture
 from graphkin.handout.loops import groups
 from graphkin.model import Revolute
-from graphkin.notation import num
+from graphkin.notation import num, unit_text
 
 
 # -- sections ----------------------------------------------------------------------------------
@@ -276,7 +276,7 @@ def questions(doc: Doc, s: Subject, answers: bool):
     doc.heading(1, "Questions" if not answers else "Questions and answers")
     rows = []
     for data in sheet["questions"]:
-        unit = data["unit"].replace("*", "·").replace("^2", "²").replace("^3", "³") or "no unit"
+        unit = unit_text(data["unit"]) or "no unit"
         row = [data["id"], M.prose(data["ask"]), f"{unit}, within {data['within']}, {data['points']:g} pt"]
         row += [data["answer"]["text"]] if answers else [""]
         rows.append(row)

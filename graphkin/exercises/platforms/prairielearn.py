@@ -35,6 +35,7 @@ import uuid
 
 from graphkin.errors import GraphkinError
 from graphkin.exercises.platforms import requirements, runtime, vendor_files
+from graphkin.notation import unit_text
 
 TOPIC = "Kinetostatics"
 """The PrairieLearn topic of every exported question (listed in the course's ``infoCourse.json``)."""
@@ -85,7 +86,7 @@ def answer_names(question_ids) -> dict[str, str]:
 
 def marks(q: dict) -> str:
     """The bracket printed after a question: unit, slack and points (as ``graphkin exercise make`` prints it)."""
-    unit = _pretty_unit(q["unit"]) or "no unit"
+    unit = unit_text(q["unit"]) or "no unit"
     return f"{unit}, within {q['within']}, {q['points']:g} point{'s' if q['points'] != 1 else ''}"
 
 
@@ -198,10 +199,6 @@ def _number(x: float):
     return int(x) if float(x).is_integer() else float(x)
 
 
-def _pretty_unit(unit: str) -> str:
-    return unit.replace("*", "·").replace("^2", "²").replace("^3", "³")
-
-
 # --- On the teacher's machine: the export -----------------------------------------------------------------------
 
 
@@ -254,7 +251,7 @@ _PLACEHOLDERS = {
 
 
 def _placeholder(q: dict) -> str:
-    unit = _pretty_unit(q["unit"])
+    unit = unit_text(q["unit"])
     if not unit and q["form"] in ("scalar", "magnitude"):
         return "a number, e.g. 1.23"
     text = _PLACEHOLDERS[q["form"]].format(u=unit)
