@@ -48,6 +48,9 @@ def run(args) -> int:
     if args.polygons and not (args.figure or args.steps or args.json):
         raise GraphkinError("--motion-polygons draws beside the figure or the steps, or details the JSON: give "
                             "-o FILE, --steps DIR or --json too")
+    if args.every and not (args.figure or args.steps):
+        raise GraphkinError("--every-position chooses the positions -o or --steps draws: give -o FILE or --steps DIR "
+                            "too")
     units = unit_system(args.units)
     problem = catalog.load(args.problem)
     result = problem.solve(positions(problem, args.at) if args.at is not None else None)
