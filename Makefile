@@ -20,6 +20,7 @@ $(VENV)/.core: pyproject.toml | $(BIN)/python
 
 demo: $(VENV)/.core
 	$(BIN)/graphkin solve double_slider -o build/double_slider.png
+	@echo "graphkin is installed in $(VENV), not on your PATH: run $(BIN)/graphkin list, or 'source $(BIN)/activate' once and then graphkin list"
 
 # Every test, the lessons and the docstring examples, on every core (a module's tests stay on one worker, so an
 # expensive module fixture, such as a grading platform's run, is made once).

@@ -1,7 +1,5 @@
 """``python -m graphkin``: the ``graphkin`` command."""
 
-import sys
+from graphkin.cli import command
 
-from graphkin.cli import main
-
-sys.exit(main())
+command()

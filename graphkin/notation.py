@@ -279,24 +279,21 @@ def unit_text(unit: str) -> str:
     return unit.translate(_UNIT_SIGNS).replace("^2", "²").replace("^3", "³")
 
 
-_SEED = re.compile(r"\s*\((?:seeds?|file)\s[^()]*\)")
-
-
 def citation(source: str) -> str:
     """A source as one line for students: the book and the example, without the catalog's provenance.
 
-    The catalog's ``source`` says where a problem comes from down to the file it was read in (``(seed
-    000_….txt)``) and how (``…; data and answers as in the FOSSEE companion``): that is for the teacher. A
-    student's sheet cites the book: the text up to the first ``;`` or full stop, without a seed.
+    The catalog's ``source`` cites the book and then says how graphkin read it (``…; data and answers as in
+    the FOSSEE companion``): that is for the teacher. A student's sheet cites the book: the text up to the
+    first ``;`` or full stop.
 
     Examples
     --------
-    >>> citation("Söylemez, Mechanisms, §6.4, double-slider example (seed 000_6a5b8db2377b79fc.txt)")
-    'Söylemez, Mechanisms, §6.4, double-slider example'
     >>> citation("Khurmi & Gupta, Theory of Machines, Example 15.10 (p. 536); data as in the FOSSEE companion")
     'Khurmi & Gupta, Theory of Machines, Example 15.10 (p. 536)'
+    >>> citation("Söylemez, Mechanisms, §6.4, double-slider example. The numbers are the book's.")
+    'Söylemez, Mechanisms, §6.4, double-slider example'
     """
-    text = _SEED.sub("", " ".join(str(source).split()))
+    text = " ".join(str(source).split())
     for stop in ("; ", ". "):
         # A full stop ends the sentence only where a capital follows (not "p. 536", "Ex. 6.1").
         at = text.find(stop) if stop == "; " else next((m.start() for m in re.finditer(r"\.\s+(?=[A-Z])", text)

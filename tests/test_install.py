@@ -139,3 +139,45 @@ def test_the_readme_links_work_on_the_package_index():
     assert targets
     relative = [t for t in targets if not re.match(r"^(https?://|#)", t)]
     assert relative == []
+
+
+def _extras() -> dict[str, set[str]]:
+    """Each extra and every distribution it brings, through the extras it names (``graphkin[a,b]``)."""
+    declared = tomllib.loads((ROOT / "pyproject.toml").read_text())["project"]["optional-dependencies"]
+
+    def brings(extra, seen=()):
+        out = set()
+        for req in declared[extra]:
+            name, _, rest = re.match(r"([A-Za-z0-9_.-]+)(\[([^\]]*)\])?", req).groups()
+            if name == "graphkin":
+                for inner in rest.split(","):
+                    assert inner not in seen, f"extra {extra} names itself through {inner}"
+                    out |= brings(inner.strip(), (*seen, extra))
+            else:
+                out.add(name.lower())
+        return out
+
+    return {extra: brings(extra) for extra in declared}
+
+
+def test_the_extras_bring_what_their_users_expect():
+    """Issue 40: [notebook] pulled all of JupyterLab (115 packages) where the widgets need about 51."""
+    extras = _extras()
+    assert {"ipywidgets", "anywidget", "ipykernel"} <= extras["notebook"] and "jupyterlab" not in extras["notebook"]
+    assert extras["notebook"] | {"jupyterlab"} <= extras["lab"]
+    assert "voila" in extras["explore"] and "jupyterlab" not in extras["explore"]
+    assert "nbformat" in extras["platforms"]
+    assert set().union(*(extras[e] for e in ("notebook", "lab", "explore", "platforms"))) <= extras["all"]
+    # make e2e drives the lessons cell by cell in JupyterLab and as pages in Voilà.
+    assert {"jupyterlab", "voila", "playwright"} <= extras["e2e"]
+
+
+def test_every_extra_the_docs_and_messages_name_exists():
+    from graphkin.optional import EXTRAS
+
+    named = set(EXTRAS.values())
+    for page in [ROOT / "README.md", *sorted((ROOT / "docs").glob("*.md"))]:
+        for group in re.findall(r"(?:graphkin|\.)\[([\w,-]+)\]", page.read_text(encoding="utf-8")):
+            named |= set(group.split(","))
+    assert named >= {"notebook", "lab", "explore", "platforms", "all", "e2e"}
+    assert named - set(_extras()) == set()

@@ -13,7 +13,10 @@
 
 Each command module has ``add_parser(subparsers)`` and ``run(args) -> exit
 code``. Bad input ends with a one-line message on stderr and exit code 2,
-never a traceback.
+never a traceback. :func:`main` runs a command and returns its exit code (so
+Python can call it); :func:`command` is the ``graphkin`` program itself, which
+also turns a Ctrl-C after the command, while the process ends, into the same
+one line and exit code 130.
 
 The command line is the leaf of graphkin's layers: nothing in graphkin
 imports it. A command imports only what it runs: numpy, the engine,
@@ -25,6 +28,8 @@ that ``graphkin solve`` starts in about a tenth of a second
 from __future__ import annotations
 
 import argparse
+import os
+import signal
 import sys
 
 from graphkin import __version__
@@ -76,3 +81,49 @@ def main(argv=None) -> int:
         where = f"{exc.filename}: " if exc.filename else ""
         print(f"graphkin: error: {where}{exc.strerror or exc}", file=sys.stderr)
         return 2
+
+
+def command():
+    """The ``graphkin`` program (``python -m graphkin``, the console script): :func:`main`, then exit.
+
+    Ctrl-C is one line on stderr and exit code 130 wherever it lands. Inside a
+    command :func:`main` says so; after it, while the process ends (threading
+    joins its threads, atexit runs, modules are torn down), Python's own handler
+    would print a KeyboardInterrupt traceback and the exit code would stay 0, so
+    from the moment the command is done a Ctrl-C ends the process at once.
+    Every file is already whole by then (written to a temporary file and moved).
+    """
+    ours = signal.getsignal(signal.SIGINT) is signal.default_int_handler  # a background job's SIG_IGN is kept
+    try:
+        code = main()
+    except KeyboardInterrupt:  # on the way out of main, past its own handlers
+        code = None
+    if ours:
+        try:
+            signal.signal(signal.SIGINT, _interrupted_late)
+        except KeyboardInterrupt:  # one still pending is raised as the handler changes
+            code = None
+    if code is None:
+        _interrupted_late()
+    _flush()
+    sys.exit(code)
+
+
+def _interrupted_late(signum=None, frame=None):
+    """Say "interrupted" and end the process now: what was interrupted is the interpreter's own shutdown."""
+    _flush()
+    try:
+        # A plain write to the descriptor: the signal may land while Python's stderr object is mid-write.
+        os.write(2, b"graphkin: interrupted\n")
+    except OSError:
+        pass
+    os._exit(130)
+
+
+def _flush():
+    """Flush what the command printed (os._exit would drop it); a closed or busy stream is not our error."""
+    for stream in (sys.stdout, sys.stderr):
+        try:
+            stream.flush()
+        except (OSError, ValueError, RuntimeError, AttributeError):
+            pass

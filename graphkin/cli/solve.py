@@ -20,9 +20,15 @@ def add_parser(sub) -> None:
                    f"units file (TOML, e.g. torque = \"lbf*in\"); with --json, the JSON states each field's unit "
                    f"({DOCS}/problem-files.html#units-of-a-report)")
     s.add_argument("-o", "--output", "--figure", dest="figure", metavar="FILE",
-                   help="write the side-by-side figure (.png, .svg or .pdf); with several positions, one file each, "
-                   "numbered (--figure is the older name)")
-    s.add_argument("--steps", metavar="DIR", help="write the construction step by step, one PNG frame per step")
+                   help="write the side-by-side figure (.png, .svg or .pdf); over the problem's own positions, one "
+                   "figure, at the position where the driving torque or force is largest in size (named as it is "
+                   "written); with --at or --every-position, one file per position, numbered (--figure is the older "
+                   "name)")
+    s.add_argument("--steps", metavar="DIR", help="write the construction step by step, one PNG frame per step, at the "
+                   "positions -o draws")
+    s.add_argument("--every-position", dest="every", action="store_true",
+                   help="with -o or --steps over the problem's own positions (a whole cycle: 180 figures for the "
+                   "strip cutter), draw every position, not only the one of largest driving effort")
     s.add_argument("--motion-polygons", dest="polygons", action="store_true",
                    help="with -o/--figure, also write the velocity and acceleration polygons to scale "
                         "(1 mm = X m/s, 1 mm = Y m/s²), as FILE_polygons; with --steps, their steps too; with "
@@ -42,6 +48,9 @@ def run(args) -> int:
     if args.polygons and not (args.figure or args.steps or args.json):
         raise GraphkinError("--motion-polygons draws beside the figure or the steps, or details the JSON: give "
                             "-o FILE, --steps DIR or --json too")
+    if args.every and not (args.figure or args.steps):
+        raise GraphkinError("--every-position chooses the positions -o or --steps draws: give -o FILE or --steps DIR "
+                            "too")
     units = unit_system(args.units)
     problem = catalog.load(args.problem)
     result = problem.solve(positions(problem, args.at) if args.at is not None else None)
@@ -58,7 +67,8 @@ def run(args) -> int:
     else:
         print(report.format_solution(problem, result, graphical, units))
     if args.figure or args.steps:
-        _figures(problem, result, graphical, args.figure, args.steps, polygons=args.polygons)
+        every = args.every or args.at is not None
+        _figures(problem, result, graphical, args.figure, args.steps, polygons=args.polygons, every=every)
     bad = np.flatnonzero(~result.valid)
     if len(bad):
         # One line, however many positions fail: the first names the position and the reason.
@@ -69,8 +79,13 @@ def run(args) -> int:
     return 2 if len(bad) else 0
 
 
-def _figures(problem, result, graphical, figure, steps, *, polygons=False):
+def _figures(problem, result, graphical, figure, steps, *, polygons=False, every=True):
     """Write the side-by-side figure(s) and the step frames; say which files went where.
+
+    With ``every`` false and several positions (the problem's own: often a
+    whole cycle, 180 figures and minutes of drawing), only the position of
+    largest driving effort is drawn, to the file asked for, and one line says
+    which it is and how to have them all.
 
     A batch that takes more than a second shows a tqdm progress bar on stderr,
     one tick per position drawn. Each file is written whole or not at all
@@ -84,8 +99,10 @@ def _figures(problem, result, graphical, figure, steps, *, polygons=False):
     from graphkin import draw
     from graphkin.graphical import construct_kinematics
 
-    many = result.n > 1
     drawn = [(i, c) for i, c in enumerate(graphical) if c is not None and c.valid]
+    many = result.n > 1 and every
+    if result.n > 1 and not every and drawn:
+        drawn = [_largest_effort(problem, result, drawn)]
     written: list[Path] = []
     try:
         for i, c in tqdm(drawn, desc="graphkin: drawing", unit="position", delay=_common.PROGRESS_DELAY, file=sys.stderr,
@@ -126,3 +143,16 @@ def _figures(problem, result, graphical, figure, steps, *, polygons=False):
         raise GraphkinError(f"{where}: cannot be written ({exc.strerror or exc}); {batch_note(written)}") from None
     except GraphkinError as exc:
         raise GraphkinError(f"{exc}; {batch_note(written)}") from None
+
+
+def _largest_effort(problem, result, drawn):
+    """The ``(index, construction)`` of ``drawn`` where the driving effort is largest in size; say so on stderr.
+
+    The position a teacher puts in front of a class from a whole cycle: where the
+    motor (or the slider's actuator) works hardest, which in a machine that cuts,
+    presses or lifts is inside the working stroke.
+    """
+    i, c = max(drawn, key=lambda pair: abs(result.effort[pair[0]]))
+    print(f"graphkin: drawing position {i + 1} of {result.n} ({position_text(problem, result.kinematics.q[i])}), "
+          f"where |{result.driver_name}| is largest; --every-position draws all {result.n}", file=sys.stderr)
+    return i, c

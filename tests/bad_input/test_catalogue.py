@@ -469,6 +469,7 @@ CLI_CASES = [
     P(["solve", "double_slider", "--steps", "{file}/steps"], ["--steps", "is a file"], id="solve-steps-under-file"),
     P(["solve", "double_slider", "--steps", "{file}"], ["--steps", "is a file"], id="solve-steps-onto-file"),
     P(["solve", "double_slider", "--json", "-o", "x.gif"], ["-o", "x.gif"], id="solve-json-figure-gif"),
+    P(["solve", "strip_cutter", "--every-position"], ["--every-position", "-o FILE"], id="solve-every-position-alone"),
     P(["solve", "double_slider", "--at", "500 mm"], ["double_slider", "s = 500 mm", "dead point"],
       id="solve-dead-point"),
     P(["solve", "double_slider", "--at", "600 mm"], ["double_slider", "s = 600 mm", "cannot be assembled"],

@@ -103,6 +103,36 @@ def test_text_output_and_at(capsys):
     assert "T12 =" in out and "F23" in out and "∠" in out and "h =" in out
 
 
+def _three_positions(tmp_path) -> Path:
+    """The strip cutter at its own three positions (0°, 120°, 240°): a cycle's batch, quick to draw."""
+    text = catalog.path("strip_cutter").read_text(encoding="utf-8")
+    assert 'step = "2 deg"' in text
+    path = tmp_path / "cutter3.toml"
+    path.write_text(text.replace('step = "2 deg"', 'step = "120 deg"'), encoding="utf-8")
+    return path
+
+
+def test_a_figure_over_the_problems_own_positions_is_one_at_the_largest_effort(tmp_path, capsys):
+    # Issue 40: `solve strip_cutter -o sc.png` drew every one of the 180 positions (153 MB, 11 minutes).
+    problem = _three_positions(tmp_path)
+    effort = np.abs(catalog.load(str(problem)).solve().effort)
+    i = int(np.argmax(effort))
+    assert np.count_nonzero(effort == effort[i]) == 1  # one position is the largest, or the test means nothing
+    assert main(["solve", str(problem), "-o", str(tmp_path / "f.png")]) == 0
+    err = capsys.readouterr().err.splitlines()
+    assert sorted(p.name for p in tmp_path.glob("*.png")) == ["f.png"]
+    assert err[0] == (f"graphkin: drawing position {i + 1} of 3 (θ = {120 * i}°), where |T12| is largest; "
+                      "--every-position draws all 3")
+    assert err[1:] == [f"figure written to {tmp_path / 'f.png'}"]
+
+
+def test_every_position_draws_one_figure_each(tmp_path, capsys):
+    problem = _three_positions(tmp_path)
+    assert main(["solve", str(problem), "-o", str(tmp_path / "f.png"), "--every-position"]) == 0
+    assert sorted(p.name for p in tmp_path.glob("*.png")) == ["f_1.png", "f_2.png", "f_3.png"]
+    assert "--every-position" not in capsys.readouterr().err
+
+
 def test_list(capsys):
     assert main(["list"]) == 0
     out = capsys.readouterr().out
