@@ -96,7 +96,7 @@ def scene(problem, n: int = 360, *, polygons: bool = True) -> dict:
         "valid": valid.astype(int).tolist(),
         "invalid": [{"index": i, "reason": result.reason(i)} for i in np.flatnonzero(~valid).tolist()],
         "size": size,
-        "view": _view(links, forces, loads, inertias, scale, size),
+        "view": _view(links, forces, loads, scale, size),
         "scales": {"force": scale},
         "frame": mech.frame,
         "driver": _driver(mech, length),
@@ -230,7 +230,7 @@ def _loads(kin, valid) -> list[dict]:
 
 def _inertia(kin, k: int, valid) -> dict:
     found = inertia(kin, k)
-    name = f"F{k}i"
+    name = f"R{k}i"  # the builder's name for the single resultant of the inertia loads
     return {"link": k, "name": name, "label": label(name, "N"), "G": _masked(kin.G(k), valid),
             "force": _masked(found.F, valid), "torque": np.where(valid, found.T, np.nan),
             "h": np.where(valid, found.h, np.nan), "line_point": _masked(found.line_point, valid)}
@@ -289,13 +289,14 @@ def _effort(result, valid, force, size) -> dict:
             "range": [float(finite.min()), float(finite.max())] if finite.size else [0.0, 0.0]}
 
 
-def _view(links, forces, loads, inertias, scale, size) -> list[float]:
-    """[xmin, ymin, xmax, ymax] [m]: every point at every position, and the tip of every force drawn there."""
+def _view(links, forces, loads, scale, size) -> list[float]:
+    """[xmin, ymin, xmax, ymax] [m]: every point at every position, and the tip of every joint force and load drawn
+    there. Not the inertia resultants: where the inertia force nearly vanishes beside its torque, its line lies far
+    off (h = |T|/|F|), and a view that held it would leave the mechanism a speck; such an arrow is cut off."""
     xy = [p for link in links for p in link["points"].values()]
     xy += [link["G"] for link in links if link["G"] is not None]
     for at, F in [(f["at"], f["analytical"]) for f in forces] + [(ld["at"], ld["force"]) for ld in loads
-                                                                 if "force" in ld] + \
-            [(i["line_point"], i["force"]) for i in inertias]:
+                                                                 if "force" in ld]:
         xy.append(at + F / scale)
     every = np.concatenate(xy)
     every = every[np.isfinite(every).all(axis=1)]
