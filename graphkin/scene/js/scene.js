@@ -391,18 +391,25 @@ export function render(root, scene) {
   }
   view.show = show;
 
-  // Each input event is timed from the event to the SVG updated (view.timings, ms).
+  // Each input event is timed from the event (its timeStamp) to the SVG updated (view.timings, ms) and to the next
+  // frame the browser draws (view.frames); view.work is the drawing alone, from the handler's start. (Chromium holds
+  // pointer moves back to the next frame, so a drag's event-to-update time includes up to a frame of waiting.)
+  view.frames = [];
+  view.work = [];
   function step(event, i) {
-    const t0 = performance.now();
+    const t0 = event.timeStamp;
+    const t1 = performance.now();
     show(i);
-    view.timings.push(performance.now() - t0);
-    if (event) event.preventDefault?.();
+    const t2 = performance.now();
+    view.timings.push(t2 - t0);
+    view.work.push(t2 - t1);
+    requestAnimationFrame(() => view.frames.push(performance.now() - t0));
   }
-  ui.slider.addEventListener("input", (e) => step(null, Number(e.target.value)));
+  ui.slider.addEventListener("input", (e) => step(e, Number(e.target.value)));
   document.addEventListener("keydown", (e) => {
     if (e.target === ui.slider) return; // the slider moves itself and says so with "input"
-    if (e.key === "ArrowRight" || e.key === "ArrowUp") step(e, view.index + 1);
-    else if (e.key === "ArrowLeft" || e.key === "ArrowDown") step(e, view.index - 1);
+    if (e.key === "ArrowRight" || e.key === "ArrowUp") { e.preventDefault(); step(e, view.index + 1); }
+    else if (e.key === "ArrowLeft" || e.key === "ArrowDown") { e.preventDefault(); step(e, view.index - 1); }
     else if (e.key === " " && e.target.tagName !== "BUTTON") { toggle(); e.preventDefault(); }
   });
 
@@ -440,27 +447,38 @@ export function render(root, scene) {
     });
   }
 
-  // Dragging the driver on the drawing: the presolved position whose handle is nearest the pointer.
+  // Dragging the driver on the drawing: press near its handle (the crank's pin, the slider's point), then each move
+  // shows the presolved position whose handle is nearest the pointer.
   const handle = scene.links.find((l) => l.number === scene.driver.link).points[scene.driver.handle];
-  function nearest(event) {
-    const p = new DOMPoint(event.clientX, event.clientY).matrixTransform(mech.svg.getScreenCTM().inverse());
+  // The screen-to-drawing transform is read once a drag: reading it after a position is drawn would make the
+  // browser lay the page out there and then, inside the move.
+  let toDrawing = null;
+  function pointer(event) {
+    const p = new DOMPoint(event.clientX, event.clientY).matrixTransform(toDrawing);
+    return [p.x, -p.y];
+  }
+  function nearest(p) {
     let best = view.index;
     let gap = Infinity;
     for (let k = 0; k < scene.n; k += 1) {
       const h = at(handle, k);
       if (h === null) continue;
-      const d = Math.hypot(h[0] - p.x, h[1] + p.y);
+      const d = Math.hypot(h[0] - p[0], h[1] - p[1]);
       if (d < gap) { gap = d; best = k; }
     }
     return best;
   }
   let dragging = false;
   mech.svg.addEventListener("pointerdown", (e) => {
+    toDrawing = mech.svg.getScreenCTM().inverse();
+    const p = pointer(e);
+    const h = at(handle, view.index);
+    if (h === null || Math.hypot(h[0] - p[0], h[1] - p[1]) > 0.15 * scene.size) return;
     dragging = true;
     mech.svg.setPointerCapture(e.pointerId);
-    step(e, nearest(e));
+    e.preventDefault();
   });
-  mech.svg.addEventListener("pointermove", (e) => { if (dragging) step(e, nearest(e)); });
+  mech.svg.addEventListener("pointermove", (e) => { if (dragging) step(e, nearest(pointer(e))); });
   mech.svg.addEventListener("pointerup", () => { dragging = false; });
 
   // Hovering a force reads it in polar form.
@@ -486,5 +504,6 @@ export function render(root, scene) {
   }
   mech.svg.addEventListener("pointerover", hover);
   show(0);
+  view.ready = performance.now(); // the first frame's drawing done, from the page's start
   return view;
 }
