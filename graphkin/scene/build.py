@@ -37,8 +37,9 @@ PRECISION = 1e-9
 """Every value is rounded to this fraction of its kind's scale (the mechanism's size, the largest force, …)."""
 
 ARROW = 0.35
-"""The largest force over the cycle is drawn this fraction of the mechanism's size long (rounded down to a 1-2-5
-force scale)."""
+"""The largest force over the cycle is drawn at most this fraction of the mechanism's size long (the force scale is
+that rounded up to 1, 2 or 5 times a power of ten)."""
+
 
 def scene(problem, n: int = 360, *, polygons: bool = True) -> dict:
     """The problem over its cycle as plain data a browser draws (docs/json.md, "scene").
@@ -109,11 +110,11 @@ def scene(problem, n: int = 360, *, polygons: bool = True) -> dict:
         "graphical": None,
     }
     for f in forces:
-        entry = {**f, "at": length(f["at"]), "analytical": force(f["analytical"])}
+        key = f.pop("key")
+        f.update(at=length(f["at"]), analytical=force(f["analytical"]))
         if graphical is not None:
-            entry["graphical"] = force(graphical.forces[f["key"]])
-        del entry["key"]
-        out["forces"].append(entry)
+            f["graphical"] = force(graphical.forces[key])
+        out["forces"].append(f)
     for ld in loads:
         ld["at"] = length(ld["at"])
         if "force" in ld:
