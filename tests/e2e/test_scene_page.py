@@ -177,6 +177,11 @@ def test_keys_drag_play_toggles_and_hover_at_screen_rate(browser, tmp_path, timi
         check_drawn(page.evaluate(READ_BACK), s, (s["n"] - 3 + 200) % s["n"])
         got = "[window.graphkin.view.timings, window.graphkin.view.frames, window.graphkin.view.work]"
         keys = page.evaluate(got)
+        # A key pressed in the speed box is the box's: the position stays.
+        page.focus("[data-do=speed]")
+        page.keyboard.press("ArrowDown")
+        assert page.evaluate("window.graphkin.view.index") == (s["n"] - 3 + 200) % s["n"]
+        page.locator("h1").click()
         # Dragging the crank: from its handle at the position shown to where the handle is at position j.
         handle = next(lk for lk in s["links"] if lk["number"] == s["driver"]["link"])["points"][s["driver"]["handle"]]
 

@@ -407,7 +407,9 @@ export function render(root, scene) {
   }
   ui.slider.addEventListener("input", (e) => step(e, Number(e.target.value)));
   document.addEventListener("keydown", (e) => {
-    if (e.target === ui.slider) return; // the slider moves itself and says so with "input"
+    // The slider moves itself (and says so with "input"); the speed box keeps its own keys. A toggle has no use
+    // for them: they step the position.
+    if (e.target.matches?.("select, textarea, input:not([type=checkbox])")) return;
     if (e.key === "ArrowRight" || e.key === "ArrowUp") { e.preventDefault(); step(e, view.index + 1); }
     else if (e.key === "ArrowLeft" || e.key === "ArrowDown") { e.preventDefault(); step(e, view.index - 1); }
     else if (e.key === " " && e.target.tagName !== "BUTTON") { toggle(); e.preventDefault(); }
