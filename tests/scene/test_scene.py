@@ -5,7 +5,10 @@ from __future__ import annotations
 
 import json
 import math
+import subprocess
+import sys
 from dataclasses import replace
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -15,6 +18,8 @@ from graphkin.model import Driver, Link, Mechanism, PointForce, Revolute
 from graphkin.problem import Problem
 from graphkin.scene import PRECISION, SCHEMA, scene, scene_json
 from graphkin.scene import polygons as scene_polygons
+
+ROOT = Path(__file__).resolve().parents[2]
 
 
 def _read(problem, n, **options) -> dict:
@@ -154,3 +159,16 @@ def test_without_polygons_the_scene_holds_the_analytical_route_only():
     s = scene(gk.load("strip_cutter"), 12, polygons=False)
     assert s["graphical"] is None and all("graphical" not in f for f in s["forces"])
     assert "graphical" not in s["effort"]
+
+
+def test_a_scene_and_its_page_load_no_matplotlib_ipywidgets_or_pint():
+    # Reading the problem file may load pint for a unit its table lacks: that is the reader's, counted before.
+    code = ("import sys, graphkin as gk\n"
+            "p = gk.load('strip_cutter')\n"
+            "heavy = ('matplotlib', 'ipywidgets', 'pint')\n"
+            "before = {m for m in heavy if m in sys.modules}\n"
+            "gk.scene.page(gk.scene.scene(p, 12))\n"
+            "print(sorted({m for m in heavy if m in sys.modules} - before))")
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, timeout=120)
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.split() == ["[]"]
