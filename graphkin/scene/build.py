@@ -85,6 +85,7 @@ def scene(problem, n: int = 360, *, polygons: bool = True) -> dict:
     force = _Rounder(biggest)
     scale = nice_scale(biggest, ARROW * size)  # N per metre of the drawing
     graphical = force_polygons(result, valid) if polygons else None
+    gears = _gears(mech)
     out = {
         "schema": SCHEMA,
         "problem": problem.name,
@@ -97,12 +98,13 @@ def scene(problem, n: int = 360, *, polygons: bool = True) -> dict:
         "valid": valid.astype(int).tolist(),
         "invalid": [{"index": i, "reason": result.reason(i)} for i in np.flatnonzero(~valid).tolist()],
         "size": size,
-        "view": _view(links, forces, loads, scale, size),
+        "view": _view(links, forces, loads, gears, scale, size),
         "scales": {"force": scale},
         "frame": mech.frame,
         "driver": _driver(mech, length),
         "links": [_round_link(link, length) for link in links],
         "guides": _guides(kin, valid, length),
+        "gears": gears,
         "forces": [],
         "loads": [],
         "inertia": [],
@@ -168,6 +170,19 @@ def _outline(link) -> list[str]:
     return [next(k for k in names if tuple(map(float, link.points[k])) == tuple(map(float, c))) for c in coords]
 
 
+def _gears(mech) -> list[dict]:
+    """Each gear's pitch circle, once: the link, the point at its centre, the radius [m], and whether it is an
+    annulus (teeth inside)."""
+    out = {}
+    for joint in mech.joints:
+        if isinstance(joint, GearMesh):
+            for link, centre in zip(joint.links, joint.centers):
+                r = joint.radius(link)
+                out.setdefault((link, centre, r), {"link": link, "centre": centre, "radius": r,
+                                                   "internal": joint.internal and link == joint.ring})
+    return list(out.values())
+
+
 def _link(kin, link, valid, length) -> dict:
     number = link.number
     if number == kin.mechanism.frame:
@@ -176,7 +191,10 @@ def _link(kin, link, valid, length) -> dict:
     else:
         points = {k: _masked(kin.position(number, k), valid) for k in link.points}
         G = _masked(kin.G(number), valid)
-    return {"number": number, "name": link.name, "outline": _outline(link), "points": points, "G": G}
+    # A gear is drawn as its pitch circle, not as a block at its centre.
+    gear = any(isinstance(j, GearMesh) and number in j.links for j in kin.mechanism.joints)
+    outline = [] if gear and len(link.points) == 1 else _outline(link)
+    return {"number": number, "name": link.name, "outline": outline, "points": points, "G": G}
 
 
 def _round_link(link: dict, length) -> dict:
@@ -280,25 +298,31 @@ def _guides(kin, valid, length) -> list[dict]:
 
 
 def _effort(result, valid, force, size) -> dict:
-    mech = result.mechanism
-    crank = mech.driver.crank
+    """The driving effort over the cycle, and its curve's axis: from the least to the greatest value, 0 included (a
+    constant effort, the epicyclic train's, would otherwise have an axis of no height)."""
+    crank = result.mechanism.driver.crank
     values = np.where(valid, result.effort, np.nan)
-    finite = values[np.isfinite(values)]
-    rounded = force.torque(values, size) if crank else force.scalars(values)
+    rounded = np.asarray(force.torque(values, size) if crank else force.scalars(values), float)
+    finite = rounded[np.isfinite(rounded)]
+    lo, hi = (min(float(finite.min()), 0.0), max(float(finite.max()), 0.0)) if finite.size else (0.0, 0.0)
     return {"name": result.driver_name, "label": label(result.driver_name, "N*m" if crank else "N"),
-            "analytical": rounded,
-            "range": [float(finite.min()), float(finite.max())] if finite.size else [0.0, 0.0]}
+            "analytical": rounded.tolist(), "range": [lo, hi] if hi > lo else [-1.0, 1.0]}
 
 
-def _view(links, forces, loads, scale, size) -> list[float]:
-    """[xmin, ymin, xmax, ymax] [m]: every point at every position, and the tip of every joint force and load drawn
-    there. Not the inertia resultants: where the inertia force nearly vanishes beside its torque, its line lies far
-    off (h = |T|/|F|), and a view that held it would leave the mechanism a speck; such an arrow is cut off."""
+def _view(links, forces, loads, gears, scale, size) -> list[float]:
+    """[xmin, ymin, xmax, ymax] [m]: every point at every position, every gear's pitch circle, and the tip of every
+    joint force and load drawn there. Not the inertia resultants: where the inertia force nearly vanishes beside its
+    torque, its line lies far off (h = |T|/|F|), and a view that held it would leave the mechanism a speck; such an
+    arrow is cut off."""
     xy = [p for link in links for p in link["points"].values()]
     xy += [link["G"] for link in links if link["G"] is not None]
     for at, F in [(f["at"], f["analytical"]) for f in forces] + [(ld["at"], ld["force"]) for ld in loads
                                                                  if "force" in ld]:
         xy.append(at + F / scale)
+    by_number = {link["number"]: link for link in links}
+    for gear in gears:
+        C = by_number[gear["link"]]["points"][gear["centre"]]
+        xy += [C - gear["radius"], C + gear["radius"]]
     every = np.concatenate(xy)
     every = every[np.isfinite(every).all(axis=1)]
     if not every.size:

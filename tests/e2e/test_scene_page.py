@@ -23,7 +23,7 @@ from tests.scene.test_scene import _toggle_fourbar
 READ_BACK = """() => {
   const svg = document.querySelector("svg.gk-mechanism");
   const num = (node, k) => Number(node.getAttribute(k));
-  const out = {index: window.graphkin.view.index, links: {}, points: {}, arrows: {}, polygons: {}};
+  const out = {index: window.graphkin.view.index, links: {}, points: {}, arrows: {}, polygons: {}, gears: {}};
   for (const p of svg.querySelectorAll("[data-link]")) {
     out.links[p.getAttribute("data-link")] = p.tagName === "polygon"
       ? p.getAttribute("points").trim().split(/\\s+/).map((xy) => xy.split(",").map(Number))
@@ -31,6 +31,10 @@ READ_BACK = """() => {
   }
   for (const c of svg.querySelectorAll("circle[data-point]")) {
     if (c.style.display !== "none") out.points[c.getAttribute("data-point")] = [num(c, "cx"), num(c, "cy")];
+  }
+  out.gears = {};
+  for (const c of svg.querySelectorAll("circle[data-gear]")) {
+    if (c.style.display !== "none") out.gears[c.getAttribute("data-gear")] = [num(c, "cx"), num(c, "cy"), num(c, "r")];
   }
   for (const g of svg.querySelectorAll("g.gk-arrow")) {
     if (g.style.display === "none") continue;
@@ -77,13 +81,22 @@ def check_drawn(drawn: dict, s: dict, i: int):
         if link["number"] == s["frame"]:
             continue
         names = link["outline"]
+        for k, flat in link["points"].items():
+            np.testing.assert_allclose(drawn["points"][f"{link['number']}.{k}"], _svg(_xy(flat, i)), rtol=0, atol=tol)
+        if not names:  # a gear: its pitch circle
+            assert str(link["number"]) not in drawn["links"]
+            continue
         got = np.asarray(drawn["links"][str(link["number"])])
         want = np.array([_svg(_xy(link["points"][k], i)) for k in names])
         if len(names) == 1:  # a block: a rectangle centred on its point
             want = want + [-0.04 * s["size"], -0.03 * s["size"]]
         np.testing.assert_allclose(got, want, rtol=0, atol=tol, err_msg=f"link {link['number']}")
-        for k, flat in link["points"].items():
-            np.testing.assert_allclose(drawn["points"][f"{link['number']}.{k}"], _svg(_xy(flat, i)), rtol=0, atol=tol)
+    links = {link["number"]: link for link in s["links"]}
+    assert len(drawn["gears"]) == len(s["gears"])
+    for gear in s["gears"]:
+        C = _svg(_xy(links[gear["link"]]["points"][gear["centre"]], i))
+        np.testing.assert_allclose(drawn["gears"][f"{gear['link']}.{gear['centre']}"], [*C, gear["radius"]], rtol=0,
+                                   atol=tol)
     for f in s["forces"]:
         tail, F = _xy(f["at"], i), _xy(f["analytical"], i)
         want = np.concatenate([_svg(tail), _svg(tail + F / scale)])

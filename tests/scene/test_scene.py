@@ -172,3 +172,18 @@ def test_a_scene_and_its_page_load_no_matplotlib_ipywidgets_or_pint():
     r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, timeout=120)
     assert r.returncode == 0, r.stderr
     assert r.stdout.split() == ["[]"]
+
+
+def test_gears_are_their_pitch_circles_and_a_constant_effort_has_an_axis():
+    problem = gk.load("epicyclic_khurmi")
+    s = _read(problem, 12)
+    meshes = [j for j in problem.mechanism.joints if isinstance(j, gk.GearMesh)]
+    want = {(k, c, j.radius(k)) for j in meshes for k, c in zip(j.links, j.centers)}
+    assert {(g["link"], g["centre"], g["radius"]) for g in s["gears"]} == want
+    assert [g["internal"] for g in s["gears"]].count(True) == 1  # the annulus
+    by_number = {link["number"]: link for link in s["links"]}
+    assert all(by_number[g["link"]]["outline"] == [] for g in s["gears"] if len(by_number[g["link"]]["points"]) == 1)
+    # The arm's torque is the same at every angle: its axis runs from it to 0, not from it to itself.
+    T = s["effort"]["analytical"]
+    assert max(T) - min(T) < 1e-9 * abs(T[0])
+    assert T[0] < 0 and s["effort"]["range"] == [min(T), 0.0]  # the sun is driven clockwise here

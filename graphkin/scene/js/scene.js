@@ -133,12 +133,16 @@ function mechanism(view, scene) {
       }
       continue;
     }
-    const shape = link.outline.length > 1
-      ? el("polygon", { fill: INK.fill, "fill-opacity": 0.8, stroke: INK.link, "stroke-width": 2,
-        "stroke-linejoin": "round", "vector-effect": "non-scaling-stroke", "data-link": link.number }, bodies)
-      : el("rect", { width: 0.08 * size, height: 0.06 * size, fill: INK.fill, stroke: INK.link, "stroke-width": 2,
-        "vector-effect": "non-scaling-stroke", "data-link": link.number }, bodies);
-    parts.links.push({ link, shape });
+    // A bar or a plate: its outline; a block: a rectangle at its point; a gear: its pitch circle (below).
+    if (link.outline.length > 1) {
+      parts.links.push({ link, shape: el("polygon", { fill: INK.fill, "fill-opacity": 0.8, stroke: INK.link,
+        "stroke-width": 2, "stroke-linejoin": "round", "vector-effect": "non-scaling-stroke",
+        "data-link": link.number }, bodies) });
+    } else if (link.outline.length === 1) {
+      parts.links.push({ link, shape: el("rect", { width: 0.08 * size, height: 0.06 * size, fill: INK.fill,
+        stroke: INK.link, "stroke-width": 2, "vector-effect": "non-scaling-stroke", "data-link": link.number },
+      bodies) });
+    }
     if (link.G) {
       parts.points.push({ flat: link.G, node: el("circle", { r: 0.012 * size, fill: INK.link,
         "data-point": `${link.number}.G` }, bodies) });
@@ -148,6 +152,13 @@ function mechanism(view, scene) {
         "stroke-width": 1.5, "vector-effect": "non-scaling-stroke", "data-point": `${link.number}.${name}` }, bodies) });
     }
   }
+  parts.gears = scene.gears.map((gear) => ({
+    flat: scene.links.find((l) => l.number === gear.link).points[gear.centre],
+    node: el("circle", { r: gear.radius, fill: gear.internal ? "none" : INK.fill, "fill-opacity": 0.6,
+      stroke: INK.link, "stroke-width": gear.internal ? 3 : 2, "stroke-dasharray": "8 3",
+      "vector-effect": "non-scaling-stroke", "data-gear": `${gear.link}.${gear.centre}` }, bodies),
+  }));
+  bodies.append(...parts.points.map((p) => p.node)); // the pins above the gears
   parts.guides = scene.guides.map((guide) => el("line", { stroke: INK.ground, "stroke-width": 1,
     "stroke-dasharray": "6 3", "vector-effect": "non-scaling-stroke", "data-guide": guide.slider }, bodies));
   const forces = el("g", { class: "gk-forces" }, svg);
@@ -186,7 +197,7 @@ function drawMechanism(parts, scene, i, ok) {
       shape.setAttribute("y", -p[1] - 0.03 * scene.size);
     }
   }
-  for (const { flat, node } of parts.points) {
+  for (const { flat, node } of [...parts.gears, ...parts.points]) {
     const p = ok ? at(flat, i) : null;
     shown(node, p !== null);
     if (p === null) continue;
