@@ -33,6 +33,7 @@ reports (plain data)   :mod:`report`, :func:`solution`, :func:`format_solution`,
 printed notation       :func:`polar`, :func:`polar_text`, :func:`cross`
 drawings               :mod:`draw` (matplotlib)
 teaching               :mod:`exercises`, :mod:`handout`, :func:`explore`, :func:`exercise`
+in the browser         :mod:`scene` (``gk.scene.scene(problem)``: a cycle as data a web page draws)
 errors                 :class:`GraphkinError`, :class:`ModelError`,
                        :class:`ProblemFileError`, :class:`GraphkinWarning`
 =====================  ==================================================================
@@ -106,6 +107,7 @@ _LAZY = {
     "exercises": ("graphkin.exercises", None),
     "handout": ("graphkin.handout", None),
     "explore": ("graphkin.widgets", "explore"),
+    "scene": ("graphkin.scene", None),
     "exercise": ("graphkin.widgets", "exercise"),
     # errors
     "GraphkinError": ("graphkin.errors", "GraphkinError"),
@@ -136,7 +138,7 @@ def __dir__() -> list[str]:
 
 
 if TYPE_CHECKING:  # pragma: no cover - for type checkers and editors; at run time each name loads lazily
-    from graphkin import catalog, draw, exercises, handout, report
+    from graphkin import catalog, draw, exercises, handout, report, scene
     from graphkin.analytical import ForceAnalysis, inertia, solve_forces
     from graphkin.analytical.matrix import assemble, solve_matrix
     from graphkin.analytical.virtual_work import effort_by_virtual_work, load_powers

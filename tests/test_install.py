@@ -68,6 +68,7 @@ def test_the_core_install_has_no_notebook_stack(core):
     (["exercise", "export", "single_link", "--to", "gradescope", "-o", "gs"], ""),
     (["exercise", "export", "single_link", "--to", "prairielearn", "-o", "pl"], ""),
     (["animate", "strip_cutter", "-o", "a.gif", "--frames", "3", "--dpi", "20"], "3 frames"),
+    (["explore", "strip_cutter", "-o", "page.html", "--n", "12"], "page.html"),  # the wheel's JavaScript
 ])
 def test_the_core_commands_run_without_any_extra(core, tmp_path, argv, expect):
     r = _run(core, *argv, cwd=tmp_path)
@@ -113,6 +114,7 @@ def test_the_wheel_and_the_sdist_carry_the_licence_and_the_sdist_no_tests(dist):
     with zipfile.ZipFile(wheel) as z:
         names = z.namelist()
     assert any(n.endswith("dist-info/licenses/LICENSE") for n in names)
+    assert {"graphkin/scene/js/scene.js", "graphkin/scene/js/page.html"} <= set(names)  # the browser's drawing
     metadata = next(n for n in names if n.endswith("dist-info/METADATA"))
     with zipfile.ZipFile(wheel) as z:
         meta = z.read(metadata).decode()

@@ -3,6 +3,12 @@
 ::
 
     graphkin explore PROBLEM [--port N] [--no-browser]
+    graphkin explore PROBLEM -o page.html [--n N] [--no-polygons]
+
+With ``-o``, the cycle is solved once (:func:`graphkin.scene.scene`) and written as one self-contained HTML file
+that draws every position in the browser (:func:`graphkin.scene.write_page`): the scene's JSON and the drawing's
+JavaScript are in the file, which works from disk with the network off and needs no Python to look at. Nothing is
+served; the command prints the file's name and size.
 
 `Voilà <https://voila.readthedocs.io>`_ serves one notebook on 127.0.0.1 that
 holds the problem's explorer (:func:`graphkin.widgets.explore`) and nothing
@@ -42,6 +48,11 @@ def add_parser(sub) -> None:
     e.add_argument("problem", metavar="PROBLEM", help="a catalog problem (graphkin list) or a problem file")
     e.add_argument("--port", type=int, default=0, help="the port on 127.0.0.1 (default: a free one)")
     e.add_argument("--no-browser", action="store_true", help="print the address only; do not open a browser")
+    e.add_argument("-o", "--output", metavar="PAGE.html", help="write one self-contained HTML page that draws the "
+                   "presolved cycle in the browser (no server, no network) instead of serving the explorer")
+    e.add_argument("--n", type=int, default=None, help="with -o: crank angles over the turn (default 360)")
+    e.add_argument("--no-polygons", action="store_true", help="with -o: leave the graphical route's force "
+                   "polygons out (a smaller page, built faster)")
 
 
 def notebook(source: str, title: str) -> dict:
@@ -83,6 +94,10 @@ def run(args) -> int:
     from graphkin import catalog
 
     problem = catalog.load(args.problem)  # a bad name or file: GraphkinError, before anything starts
+    if args.output is not None:
+        return _write(problem, args)
+    if args.n is not None or args.no_polygons:
+        raise GraphkinError("--n and --no-polygons go with -o PAGE.html (the page of the presolved cycle)")
     source = args.problem if args.problem in catalog.names() else str(Path(args.problem).resolve())
     from graphkin.optional import available, missing
 
@@ -121,6 +136,20 @@ def run(args) -> int:
             finally:
                 _stop(voila)
                 stop_on()
+
+
+def _write(problem, args) -> int:
+    """``explore -o``: the self-contained page of the presolved cycle."""
+    from graphkin.files import check_destination
+    from graphkin.scene import scene, write_page
+
+    path = check_destination(args.output, "-o")  # a folder or an unwritable place is refused before the solve
+    data = scene(problem, 360 if args.n is None else args.n, polygons=not args.no_polygons)
+    write_page(data, path, "-o")
+    n = data["n"]
+    print(f"graphkin: wrote {path} ({path.stat().st_size / 1e6:.2f} MB, {n} position{'s' * (n != 1)} of "
+          f"{problem.title}); open it in a browser, no server needed", file=sys.stderr, flush=True)
+    return 0
 
 
 def _stop_on_sigterm():
