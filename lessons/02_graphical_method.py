@@ -52,7 +52,7 @@ import graphkin as gk
 # directions and one size are then known; the polygon gives the rest.
 #
 # **Superposition.** If **both** links of a pair carry loads, neither is a two-force member: load one
-# link at a time, solve each case as above, and **add** the joint forces of the cases.
+# link at a time (one *sub-problem* each), solve each as above, and **add** their joint forces.
 #
 # The sign convention is lesson 01's, drawn once: $\vec F_{ij}$ is the force of link $i$ **on** link
 # $j$; a free body of link $j$ shows the forces $\vec F_{ij}$ of its neighbours.
@@ -154,11 +154,12 @@ for name in ("F23", "F34", "G12", "G14"):
 # **linear in the loads**: the lever arms and directions come from the geometry, and the unknown
 # joint forces appear to the first power. So we solve
 #
-# * **case 3**: only link 3 loaded — link 4 is a two-force member (force along $B_0B$);
-# * **case 4**: only link 4 loaded — link 3 is a two-force member (force along $AB$);
+# * **sub-problem I**: only link 3 loaded — link 4 is a two-force member (force along $B_0B$);
+# * **sub-problem II**: only link 4 loaded — link 3 is a two-force member (force along $AB$);
 #
-# and add the joint forces of the two cases at $A$, $B$ and $B_0$. (In case 4, link 3 is a two-force
-# member, so $\vec F_{23}^{(4)} = \vec F_{34}^{(4)}$.) Every step, in the order it is built:
+# and add the joint forces of the two sub-problems at $A$, $B$ and $B_0$. The figures mark sub-problem
+# I's forces with one prime, II's with two: in II, link 3 is a two-force member, so
+# $\vec F_{23}'' = \vec F_{34}''$. Every step, in the order it is built:
 
 # %%
 p2 = gk.load("strip_cutter")
@@ -195,6 +196,8 @@ print(next(s.caption for s in c3.steps if s.kind == "note" and s.caption.startsw
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
 assert c2.valid and not c2.warnings
 assert [s.values.keys() for s in c2.steps if s.kind == "superpose"] == [{"F23"}, {"F34"}, {"F14"}]
+assert [s.caption.split(" (")[0] for s in c2.steps if s.kind == "sub-problem"] == [  # the names the prose uses
+    "Sub-problem I: only the loads on link 3", "Sub-problem II: only the loads on link 4"]
 for name in r2.names():
     assert np.allclose(c2[name], r2[name][0], rtol=1e-9, atol=1e-9), name
 assert not any(c2.inertia[2]["F"]) and not c2.inertia[2]["T"]
