@@ -134,6 +134,7 @@ frames[5]
 gk.draw.draw_solution(c, p.solve())
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
+# The lesson's own check (folded): it keeps what the text above says right; nothing to do here.
 r = p.solve()
 assert len(frames) == len(c.steps) == 6
 assert np.allclose(c.force(1, 2), -np.array(c.inertia[3]["F"])) and np.allclose(c.force(2, 1), c.inertia[3]["F"])
@@ -194,6 +195,7 @@ print(next(s.caption for s in c3.steps if s.kind == "note" and s.caption.startsw
 # gives the free bodies to scale with room for you to draw each polygon.
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
+# The lesson's own check (folded): it keeps what the text above says right; nothing to do here.
 assert c2.valid and not c2.warnings
 assert [s.values.keys() for s in c2.steps if s.kind == "superpose"] == [{"F23"}, {"F34"}, {"F14"}]
 assert [s.caption.split(" (")[0] for s in c2.steps if s.kind == "sub-problem"] == [  # the names the prose uses
@@ -261,6 +263,7 @@ gk.exercise("double_slider_graphical", student)
 gk.draw.draw_solution(mine.construction, mine.problem.solve())
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
+# The lesson's own check (folded): it keeps what the text above says right; nothing to do here.
 for name in ("inertia_resultant", "double_slider_graphical"):
     key = {q["id"]: q["answer"]["text"] for q in gk.exercises.key(name, student)["questions"]}
     assert all(q["verdict"] == "correct" for q in gk.exercises.grade(name, student, key)["questions"]), name

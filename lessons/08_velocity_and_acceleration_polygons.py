@@ -49,6 +49,7 @@ kin = problem.kinematics(at=[math.radians(140)])
 gk.draw.draw_mechanism(gk.construct_forces(kin, 0))
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
+# The lesson's own check (folded): it keeps what the text above says right; nothing to do here.
 assert math.isclose(float(kin.q_dot[0]), 900 * 2 * math.pi / 60, rel_tol=1e-12)
 assert float(kin.q_ddot[0]) == 0.0
 
@@ -82,6 +83,7 @@ for step in motion.steps:
         print("•", step.caption)
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
+# The lesson's own check (folded): it keeps what the text above says right; nothing to do here.
 for link in (3, 4):
     assert math.isclose(motion.omega[link], float(kin.omega[link][0]), rel_tol=1e-9)
 
@@ -104,6 +106,7 @@ for link in (3, 4):
 gk.draw.draw_motion_polygons(motion)
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
+# The lesson's own check (folded): it keeps what the text above says right; nothing to do here.
 for link in (3, 4):
     assert math.isclose(motion.alpha[link], float(kin.alpha[link][0]), rel_tol=1e-9)
     aG = kin.a_G(link)[0]
@@ -126,6 +129,7 @@ gk.draw.draw_step_grid(forces)
 print(f"T12 from the polygons: {forces.effort:.2f} N·m (CCW positive)")
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
+# The lesson's own check (folded): it keeps what the text above says right; nothing to do here.
 T12 = float(problem.solve(at=[math.radians(140)]).effort[0])
 assert math.isclose(forces.effort, T12, rel_tol=1e-6)
 
@@ -143,6 +147,7 @@ ex.slider.value = 140
 ex
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
+# The lesson's own check (folded): it keeps what the text above says right; nothing to do here.
 assert ex.motion_construction is not None and ex.motion_construction.valid
 assert math.isclose(ex.motion_construction.omega[3], motion.omega[3], rel_tol=1e-9)
 
@@ -170,6 +175,7 @@ mine = gk.exercises.variant("fourbar_polygons", student)
 gk.draw.draw_motion_polygons(gk.construct_kinematics(mine.problem.kinematics(), 0))
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
+# The lesson's own check (folded): it keeps what the text above says right; nothing to do here.
 import graphkin.exercises as _ex
 
 _v = _ex.variant("fourbar_polygons", "s001")

@@ -135,7 +135,8 @@ print(f"driving torque      T12 = −F_T r     = {T12 / 1e3:.3f} kN·m (book 14.
 # 250 kg rather than into the rod. And the side thrust, 11 kN, is what wears cylinders oval: it is
 # the price of a rod that leans.
 
-# %% jupyter={"source_hidden": true} tags=["remove-input"]
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+# The lesson's own check (folded): it keeps what the text above says right; nothing to do here.
 n, omega, m_R, p_gas = 4.0, 250 * 2 * np.pi / 60, 250.0, 0.35e6 * np.pi * 0.5**2 / 4
 phi = np.arcsin(np.sin(np.pi / 3) / n)
 a_P = -solved.kinematics.acceleration(4, "P")[0, 0]  # towards the crank, exact
@@ -194,7 +195,8 @@ print(f"−F_L r / π             : {-68722.3393 * 0.3 / np.pi / 1e3:.3f} kN·m"
 # (The last digit differs by the sweep's 1° steps.) The peak is almost four times the mean: this is the fluctuation a flywheel smooths out (lesson 04)
 # and the reason engines have several cylinders with their cranks spread round the turn.
 
-# %% jupyter={"source_hidden": true} tags=["remove-input"]
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+# The lesson's own check (folded): it keeps what the text above says right; nothing to do here.
 assert abs(steady.average) < 1e-6 * abs(steady.torque).max()
 mean_T = 68722.3393 * 0.3 / np.pi
 assert abs(-single_cycle.average / mean_T - 1) < 1e-4
@@ -229,7 +231,8 @@ gk.exercise("engine_efforts", student)
 mine = gk.exercises.variant("engine_efforts", student).problem
 print(gk.format_solution(mine, mine.solve()))
 
-# %% jupyter={"source_hidden": true} tags=["remove-input"]
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+# The lesson's own check (folded): it keeps what the text above says right; nothing to do here.
 key = {q["id"]: q["answer"]["si"] for q in gk.exercises.key("engine_efforts", student)["questions"]}
 worked = mine.solve()
 assert np.isclose(key["F_Q"], np.hypot(*worked.force(3, 4)[0]), rtol=1e-9)

@@ -123,6 +123,7 @@ for c in (0, 1 / 2, 2 / 3, 1):
 # would take a small $c$.
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
+# The lesson's own check (folded): it keeps what the text above says right; nothing to do here.
 m_R, r, n, omega = 1.0, 0.050, 4.0, 1800 * 2 * np.pi / 60
 theta = half.q
 S = half.shaking_force()
@@ -172,6 +173,7 @@ mine = gk.exercises.variant("engine_balance", student).problem
 print(gk.format_solution(mine, mine.solve()))
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
+# The lesson's own check (folded): it keeps what the text above says right; nothing to do here.
 key = {q["id"]: q["answer"]["si"] for q in gk.exercises.key("engine_balance", student)["questions"]}
 worked = mine.solve()
 F12 = worked.force(1, 2)[0]

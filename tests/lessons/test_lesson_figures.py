@@ -7,7 +7,8 @@ shown as a PNG), or when it is kept in a name that a later cell ends on (lesson 
 
 The maintainers' checks (cells tagged ``remove-input``: the docs site leaves their source out) are folded
 in JupyterLab too, by the cell metadata it honours on opening a notebook, ``"jupyter": {"source_hidden":
-true}``. Their outputs are not collapsed: a check that passes has none, one that fails should say so where
+true}``; JupyterLab then shows the cell's first line, so in a student's lesson that line says, in words, what the
+cell is. Their outputs are not collapsed: a check that passes has none, one that fails should say so where
 it failed, and the teachers' lessons (06, 07) show what a hidden set-up cell prints (a class's answers).
 """
 
@@ -23,6 +24,9 @@ import pytest
 
 LESSONS = Path(__file__).resolve().parents[2] / "lessons"
 SOURCES = sorted(LESSONS.glob("[0-9][0-9]_*.py"))
+FOR_STUDENTS = [p for p in SOURCES if "(for teachers)" not in p.read_text(encoding="utf-8").split("\n# # ", 1)[1]
+                .splitlines()[0]]
+"""The lessons but the teachers' (06, 07, whose folded cells are set-up, each opening with what it makes)."""
 HIDDEN = "remove-input"
 BLOCKS = (ast.If, ast.For, ast.While, ast.With, ast.Try, ast.FunctionDef, ast.ClassDef, ast.Match)
 
@@ -114,6 +118,15 @@ def test_checks_are_folded(source):
                 and c.metadata.get("jupyter", {}).get("source_hidden") is not True]
     assert not unfolded, (f"{source.name}: cells {unfolded} are tagged {HIDDEN} but show their source in "
                           'JupyterLab: give them jupyter={"source_hidden": true} beside the tag')
+
+
+@pytest.mark.parametrize("source", FOR_STUDENTS, ids=[p.stem for p in FOR_STUDENTS])
+def test_a_folded_check_reads_as_a_label(source):
+    """JupyterLab shows a folded cell's first line: in a student's lesson it says what the cell is, in words."""
+    nb = jupytext.read(source)
+    bare = [k + 1 for k, c in enumerate(nb.cells) if HIDDEN in c.metadata.get("tags", ())
+            and not c.source.startswith("# The lesson's own check (folded)")]
+    assert not bare, f"{source.name}: folded cells {bare} open with code, which JupyterLab shows as their one line"
 
 
 def _drawing_cells(nb) -> list[int]:
