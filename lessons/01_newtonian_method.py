@@ -110,6 +110,7 @@ print(gk.format_solution(p, bar_result))
 # bar's inertia resists.
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
+# The lesson's own check (folded): it keeps what the text above says right; nothing to do here.
 m, L = 2.0, 0.250
 k = p.kinematics()
 rP, FP = k.position(2, "P")[0], np.array(p.mechanism.loads[0].force)
@@ -165,6 +166,7 @@ print(gk.format_solution(p, result))
 # intermediate values (it divides the rounded 865 N·mm by the rounded 25.97 N to get $h$).
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
+# The lesson's own check (folded): it keeps what the text above says right; nothing to do here.
 i3 = result.inertia(3)
 assert np.allclose(result["G12"][0], -i3.F[0]) and np.allclose(result["F12"][0], -result["F43"][0])
 for name, book, ours in [("F23", 27.04 * np.exp(1j * np.radians(-73.78)), result["F23"][0]),
@@ -198,6 +200,7 @@ for x_A, F12 in zip(xs, p.solve(at=xs).effort):
 # `graphkin handout double_slider -o double_slider.pdf`.
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
+# The lesson's own check (folded): it keeps what the text above says right; nothing to do here.
 sweep = p.solve(at=xs)
 assert sweep.valid.all() and np.all(np.diff(sweep.effort) > 0)
 assert np.isclose(sweep.effort[np.argmin(abs(xs - 0.2))], result.effort[0])
@@ -267,6 +270,7 @@ print(gk.format_solution(mine.problem, mine.problem.solve()))
 gk.draw.draw_free_bodies(mine.construction, length_scale=5, force_scale=2)
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
+# The lesson's own check (folded): it keeps what the text above says right; nothing to do here.
 key = {q["id"]: q["answer"]["text"] for q in gk.exercises.key("double_slider_forces", student)["questions"]}
 assert all(q["verdict"] == "correct"
            for q in gk.exercises.grade("double_slider_forces", student, key)["questions"])

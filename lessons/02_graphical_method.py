@@ -52,7 +52,7 @@ import graphkin as gk
 # directions and one size are then known; the polygon gives the rest.
 #
 # **Superposition.** If **both** links of a pair carry loads, neither is a two-force member: load one
-# link at a time, solve each case as above, and **add** the joint forces of the cases.
+# link at a time (one *sub-problem* each), solve each as above, and **add** their joint forces.
 #
 # The sign convention is lesson 01's, drawn once: $\vec F_{ij}$ is the force of link $i$ **on** link
 # $j$; a free body of link $j$ shows the forces $\vec F_{ij}$ of its neighbours.
@@ -134,6 +134,7 @@ frames[5]
 gk.draw.draw_solution(c, p.solve())
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
+# The lesson's own check (folded): it keeps what the text above says right; nothing to do here.
 r = p.solve()
 assert len(frames) == len(c.steps) == 6
 assert np.allclose(c.force(1, 2), -np.array(c.inertia[3]["F"])) and np.allclose(c.force(2, 1), c.inertia[3]["F"])
@@ -154,11 +155,12 @@ for name in ("F23", "F34", "G12", "G14"):
 # **linear in the loads**: the lever arms and directions come from the geometry, and the unknown
 # joint forces appear to the first power. So we solve
 #
-# * **case 3**: only link 3 loaded — link 4 is a two-force member (force along $B_0B$);
-# * **case 4**: only link 4 loaded — link 3 is a two-force member (force along $AB$);
+# * **sub-problem I**: only link 3 loaded — link 4 is a two-force member (force along $B_0B$);
+# * **sub-problem II**: only link 4 loaded — link 3 is a two-force member (force along $AB$);
 #
-# and add the joint forces of the two cases at $A$, $B$ and $B_0$. (In case 4, link 3 is a two-force
-# member, so $\vec F_{23}^{(4)} = \vec F_{34}^{(4)}$.) Every step, in the order it is built:
+# and add the joint forces of the two sub-problems at $A$, $B$ and $B_0$. The figures mark sub-problem
+# I's forces with one prime, II's with two: in II, link 3 is a two-force member, so
+# $\vec F_{23}'' = \vec F_{34}''$. Every step, in the order it is built:
 
 # %%
 p2 = gk.load("strip_cutter")
@@ -193,8 +195,11 @@ print(next(s.caption for s in c3.steps if s.kind == "note" and s.caption.startsw
 # gives the free bodies to scale with room for you to draw each polygon.
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
+# The lesson's own check (folded): it keeps what the text above says right; nothing to do here.
 assert c2.valid and not c2.warnings
 assert [s.values.keys() for s in c2.steps if s.kind == "superpose"] == [{"F23"}, {"F34"}, {"F14"}]
+assert [s.caption.split(" (")[0] for s in c2.steps if s.kind == "sub-problem"] == [  # the names the prose uses
+    "Sub-problem I: only the loads on link 3", "Sub-problem II: only the loads on link 4"]
 for name in r2.names():
     assert np.allclose(c2[name], r2[name][0], rtol=1e-9, atol=1e-9), name
 assert not any(c2.inertia[2]["F"]) and not c2.inertia[2]["T"]
@@ -258,6 +263,7 @@ gk.exercise("double_slider_graphical", student)
 gk.draw.draw_solution(mine.construction, mine.problem.solve())
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
+# The lesson's own check (folded): it keeps what the text above says right; nothing to do here.
 for name in ("inertia_resultant", "double_slider_graphical"):
     key = {q["id"]: q["answer"]["text"] for q in gk.exercises.key(name, student)["questions"]}
     assert all(q["verdict"] == "correct" for q in gk.exercises.grade(name, student, key)["questions"]), name

@@ -82,6 +82,7 @@ gk.draw.draw_torque_curve(cyc).figure
 # and slowed down again every turn. Its largest and smallest values lie outside the cut.
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
+# The lesson's own check (folded): it keeps what the text above says right; nothing to do here.
 from dataclasses import replace
 
 kin, loads = cyc.analysis.kinematics, p.mechanism.loads
@@ -141,6 +142,7 @@ print(f"plain 2° grid: {plain:.4f} N·m ({plain / cyc.average - 1:+.1%});  swee
 # too: with no friction the powers of the motor, the cutting forces and the inertia loads add to zero.
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
+# The lesson's own check (folded): it keeps what the text above says right; nothing to do here.
 r = cyc.analysis
 P_inertia = sum(np.sum(r.inertia(j).F * kin.v_G(j), axis=1) + r.inertia(j).T * kin.omega[j] for j in p.mechanism.moving)
 P_cut = np.where(on, sum(kin.velocity(ld.link, ld.point) @ np.asarray(ld.force) for ld in loads), 0.0)
@@ -169,6 +171,7 @@ gk.draw.draw_polar_forces(cyc).figure
 # the strip, sizes the pins.
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
+# The lesson's own check (folded): it keeps what the text above says right; nothing to do here.
 assert np.allclose(r["F12"], r["F23"], atol=1e-9)
 assert all(not on[pk.index] and pk.value > 4000 for pk in cyc.peaks().forces.values())
 
@@ -231,6 +234,7 @@ film = gk.draw.animate(p, frames=36, fps=8, dpi=60)
 HTML(film.to_html())
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
+# The lesson's own check (folded): it keeps what the text above says right; nothing to do here.
 assert len(film.frames) == 36 and film.fps == 8 and not film.gaps
 assert "https:" not in film.to_html() and "http:" not in film.to_html()
 
@@ -289,6 +293,7 @@ gk.exercise("torque_curve", student)
 gk.draw.draw_torque_curve(gk.sweep(gk.exercises.variant("torque_curve", student).problem, 360)).figure
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
+# The lesson's own check (folded): it keeps what the text above says right; nothing to do here.
 for name in ("strip_cutter_cut", "torque_curve"):
     key = {q["id"]: q["answer"]["text"] for q in gk.exercises.key(name, student)["questions"]}
     assert all(q["verdict"] == "correct" for q in gk.exercises.grade(name, student, key)["questions"]), name

@@ -97,6 +97,7 @@ gk.draw.draw_energy(f).figure
 # links' own energy, not the cut.
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
+# The lesson's own check (folded): it keeps what the text above says right; nothing to do here.
 assert round(f.E, 1) == 237.2 and round(f.areas[0], 1) == -237.2 and round(f.areas[-1], 1) == 211.8
 assert np.allclose(np.degrees(f.crossings[:2]), [9.6, 75.8], atol=0.05) and np.argmin(f.accumulated) == 0
 assert round(c.peaks().effort_max.value) == 256 and round(-c.peaks().effort_min.value) == 325 and round(c.average) == 8
@@ -145,6 +146,7 @@ print(f"crank speed with the flywheel: {w.min() * 30 / math.pi:.1f} to {w.max() 
 # correction.
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
+# The lesson's own check (folded): it keeps what the text above says right; nothing to do here.
 assert abs(np.ptp(w) / f.omega_avg - 0.05) < 0.01 * 0.05
 Tm = f.smoothed_torque(0.05)
 assert round(Tm.min()) == 5 and round(Tm.max(), 1) == 12.7 and rim.mass < disk.mass
@@ -181,6 +183,7 @@ long_crank = gk.parse_problem(gk.catalog.path("strip_cutter").read_text().replac
 gk.draw.draw_joint_force_index(gk.joint_force_index(long_crank)).figure
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
+# The lesson's own check (folded): it keeps what the text above says right; nothing to do here.
 defined = np.isfinite(jfi.index)
 assert np.all(abs(jfi.index[defined] - 1.4) < 0.05) and not jfi.immovable
 assert round(c.peaks().forces["F23"].value / 2000, 1) == 3.8
@@ -256,6 +259,7 @@ gk.draw.draw_joint_force_index(gk.joint_force_index(gk.exercises.variant("joint_
                                                     360)).figure
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
+# The lesson's own check (folded): it keeps what the text above says right; nothing to do here.
 for name in ("flywheel", "joint_force_index"):
     key = {q["id"]: q["answer"]["text"] for q in gk.exercises.key(name, student)["questions"]}
     assert all(q["verdict"] == "correct" for q in gk.exercises.grade(name, student, key)["questions"]), name

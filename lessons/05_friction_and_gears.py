@@ -78,6 +78,7 @@ print(gk.assemble(r).format(0))
 gk.draw.draw_solution(gk.construct_forces(r.kinematics, 0), r)
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
+# The lesson's own check (folded): it keeps what the text above says right; nothing to do here.
 c = gk.construct_forces(r.kinematics, 0)
 G14 = c.force(1, 4)
 assert c.valid and round(math.degrees(math.atan2(abs(G14[0]), abs(G14[1]))), 2) == 11.31
@@ -121,6 +122,7 @@ ex = gk.explore(p)
 ex
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
+# The lesson's own check (folded): it keeps what the text above says right; nothing to do here.
 res, kin = cyc.analysis, cyc.analysis.kinematics
 V4, N, G = kin.velocity(4, "B")[:, 0], res.normal[(1, 4)], res["G14"]
 assert np.all(np.sign(G[:, 0]) == -np.sign(V4)) and np.allclose(np.abs(G[:, 0]), 0.2 * np.abs(N))
@@ -185,6 +187,7 @@ ex_g = gk.explore(g)
 ex_g
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
+# The lesson's own check (folded): it keeps what the text above says right; nothing to do here.
 (mesh,) = [j for j in g.mechanism.joints if hasattr(j, "pressure_angle")]
 r2, r3 = mesh.radii
 (T13,) = [ld.torque for ld in g.mechanism.loads]
@@ -244,6 +247,7 @@ mine = gk.exercises.variant("slider_crank_friction", student)
 gk.draw.draw_solution(mine.construction, mine.problem.solve())
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
+# The lesson's own check (folded): it keeps what the text above says right; nothing to do here.
 for name in ("gear_pair", "slider_crank_friction"):
     key = {q["id"]: q["answer"]["text"] for q in gk.exercises.key(name, student)["questions"]}
     assert all(q["verdict"] == "correct" for q in gk.exercises.grade(name, student, key)["questions"]), name

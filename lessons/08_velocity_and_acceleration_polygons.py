@@ -46,9 +46,10 @@ kin = problem.kinematics(at=[math.radians(140)])
 # constructed from these two numbers.
 
 # %%
-gk.draw.draw_mechanism(gk.construct_forces(kin, 0));
+gk.draw.draw_mechanism(gk.construct_forces(kin, 0))
 
-# %% tags=["remove-input"]
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+# The lesson's own check (folded): it keeps what the text above says right; nothing to do here.
 assert math.isclose(float(kin.q_dot[0]), 900 * 2 * math.pi / 60, rel_tol=1e-12)
 assert float(kin.q_ddot[0]) == 0.0
 
@@ -70,7 +71,7 @@ assert float(kin.q_ddot[0]) == 0.0
 
 # %%
 motion = gk.construct_kinematics(kin, 0)
-gk.draw.draw_motion_polygon(motion, "velocity");
+gk.draw.draw_motion_polygon(motion, "velocity")
 
 # %% [markdown]
 # Each step of the construction says what is known, what is perpendicular to what, and what it
@@ -81,7 +82,8 @@ for step in motion.steps:
     if step.polygon == "velocity":
         print("•", step.caption)
 
-# %% tags=["remove-input"]
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+# The lesson's own check (folded): it keeps what the text above says right; nothing to do here.
 for link in (3, 4):
     assert math.isclose(motion.omega[link], float(kin.omega[link][0]), rel_tol=1e-9)
 
@@ -101,9 +103,10 @@ for link in (3, 4):
 # by √(ω⁴ + α²); **g′** on it gives a_G, the vector from **o′** to **g′**.
 
 # %%
-gk.draw.draw_motion_polygons(motion);
+gk.draw.draw_motion_polygons(motion)
 
-# %% tags=["remove-input"]
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+# The lesson's own check (folded): it keeps what the text above says right; nothing to do here.
 for link in (3, 4):
     assert math.isclose(motion.alpha[link], float(kin.alpha[link][0]), rel_tol=1e-9)
     aG = kin.a_G(link)[0]
@@ -120,12 +123,13 @@ for link in (3, 4):
 # %%
 drawn = gk.kinematics_from_polygons(kin)
 forces = gk.construct_forces(drawn, 0)
-gk.draw.draw_step_grid(forces);
+gk.draw.draw_step_grid(forces)
 
 # %%
 print(f"T12 from the polygons: {forces.effort:.2f} N·m (CCW positive)")
 
-# %% tags=["remove-input"]
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+# The lesson's own check (folded): it keeps what the text above says right; nothing to do here.
 T12 = float(problem.solve(at=[math.radians(140)]).effort[0])
 assert math.isclose(forces.effort, T12, rel_tol=1e-6)
 
@@ -142,35 +146,36 @@ ex.motion.value = True
 ex.slider.value = 140
 ex
 
-# %% tags=["remove-input"]
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+# The lesson's own check (folded): it keeps what the text above says right; nothing to do here.
 assert ex.motion_construction is not None and ex.motion_construction.valid
 assert math.isclose(ex.motion_construction.omega[3], motion.omega[3], rel_tol=1e-9)
 
 # %% [markdown]
 # ## 6. Your turn
 #
-# Type your id in the box below: you get your own crank angle and speed for the same four-bar. **Before
-# you type any answer**, draw the mechanism at your angle (AB = 235 mm, B0B = 550 mm, A0B0 = 565 mm),
-# then the velocity polygon on paper at a scale of your choosing. Measure v_BA, divide by AB, and that
-# is ω3 (CCW positive). Go on to the acceleration polygon for α3 and a_G. Then type your readings and
+# Type the id your teacher gave you in place of `"your-id"` and run the cell: you get your own crank
+# angle and speed for the same four-bar. **Before you type any answer**, draw the mechanism at your
+# angle (AB = 235 mm, B0B = 550 mm, A0B0 = 565 mm), then the velocity polygon on paper at a scale of
+# your choosing. Measure v_BA, divide by AB, and that is ω3 (CCW positive). Go on to the acceleration polygon for α3 and a_G. Then type your readings and
 # press **Check**: answers within 3 %, or half a millimetre at a worksheet's printed scale, are right,
 # and the feedback names the usual slips (a normal component left out, g′ put at the link's end).
 
 # %%
-box = gk.exercise("fourbar_polygons", "")
+student = "your-id"  # ← type your own id here
+box = gk.exercise("fourbar_polygons", student)
 box
 
 # %% [markdown]
-# Only once you have checked your own: graphkin's polygons for your variant. Put your id here and run
-# the cell; compare its figure with your drawing, step by step.
+# Only once you have checked your own, run the next cell: graphkin's polygons for your variant. Compare
+# them with your drawing, step by step.
 
 # %%
-me = ""  # your id
-if me:
-    mine = gk.exercises.variant("fourbar_polygons", me)
-    gk.draw.draw_motion_polygons(gk.construct_kinematics(mine.problem.kinematics(), 0))
+mine = gk.exercises.variant("fourbar_polygons", student)
+gk.draw.draw_motion_polygons(gk.construct_kinematics(mine.problem.kinematics(), 0))
 
-# %% tags=["remove-input"]
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+# The lesson's own check (folded): it keeps what the text above says right; nothing to do here.
 import graphkin.exercises as _ex
 
 _v = _ex.variant("fourbar_polygons", "s001")

@@ -25,7 +25,7 @@
 #
 # 1. the forces on the piston, and how the rod turns them into a torque;
 # 2. Khurmi & Gupta's Example 15.7 by hand and by graphkin;
-# 3. the turning moment over the cycle: why a constant gas force does no work in a turn;
+# 3. the driving torque over a turn: why a constant gas force does no work in a turn;
 # 4. your turn: an engine with your own numbers, worked by hand first.
 
 # %%
@@ -67,9 +67,15 @@ import graphkin as gk
 # $$F_Q = \frac{F_P}{\cos\varphi}, \qquad F_N = F_P\tan\varphi .$$
 #
 # At the crank pin the thrust splits into a part along the crank (into the bearings) and a part
-# across it, the **crank effort** $F_T$; its moment about $O$ is the **turning moment** $T$:
+# across it, the **crank effort** $F_T$, whose moment $F_T\,r$ about $O$ turns the crank (the book's
+# *turning moment*). graphkin names one torque, the **driving torque** $T_{12}$: the torque of the
+# frame (link 1) on the crank (link 2) that keeps the motion, counter-clockwise positive like every
+# torque in graphkin. In an engine it is the shaft's load, holding the crank against $F_T$; with the
+# crank turning counter-clockwise:
 #
-# $$F_T = F_Q\,\sin(\theta + \varphi), \qquad T = F_T\, r .$$
+# $$F_T = F_Q\,\sin(\theta + \varphi), \qquad T_{12} = -F_T\, r ,$$
+#
+# so $T_{12}$ is clockwise (negative) while the gas drives the crank.
 #
 # The picture below is the engine of Example 15.7 at $\theta = 60^\circ$ and the free body of its
 # piston, with the two known loads drawn (the rod's thrust and the wall's push are the unknowns).
@@ -96,13 +102,12 @@ gk.draw.draw_given(gk.construct_forces(engine.kinematics(), 0), [4])
 # | $\varphi = \arcsin(\sin 60^\circ/4)$ | 12.50° |
 # | $F_Q = F_P/\cos\varphi$ | 50.64 kN |
 # | $F_T = F_Q \sin(72.50^\circ)$ | 48.30 kN |
-# | $T = F_T \times 0.3$ m | 14.49 kN·m |
+# | $T_{12} = -F_T \times 0.3$ m | −14.49 kN·m |
 #
 # graphkin does not use these formulas: it writes the three equilibrium equations of every moving
 # link with the piston's exact acceleration and solves them together (lesson 01). The rod's force
-# on the piston is $\vec F_{34}$, the wall's is $\vec G_{14}$, and $T_{12}$ is the torque the frame
-# (the shaft's load) must put on the crank — the turning moment with its sign turned round,
-# $T = -T_{12}$. The crank effort is the moment of the rod's push on the crank pin, $\vec F_{32}$,
+# on the piston is $\vec F_{34}$, the wall's is $\vec G_{14}$, and $T_{12}$ is section 1's driving
+# torque. The crank effort is the moment of the rod's push on the crank pin, $\vec F_{32}$, about $O$,
 # divided by $r$.
 
 # %%
@@ -117,7 +122,7 @@ OC = np.array([0.3 * np.cos(np.pi / 3), 0.3 * np.sin(np.pi / 3)])  # the crank, 
 print(f"thrust in the rod   F_Q = |F34|      = {np.hypot(*F34) / 1e3:.2f} kN   (book 50.62 kN)")
 print(f"side thrust         F_N = |G14|      = {np.hypot(*G14) / 1e3:.2f} kN")
 print(f"crank effort        F_T = OC × F32/r = {gk.cross(OC, F32) / 0.3 / 1e3:.2f} kN   (book 48.28 kN)")
-print(f"turning moment      T   = −T12       = {-T12 / 1e3:.3f} kN·m (book 14.484 kN·m)")
+print(f"driving torque      T12 = −F_T r     = {T12 / 1e3:.3f} kN·m (book 14.484 kN·m, its size)")
 
 # %% [markdown]
 # The book's figures lie 0.04 % below graphkin's: it rounds $\omega$ to 26.2 rad/s and $\varphi$ to
@@ -130,7 +135,8 @@ print(f"turning moment      T   = −T12       = {-T12 / 1e3:.3f} kN·m (book 14
 # 250 kg rather than into the rod. And the side thrust, 11 kN, is what wears cylinders oval: it is
 # the price of a rod that leans.
 
-# %% tags=["remove-input"]
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+# The lesson's own check (folded): it keeps what the text above says right; nothing to do here.
 n, omega, m_R, p_gas = 4.0, 250 * 2 * np.pi / 60, 250.0, 0.35e6 * np.pi * 0.5**2 / 4
 phi = np.arcsin(np.sin(np.pi / 3) / n)
 a_P = -solved.kinematics.acceleration(4, "P")[0, 0]  # towards the crank, exact
@@ -147,17 +153,17 @@ assert 0.27 < m_R * a_P / p_gas < 0.29  # "28 % of the gas load"
 assert 10.9e3 < np.hypot(*G14) < 11.05e3  # "11 kN"
 
 # %% [markdown]
-# ## 3. The turning moment over the cycle
+# ## 3. The driving torque over a turn
 #
 # Sweep the same file over a turn and graphkin keeps the gas load at 68.7 kN everywhere — on the
 # out-stroke, when the piston moves towards the crank, and on the return, when it moves away. The
 # work of a constant force over a closed path is zero, and so is the work of the inertia forces of a
 # machine running at constant speed (the kinetic energy comes back to where it started). So the
-# **mean turning moment over a turn is zero**:
+# **mean of $T_{12}$ over a turn is zero**:
 
 # %%
 steady = gk.sweep(engine, 360)
-print(f"mean turning moment, gas load on both strokes: {-steady.average:.1e} N·m")
+print(f"mean T12, gas load on both strokes: {steady.average:.1e} N·m")
 
 # %% [markdown]
 # A real engine does net work only because the pressure on the return stroke is lower. The simplest
@@ -172,31 +178,31 @@ single_cycle = gk.sweep(single, 360)
 gk.draw.draw_torque_curve(single_cycle)
 
 # %% [markdown]
-# The curve is $T_{12}$, the frame's torque on the crank: the engine's turning-moment diagram is its
-# mirror image, $T = -T_{12}$, positive while the gas drives. On the return stroke only the inertia of
-# the reciprocating parts acts: it takes energy from the shaft while the piston speeds up and gives
-# it back while it slows down.
+# The curve is $T_{12}$, negative while the gas drives the crank and the shaft's load holds it back.
+# On the return stroke only the inertia of the reciprocating parts acts: it takes energy from the
+# shaft while the piston speeds up and gives it back while it slows down.
 #
 # Energy says what the mean must be. The gas does work $F_L \times 2r$ per turn (one stroke of
-# length $2r$); spread over a turn of $2\pi$ radians,
+# length $2r$), and the shaft's load takes it out; spread over a turn of $2\pi$ radians,
 #
-# $$T_{\text{mean}} = \frac{F_L\,2r}{2\pi} = \frac{F_L\,r}{\pi}.$$
+# $$\overline{T_{12}} = -\frac{F_L\,2r}{2\pi} = -\frac{F_L\,r}{\pi}.$$
 
 # %%
-print(f"mean turning moment from the sweep: {-single_cycle.average / 1e3:.3f} kN·m")
-print(f"F_L r / π                         : {68722.3393 * 0.3 / np.pi / 1e3:.3f} kN·m")
+print(f"mean T12 from the sweep: {single_cycle.average / 1e3:.3f} kN·m")
+print(f"−F_L r / π             : {-68722.3393 * 0.3 / np.pi / 1e3:.3f} kN·m")
 
 # %% [markdown]
 # (The last digit differs by the sweep's 1° steps.) The peak is almost four times the mean: this is the fluctuation a flywheel smooths out (lesson 04)
 # and the reason engines have several cylinders with their cranks spread round the turn.
 
-# %% tags=["remove-input"]
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+# The lesson's own check (folded): it keeps what the text above says right; nothing to do here.
 assert abs(steady.average) < 1e-6 * abs(steady.torque).max()
 mean_T = 68722.3393 * 0.3 / np.pi
 assert abs(-single_cycle.average / mean_T - 1) < 1e-4
 assert 3.5 < abs(single_cycle.torque).max() / mean_T < 4.0  # "almost four times"
 out = (single_cycle.q > 0.01) & (single_cycle.q < np.pi - 0.01)
-assert (-single_cycle.torque[out] > 0).mean() > 0.9  # "positive while the gas drives", all but near the dead centres
+assert (single_cycle.torque[out] < 0).mean() > 0.9  # "negative while the gas drives", all but near the dead centres
 no_gas = gk.sweep(gk.parse_problem(text.replace('magnitude = "68722.3393 N"', 'magnitude = "0 N"')), 360)
 assert abs(no_gas.average) < 1e-6 * abs(no_gas.torque).max()  # inertia alone: no net work
 
@@ -208,9 +214,9 @@ assert abs(no_gas.average) < 1e-6 * abs(no_gas.torque).max()  # inertia alone: n
 # gave you in place of `"your-id"` and run the cell; the box shows your data.
 #
 # Work it **by hand first**, with the steps of section 2: $F_L$, $F_I$, $F_P$, $\varphi$, then $F_Q$,
-# $F_N$ and $T$. Use the exact $a_P$ of section 1: this engine's rod is short ($n = 4$), and the
-# grader allows 1 %. Mind the sense of $T_{12}$: the frame holds the crank *against* the engine's turning
-# moment. Type your three answers with their units (`"1234 N"`, `"56.7 N*m CW"`) and press **Check**:
+# $F_N$ and $T_{12}$. Use the exact $a_P$ of section 1: this engine's rod is short ($n = 4$), and the
+# grader allows 1 %. Mind the sense of $T_{12}$ (section 1): the shaft's load holds the crank *against*
+# the gas. Type your three answers with their units (`"1234 N"`, `"56.7 N*m CW"`) and press **Check**:
 # the grader says which are right and, when one is off, what slip it looks like.
 
 # %%
@@ -225,7 +231,8 @@ gk.exercise("engine_efforts", student)
 mine = gk.exercises.variant("engine_efforts", student).problem
 print(gk.format_solution(mine, mine.solve()))
 
-# %% tags=["remove-input"]
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+# The lesson's own check (folded): it keeps what the text above says right; nothing to do here.
 key = {q["id"]: q["answer"]["si"] for q in gk.exercises.key("engine_efforts", student)["questions"]}
 worked = mine.solve()
 assert np.isclose(key["F_Q"], np.hypot(*worked.force(3, 4)[0]), rtol=1e-9)

@@ -84,7 +84,8 @@ by_matrix = static_engine.solve().effort
 print(f"turning moment by virtual work:  {-by_power.item() / 1e3:.4f} kN·m")
 print(f"turning moment by the matrix:    {-by_matrix.item() / 1e3:.4f} kN·m   (book 5.06 kN·m)")
 
-# %% tags=["remove-input"]
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+# The lesson's own check (folded): it keeps what the text above says right; nothing to do here.
 theta, r_crank, n = np.radians(30), 0.3, 4.5
 F_P = 35342.917353 - 6480 - 600
 by_hand = F_P * r_crank * (np.sin(theta) + np.sin(2 * theta) / (2 * np.sqrt(n**2 - np.sin(theta) ** 2)))
@@ -134,7 +135,8 @@ gk.draw.draw_torque_curve(cycle)
 # loads give back all they take — the kinetic energy ends where it began — so the mean input power is
 # the mean power of the cutting forces alone.
 
-# %% tags=["remove-input"]
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+# The lesson's own check (folded): it keeps what the text above says right; nothing to do here.
 assert np.abs(from_power - cycle.torque).max() < 1e-9 * np.abs(cycle.torque).max()
 powers_140 = gk.load_powers(at_140)
 assert powers_140["Fc3 (cutting)"].item() < 0 < powers_140["Fc4 (cutting)"].item()  # "blade 4 gives some back"
@@ -184,6 +186,7 @@ mine = gk.exercises.variant("virtual_work", student).problem
 print(f"T12 by virtual work: {gk.effort_by_virtual_work(mine.kinematics()).item():.1f} N·m")
 print(f"T12 by the matrix:   {mine.solve().effort.item():.1f} N·m   (negative: clockwise)")
 
-# %% tags=["remove-input"]
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+# The lesson's own check (folded): it keeps what the text above says right; nothing to do here.
 key = gk.exercises.key("virtual_work", student)["questions"][0]["answer"]["si"]
 assert np.isclose(key, gk.effort_by_virtual_work(mine.kinematics()).item(), rtol=1e-9)

@@ -68,7 +68,8 @@ print(f"resultant  W   = {np.hypot(*F23) / lbf:.2f} lb   (book 155.46 lb)")
 # graphkin's forces are 0.04 % above the book's, and all of that is the book's constant: it writes
 # 63 000 for 63 025 in $T = 63\,000\,\text{hp}/n$.
 
-# %% tags=["remove-input"]
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+# The lesson's own check (folded): it keeps what the text above says right; nothing to do here.
 W_t = 63025.0 * 5 / 1725 / 1.25  # lb, 1 hp = 6600 lb·in/s exactly gives 63 025 (to 0.002 %)
 assert np.isclose(F23[1] / lbf, W_t, rtol=5e-5)
 assert np.isclose(F23[0] / F23[1], np.tan(np.radians(20)), rtol=1e-12)
@@ -147,7 +148,8 @@ turning = gk.solve_kinematics(train.mechanism, train.q, 1.0)  # the arm at 1 rad
 print(f"ω_sun / ω_arm = {turning.omega[4].item():.3f}")
 print(f"T12 by virtual work = {gk.effort_by_virtual_work(train.kinematics()).item():.1f} N·m")
 
-# %% tags=["remove-input"]
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+# The lesson's own check (folded): it keeps what the text above says right; nothing to do here.
 assert np.isclose(T12, -500, rtol=1e-12)
 assert np.isclose(np.hypot(*F43), 2500 / np.cos(np.radians(20)), rtol=1e-12)
 assert np.isclose(np.hypot(*F31), np.hypot(*F43), rtol=1e-12)
@@ -181,7 +183,8 @@ gk.exercise("epicyclic_torques", student)
 mine = gk.exercises.variant("epicyclic_torques", student).problem
 print(gk.format_solution(mine, mine.solve()))
 
-# %% tags=["remove-input"]
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+# The lesson's own check (folded): it keeps what the text above says right; nothing to do here.
 key = {q["id"]: q["answer"]["si"] for q in gk.exercises.key("epicyclic_torques", student)["questions"]}
 T_S = mine.mechanism.loads[0].torque
 assert np.isclose(key["T12"], -5 * T_S, rtol=1e-9)

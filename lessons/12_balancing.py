@@ -122,7 +122,8 @@ for c in (0, 1 / 2, 2 / 3, 1):
 # terms the series leaves out (459 N). "Full" balance of the primary only turns it through 90°. The best choice depends on the mounting: an engine on springs that are soft sideways
 # would take a small $c$.
 
-# %% tags=["remove-input"]
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+# The lesson's own check (folded): it keeps what the text above says right; nothing to do here.
 m_R, r, n, omega = 1.0, 0.050, 4.0, 1800 * 2 * np.pi / 60
 theta = half.q
 S = half.shaking_force()
@@ -171,7 +172,8 @@ gk.exercise("engine_balance", student)
 mine = gk.exercises.variant("engine_balance", student).problem
 print(gk.format_solution(mine, mine.solve()))
 
-# %% tags=["remove-input"]
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+# The lesson's own check (folded): it keeps what the text above says right; nothing to do here.
 key = {q["id"]: q["answer"]["si"] for q in gk.exercises.key("engine_balance", student)["questions"]}
 worked = mine.solve()
 F12 = worked.force(1, 2)[0]

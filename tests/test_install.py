@@ -1,6 +1,6 @@
 """graphkin as users install it: the wheel with no extras in a fresh environment runs the core commands, and what
-needs an extra says which in one line; the sdist and the wheel carry the licence and no tests; the README's
-links work on the package index (absolute)."""
+needs an extra says which in one line; the sdist and the wheel carry the licence and no tests, the wheel the lesson
+notebooks; the README's links work on the package index (absolute)."""
 
 from __future__ import annotations
 
@@ -69,6 +69,7 @@ def test_the_core_install_has_no_notebook_stack(core):
     (["exercise", "export", "single_link", "--to", "prairielearn", "-o", "pl"], ""),
     (["animate", "strip_cutter", "-o", "a.gif", "--frames", "3", "--dpi", "20"], "3 frames"),
     (["explore", "strip_cutter", "-o", "page.html", "--n", "12"], "page.html"),  # the wheel's JavaScript
+    (["lessons", "course"], "lessons written to course (01_"),
 ])
 def test_the_core_commands_run_without_any_extra(core, tmp_path, argv, expect):
     r = _run(core, *argv, cwd=tmp_path)
@@ -124,6 +125,14 @@ def test_the_wheel_and_the_sdist_carry_the_licence_and_the_sdist_no_tests(dist):
         members = [m.name.split("/", 1)[1] for m in t.getmembers() if "/" in m.name]
     assert "LICENSE" in members and "pyproject.toml" in members
     assert not [m for m in members if m.startswith("tests/")]  # the tests need the repository: run them from a clone
+
+
+@pytest.mark.slow
+def test_the_wheel_carries_every_lesson_as_committed(dist):
+    """``graphkin lessons DIR`` copies them from the wheel: each notebook of lessons/, byte for byte."""
+    with zipfile.ZipFile(dist[0]) as z:
+        packed = {n.rsplit("/", 1)[1]: z.read(n) for n in z.namelist() if n.startswith("graphkin/lessons/")}
+    assert packed == {p.name: p.read_bytes() for p in sorted((ROOT / "lessons").glob("[0-9][0-9]_*.ipynb"))}
 
 
 def test_the_version_is_written_once():

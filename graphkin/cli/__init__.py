@@ -9,6 +9,7 @@
 ``handout``    worked solutions and worksheets (:mod:`graphkin.cli.handout`)
 ``flywheel``   a flywheel from a turning-moment diagram (:mod:`graphkin.cli.flywheel`)
 ``animate``    the mechanism moving with its forces, as GIF, MP4 or HTML (:mod:`graphkin.cli.animate`)
+``lessons``    the lesson notebooks copied for a course (:mod:`graphkin.cli.lessons`)
 =============  =====================================================================
 
 Each command module has ``add_parser(subparsers)`` and ``run(args) -> exit
@@ -33,12 +34,12 @@ import signal
 import sys
 
 from graphkin import __version__
-from graphkin.cli import animate, cycle, exercise, explore, flywheel, handout, listing, solve
+from graphkin.cli import animate, cycle, exercise, explore, flywheel, handout, lessons, listing, solve
 from graphkin.cli._common import Parser, one_line_warnings, single_threaded_blas
 from graphkin.errors import GraphkinError
 
 COMMANDS = {"list": listing, "solve": solve, "cycle": cycle, "exercise": exercise, "explore": explore,
-            "handout": handout, "flywheel": flywheel, "animate": animate}
+            "handout": handout, "flywheel": flywheel, "animate": animate, "lessons": lessons}
 """Each command and the module that carries it out, in the order ``graphkin --help`` lists them."""
 
 
