@@ -10,6 +10,8 @@ CPU time (``time.process_time``) of one run each:
   2  the loop of single solves: per design, set_field on the file's data, build_problem, sweep, and the figures
      of merit read off the Cycle (what the equality test does)
   3  its parts, summed over the designs: building the problems, the sweeps, the figures of merit
+  4  for reference, the floor a broadcast over designs would approach: one design swept at D·N positions in one
+     batch, and 5 the arrays its figures of merit are read from (peaks, shaking force and moment, μ)
 
 and the peak memory of the study (``tracemalloc``, a separate run) per design-position. The aims (issue 39):
 the study ≤ 2 s and ≥ 20× faster than the loop, ≤ 200 B per design-position. Today the study *is* a loop over
@@ -61,6 +63,12 @@ def main(designs: int = 1000) -> int:
     cycles, t_sweep = cpu(lambda: [sweep(p, N) for p in problems])
     _, t_merit = cpu(lambda: [merit(c, d.values, s.Cs) for c, d in zip(cycles, s.designs)])
     _, t_loop = cpu(lambda: [merit(sweep(_build(data, vary, d.values), N), d.values, s.Cs) for d in s.designs])
+    # The floor a broadcast over designs would approach: one mechanism swept at D·N positions in one batch, and
+    # the arrays the figures of merit are read from (the same work per position, no per-design Python).
+    at = np.linspace(0.0, 2 * np.pi, len(s.designs) * sweep(problems[0], N).n, endpoint=False)
+    batch, t_batch = cpu(lambda: sweep(problems[0], at=at))
+    _, t_arrays = cpu(lambda: (batch.peaks(), batch.shaking_force(), batch.shaking_moment(),
+                               batch.transmission_angle()))
 
     tracemalloc.start()
     study("strip_cutter", vary, n=N)
@@ -71,7 +79,8 @@ def main(designs: int = 1000) -> int:
     print(f"strip cutter: {D} designs × {positions} positions = {cells:,} design-positions "
           f"(vectorised over designs: {s.vectorised})")
     rows = [("1 study(...)", t_study), ("2 loop of single solves", t_loop), ("3a   build_problem", t_build),
-            ("3b   sweep", t_sweep), ("3c   figures of merit", t_merit)]
+            ("3b   sweep", t_sweep), ("3c   figures of merit", t_merit),
+            ("4 one sweep of D·N positions", t_batch), ("5   its figures' arrays", t_arrays)]
     print(f"{'':28}{'CPU s':>9}{'µs/design-position':>20}{'ms/design':>11}")
     for name, t in rows:
         print(f"{name:28}{t:9.3f}{1e6 * t / cells:20.3f}{1e3 * t / D:11.3f}")
