@@ -42,7 +42,7 @@ from graphkin.notation import position_text
 from graphkin.problem import build_problem
 from graphkin.problem.fields import missing, set_field
 
-__all__ = ["MAX_DESIGNS", "Design", "Study", "VaryError", "study"]
+__all__ = ["MAX_DESIGNS", "Design", "Study", "VaryError", "merit", "study"]
 
 MAX_DESIGNS = 100_000
 """The most designs one study solves (the product of the numbers of values of its fields)."""
@@ -134,6 +134,8 @@ class Study:
         True if the designs were solved as one batch over designs and positions.
     why_not_vectorised : str or None
         Why not, when they were not.
+    crank : bool
+        True if the driver is a crank (the effort is a torque [N·m]); False for a slider (a force [N]).
     """
 
     problem: str
@@ -144,6 +146,7 @@ class Study:
     Cs: float
     vectorised: bool
     why_not_vectorised: str | None
+    crank: bool = True
 
     @property
     def shape(self) -> tuple:
@@ -294,7 +297,7 @@ def study(problem, vary: Mapping[str, Any], *, n: int | None = None, Cs: float =
                 raise VaryError(field, f"{value!r}: " + (exc.message if exc.field == field else str(exc))) from None
             except GraphkinError as exc:
                 raise VaryError(field, f"{value!r}: {exc}") from None
-    designs = []
+    designs, crank = [], build_problem(data, file=file, base=base).mechanism.driver.crank
     for values in itertools.product(*grid):
         try:
             p = _design_problem(data, fields, values, file, base)
@@ -302,4 +305,4 @@ def study(problem, vary: Mapping[str, Any], *, n: int | None = None, Cs: float =
             designs.append(_unbuilt(values, str(exc)))
             continue
         designs.append(merit(sweep(p, n), values, Cs))
-    return Study(file, fields, grid, tuple(designs), n, Cs, False, NOT_VECTORISED)
+    return Study(file, fields, grid, tuple(designs), n, Cs, False, NOT_VECTORISED, crank)

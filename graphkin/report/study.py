@@ -9,9 +9,6 @@ import math
 
 from graphkin.report.plain import number
 
-_UNITS = {"torque": "N*m", "force": "N", "moment": "N*m", "inertia": "kg*m^2", "angle": "rad"}
-"""The SI unit of each kind of figure of merit (a slider driver's effort is a force: the torque's entries are N)."""
-
 
 def study_data(study) -> dict:
     """Every design of a study and its figures of merit, as plain data in SI units (schema: docs/json.md).
@@ -24,7 +21,7 @@ def study_data(study) -> dict:
     Returns
     -------
     dict
-        ``{"problem", "fields", "grid", "n", "Cs", "vectorised", "why_not_vectorised", "units", "designs"}``;
+        ``{"problem", "fields", "grid", "n", "Cs", "vectorised", "why_not_vectorised", "driver", "units", "designs"}``;
         each design ``{"values", "ok", "failure", "failed_at", "torque_peak", "torque_rms", "I_s", "no_flywheel",
         "shaking_force_peak", "shaking_moment_peak", "transmission_angle_min", "joint_peaks"}``, a figure that
         is not defined (or of a design that fails) null.
@@ -32,7 +29,10 @@ def study_data(study) -> dict:
     return {
         "problem": study.problem, "fields": list(study.fields), "grid": [list(v) for v in study.grid],
         "n": study.n, "Cs": study.Cs, "vectorised": study.vectorised, "why_not_vectorised": study.why_not_vectorised,
-        "units": _UNITS,
+        "driver": "crank" if study.crank else "slider",
+        # A slider's driving effort is a force: torque_peak and torque_rms are then in N.
+        "units": {"torque": "N*m" if study.crank else "N", "force": "N", "moment": "N*m", "inertia": "kg*m^2",
+                  "angle": "rad"},
         "designs": [{
             "values": list(d.values), "ok": d.ok, "failure": d.failure, "failed_at": number(d.failed_at),
             "torque_peak": number(d.torque_peak), "torque_rms": number(d.torque_rms),
@@ -68,7 +68,9 @@ def format_study(data: dict) -> str:
     """
     designs = data["designs"]
     joints = next((list(d["joint_peaks"]) for d in designs if d["joint_peaks"]), [])
-    heads = (list(data["fields"]) + ["T_peak [N·m]", "T_rms [N·m]", f"I_s (C_s={data['Cs']:g}) [kg·m²]",
+    effort = "T [N·m]" if data["driver"] == "crank" else "F [N]"
+    heads = (list(data["fields"]) + [effort.replace(" ", "_peak "), effort.replace(" ", "_rms "),
+                                     f"I_s (C_s={data['Cs']:g}) [kg·m²]",
                                      "shaking F [N]", "shaking M [N·m]", "μ_min [°]"]
              + [f"|{j}| peak [N]" for j in joints])
     rows, notes = [], []

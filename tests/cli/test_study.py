@@ -79,3 +79,13 @@ def test_a_field_varied_twice_is_named(capsys):
 def test_values_are_equally_spaced_in_the_unit_given():
     assert vary_values("links[1].mass = 2..3 kg:3") == ("links[1].mass", ["2.0 kg", "2.5 kg", "3.0 kg"])
     assert vary_values("driver.omega=600..900 rpm:1" .replace("900", "600"))[1] == ["600.0 rpm"]
+
+
+def test_a_slider_drivers_effort_is_a_force(capsys):
+    code, out, _ = run(capsys, "double_slider", "--vary", "links[1].mass=4..6 kg:3", "--json")
+    got = json.loads(out)
+    assert code == 0 and got["driver"] == "slider" and got["units"]["torque"] == "N"
+    efforts = [d["torque_peak"] for d in got["designs"]]
+    assert efforts == sorted(efforts) and efforts[0] < efforts[-1]  # a heavier rod takes a larger push
+    code, out, _ = run(capsys, "double_slider", "--vary", "links[1].mass=4..6 kg:3")
+    assert "F_peak [N]" in out and "T_peak" not in out
