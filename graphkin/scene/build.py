@@ -69,7 +69,8 @@ def scene(problem, n: int = 360, *, polygons: bool = True) -> dict:
     (1, 40, {'symbol': 'T', 'sub': '12', 'mark': '', 'unit': 'N*m'})
     """
     mech = problem.mechanism
-    cycle = sweep(problem, n) if mech.driver.crank else sweep(problem)
+    # A book's measured values ([given]) hold at its own position only: the cycle is the motion the input produces.
+    cycle = sweep(problem.without_given(), n) if mech.driver.crank else sweep(problem)
     result = cycle.analysis
     kin = result.kinematics
     valid = np.asarray(result.valid, bool)
