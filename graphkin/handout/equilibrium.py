@@ -198,10 +198,11 @@ def analytical(doc: Doc, s: Subject, entry: dict, i: int, inertia=None, free_bod
     if inertia is not None:
         doc.heading(3, "Step 1. The inertia loads")
         inertia()
+        if free_bodies is not None:
+            free_bodies()
+            free_bodies = None
     else:
         doc.heading(3, "Step 1. The inertia loads: none, a static analysis")
-    if free_bodies is not None:
-        free_bodies()
     solved: set[int] = set()
     for n, g in equilibrium_steps(s.mech):
         rows = [3 * s.mech.moving.index(link) + k for link in g.links for k in range(3)]
@@ -214,3 +215,7 @@ def analytical(doc: Doc, s: Subject, entry: dict, i: int, inertia=None, free_bod
                  [unknown(names[c]), M.op("="), M.qty(x[c], unit_of(names[c]))]]
         doc.equation(*lines, M.row(M.op("⇒"), M.SP, *found), stacked=True)
         solved.update(columns)
+        if free_bodies is not None:
+            # After the first group's equations, not straight after a heading: the float would take the heading.
+            free_bodies()
+            free_bodies = None
