@@ -363,6 +363,13 @@ def _step_hint(n: int, step) -> str:
     return f"step {n} of the construction: {step.caption}"
 
 
+def equilibrium_steps(mech) -> list[tuple[int, object]]:
+    """The analytical solution's steps after the inertia loads (step 1): each group's equilibrium, numbered from 2,
+    from the last group located to the driver (the order the closed-form solve takes). A key prints these numbers
+    (:mod:`graphkin.handout.equilibrium`) and the feedback points to them."""
+    return list(enumerate(reversed(plan_of(mech).groups), 2))  # decomposed once, when the problem was built
+
+
 def _analytical_hint(solved, q: Question) -> str:
     """The step of the analytical solution that gives ``q``: the inertia loads first, then each group's
     equilibrium from the last group to the driver (the order the closed-form solve takes)."""
@@ -372,13 +379,12 @@ def _analytical_hint(solved, q: Question) -> str:
         return (f"step 1 of the analytical solution: link {q.link}'s inertia loads, F_i = −m a_G and T_i = −I_G α, "
                 f"from its accelerations{then}")
     mech = solved.problem.mechanism
-    groups = list(reversed(plan_of(mech).groups))  # decomposed once, when the problem was built
     if kind in ("driver_torque", "driver_force"):
         want = None
     else:
         i, j = parse_force_name(mech, q.find)
         want = {i, j}
-    for n, g in enumerate(groups, 2):
+    for n, g in equilibrium_steps(mech):
         if isinstance(g, DriverGroup) and want is None:
             return (f"step {n} of the analytical solution: the equilibrium of the driver (link {g.links[0]}): ΣF = 0 "
                     f"and ΣM = 0 about its pivot, with the forces of the links it drives, give {q.find}")
@@ -389,6 +395,11 @@ def _analytical_hint(solved, q: Question) -> str:
     return "the equilibrium equations ΣF = 0, ΣM = 0 of every link (the rows of [A]{x} = {b})"
 
 
+_POLYGONS = "of the construction of the polygons"
+"""Where a motion question's hint points: a step of the velocity and acceleration polygons, which a key numbers
+apart from the force construction's."""
+
+
 def _motion_hint(solved, q: Question) -> str:
     """The step of the velocity or acceleration polygon that finds the value (its caption's numbers left out)."""
     mc = solved.motion
@@ -397,12 +408,12 @@ def _motion_hint(solved, q: Question) -> str:
         if step.polygon != polygon or q.link not in step.links:
             continue
         if q.kind == "a_G" and step.kind == "image":
-            return f"step {n} of the construction: the acceleration image of link {q.link} and its point g{q.link}′"
+            return f"step {n} {_POLYGONS}: the acceleration image of link {q.link} and its point g{q.link}′"
         if q.kind == "coriolis" and any(v.name.startswith("a^c_") for v in step.vectors):
-            return f"step {n} of the construction: the Coriolis component 2ωv of the sliding pair, and its sense"
+            return f"step {n} {_POLYGONS}: the Coriolis component 2ωv of the sliding pair, and its sense"
         if q.kind in ("omega", "alpha") and step.kind in ("dyad", "gear", "driver"):
             what = "relative velocity" if q.kind == "omega" else "tangential component"
-            return (f"step {n} of the construction: the {what} of link {q.link} in the {polygon} polygon, over the "
+            return (f"step {n} {_POLYGONS}: the {what} of link {q.link} in the {polygon} polygon, over the "
                     "length it turns about")
     return f"the {polygon} polygon"
 

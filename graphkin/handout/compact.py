@@ -1,5 +1,7 @@
-"""The key as a textbook prints a solution: the motion, the inertia loads, the free bodies, the lines of action,
-the force polygons and their equations with the numbers in, and the answers in a box.
+"""The key as a textbook prints a solution, both ways: the motion; the analytical route (the inertia loads, then
+each link's equilibrium equations with the numbers in, group by group, :mod:`graphkin.handout.equilibrium`); the
+graphical route (the free bodies, the lines of action, the force polygons and every step of the construction,
+numbered as an exercise's feedback names them); and the answers, after the work that finds them.
 
 Every drawing is printed at the scales it states (:mod:`graphkin.handout.scaled`): the free bodies at one force
 scale, the polygons at one force scale. The kinematics loop by loop, the matrix [A]{x} = {b} and every step of
@@ -11,46 +13,56 @@ from __future__ import annotations
 
 import numpy as np
 
+from graphkin.exercises.exercise import MOTION_KINDS
+from graphkin.exercises.quantities import equilibrium_steps
+from graphkin.handout import book, equilibrium, scaled
 from graphkin.handout import maths as M
 from graphkin.handout import motion as polygons
-from graphkin.handout import scaled
 from graphkin.handout.document import Doc, Subject
 from graphkin.handout.sections import link_table, loads
-from graphkin.model import Revolute
 
 
 def solution(doc: Doc, s: Subject, entry: dict, c, i: int):
-    """A position's compact solution (its heading is the caller's)."""
+    """A position's compact solution (its heading is the caller's): the motion, the analytical route step by step,
+    the graphical route step by step, and the answers after the work that finds them."""
     motion(doc, s, entry)
-    polygons.key(doc, s, i)
-    if not s.static:
-        inertia(doc, s, entry)
+    polygons.key(doc, s, i, steps=_motion_asked(s), explain=False)
     loads(doc, s, entry)
-    if c is None or not c.valid:
+    drawn = c is not None and c.valid
+    bodies = []
+    equilibrium.analytical(doc, s, entry, i, inertia=None if s.static else lambda: inertia(doc, s, entry),
+                           free_bodies=(lambda: bodies.append(free_bodies(doc, s, c, i))) if drawn else None)
+    book.asked(doc, s, entry, i)
+    if not drawn:
         doc.text(f"The construction cannot be drawn here: {c.reason if c is not None else 'no solution'}.")
     else:
-        graphical(doc, s, entry, c, i)
-    crank_pin(doc, s, entry, i)
-    answers(doc, s, entry)
+        graphical(doc, s, entry, c, i, bodies[0] if bodies else None)
+    answers(doc, s, entry, c)
+
+
+def _motion_asked(s: Subject) -> bool:
+    """Whether an exercise asks for what the velocity and acceleration polygons find: its key numbers their
+    steps, which the feedback names."""
+    return s.variant is not None and any(q.kind in MOTION_KINDS for q in s.variant.exercise.questions)
 
 
 def motion(doc: Doc, s: Subject, entry: dict):
-    doc.heading(2, "Position" if s.static else "Motion")
-    if not s.static:
-        doc.text("Each link's angle, angular velocity and angular acceleration, and the acceleration of its centre of "
-                 "mass, from the position, velocity and acceleration loops:")
+    doc.text("Each link's position θ, from the position loops:" if s.static else
+             "The motion: each link's θ, ω and α, and the acceleration of its centre of mass, from the position, "
+             "velocity and acceleration loops:")
     link_table(doc, entry, s.static)
 
 
 def inertia(doc: Doc, s: Subject, entry: dict):
-    doc.heading(2, "Inertia loads")
+    """Each link's inertia force and torque with the numbers in (the offset h of their resultant is the
+    construction's: its step that draws the resultant gives it)."""
     lines, still = [], []
     for link, d in entry["links"].items():
         body = s.mech.link(int(link))
         if body.mass == 0:
             still.append(link)
             continue
-        F, T, h = d["inertia_force"], d["inertia_torque"], d["h"]
+        F, T = d["inertia_force"], d["inertia_torque"]
         if not any(F) and not T:
             still.append(link)
             continue
@@ -62,19 +74,14 @@ def inertia(doc: Doc, s: Subject, entry: dict):
         lines.append(M.row(Ti, M.op("="), M.op("−"), M.sym("I", f"G{link}"), M.sym("α", link), M.op("="), M.op("−"),
                            M.paren(M.qty(body.I_G, "kg·m²")), M.paren(M.qty(d["alpha"], "rad/s²")), M.op("="),
                            M.qty(T, "N·m"), M.t(" (CCW)" if T > 0 else " (CW)" if T < 0 else "")))
-        if h is not None:
-            lines.append(M.row(M.sym("h", link), M.op("="), M.frac(M.absval(Ti), M.absval(Fi)), M.op("="),
-                               M.frac(M.qty(abs(T), "N·m"), M.qty(M.size_of(F), "N")), M.op("="),
-                               M.qty(h * 1e3, "mm")))
     if lines:
-        doc.text("d'Alembert: on each link the inertia force ", M.row(M.op("−"), M.i("m"), M.sym("a", "G")),
-                 " at G and the inertia torque ", M.row(M.op("−"), M.sym("I", "G"), M.i("α")), " combine into one "
-                 "force of the same size, on a line offset from G by ",
-                 M.row(M.i("h"), M.op("="), M.frac(M.absval(M.i("T")), M.absval(M.i("F")))),
-                 " to the side that reproduces the torque's sense:")
-        doc.equation(*lines)
+        doc.text("Each link's inertia force ", M.row(M.op("−"), M.i("m"), M.sym("a", "G")), ", at G, and inertia torque ",
+                 M.row(M.op("−"), M.sym("I", "G"), M.i("α")), ":")
+        doc.equation(*lines, stacked=True)
+    # A massless link needs no word: the mass properties say so. One that moves without accelerating does.
+    still = [link for link in still if s.mech.link(int(link)).mass > 0]
     if still:
-        doc.text(f"Link{'s' if len(still) > 1 else ''} {', '.join(still)}: no inertia loads here (massless, or ",
+        doc.text(f"Link{'s' if len(still) > 1 else ''} {', '.join(still)}: no inertia loads here (",
                  M.row(M.sym("a", "G"), M.op("="), M.n(0)), " and ", M.row(M.i("α"), M.op("="), M.n(0)), ").")
 
 
@@ -106,67 +113,52 @@ def _result(step) -> list:
     return items
 
 
-def graphical(doc: Doc, s: Subject, entry: dict, c, i: int):
+def free_bodies(doc: Doc, s: Subject, c, i: int) -> str:
+    """The free bodies, which both routes start from: the analytical one writes their equations, the graphical one
+    draws their lines of action and polygons. Returns the figure's label."""
     links = list(s.mech.moving)
     k_fb, X_fb = scaled.free_body_scales(c, links)
-    doc.heading(2, "Free bodies")
-    doc.figure([scaled.free_bodies(s, c, i, links, k_fb, X_fb)],
-                       "Every force on each moving link" + ("" if s.static else
-                                                            ", the inertia resultant on its offset line") + ". "
-                       + scaled.statement(k_fb, X_fb))
+    return doc.figure([scaled.free_bodies(s, c, i, links, k_fb, X_fb)],
+                      "Every force on each moving link" + ("" if s.static else ", the inertia resultant on its offset "
+                                                           "line") + ". " + scaled.statement(k_fb, X_fb))
+
+
+def graphical(doc: Doc, s: Subject, entry: dict, c, i: int, bodies: str | None = None):
+    """The graphical route from the free bodies (``bodies``, their figure's label): the lines of action, the
+    force polygons, and every step of the construction numbered as the feedback names them, with what it finds."""
+    doc.heading(2, "The graphical construction")
+    first, at = doc.figures + 1, len(doc.blocks)
     concurrent = [st for st in c.steps if st.kind in ("three-force", "line", "couple") and st.lines]
     if concurrent:
         k = scaled.construction_scale(c, concurrent)
-        doc.heading(2, "Lines of action")
         titles = _construction_titles(concurrent) if len(concurrent) > 1 else None
         doc.figure([scaled.constructions(s, c, i, concurrent, k, titles)],
                    "The lines of action of each three-force member, and where they meet. " + scaled.statement(k))
-        for st in concurrent:
-            # A caption that names its sub-problem and link ("In sub-problem I, link 3 is …") needs no title.
-            named = not titles or f"link {st.link}" in st.caption[:40].lower()
-            doc.text(*M.prose(st.caption if named else f"{titles[concurrent.index(st)]}: {st.caption}"))
     steps = worked_steps(c)
     sums = [scaled.resultant_step(c, st) for st in c.steps if st.kind == "resultant" and not getattr(st, "sub", "")]
-    sums = [st for st in sums if st is not None]
-    drawn = sums + steps
-    if not drawn:
-        return
-    X = scaled.polygon_scale(drawn)
-    doc.heading(2, "Force polygons")
-    for st in sums:
-        R = -np.asarray(st.polygon[-1].vector, float)
-        name = st.polygon[-1].name[1:]
-        doc.equation(M.row(M.vec(M.name(name)), M.op("="),
-                           *[x for k, a in enumerate(st.polygon[:-1]) for x in ([M.op("+")] if k else []) +
-                             [M.vec(M.name(a.name))]],
-                           M.op("="), M.polar(M.size_of(R), M.angle_of(R), "N")))
-    labels = []
-    # As many figures as it takes for each to fit a page (the shaper's thirteen polygons take two).
-    for n, group in enumerate(scaled.polygon_groups(drawn, X, [_polygon_title(st) for st in drawn])):
-        titles = [_polygon_title(st) for st in group]
-        key = f"polygons-{i}" + (f"-{n + 1}" if n else "")
-        labels.append(doc.figure([scaled.polygons(s, key, group, X, c.driver_name, titles)],
-                                 ("The force polygons, tip to tail, each closing on its link's equilibrium. " if not n
-                                  else "The force polygons, continued. ") + scaled.statement(None, X)))
-    label = labels[0] if len(labels) == 1 else f"Figures {labels[0].split()[-1]}–{labels[-1].split()[-1]}"
-    doc.text(f"{label}, polygon by polygon:")
-    lines = []
-    for st in steps:
-        line = [polygon_equation(st)]
-        found = _result(st)
-        if found:
-            line += [M.SP, M.op("⇒"), M.SP, *found]
-        lines.append(M.row(*line))
-    doc.equation(*lines)
-    d = next((st for st in c.steps if st.kind == "driver" and not getattr(st, "sub", "")), None)
-    if d is not None and s.crank and "d" in d.values:
-        R = next(a for a in d.polygon if a.known)
-        T = c.effort
-        doc.equation(M.row(M.name(c.driver_name), M.op("="), M.op("±"), M.absval(M.name(R.name)), M.i("d"),
-                           M.op("="), M.qty(M.size_of(R.vector), "N"), M.op("·"), M.qty(d.values["d"] * 1e3, "mm"),
-                           M.op("="), M.qty(T, "N·m"), M.t(" (CCW)" if T > 0 else " (CW)" if T < 0 else "")))
-        doc.text(f"The pivot force and {R.name} form a couple of arm d; the driving torque balances it, "
-                 "in the opposite sense.")
+    drawn = [st for st in sums if st is not None] + steps
+    if drawn:
+        X = scaled.polygon_scale(drawn)
+        # As many figures as it takes for each to fit a page (the shaper's thirteen polygons take two).
+        groups = scaled.polygon_groups(drawn, X, [_polygon_title(st) for st in drawn])
+        for n, group in enumerate(groups):
+            titles = [_polygon_title(st) for st in group]
+            key = f"polygons-{i}" + (f"-{n + 1}" if n else "")
+            # The last polygons stand in the text, just before the answers they find (a float would go below them).
+            doc.figure([scaled.polygons(s, key, group, X, c.driver_name, titles)],
+                       ("The force polygons, tip to tail, each closing on its link's equilibrium. " if not n
+                        else "The force polygons, continued. ") + scaled.statement(None, X), inline=n == len(groups) - 1)
+    # The steps in words before the figures that draw them (which float to the tops and feet of pages).
+    items = []
+    for n, st in enumerate(c.steps, 1):
+        found = _result(st) if st.polygon else []
+        items.append((f"Step {n}. ", *M.prose(st.caption), *([" ⇒ ", M.row(*found)] if found else [])))
+    figures = f"Figure {first}" if doc.figures == first else f"Figures {first}–{doc.figures}"
+    figures = f"{bodies}'s free bodies, then {figures}" if bodies else figures
+    blocks, doc.blocks[at:] = doc.blocks[at:], []
+    doc.text(f"The construction, step by step ({figures} draw it):")
+    doc.items(items, small=True)
+    doc.blocks += blocks
 
 
 def _construction_title(step) -> str:
@@ -216,58 +208,28 @@ def polygon_equation(step) -> list:
     return M.row(*items, M.op("="), M.n("0"))
 
 
-def crank_pin(doc: Doc, s: Subject, entry: dict, i: int):
-    """The force of the coupler (or connecting rod) on the crank pin, along the crank and across it.
-
-    Books on engines ask for these: the thrust on the crank-shaft bearing F_B (along the crank, towards
-    the shaft) and the tangential force F_T that turns the crank, T = r F_T (Khurmi and Gupta, §15.10).
-    """
-    d = s.mech.driver
-    if not d.crank:
-        return
-    pivot = s.mech.joint_between(s.mech.frame, d.link)
-    pins = [j for j in s.mech.joints_of(d.link) if isinstance(j, Revolute) and s.mech.frame not in j.links]
-    if pivot is None or len(pins) != 1:
-        return
-    pin = pins[0]
-    other = (set(pin.links) - {d.link}).pop()
-    kin = s.result.kinematics
-    O = kin.position(d.link, pivot.point)[i]
-    P = kin.position(d.link, pin.point)[i]
-    r = float(np.hypot(*(P - O)))
-    if r <= 0:
-        return
-    u = (P - O) / r
-    name = s.result.name_of(other, d.link)
-    F = np.asarray(entry["forces"][name], float)
-    F_B = float(-F @ u)
-    F_T = float(F @ np.array([-u[1], u[0]]))
-    doc.heading(2, "At the crank pin")
-    doc.text(f"The force {name} of link {other} on the crank, resolved along the crank {pivot.point}{pin.point} "
-             f"(unit vector u) and across it (k × u, the sense of positive θ):")
-    doc.equation(
-        M.row(M.sym("F", "B"), M.op("="), M.op("−"), M.vec(M.name(name)), M.op("·"), M.i("u"), M.op("="),
-              s.qty(F_B, "force"), M.t(" (towards the shaft: a thrust on its bearing)" if F_B > 0 else
-                                   " (away from the shaft: a pull on its bearing)" if F_B < 0 else "")),
-        M.row(M.sym("F", "T"), M.op("="), M.vec(M.name(name)), M.op("·"), M.paren(M.i("k"), M.op("×"), M.i("u")),
-              M.op("="), s.qty(F_T, "force"), M.op(";"), M.SP, M.i("T"), M.op("="), M.i("r"), M.sym("F", "T"),
-              M.op("="), M.paren(s.qty(r, "length")), M.paren(s.qty(F_T, "force")), M.op("="),
-              s.qty(r * F_T, "torque")))
-
-
-def answers(doc: Doc, s: Subject, entry: dict):
+def answers(doc: Doc, s: Subject, entry: dict, c=None):
+    """The answers, after every drawing that finds them (the polygons float), with the steps that give them."""
     r = s.result
-    rows = []
+    cells = []
     for a, b in r.forces:
         name = r.name_of(a, b)
         F = entry["forces"][name]
-        rows.append([M.name(name), s.pair(F), s.polar(F)])
+        cells.append([M.name(name), s.pair(F), s.polar(F)])
     d = entry["driver"]
     if s.crank:
         sense = " CCW" if d["value"] > 0 else " CW" if d["value"] < 0 else ""
-        rows.append([M.name(d["name"]), "", (s.qty(d["value"], "torque"), sense)])
+        cells.append([M.name(d["name"]), "", (s.qty(d["value"], "torque"), sense)])
     else:
-        rows.append([M.name(d["name"]), s.pair(d["vector"]), (s.qty(d["value"], "force"), " along the guide")])
+        cells.append([M.name(d["name"]), s.pair(d["vector"]), (s.qty(d["value"], "force"), " along the guide")])
+    # Two answers a row: half the height of a table of one a row.
+    half = (len(cells) + 1) // 2
+    rows = [cells[k] + (cells[k + half] if k + half < len(cells) else ["", "", ""]) for k in range(half)]
+    doc.flush()
     doc.heading(2, "Answers")
-    doc.table(["", "x, y", "polar"], rows, "lrr", caption="Both routes give these: the graphical one reads "
-              "the polygons, the analytical one solves the equilibrium equations of every link.", boxed=True)
+    last = equilibrium_steps(s.mech)[-1][0]
+    how = f"the analytical solution's steps 2–{last} solve for them" if last > 2 else \
+        "the analytical solution's step 2 solves for them"
+    if c is not None and c.valid:
+        how += f"; the construction's steps 1–{len(c.steps)} draw them, to the same digits"
+    doc.table(["", "x, y", "polar"] * 2, rows, "lrrlrr", caption=f"Both routes give these: {how}.", boxed=True)

@@ -23,12 +23,13 @@ A block is a dict with a ``"kind"``:
 ``list``       ``items``: each a list of runs; ``ordered``
 ``table``      ``header`` and ``rows``: cells, each a list of runs; ``align``
                (one of ``l c r`` per column); ``caption`` (str or None)
-``equation``   ``lines``: math nodes, one displayed line each; ``small``
+``equation``   ``lines``: math nodes, one displayed line each; ``small``; ``stacked`` (set close, from the left)
 ``figure``     ``pictures`` (:class:`graphkin.handout.figures.Picture`, side by
                side), ``caption`` (starts ``"Figure k."``), ``label``
 ``space``      ``height`` [mm] of empty room to draw in by hand, ``label`` and ``math``
                (the equation of what to draw there, or None)
 ``pagebreak``  a new page (PDF only)
+``flush``      every figure before it placed before what follows (PDF only: the others do not float)
 =============  ==================================================================
 
 A *run* is a str (plain text) or a math node (a list, see
@@ -43,7 +44,7 @@ from __future__ import annotations
 
 from graphkin.errors import GraphkinError
 from graphkin.graphical.paper import FIGURE_WIDTH, length_scale, mechanism_size
-from graphkin.handout import compact, scaled
+from graphkin.handout import book, compact, scaled
 from graphkin.handout import motion as polygons
 from graphkin.handout.document import Doc, Subject, subject
 from graphkin.handout.sections import (
@@ -223,7 +224,7 @@ def _full(doc: Doc, s: Subject, worked):
         loads(doc, s, entry)
         matrix(doc, s, entry, i)
         forces(doc, s, entry)
-        compact.crank_pin(doc, s, entry, i)
+        book.asked(doc, s, entry, i)
         graphical(doc, s, entry, c, i)
     if s.cycle_asked:
         cycle(doc, s)

@@ -52,8 +52,9 @@ class Doc:
         self.blocks.append({"kind": "text", "runs": runs(parts),
                             "keep": isinstance(last, str) and last.rstrip().endswith(":")})
 
-    def items(self, items, ordered=False):
-        self.blocks.append({"kind": "list", "items": [runs(r) for r in items], "ordered": ordered})
+    def items(self, items, ordered=False, small=False):
+        """A list; ``small``: in a smaller type (a long list of steps beside the figures that draw them)."""
+        self.blocks.append({"kind": "list", "items": [runs(r) for r in items], "ordered": ordered, "small": small})
 
     def table(self, header, rows, align=None, caption=None, boxed=False, tall=False, small=False, wide=False):
         """``boxed``: framed, as a book boxes its answers; ``tall``: rows tall enough to write an answer in;
@@ -65,11 +66,14 @@ class Doc:
                             "boxed": boxed, "tall": tall, "wide": wide,
                             "small": small})
 
-    def equation(self, *lines, small=False):
-        self.blocks.append({"kind": "equation", "lines": list(lines), "small": small})
+    def equation(self, *lines, small=False, stacked=False):
+        """Displayed maths, a line each; ``small``: in a smaller type (a wide matrix); ``stacked``: a set of
+        equations read one after another (each link's ΣF = 0 and ΣM = 0), set close together from the left."""
+        self.blocks.append({"kind": "equation", "lines": list(lines), "small": small, "stacked": stacked})
 
-    def figure(self, pictures, caption: str) -> str:
-        """Add a figure; returns its name (``"Figure 3"``) for the text to refer to."""
+    def figure(self, pictures, caption: str, *, inline: bool = False) -> str:
+        """Add a figure; returns its name (``"Figure 3"``) for the text to refer to. ``inline``: where it stands in
+        the text, never floated to a page's top or foot (a key's last polygons, which its answers follow)."""
         self.figures += 1
         label = f"Figure {self.figures}"
         # A section that opens with a figure keeps its heading and any paragraphs before the figure on the
@@ -83,7 +87,7 @@ class Doc:
             for b in lead:
                 b["keep"] = True
         # The caption as text (alternative text, tests) and as runs, each symbol with its subscript (a_G3, F23).
-        self.blocks.append({"kind": "figure", "pictures": list(pictures),
+        self.blocks.append({"kind": "figure", "pictures": list(pictures), "inline": inline,
                             "caption": f"{label}. {typeset(caption)}", "label": label,
                             "runs": runs((f"{label}. ", *M.prose(caption)))})
         return label
@@ -94,6 +98,11 @@ class Doc:
 
     def pagebreak(self):
         self.blocks.append({"kind": "pagebreak"})
+
+    def flush(self):
+        """Every drawing named so far placed before what follows (a key's answers after the polygons that find
+        them, though the polygons float)."""
+        self.blocks.append({"kind": "flush"})
 
 
 # -- what the handout is about ---------------------------------------------------------

@@ -141,6 +141,8 @@ def _block(b: dict) -> str:
         return f'<div class="space" style="height: {b["height"]:g}mm">{esc(b["label"])}{extra}</div>'
     if kind == "pagebreak":
         return '<div class="pagebreak"></div>'
+    if kind == "flush":
+        return ""  # a page's figures do not float here
     raise ValueError(f"unknown block {kind!r}")
 
 

@@ -54,6 +54,8 @@ def _block(b: dict, folder: str, files: dict) -> str:
         return f"> **Draw here** ({b['height']:g} mm): {_text(b['label'])}{extra}\n>\n> &nbsp;"
     if kind == "pagebreak":
         return "---"
+    if kind == "flush":
+        return ""  # figures do not float here
     raise ValueError(f"unknown block {kind!r}")
 
 

@@ -46,8 +46,9 @@ def _unavailable(doc: Doc, mc) -> bool:
     return False
 
 
-def key(doc: Doc, s: Subject, i: int, *, steps: bool = False):
-    """The polygons of position ``i`` at stated scales; ``steps``: with every step of the construction, captioned."""
+def key(doc: Doc, s: Subject, i: int, *, steps: bool = False, explain: bool = True):
+    """The polygons of position ``i`` at stated scales; ``steps``: with every step of the construction, captioned;
+    ``explain``: with a sentence on how the polygons give ω, α and a_G (a compact key's caption is enough)."""
     if s.static:
         return
     mc = s.motion(i)
@@ -58,13 +59,14 @@ def key(doc: Doc, s: Subject, i: int, *, steps: bool = False):
                        f"The velocity polygon ({motion_text(Xv, 'velocity')}) and the acceleration polygon "
                        f"({motion_text(Xa, 'acceleration')}) at {s.where(i)}, constructed from {_input_text(s, mc)}. "
                        "Pole o (o′); each link's image shaded; g the image of its centre of mass.")
-    doc.text(f"{label} draws the same motion graphically: each ω and α above is a relative vector of a polygon over "
-             "the length it turns about (", M.row(M.sym("ω", "3"), M.op("="), M.sym("v", "BA"), M.op("/"), M.i("AB")),
-             "), and each ", M.sym("a", "G"), " the vector from o′ to its g′.")
+    if explain:
+        doc.text(f"{label} draws the same motion graphically: each ω and α above is a relative vector of a polygon over "
+                 "the length it turns about (", M.row(M.sym("ω", "3"), M.op("="), M.sym("v", "BA"), M.op("/"), M.i("AB")),
+                 "), and each ", M.sym("a", "G"), " the vector from o′ to its g′.")
     if not steps:
         return
-    doc.text("The construction, step by step (each step in the order drawn; measure each found vector at the "
-             "figure's scale):")
+    doc.text("The construction of the polygons, step by step (each step in the order drawn; measure each found "
+             "vector at the figure's scale):")
     doc.items([M.prose(f"{st.polygon.capitalize()} polygon, {st.kind}: {st.caption}") for st in mc.steps],
               ordered=True)
 

@@ -16,7 +16,7 @@ from graphkin.handout import scaled
 from graphkin.handout.document import Doc, Subject
 from graphkin.handout.figures import Picture
 from graphkin.handout.loops import groups
-from graphkin.model import Revolute
+from graphkin.model import Prismatic, Revolute
 from graphkin.notation import num, unit_text
 
 
@@ -55,8 +55,11 @@ def statement(doc: Doc, s: Subject, version: str, *, full: bool = False, at=(), 
 
 def notation(doc: Doc, s: Subject):
     """The sign convention in one paragraph (the full key draws it)."""
+    sliding = any(isinstance(j, Prismatic) for j in s.mech.joints)
     doc.text("Notation: ", M.sym("F", "ij"), " is the force of link i on link j, ",
              M.row(M.sym("F", "ji"), M.op("="), M.op("−"), M.sym("F", "ij")),
+             *(["; at a sliding pair it is written ", M.sym("G", "ij"), " (across the guide, but for friction)"]
+               if sliding else []),
              f". Link {s.mech.frame} is the frame. x to the right, y up; angles, ω, α and torques are positive "
              "counter-clockwise; a force in polar form is its magnitude ∠ its direction from +x." + _units_note(s))
 
@@ -202,11 +205,16 @@ def _given_rows(s: Subject, raw: dict, frame_number: int, i: int | None = None) 
             parts.append(f"{kind} " + _pretty(shape) if shape else kind)
         name = f"link {link.get('number', '?')}" + (f" ({link['name']})" if link.get("name") else "")
         rows.append([name, _joined(parts)])
+    pins = [f"links {'–'.join(map(str, j.get('links', [])))} at {j.get('point', '?')}" for j in raw.get("joints", [])
+            if j.get("type", "joint") == "revolute"]
+    if pins:
+        # One row for every pin: a pin says no more than which links it joins and where.
+        rows.append([f"revolute joint{'s' if len(pins) > 1 else ''}", "; ".join(pins)])
     for j in raw.get("joints", []):
         kind = j.get("type", "joint")
         if kind == "revolute":
-            text = f"links {'–'.join(map(str, j.get('links', [])))} at {j.get('point', '?')}"
-        elif kind == "prismatic":
+            continue
+        if kind == "prismatic":
             text = (f"slider {j.get('slider')} on guide {j.get('guide')} at {j.get('point')}, guide through "
                     f"{j.get('through')} at {_pretty(j.get('direction', '0 deg'))}")
             if "mu" in j:
@@ -258,11 +266,15 @@ def given(doc: Doc, s: Subject, i: int | None = None, own: bool = True):
         doc.text("A static analysis: the links' masses play no part (no inertia loads), so none are needed.")
         return
     moving = [s.mech.link(k) for k in s.mech.moving]
+    heavy = [b for b in moving if b.mass > 0 or b.I_G > 0]
     rows = [[f"link {b.number}", M.qty(b.mass, "kg"), M.qty(b.I_G, "kg·m²"),
-             M.pair(np.asarray(b.G) * 1e3, "mm")] for b in moving]
-    doc.table(["link", ("mass ", M.i("m")), ("inertia about G, ", M.sym("I", "G")), "G in the link's frame"], rows,
-              "lrrr", caption="Mass properties used (the file's shapes and radii of gyration worked out: "
-                              "the inertia about G is m k², or the shape's)")
+             M.pair(np.asarray(b.G) * 1e3, "mm")] for b in heavy]
+    light = [str(b.number) for b in moving if b not in heavy]
+    massless = (f"; link{'s' if len(light) > 1 else ''} {', '.join(light)} massless") if light else ""
+    if rows:
+        doc.table(["link", ("mass ", M.i("m")), ("inertia about G, ", M.sym("I", "G")), "G in the link's frame"],
+                  rows, "lrrr", caption="Mass properties used (the file's shapes and radii of gyration worked out: "
+                                        f"the inertia about G is m k², or the shape's){massless}")
 
 
 def questions(doc: Doc, s: Subject, answers: bool):

@@ -7,10 +7,10 @@ import math
 
 import numpy as np
 
-from graphkin.analytical.matrix import assemble
 from graphkin.cycle import sweep
 from graphkin.graphical.construction import STEP_TITLES
 from graphkin.graphical.paper import FIGURE_WIDTH, force_text, length_text
+from graphkin.handout import equilibrium as E
 from graphkin.handout import maths as M
 from graphkin.handout import scaled
 from graphkin.handout.compact import polygon_equation
@@ -19,25 +19,12 @@ from graphkin.notation import unless_rounding
 from graphkin.report import cycle_data
 
 
-def _clean(x, scale, rel=1e-12):
-    """Values below ``rel`` × ``scale`` set to 0: rounding noise (1e-17 where a lever arm is zero) would hide
-    the matrix's structure, as in :meth:`graphkin.analytical.matrix.System.format`."""
-    x = np.array(x, dtype=float)
-    x[np.abs(x) < rel * max(scale, 1e-300)] = 0.0
-    return x + 0.0
-
-
-def _unknown(name: str) -> list:
-    """``"F12x"`` → F₁₂ₓ, ``"N14"`` → N₁₄, ``"T12"`` → T₁₂."""
-    return M.sym(name[0], name[1:]) if len(name) > 1 else M.i(name)
-
-
 def matrix(doc: Doc, s: Subject, entry: dict, i: int):
-    system = _system(s)
+    system = E.system(s)
     A, b = system.A[i], system.b[i]
-    A, b = _clean(A, np.abs(A).max()), _clean(b, np.abs(b).max())
+    A, b = E.clean(A, np.abs(A).max()), E.clean(b, np.abs(b).max())
     x = system.solve()[i]
-    x = _clean(x, np.abs(x).max(), 1e-9)
+    x = E.clean(x, np.abs(x).max(), 1e-9)
     doc.heading(2, "Equilibrium equations: the matrix method")
     F_ext, M_ext = M.sym("F", "ext"), M.sym("M", "ext")
     moved = (M.row(M.op("−"), M.op("Σ"), F_ext, M.op(","), M.op("−"), M.op("Σ"), M_ext) if s.static else
@@ -47,9 +34,9 @@ def matrix(doc: Doc, s: Subject, entry: dict, i: int):
              f"{', '.join(map(str, s.mech.moving))} in turn; one column per unknown. Force columns in N, "
              "moment rows in N·m (lever arms in m); {b} holds the known loads moved across (", moved,
              "; static: no inertia terms)." if s.static else ").")
-    doc.text("The unknowns: ", *_definitions(s, system.unknowns))
+    doc.text("The unknowns: ", *E.definitions(s, system.unknowns))
     cells = [[M.n(v) for v in r] for r in A]
-    unknowns = [_unknown(u) for u in system.unknowns]
+    unknowns = [E.unknown(u) for u in system.unknowns]
     # Each row named by the equation it is (link 3: ΣFx), to the left of the matrix.
     labels = M.mat([[_equation_name(e)] for e in system.equations], "")
     doc.equation(M.row(labels, M.mat(cells), M.column(unknowns), M.op("="), M.column([M.n(v) for v in b])),
@@ -57,8 +44,7 @@ def matrix(doc: Doc, s: Subject, entry: dict, i: int):
     doc.text("Solved:")
     rows = []
     for u, value in zip(system.unknowns, x):
-        unit = "N·m" if u[0] in "CT" else "N"  # couples of sliding pairs and the crank's torque
-        rows.append([_unknown(u), M.qty(value, unit)])
+        rows.append([E.unknown(u), M.qty(value, E.unit_of(u))])
     doc.table(["unknown", "value"], rows, "lr")
 
 
@@ -70,39 +56,6 @@ def _equation_name(equation: str) -> list:
         return M.row(M.t(f"{link} {base}"))
     return M.row(M.t(f"{link} "), M.op(base[:1]), M.sym(base[1:], subscript)) if base[:1] == "Σ" else \
         M.row(M.t(f"{link} "), M.sym(base, subscript))
-
-
-def _definitions(s: Subject, unknowns) -> list:
-    """What each kind of unknown of the matrix is, as runs of a sentence."""
-    out, seen = [], set()
-    for u in unknowns:
-        letter, rest = u[0], u[1:]
-        if u == s.mech.driver.symbol:
-            text = [M.name(u), f" the driving {'torque [N·m]' if s.crank else 'force along the guide [N]'}"]
-        elif letter == "F" and rest[-1:] in ("x", "y"):
-            if rest[:-1] in seen:
-                continue
-            seen.add(rest[:-1])
-            i, j = rest[0], rest[1:-1]
-            text = [M.sym("F", rest[:-1] + "x"), ", ", M.sym("F", rest[:-1] + "y"),
-                    f" the components of the force of link {i} on link {j} at their pin [N]"]
-        elif letter == "N":
-            text = [M.sym("N", rest), f" the normal force of the sliding pair of links {rest[0]} and {rest[1:]} "
-                    f"(across the guide, on link {rest[1:]}) [N]"]
-        elif letter == "C":
-            text = [M.sym("C", rest), f" the couple link {rest[0]} applies to link {rest[1:]} through their sliding "
-                    "pair [N·m]"]
-        else:
-            text = [M.sym(letter, rest), f" the tooth force of link {rest[0]} on link {rest[1:]}, along the "
-                    "pressure line [N]"]
-        out += (["; "] if out else []) + text
-    return out + ["."]
-
-
-def _system(s: Subject):
-    if not hasattr(s, "_system"):
-        s._system = assemble(s.result)
-    return s._system
 
 
 def forces(doc: Doc, s: Subject, entry: dict):

@@ -61,6 +61,12 @@ def _equation(line, size: float) -> str:
     return body if M.width_bound(line) * size <= TEXT_WIDTH else _fit(body)
 
 
+def equation_size(b: dict) -> float:
+    """The type size [pt] an equation block is set at: 8 pt small (a wide matrix), 9 pt stacked (rows read one
+    after another), else 10 pt."""
+    return 8.0 if b.get("small") else 9.0 if b.get("stacked") else 10.0
+
+
 def _block(b: dict, floats: bool = False) -> str:
     kind = b["kind"]
     if kind == "heading":
@@ -70,7 +76,8 @@ def _block(b: dict, floats: bool = False) -> str:
         return f"#block(sticky: true)[{_inline(b['runs'])}]" if b.get("keep") else _inline(b["runs"])
     if kind == "list":
         mark = "+" if b["ordered"] else "-"
-        return "\n".join(f"{mark} {_inline(item)}" for item in b["items"])
+        body = "\n".join(f"{mark} {_inline(item)}" for item in b["items"])
+        return f"#text(size: 9pt)[\n{body}\n]" if b.get("small") else body
     if kind == "table":
         cols = len(b["header"])
         align = ", ".join(_ALIGN[a] + " + horizon" for a in b["align"])
@@ -89,8 +96,13 @@ def _block(b: dict, floats: bool = False) -> str:
             table = f"#block(stroke: 1.2pt, inset: 7pt, breakable: false)[\n{table}\n]"
         return table
     if kind == "equation":
-        size = 8.0 if b.get("small") else 10.0
+        size = equation_size(b)
         body = "\n".join(_equation(line, size) for line in b["lines"])
+        if b.get("stacked"):
+            # A set of equations read row by row (a link's ΣF and ΣM): set closer, from the left, as a book does.
+            # One block, never split over a page: a group's equations and what they give are read together.
+            return (f"#block(inset: (left: 1.5em), breakable: false)[#set block(spacing: 0.75em)\n"
+                    f"#show math.equation.where(block: true): set align(left)\n#text(size: 9pt)[{body}]]")
         return f"#text(size: 8pt)[{body}]" if b.get("small") else body
     if kind == "figure" and all(p.natural for p in b["pictures"]):
         # Printed at their own size: the scale a drawing states is the scale on the page.
@@ -99,7 +111,7 @@ def _block(b: dict, floats: bool = False) -> str:
         body = images[0] if len(images) == 1 else ("stack(dir: ltr, spacing: 1em, " + ", ".join(images) + ")")
         # A compact key floats its drawings to the top or bottom of a page, as a textbook sets them, so that text
         # fills the page instead of a gap before each figure that does not fit where it is named.
-        place = "placement: auto, " if floats else ""
+        place = "placement: auto, " if floats and not b.get("inline") else ""
         return f"#figure({body}, caption: [{_inline(b['runs'])}], {place}numbering: none, supplement: none)"
     if kind == "figure":
         pics = b["pictures"]
@@ -119,6 +131,8 @@ def _block(b: dict, floats: bool = False) -> str:
                 f"breakable: false)[#text(size: 9pt)[#{label}{extra}]]")
     if kind == "pagebreak":
         return "#pagebreak(weak: true)"
+    if kind == "flush":
+        return "#place.flush()"
     raise ValueError(f"unknown block {kind!r}")
 
 
@@ -146,7 +160,10 @@ def source(doc: dict, *, font: str | None = None, math_font: str | None = None) 
 """
     if not (doc.get("version") == "key" and doc.get("detail") == "compact"):
         return head + "\n\n".join(_block(b) for b in doc["blocks"]) + "\n"
-    return head + "\n\n".join(_floating(doc["blocks"])) + "\n"
+    # A compact key sets its steps' headings close to their equations, as a book sets a worked solution's steps.
+    tight = ("#show heading.where(level: 3): set block(above: 1em, below: 0.6em)\n#set text(size: 9.5pt)\n"
+             "#show table: set text(size: 8.5pt)\n")
+    return head + tight + "\n\n".join(_floating(doc["blocks"])) + "\n"
 
 
 def _floating(blocks: list) -> list[str]:

@@ -20,6 +20,7 @@ from graphkin.kinematics import decompose, solve_kinematics
 from graphkin.kinematics.plan import kept_plan
 from graphkin.kinematics.structure import Dyad
 from graphkin.model import GearMesh, PointForce, Prismatic, Revolute, StrokeForce, Table, Torque, spring
+from graphkin.model.names import force_name
 from graphkin.notation import num
 from graphkin.problem.placement import placements
 from graphkin.problem.problem import Forward
@@ -545,3 +546,24 @@ def unknown(rd, value, mech):
             ld.name == Unknown(link).label(mech) for ld in mech.loads)):
         raise rd.fail("unknown.name", "a load already has this name: give the unknown another (name = \"T4\")")
     return Unknown(link, name)
+
+
+ASKED = {"F_T": "the tangential force on the crank pin", "F_B": "the thrust on the crank-shaft bearing",
+         "T": "the turning moment the connecting rod exerts on the crank", "T_hold": "the torque that holds a gear "
+         "meshing with the frame (an annulus held still)"}
+"""What a book may ask besides the joint forces and the driver's effort, by the name the handout prints."""
+
+
+def asked(rd, value, mech, effort: str) -> tuple[str, ...]:
+    """``asked``: the answers the book asks for, by the names a handout prints them under (``["T12", "F23",
+    "G14"]``): joint forces, the driver's effort ``effort`` (or ``[unknown]``'s) and the names of :data:`ASKED`."""
+    if not isinstance(value, list) or not all(isinstance(x, str) for x in value):
+        raise rd.fail("asked", f"must be a list of names such as [\"T12\", \"F23\"], got {value!r}")
+    forces = {force_name(mech, i, j) for joint in mech.joints for a, b in [sorted(joint.links)] for i, j in
+              ((a, b), (b, a))}
+    known = forces | {effort} | set(ASKED)
+    for k, name in enumerate(value):
+        if name not in known:
+            raise rd.fail(f"asked[{k}]", f"{name!r} is not a quantity a handout prints; one of "
+                          f"{', '.join(sorted(known))}")
+    return tuple(value)

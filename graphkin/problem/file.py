@@ -29,7 +29,7 @@ from graphkin.problem.stated import check_stated
 from graphkin.problem.tables import load_table
 
 _TOP = {"title", "source", "cite", "notes", "analysis", "gravity", "frame", "links", "joints", "driver", "loads", "assembly",
-        "given", "forward", "unknown"}
+        "given", "forward", "unknown", "asked"}
 _ANALYSES = ("dynamic", "static")
 _LINK = {"number", "name", "points", "mass", "G", "I_G", "k", "shape"}
 _JOINT = {
@@ -263,8 +263,10 @@ def build_problem(data: Mapping[str, Any], *, file: str = "<problem>", base: str
     unknown = books.unknown(rd, data["unknown"], mech) if "unknown" in data else None
     if unknown is not None and forward is not None:
         raise rd.fail("unknown", "a forward step needs the driver's effort; with [unknown] the driver carries none")
+    effort = unknown.label(mech) if unknown is not None else mech.driver.symbol
+    asked = books.asked(rd, data["asked"], mech, effort) if "asked" in data else ()
     return Problem(file, mech, q, q_dot, q_ddot, given, str(data.get("title", "")), str(data.get("source", "")),
-                   str(data.get("notes", "")), analysis, str(data.get("cite", "")), forward, unknown)
+                   str(data.get("notes", "")), analysis, str(data.get("cite", "")), forward, unknown, asked)
 
 
 def _list(rd, data, key):

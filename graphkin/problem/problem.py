@@ -86,6 +86,9 @@ class Problem:
     unknown : Unknown or None
         The link whose effort the book asks for instead of the driver's (the file's ``[unknown]``,
         :mod:`graphkin.problem.unknown`).
+    asked : tuple of str
+        The answers the book asks for, by the names a handout prints them under (the file's ``asked``; empty: not
+        stated). A handout prints each (``tests/handout/test_asked.py``).
     """
 
     name: str
@@ -101,6 +104,7 @@ class Problem:
     cite: str = ""
     forward: Forward | None = None
     unknown: Unknown | None = None
+    asked: tuple[str, ...] = ()
 
     @property
     def static(self) -> bool:

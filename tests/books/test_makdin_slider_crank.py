@@ -70,7 +70,9 @@ def test_driven_by_its_piston_placed_by_the_cranks_angle():
     for old, new in (('type = "crank"\nlink = 2\ntheta = "60 deg"',
                       'type = "slider"\nlink = 4\nplace = { link = 2, theta = "60 deg" }'),
                      ('type = "force"\nname = "P"\nlink = 4\npoint = "C"\nforce = { magnitude = "6300 N", angle = "180 deg" }',
-                      f'type = "torque"\nname = "T"\nlink = 2\ntorque = "{closed_form()!r} N*m"')):
+                      f'type = "torque"\nname = "T"\nlink = 2\ntorque = "{closed_form()!r} N*m"'),
+                     # What is asked is now the piston's effort: T12 names no quantity of this problem.
+                     ('asked = ["T12"]', 'asked = ["F14"]')):
         assert old in text
         text = text.replace(old, new)
     problem = parse_problem(text + '\n[assembly]\nB = -1\n')

@@ -1,0 +1,130 @@
+"""Each catalog problem's key prints the answers its book asks for (issue 36, item 6), and a page that uses two
+sign conventions for one torque says so.
+
+What a book asks is the problem file's own ``asked`` (joint forces, the driving effort, the crank pin's F_T, F_B
+and T, the holding torque of a gear of the frame). Each value is worked out here from the solver's result on
+its own, not from the handout's code, and looked for, to the printed digits, on a line that names it.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from graphkin import catalog, handout
+from graphkin.handout import maths as M
+from graphkin.handout.document import subject
+from graphkin.model import GearMesh, Revolute
+
+NOT_ASKED = {
+    # Khurmi & Gupta ch. 22 asks for the unbalanced (shaking) force, which `graphkin balance` reports, not a key.
+    "engine_balancing": "shaking force",
+    # Hibbeler asks for the equilibrium angle θ: the file is written at it, and the key solves the forces there.
+    "spring_link_hibbeler": "equilibrium angle",
+}
+
+
+def _lines(doc: dict) -> list[str]:
+    """The key's text, a line per paragraph, list item, table row and displayed equation line."""
+    def text(runs):
+        return "".join(r if isinstance(r, str) else M.to_text(r) for r in runs)
+
+    out = []
+    for b in doc["blocks"]:
+        if b["kind"] == "text":
+            out.append(text(b["runs"]))
+        elif b["kind"] == "list":
+            out += [text(item) for item in b["items"]]
+        elif b["kind"] == "table":
+            out += [" ".join(text(c) for c in row) for row in b["rows"]]
+        elif b["kind"] == "equation":
+            out += [M.to_text(line) for line in b["lines"]]
+    return out
+
+
+def _crank_pin(s, i: int) -> dict:
+    """F_T, F_B and T of the rod's force on the crank pin (Khurmi and Gupta §15.10), from the solver's force."""
+    mech, kin = s.mech, s.result.kinematics
+    d = mech.driver
+    pivot = mech.joint_between(mech.frame, d.link)
+    pin = next(j for j in mech.joints_of(d.link) if isinstance(j, Revolute) and mech.frame not in j.links)
+    rod = (set(pin.links) - {d.link}).pop()
+    O, P = kin.position(d.link, pivot.point)[i], kin.position(d.link, pin.point)[i]
+    r = float(np.hypot(*(P - O)))
+    u = (P - O) / r
+    F = s.result.force(rod, d.link)[i]
+    F_T = float(F @ np.array([-u[1], u[0]]))
+    return {"F_B": float(-F @ u), "F_T": F_T, "T": r * F_T}
+
+
+def _holding(s, i: int) -> float:
+    """The torque that holds the frame's gear about its centre: minus the moment of the tooth force on it, taken at
+    the pitch point (on the line of centres, the frame gear's pitch radius from its centre)."""
+    mech, kin = s.mech, s.result.kinematics
+    mesh = next(j for j in mech.joints if isinstance(j, GearMesh) and mech.frame in j.links)
+    k = (set(mesh.links) - {mech.frame}).pop()
+    O = kin.position(mech.frame, mesh.centers[mesh.links.index(mech.frame)])[i]
+    C = kin.position(k, mesh.centers[mesh.links.index(k)])[i]
+    X = O + mesh.radius(mech.frame) * (C - O) / np.hypot(*(C - O))
+    F = s.result.force(k, mech.frame)[i]
+    return -float((X - O)[0] * F[1] - (X - O)[1] * F[0])
+
+
+def _expected(s, name: str, i: int) -> tuple[str, float]:
+    """The text that names ``name`` on a line, and its value."""
+    if name in ("F_T", "F_B", "T"):
+        return ({"F_T": "FT =", "F_B": "FB =", "T": "T = rFT"}[name], _crank_pin(s, i)[name])
+    if name == "T_hold":
+        return "Thold =", _holding(s, i)
+    if name == s.mech.driver.symbol:
+        return name, float(s.result.effort[i])
+    return name, math.hypot(*s.result[name][i])
+
+
+@pytest.mark.parametrize("name", catalog.names())
+def test_a_key_prints_every_answer_its_book_asks_for(name):
+    s = subject(name)
+    problem = s.problem
+    if name in NOT_ASKED:
+        assert not problem.asked, f"{name} lists what its book asks: take it out of NOT_ASKED"
+        return
+    assert problem.asked, f"{name}: say what its book asks for (asked = [...] in the problem file)"
+    lines = _lines(handout.build(s))
+    i = s.worked()[0]
+    for asked in problem.asked:
+        token, value = _expected(s, asked, i)
+        printed = M.fmt(value)
+        assert any(token in line and printed in line for line in lines), (name, asked, token, printed)
+
+
+def test_the_epicyclic_key_prints_the_book_s_holding_torque():
+    """Khurmi & Gupta Ex. 13.20: "torque necessary to keep the internal gear stationary = 400 N-m"."""
+    lines = _lines(handout.build("epicyclic_khurmi"))
+    assert any("Thold =" in line and "= 400 N·m" in line for line in lines)
+    # A gear arm is not a crank with a connecting rod: no section of the crank pin's forces.
+    assert not any("FT =" in line for line in lines)
+
+
+def test_the_turning_moment_and_the_driving_torque_are_told_apart():
+    """The crank pin's T (the rod's turning moment on the crank) and T12 (what holds the crank) have opposite
+    signs: the page says so, with both numbers, where it prints them."""
+    s = subject("engine_static_khurmi")
+    i = s.worked()[0]
+    lines = _lines(handout.build(s))
+    T, T12 = _crank_pin(s, i)["T"], float(s.result.effort[i])
+    assert T * T12 < 0
+    said = [line for line in lines if "turning moment the connecting rod exerts" in line]
+    assert said and M.fmt(T12) in said[0] and "opposite sign" in said[0]
+
+
+def test_asked_names_only_what_a_handout_prints(tmp_path):
+    from graphkin.errors import ProblemFileError
+
+    text = catalog.path("single_link").read_text(encoding="utf-8").replace(
+        'asked = ["F12", "T12"]', 'asked = ["F12", "F99"]')
+    path = tmp_path / "single.toml"
+    path.write_text(text, encoding="utf-8")
+    with pytest.raises(ProblemFileError, match=r"asked\[1\].*'F99'"):
+        catalog.load(str(path))
