@@ -743,10 +743,10 @@ def test_a_roster_gives_a_sheet_and_a_key_per_student(built, tmp_path, workers):
 
 _MAKE = """
 import sys
-from graphkin.handout.batch import _chunk, _worker_start
-_worker_start()
+from graphkin.handout.batch import write_chunk, worker_start
+worker_start()
 for student in sys.argv[2:]:
-    (row,) = _chunk(("strip_cutter_cut", [student], "k", ("sheet", "key"), "pdf", sys.argv[1], None))
+    (row,) = write_chunk(("strip_cutter_cut", [student], "k", ("sheet", "key"), "pdf", sys.argv[1], None))
     assert not row[2], row
 """
 
