@@ -1,7 +1,8 @@
 """A scene as compact JSON, and as one self-contained HTML page that draws it (no network, no build step).
 
-The page is ``js/page.html`` with the scene's JSON and the ES module ``js/scene.js`` put in its place: one file a
-student opens from disk, an LMS serves or an e-mail carries, that asks for nothing else. The JSON goes in a
+The page is ``js/page.html`` with the scene's JSON and the drawing module (:func:`module`: ``js/speed.js`` and
+``js/scene.js`` as one ES module) put in its place: one file a student opens from disk, an LMS serves or an e-mail
+carries, that asks for nothing else. The JSON goes in a
 ``<script type="application/json">`` element, with every ``<`` written ``\\u003c`` so that no string of the scene
 (a title, a reason) can close the element.
 """
@@ -32,8 +33,25 @@ def scene_json(data: dict) -> str:
 
 
 def asset(name: str) -> str:
-    """The text of one of the page's files shipped in the package (``scene.js``, ``page.html``)."""
+    """The text of one of the page's files shipped in the package (``scene.js``, ``speed.js``, ``page.html``)."""
     return resources.files("graphkin.scene").joinpath("js", name).read_text(encoding="utf-8")
+
+
+IMPORT = 'import { live, setRate } from "./speed.js";\n'
+"""scene.js's one import: :func:`module` puts speed.js in its place (a page from disk, or a notebook's widget, can
+load one module only: a relative import has no file to come from)."""
+
+
+def module() -> str:
+    """The drawing module as one ES module: ``speed.js`` followed by ``scene.js`` without its import of it.
+
+    Exports ``render(element, scene)`` (and ``live``, ``setRate``, ``polar``). The page inlines it; the notebook's
+    widget (:mod:`graphkin.widgets.scene`) is it.
+    """
+    scene = asset("scene.js")
+    if IMPORT not in scene:  # pragma: no cover - the shipped module imports speed.js so
+        raise ValueError("scene.js must import speed.js as page.IMPORT says")
+    return asset("speed.js") + "\n" + scene.replace(IMPORT, "", 1)
 
 
 def page(data: dict) -> str:
@@ -52,12 +70,12 @@ def page(data: dict) -> str:
     from html import escape
 
     text = scene_json(data).replace("<", "\\u003c")
-    module = asset("scene.js")
-    if "</script" in module.lower():  # pragma: no cover - the shipped module is written without one
+    code = module()
+    if "</script" in code.lower():  # pragma: no cover - the shipped module is written without one
         raise ValueError("scene.js must not contain '</script'")
     html = asset("page.html")
     return (html.replace("{{title}}", escape(data["title"] or data["problem"]))
-            .replace("{{scene}}", text).replace("{{module}}", module))
+            .replace("{{scene}}", text).replace("{{module}}", code))
 
 
 def write_page(data: dict, path: str | Path, what: str = "-o") -> Path:
