@@ -1,14 +1,15 @@
 """A scene as compact JSON, and as one self-contained HTML page that draws it (no network, no build step).
 
-The page is ``js/page.html`` with the scene's JSON and the drawing module (:func:`module`: ``js/speed.js`` and
-``js/scene.js`` as one ES module) put in its place: one file a student opens from disk, an LMS serves or an e-mail
-carries, that asks for nothing else. The JSON goes in a
+The page is ``js/page.html`` with the scene's JSON, the drawing module (:func:`module`: ``js/speed.js``,
+``js/scene.js`` and ``js/widget.js`` as one ES module) and its styles (``js/scene.css``) put in their place: one file
+a student opens from disk, an LMS serves or an e-mail carries, that asks for nothing else. The JSON goes in a
 ``<script type="application/json">`` element, with every ``<`` written ``\\u003c`` so that no string of the scene
 (a title, a reason) can close the element.
 """
 
 from __future__ import annotations
 
+import re
 from importlib import resources
 from pathlib import Path
 
@@ -33,25 +34,30 @@ def scene_json(data: dict) -> str:
 
 
 def asset(name: str) -> str:
-    """The text of one of the page's files shipped in the package (``scene.js``, ``speed.js``, ``page.html``)."""
+    """The text of one of the page's files shipped in the package (``scene.js``, ``scene.css``, ``page.html``, …)."""
     return resources.files("graphkin.scene").joinpath("js", name).read_text(encoding="utf-8")
 
 
-IMPORT = 'import { live, setRate } from "./speed.js";\n'
-"""scene.js's one import: :func:`module` puts speed.js in its place (a page from disk, or a notebook's widget, can
-load one module only: a relative import has no file to come from)."""
+MODULES = ("speed.js", "scene.js", "widget.js")
+"""The drawing's ES modules, each importing only from those before it: :func:`module` joins them."""
+
+IMPORT = re.compile(r'^import \{[^}]*\} from "\./[a-z]+\.js";\n', re.M)
+"""A module's import of another of :data:`MODULES` (a page from disk, or a notebook's widget, loads one module: a
+relative import has no file to come from)."""
 
 
 def module() -> str:
-    """The drawing module as one ES module: ``speed.js`` followed by ``scene.js`` without its import of it.
+    """The drawing as one ES module: :data:`MODULES` in their order, without their imports of one another.
 
-    Exports ``render(element, scene)`` (and ``live``, ``setRate``, ``polar``). The page inlines it; the notebook's
-    widget (:mod:`graphkin.widgets.scene`) is it.
+    Exports ``render(element, scene)`` (the page calls it), ``default`` (anywidget's ``render({model, el})``: the
+    notebook's widget, :mod:`graphkin.widgets.browser`), and ``live``, ``setRate`` and ``polar``.
+
+    Returns
+    -------
+    str
+        JavaScript.
     """
-    scene = asset("scene.js")
-    if IMPORT not in scene:  # pragma: no cover - the shipped module imports speed.js so
-        raise ValueError("scene.js must import speed.js as page.IMPORT says")
-    return asset("speed.js") + "\n" + scene.replace(IMPORT, "", 1)
+    return "\n".join(IMPORT.sub("", asset(name)) for name in MODULES)
 
 
 def page(data: dict) -> str:
@@ -75,7 +81,7 @@ def page(data: dict) -> str:
         raise ValueError("scene.js must not contain '</script'")
     html = asset("page.html")
     return (html.replace("{{title}}", escape(data["title"] or data["problem"]))
-            .replace("{{scene}}", text).replace("{{module}}", code))
+            .replace("{{style}}", asset("scene.css")).replace("{{scene}}", text).replace("{{module}}", code))
 
 
 def write_page(data: dict, path: str | Path, what: str = "-o") -> Path:

@@ -7,7 +7,8 @@
 // to the pointer when the crank is dragged.
 //
 //   import { render } from "./scene.js";
-//   const view = render(element, scene);   // view.show(i), view.index, view.timings, view.scene (at its speed)
+//   const view = render(element, scene);   // view.show(i), view.index, view.timings, view.scene (at its speed),
+//                                          // view.pause()
 
 import { live, setRate } from "./speed.js";
 
@@ -419,7 +420,9 @@ function inputText(scene, i) {
     : `${symbol}${sub} = ${(q * 1000).toFixed(2)} mm`;
 }
 
-export function render(root, base) {
+// options.keys: what listens for the arrow keys and the space bar (the page: the document; a notebook's widget: its
+// own element, so that keys typed in a cell stay the cell's).
+export function render(root, base, options = {}) {
   if (base.schema !== 1) throw new Error(`graphkin scene: schema ${base.schema} is not one this page reads (1)`);
   const scene = live(base);
   root.classList.add("gk-scene");
@@ -467,7 +470,7 @@ export function render(root, base) {
     requestAnimationFrame(() => view.frames.push(performance.now() - t0));
   }
   ui.slider.addEventListener("input", (e) => step(e, Number(e.target.value)));
-  document.addEventListener("keydown", (e) => {
+  (options.keys || document).addEventListener("keydown", (e) => {
     // The slider moves itself (and says so with "input"); the speed box keeps its own keys. A toggle has no use
     // for them: they step the position.
     if (e.target.matches?.("select, textarea, input:not([type=checkbox])")) return;
@@ -500,6 +503,7 @@ export function render(root, base) {
     playing = requestAnimationFrame(frame);
   }
   ui.play.addEventListener("click", toggle);
+  view.pause = () => { if (playing !== null) toggle(); };
 
   for (const [key, box] of Object.entries(ui.toggles)) {
     box.addEventListener("change", () => {
