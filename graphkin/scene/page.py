@@ -49,8 +49,9 @@ relative import has no file to come from)."""
 def module() -> str:
     """The drawing as one ES module: :data:`MODULES` in their order, without their imports of one another.
 
-    Exports ``render(element, scene)`` (the page calls it), ``default`` (anywidget's ``render({model, el})``: the
-    notebook's widget, :mod:`graphkin.widgets.browser`), and ``live``, ``setRate`` and ``polar``.
+    Exports ``draw(element, scene)`` (the page calls it; not named ``render``, which anywidget would take for its
+    own), ``default`` (anywidget's ``render({model, el})``: the notebook's widget, :mod:`graphkin.widgets.browser`),
+    and ``live``, ``setRate`` and ``polar``.
 
     Returns
     -------

@@ -48,7 +48,7 @@ def _drawn(page) -> dict:
     return drawn
 
 
-@pytest.mark.parametrize("name, factor", [("strip_cutter", 1.7), ("shaper_six_bar", 0.4)])
+@pytest.mark.parametrize("name, factor", [("strip_cutter", 1.7), ("shaper_six_bar", 0.4), ("double_slider", 2.5)])
 def test_any_speed_of_a_linear_problem_is_drawn_as_its_direct_solve(browser, tmp_path, name, factor):
     path = tmp_path / f"{name}.html"
     assert main(["explore", name, "-o", str(path), "--n", str(N)]) == 0
@@ -57,21 +57,22 @@ def test_any_speed_of_a_linear_problem_is_drawn_as_its_direct_solve(browser, tmp
         s = _scene_of(page)
         assert s["speed"]["kind"] == "superpose"
         box = page.locator("[data-do=rate]")
-        rpm = float(box.input_value()) * factor
-        box.fill(repr(rpm))
+        typed = float(box.input_value()) * factor  # rpm for a crank, m/s for a slider
+        box.fill(repr(typed))
         box.dispatch_event("change")
-        rate = rpm * np.pi / 30
+        rate = typed * np.pi / 30 if s["speed"]["unit"] == "rad/s" else typed
         scale = page.evaluate("window.graphkin.view.scene.scales.force")
         assert scale >= s["scales"]["force"]
         want = _direct(s, name, rate, scale)
-        for i in (0, 7, N // 2):
+        sample = sorted({0, s["n"] // 3, s["n"] - 1})  # a slider-driven problem: its own positions
+        for i in sample:
             page.locator("[data-do=position]").fill(str(i))
             check_drawn(_drawn(page), want, i)
         # A speed of the other sense is refused, and the box says why.
-        box.fill(repr(-rpm))
+        box.fill(repr(-typed))
         box.dispatch_event("change")
         assert "sense" in page.locator("[data-do=rate-note]").text_content()
-        check_drawn(_drawn(page), want, N // 2)
+        check_drawn(_drawn(page), want, sample[-1])
         assert errors == []
     finally:
         context.close()

@@ -6,8 +6,8 @@
 // the reader's: a vector's polar form for the table and the hover read-out, and the nearest presolved position
 // to the pointer when the crank is dragged.
 //
-//   import { render } from "./scene.js";
-//   const view = render(element, scene);   // view.show(i), view.index, view.timings, view.scene (at its speed),
+//   import { draw } from "./scene.js";
+//   const view = draw(element, scene);     // view.show(i), view.index, view.timings, view.scene (at its speed),
 //                                          // view.pause()
 
 import { live, setRate } from "./speed.js";
@@ -422,7 +422,7 @@ function inputText(scene, i) {
 
 // options.keys: what listens for the arrow keys and the space bar (the page: the document; a notebook's widget: its
 // own element, so that keys typed in a cell stay the cell's).
-export function render(root, base, options = {}) {
+export function draw(root, base, options = {}) {
   if (base.schema !== 1) throw new Error(`graphkin scene: schema ${base.schema} is not one this page reads (1)`);
   const scene = live(base);
   root.classList.add("gk-scene");
