@@ -26,10 +26,10 @@ the graphical route    :func:`construct_forces`, :class:`Construction`,
                        :func:`construct_kinematics`, :class:`MotionConstruction`
                        (velocity and acceleration polygons), :func:`instant_centres`,
                        :class:`InstantCentres`, :func:`kinematics_from_polygons`
-whole cycles           :func:`sweep`, :class:`Cycle`, :func:`size_flywheel`,
+whole cycles           :func:`sweep`, :class:`Cycle`, :func:`size_flywheel`, :func:`study`, :class:`Study`,
                        :func:`joint_force_index`, :func:`static_problem`, :func:`load_flywheel`
 reports (plain data)   :mod:`report`, :func:`solution`, :func:`format_solution`,
-                       :func:`cycle_data`, :func:`format_cycle`
+                       :func:`cycle_data`, :func:`format_cycle`, :func:`study_data`, :func:`format_study`
 printed notation       :func:`polar`, :func:`polar_text`, :func:`cross`
 drawings               :mod:`draw` (matplotlib)
 teaching               :mod:`exercises`, :mod:`handout`, :func:`explore`, :func:`exercise`
@@ -87,6 +87,8 @@ _LAZY = {
     "kinematics_from_polygons": ("graphkin.graphical", "kinematics_from_polygons"),
     # whole cycles
     "sweep": ("graphkin.cycle", "sweep"),
+    "study": ("graphkin.cycle", "study"),
+    "Study": ("graphkin.cycle", "Study"),
     "Cycle": ("graphkin.cycle", "Cycle"),
     "size_flywheel": ("graphkin.cycle", "size_flywheel"),
     "joint_force_index": ("graphkin.cycle", "joint_force_index"),
@@ -98,6 +100,8 @@ _LAZY = {
     "format_solution": ("graphkin.report", "format_solution"),
     "cycle_data": ("graphkin.report", "cycle_data"),
     "format_cycle": ("graphkin.report", "format_cycle"),
+    "study_data": ("graphkin.report", "study_data"),
+    "format_study": ("graphkin.report", "format_study"),
     # printed notation
     "polar": ("graphkin.notation", "polar"),
     "polar_text": ("graphkin.notation", "polar_text"),
@@ -143,7 +147,7 @@ if TYPE_CHECKING:  # pragma: no cover - for type checkers and editors; at run ti
     from graphkin.analytical.matrix import assemble, solve_matrix
     from graphkin.analytical.virtual_work import effort_by_virtual_work, load_powers
     from graphkin.catalog import load
-    from graphkin.cycle import Cycle, joint_force_index, size_flywheel, static_problem, sweep
+    from graphkin.cycle import Cycle, Study, joint_force_index, size_flywheel, static_problem, study, sweep
     from graphkin.cycle.flywheel_file import load_flywheel
     from graphkin.errors import GraphkinError, GraphkinWarning, ModelError, ProblemFileError
     from graphkin.geometry import cross
@@ -160,5 +164,5 @@ if TYPE_CHECKING:  # pragma: no cover - for type checkers and editors; at run ti
     from graphkin.model import Driver, GearMesh, Link, Mechanism, PointForce, Prismatic, Revolute, Table, Torque, mass
     from graphkin.notation import polar, polar_text
     from graphkin.problem import Problem, build_problem, load_problem, parse_problem
-    from graphkin.report import cycle_data, format_cycle, format_solution, solution
+    from graphkin.report import cycle_data, format_cycle, format_solution, format_study, solution, study_data
     from graphkin.widgets import exercise, explore

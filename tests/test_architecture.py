@@ -237,3 +237,24 @@ def test_the_handout_figures_are_written_whole():
     path = ROOT / "figures" / "handouts" / "build.py"
     assert _unguarded_writes(ast.parse(path.read_text())) == []
     assert _unguarded_writes(ast.parse("from PIL import Image\nImage.new('L', (1, 1)).save('x.png')\n")) == [2]
+
+
+def test_every_module_is_named_on_the_architecture_page():
+    """A newcomer finds every module on docs/architecture.md: in its package's row of "What each package holds"
+    (by its name, or its path below the package), or by its path among the long modules."""
+    doc = (ROOT / "docs" / "architecture.md").read_text(encoding="utf-8")
+    rows = {}
+    for line in doc.splitlines():
+        m = re.match(r"\| `([a-z_]+)/?`(?:, `([a-z_]+)`)? \|", line)
+        if m:
+            rows.update(dict.fromkeys(filter(None, m.groups()), line))
+    unnamed = []
+    for name, (path, init) in MODULES.items():
+        parts = name.split(".")[1:]
+        if init or parts == ["__main__"] or f"`{path.relative_to(ROOT).as_posix()}`" in doc:
+            continue
+        row = rows.get(parts[0], "")
+        named = bool(row) if len(parts) == 1 else any(f"`{x}`" in row for x in (parts[-1], "/".join(parts[1:])))
+        if not named:
+            unnamed.append(path.relative_to(ROOT).as_posix())
+    assert unnamed == []

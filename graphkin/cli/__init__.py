@@ -34,11 +34,11 @@ import signal
 import sys
 
 from graphkin import __version__
-from graphkin.cli import animate, cycle, exercise, explore, flywheel, handout, lessons, listing, solve
+from graphkin.cli import animate, cycle, exercise, explore, flywheel, handout, lessons, listing, solve, study
 from graphkin.cli._common import Parser, one_line_warnings, single_threaded_blas
 from graphkin.errors import GraphkinError
 
-COMMANDS = {"list": listing, "solve": solve, "cycle": cycle, "exercise": exercise, "explore": explore,
+COMMANDS = {"list": listing, "solve": solve, "cycle": cycle, "study": study, "exercise": exercise, "explore": explore,
             "handout": handout, "flywheel": flywheel, "animate": animate, "lessons": lessons}
 """Each command and the module that carries it out, in the order ``graphkin --help`` lists them."""
 

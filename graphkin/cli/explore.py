@@ -2,7 +2,7 @@
 
 ::
 
-    graphkin explore PROBLEM [--port N] [--no-browser]
+    graphkin explore PROBLEM [--port N] [--base-url PATH] [--no-browser]
     graphkin explore PROBLEM -o page.html [--n N] [--no-polygons]
 
 With ``-o``, the cycle is solved once (:func:`graphkin.scene.scene`) and written as one self-contained HTML file
@@ -14,7 +14,9 @@ served; the command prints the file's name and size.
 holds the problem's explorer (:func:`graphkin.widgets.explore`) and nothing
 else: no code, no cells to run. The command prints the page's address, opens
 it in the desktop's browser where there is one, and serves until Ctrl-C, which
-stops Voilà and its kernels and prints one line (exit code 130).
+stops Voilà and its kernels and prints one line (exit code 130). Behind a JupyterHub, ``--base-url`` serves the
+page under the path the hub's proxy forwards whole (jupyter-server-proxy's ``/user/NAME/proxy/absolute/PORT/``;
+``{port}`` in it stands for the port), as ``docs/hub.md`` shows.
 
 A problem that is neither in the catalog nor a readable problem file is a
 :class:`graphkin.errors.GraphkinError` (one line, exit code 2), reported
@@ -27,6 +29,7 @@ from __future__ import annotations
 # `graphkin solve` should not pay for sockets and subprocesses (each function imports what it runs).
 import json
 import os
+import re
 import sys
 from pathlib import Path
 
@@ -47,6 +50,8 @@ def add_parser(sub) -> None:
                        "for a projector; Ctrl-C stops it")
     e.add_argument("problem", metavar="PROBLEM", help="a catalog problem (graphkin list) or a problem file")
     e.add_argument("--port", type=int, default=0, help="the port on 127.0.0.1 (default: a free one)")
+    e.add_argument("--base-url", default="/", metavar="PATH", help="serve under this path, behind a JupyterHub's "
+                   "proxy: /user/NAME/proxy/absolute/{port}/ ({port} stands for the port; default /)")
     e.add_argument("--no-browser", action="store_true", help="print the address only; do not open a browser")
     e.add_argument("-o", "--output", metavar="PAGE.html", help="write one self-contained HTML page that draws the "
                    "presolved cycle in the browser (no server, no network) instead of serving the explorer")
@@ -86,6 +91,21 @@ def notebook(source: str, title: str) -> dict:
     }
 
 
+def base_url(text: str, port: int) -> str:
+    """The path the page is served under: ``text`` with ``{port}`` replaced, one slash at each end.
+
+    Examples
+    --------
+    >>> base_url("/", 8866), base_url("user/ada/proxy/absolute/{port}", 8866)
+    ('/', '/user/ada/proxy/absolute/8866/')
+    """
+    path = text.replace("{port}", str(port)).strip("/")
+    if not re.fullmatch(r"[A-Za-z0-9._~%@!$&'()*+,;=:/-]*", path) or "//" in path or \
+            any(part in (".", "..") for part in path.split("/")):
+        raise GraphkinError(f"--base-url must be a path such as /user/NAME/proxy/absolute/{{port}}/, got {text!r}")
+    return f"/{path}/" if path else "/"
+
+
 def run(args) -> int:
     """Carry out ``graphkin explore``; returns the exit code (130 after Ctrl-C)."""
     import subprocess
@@ -106,7 +126,8 @@ def run(args) -> int:
     if not 0 <= args.port < 65536:
         raise GraphkinError(f"--port must be 0–65535, got {args.port}")
     port = args.port or _free_port()
-    url = f"http://127.0.0.1:{port}/"
+    base = base_url(args.base_url, port)
+    url = f"http://127.0.0.1:{port}{base}"
     with tempfile.TemporaryDirectory(prefix="graphkin-explore-") as folder:
         # The page Voilà serves and its log live in this private folder, deleted on the way out: no user file,
         # so no temporary-then-rename dance.
@@ -117,7 +138,8 @@ def run(args) -> int:
             # A session of its own: Ctrl-C reaches graphkin only, which stops Voilà in order (no second
             # shutdown report from Voilà), and Voilà's log stays in the file, out of the teacher's way.
             voila = subprocess.Popen([sys.executable, "-m", "voila", str(page), "--no-browser", f"--port={port}",
-                                      "--Voila.ip=127.0.0.1", "--theme=light", "--show_tracebacks=True", *CULL],
+                                      "--Voila.ip=127.0.0.1", f"--Voila.base_url={base}", "--theme=light",
+                                      "--show_tracebacks=True", *CULL],
                                      cwd=folder, stdin=subprocess.DEVNULL, stdout=log, stderr=subprocess.STDOUT,
                                      start_new_session=True)
             stop_on = _stop_on_sigterm()

@@ -11,6 +11,7 @@ from graphkin.analytical import solve_forces
 from graphkin.errors import GraphkinError
 from graphkin.kinematics import solve_kinematics
 from graphkin.model import Mechanism, Prismatic
+from graphkin.notation import position_text
 from graphkin.problem.unknown import Unknown
 from graphkin.ranges import as_array, check, finite
 
@@ -143,6 +144,21 @@ class Problem:
         title = f"{self.title} (driven at {speed})" if self.title else ""
         return replace(self, q_dot=np.full(m, rate["q_dot"]), q_ddot=np.full(m, rate["q_ddot"]), title=title)
 
+    def without_given(self) -> "Problem":
+        """The same problem with its motion derived from the input at every position: the ``[given]`` values dropped.
+
+        A book's measured ω, α, a_G or θ hold at its own position only; a whole cycle (an explorer, a scene) is
+        drawn from the motion the input produces.
+
+        Examples
+        --------
+        >>> from graphkin import catalog
+        >>> p = catalog.load("slider_crank_dynamic_makdin")
+        >>> bool(p.given), bool(p.without_given().given)
+        (True, False)
+        """
+        return replace(self, given={})
+
     def with_friction(self, mu: float) -> "Problem":
         """The same problem with Coulomb coefficient μ (≥ 0) at every sliding pair; 0 removes friction.
 
@@ -183,6 +199,12 @@ class Problem:
             if len(set(self.q_dot)) > 1 or len(set(self.q_ddot)) > 1:
                 raise GraphkinError(f"{self.name}: its input rates vary with position, so it can only be solved at its "
                                     "own positions")
+            if self.given and np.any(at != self.q[0]):
+                # A book's ω, α, a_G or v_G hold at its own position: at any other they would be silently wrong.
+                elsewhere = position_text(float(at[np.flatnonzero(at != self.q[0])[0]]), crank)
+                raise GraphkinError(f"{self.name}: it gives kinematic values ([given] in the file) that hold at its own "
+                                    f"position only ({position_text(float(self.q[0]), crank)}), not at {elsewhere}; "
+                                    "remove them to let graphkin derive the motion at every position")
             q, q_dot, q_ddot = at, np.full(len(at), self.q_dot[0]), np.full(len(at), self.q_ddot[0])
         kin = solve_kinematics(self.mechanism, q, q_dot, q_ddot)
         if self.given:

@@ -12,6 +12,7 @@ command                         data                                text
 ``graphkin solve``              :func:`solution`                    :func:`format_solution`
 ``graphkin cycle``              :func:`cycle_data`                  :func:`format_cycle`
 ``graphkin flywheel``           :func:`flywheel_data`               :func:`format_flywheel`
+``graphkin study``              :func:`study_data`                  :func:`format_study`
 ==============================  ==================================  ======================
 
 With ``--units``, :mod:`graphkin.report.in_units` converts the data into the chosen units and states each
@@ -22,7 +23,8 @@ from graphkin.report.cycle import DISK_THICKNESS, STEEL, cycle_data, cycle_links
 from graphkin.report.flywheel import flywheel_data, format_flywheel
 from graphkin.report.polygons import graphical_kinematics_data, kinematic_constructions
 from graphkin.report.solution import constructions, cross_check, format_solution, solution
+from graphkin.report.study import format_study, study_data
 
 __all__ = ["DISK_THICKNESS", "STEEL", "constructions", "cross_check", "cycle_data", "cycle_links", "flywheel_data",
-           "format_cycle", "format_flywheel", "format_solution", "graphical_kinematics_data", "kinematic_constructions",
-           "solution"]
+           "format_cycle", "format_flywheel", "format_solution", "format_study", "graphical_kinematics_data",
+           "kinematic_constructions", "solution", "study_data"]

@@ -69,9 +69,26 @@ def scene(problem, n: int = 360, *, polygons: bool = True) -> dict:
     >>> s["schema"], s["n"], s["effort"]["label"], s["speed"]["kind"]
     (1, 40, {'symbol': 'T', 'sub': '12', 'mark': '', 'unit': 'N*m'}, 'superpose')
     """
+    problem = drawn(problem)
     out = _at_speed(problem, n, polygons)
     out["speed"] = _speed(problem, n, out)
     return out
+
+
+def drawn(problem):
+    """The problem a scene draws: a crank's cycle is the motion its input produces, so a book's measured values
+    ([given]), which hold at its own position only, are dropped (a slider-driven problem is drawn at its own
+    positions, with them).
+
+    Parameters
+    ----------
+    problem : graphkin.Problem
+
+    Returns
+    -------
+    graphkin.Problem
+    """
+    return problem.without_given() if problem.mechanism.driver.crank else problem
 
 
 def _cycle(problem, n):

@@ -19,6 +19,7 @@ from graphkin.errors import GraphkinError
 from graphkin.model import SpringForce, StrokeForce, Torque
 from graphkin.optional import require
 from graphkin.scene import scene, scene_json
+from graphkin.scene.build import drawn
 from graphkin.scene.page import asset, module
 
 FIELDS = ("speed", "mu", "gravity", "mass.K", "I_G.K", "G.K", "point.K.P", "load.NAME")
@@ -123,6 +124,7 @@ def changed(problem, field: str, value):
     """
     what = f"explorer field {field!r}"
     head, _, rest = field.partition(".")
+    problem = drawn(problem)  # as the scene draws it: a crank's cycle without a book's [given] values
     if field == "speed":
         return problem.at_speed(value)
     if field == "mu":
@@ -147,7 +149,7 @@ def changed(problem, field: str, value):
             raise GraphkinError(f"{what}: give {head}.K{'.P' if head == 'point' else ''} with K a link's number "
                                 f"({', '.join(links)})")
         link = links[number]
-        if head in ("G", "point") and problem.given:
+        if head in ("G", "point") and problem.given:  # a slider-driven problem, drawn at its own positions
             raise GraphkinError(f"{what}: the file gives kinematic values ([given]) that hold for its own geometry "
                                 "only; remove them to change it")
         if head == "point":

@@ -162,10 +162,12 @@ class Explorer(DrawingAhead):
         self._halo = bool(halo)
         self.ahead = int(ahead)
         self.crank = problem.mechanism.driver.crank
+        # A book's measured values ([given]) hold at its own position only: the explorer moves the mechanism
+        # through the motion its input produces.
+        problem = problem.without_given()
         self._original = problem
         q_dot0 = float(problem.q_dot[0])
-        # A problem that gives ω, α or a_G itself holds at its own speed only: the speed box is then fixed.
-        self.problem = problem if problem.given else problem.at_speed(q_dot0)
+        self.problem = problem.at_speed(q_dot0)
         self.timings: list[float] = []
         self.construction = None
         self.analytical = None
@@ -398,8 +400,7 @@ class Explorer(DrawingAhead):
     # -- the torque curve ---------------------------------------------------------
     def _sweep(self):
         """Solve the whole cycle at the current speed and draw the torque curve (once per speed)."""
-        if not self._original.given:
-            self.problem = self._original.at_speed(self._q_dot())
+        self.problem = self._original.at_speed(self._q_dot())
         if self.crank:
             self.cycle = sweep(self.problem, self.n)
         else:

@@ -66,3 +66,13 @@ def test_mistakes_are_one_line_and_leave_the_old_file(capsys, tmp_path):
     assert code == 2 and "is a folder, not a file" in err
     code, _, err = run(capsys, "strip_cutter", "--n", 36)
     assert code == 2 and "--n and --no-polygons go with -o" in err
+
+
+def test_a_base_url_that_is_not_a_path_is_one_line(capsys):
+    """`graphkin explore --base-url` (behind a hub's proxy) takes a plain path; nothing is started for another."""
+    import pytest
+
+    pytest.importorskip("voila")
+    for bad in ("/user/ada/../admin/", "/a b/", "http://elsewhere/x"):
+        code, out, err = run(capsys, "strip_cutter", "--no-browser", "--base-url", bad)
+        assert code == 2 and out == "" and err.count("\n") == 1 and "--base-url must be a path" in err, err

@@ -344,3 +344,16 @@ def test_sweep_at_given_positions_and_the_mean_over_unequal_steps(cutter, cycle)
     assert cycle.mean(cycle.torque) == cycle.average
     with pytest.raises(GraphkinError, match="one value per position"):
         cycle.mean(np.ones(3))
+
+
+def test_a_book_s_given_values_are_never_swept_over_the_cycle():
+    """Makdin's slider-crank gives θ3, α3 and the a_G measured at θ = 60°: they held at every angle of a sweep, so
+    `graphkin cycle --n 8` printed torques from the coupler standing at −13° throughout (exit 0). Now a sweep of
+    such a problem says why it cannot; at the book's own position it is solved with them, and the problem without
+    them sweeps the motion its input produces."""
+    p = catalog.load("slider_crank_dynamic_makdin")
+    with pytest.raises(GraphkinError, match=r"\[given\].* own position only \(θ = 60°\), not at θ = 0°"):
+        sweep(p, 8)
+    assert p.solve(at=p.q).valid.all()
+    derived = sweep(p.without_given(), 8).analysis.kinematics
+    assert np.ptp(np.unwrap(derived.theta[3])) > 0.1  # the coupler swings as the crank turns

@@ -491,6 +491,37 @@ def test_graphkin_explore_serves_the_explorer_and_stops_on_ctrl_c(browser, timin
         pass  # nothing listens any more
 
 
+def test_graphkin_explore_serves_under_a_hub_proxy_s_path(browser):
+    """`--base-url /user/NAME/proxy/absolute/{port}/`: the page, its widgets' assets and its kernel all under the
+    path a JupyterHub's jupyter-server-proxy forwards whole (docs/hub.md); nothing answers at the root."""
+    before = signal.signal(signal.SIGINT, signal.default_int_handler)
+    try:
+        proc = subprocess.Popen([sys.executable, "-m", "graphkin", "explore", "strip_cutter", "--no-browser",
+                                 "--base-url", "/user/ada/proxy/absolute/{port}/"],
+                                stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=ROOT)
+    finally:
+        signal.signal(signal.SIGINT, before)
+    try:
+        line = proc.stdout.readline()
+        url = re.search(r"http://127\.0\.0\.1:(\d+)/user/ada/proxy/absolute/(\d+)/", line)
+        assert url and url[1] == url[2], line + proc.stderr.read()
+        context = browser.new_context(viewport={"width": 1280, "height": 900})
+        page = context.new_page()
+        requests = []
+        page.on("request", lambda r: requests.append(r.url))
+        page.goto(url.group(0), wait_until="load", timeout=120_000)
+        page.wait_for_selector(".graphkin-explorer img", timeout=60_000)
+        _no_widget_errors(page)
+        local = [r for r in requests if r.startswith("http://127.0.0.1")]
+        assert local and all(r.startswith(url.group(0)) for r in local), local
+        assert page.goto(f"http://127.0.0.1:{url[1]}/", timeout=30_000).status == 404
+        context.close()
+    finally:
+        proc.send_signal(signal.SIGINT)
+        proc.communicate(timeout=60)
+    assert proc.returncode == 130
+
+
 def test_graphkin_explore_bad_problem_is_one_line():
     r = subprocess.run([sys.executable, "-m", "graphkin", "explore", "no_such_problem", "--no-browser"],
                        capture_output=True, text=True, cwd=ROOT, timeout=60)

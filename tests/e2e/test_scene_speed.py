@@ -16,6 +16,7 @@ import pytest
 from graphkin import catalog
 from graphkin.cli import main
 from graphkin.cycle import sweep
+from graphkin.scene.build import drawn
 from tests.e2e.test_scene_page import READ_BACK, _open, _scene_of, check_drawn
 
 N = 36
@@ -24,7 +25,7 @@ N = 36
 def _direct(s: dict, name: str, rate: float, scale: float) -> dict:
     """The scene ``s`` with the forces of a direct solve at ``rate`` and the page's force scale: what the page must
     draw at that speed (no graphical route: it is presolved at the file's speed only)."""
-    problem = catalog.load(name).at_speed(rate)
+    problem = drawn(catalog.load(name)).at_speed(rate)
     r = (sweep(problem, N) if problem.mechanism.driver.crank else sweep(problem)).analysis
     out = copy.deepcopy(s)
     for f in out["forces"]:

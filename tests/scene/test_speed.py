@@ -4,6 +4,7 @@ file's sense exactly; where they are not, the problem is marked with the reason 
 from __future__ import annotations
 
 import json
+from dataclasses import replace
 
 import numpy as np
 import pytest
@@ -12,10 +13,11 @@ import graphkin as gk
 from graphkin.cycle import sweep
 from graphkin.model import GearMesh, Prismatic
 from graphkin.scene import PRECISION, scene, scene_json
+from graphkin.scene.build import drawn
 from graphkin.scene.speed import PRESOLVED, linearity
 
 N = 24
-KINDS = {name: linearity(gk.load(name))[0] for name in gk.catalog.names()}
+KINDS = {name: linearity(drawn(gk.load(name)))[0] for name in gk.catalog.names()}
 
 
 def _read(problem) -> dict:
@@ -28,7 +30,7 @@ def _flat(values) -> np.ndarray:
 
 def _direct(problem, rate):
     """The cycle solved directly at another input rate, at the scene's positions."""
-    other = problem.at_speed(rate)
+    other = drawn(problem).at_speed(rate)
     return (sweep(other, N) if problem.mechanism.driver.crank else sweep(other)).analysis
 
 
@@ -80,7 +82,7 @@ def test_presolved_speeds_equal_direct_solves(name):
 
 def test_every_problem_not_linear_in_the_speed_is_marked_with_its_reason():
     for name, kind in KINDS.items():
-        problem = gk.load(name)
+        problem = drawn(gk.load(name))  # a crank's cycle: the motion its input gives, a book's [given] values dropped
         speed = _read(problem)["speed"] if name in ("slider_crank_friction", "fourbar_dynamic_makdin") else None
         mech = problem.mechanism
         friction = [j for j in mech.joints if isinstance(j, Prismatic) and j.mu]
@@ -100,4 +102,14 @@ def test_every_problem_not_linear_in_the_speed_is_marked_with_its_reason():
             assert kind == "superpose", name
         if speed is not None:
             assert speed["kind"] == kind and speed["reason"] == reason
-            assert ("presolved" in speed) == (kind == "presolved") and "superpose" not in speed
+            assert ("presolved" in speed) == (kind == "presolved") and ("superpose" in speed) == (kind == "superpose")
+
+
+def test_a_problem_held_to_its_own_speed_says_why():
+    base = gk.load("double_slider")  # slider-driven: drawn at its own positions, a book's values with them
+    given = replace(base, given={(3, "omega"): np.array([1.0])})
+    at_rest = replace(base, q_dot=np.zeros_like(base.q_dot))
+    assert linearity(given) == ("fixed", "the file gives kinematic values ([given]) that hold at its own speed only")
+    kind, reason = linearity(at_rest)
+    assert kind == "fixed" and "at rest (v = 0)" in reason
+    assert scene(at_rest, polygons=False)["speed"] == {"kind": kind, "reason": reason, "value": 0.0, "unit": "m/s"}

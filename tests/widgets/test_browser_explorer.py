@@ -4,6 +4,7 @@ answers only a change the scene cannot express, with a new scene equal to one bu
 from __future__ import annotations
 
 import json
+from dataclasses import replace
 
 import numpy as np
 import pytest
@@ -71,9 +72,18 @@ def test_a_field_it_cannot_change_is_one_plain_message(field, value, words):
         changed(gk.load("strip_cutter"), field, value)
 
 
-def test_a_length_of_a_problem_with_given_kinematics_is_refused():
+def test_a_length_of_a_slider_driven_problem_with_given_kinematics_is_refused():
+    # Drawn at its own positions with the book's values, which hold for the book's geometry only.
+    given = replace(gk.load("double_slider"), given={(3, "omega"): np.array([1.0])})
     with pytest.raises(GraphkinError, match=r"\[given\]"):
-        changed(gk.load("fourbar_dynamic_makdin"), "point.3.B", (0.1, 0.0))
+        changed(given, "point.3.B", (0.1, 0.0))
+
+
+def test_a_crank_problems_given_values_are_not_drawn_so_its_lengths_change():
+    p = gk.load("fourbar_dynamic_makdin")
+    point = list(p.mechanism.link(3).points)[-1]
+    q = changed(p, f"point.3.{point}", (0.1, 0.02))
+    assert not q.given and q.mechanism.link(3).points[point] == (0.1, 0.02)
 
 
 def test_the_speed_and_friction_are_new_problems_too():

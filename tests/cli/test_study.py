@@ -1,0 +1,91 @@
+"""``graphkin study``: the JSON and the table equal the study API's numbers; a bad --vary is one line, exit 2."""
+
+import json
+import math
+
+import numpy as np
+import pytest
+
+from graphkin.cli import main
+from graphkin.cli.study import vary_values
+from graphkin.cycle import study
+from graphkin.report import study_data
+
+VARY = ["--vary", "links[0].points.A[0]=60..240 mm:4", "--vary", "links[1].mass=2..4 kg:2"]
+
+
+def run(capsys, *argv):
+    code = main(["study", *argv])
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+@pytest.fixture(scope="module")
+def expected():
+    mm = np.linspace(60, 240, 4).tolist()
+    return study("strip_cutter", {"links[0].points.A[0]": [f"{x!r} mm" for x in mm],
+                                  "links[1].mass": ["2.0 kg", "4.0 kg"]}, n=36, Cs=0.02)
+
+
+def test_json_is_the_study_data(capsys, expected):
+    code, out, err = run(capsys, "strip_cutter", *VARY, "--n", "36", "--cs", "0.02", "--json")
+    assert code == 0 and err == ""
+    got = json.loads(out)
+    assert got == json.loads(json.dumps(study_data(expected)).replace("NaN", "null"))
+    assert got["vectorised"] is False and got["why_not_vectorised"]
+    assert [d["ok"] for d in got["designs"]].count(False) > 0  # a 240 mm crank cannot turn
+    failed = next(d for d in got["designs"] if not d["ok"])
+    assert failed["torque_peak"] is None and "cannot be assembled" in failed["failure"]
+
+
+def test_the_table_shows_each_design(capsys, expected):
+    code, out, err = run(capsys, "strip_cutter", *VARY, "--n", "36", "--cs", "0.02")
+    assert code == 0 and err == ""
+    table = out.split("\n\n")[1].splitlines()[1:]  # after the title, before the failures: a row per design
+    rows = [line.split() for line in table]
+    assert len(rows) == len(expected.designs)
+    for row, d in zip(rows, expected.designs):
+        if d.ok:  # columns: #, the two values (number and unit each), T_peak, T_rms, I_s
+            assert math.isclose(float(row[5]), d.torque_peak, rel_tol=1e-5)
+            assert math.isclose(float(row[7]), d.I_s, rel_tol=1e-5)
+        else:
+            assert row[5] == "—"
+    assert "cannot be assembled over the whole cycle" in out
+
+
+@pytest.mark.parametrize(("vary", "words"), [
+    ("links[9].mass=1..2 kg:3", "the problem has no links[9]"),
+    ("links[1].mass=1..2 m:3", "expected a mass"),
+    ("links[1].mas=1..2 kg:3", "unknown field"),
+    ("links[1].mass=1..x kg:3", "write it FIELD=FROM..TO UNIT:N"),
+    ("links[1].mass=1.2.3..4 kg:3", "is not a range of two numbers"),
+    ("links[1].mass=1..2 kg:0", "N = 0"),
+    ("links[1].mass=1..2 kg:1", "N = 1 value cannot span"),
+    ("links[1].mass=2..2 kg:3", "would all be equal"),
+    ("links[1].mass 2 kg", "write it FIELD=FROM..TO UNIT:N"),
+])
+def test_a_bad_vary_is_one_line_naming_it(capsys, vary, words):
+    code, out, err = run(capsys, "strip_cutter", "--vary", "links[0].mass=3..4 kg:2", "--vary", vary, "--n", "36")
+    assert code == 2 and out == ""
+    assert err.count("\n") == 1 and err.startswith(f"graphkin: error: --vary {vary!r}: ") and words in err
+
+
+def test_a_field_varied_twice_is_named(capsys):
+    code, _, err = run(capsys, "strip_cutter", "--vary", "links[1].mass=1..2 kg:2", "--vary",
+                       "links[1].mass=3..4 kg:2")
+    assert code == 2 and "--vary 'links[1].mass=3..4 kg:2': links[1].mass is varied twice" in err
+
+
+def test_values_are_equally_spaced_in_the_unit_given():
+    assert vary_values("links[1].mass = 2..3 kg:3") == ("links[1].mass", ["2.0 kg", "2.5 kg", "3.0 kg"])
+    assert vary_values("driver.omega=600..900 rpm:1" .replace("900", "600"))[1] == ["600.0 rpm"]
+
+
+def test_a_slider_drivers_effort_is_a_force(capsys):
+    code, out, _ = run(capsys, "double_slider", "--vary", "links[1].mass=4..6 kg:3", "--json")
+    got = json.loads(out)
+    assert code == 0 and got["driver"] == "slider" and got["units"]["torque"] == "N"
+    efforts = [d["torque_peak"] for d in got["designs"]]
+    assert efforts == sorted(efforts) and efforts[0] < efforts[-1]  # a heavier rod takes a larger push
+    code, out, _ = run(capsys, "double_slider", "--vary", "links[1].mass=4..6 kg:3")
+    assert "F_peak [N]" in out and "T_peak" not in out

@@ -1,0 +1,139 @@
+"""Design studies (graphkin.cycle.study): every design's figures of merit equal a single sweep of that design.
+
+Each design is rebuilt here on its own, the problem file's data with the values put in by ``set_field`` and read by
+``build_problem``, swept by ``graphkin.cycle.sweep``, and its figures of merit read off that Cycle; the study's
+must equal them to 1e-12 relative, over grids that cross the four-bar's and the slider-crank's parameters, with
+designs that cannot be assembled among them.
+"""
+
+import itertools
+import math
+import tomllib
+
+import numpy as np
+import pytest
+
+from graphkin import catalog
+from graphkin.cycle import study, sweep
+from graphkin.cycle.study import VaryError
+from graphkin.errors import GraphkinError
+from graphkin.problem import build_problem
+from graphkin.problem.fields import set_field
+
+REL = 1e-12
+
+
+def data_of(name):
+    return tomllib.loads(catalog.path(name).read_text(encoding="utf-8"))
+
+
+def single(name, fields, values, n):
+    """One design swept on its own, the study's figures of merit computed here from its Cycle."""
+    data = data_of(name)
+    for f, v in zip(fields, values):
+        set_field(data, f, v)
+    c = sweep(build_problem(data), n)
+    return c
+
+
+def close(a, b):
+    return (math.isnan(a) and math.isnan(b)) or math.isclose(a, b, rel_tol=REL, abs_tol=0.0)
+
+
+GRIDS = [
+    # the four-bar: the crank's length (some designs cannot turn), the coupler's mass, the rocker's G
+    ("strip_cutter", {"links[0].points.A[0]": ["70 mm", "85 mm", "150 mm", "240 mm"],
+                      "links[1].mass": ["1 kg", "2 kg", "3.5 kg"],
+                      "links[2].G.r": ["250 mm", "305 mm"]}, 72),
+    # the slider-crank: crank and rod lengths (a rod shorter than the crank plus the offset cannot turn), mass
+    ("slider_crank_friction", {"links[0].points.A": [["40 mm", "0 mm"], ["60 mm", "0 mm"], ["250 mm", "0 mm"]],
+                               "links[2].mass": ["0.5 kg", "2 kg"]}, 60),
+]
+
+
+@pytest.mark.parametrize(("name", "vary", "n"), GRIDS, ids=[g[0] for g in GRIDS])
+def test_every_design_equals_a_single_sweep_of_it(name, vary, n):
+    s = study(name, vary, n=n, Cs=0.03)
+    fields = tuple(vary)
+    assert s.fields == fields and s.shape == tuple(len(v) for v in vary.values())
+    assert [d.values for d in s.designs] == list(itertools.product(*vary.values()))  # the last field fastest
+    failed = 0
+    for d in s.designs:
+        c = single(name, fields, d.values, n)
+        bad = np.flatnonzero(~c.valid)
+        if len(bad):
+            failed += 1
+            assert not d.ok and d.failed_at == c.q[bad[0]]
+            assert c.analysis.reason(int(bad[0])) in d.failure and f"{len(bad)} of the {c.n} positions" in d.failure
+            assert all(math.isnan(x) for x in (d.torque_peak, d.torque_rms, d.I_s, d.shaking_force_peak,
+                                               d.shaking_moment_peak, d.transmission_angle_min))
+            continue
+        assert d.ok and math.isnan(d.failed_at)
+        T = c.torque
+        assert close(d.torque_peak, float(np.max(np.abs(T))))
+        assert close(d.torque_rms, math.sqrt(c.mean(T**2)))
+        assert close(d.I_s, c.flywheel(0.03).I_s)
+        assert close(d.shaking_force_peak, float(np.max(np.linalg.norm(c.shaking_force(), axis=1))))
+        assert close(d.shaking_moment_peak, float(np.max(np.abs(c.shaking_moment()))))
+        peaks = c.peaks().forces
+        assert set(d.joint_peaks) == set(peaks) and all(close(d.joint_peaks[k], peaks[k].value) for k in peaks)
+        if name == "strip_cutter":
+            assert close(d.transmission_angle_min, float(np.min(c.transmission_angle())))
+        else:  # a slider-crank has no four-bar transmission angle
+            assert math.isnan(d.transmission_angle_min)
+    assert 0 < failed < len(s.designs), "the grid should hold designs that turn and designs that cannot"
+
+
+def test_a_study_is_not_vectorised_and_says_why():
+    s = study("strip_cutter", {"links[1].mass": ["2 kg"]}, n=36)
+    assert s.vectorised is False and "one after another" in s.why_not_vectorised
+
+
+def test_a_design_without_a_flywheel_says_why():
+    s = study("strip_cutter", {"driver.omega": ["0 rpm", "900 rpm"]}, n=36)
+    still, turning = s.designs
+    assert math.isnan(still.I_s) and "ω = 0" in still.no_flywheel
+    assert turning.no_flywheel is None and turning.I_s > 0
+
+
+@pytest.mark.parametrize(("vary", "words"), [
+    ({"links[9].mass": ["1 kg"]}, "vary links[9].mass: the problem has no links[9]"),
+    ({"links[1].mas": ["1 kg"]}, "vary links[1].mas: '1 kg': unknown field"),
+    ({"links[1]..mass": ["1 kg"]}, "vary links[1]..mass: is not a field path"),
+    ({"links[1].mass": ["2 kg", "1 m"]}, "vary links[1].mass: '1 m': expected a mass"),
+    ({"links[1].mass": "1 kg"}, "vary links[1].mass: give a list of one or more values"),
+    ({"links[1].mass": []}, "vary links[1].mass: give a list of one or more values"),
+])
+def test_a_bad_field_or_value_is_named(vary, words):
+    with pytest.raises(VaryError) as exc:
+        study("strip_cutter", vary, n=36)
+    assert str(exc.value).startswith(words) and exc.value.field == next(iter(vary))
+    assert "\n" not in str(exc.value)
+
+
+@pytest.mark.parametrize(("problem", "vary", "words"), [
+    ("no_such_problem", {"links[1].mass": ["1 kg"]}, "neither a catalog problem"),
+    (3, {"links[1].mass": ["1 kg"]}, "study takes a catalog name"),
+    ("strip_cutter", {}, "vary must be a dict of at least one field"),
+    ("strip_cutter", ["links[1].mass"], "vary must be a dict of at least one field"),
+])
+def test_bad_input_is_one_plain_error(problem, vary, words):
+    with pytest.raises(GraphkinError, match=words):
+        study(problem, vary)
+
+
+def test_problem_data_is_taken_and_left_unchanged():
+    data = data_of("strip_cutter")
+    before = tomllib.loads(catalog.path("strip_cutter").read_text(encoding="utf-8"))
+    s = study(data, {"links[1].mass": ["4 kg"]}, n=36)
+    assert data == before
+    assert s.designs[0].torque_peak == study("strip_cutter", {"links[1].mass": ["4 kg"]}, n=36).designs[0].torque_peak
+
+
+def test_values_that_make_no_mechanism_together_mark_that_design():
+    # Each value alone is a crank; A0 and A both at x = 50 mm make a crank of zero length.
+    s = study("strip_cutter", {"links[0].points.A0[0]": ["0 mm", "50 mm"], "links[0].points.A[0]": ["85 mm", "50 mm"]},
+              n=36)
+    assert [d.ok for d in s.designs] == [True, True, True, False]
+    last = s.designs[-1]
+    assert "pins A and A0 coincide" in last.failure and math.isnan(last.failed_at) and math.isnan(last.torque_peak)
