@@ -4,7 +4,8 @@
 // It draws what the scene holds and computes nothing of the mechanics: every coordinate drawn is a number of the
 // scene, placed (y up becomes SVG's y down) or scaled by the scene's own force scale. Its only other arithmetic is
 // the reader's: a vector's polar form for the table and the hover read-out, and the nearest presolved position
-// to the pointer when the crank is dragged.
+// to the pointer when the crank is dragged. A new input speed is speed.js's (the scene's two presolved parts added,
+// or a presolved speed picked); this module draws the live copy of the scene it gives.
 //
 //   import { draw } from "./scene.js";
 //   const view = draw(element, scene);     // view.show(i), view.index, view.timings, view.scene (at its speed),
