@@ -29,6 +29,7 @@ from graphkin.graphical.guard import mechanism_size
 from graphkin.model import GearMesh, PointForce, Prismatic, Revolute
 from graphkin.scene.labels import label
 from graphkin.scene.polygons import force_polygons
+from graphkin.scene.speed import PRESOLVED, linearity, parts
 
 SCHEMA = 1
 """The version of the scene's layout (docs/json.md): raised whenever a reader of an older scene would misread it."""
@@ -65,13 +66,40 @@ def scene(problem, n: int = 360, *, polygons: bool = True) -> dict:
     --------
     >>> from graphkin import catalog
     >>> s = scene(catalog.load("strip_cutter"), 36, polygons=False)
-    >>> s["schema"], s["n"], s["effort"]["label"]
-    (1, 40, {'symbol': 'T', 'sub': '12', 'mark': '', 'unit': 'N*m'})
+    >>> s["schema"], s["n"], s["effort"]["label"], s["speed"]["kind"]
+    (1, 40, {'symbol': 'T', 'sub': '12', 'mark': '', 'unit': 'N*m'}, 'superpose')
     """
+    problem = drawn(problem)
+    out = _at_speed(problem, n, polygons)
+    out["speed"] = _speed(problem, n, out)
+    return out
+
+
+def drawn(problem):
+    """The problem a scene draws: a crank's cycle is the motion its input produces, so a book's measured values
+    ([given]), which hold at its own position only, are dropped (a slider-driven problem is drawn at its own
+    positions, with them).
+
+    Parameters
+    ----------
+    problem : graphkin.Problem
+
+    Returns
+    -------
+    graphkin.Problem
+    """
+    return problem.without_given() if problem.mechanism.driver.crank else problem
+
+
+def _cycle(problem, n):
+    """The cycle's force analysis: n crank angles, or a slider-driven problem's own positions."""
+    return (sweep(problem, n) if problem.mechanism.driver.crank else sweep(problem)).analysis
+
+
+def _at_speed(problem, n: int, polygons: bool) -> dict:
+    """The scene at the problem's own input rate, without its ``speed`` field."""
     mech = problem.mechanism
-    # A book's measured values ([given]) hold at its own position only: the cycle is the motion the input produces.
-    cycle = sweep(problem.without_given(), n) if mech.driver.crank else sweep(problem)
-    result = cycle.analysis
+    result = _cycle(problem, n)
     kin = result.kinematics
     valid = np.asarray(result.valid, bool)
     size = mechanism_size(mech)
@@ -111,6 +139,7 @@ def scene(problem, n: int = 360, *, polygons: bool = True) -> dict:
         "inertia": [],
         "effort": _effort(result, valid, force, size),
         "graphical": None,
+        "speed": None,
     }
     for f in forces:
         key = f.pop("key")
@@ -153,6 +182,44 @@ class _Rounder:
         """A torque [N·m], rounded as the force that gives it on an arm of the mechanism's size."""
         decimals = self.decimals - int(math.floor(math.log10(size))) if size > 0 else self.decimals
         return np.round(np.asarray(T, float), decimals).tolist()
+
+
+def _speed(problem, n: int, out: dict) -> dict:
+    """The scene's ``speed`` field (docs/json.md): how its forces change with the input speed
+    (:func:`graphkin.scene.speed.linearity`), with the two parts that rescale them exactly, or the forces at a few
+    presolved speeds."""
+    kind, reason = linearity(problem)
+    crank = problem.mechanism.driver.crank
+    rates = set(problem.q_dot)
+    field = {"kind": kind, "reason": reason, "value": float(problem.q_dot[0]) if len(rates) == 1 else None,
+             "unit": "rad/s" if crank else "m/s"}
+    if kind == "superpose":
+        rate = field["value"]
+        a, b = _cycle(problem, n), _cycle(problem.at_speed(2 * rate), n)
+        found = [parts(a.force(f["of"], f["on"]), b.force(f["of"], f["on"]), rate, 2 * rate) for f in out["forces"]]
+        effort = parts(a.effort, b.effort, rate, 2 * rate)
+        valid = np.asarray(a.valid, bool)
+        size = out["size"]
+        rounders = []
+        for k in range(2):  # each part rounded at its own scale: F_ω² is multiplied by ω² on the page
+            top = [float(np.nanmax(np.abs(F[k]))) for F in found if np.isfinite(F[k]).any()]
+            rounders.append(_Rounder(max(top + [0.0])))
+        torque = (lambda r, T: r.torque(np.where(valid, T, np.nan), size)) if crank else \
+            (lambda r, T: r.scalars(np.where(valid, T, np.nan)))
+        field["superpose"] = {
+            "forces": [{"rest": rounders[0](_masked(F[0], valid)), "omega2": rounders[1](_masked(F[1], valid))}
+                       for F in found],
+            "effort": {"rest": torque(rounders[0], effort[0]), "omega2": torque(rounders[1], effort[1])}}
+    elif kind == "presolved":
+        field["presolved"] = []
+        for fraction in PRESOLVED:
+            other = _at_speed(problem.at_speed(fraction * field["value"]), n, False)
+            field["presolved"].append({
+                "value": fraction * field["value"],
+                "forces": [f["analytical"] for f in other["forces"]],
+                "effort": other["effort"]["analytical"],
+                "inertia": [{k: inn[k] for k in ("force", "torque", "h", "line_point")} for inn in other["inertia"]]})
+    return field
 
 
 def _masked(xy, valid) -> np.ndarray:

@@ -1,13 +1,15 @@
 """A scene as compact JSON, and as one self-contained HTML page that draws it (no network, no build step).
 
-The page is ``js/page.html`` with the scene's JSON and the ES module ``js/scene.js`` put in its place: one file a
-student opens from disk, an LMS serves or an e-mail carries, that asks for nothing else. The JSON goes in a
+The page is ``js/page.html`` with the scene's JSON, the drawing module (:func:`module`: ``js/speed.js``,
+``js/scene.js`` and ``js/widget.js`` as one ES module) and its styles (``js/scene.css``) put in their place: one file
+a student opens from disk, an LMS serves or an e-mail carries, that asks for nothing else. The JSON goes in a
 ``<script type="application/json">`` element, with every ``<`` written ``\\u003c`` so that no string of the scene
 (a title, a reason) can close the element.
 """
 
 from __future__ import annotations
 
+import re
 from importlib import resources
 from pathlib import Path
 
@@ -32,8 +34,31 @@ def scene_json(data: dict) -> str:
 
 
 def asset(name: str) -> str:
-    """The text of one of the page's files shipped in the package (``scene.js``, ``page.html``)."""
+    """The text of one of the page's files shipped in the package (``scene.js``, ``scene.css``, ``page.html``, …)."""
     return resources.files("graphkin.scene").joinpath("js", name).read_text(encoding="utf-8")
+
+
+MODULES = ("speed.js", "scene.js", "widget.js")
+"""The drawing's ES modules, each importing only from those before it: :func:`module` joins them."""
+
+IMPORT = re.compile(r'^import \{[^}]*\} from "\./[a-z]+\.js";\n', re.M)
+"""A module's import of another of :data:`MODULES` (a page from disk, or a notebook's widget, loads one module: a
+relative import has no file to come from)."""
+
+
+def module() -> str:
+    """The drawing as one ES module: :data:`MODULES` in their order, without their imports of one another.
+
+    Exports ``draw(element, scene)`` (the page calls it; not named ``render``, which anywidget would take for its
+    own), ``default`` (anywidget's ``render({model, el})``: the notebook's widget, :mod:`graphkin.widgets.browser`),
+    and ``live``, ``setRate`` and ``polar``.
+
+    Returns
+    -------
+    str
+        JavaScript.
+    """
+    return "\n".join(IMPORT.sub("", asset(name)) for name in MODULES)
 
 
 def page(data: dict) -> str:
@@ -52,12 +77,12 @@ def page(data: dict) -> str:
     from html import escape
 
     text = scene_json(data).replace("<", "\\u003c")
-    module = asset("scene.js")
-    if "</script" in module.lower():  # pragma: no cover - the shipped module is written without one
+    code = module()
+    if "</script" in code.lower():  # pragma: no cover - the shipped module is written without one
         raise ValueError("scene.js must not contain '</script'")
     html = asset("page.html")
     return (html.replace("{{title}}", escape(data["title"] or data["problem"]))
-            .replace("{{scene}}", text).replace("{{module}}", module))
+            .replace("{{style}}", asset("scene.css")).replace("{{scene}}", text).replace("{{module}}", code))
 
 
 def write_page(data: dict, path: str | Path, what: str = "-o") -> Path:

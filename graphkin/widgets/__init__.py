@@ -38,7 +38,13 @@ What a person sees in a browser, and what code sees, agree:
   ``CSS_DPI × pixel ratio`` (text of 8 pt is then at least 11 screen pixels
   high and sharp on a HiDPI screen), at most as wide as the page.
 
-ipywidgets, matplotlib and PIL are imported only when an explorer is built:
+``explore(problem, browser=True)`` builds a
+:class:`~graphkin.widgets.browser.BrowserExplorer` instead: the browser draws every position of a presolved cycle
+with the module of ``graphkin explore -o page.html`` (an anywidget), and the kernel answers only a change the scene
+cannot express (``set("mass.3", 4.0)``) with a new scene. It is not yet the default: the lessons and their browser
+tests read the PNG explorer's widgets.
+
+ipywidgets, anywidget, matplotlib and PIL are imported only when an explorer is built:
 ``import graphkin`` and ``import graphkin.widgets`` do not load them.
 
 :func:`exercise` builds an :class:`ExerciseBox`: a box for the student's id,
@@ -50,6 +56,8 @@ The package, one module per concern:
     :func:`explore` and :class:`Explorer`: the controls' behaviour, what the
     browser sends (echoes, bursts, the thread a message is answered on) and
     each update.
+``browser``
+    :class:`BrowserExplorer`: the scene in an anywidget, and ``set``'s fields.
 ``controls``
     The widgets: the position's slider and box (whole degrees, or a round
     step over the span where a slider-driven linkage assembles), the speed,
@@ -82,11 +90,12 @@ Examples
 >>> ex.analytical["T12"], ex.construction.effort  # doctest: +SKIP
 """
 
+from graphkin.widgets.browser import BrowserExplorer
 from graphkin.widgets.canvas import CELL_ASPECT, CSS_DPI, FIGURE_WIDTH, MIN_PT, NCOLS, PAGE_WIDTH
 from graphkin.widgets.exercise_box import ExerciseBox, exercise
 from graphkin.widgets.explorer import ECHOES, LIVE, SETTLE, Explorer, explore
 from graphkin.widgets.frames import AHEAD, FRAMES, IDLE, MOST_AHEAD, RC, SHOWN, STEP, Frame
 
-__all__ = ["AHEAD", "CELL_ASPECT", "CSS_DPI", "ECHOES", "FIGURE_WIDTH", "FRAMES", "IDLE", "LIVE", "MIN_PT",
+__all__ = ["AHEAD", "BrowserExplorer", "CELL_ASPECT", "CSS_DPI", "ECHOES", "FIGURE_WIDTH", "FRAMES", "IDLE", "LIVE", "MIN_PT",
            "MOST_AHEAD", "NCOLS", "PAGE_WIDTH", "RC", "SETTLE", "SHOWN", "STEP", "ExerciseBox", "Explorer", "Frame",
            "exercise", "explore"]

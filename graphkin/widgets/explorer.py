@@ -28,6 +28,7 @@ from graphkin.errors import GraphkinError
 from graphkin.graphical import construct_forces, construct_kinematics
 from graphkin.graphical.guard import check_forces
 from graphkin.optional import require
+from graphkin.widgets.browser import BrowserExplorer
 from graphkin.widgets.canvas import PAGE_WIDTH, Canvas, force_table
 from graphkin.widgets.controls import make_controls, snap
 from graphkin.widgets.frames import AHEAD, MOST_AHEAD, DrawingAhead, Frame, to_the_end
@@ -46,8 +47,13 @@ ECHOES = 64
 
 
 def explore(problem, *, n: int = 360, limits=None, dpi: int | None = None, halo: bool = False,
-            ahead: int = AHEAD):
+            ahead: int = AHEAD, browser: bool = False):
     """An interactive explorer of a problem, for a Jupyter notebook.
+
+    By default the kernel draws each position as a PNG (:class:`Explorer`). With ``browser=True`` the browser draws
+    every position of a presolved cycle (:class:`graphkin.widgets.browser.BrowserExplorer`, issue 37): the kernel is
+    asked again only for a new length, mass, load or friction (``set``); ``limits``, ``dpi``, ``halo`` and ``ahead``
+    are the PNG explorer's and do not apply.
 
     Parameters
     ----------
@@ -73,12 +79,16 @@ def explore(problem, *, n: int = 360, limits=None, dpi: int | None = None, halo:
         the one shown are drawn ahead, the way the slider last moved first: a
         key press (or a typed value) that reaches one of them shows it at once.
         0 draws only what is asked for.
+    browser : bool
+        Draw in the browser from a presolved cycle of ``n`` crank angles (a slider driver: its own positions).
 
     Returns
     -------
-    Explorer
+    Explorer or graphkin.widgets.browser.BrowserExplorer
         The widgets and the figure; display it in a cell.
     """
+    if browser:
+        return BrowserExplorer(problem, n)
     return Explorer(problem, n=n, limits=limits, dpi=dpi, halo=halo, ahead=ahead)
 
 

@@ -28,7 +28,7 @@ def test_the_page_holds_the_scene_and_the_module_and_nothing_to_fetch(capsys, tm
     assert err.count("\n") == 1 and str(path) in err and "40 positions" in err
     text = path.read_text(encoding="utf-8")
     assert _scene_in(text) == json.loads(scene_json(scene(catalog.load("strip_cutter"), 36)))
-    assert "export function render(" in text and '<script type="module">' in text
+    assert "export function draw(" in text and '<script type="module">' in text
     # Nothing the browser would fetch: no source or link attribute, no URL but the SVG namespace's name.
     assert not re.search(r"\b(src|href)=", text)
     assert set(re.findall(r"https?://[^\s\"'`]+", text)) == {"http://www.w3.org/2000/svg"}

@@ -129,7 +129,7 @@ def test_import_graphkin_does_not_load_widgets_or_matplotlib():
     code = ("import sys, graphkin, graphkin.problem, graphkin.catalog; "
             "bad = [m for m in ('ipywidgets', 'matplotlib', 'graphkin.widgets') if m in sys.modules]; "
             "import graphkin.widgets; "  # the module itself imports them only when an explorer is built
-            "bad += [m for m in ('ipywidgets', 'matplotlib') if m in sys.modules]; "
+            "bad += [m for m in ('ipywidgets', 'matplotlib', 'anywidget') if m in sys.modules]; "
             "print(bad); sys.exit(1 if bad else 0)")
     r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
     assert r.returncode == 0, r.stdout + r.stderr

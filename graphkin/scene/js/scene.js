@@ -4,10 +4,14 @@
 // It draws what the scene holds and computes nothing of the mechanics: every coordinate drawn is a number of the
 // scene, placed (y up becomes SVG's y down) or scaled by the scene's own force scale. Its only other arithmetic is
 // the reader's: a vector's polar form for the table and the hover read-out, and the nearest presolved position
-// to the pointer when the crank is dragged.
+// to the pointer when the crank is dragged. A new input speed is speed.js's (the scene's two presolved parts added,
+// or a presolved speed picked); this module draws the live copy of the scene it gives.
 //
-//   import { render } from "./scene.js";
-//   const view = render(element, scene);   // view.show(i), view.index, view.timings
+//   import { draw } from "./scene.js";
+//   const view = draw(element, scene);     // view.show(i), view.index, view.timings, view.scene (at its speed),
+//                                          // view.pause()
+
+import { live, setRate } from "./speed.js";
 
 const SVG = "http://www.w3.org/2000/svg";
 const INK = { link: "#333", fill: "#dfe7f1", joint: "#1565c0", graphical: "#2e7d32", load: "#c62828",
@@ -225,17 +229,32 @@ function drawMechanism(parts, scene, i, ok) {
 
 // -- the driving effort against the input --------------------------------------------------------------------------
 function curve(view, scene) {
+  const svg = el("svg", { class: "gk-curve", preserveAspectRatio: "none", role: "img",
+    "aria-label": `the driving effort ${scene.effort.name} over the cycle` }, view.curveBox);
+  const axis = el("line", { y1: 0, y2: 0, stroke: "#999", "stroke-width": 1, "vector-effect": "non-scaling-stroke" },
+    svg);
+  const path = el("path", { fill: "none", stroke: INK.curve, "stroke-width": 2, "vector-effect": "non-scaling-stroke" },
+    svg);
+  const cursor = el("line", { stroke: INK.cursor, "stroke-width": 1.5, "vector-effect": "non-scaling-stroke",
+    class: "gk-cursor" }, svg);
+  const dot = el("line", { stroke: INK.cursor, "stroke-width": 8, "stroke-linecap": "round",
+    "vector-effect": "non-scaling-stroke", class: "gk-dot" }, svg);
+  const parts = { svg, axis, path, cursor, dot };
+  setCurve(parts, scene);
+  return parts;
+}
+
+// The curve of the scene's effort (again when the speed changes it).
+function setCurve(parts, scene) {
   const q = scene.input.values;
   const T = scene.effort.analytical;
   const [lo, hi] = scene.effort.range;
   const pad = 0.05 * (hi - lo || 1);
   const q0 = q[0];
   const q1 = q[q.length - 1];
-  const svg = el("svg", { class: "gk-curve", viewBox: `${q0} ${-(hi + pad)} ${q1 - q0 || 1} ${hi - lo + 2 * pad}`,
-    preserveAspectRatio: "none", role: "img", "aria-label": `the driving effort ${scene.effort.name} over the cycle` },
-  view.curveBox);
-  el("line", { x1: q0, x2: q1, y1: 0, y2: 0, stroke: "#999", "stroke-width": 1,
-    "vector-effect": "non-scaling-stroke" }, svg);
+  parts.svg.setAttribute("viewBox", `${q0} ${-(hi + pad)} ${q1 - q0 || 1} ${hi - lo + 2 * pad}`);
+  parts.axis.setAttribute("x1", q0);
+  parts.axis.setAttribute("x2", q1);
   let d = "";
   let pen = "M";
   for (let k = 0; k < q.length; k += 1) {
@@ -246,12 +265,9 @@ function curve(view, scene) {
     d += `${pen}${q[k]},${-T[k]}`;
     pen = "L";
   }
-  el("path", { d, fill: "none", stroke: INK.curve, "stroke-width": 2, "vector-effect": "non-scaling-stroke" }, svg);
-  const cursor = el("line", { y1: -(hi + pad), y2: -(lo - pad), stroke: INK.cursor, "stroke-width": 1.5,
-    "vector-effect": "non-scaling-stroke", class: "gk-cursor" }, svg);
-  const dot = el("line", { stroke: INK.cursor, "stroke-width": 8, "stroke-linecap": "round",
-    "vector-effect": "non-scaling-stroke", class: "gk-dot" }, svg);
-  return { svg, cursor, dot };
+  parts.path.setAttribute("d", d);
+  parts.cursor.setAttribute("y1", -(hi + pad));
+  parts.cursor.setAttribute("y2", -(lo - pad));
 }
 
 function drawCurve(parts, scene, i) {
@@ -343,6 +359,39 @@ function drawTable(parts, scene, i) {
   parts.effort.g.textContent = G === null ? "—" : `${number(G)} ${unit}`;
 }
 
+// -- the input speed -------------------------------------------------------------------------------------------------
+// The speed box: any speed of the file's sense (superpose), the presolved speeds (a list), or the one speed stated.
+function rateControl(bar, scene) {
+  const sp = scene.speed;
+  const crank = sp.unit === "rad/s";
+  const shownValue = (v) => String(Number((crank ? (v * 30) / Math.PI : v).toPrecision(6)));
+  const lab = html("label", {}, bar);
+  lab.appendChild(document.createTextNode(`${crank ? "ω" : "v"}${scene.driver.link} = `));
+  let box;
+  if (sp.kind === "superpose") {
+    box = html("input", { type: "number", step: "any", value: shownValue(sp.value), size: 8, "data-do": "rate",
+      "aria-label": "the input speed" }, lab);
+  } else if (sp.kind === "presolved") {
+    box = html("select", { "data-do": "rate", "aria-label": "the input speed (presolved)" }, lab);
+    for (const p of sp.presolved) {
+      html("option", p.value === sp.value ? { value: p.value, selected: "" } : { value: p.value }, box,
+        shownValue(p.value));
+    }
+  } else {
+    box = html("output", { "data-do": "rate" }, lab, sp.value === null ? "as the file gives" : shownValue(sp.value));
+  }
+  lab.appendChild(document.createTextNode(` ${crank ? "rpm" : "m/s"}`));
+  const how = { superpose: "any speed of this sense, exactly", presolved: "presolved speeds only",
+    static: "no force depends on it", fixed: "this speed only" }[sp.kind];
+  const note = html("span", { class: "gk-note", "data-do": "rate-note" }, bar, `(${how}: ${sp.reason})`);
+  const own = box.value;
+  // The rate the box says [rad/s or m/s]: the scene's own where the box shows it unchanged; a list's options hold
+  // the presolved rates themselves, a typed speed is in rpm for a crank.
+  const typed = (text) => (crank ? (Number(text) * Math.PI) / 30 : Number(text));
+  const rate = () => (box.value === own ? sp.value : sp.kind === "presolved" ? Number(box.value) : typed(box.value));
+  return { box, note, own, rate, text: note.textContent };
+}
+
 // -- the page -------------------------------------------------------------------------------------------------------
 function controls(view, scene) {
   const bar = html("div", { class: "gk-controls" }, view.root);
@@ -361,7 +410,8 @@ function controls(view, scene) {
     toggles[key] = html("input", { type: "checkbox", checked: "", "data-toggle": key }, lab);
     lab.appendChild(document.createTextNode(` ${text}`));
   }
-  return { play, slider, where, speed, toggles };
+  const rate = scene.speed ? rateControl(bar, scene) : null;
+  return { play, slider, where, speed, toggles, rate };
 }
 
 function inputText(scene, i) {
@@ -371,8 +421,11 @@ function inputText(scene, i) {
     : `${symbol}${sub} = ${(q * 1000).toFixed(2)} mm`;
 }
 
-export function render(root, scene) {
-  if (scene.schema !== 1) throw new Error(`graphkin scene: schema ${scene.schema} is not one this page reads (1)`);
+// options.keys: what listens for the arrow keys and the space bar (the page: the document; a notebook's widget: its
+// own element, so that keys typed in a cell stay the cell's).
+export function draw(root, base, options = {}) {
+  if (base.schema !== 1) throw new Error(`graphkin scene: schema ${base.schema} is not one this page reads (1)`);
+  const scene = live(base);
   root.classList.add("gk-scene");
   const view = { root, index: 0, timings: [] };
   const ui = controls(view, scene);
@@ -394,13 +447,14 @@ export function render(root, scene) {
     const ok = scene.valid[k] === 1;
     drawMechanism(mech, scene, k, ok);
     if (on("curve")) drawCurve(curveParts, scene, k);
-    if (poly && on("polygons")) drawPolygons(poly, scene, k);
+    if (poly && on("polygons") && scene.graphical) drawPolygons(poly, scene, k);
     if (on("table")) drawTable(tableParts, scene, k);
     ui.slider.value = k;
     ui.where.textContent = inputText(scene, k);
     return k;
   }
   view.show = show;
+  view.scene = scene;
 
   // Each input event is timed from the event (its timeStamp) to the SVG updated (view.timings, ms) and to the next
   // frame the browser draws (view.frames); view.work is the drawing alone, from the handler's start. (Chromium holds
@@ -417,7 +471,7 @@ export function render(root, scene) {
     requestAnimationFrame(() => view.frames.push(performance.now() - t0));
   }
   ui.slider.addEventListener("input", (e) => step(e, Number(e.target.value)));
-  document.addEventListener("keydown", (e) => {
+  (options.keys || document).addEventListener("keydown", (e) => {
     // The slider moves itself (and says so with "input"); the speed box keeps its own keys. A toggle has no use
     // for them: they step the position.
     if (e.target.matches?.("select, textarea, input:not([type=checkbox])")) return;
@@ -450,12 +504,31 @@ export function render(root, scene) {
     playing = requestAnimationFrame(frame);
   }
   ui.play.addEventListener("click", toggle);
+  view.pause = () => { if (playing !== null) toggle(); };
 
   for (const [key, box] of Object.entries(ui.toggles)) {
     box.addEventListener("change", () => {
       const target = { forces: mech.groups.forces, loads: mech.groups.loads, inertia: mech.groups.inertia,
         curve: view.curveBox, table: view.tableBox, polygons: view.polygonBox }[key];
-      shown(target, box.checked);
+      shown(target, box.checked && (key !== "polygons" || scene.graphical !== null));
+      show(view.index);
+    });
+  }
+
+  // A new speed: the live scene's forces at it (setRate), the curve redrawn, the polygons shown at the own speed only.
+  if (ui.rate && ui.rate.box.tagName !== "OUTPUT") {
+    ui.rate.box.addEventListener("change", () => {
+      const rate = ui.rate.rate();
+      if (!(rate * base.speed.value > 0)) {
+        ui.rate.box.value = ui.rate.own;
+        ui.rate.note.textContent = `(a speed of the file's sense only, not 0: ${base.speed.reason})`;
+        return;
+      }
+      setRate(scene, base, rate);
+      setCurve(curveParts, scene);
+      shown(view.polygonBox, scene.graphical !== null && on("polygons"));
+      ui.rate.note.textContent = ui.rate.text + (base.graphical && !scene.graphical
+        ? " The graphical route and the force polygons are presolved at the file's speed only." : "");
       show(view.index);
     });
   }

@@ -1,0 +1,57 @@
+// The speed of a scene's input changed in the browser (docs/json.md, "speed"): the one module of graphkin's pages
+// that computes with the mechanics' numbers, and only as the scene says it may. Where the forces are linear in the
+// square of the input rate, F(ω) = F_rest + ω² F_ω² with both parts presolved by Python; elsewhere it picks a
+// presolved speed. No DOM: scene.js draws what it gives. (page.py puts this module and scene.js in one.)
+
+// What the drawing reads is a copy of the scene whose speed-dependent values the speed box replaces (the parts drawn
+// hold its objects); the scene itself stays as Python gave it.
+export function live(scene) {
+  return { ...scene, scales: { ...scene.scales }, effort: { ...scene.effort },
+    forces: scene.forces.map((f) => ({ ...f })), inertia: scene.inertia.map((x) => ({ ...x })) };
+}
+
+function largest(scene) {
+  let top = 0;
+  for (const f of scene.forces) {
+    for (let k = 0; k < f.analytical.length; k += 2) {
+      if (f.analytical[k] !== null) top = Math.max(top, Math.hypot(f.analytical[k], f.analytical[k + 1]));
+    }
+  }
+  return top;
+}
+
+const superposed = (rest, omega2, r2) => rest.map((v, k) => (v === null ? null : v + r2 * omega2[k]));
+const scaled = (flat, c) => flat.map((v) => (v === null ? null : c * v));
+
+// Set the live scene `view` to the input rate `rate` [rad/s or m/s] of `base`: at its own speed, its own values;
+// otherwise F_rest + rate² F_ω² and each inertia resultant times (rate/rate₀)², its line unmoved (speed.kind
+// "superpose"), or the presolved speed's values ("presolved"). The graphical route is presolved at the own speed
+// only. The force scale grows, never shrinks, so that the largest arrow stays as long as the scene drew it.
+export function setRate(view, base, rate) {
+  const sp = base.speed;
+  const own = rate === sp.value;
+  const r2 = rate * rate;
+  const chosen = sp.kind === "presolved" ? sp.presolved.find((p) => p.value === rate) : null;
+  if (!own && !chosen && sp.kind !== "superpose") throw new Error(`graphkin scene: no forces at ${rate}`);
+  view.forces.forEach((f, j) => {
+    const part = sp.superpose ? sp.superpose.forces[j] : null;
+    f.analytical = own ? base.forces[j].analytical : chosen ? chosen.forces[j]
+      : superposed(part.rest, part.omega2, r2);
+    f.graphical = own ? base.forces[j].graphical : undefined;
+  });
+  view.inertia.forEach((inn, j) => {
+    const b = base.inertia[j];
+    const c = r2 / (sp.value * sp.value);
+    Object.assign(inn, own ? b : chosen ? chosen.inertia[j] : { force: scaled(b.force, c), torque: scaled(b.torque, c) });
+  });
+  const T = own ? base.effort.analytical : chosen ? chosen.effort
+    : superposed(sp.superpose.effort.rest, sp.superpose.effort.omega2, r2);
+  const finite = T.filter((v) => v !== null);
+  const lo = Math.min(0, ...finite);
+  const hi = Math.max(0, ...finite);
+  Object.assign(view.effort, { analytical: T, graphical: own ? base.effort.graphical : undefined,
+    range: own ? base.effort.range : hi > lo ? [lo, hi] : [-1, 1] });
+  view.graphical = own ? base.graphical : null;
+  view.scales.force = own ? base.scales.force : base.scales.force * Math.max(1, largest(view) / largest(base));
+  view.rate = rate;
+}

@@ -1,0 +1,115 @@
+"""A scene's speed (issue 37, item 3): where the forces are linear in ω², its two parts give every speed of the
+file's sense exactly; where they are not, the problem is marked with the reason and carries presolved speeds."""
+
+from __future__ import annotations
+
+import json
+from dataclasses import replace
+
+import numpy as np
+import pytest
+
+import graphkin as gk
+from graphkin.cycle import sweep
+from graphkin.model import GearMesh, Prismatic
+from graphkin.scene import PRECISION, scene, scene_json
+from graphkin.scene.build import drawn
+from graphkin.scene.speed import PRESOLVED, linearity
+
+N = 24
+KINDS = {name: linearity(drawn(gk.load(name)))[0] for name in gk.catalog.names()}
+
+
+def _read(problem) -> dict:
+    return json.loads(scene_json(scene(problem, N, polygons=False)))
+
+
+def _flat(values) -> np.ndarray:
+    return np.array([np.nan if v is None else v for v in values], float)
+
+
+def _direct(problem, rate):
+    """The cycle solved directly at another input rate, at the scene's positions."""
+    other = drawn(problem).at_speed(rate)
+    return (sweep(other, N) if problem.mechanism.driver.crank else sweep(other)).analysis
+
+
+@pytest.mark.parametrize("name", [k for k, v in KINDS.items() if v == "superpose"])
+@pytest.mark.parametrize("factor", [0.3, 1.7])
+def test_superposed_forces_equal_a_direct_solve_at_another_speed(name, factor):
+    problem = gk.load(name)
+    s = _read(problem)
+    speed = s["speed"]
+    rate = factor * speed["value"]
+    r = _direct(problem, rate)
+    top = max(float(np.nanmax(np.hypot(*r.force(f["of"], f["on"]).T))) for f in s["forces"])
+    for f, part in zip(s["forces"], speed["superpose"]["forces"]):
+        # What the page computes from the scene's numbers: F_rest + ω² F_ω².
+        found = _flat(part["rest"]) + rate**2 * _flat(part["omega2"])
+        np.testing.assert_allclose(found, r.force(f["of"], f["on"]).reshape(-1), rtol=0, atol=1e-9 * top)
+    effort = speed["superpose"]["effort"]
+    found = _flat(effort["rest"]) + rate**2 * _flat(effort["omega2"])
+    arm = s["size"] if s["driver"]["kind"] == "crank" else 1.0
+    np.testing.assert_allclose(found, r.effort, rtol=0, atol=1e-9 * top * arm)
+    # At the file's own speed the parts give the scene's own forces.
+    for f, part in zip(s["forces"], speed["superpose"]["forces"]):
+        own = _flat(part["rest"]) + speed["value"] ** 2 * _flat(part["omega2"])
+        np.testing.assert_allclose(own, _flat(f["analytical"]), rtol=0, atol=2 * PRECISION * top / factor**2)
+    # Each inertia resultant scales by (ω/ω₀)², its line unmoved.
+    for inn in s["inertia"]:
+        exact = r.inertia(inn["link"])
+        np.testing.assert_allclose(factor**2 * _flat(inn["force"]), exact.F.reshape(-1), rtol=0, atol=1e-9 * top)
+        np.testing.assert_allclose(_flat(inn["line_point"]), exact.line_point.reshape(-1), rtol=0,
+                                   atol=PRECISION * s["size"])
+
+
+@pytest.mark.parametrize("name", [k for k, v in KINDS.items() if v == "presolved"])
+def test_presolved_speeds_equal_direct_solves(name):
+    problem = gk.load(name)
+    s = _read(problem)
+    speed = s["speed"]
+    assert [p["value"] for p in speed["presolved"]] == [f * speed["value"] for f in PRESOLVED]
+    for p in speed["presolved"]:
+        r = _direct(problem, p["value"])
+        top = max(float(np.nanmax(np.hypot(*r.force(f["of"], f["on"]).T))) for f in s["forces"])
+        for f, F in zip(s["forces"], p["forces"]):
+            np.testing.assert_allclose(_flat(F), r.force(f["of"], f["on"]).reshape(-1), rtol=0,
+                                       atol=2 * PRECISION * top)
+        for inn, found in zip(s["inertia"], p["inertia"]):
+            np.testing.assert_allclose(_flat(found["force"]), r.inertia(inn["link"]).F.reshape(-1), rtol=0,
+                                       atol=2 * PRECISION * top)
+
+
+def test_every_problem_not_linear_in_the_speed_is_marked_with_its_reason():
+    for name, kind in KINDS.items():
+        problem = drawn(gk.load(name))  # a crank's cycle: the motion its input gives, a book's [given] values dropped
+        speed = _read(problem)["speed"] if name in ("slider_crank_friction", "fourbar_dynamic_makdin") else None
+        mech = problem.mechanism
+        friction = [j for j in mech.joints if isinstance(j, Prismatic) and j.mu]
+        losses = [j for j in mech.joints if isinstance(j, GearMesh) and j.efficiency < 1]
+        reason = linearity(problem)[1]
+        if problem.static:
+            assert kind == "static", name
+        elif problem.given:
+            assert kind == "fixed" and "[given]" in reason, name
+        elif friction:
+            assert kind == "presolved" and "friction" in reason and f"μ = {friction[0].mu:g}" in reason, name
+        elif losses:
+            assert kind == "presolved" and "η" in reason, name
+        elif problem.q_ddot[0] != 0:
+            assert kind == "presolved" and "accelerates" in reason, name
+        else:
+            assert kind == "superpose", name
+        if speed is not None:
+            assert speed["kind"] == kind and speed["reason"] == reason
+            assert ("presolved" in speed) == (kind == "presolved") and ("superpose" in speed) == (kind == "superpose")
+
+
+def test_a_problem_held_to_its_own_speed_says_why():
+    base = gk.load("double_slider")  # slider-driven: drawn at its own positions, a book's values with them
+    given = replace(base, given={(3, "omega"): np.array([1.0])})
+    at_rest = replace(base, q_dot=np.zeros_like(base.q_dot))
+    assert linearity(given) == ("fixed", "the file gives kinematic values ([given]) that hold at its own speed only")
+    kind, reason = linearity(at_rest)
+    assert kind == "fixed" and "at rest (v = 0)" in reason
+    assert scene(at_rest, polygons=False)["speed"] == {"kind": kind, "reason": reason, "value": 0.0, "unit": "m/s"}
