@@ -171,7 +171,7 @@ class _Polygons:
         self.a_img = {"o′": (0.0, 0.0)}
         self.velocity, self.acceleration = {}, {}
         # Whose point each image is, and what each Coriolis component is of, for the guard (graphical/guard.py).
-        self.where: dict[str, tuple[int, complex]] = {}
+        self.where: dict[str, tuple[int, complex, tuple | None]] = {}
         self.coriolis: dict[str, tuple[int, int, int, complex]] = {}
         self._O = {n: complex(kin.O[n][i]) for n in mech.moving}
         self._e = {n: complex(kin.e[n][i]) for n in mech.moving}
@@ -221,7 +221,7 @@ class _Polygons:
             X = self.pos(link, J.point)
             self.motion[link] = _Motion(X, v, 0.0)
             s = self.sym(link, J.point)
-            self.where[s.lower()] = self.where[f"{s.lower()}′"] = (link, X)
+            self.where[s.lower()] = self.where[f"{s.lower()}′"] = (link, X, (link, J.point))
             caption = (f"Driver {link} slides along its guide at v = {number(w2)} m/s: v_{s} = {self.text(v, V)}, "
                        f"drawn from the pole o to {s.lower()}.")
             self.step("velocity", "driver", caption, (link,), [(f"v_{s}", 0j, v, "size and direction")],
@@ -254,7 +254,7 @@ class _Polygons:
         for key, s, label, p in self.fixed.images[link]:
             v = m.vel(O + e * p)
             found[label] = v
-            self.where[label] = (link, O + e * p)
+            self.where[label] = (link, O + e * p, key)
             vectors.append((f"v_{s}", 0j, v, "found"))
             if label not in self.v_img:  # a point a step before has found is not read off again
                 listed.append(f"v_{s} = {self.text(v, V)}")
@@ -277,7 +277,7 @@ class _Polygons:
         for key, s, label, p in self.fixed.images[link]:
             a = m.acc(O + e * p)
             found[label + "′"] = a
-            self.where[label + "′"] = (link, O + e * p)
+            self.where[label + "′"] = (link, O + e * p, key)
             vectors.append((f"a_{s}", 0j, a, "found"))
             if label + "′" not in self.a_img:
                 listed.append(f"a_{s} = {self.text(a, A)}")
@@ -354,7 +354,7 @@ class _Polygons:
         caption = (f"{d.label}: {' and '.join(phrases)}. The two lines meet at {x.lower()}: "
                    f"v_{x} = {self.text(v_X, V)}." + (f" {read}." if read else "")
                    + self.tied_phrase(d, sides, w))
-        self.where[x.lower()] = self.where[f"{x.lower()}′"] = (d.k, X)
+        self.where[x.lower()] = self.where[f"{x.lower()}′"] = (d.k, X, None)
         self.step("velocity", "dyad", caption, (d.j, d.k), vectors, lines, {x.lower(): v_X}, values)
 
         on_j = d.type in ("RRR", "RRP", "PRP")
@@ -481,8 +481,8 @@ class _Polygons:
         arm = P - Ck
         w = cross(arm, v_P - v_C) / abs(arm) ** 2
         p = f"P{g.j}{g.k}"
-        self.where[p.lower()] = (g.j, P)  # the pitch point of gear j: gear k's has its velocity (rolling)
-        self.where[f"{p.lower()}′"] = (g.k, P)  # the acceleration polygon finds gear k's (gear_acceleration)
+        self.where[p.lower()] = (g.j, P, None)  # the pitch point of gear j: gear k's has its velocity (rolling)
+        self.where[f"{p.lower()}′"] = (g.k, P, None)  # the acceleration polygon finds gear k's (gear_acceleration)
         caption = (f"Gear {g.k} meshes with gear {g.j} at the pitch point {p}, where the gears roll: v_{p} on gear {g.k} "
                    f"equals v_{p} on gear {g.j} = {self.text(v_P, V)}. Gear {g.k} turns about {c}: "
                    f"ω{g.k} = v_{p}{c} / {c}{p} = {_rad(w, 'rad/s')}.")
