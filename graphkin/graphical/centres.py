@@ -26,6 +26,7 @@ from graphkin.errors import GraphkinError
 from graphkin.graphical.captions import Captions, Later, number
 from graphkin.graphical.guard import centres_disagreement, derived
 from graphkin.kinematics import DriverGroup, Kinematics
+from graphkin.kinematics.plan import plan_of
 from graphkin.model import GearMesh, Prismatic, Revolute
 
 SAME = 1e-9
@@ -143,14 +144,15 @@ def instant_centres(kin: Kinematics, index: int = 0) -> InstantCentres:
     frame = mech.frame
     kin, at = derived(kin, i)  # placed by the input motion alone, a problem's given values left out
 
-    O = {n: complex(kin.O[n][at]) for n in mech.moving}
-    e = {n: complex(kin.e[n][at]) for n in mech.moving}
+    O = {n: complex(kin.O[n].item(at)) for n in mech.moving}
+    e = {n: complex(kin.e[n].item(at)) for n in mech.moving}
+    points = plan_of(mech).points  # (link, name): the point in its link's own frame [m], complex
 
     def pos(link, name):
-        x, y = mech.link(link).point(name)
-        return complex(x, y) if link == frame else O[link] + e[link] * complex(x, y)
+        p = points[link, name]
+        return p if link == frame else O[link] + e[link] * p
 
-    size = max(abs(pos(link.number, name)) for link in mech.links for name in link.points) or 1.0
+    size = max([abs(pos(link, name)) for link, name in points]) or 1.0
 
     def hom(z: complex):
         return _unit((z.real / size, z.imag / size, 1.0))
