@@ -5,6 +5,8 @@ Captions are plain text (a hyphen-minus), written with :mod:`graphkin.notation`.
 
 from __future__ import annotations
 
+from dataclasses import FrozenInstanceError
+
 from graphkin.notation import num, polar_text
 
 _MARKS = ("′", "″", "‴", "⁗")
@@ -32,6 +34,53 @@ class Later:
 
     def __str__(self) -> str:
         return self.write(*self.values)
+
+
+class Caption:
+    """A step's caption, as every reader sees it: a str (a descriptor of the ``caption`` field of a step).
+
+    The builder may hand a step text that is written only when first read (any object whose ``str()`` is the
+    caption, e.g. :class:`Later`): most constructions are made to be checked, not read, and their captions are a
+    good part of their cost. Once read, the text replaces it. The step's ``__init__`` writes its ``__dict__``, and
+    its ``__getstate__`` writes the text before it is copied or pickled.
+    """
+
+    def __get__(self, step, owner=None):
+        if step is None:
+            # No class-level default: the dataclass keeps ``caption`` a required field.
+            raise AttributeError("caption")
+        text = step.__dict__["caption"]
+        if type(text) is not str:
+            text = step.__dict__["caption"] = str(text)
+        return text
+
+    def __set__(self, step, text):
+        # A frozen instance refuses every assignment; the step's __init__ writes the instance's dict.
+        raise FrozenInstanceError("cannot assign to field 'caption'")
+
+
+class Captions:
+    """A tuple of captions, as every reader sees it: str each (a descriptor of a frozen dataclass's field).
+
+    As :class:`Caption`, for results whose captions are a tuple (the instant centres' ``steps``): each may be
+    handed over unwritten (a :class:`Later`), and all are written the first time the field is read. The class's
+    ``__getstate__`` must read the field (write them) before the instance is copied or pickled.
+    """
+
+    def __set_name__(self, owner, name):
+        self.name = name
+
+    def __get__(self, obj, owner=None):
+        if obj is None:
+            return ()  # the dataclass's default
+        texts = obj.__dict__[self.name]
+        if not all(type(text) is str for text in texts):
+            texts = obj.__dict__[self.name] = tuple([str(text) for text in texts])
+        return texts
+
+    def __set__(self, obj, texts):
+        # Only the dataclass's __init__ gets here (object.__setattr__): its frozen __setattr__ refuses the rest.
+        obj.__dict__[self.name] = tuple(texts)
 
 
 _SUPERSCRIPT = str.maketrans("0123456789", "⁰¹²³⁴⁵⁶⁷⁸⁹")

@@ -23,9 +23,10 @@ import numpy as np
 
 from graphkin.analytical.meshes import pitch as pitch_point
 from graphkin.errors import GraphkinError
-from graphkin.graphical.captions import number
+from graphkin.graphical.captions import Captions, Later, number
 from graphkin.graphical.guard import centres_disagreement, derived
 from graphkin.kinematics import DriverGroup, Kinematics
+from graphkin.kinematics.plan import plan_of
 from graphkin.model import GearMesh, Prismatic, Revolute
 
 SAME = 1e-9
@@ -64,13 +65,17 @@ class InstantCentres:
     index: int
     centres: dict = field(default_factory=dict)
     at_infinity: dict = field(default_factory=dict)
-    steps: tuple[str, ...] = ()
+    steps: tuple[str, ...] = Captions()  # may be written when first read (graphical.captions.Later)
     missing: tuple = ()
     omega: dict = field(default_factory=dict)
     velocity: dict = field(default_factory=dict)
     v_G: dict = field(default_factory=dict)
     valid: bool = True
     reason: str = ""
+
+    def __getstate__(self):
+        # Steps not yet written are written before the result is copied or pickled.
+        return {**self.__dict__, "steps": self.steps}
 
 
 # Homogeneous points and lines are plain 3-tuples: a mechanism has a few dozen pairs, and tuples are several
@@ -98,6 +103,17 @@ def _where(P, size: float) -> str:
     if abs(P[2]) <= SAME:
         return f"at infinity, in the direction ({number(P[0])}, {number(P[1])})"
     return f"at ({number(P[0] / P[2] * size * 1e3)}, {number(P[1] / P[2] * size * 1e3)}) mm"
+
+
+# The steps are written when first read (most centres are made to be checked): these take all they print.
+def _primary(lo: int, hi: int, how: str, P, size: float) -> str:
+    return f"I{lo}{hi}: {how} ({_where(P, size)})."
+
+
+def _kennedy(a: int, b: int, j: int, via: int, P, size: float) -> str:
+    return (f"I{min(a, b)}{max(a, b)}: on the line I{min(a, j)}{max(a, j)} I{min(j, b)}{max(j, b)} and "
+            f"on the line I{min(a, via)}{max(a, via)} I{min(via, b)}{max(via, b)} (Kennedy), which meet "
+            f"{_where(P, size)}.")
 
 
 def instant_centres(kin: Kinematics, index: int = 0) -> InstantCentres:
@@ -128,14 +144,15 @@ def instant_centres(kin: Kinematics, index: int = 0) -> InstantCentres:
     frame = mech.frame
     kin, at = derived(kin, i)  # placed by the input motion alone, a problem's given values left out
 
-    O = {n: complex(kin.O[n][at]) for n in mech.moving}
-    e = {n: complex(kin.e[n][at]) for n in mech.moving}
+    O = {n: complex(kin.O[n].item(at)) for n in mech.moving}
+    e = {n: complex(kin.e[n].item(at)) for n in mech.moving}
+    points = plan_of(mech).points  # (link, name): the point in its link's own frame [m], complex
 
     def pos(link, name):
-        x, y = mech.link(link).point(name)
-        return complex(x, y) if link == frame else O[link] + e[link] * complex(x, y)
+        p = points[link, name]
+        return p if link == frame else O[link] + e[link] * p
 
-    size = max(abs(pos(link.number, name)) for link in mech.links for name in link.points) or 1.0
+    size = max([abs(pos(link, name)) for link, name in points]) or 1.0
 
     def hom(z: complex):
         return _unit((z.real / size, z.imag / size, 1.0))
@@ -158,7 +175,7 @@ def instant_centres(kin: Kinematics, index: int = 0) -> InstantCentres:
         else:  # pragma: no cover - the model has these three joints only
             raise AssertionError(joint)
         known[frozenset((a, b))] = P
-        steps.append(f"I{min(a, b)}{max(a, b)}: {how} ({_where(P, size)}).")
+        steps.append(Later(_primary, min(a, b), max(a, b), how, P, size))
 
     links = [link.number for link in mech.links]
     progress = True
@@ -182,10 +199,7 @@ def instant_centres(kin: Kinematics, index: int = 0) -> InstantCentres:
                     if _norm(P) > SAME:
                         P = _unit(P)
                         known[frozenset((a, b))] = P
-                        lo, hi = min(a, b), max(a, b)
-                        steps.append(f"I{lo}{hi}: on the line I{min(a, j)}{max(a, j)} I{min(j, b)}{max(j, b)} and "
-                                     f"on the line I{min(a, via)}{max(a, via)} I{min(via, b)}{max(via, b)} "
-                                     f"(Kennedy), which meet {_where(P, size)}.")
+                        steps.append(Later(_kennedy, a, b, j, via, P, size))
                         progress = True
                         break
                 else:

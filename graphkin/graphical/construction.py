@@ -8,11 +8,12 @@ re-solving anything. Vectors are ``(x, y)`` tuples.
 from __future__ import annotations
 
 import math
-from dataclasses import FrozenInstanceError, dataclass, field
+from dataclasses import dataclass, field
 
 import numpy as np
 
 from graphkin.errors import GraphkinError
+from graphkin.graphical.captions import Caption
 from graphkin.model import GearMesh, Prismatic
 from graphkin.model.names import force_name, parse_force_name
 
@@ -73,28 +74,6 @@ class Arrow:
         d["name"], d["vector"], d["known"], d["at"] = name, vector, known, at
 
 
-class _Text:
-    """A step's caption, as every reader sees it: a str.
-
-    The builder may hand a step text that is written only when first read (any object whose ``str()`` is the
-    caption, e.g. :class:`graphkin.graphical.captions.Later`): most constructions are made to be checked, not
-    read, and their captions are a good part of their cost. Once read, the text replaces it.
-    """
-
-    def __get__(self, step, owner=None):
-        if step is None:
-            # No class-level default: the dataclass keeps ``caption`` a required field.
-            raise AttributeError("caption")
-        text = step.__dict__["caption"]
-        if type(text) is not str:
-            text = step.__dict__["caption"] = str(text)
-        return text
-
-    def __set__(self, step, text):
-        # A frozen instance refuses every assignment; Step.__init__ writes the instance's dict.
-        raise FrozenInstanceError("cannot assign to field 'caption'")
-
-
 @dataclass(frozen=True)
 class Step:
     """One step of the construction.
@@ -129,7 +108,7 @@ class Step:
     """
 
     kind: str
-    caption: str = _Text()
+    caption: str = Caption()
     link: int | None = None
     lines: tuple[Line, ...] = ()
     points: dict = field(default_factory=dict)

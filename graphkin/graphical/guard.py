@@ -79,13 +79,13 @@ def forces_disagreement(result, c, i: int, size: float | None = None) -> str:
     for key, (ax, ay) in rows:
         gx, gy = known[key] if key in known else c.force(*key)
         gap = float(np.hypot(gx - ax, gy - ay))
-        if not gap <= worst:  # nan counts as the worst
+        if gap > worst or gap != gap:  # a nan is the worst, and stays so
             worst, found = gap, key
     crank = result.mechanism.driver.crank
     arm = size if crank else 1.0  # a torque [N·m] per metre of the mechanism is a force
     effort = float(result.effort[i])
     gap = abs(c.effort - effort) / arm
-    if not gap <= worst:
+    if (gap > worst or gap != gap) and worst == worst:
         worst, found = gap, None
     if worst <= AGREEMENT * max(scale, abs(effort) / arm):
         return ""
@@ -127,15 +127,21 @@ def check_forces(result, c, i: int):
 
 # -- motion -----------------------------------------------------------------------------------------------------
 class _Shape:
-    """What the guard reads of a mechanism at every position, made once per mechanism (its plan's cache)."""
+    """What the guard reads of a mechanism at every position, made once per mechanism (its plan's cache).
+
+    ``keys``: every named point of every moving link, ``(link, name)``, then each centre of mass, ``(link, None)``;
+    ``local``: where each is in its link's own frame [m].
+    """
 
     def __init__(self, mech):
         self.size = mechanism_size(mech)
         self.frame = mech.frame
         self.moving = tuple(mech.moving)
-        self.points = plan_of(mech).points  # (link, name): the point in its link's own frame [m], complex
-        self.G = {link.number: complex(*link.G) for link in mech.links}
-        self.bodies = {n: [self.points[n, name] for name in mech.link(n).points] + [self.G[n]] for n in self.moving}
+        points = plan_of(mech).points  # (link, name): the point in its link's own frame [m], complex
+        self.keys = [(n, name) for n in self.moving for name in mech.link(n).points] + [(n, None) for n in self.moving]
+        self.local = np.array([points[key] if key[1] is not None else complex(*mech.link(key[0]).G)
+                               for key in self.keys], dtype=complex)
+        self.column = [self.moving.index(n) for n, _ in self.keys]
 
 
 def _shape(mech) -> _Shape:
@@ -146,93 +152,145 @@ def _shape(mech) -> _Shape:
     return shape
 
 
-class _Truth:
-    """The analytical motion of position ``i``: any point's velocity and acceleration as a point of any link.
+class _Table:
+    """The analytical motion of one kinematics at every position, worked out at once (numpy over the positions).
 
+    A row per position: ``values`` (complex) holds the velocity and acceleration of every key of the
+    :class:`_Shape`, then each moving link's origin O, direction e, v_O, a_O, iω and iα − ω²; ``rates`` (real)
+    holds ω and α of each moving link, then the position's scales: the largest speed (acceleration) of a named
+    point or centre of mass, or of a link's ω (α) times the mechanism's size.
+    """
+
+    def __init__(self, kin):
+        shape = self.shape = _shape(kin.mechanism)
+        moving, column = shape.moving, shape.column
+
+        def links(arrays, kind):
+            return np.stack([np.asarray(arrays[n], dtype=kind) for n in moving], axis=1)  # (positions, links)
+
+        O, e, v_O, a_O = (links(x, complex) for x in (kin.O, kin.e, kin.v_O, kin.a_O))
+        w, al = links(kin.omega, float), links(kin.alpha, float)
+        iw, turn = 1j * w, 1j * al - w * w
+        e_p = e[:, column]  # each point from its link's origin is e p [m]
+        v = v_O[:, column] + iw[:, column] * e_p * shape.local
+        a = a_O[:, column] + turn[:, column] * e_p * shape.local
+        with np.errstate(invalid="ignore"):  # positions that cannot be assembled are nan, and never asked for
+            v_top = np.maximum(np.abs(v).max(axis=1), np.abs(w).max(axis=1) * shape.size)
+            a_top = np.maximum(np.abs(a).max(axis=1), np.abs(al).max(axis=1) * shape.size)
+        self.values = np.concatenate([v, a, O, e, v_O, a_O, iw, turn], axis=1)
+        self.rates = np.concatenate([w, al, v_top[:, None], a_top[:, None]], axis=1)
+
+
+class _Truth:
+    """The analytical motion of one position: any point's velocity and acceleration as a point of any link.
+
+    ``v[key]``, ``a[key]``: the velocity and acceleration of each named point and centre of mass [m/s, m/s²];
     ``motion[link]`` is ``(O, e, v_O, a_O, iω, iα − ω²)``: the link's origin and direction [m, unit complex], its
     origin's velocity and acceleration, and the factors that carry them to a point r = P − O away (v = v_O + iω r,
     a = a_O + (iα − ω²) r).
     """
 
-    def __init__(self, kin, i: int):
-        shape = self.shape = _shape(kin.mechanism)
-        self.frame, self.size = shape.frame, shape.size
-        self.w = {shape.frame: 0.0}
-        self.al = {shape.frame: 0.0}
-        motion = self.motion = {shape.frame: (0j, 1 + 0j, 0j, 0j, 0j, 0j)}
-        # The scales: the fastest named point or centre of mass, or a link's ω (α) over the mechanism's size.
-        v_top, a_top = 0.0, 0.0
-        for n in shape.moving:
-            # .item(i): Python numbers straight from the arrays, without a numpy scalar in between.
-            w, al = float(kin.omega[n].item(i)), float(kin.alpha[n].item(i))
-            e, v_O, a_O = complex(kin.e[n].item(i)), complex(kin.v_O[n].item(i)), complex(kin.a_O[n].item(i))
-            iw, turn = 1j * w, 1j * al - w * w
-            self.w[n], self.al[n] = w, al
-            motion[n] = (complex(kin.O[n].item(i)), e, v_O, a_O, iw, turn)
-            v_top = max([v_top, abs(w) * self.size] + [abs(v_O + iw * e * p) for p in shape.bodies[n]])
-            a_top = max([a_top, abs(al) * self.size] + [abs(a_O + turn * e * p) for p in shape.bodies[n]])
-        self.v_scale, self.a_scale = v_top, a_top
+    __slots__ = ("frame", "size", "v", "a", "motion", "w", "al", "v_scale", "a_scale")
 
-    def v(self, link: int, P: complex) -> complex:
+    def __init__(self, table: _Table, i: int):
+        shape = table.shape
+        moving, keys, frame = shape.moving, shape.keys, shape.frame
+        K, L = len(keys), len(moving)
+        # One row each, as Python numbers: a position has a few dozen values, too few for numpy to pay.
+        z, x = table.values[i].tolist(), table.rates[i].tolist()
+        self.frame, self.size = frame, shape.size
+        self.v, self.a = dict(zip(keys, z[:K])), dict(zip(keys, z[K:2 * K]))
+        self.motion = dict(zip(moving, zip(*(z[2 * K + k * L:2 * K + (k + 1) * L] for k in range(6)))))
+        self.motion[frame] = (0j, 1 + 0j, 0j, 0j, 0j, 0j)
+        self.w, self.al = dict(zip(moving, x[:L])), dict(zip(moving, x[L:2 * L]))
+        self.w[frame] = self.al[frame] = 0.0
+        self.v_scale, self.a_scale = x[2 * L], x[2 * L + 1]
+
+    def at(self, link: int, P: complex) -> complex:
         """Velocity [m/s] of the point at ``P`` [m] moving with ``link``."""
         O, _, v_O, _, iw, _ = self.motion[link]
         return v_O + iw * (P - O)
 
-    def a(self, link: int, P: complex) -> complex:
-        """Acceleration [m/s²] of the point at ``P`` [m] moving with ``link``."""
-        O, _, _, a_O, _, turn = self.motion[link]
-        return a_O + turn * (P - O)
+
+_KEPT: list = []
+"""What the guard last worked out for a few kinematics, ``(weakref to the kinematics, what, value)``: their
+:class:`_Table`, and the kinematics solved again without a problem's given values (:func:`derived`). The polygons
+and the instant centres of every position of one kinematics share them."""
 
 
-_LAST: list = []
-"""The last few truths made, ``(weakref to the kinematics, i, truth)``: the polygons and the instant centres of one
-position (``solve --json --motion-polygons``, a handout) share theirs."""
+def _kept(kin, what: str, make):
+    for ref, kind, value in _KEPT:
+        if kind == what and ref() is kin:
+            return value
+    value = make(kin)
+    _KEPT[:] = [(weakref.ref(kin), what, value)] + _KEPT[:7]
+    return value
 
 
 def _truth(kin, i: int) -> _Truth:
-    for ref, at, truth in _LAST:
-        if at == i and ref() is kin:
-            return truth
-    truth = _Truth(kin, i)
-    _LAST[:] = [(weakref.ref(kin), i, truth)] + _LAST[:3]
-    return truth
+    return _Truth(_kept(kin, "table", _Table), i)
 
 
-class _Ledger:
+class _Check:
     """Every comparison of a construction with the analytical route, of speeds (kind 0) or accelerations (kind 1).
 
     Each difference is measured against the largest value of its kind at the position: the named points', the
     links' ω (α) times the mechanism's size, and every analytical value compared (a pitch point that is no named
-    point may be the only thing that moves). Only the worst is put in words. Plain Python: a position has a few
-    dozen values, where numpy's arrays cost more to make than the arithmetic.
+    point may be the only thing that moves). The values come a list at a time and only the worst of each kind is
+    kept; it is put in words only where the routes disagree.
     """
 
-    __slots__ = ("scale", "items")
+    __slots__ = ("scale", "worst", "found")
 
     def __init__(self, truth: _Truth):
         self.scale = [truth.v_scale, truth.a_scale]
-        self.items: list[tuple] = []  # (kind, gap, z, t, say): the words made for the worst only
+        self.worst = [0.0, 0.0]
+        self.found: list = [None, None]  # per kind: (z, t, say, name) of the worst so far
 
-    def see(self, kind: int, z: complex, t: complex, *say):
-        """The construction's value ``z`` against the analytical ``t`` [m/s or m/s²]; ``say``: a function and its
-        first arguments, to put the difference in words."""
-        size = abs(t)
-        if size > self.scale[kind]:
-            self.scale[kind] = size
-        self.items.append((kind, abs(z - t), z, t, say))
+    def see(self, kind: int, zs: list, ts: list, say: tuple, names: list, sized: bool = False):
+        """The construction's values ``zs`` against the analytical ``ts`` [m/s or m/s²], in step.
+
+        ``say`` is a function and its first arguments, ``names[j]`` the next ones (a tuple, or one value), to put
+        the j-th difference in words. ``sized``: the ``ts`` may be larger than the position's scale (a point that
+        is not a named one), so they join it.
+        """
+        if not zs:
+            return
+        if sized:
+            top = max(map(abs, ts))
+            if top > self.scale[kind]:
+                self.scale[kind] = top
+        worst = self.worst[kind]
+        if worst != worst:  # a nan is the worst there is
+            return
+        gaps = [abs(z - t) for z, t in zip(zs, ts)]
+        gap = max(gaps)
+        total = sum(gaps)
+        if total != total:  # max() passes over a nan: find it
+            j = next(j for j, g in enumerate(gaps) if g != g)
+            gap = math.nan
+        elif gap < worst or (gap == worst and self.found[kind] is not None):
+            return
+        else:
+            j = gaps.index(gap)
+        self.worst[kind], self.found[kind] = gap, (zs[j], ts[j], say, names[j])
 
     def reason(self, route: str) -> str:
-        worst, found = 0.0, None
-        for item in self.items:
-            kind, gap = item[0], item[1]
-            scale = self.scale[kind]
+        worst, found, at = 0.0, None, 0.0
+        for kind in (0, 1):
+            if self.found[kind] is None:
+                continue
+            gap, scale = self.worst[kind], self.scale[kind]
             ratio = gap / scale if scale > 0 else (0.0 if gap == 0 else math.inf)
-            if not ratio <= worst:  # nan counts as the worst
-                worst, found = ratio, item
+            if ratio != ratio or ratio > worst:
+                worst, found, at = ratio, self.found[kind], scale
+                if ratio != ratio:
+                    break
         if worst <= AGREEMENT:
             return ""
-        kind, _, z, t, (say, *args) = found
-        return f"the {route} and the analytical route disagree: {say(*args, z, t, self.scale[kind])}"
+        z, t, (say, *args), name = found
+        name = name if type(name) is tuple else (name,)
+        return f"the {route} and the analytical route disagree: {say(*args, *name, z, t, at)}"
 
 
 _UNIT = ("m/s", "m/s²")
@@ -256,40 +314,31 @@ def _point(kind: int, link: int, point: str | None, z: complex, t: complex, scal
     return _vectors(name, kind, z, t, scale)
 
 
-def _rates(symbol: str, link: int, unit: str, size: float, z: complex, t: complex, scale: float) -> str:
-    return f"{symbol}{link} is {_rate(z.real / size, unit)} graphically, {_rate(t.real / size, unit)} analytically"
+def _rates(symbol: str, unit: str, size: float, link: int, z: float, t: float, scale: float) -> str:
+    return f"{symbol}{link} is {_rate(z / size, unit)} graphically, {_rate(t / size, unit)} analytically"
 
 
-def _motion_values(ledger: _Ledger, truth: _Truth, omega: dict, velocity: dict, v_G: dict, alpha=None,
-                   acceleration=None, a_G=None):
-    """Compare a construction's ω (α) of each link and the velocity (acceleration) of each named point and G."""
-    size, motion, shape = truth.size, truth.motion, truth.shape
-    see = ledger.see
+def _motion_values(check: _Check, truth: _Truth, kind: int, rates: dict, points: dict, centres_of_mass: dict):
+    """Compare a construction's ω (kind 0; α, kind 1) of each link and the velocity (acceleration) of each named
+    point and G (``points`` by ``(link, name)``, ``centres_of_mass`` by link)."""
+    size = truth.size
+    true, symbol, unit = (truth.w, "ω", "rad/s") if kind == 0 else (truth.al, "α", "rad/s²")
     # ω and α times the mechanism's size: measured as the speed (acceleration) they give its farthest point.
-    for kind, table, true, symbol, unit in ((0, omega, truth.w, "ω", "rad/s"), (1, alpha or {}, truth.al, "α", "rad/s²")):
-        for link, x in table.items():
-            see(kind, complex(x * size), complex(true[link] * size), _rates, symbol, link, unit, size)
-    # A point r = e p from its link's origin (p in the link's own frame): v = v_O + iω r, a = a_O + (iα − ω²) r.
-    points, G = shape.points, shape.G
-    for (link, point), (x, y) in velocity.items():
-        _, e, v_O, _, iw, _ = motion[link]
-        see(0, complex(x, y), v_O + iw * e * points[link, point], _point, 0, link, point)
-    for (link, point), (x, y) in (acceleration or {}).items():
-        _, e, _, a_O, _, turn = motion[link]
-        see(1, complex(x, y), a_O + turn * e * points[link, point], _point, 1, link, point)
-    for link, (x, y) in v_G.items():
-        _, e, v_O, _, iw, _ = motion[link]
-        see(0, complex(x, y), v_O + iw * e * G[link], _point, 0, link, None)
-    for link, (x, y) in (a_G or {}).items():
-        _, e, _, a_O, _, turn = motion[link]
-        see(1, complex(x, y), a_O + turn * e * G[link], _point, 1, link, None)
+    check.see(kind, [x * size for x in rates.values()], [true[link] * size for link in rates],
+              (_rates, symbol, unit, size), list(rates))
+    true = truth.v if kind == 0 else truth.a
+    check.see(kind, [complex(x, y) for x, y in points.values()], [true[key] for key in points], (_point, kind),
+              list(points))
+    keys = [(link, None) for link in centres_of_mass]
+    check.see(kind, [complex(x, y) for x, y in centres_of_mass.values()], [true[key] for key in keys], (_point, kind),
+              keys)
 
 
-def _image(polygon: str, name: str, kind: int, z: complex, t: complex, scale: float) -> str:
+def _image(polygon: str, kind: int, name: str, z: complex, t: complex, scale: float) -> str:
     return _vectors(f"the {polygon} image {name}", kind, z, t, scale)
 
 
-def _unknown_image(name: str, polygon: str, z, t, scale) -> str:
+def _unknown_image(polygon: str, name: str, z, t, scale) -> str:
     return f"the {polygon} polygon's image {name} is no point of a link the check knows"
 
 
@@ -304,9 +353,11 @@ def motion_disagreement(kin, i: int, c, where: dict, coriolis: dict) -> str:
         The position's index.
     c : graphkin.graphical.MotionConstruction
         The polygons built from the input motion.
-    where : dict of str to (int, complex)
-        Each image point of both polygons, by its name (``"b"``, ``"g3′"``): the link it is a point of and where
-        that point is [m]. The pole (``"o"``, ``"o′"``) is the frame's.
+    where : dict of str to (int, complex, tuple or None)
+        Each image point of both polygons, by its name (``"b"``, ``"g3′"``): the link it is a point of, where that
+        point is [m], and its key in ``c.velocity`` (``(link, name)``; ``(link, None)``: G of the link) where it is
+        a named point or a centre of mass, else None. The pole (``"o"``, ``"o′"``) is the frame's. An image whose
+        value is its named point's in ``c`` is compared once, as that point.
     coriolis : dict of str to (int, int, int, complex)
         Each Coriolis vector by its name: the guide's link m, the sliding link k, the link b whose point the
         relative velocity is measured from, and the point X [m]; it must equal 2 ω_m × (v_X on k − v_X on b).
@@ -318,27 +369,38 @@ def motion_disagreement(kin, i: int, c, where: dict, coriolis: dict) -> str:
         and both values.
     """
     truth = _truth(kin, i)
-    ledger = _Ledger(truth)
-    _motion_values(ledger, truth, c.omega, c.velocity, c.v_G, c.alpha, c.acceleration, c.a_G)
-    see, motion = ledger.see, truth.motion
-    for kind, polygon in ((0, "velocity"), (1, "acceleration")):
-        for name, (x, y) in c.images[polygon].items():
+    check = _Check(truth)
+    _motion_values(check, truth, 0, c.omega, c.velocity, c.v_G)
+    _motion_values(check, truth, 1, c.alpha, c.acceleration, c.a_G)
+    motion = truth.motion
+    for kind, polygon, table, true in ((0, "velocity", (c.velocity, c.v_G), truth.v),
+                                       (1, "acceleration", (c.acceleration, c.a_G), truth.a)):
+        zs, ts, names, unknown = [], [], [], []
+        for name, z in c.images[polygon].items():
             if name in where:
-                link, P = where[name]
-                O, _, v_O, a_O, iw, turn = motion[link]
-                see(kind, complex(x, y), a_O + turn * (P - O) if kind else v_O + iw * (P - O), _image, polygon, name,
-                    kind)
-            elif name not in ("o", "o′"):  # the pole is the frame's image: 0
-                # An image a construction added without saying whose point it is cannot be checked: not shown.
-                see(kind, complex(math.inf), 0j, _unknown_image, name, polygon)
-            else:
-                see(kind, complex(x, y), 0j, _image, polygon, name, kind)
-    for vector in c.vectors("acceleration") if coriolis else ():
-        if vector.name in coriolis:
-            m, k, b, X = coriolis[vector.name]
-            ledger.see(1, complex(*vector.vector), 2j * truth.w[m] * (truth.v(k, X) - truth.v(b, X)), _vectors,
-                       vector.name, 1)
-    return ledger.reason("velocity and acceleration polygons")
+                link, P, key = where[name]
+                if key is None:  # a point that is no named one (a pitch point, a slider's coincident point)
+                    O, _, v_O, a_O, iw, turn = motion[link]
+                    ts.append(a_O + turn * (P - O) if kind else v_O + iw * (P - O))
+                elif z == (table[0].get(key) if key[1] is not None else table[1].get(link)):
+                    continue  # the very value compared above, as the named point's (or G's)
+                else:
+                    ts.append(true[key])
+            elif name in ("o", "o′"):  # the pole is the frame's image: 0
+                ts.append(0j)
+            else:  # an image a construction added without saying whose point it is cannot be checked: not shown
+                unknown.append(name)
+                continue
+            zs.append(complex(*z))
+            names.append(name)
+        check.see(kind, zs, ts, (_image, polygon, kind), names, sized=True)
+        check.see(kind, [complex(math.inf)] * len(unknown), [0j] * len(unknown), (_unknown_image, polygon), unknown)
+    if coriolis:
+        found = [v for v in c.vectors("acceleration") if v.name in coriolis]
+        check.see(1, [complex(*v.vector) for v in found],
+                  [2j * truth.w[m] * (truth.at(k, X) - truth.at(b, X)) for m, k, b, X in (coriolis[v.name] for v in found)],
+                  (_vectors,), [(v.name, 1) for v in found], sized=True)
+    return check.reason("velocity and acceleration polygons")
 
 
 def centres_disagreement(kin, i: int, ic) -> str:
@@ -350,20 +412,25 @@ def centres_disagreement(kin, i: int, ic) -> str:
     perpendicular to u). The ω and the velocities the centres give are compared as the polygons' are.
     """
     truth = _truth(kin, i)
-    ledger = _Ledger(truth)
-    for (a, b), (x, y) in ic.centres.items():  # keyed by the links' own numbers, the frame's included
-        P = complex(x, y)
-        ledger.see(0, truth.v(b, P) - truth.v(a, P), 0j, _moving_centre, a, b, P)
-    for (a, b), u in ic.at_infinity.items():
-        dw = truth.w[b] - truth.w[a]
-        ledger.see(0, complex(dw * truth.size), 0j, _turning_apart, a, b, truth.size)
-        d = truth.v(b, 0j) - truth.v(a, 0j)  # where ω_a = ω_b, the same at every point
-        ledger.see(0, complex(d.real * u[0] + d.imag * u[1]), 0j, _sliding_apart, a, b)
-    _motion_values(ledger, truth, ic.omega, ic.velocity, ic.v_G)
-    return ledger.reason("instant centres")
+    check = _Check(truth)
+    at, size, motion = truth.at, truth.size, truth.motion
+    pairs, places = list(ic.centres), [complex(x, y) for x, y in ic.centres.values()]
+    # v_b(P) − v_a(P), each v = v_O + iω (P − O) of its link
+    check.see(0, [(mb[2] + mb[4] * (P - mb[0])) - (ma[2] + ma[4] * (P - ma[0]))
+                  for ma, mb, P in zip([motion[a] for a, _ in pairs], [motion[b] for _, b in pairs], places)],
+              [0j] * len(pairs), (_moving_centre, ic.centres), pairs)
+    pairs = list(ic.at_infinity)
+    check.see(0, [(truth.w[b] - truth.w[a]) * size for a, b in pairs], [0.0] * len(pairs), (_turning_apart,),
+              [(a, b, size) for a, b in pairs])
+    d = [at(b, 0j) - at(a, 0j) for a, b in pairs]  # where ω_a = ω_b, the same at every point
+    check.see(0, [z.real * u[0] + z.imag * u[1] for z, u in zip(d, ic.at_infinity.values())], [0.0] * len(pairs),
+              (_sliding_apart,), pairs)
+    _motion_values(check, truth, 0, ic.omega, ic.velocity, ic.v_G)
+    return check.reason("instant centres")
 
 
-def _moving_centre(a: int, b: int, P: complex, z, t, scale) -> str:
+def _moving_centre(centres: dict, a: int, b: int, z, t, scale) -> str:
+    P = complex(*centres[a, b])
     return (f"I{a}{b} at ({num(P.real * 1e3, 6, minus='-')}, {num(P.imag * 1e3, 6, minus='-')}) mm moves at "
             f"{num(abs(z), 6)} m/s relative to link {a} as a point of link {b} (an instant centre has no relative "
             "velocity)")
@@ -371,12 +438,16 @@ def _moving_centre(a: int, b: int, P: complex, z, t, scale) -> str:
 
 def _turning_apart(a: int, b: int, size: float, z, t, scale) -> str:
     return (f"I{a}{b} is at infinity graphically, but links {a} and {b} turn relative to each other at "
-            f"{_rate(z.real / size, 'rad/s')} analytically")
+            f"{_rate(z / size, 'rad/s')} analytically")
 
 
 def _sliding_apart(a: int, b: int, z, t, scale) -> str:
     return (f"I{a}{b} is at infinity across the sliding graphically, but links {a} and {b} move "
             f"{num(abs(z), 6)} m/s apart along it analytically")
+
+
+def _input_motion(kin):
+    return solve_kinematics(kin.mechanism, kin.q, kin.q_dot, kin.q_ddot)
 
 
 def derived(kin, i: int):
@@ -385,8 +456,9 @@ def derived(kin, i: int):
     A problem may give values measured off its book's drawing (a link's angle θ, α, a_G: ``[given]``); the force
     route uses them, but they are not a motion the input produces (an angle read to the degree leaves a pin slightly
     apart on its two links), so no analytical route shares them. The polygons and instant centres are constructed
-    from the input motion alone: from the position's own kinematics, solved again without the given values.
+    from the input motion alone: from the kinematics solved again without the given values (once for all the
+    positions, kept while ``kin`` is).
     """
     if not kin.given:
         return kin, i
-    return solve_kinematics(kin.mechanism, kin.q[i:i + 1], kin.q_dot[i:i + 1], kin.q_ddot[i:i + 1]), 0
+    return _kept(kin, "derived", _input_motion), i

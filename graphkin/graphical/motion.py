@@ -12,6 +12,7 @@ from dataclasses import dataclass, field
 from typing import NamedTuple
 
 from graphkin.errors import GraphkinError
+from graphkin.graphical.captions import Caption
 
 
 class Vector(NamedTuple):
@@ -92,12 +93,24 @@ class MotionStep:
 
     polygon: str
     kind: str
-    caption: str
+    caption: str = Caption()  # may be written when first read (graphical.captions.Later)
     links: tuple[int, ...] = ()
     vectors: tuple[Vector, ...] = ()
     lines: tuple[PolygonLine, ...] = ()
     points: dict = field(default_factory=dict)
     values: dict = field(default_factory=dict)
+
+    def __init__(self, polygon: str, kind: str, caption: str, links: tuple[int, ...] = (),
+                 vectors: tuple[Vector, ...] = (), lines: tuple[PolygonLine, ...] = (), points: dict | None = None,
+                 values: dict | None = None):
+        d = self.__dict__
+        d["polygon"], d["kind"], d["caption"], d["links"], d["vectors"], d["lines"] = (polygon, kind, caption, links,
+                                                                                        vectors, lines)
+        d["points"], d["values"] = {} if points is None else points, {} if values is None else values
+
+    def __getstate__(self):
+        # A caption not yet written is written before the step is copied or pickled.
+        return {**self.__dict__, "caption": self.caption}
 
 
 @dataclass(frozen=True)

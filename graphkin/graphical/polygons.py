@@ -31,17 +31,15 @@ import numpy as np
 from graphkin.analytical.meshes import pitch as pitch_point
 from graphkin.errors import GraphkinError
 from graphkin.geometry import zcross as cross
-from graphkin.graphical.captions import number
+from graphkin.graphical.captions import Later, number
 from graphkin.graphical.construction import nice_scale
 from graphkin.graphical.guard import derived, motion_disagreement
 from graphkin.graphical.motion import MotionConstruction, MotionStep, PolygonLine, Vector
+from graphkin.graphical.motion_captions import A, V, acceleration_image, rate, sense, vector, velocity_image
 from graphkin.kinematics import DriverGroup, Dyad, GearGroup, Kinematics
 from graphkin.kinematics.groups import DEAD_POINT
 from graphkin.kinematics.plan import plan_of
 from graphkin.model import Prismatic, Revolute
-from graphkin.notation import polar_text
-
-V, A = "m/s", "m/s²"
 
 
 class Degenerate(Exception):
@@ -66,15 +64,6 @@ class _Motion:
 
     def acc(self, P):
         return self.a + (1j * self.al - self.n * self.w * self.w) * (P - self.X)
-
-
-def _sense(w: float) -> str:
-    return "CCW" if w > 0 else "CW"
-
-
-def _rad(x: float, unit: str) -> str:
-    """ω or α as a caption prints it: ``2.5 rad/s (CCW)``."""
-    return f"{number(x)} {unit}" + (f" ({_sense(x)})" if x else "")
 
 
 def _meet(Q1, d1, Q2, d2, what: str):
@@ -171,7 +160,7 @@ class _Polygons:
         self.a_img = {"o′": (0.0, 0.0)}
         self.velocity, self.acceleration = {}, {}
         # Whose point each image is, and what each Coriolis component is of, for the guard (graphical/guard.py).
-        self.where: dict[str, tuple[int, complex]] = {}
+        self.where: dict[str, tuple[int, complex, tuple | None]] = {}
         self.coriolis: dict[str, tuple[int, int, int, complex]] = {}
         self._O = {n: complex(kin.O[n][i]) for n in mech.moving}
         self._e = {n: complex(kin.e[n][i]) for n in mech.moving}
@@ -193,7 +182,7 @@ class _Polygons:
 
     def text(self, z, unit: str) -> str:
         """A vector of a polygon in a caption, its rounding residue written as 0."""
-        return polar_text((z.real, z.imag), unit, scale=self.v_ref if unit == V else self.a_ref, minus="-")
+        return vector(z, unit, self.v_ref if unit == V else self.a_ref)
 
     # -- recording ------------------------------------------------------------------------------------------
     def step(self, polygon, kind, caption, links, vectors=(), lines=(), points=None, values=None):
@@ -212,7 +201,7 @@ class _Polygons:
         if isinstance(J, Revolute):
             O2 = self.pos(self.frame, J.point)
             self.motion[link] = _Motion(O2, 0j, w2)
-            caption = (f"Driver {link} turns about {J.point} at ω{link} = {_rad(w2, 'rad/s')}: each of its points moves "
+            caption = (f"Driver {link} turns about {J.point} at ω{link} = {rate(w2, 'rad/s')}: each of its points moves "
                        f"perpendicular to its line from {J.point}, at ω{link} times that distance.")
             self.step("velocity", "driver", caption, (link,), values={f"omega{link}": w2})
         else:
@@ -221,7 +210,7 @@ class _Polygons:
             X = self.pos(link, J.point)
             self.motion[link] = _Motion(X, v, 0.0)
             s = self.sym(link, J.point)
-            self.where[s.lower()] = self.where[f"{s.lower()}′"] = (link, X)
+            self.where[s.lower()] = self.where[f"{s.lower()}′"] = (link, X, (link, J.point))
             caption = (f"Driver {link} slides along its guide at v = {number(w2)} m/s: v_{s} = {self.text(v, V)}, "
                        f"drawn from the pole o to {s.lower()}.")
             self.step("velocity", "driver", caption, (link,), [(f"v_{s}", 0j, v, "size and direction")],
@@ -234,7 +223,7 @@ class _Polygons:
         m = self.motion[link]
         if isinstance(J, Revolute):
             m.a, m.al = 0j, al2
-            caption = (f"Driver {link}: α{link} = {_rad(al2, 'rad/s²')}; each of its points has a normal component "
+            caption = (f"Driver {link}: α{link} = {rate(al2, 'rad/s²')}; each of its points has a normal component "
                        f"ω{link}² r towards {J.point} and a tangential one α{link} r perpendicular to its line from {J.point}.")
             self.step("acceleration", "driver", caption, (link,), values={f"alpha{link}": al2})
         else:
@@ -254,21 +243,14 @@ class _Polygons:
         for key, s, label, p in self.fixed.images[link]:
             v = m.vel(O + e * p)
             found[label] = v
-            self.where[label] = (link, O + e * p)
+            self.where[label] = (link, O + e * p, key)
             vectors.append((f"v_{s}", 0j, v, "found"))
             if label not in self.v_img:  # a point a step before has found is not read off again
-                listed.append(f"v_{s} = {self.text(v, V)}")
-            if key is not None:
-                self.velocity[key] = v
-        if m.w == 0 and m.v == 0:
-            how = f"Link {link} is at rest (ω{link} = 0, no velocity): its image is the pole"
-        elif m.w == 0:
-            how = f"Link {link} translates (ω{link} = 0): every point has the same velocity, its image is one point"
-        else:
-            how = (f"Velocity image of link {link}: its shape turned 90° {_sense(m.w)} and scaled by "
-                   f"|ω{link}| = {number(abs(m.w))} rad/s")
-        self.step("velocity", "image", f"{how}: {', '.join(listed)}." if listed else f"{how}.", (link,), vectors,
-                  points=found)
+                listed.append((s, v))
+            self.velocity[key] = v
+        # Written when first read (most polygons are made to be checked): the values as they are now.
+        caption = Later(velocity_image, link, m.w, m.v, listed, self.v_ref)
+        self.step("velocity", "image", caption, (link,), vectors, points=found)
 
     def image_acceleration(self, link: int):
         m = self.motion[link]
@@ -277,22 +259,13 @@ class _Polygons:
         for key, s, label, p in self.fixed.images[link]:
             a = m.acc(O + e * p)
             found[label + "′"] = a
-            self.where[label + "′"] = (link, O + e * p)
+            self.where[label + "′"] = (link, O + e * p, key)
             vectors.append((f"a_{s}", 0j, a, "found"))
             if label + "′" not in self.a_img:
-                listed.append(f"a_{s} = {self.text(a, A)}")
-            if key is not None:
-                self.acceleration[key] = a
-        if m.w == 0 and m.al == 0 and m.a == 0:
-            how = f"Link {link} has no acceleration (ω{link} = α{link} = 0): its image is the pole"
-        elif m.w == 0 and m.al == 0:
-            how = f"Link {link} translates (ω{link} = α{link} = 0): its acceleration image is one point"
-        else:
-            turn = math.degrees(math.atan2(m.al, -m.w * m.w))
-            how = (f"Acceleration image of link {link}: its shape turned {number(turn)}° (atan2(α{link}, -ω{link}²)) "
-                   f"and scaled by √(ω{link}⁴ + α{link}²) = {number(math.hypot(m.w * m.w, m.al))} 1/s²")
-        self.step("acceleration", "image", f"{how}: {', '.join(listed)}." if listed else f"{how}.", (link,), vectors,
-                  points=found)
+                listed.append((s, a))
+            self.acceleration[key] = a
+        caption = Later(acceleration_image, link, m.w, m.al, m.a, listed, self.a_ref)
+        self.step("acceleration", "image", caption, (link,), vectors, points=found)
 
     # -- dyads ----------------------------------------------------------------------------------------------
     def sides(self, d: Dyad):
@@ -354,7 +327,7 @@ class _Polygons:
         caption = (f"{d.label}: {' and '.join(phrases)}. The two lines meet at {x.lower()}: "
                    f"v_{x} = {self.text(v_X, V)}." + (f" {read}." if read else "")
                    + self.tied_phrase(d, sides, w))
-        self.where[x.lower()] = self.where[f"{x.lower()}′"] = (d.k, X)
+        self.where[x.lower()] = self.where[f"{x.lower()}′"] = (d.k, X, None)
         self.step("velocity", "dyad", caption, (d.j, d.k), vectors, lines, {x.lower(): v_X}, values)
 
         on_j = d.type in ("RRR", "RRP", "PRP")
@@ -367,14 +340,14 @@ class _Polygons:
         self.image_velocity(d.k)
 
     def omega_phrase(self, s, x, w):
-        return f"ω{s.L} = v_{x}{s.P_name} / {s.P_name}{x} = {_rad(w[s.L], 'rad/s')}"
+        return f"ω{s.L} = v_{x}{s.P_name} / {s.P_name}{x} = {rate(w[s.L], 'rad/s')}"
 
     def tied_phrase(self, d, sides, w) -> str:
         turned = {s.L for s in sides if s.turn}
         tied = [link for link in (d.j, d.k) if link not in turned]
         if not tied:
             return ""
-        return " " + " ".join(f"Link {link} slides without turning on its neighbour: ω{link} = {_rad(w[link], 'rad/s')}."
+        return " " + " ".join(f"Link {link} slides without turning on its neighbour: ω{link} = {rate(w[link], 'rad/s')}."
                               for link in tied)
 
     def tie(self, d: Dyad, w: dict, field: str):
@@ -430,7 +403,7 @@ class _Polygons:
                     rule = f"{c_name} = 0 ({why})"
                 else:
                     rule = (f"{c_name} = 2 ω{g} v_{x}{k} = {number(abs(coriolis))} m/s², v_{x}{k} turned 90° "
-                            f"{_sense(wm)} (the sense of ω{g})")
+                            f"{sense(wm)} (the sense of ω{g})")
                 phrases.append(f"a_{x} = a_{k} + {c_name} + {r_name}: {rule}; {r_name} along the guide")
                 vectors += [(f"a_{k}", 0j, Q0, "size and direction"), (c_name, Q0, Q0 + coriolis, "size and direction")]
                 values[c_name] = abs(coriolis)
@@ -446,11 +419,11 @@ class _Polygons:
                 tangential = a_X - lines[n][1]
                 al[s.L] = cross(arm, tangential) / (abs(arm) ** 2)
                 values[lines[n][0]] = abs(tangential)
-                read.append(f"α{s.L} = {lines[n][0]} / {s.P_name}{x} = {_rad(al[s.L], 'rad/s²')}")
+                read.append(f"α{s.L} = {lines[n][0]} / {s.P_name}{x} = {rate(al[s.L], 'rad/s²')}")
         self.tie(d, al, "al")
         for link in (d.j, d.k):
             if not any(s.turn and s.L == link for s in sides):
-                read.append(f"α{link} = {_rad(al[link], 'rad/s²')} (tied by its sliding pair)")
+                read.append(f"α{link} = {rate(al[link], 'rad/s²')} (tied by its sliding pair)")
         values.update({f"alpha{d.j}": al[d.j], f"alpha{d.k}": al[d.k], f"a_{x}": abs(a_X)})
         caption = (f"{d.label}: {' and '.join(phrases)}. The two lines meet at {x.lower()}′: "
                    f"a_{x} = {self.text(a_X, A)}. {'; '.join(read)}.")
@@ -481,11 +454,11 @@ class _Polygons:
         arm = P - Ck
         w = cross(arm, v_P - v_C) / abs(arm) ** 2
         p = f"P{g.j}{g.k}"
-        self.where[p.lower()] = (g.j, P)  # the pitch point of gear j: gear k's has its velocity (rolling)
-        self.where[f"{p.lower()}′"] = (g.k, P)  # the acceleration polygon finds gear k's (gear_acceleration)
+        self.where[p.lower()] = (g.j, P, None)  # the pitch point of gear j: gear k's has its velocity (rolling)
+        self.where[f"{p.lower()}′"] = (g.k, P, None)  # the acceleration polygon finds gear k's (gear_acceleration)
         caption = (f"Gear {g.k} meshes with gear {g.j} at the pitch point {p}, where the gears roll: v_{p} on gear {g.k} "
                    f"equals v_{p} on gear {g.j} = {self.text(v_P, V)}. Gear {g.k} turns about {c}: "
-                   f"ω{g.k} = v_{p}{c} / {c}{p} = {_rad(w, 'rad/s')}.")
+                   f"ω{g.k} = v_{p}{c} / {c}{p} = {rate(w, 'rad/s')}.")
         self.step("velocity", "gear", caption, (g.k,),
                   [(f"v_{c}", 0j, v_C, "size and direction"), (f"v_{p}", 0j, v_P, "size and direction"),
                    (f"v_{p}{c}", v_C, v_P, "found")], points={p.lower(): v_P}, values={f"omega{g.k}": w})
@@ -508,7 +481,7 @@ class _Polygons:
         caption = (f"Gear {g.k}: a_{p} = a_{c} + a^n_{p}{c} + {t_name}, a^n_{p}{c} = ω{g.k}² {c}{p} = "
                    f"{number(abs(normal))} m/s² towards {c}, {t_name} ⊥ {c}{p}; rolling makes the tangential "
                    f"components of the two gears' pitch points equal, so a_{p} lies on the line through gear {g.j}'s "
-                   f"a_{p} along the line of centres. They meet: α{g.k} = {t_name} / {c}{p} = {_rad(al, 'rad/s²')}.")
+                   f"a_{p} along the line of centres. They meet: α{g.k} = {t_name} / {c}{p} = {rate(al, 'rad/s²')}.")
         self.step("acceleration", "gear", caption, (g.k,),
                   [(f"a_{c}", 0j, a_C, "size and direction"), (f"a^n_{p}{c}", a_C, a_C + normal, "size and direction"),
                    (t_name, a_C + normal, a_P, "direction"), (f"a_{p}", 0j, a_P, "found")], lines,

@@ -1,0 +1,136 @@
+"""The motion guard's cost (issue 35, "Keep"): the polygons and instant centres of graphkin checkouts, A/B, CPU time.
+
+``construct_kinematics`` and ``instant_centres`` at every position of a few catalog problems (and the four-bar of
+``bench_fourbar.py`` over 360 crank angles), timed with ``time.process_time`` (CPU time: on a machine shared with
+other work, wall time measures the neighbours). Each checkout's graphkin runs in a worker process of its own (the
+same interpreter, its folder first on ``sys.path``); the workers are asked in turn, round after round, so that both
+see the same load; the table gives each checkout's median over the rounds [µs per position] and the ratio to the
+first checkout's. Then ``graphkin solve strip_cutter --json`` (with and without ``--motion-polygons``) end to end,
+a new process each run, its CPU time (user + system, from ``getrusage`` of the children), alternately too.
+
+    .venv/bin/python benchmarks/bench_guard.py [--rounds 15] [--runs 9] [--problems a,b] BASE_DIR [OTHER_DIR ...]
+
+Each DIR holds a ``graphkin`` package, e.g. ``git archive 405e4a9 graphkin | tar -x -C /tmp/base`` for the commit
+before the guard; this checkout is added as the last unless given. A measurement, not a test: exit code 0.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import resource
+import statistics
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+PROBLEMS = ("strip_cutter", "slider_crank_friction", "shaper_six_bar", "gearset", "fourbar_dynamic_makdin")
+
+WORKER = r"""
+import gc, json, math, sys, time
+sys.path.insert(0, sys.argv[1])
+sys.path.insert(1, sys.argv[2])
+from fourbar_linkage import fourbar
+from graphkin import catalog
+from graphkin.graphical import construct_kinematics, instant_centres
+from graphkin.kinematics import solve_kinematics
+
+n = 360
+cases = {"four-bar (360)": solve_kinematics(fourbar(), [2 * math.pi * k / n for k in range(n)], 900 * 2 * math.pi / 60)}
+for name in filter(None, sys.argv[3].split(",")):
+    cases[name] = catalog.load(name).kinematics()
+for kin in cases.values():  # a warm-up: caches filled, code paths taken once
+    for i in range(kin.n):
+        construct_kinematics(kin, i), instant_centres(kin, i)
+
+
+def cpu(fn, kin, reps):
+    best = math.inf
+    for _ in range(reps):
+        gc.collect()
+        t = time.process_time()
+        for i in range(kin.n):
+            fn(kin, i)
+        best = min(best, time.process_time() - t)
+    return best / kin.n * 1e6
+
+
+for line in sys.stdin:
+    out = {}
+    for name, kin in cases.items():
+        reps = max(1, 60 // kin.n)
+        out[name] = (cpu(construct_kinematics, kin, reps), cpu(instant_centres, kin, reps))
+    print(json.dumps(out), flush=True)
+"""
+
+
+def _workers(roots: list[str], problems: str) -> list[subprocess.Popen]:
+    return [subprocess.Popen([sys.executable, "-c", WORKER, root, str(HERE), problems], stdin=subprocess.PIPE,
+                             stdout=subprocess.PIPE, text=True, cwd=tempfile.gettempdir()) for root in roots]
+
+
+def _cli_cpu(root: str, argv: list[str]) -> float:
+    """CPU seconds (user + system) of one ``python -m graphkin ...`` run with ``root``'s graphkin."""
+    env = {**os.environ, "PYTHONPATH": root}
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    subprocess.run([sys.executable, "-m", "graphkin", *argv], env=env, cwd=tempfile.gettempdir(), check=True,
+                   stdout=subprocess.DEVNULL)
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("roots", nargs="+", help="folders that hold a graphkin package (the first is the baseline)")
+    parser.add_argument("--rounds", type=int, default=15, help="rounds of the per-position timing")
+    parser.add_argument("--runs", type=int, default=9, help="runs of each command, per checkout")
+    parser.add_argument("--problems", default=",".join(PROBLEMS), help="catalog problems, comma-separated")
+    args = parser.parse_args()
+    roots = [str(Path(r).resolve()) for r in args.roots]
+    mine = str(HERE.parent)
+    if mine not in roots:
+        roots.append(mine)
+    names = [f"#{k} {Path(r).name}" for k, r in enumerate(roots)]
+    print("checkouts: " + "; ".join(f"{n} = {r}" for n, r in zip(names, roots)))
+
+    workers = _workers(roots, args.problems)
+    samples: list[dict] = [dict() for _ in roots]
+    for _ in range(args.rounds):
+        for w, got in zip(workers, samples):
+            w.stdin.write("go\n")
+            w.stdin.flush()
+            for case, times in json.loads(w.stdout.readline()).items():
+                got.setdefault(case, []).append(times)
+    for w in workers:
+        w.stdin.close()
+        w.wait()
+
+    print(f"\nCPU µs per position, median of {args.rounds} alternating rounds (ratio to {names[0]})")
+    head = f"{'problem':<24}" + "".join(f"{n[:12] + ' poly':>18}{'centres':>14}" for n in names)
+    print(head)
+    for case in samples[0]:
+        row = f"{case:<24}"
+        base = [statistics.median(t[k] for t in samples[0][case]) for k in (0, 1)]
+        for got in samples:
+            p, c = (statistics.median(t[k] for t in got[case]) for k in (0, 1))
+            row += f"{p:>9.1f} ({p / base[0]:4.2f}){c:>7.1f} ({c / base[1]:4.2f})"
+        print(row)
+
+    print(f"\nCPU ms of a whole command (new process), median of {args.runs} alternating runs")
+    for argv in (["solve", "strip_cutter", "--json"], ["solve", "strip_cutter", "--json", "--motion-polygons"]):
+        for root in roots:  # once each before timing: bytecode compiled
+            _cli_cpu(root, argv)
+        runs: list[list[float]] = [[] for _ in roots]
+        for _ in range(args.runs):
+            for root, got in zip(roots, runs):
+                got.append(_cli_cpu(root, argv))
+        medians = [statistics.median(r) * 1e3 for r in runs]
+        print(f"graphkin {' '.join(argv):<48}" + "".join(f"{m:>9.0f} ({m / medians[0]:4.2f})" for m in medians))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

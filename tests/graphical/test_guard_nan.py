@@ -1,0 +1,71 @@
+"""A value that is not a number is the worst disagreement there is (issue 35's guard).
+
+The guard kept the worst difference with ``if not gap <= worst``: a nan became the worst, and the next value,
+``not gap <= nan``, took its place, so a nan anywhere but last passed as agreement. Each test puts a nan in one
+value of a construction that agrees, in turn at every place, and checks that the guard names it.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+
+import pytest
+
+from graphkin import catalog
+from graphkin.graphical import construct_forces, construct_kinematics, guard, instant_centres, polygons
+
+
+@pytest.fixture(scope="module")
+def strip_cutter():
+    return catalog.load("strip_cutter").solve()
+
+
+def _polygons_and_their_places(kin, monkeypatch):
+    """The polygons of position 0 and what the builder told the guard of them (whose point each image is)."""
+    seen = []
+    monkeypatch.setattr(polygons, "motion_disagreement", lambda *args: seen.append(args) or "")
+    construct_kinematics(kin, 0)
+    monkeypatch.undo()
+    return seen[0]
+
+
+@pytest.mark.parametrize("field", ["velocity", "acceleration", "v_G", "a_G", "omega", "alpha"])
+def test_a_nan_in_the_polygons_is_refused_wherever_it_is(strip_cutter, field, monkeypatch):
+    kin, i, c, where, coriolis = _polygons_and_their_places(strip_cutter.kinematics, monkeypatch)
+    assert guard.motion_disagreement(kin, i, c, where, coriolis) == ""
+    table = getattr(c, field)
+    for key in table:
+        nan = math.nan if field in ("omega", "alpha") else (math.nan, 0.0)
+        bad = dataclasses.replace(c, **{field: {**table, key: nan}})
+        why = guard.motion_disagreement(kin, i, bad, where, coriolis)
+        assert guard.is_disagreement(why) and "nan" in why, (field, key)
+
+
+def test_a_nan_image_is_refused(strip_cutter, monkeypatch):
+    kin, i, c, where, coriolis = _polygons_and_their_places(strip_cutter.kinematics, monkeypatch)
+    for polygon, images in c.images.items():
+        for name in images:
+            bad = dataclasses.replace(c, images={**c.images, polygon: {**images, name: (math.nan, 0.0)}})
+            why = guard.motion_disagreement(kin, i, bad, where, coriolis)
+            assert f"image {name} is nan" in why, (polygon, name)
+
+
+def test_a_nan_from_the_instant_centres_is_refused(strip_cutter):
+    kin = strip_cutter.kinematics
+    ic = instant_centres(kin, 0)
+    assert ic.valid and guard.centres_disagreement(kin, 0, ic) == ""
+    for field in ("centres", "velocity", "v_G", "omega"):
+        table = getattr(ic, field)
+        for key in table:
+            bad = dataclasses.replace(ic, **{field: {**table, key: math.nan if field == "omega" else (math.nan, 0.0)}})
+            assert "nan" in guard.centres_disagreement(kin, 0, bad), (field, key)
+
+
+def test_a_nan_force_is_refused_wherever_it_is(strip_cutter):
+    c = construct_forces(strip_cutter.kinematics, 0)
+    assert guard.check_forces(strip_cutter, c, 0) is c
+    for key in c.forces:
+        bad = dataclasses.replace(c, forces={**c.forces, key: (math.nan, 0.0)})
+        checked = guard.check_forces(strip_cutter, bad, 0)
+        assert not checked.valid and guard.is_disagreement(checked.reason), key
