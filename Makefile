@@ -3,7 +3,7 @@ PYTHON ?= python3
 VENV   := .venv
 BIN    := $(VENV)/bin
 
-.PHONY: demo test check lint docs e2e bench figures clean
+.PHONY: demo test check check-lowest lint docs e2e bench figures clean
 
 $(BIN)/python:
 	$(PYTHON) -m venv $(VENV)
@@ -32,6 +32,22 @@ test: $(VENV)/.installed
 # All but the slow tests (real grading platforms, fuzzers, concurrency, figure overlaps, PDF measurements), and the linters: a quick check while working.
 check: $(VENV)/.installed lint
 	$(PYTEST) -m "not slow" --doctest-modules graphkin tests
+
+# `make check`'s tests on the oldest versions pyproject.toml allows: each dependency graphkin names at its floor
+# (uv's lowest-direct resolution; what those need, at its newest), in a venv of its own, on 2 workers. A floor
+# that fails here is not true: raise it (docs/install.md).
+LOWEST := .venv-lowest
+
+$(LOWEST)/.installed: pyproject.toml
+	rm -rf $(LOWEST)
+	$(PYTHON) -m venv $(LOWEST)
+	$(LOWEST)/bin/python -m pip install --quiet uv
+	$(LOWEST)/bin/uv pip install --quiet --python $(LOWEST)/bin/python --resolution lowest-direct -e '.[test]'
+	touch $@
+
+check-lowest: $(LOWEST)/.installed
+	$(LOWEST)/bin/python -m pip list 2>/dev/null | grep -iE '^(numpy|shapely|pint|matplotlib|tqdm|typst|latex2mathml|orjson) '
+	$(LOWEST)/bin/python -m pytest -q -n 2 --dist loadfile -m "not slow" --doctest-modules graphkin tests
 
 lint: $(VENV)/.installed
 	$(BIN)/ruff check graphkin tests benchmarks figures
@@ -86,4 +102,4 @@ bench: $(VENV)/.installed
 	$(BIN)/python benchmarks/bench_animate.py
 
 clean:
-	rm -rf $(VENV) build *.egg-info
+	rm -rf $(VENV) $(LOWEST) build *.egg-info

@@ -4,7 +4,8 @@ A handout's figure is saved cropped to what it draws. ``get_tightbbox`` lays out
 find it (a label, a title, a scale bar's reading), although the labels were measured when they were placed
 and the same names and titles come back on every student's figures. Here a text's box is the one
 :func:`graphkin.draw.text.text_extent` keeps (laid out once, moved to where the text stands), so the extent is
-the same to the last bit (``tests/draw/test_extent.py``).
+the same to the last bit (``tests/draw/test_extent.py``). Where this matplotlib lacks a private name this needs
+(:data:`graphkin.draw.matplotlib_private.FAST_TEXT`), the extent is ``get_tightbbox``'s own.
 """
 
 from __future__ import annotations
@@ -12,6 +13,7 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.transforms import Bbox, TransformedBbox
 
+from graphkin.draw import matplotlib_private
 from graphkin.draw.labels import measuring_renderer
 from graphkin.draw.text import box_kept, text_extent
 
@@ -74,6 +76,8 @@ def drawn_extent(fig) -> Bbox:
         The box around everything the figure draws, in inches from its lower left corner.
     """
     renderer = measuring_renderer(fig)
+    if not matplotlib_private.FAST_TEXT:
+        return fig.get_tightbbox(renderer)
     bb = [_tight(a, renderer) for a in fig.get_children()
           if a not in fig.axes and a.get_visible() and a.get_in_layout()]
     bb = [b for b in bb if b is not None]

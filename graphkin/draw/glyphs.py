@@ -1,5 +1,9 @@
 """Text laid out once per process: each new string shaped once, for its size and its outline; each glyph loaded
-once; each formula parsed once. :mod:`graphkin.draw.text` measures and writes the figures' text through it."""
+once; each formula parsed once. :mod:`graphkin.draw.text` measures and :mod:`graphkin.draw.backend_svg` writes the
+figures' text through it.
+
+It stands on matplotlib's private API, every name of which is in :data:`graphkin.draw.matplotlib_private.TEXT`:
+import it only where :data:`~graphkin.draw.matplotlib_private.FAST_TEXT` holds."""
 
 from __future__ import annotations
 
@@ -183,10 +187,10 @@ class _TextToPathOnce(TextToPath):
 class _Outline(np.ndarray):
     """The vertices of a text's outline [font units] as :class:`_TextToPathOnce` keeps them.
 
-    Marked by their type (``Path`` keeps the array it is given), so that :class:`~graphkin.draw.text._RendererSVG` knows a text
-    drawn as an outline when it is asked to draw it. Only the array the cache made carries ``codes``; an array
-    computed from it (a view, a sum) is an ``_Outline`` without them and is drawn as any path. ``svg`` is its SVG
-    path data [font units], once it has been written.
+    Marked by their type (``Path`` keeps the array it is given), so that
+    :class:`~graphkin.draw.backend_svg._RendererSVG` knows a text drawn as an outline when it is asked to draw it.
+    Only the array the cache made carries ``codes``; an array computed from it (a view, a sum) is an ``_Outline``
+    without them and is drawn as any path. ``svg`` is its SVG path data [font units], once it has been written.
     """
 
 

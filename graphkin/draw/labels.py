@@ -14,6 +14,7 @@ import math
 import numpy as np
 from matplotlib.transforms import ScaledTranslation, TransformedBbox
 
+from graphkin.draw import matplotlib_private
 from graphkin.draw.arrows import perp, unit
 from graphkin.draw.axes import clip_path, line
 from graphkin.draw.text import halo, measuring_agg, text_extent
@@ -96,9 +97,11 @@ def measuring_renderer(fig):
     get = getattr(root.canvas, "get_renderer", None)
     if get is not None:
         return get()
-    r = _MEASURING.get(root.dpi)
+    # By the text path too, so that a renderer made while the fast one held is not used where it does not.
+    key = (root.dpi, matplotlib_private.FAST_TEXT)
+    r = _MEASURING.get(key)
     if r is None:
-        r = _MEASURING[root.dpi] = measuring_agg(root.dpi)
+        r = _MEASURING[key] = measuring_agg(root.dpi)
     return r
 
 

@@ -1,23 +1,17 @@
 """Text as the figures write it: subscripted names, numbers with a true minus, polar form, the input, a halo;
-and text measured and written into SVG files as laid out once per process (:mod:`graphkin.draw.glyphs`)."""
+and text measured as the SVG files print it, laid out once per process where this matplotlib allows
+(:mod:`graphkin.draw.matplotlib_private`)."""
 
 from __future__ import annotations
 
 import re
-import threading
-from collections import OrderedDict
-from contextlib import contextmanager
 
-import numpy as np
-from matplotlib.backends import backend_svg
 from matplotlib.backends.backend_agg import RendererAgg
-from matplotlib.path import Path
 from matplotlib.patheffects import withStroke
 from matplotlib.text import Text
-from matplotlib.transforms import Affine2D
 
 from graphkin import notation
-from graphkin.draw.glyphs import _GLYPH_DEFS, _TEXT_TO_PATH
+from graphkin.draw import matplotlib_private
 
 _NAME = re.compile(r"^([−-]?)([A-Za-z])([a-z]?\d+(?:,\d+)?[a-z]?)([′″‴⁗]|⁽[⁰¹²³⁴⁵⁶⁷⁸⁹]+⁾)?$")
 SUBSCRIPTS = dict(zip("0123456789aehijklmnoprstuvx,", "₀₁₂₃₄₅₆₇₈₉ₐₑₕᵢⱼₖₗₘₙₒₚᵣₛₜᵤᵥₓ,"))
@@ -100,8 +94,11 @@ def input_text(construction) -> str:
 
 
 def halo(width: float = 2.6):
-    """A white outline behind text, so a label stays legible where a line runs under it."""
-    return _Halo(linewidth=width, foreground="white")
+    """A white outline behind text, so a label stays legible where a line runs under it.
+
+    A ``withStroke``; where :mod:`graphkin.draw.backend_svg` writes the SVG files, one that it draws in one call.
+    """
+    return (_Halo if matplotlib_private.FAST_TEXT else withStroke)(linewidth=width, foreground="white")
 
 
 class _Halo(withStroke):
@@ -109,9 +106,10 @@ class _Halo(withStroke):
     one call.
 
     A haloed text's outline is drawn twice; through matplotlib's path effects each pass finds the outline's
-    placement and style anew, a twentieth of a handout's figure. :meth:`_RendererSVG.draw_haloed` writes both
-    passes at once, the same bytes; any other renderer, and an outline it does not take, is drawn as
-    ``withStroke`` draws it. A halo has no offset (``Stroke``'s offset is for a shadow).
+    placement and style anew, a twentieth of a handout's figure.
+    :meth:`graphkin.draw.backend_svg._RendererSVG.draw_haloed` writes both passes at once, the same bytes; any
+    other renderer, and an outline it does not take, is drawn as ``withStroke`` draws it. A halo has no offset
+    (``Stroke``'s offset is for a shadow).
     """
 
     def draw_path(self, renderer, gc, tpath, affine, rgbFace):
@@ -131,13 +129,25 @@ class _Halo(withStroke):
         super().draw_path(renderer, gc, tpath, affine, rgbFace)
 
 
+
+def svg_backend() -> str | None:
+    """The ``backend`` to pass to ``savefig(format="svg")``: :mod:`graphkin.draw.backend_svg`, which writes each text
+    outline once and lays each text out once per process, or None (matplotlib's own) where this matplotlib lacks a
+    private name it needs (:data:`~graphkin.draw.matplotlib_private.FAST_TEXT`)."""
+    return "module://graphkin.draw.backend_svg" if matplotlib_private.FAST_TEXT else None
+
+
 class _MeasuringAgg(RendererAgg):
     """An Agg renderer whose text sizes are those of the SVG files (see :func:`measuring_agg`)."""
+
+    def __init__(self, width, height, dpi, text_to_path):
+        super().__init__(width, height, dpi)
+        self.text_to_path = text_to_path
 
     def get_text_width_height_descent(self, s, prop, ismath):
         if ismath == "TeX":
             return super().get_text_width_height_descent(s, prop, ismath)
-        w, h, d = _TEXT_TO_PATH.get_text_width_height_descent(s, prop, ismath)
+        w, h, d = self.text_to_path.get_text_width_height_descent(s, prop, ismath)
         k = self.dpi / 72.0
         return w * k, h * k, d * k
 
@@ -146,131 +156,23 @@ def measuring_agg(dpi: float) -> RendererAgg:
     """An Agg renderer (1 × 1 px) at ``dpi`` that measures text as the SVG files lay it out.
 
     A headless figure's labels are measured to place them and to find the figure's extent, and its SVG file
-    then lays each text out again, at 72 dpi, through :class:`~graphkin.draw.glyphs._TextToPathOnce`. Measured
-    here through that same shared cache (its sizes [pt] times ``dpi / 72``), each string is laid out once, not twice (a mathtext
-    label, such as ``a^t_BA = 273.3 m/s²``, is parsed once): the boxes are the unhinted outlines the file
-    prints, where Agg's own are hinted to its pixels. Only for measuring, never for drawing.
+    then lays each text out again, at 72 dpi, as unhinted outlines (a ``TextToPath``): the boxes here are those
+    (its sizes [pt] times ``dpi / 72``), where Agg's own are hinted to its pixels. Where
+    :data:`~graphkin.draw.matplotlib_private.FAST_TEXT` holds, they come from the SVG files' own shared cache
+    (:class:`~graphkin.draw.glyphs._TextToPathOnce`), so each string is laid out once, not twice (a mathtext
+    label, such as ``a^t_BA = 273.3 m/s²``, is parsed once); else from matplotlib's ``text_to_path``, the same
+    numbers. Only for measuring, never for drawing.
 
     Parameters
     ----------
     dpi : float
         Resolution the sizes are given at [pixels per inch].
     """
-    return _MeasuringAgg(1, 1, dpi)
-
-
-class _RendererSVG(backend_svg.RendererSVG):
-    """matplotlib's SVG renderer with the shared :class:`~graphkin.draw.glyphs._TextToPathOnce`, and each text outline
-    written once.
-
-    A text with a halo is drawn as its outline, twice (stroked white, then filled), and matplotlib writes the
-    outline's every vertex into the file each time: three fifths of a handout's figure file was such copies.
-    Here the outline goes once into the file's ``<defs>``, in font units, and each drawing of it is a ``<use>``
-    that places it (the same matrix matplotlib applies to the vertices) with the same style, its stroke width
-    divided by the placement's scale so that it strokes as wide. A text outline drawn with a clip, a dash, a
-    hatch or a link is drawn as matplotlib draws it.
-
-    Not a ``<use>`` of each glyph, as matplotlib writes a text without a halo: the file would be a third smaller
-    again, but typst, which typesets the handouts, takes half as long again over it (it places each ``<use>``
-    as a copy), more than the smaller file saves.
-    """
-
-    def __init__(self, *args, **kwargs):
-        super().__init__(*args, **kwargs)
-        self._text2path = _TEXT_TO_PATH
-        self._outlines: dict = {}
-
-    def draw_path(self, gc, path, transform, rgbFace=None):
-        verts = path.vertices
-        m = self._outline_matrix(gc, verts, transform.get_matrix()) if self._takes(gc, verts) else None
-        if m is None:
-            return super().draw_path(gc, path, transform, rgbFace)
-        self._use(gc, verts, m, rgbFace)
-
-    def _update_glyph_map_defs(self, glyph_map_new):
-        """``RendererSVG._update_glyph_map_defs`` (matplotlib 3.11), each glyph's path data made once per process.
-
-        A text drawn without a halo is a ``<use>`` of each glyph, and each file defines the glyphs it uses, its
-        outline converted to path data anew for every file. A glyph that
-        :class:`~graphkin.draw.glyphs._TextToPathOnce` loaded keeps its arrays for the process, and its data is kept
-        with their id (``_GLYPH_DEFS``); any other is converted as matplotlib converts it.
-        """
-        writer = self.writer
-        if glyph_map_new:
-            writer.start("defs")
-            for glyph_repr, (vertices, codes) in glyph_map_new.items():
-                data = _GLYPH_DEFS.get(id(vertices))
-                if data is None:
-                    # x64 to go back to FreeType's internal (integral) units.
-                    data = self._convert_path(Path(vertices * 64, codes), simplify=False)
-                    if id(vertices) in _GLYPH_DEFS:
-                        _GLYPH_DEFS[id(vertices)] = data
-                writer.element("path", id=self._adjust_glyph_repr(glyph_repr), d=data, transform=_SIXTY_FOURTH)
-            writer.end("defs")
-            self._glyph_map.update(glyph_map_new)
-
-    def draw_haloed(self, stroke, gc, path, affine, rgbFace=None) -> bool:
-        """A haloed text's two passes (see :class:`_Halo`): its outline stroked with ``stroke``, then drawn with
-        ``gc``; False, having drawn nothing, if either is not a text outline this renderer writes as a ``<use>``.
-
-        The same bytes as matplotlib's ``withStroke`` through :meth:`draw_path`: the stroke's placement is
-        ``affine + Affine2D().translate(0, 0)`` there, a product with the identity matrix (which turns a
-        ``-0.0`` into ``0.0``), and is found by that same product here.
-        """
-        verts = path.vertices
-        if not (self._takes(stroke, verts) and self._takes(gc, verts)):
-            return False
-        a = affine.get_matrix()
-        halo = self._outline_matrix(stroke, verts, np.dot(_NO_OFFSET, a))
-        m = self._outline_matrix(gc, verts, a)
-        if halo is None or m is None:
-            return False
-        self._use(stroke, verts, halo, rgbFace)
-        self._use(gc, verts, m, rgbFace)
-        return True
-
-    def _takes(self, gc, verts) -> bool:
-        """Whether a path is a text outline (:class:`~graphkin.draw.glyphs._Outline`) drawn plainly: no clip, dash, hatch, link or
-        sketch."""
-        return not (getattr(verts, "codes", None) is None or gc.get_url() is not None or gc.get_hatch() is not None
-                    or gc.get_sketch_params() is not None or gc.get_dashes()[1] is not None
-                    or self._get_clip_attrs(gc))
-
-    def _outline_matrix(self, gc, verts, matrix):
-        """The matrix that places an outline drawn with the affine ``matrix`` in the file (y down), as
-        ``_make_flip_transform`` makes it; None if it flattens the outline (drawn as matplotlib draws it)."""
-        m = np.dot(Affine2D().scale(1, -1).translate(0, self.height).get_matrix(), matrix)
-        if not abs(m[0, 0] * m[1, 1] - m[0, 1] * m[1, 0]):
-            return None
-        return m
-
-    def _use(self, gc, verts, m, rgbFace):
-        """A ``<use>`` of the outline ``verts`` placed by ``m``, its definition written first if the file has none."""
-        scale = abs(m[0, 0] * m[1, 1] - m[0, 1] * m[1, 0]) ** 0.5
-        style = self._get_style_dict(gc, rgbFace)
-        if "stroke" in style:
-            style["stroke-width"] = backend_svg._short_float_fmt(gc.get_linewidth() / scale)
-        # The array itself is kept with its id: an id() is unique only while its object lives.
-        known = self._outlines.get(id(verts))
-        if known is None:
-            known = self._outlines[id(verts)] = (verts, f"text-outline-{len(self._outlines) + 1}")
-            data = vars(verts).get("svg")
-            if data is None:
-                # In font units, written once per process and kept with the outline.
-                data = verts.svg = self._convert_path(Path(verts, verts.codes), Affine2D(), simplify=False)
-            self.writer.start("defs")
-            self.writer.element("path", id=known[1], d=data)
-            self.writer.end("defs")
-        place = backend_svg._generate_transform([("matrix", (m[0, 0], m[1, 0], m[0, 1], m[1, 1], m[0, 2], m[1, 2]))])
-        self.writer.element("use", attrib={"xlink:href": f"#{known[1]}"}, transform=place,
-                            style=backend_svg._generate_css(style))
-
-
-_SIXTY_FOURTH = backend_svg._generate_transform([("scale", (1 / 64,))])
-"""A glyph definition's own placement: its path data is in 64ths of a font unit, as matplotlib writes it."""
-
-_NO_OFFSET = Affine2D().translate(0, 0).get_matrix()
-"""The matrix of a path effect's offset of (0, 0) (see :meth:`_RendererSVG.draw_haloed`)."""
+    if matplotlib_private.FAST_TEXT:
+        from graphkin.draw.glyphs import _TEXT_TO_PATH as text_to_path
+    else:
+        from matplotlib.textpath import text_to_path
+    return _MeasuringAgg(1, 1, dpi, text_to_path)
 
 
 _BOXES: dict = {}
@@ -303,7 +205,8 @@ def text_extent(t, renderer):
     A text's box depends on its string, font, alignment, angle, line spacing and the resolution, never on where
     it stands: the box is kept under those and moved to the text's anchor, the same numbers added in the same
     order as matplotlib adds them (the same box to the last bit). Labels are measured to place them and again to
-    find the figure's extent, and names and titles come back on every figure.
+    find the figure's extent, and names and titles come back on every figure. Where
+    :data:`~graphkin.draw.matplotlib_private.FAST_TEXT` does not hold, this is ``t.get_window_extent(renderer)``.
 
     Parameters
     ----------
@@ -315,7 +218,7 @@ def text_extent(t, renderer):
     matplotlib.transforms.Bbox
         In display units.
     """
-    if not (box_kept(t) and t.get_visible() and t.get_text() != ""):
+    if not (matplotlib_private.FAST_TEXT and box_kept(t) and t.get_visible() and t.get_text() != ""):
         return t.get_window_extent(renderer)
     t._renderer = renderer
     key = (*_layout_key(t), type(renderer), getattr(renderer, "dpi", None))
@@ -327,59 +230,3 @@ def text_extent(t, renderer):
     x, y = t.get_unitless_position()
     x, y = t.get_transform().transform((x, y))
     return box.translated(x, y)
-
-
-_LAYOUTS: OrderedDict = OrderedDict()
-_LAYOUTS_SIZE = 4096
-
-
-def _layout_once(plain_layout):
-    """``Text._get_layout`` that, for an SVG file's renderer (:class:`_RendererSVG`), lays each text out once per
-    process.
-
-    A text's layout (its lines' sizes and offsets from its anchor, its box around the anchor) depends on its
-    string, font, alignment, angle, line spacing and the resolution, never on where it stands: the same names
-    and titles come back on every figure, and were laid out again for each file. A wrapped text, one turned
-    with its transform or set in TeX, and any other renderer get matplotlib's own layout.
-    """
-
-    def _get_layout(self, renderer):
-        # savefig hands the SVG renderer over inside a MixedModeRenderer (which draws rasterised artists with Agg).
-        if type(getattr(renderer, "_renderer", renderer)) is not _RendererSVG or not _laid_out_alike(self):
-            return plain_layout(self, renderer)
-        key = (*_layout_key(self), getattr(renderer, "dpi", None))
-        known = _LAYOUTS.get(key)
-        if known is None:
-            if len(_LAYOUTS) >= _LAYOUTS_SIZE:
-                _LAYOUTS.popitem(last=False)
-            bbox, info, descent = plain_layout(self, renderer)
-            known = _LAYOUTS[key] = (bbox.frozen(), tuple(info), descent)
-        bbox, info, descent = known
-        # Copies out: a caller may change the box it is given.
-        return bbox.frozen(), list(info), descent
-
-    return _get_layout
-
-
-_SWAP = threading.RLock()
-
-
-@contextmanager
-def svg_text_laid_out_once():
-    """While in the block, SVG files that matplotlib writes lay each text out once per process.
-
-    ``savefig(format="svg")`` makes its renderer by the name ``RendererSVG`` in matplotlib's SVG backend and
-    offers no way to pass one; the name points at :class:`_RendererSVG` for the block, and a text's layout for it is
-    kept (:func:`_layout_once`). The drawing is the same
-    (``tests/draw/test_svg_text.py`` rasterises both); the file differs only in writing each haloed text's
-    outline once (see :class:`_RendererSVG`), and the same figure always gives the same bytes.
-    """
-    with _SWAP:  # two threads saving at once must not put each other's name back
-        plain, layout = backend_svg.RendererSVG, Text._get_layout
-        backend_svg.RendererSVG = _RendererSVG
-        Text._get_layout = _layout_once(layout)
-        try:
-            yield
-        finally:
-            backend_svg.RendererSVG = plain
-            Text._get_layout = layout

@@ -78,10 +78,11 @@ class Picture:
             # handout gives the same bytes, so a teacher can diff this year's HTML against last year's.
             from matplotlib import rc_context
 
-            from graphkin.draw.text import svg_text_laid_out_once
+            from graphkin.draw.text import svg_backend
 
-            with rc_context({"svg.hashsalt": f"graphkin-{self.key}"}), svg_text_laid_out_once():
-                fig.savefig(out, format="svg", bbox_inches=box, facecolor="white", metadata={"Date": None})
+            with rc_context({"svg.hashsalt": f"graphkin-{self.key}"}):
+                fig.savefig(out, format="svg", backend=svg_backend(), bbox_inches=box, facecolor="white",
+                            metadata={"Date": None})
             self._svg = out.getvalue().decode("utf-8")
             self.draw = self._figure = None  # the figure and its data can go
         return self._svg

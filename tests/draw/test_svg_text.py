@@ -1,6 +1,6 @@
 """The SVG a handout's figure is written as: each text laid out and each glyph written once, and it looks the same.
 
-:func:`graphkin.draw.text.svg_text_laid_out_once` swaps matplotlib's SVG renderer for one that writes a haloed text's
+:mod:`graphkin.draw.backend_svg`, the backend handed to ``savefig``, draws with an SVG renderer that writes a haloed text's
 outline once, as a definition that two ``<use>`` place, instead of writing all its vertices twice. Both
 files are rasterised by typst, which typesets the handouts, and compared pixel by pixel.
 """
@@ -14,7 +14,9 @@ import numpy as np
 import pytest
 from matplotlib.figure import Figure
 
-from graphkin.draw.text import halo, svg_text_laid_out_once
+from graphkin.draw.text import halo
+
+OURS = "module://graphkin.draw.backend_svg"
 
 typst = pytest.importorskip("typst")
 Image = pytest.importorskip("PIL.Image")
@@ -35,17 +37,13 @@ def _figure(halo=halo) -> Figure:
     return fig
 
 
-def _svg(swap: bool, fig=None) -> str:
+def _svg(ours: bool, fig=None) -> str:
     out = io.BytesIO()
     from matplotlib import rc_context
 
     fig = fig or _figure()
     with rc_context({"svg.hashsalt": "test"}):
-        if swap:
-            with svg_text_laid_out_once():
-                fig.savefig(out, format="svg", metadata={"Date": None})
-        else:
-            fig.savefig(out, format="svg", metadata={"Date": None})
+        fig.savefig(out, format="svg", backend=OURS if ours else None, metadata={"Date": None})
     return out.getvalue().decode("utf-8")
 
 
@@ -114,7 +112,7 @@ def test_a_halo_drawn_in_one_call_writes_what_withstroke_writes(monkeypatch):
     ``withStroke``."""
     from matplotlib.patheffects import withStroke
 
-    from graphkin.draw.text import _RendererSVG
+    from graphkin.draw.backend_svg import _RendererSVG
 
     def stroke(width=2.6):
         return withStroke(linewidth=width, foreground="white")
@@ -192,28 +190,28 @@ def test_the_measuring_renderer_gives_the_sizes_the_svg_prints(text):
 
 
 def test_a_text_laid_out_once_is_laid_out_again_when_it_changes():
-    """Within :func:`svg_text_laid_out_once` each text's layout is kept; a text whose font, alignment, angle or
+    """Through :mod:`graphkin.draw.backend_svg` each text's layout is kept; a text whose font, alignment, angle or
     string changes between two files is laid out anew: the second file is what a fresh figure with the changed
     text writes."""
     from matplotlib import rc_context
 
-    from graphkin.draw import text as T
+    from graphkin.draw import backend_svg
 
     def saved(fig) -> str:
         out = io.BytesIO()
-        with rc_context({"svg.hashsalt": "test"}), svg_text_laid_out_once():
-            fig.savefig(out, format="svg", metadata={"Date": None})
+        with rc_context({"svg.hashsalt": "test"}):
+            fig.savefig(out, format="svg", backend=OURS, metadata={"Date": None})
         return out.getvalue().decode("utf-8")
 
     for change in ({"fontsize": 15}, {"ha": "right"}, {"va": "top"}, {"rotation": 45}, {"text": "F₂₃ = 99 N"},
                    {"linespacing": 2.0, "text": "two\nlines"}):
         fig = _figure()
         saved(fig)
-        assert T._LAYOUTS
+        assert backend_svg._LAYOUTS
         for t in fig.axes[0].texts:
             t.set(**change)
         got = saved(fig)  # with the layouts of the texts before the change kept
-        T._LAYOUTS.clear()
+        backend_svg._LAYOUTS.clear()
         fresh = _figure()
         for t in fresh.axes[0].texts:
             t.set(**change)
