@@ -854,6 +854,22 @@ def compound_planet(draw, friction=None):
                    "compound planet", loads=loads)
 
 
+def planet_on_a_rocker() -> Mechanism:
+    """A crank-rocker whose rocker 4 swings across 180° carries a planet 5 meshing with a sun fixed at the rocker's
+    pivot: the shrunk case the family ``driven_arm`` found, where the planet's angle jumped by 1.6 turns as the
+    rocker's crossed ±180° (issue 35)."""
+    return Mechanism(
+        [Link(1, {"O2": (0.0, 0.0), "O4": (-0.9899924966004454, 0.1411200080598672)}),
+         Link(2, {"O2": (0.0, 0.0), "A": (0.5, 0.0)}),
+         Link(3, {"A": (0.0, 0.0), "B": (1.0, 0.0)}),
+         Link(4, {"O4": (0.0, 0.0), "B": (-0.4161468365471424, 0.9092974268256817),
+                  "C": (0.5403023058681397, 0.8414709848078965)}),
+         Link(5, {"C": (0.0, 0.0)})],
+        [Revolute((1, 2), "O2"), Revolute((2, 3), "A"), Revolute((3, 4), "B"), Revolute((4, 1), "O4"),
+         Revolute((4, 5), "C"), GearMesh((5, 1), ("C", "O4"), (0.625, 0.375), 0.0)],
+        Driver(2), assembly={"B": 1})
+
+
 @st.composite
 def driven_arm(draw, friction=None):
     """A planet on an arm that is not the driver: the arm a gear 3 turned by a driving pinion 2 (outside it, or

@@ -383,18 +383,9 @@ def test_a_planet_on_a_rocker_is_written_from_the_angles_it_was_found_from():
     result is the planet's angle the solver found and the drawing shows (issue 35)."""
     from graphkin.handout.loops import groups
     from graphkin.kinematics import solve_kinematics
-    from graphkin.model import Driver, GearMesh, Link, Mechanism, Revolute
+    from tests.strategies import planet_on_a_rocker
 
-    mech = Mechanism(
-        [Link(1, {"O2": (0.0, 0.0), "O4": (-0.9899924966004454, 0.1411200080598672)}),
-         Link(2, {"O2": (0.0, 0.0), "A": (0.5, 0.0)}),
-         Link(3, {"A": (0.0, 0.0), "B": (1.0, 0.0)}),
-         Link(4, {"O4": (0.0, 0.0), "B": (-0.4161468365471424, 0.9092974268256817),
-                  "C": (0.5403023058681397, 0.8414709848078965)}),
-         Link(5, {"C": (0.0, 0.0)})],
-        [Revolute((1, 2), "O2"), Revolute((2, 3), "A"), Revolute((3, 4), "B"), Revolute((4, 1), "O4"),
-         Revolute((4, 5), "C"), GearMesh((5, 1), ("C", "O4"), (0.625, 0.375), 0.0)],
-        Driver(2), assembly={"B": 1})
+    mech = planet_on_a_rocker()
     kin = solve_kinematics(mech, np.radians([100.0, 160.0, 250.0, 330.0]), 1.0, 0.0)
     assert np.ptp(np.sign(kin.theta[4])) == 2  # the rocker stands on both sides of ±180°
     for i in range(kin.n):

@@ -43,7 +43,7 @@ from graphkin.analytical import solve_forces
 from graphkin.kinematics import Dyad, decompose, solve_kinematics
 from graphkin.model import Driver, GearMesh, Link, Mechanism, Prismatic, Revolute
 from tests.physics import pitch_point
-from tests.strategies import crank_families, families, gear_families, length_scale
+from tests.strategies import crank_families, families, gear_families, length_scale, planet_on_a_rocker
 from tests.vectors import cross, dot, perp
 
 FD_STEP = 1e-3
@@ -306,16 +306,7 @@ def test_a_planet_on_a_rocker_turns_without_a_jump():
     The shrunk case the property test above found on the family ``driven_arm`` (issue 35, item 2): the planet's
     angle jumped by 10.03 rad (1.6 turns) at θ12 = 2.69 rad and back at 5.48 rad, where θ14 crosses ±π.
     """
-    mech = Mechanism(
-        [Link(1, {"O2": (0.0, 0.0), "O4": (-0.9899924966004454, 0.1411200080598672)}),
-         Link(2, {"O2": (0.0, 0.0), "A": (0.5, 0.0)}),
-         Link(3, {"A": (0.0, 0.0), "B": (1.0, 0.0)}),
-         Link(4, {"O4": (0.0, 0.0), "B": (-0.4161468365471424, 0.9092974268256817),
-                  "C": (0.5403023058681397, 0.8414709848078965)}),
-         Link(5, {"C": (0.0, 0.0)})],
-        [Revolute((1, 2), "O2"), Revolute((2, 3), "A"), Revolute((3, 4), "B"), Revolute((4, 1), "O4"),
-         Revolute((4, 5), "C"), GearMesh((5, 1), ("C", "O4"), (0.625, 0.375), 0.0)],
-        Driver(2), assembly={"B": 1})
+    mech = planet_on_a_rocker()
     q = np.linspace(0.0, 2 * math.pi, 361)
     kin = solve_kinematics(mech, q, 1.0, 0.0)
     assert kin.valid.all()
