@@ -11,6 +11,7 @@ link j, CCW positive, SI units throughout.
 
 from __future__ import annotations
 
+import warnings
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Mapping
 
@@ -31,7 +32,7 @@ from graphkin.cycle._sampling import (
 from graphkin.cycle.flywheel import size_flywheel
 from graphkin.cycle.index import JointForceIndex, index_at
 from graphkin.cycle.turn import TURN, closing_step, weights
-from graphkin.errors import GraphkinError
+from graphkin.errors import GraphkinError, GraphkinWarning
 from graphkin.geometry import as_xy, cross
 from graphkin.model import GearMesh, Prismatic, Revolute
 from graphkin.notation import position_text
@@ -79,6 +80,12 @@ def sweep(problem: "Problem", n: int | None = None, *, at=None) -> "Cycle":
         if n is not None:
             raise GraphkinError("give either n (equally spaced crank angles) or at (the positions), not both")
         return Cycle(problem, problem.solve(at=at))
+    if problem.given and n is not None:
+        # A book's measured values hold at its own position only: a cycle is the motion the input produces.
+        warnings.warn(GraphkinWarning(
+            f"{problem.name}: its [given] values hold at {position_text(float(problem.q[0]), problem.mechanism.driver.crank)}"
+            " only; the cycle is solved with the motion its input produces"), stacklevel=2)
+        problem = problem.without_given()
     return Cycle(problem, problem.solve(at=sweep_positions(problem, n)))
 
 

@@ -15,7 +15,7 @@ from graphkin import catalog
 from graphkin.cycle import joint_force_index, size_flywheel, sweep
 from graphkin.cycle.sweep import SWITCH
 from graphkin.cycle.turn import weights
-from graphkin.errors import GraphkinError
+from graphkin.errors import GraphkinError, GraphkinWarning
 from graphkin.model import Driver, Link, Mechanism, PointForce, Revolute
 from graphkin.problem import Problem
 
@@ -348,12 +348,14 @@ def test_sweep_at_given_positions_and_the_mean_over_unequal_steps(cutter, cycle)
 
 def test_a_book_s_given_values_are_never_swept_over_the_cycle():
     """Makdin's slider-crank gives θ3, α3 and the a_G measured at θ = 60°: they held at every angle of a sweep, so
-    `graphkin cycle --n 8` printed torques from the coupler standing at −13° throughout (exit 0). Now a sweep of
-    such a problem says why it cannot; at the book's own position it is solved with them, and the problem without
-    them sweeps the motion its input produces."""
+    `graphkin cycle --n 8` printed torques from the coupler standing at −13° throughout (exit 0). Now solving it
+    elsewhere is refused; at the book's own position it is solved with them; a sweep says so and solves the motion
+    its input produces."""
     p = catalog.load("slider_crank_dynamic_makdin")
     with pytest.raises(GraphkinError, match=r"\[given\].* own position only \(θ = 60°\), not at θ = 0°"):
-        sweep(p, 8)
+        p.solve(at=[0.0, math.radians(60)])
     assert p.solve(at=p.q).valid.all()
-    derived = sweep(p.without_given(), 8).analysis.kinematics
+    with pytest.warns(GraphkinWarning, match=r"\[given\] values hold at θ = 60° only; the cycle is solved with"):
+        derived = sweep(p, 8).analysis.kinematics
     assert np.ptp(np.unwrap(derived.theta[3])) > 0.1  # the coupler swings as the crank turns
+    assert derived.theta[3] == pytest.approx(sweep(p.without_given(), 8).analysis.kinematics.theta[3], abs=0)

@@ -255,7 +255,8 @@ def test_no_label_on_a_label_or_an_outline_in_the_solution_figure(name):
 
     problem = catalog.load(name)
     at = np.concatenate([[_figure_position(name, problem)], _positions(problem, POSITIONS // 2)])
-    result = problem.solve(at=at)
+    # A book's [given] values hold at its own position only (the step frames below draw that one with them).
+    result = problem.without_given().solve(at=at)
     bad = []
     for i in range(len(at)):
         c = construct_forces(result.kinematics, i)
@@ -267,7 +268,14 @@ def test_no_label_on_a_label_or_an_outline_in_the_solution_figure(name):
     assert not bad, "\n".join(map(str, bad))
 
 
-@pytest.mark.parametrize("name", NAMES)
+# The explorer of a problem with [given] values used to hold them at every angle (a wrong motion, now the input's);
+# the right motion shows a layout slip there.
+EXPLORED = [pytest.param(name, marks=pytest.mark.xfail(strict=True, reason=(
+    "GRAPHKIN BUG (issue 36, item 3): at θ = 210° the explorer's force scale label '20000 N' lies on a force's "
+    "dimension arrow"))) if name == "slider_crank_dynamic_makdin" else name for name in NAMES]
+
+
+@pytest.mark.parametrize("name", EXPLORED)
 def test_no_label_on_a_label_or_an_outline_in_the_explorer(name):
     """The explorer's figure (smaller panels, no values on the polygons) at 12 positions, cut to the figure."""
     pytest.importorskip("ipywidgets")
@@ -357,7 +365,7 @@ def test_no_label_on_a_label_or_a_curve_in_the_cycle_figure(name):
 
     from graphkin.cycle import sweep
 
-    fig = draw.draw_cycle(sweep(catalog.load(name), 120))
+    fig = draw.draw_cycle(sweep(catalog.load(name).without_given(), 120))
     FigureCanvasAgg(fig)
     polar = [ax for ax in fig.axes if ax.name == "polar"]
     bad = [o for o in overlaps(fig, panels=polar, dashed=True)
