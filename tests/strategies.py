@@ -854,6 +854,24 @@ def compound_planet(draw, friction=None):
                    "compound planet", loads=loads)
 
 
+def toggle_fourbar(theta=(0.0,)):
+    """A triple rocker, frame 1.0, crank 0.4, coupler 0.6, rocker 0.6 (m), as a Problem at the crank angles
+    ``theta`` [rad]: coupler and rocker fold into line (|AB0| = 1.2) at cos θ = (1 + 0.16 − 1.44)/0.8 = −0.35,
+    a toggle the crank cannot pass."""
+    from graphkin.problem import Problem
+
+    links = [
+        Link(1, {"A0": (0, 0), "B0": (1.0, 0)}),
+        Link(2, {"A0": (0, 0), "A": (0.4, 0)}, mass=1.0, I_G=0.01),
+        Link(3, {"A": (0, 0), "B": (0.6, 0)}, mass=1.0, G=(0.3, 0), I_G=0.03),
+        Link(4, {"B0": (0, 0), "B": (0.6, 0), "P": (0.3, 0)}, mass=1.0, G=(0.3, 0), I_G=0.03),
+    ]
+    joints = [Revolute((1, 2), "A0"), Revolute((2, 3), "A"), Revolute((3, 4), "B"), Revolute((1, 4), "B0")]
+    mech = Mechanism(links, joints, Driver(2), [PointForce(4, "P", (0.0, -100.0))])
+    n = len(theta)
+    return Problem("toggle four-bar", mech, np.asarray(theta, dtype=float), np.full(n, 10.0), np.zeros(n))
+
+
 def planet_on_a_rocker() -> Mechanism:
     """A crank-rocker whose rocker 4 swings across 180° carries a planet 5 meshing with a sun fixed at the rocker's
     pivot: the shrunk case the family ``driven_arm`` found, where the planet's angle jumped by 1.6 turns as the

@@ -16,8 +16,8 @@ from graphkin.cycle import joint_force_index, size_flywheel, sweep
 from graphkin.cycle.sweep import SWITCH
 from graphkin.cycle.turn import weights
 from graphkin.errors import GraphkinError, GraphkinWarning
-from graphkin.model import Driver, Link, Mechanism, PointForce, Revolute
-from graphkin.problem import Problem
+from graphkin.model import PointForce
+from tests.strategies import toggle_fourbar
 
 DEG = math.pi / 180
 
@@ -270,26 +270,11 @@ def test_flywheel_of_a_harmonic_torque():
 # -- joint-force index ----------------------------------------------------------------------------
 
 
-def _toggle_fourbar(theta):
-    """Triple rocker: frame 1.0, crank 0.4, coupler 0.6, rocker 0.6 (m). Coupler and rocker fold into
-    line (|AB0| = 1.2) at cos θ = (1 + 0.16 − 1.44)/0.8 = −0.35: the crank cannot pass that toggle."""
-    links = [
-        Link(1, {"A0": (0, 0), "B0": (1.0, 0)}),
-        Link(2, {"A0": (0, 0), "A": (0.4, 0)}, mass=1.0, I_G=0.01),
-        Link(3, {"A": (0, 0), "B": (0.6, 0)}, mass=1.0, G=(0.3, 0), I_G=0.03),
-        Link(4, {"B0": (0, 0), "B": (0.6, 0), "P": (0.3, 0)}, mass=1.0, G=(0.3, 0), I_G=0.03),
-    ]
-    joints = [Revolute((1, 2), "A0"), Revolute((2, 3), "A"), Revolute((3, 4), "B"), Revolute((1, 4), "B0")]
-    mech = Mechanism(links, joints, Driver(2), [PointForce(4, "P", (0.0, -100.0))])
-    n = len(theta)
-    return Problem("toggle four-bar", mech, np.asarray(theta), np.full(n, 10.0), np.zeros(n))
-
-
 def test_joint_force_index_toward_a_toggle():
     t = math.acos(-0.35)
     approach = t - np.radians([30, 10, 3, 1, 0.3, 0.1, 0.01, 1e-4])
     theta = np.concatenate([approach, [t, t + DEG]])
-    jfi = joint_force_index(_toggle_fourbar(theta))
+    jfi = joint_force_index(toggle_fourbar(theta))
     assert jfi.units == ""
     assert all(link.mass == 0 and link.I_G == 0 for link in jfi.analysis.mechanism.links)  # static
     idx = jfi.index[:8]

@@ -452,19 +452,25 @@ def test_lesson_in_voila(voila_page, voila, workdir, timings, lesson):
     page.goto("about:blank")  # Voilà shuts the page's kernel down
 
 
-@pytest.mark.parametrize("problem", ["strip_cutter", "double_slider"])  # a crank (degrees) and a slider (mm)
-def test_graphkin_explore_serves_the_explorer_and_stops_on_ctrl_c(browser, timings, problem):
-    """`graphkin explore PROBLEM`: one URL line, a working explorer, Ctrl-C → one line, exit 130, Voilà gone."""
-    # Ctrl-C as at a terminal. A shell without job control starts a background job (`.ci/run &`) with SIGINT
-    # ignored, and a child inherits that: Python then never raises KeyboardInterrupt and the explorer runs on.
-    # With a handler of the test's own, the child starts with the default disposition (exec resets a handler;
-    # preexec_fn is not safe beside Playwright's threads).
+def _explore(problem: str, *options: str) -> subprocess.Popen:
+    """`graphkin explore PROBLEM --no-browser OPTIONS` started as a child that a Ctrl-C (SIGINT) reaches.
+
+    Ctrl-C as at a terminal. A shell without job control starts a background job (`.ci/run &`) with SIGINT
+    ignored, and a child inherits that: Python then never raises KeyboardInterrupt and the explorer runs on. With a
+    handler of the test's own, the child starts with the default disposition (exec resets a handler; preexec_fn is
+    not safe beside Playwright's threads)."""
     before = signal.signal(signal.SIGINT, signal.default_int_handler)
     try:
-        proc = subprocess.Popen([sys.executable, "-m", "graphkin", "explore", problem, "--no-browser"],
+        return subprocess.Popen([sys.executable, "-m", "graphkin", "explore", problem, "--no-browser", *options],
                                 stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=ROOT)
     finally:
         signal.signal(signal.SIGINT, before)
+
+
+@pytest.mark.parametrize("problem", ["strip_cutter", "double_slider"])  # a crank (degrees) and a slider (mm)
+def test_graphkin_explore_serves_the_explorer_and_stops_on_ctrl_c(browser, timings, problem):
+    """`graphkin explore PROBLEM`: one URL line, a working explorer, Ctrl-C → one line, exit 130, Voilà gone."""
+    proc = _explore(problem)
     try:
         line = proc.stdout.readline()
         url = re.search(r"http://127\.0\.0\.1:\d+/", line)
@@ -494,13 +500,7 @@ def test_graphkin_explore_serves_the_explorer_and_stops_on_ctrl_c(browser, timin
 def test_graphkin_explore_serves_under_a_hub_proxy_s_path(browser):
     """`--base-url /user/NAME/proxy/absolute/{port}/`: the page, its widgets' assets and its kernel all under the
     path a JupyterHub's jupyter-server-proxy forwards whole (docs/hub.md); nothing answers at the root."""
-    before = signal.signal(signal.SIGINT, signal.default_int_handler)
-    try:
-        proc = subprocess.Popen([sys.executable, "-m", "graphkin", "explore", "strip_cutter", "--no-browser",
-                                 "--base-url", "/user/ada/proxy/absolute/{port}/"],
-                                stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=ROOT)
-    finally:
-        signal.signal(signal.SIGINT, before)
+    proc = _explore("strip_cutter", "--base-url", "/user/ada/proxy/absolute/{port}/")
     try:
         line = proc.stdout.readline()
         url = re.search(r"http://127\.0\.0\.1:(\d+)/user/ada/proxy/absolute/(\d+)/", line)

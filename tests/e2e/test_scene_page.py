@@ -18,7 +18,7 @@ import pytest
 from graphkin import catalog
 from graphkin.cli import main
 from graphkin.scene import scene, scene_json, write_page
-from tests.scene.test_scene import _toggle_fourbar
+from tests.strategies import toggle_fourbar
 
 READ_BACK = """() => {
   const svg = document.querySelector("svg.gk-mechanism");
@@ -260,7 +260,7 @@ def test_keys_drag_play_toggles_and_hover_at_screen_rate(browser, tmp_path, timi
 
 def test_a_position_the_linkage_cannot_reach_shows_why(browser, tmp_path):
     path = tmp_path / "toggle.html"
-    s = scene(_toggle_fourbar(), 36)
+    s = scene(toggle_fourbar(), 36)
     write_page(s, path)
     i = next(e["index"] for e in s["invalid"])
     context, page, asked, errors = _open(browser, path)

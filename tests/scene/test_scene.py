@@ -14,10 +14,9 @@ import numpy as np
 import pytest
 
 import graphkin as gk
-from graphkin.model import Driver, Link, Mechanism, PointForce, Revolute
-from graphkin.problem import Problem
 from graphkin.scene import PRECISION, SCHEMA, scene, scene_json
 from graphkin.scene import polygons as scene_polygons
+from tests.strategies import toggle_fourbar
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -96,21 +95,8 @@ def test_polygons_close_and_their_sides_are_the_constructions(cutter):
         np.testing.assert_allclose(V[-1], V[0], rtol=0, atol=1e-8 * top)  # each polygon closes
 
 
-def _toggle_fourbar():
-    """A triple rocker (frame 1.0, crank 0.4, coupler 0.6, rocker 0.6 m): the crank cannot pass cos θ = −0.35."""
-    links = [
-        Link(1, {"A0": (0, 0), "B0": (1.0, 0)}),
-        Link(2, {"A0": (0, 0), "A": (0.4, 0)}, mass=1.0, I_G=0.01),
-        Link(3, {"A": (0, 0), "B": (0.6, 0)}, mass=1.0, G=(0.3, 0), I_G=0.03),
-        Link(4, {"B0": (0, 0), "B": (0.6, 0), "P": (0.3, 0)}, mass=1.0, G=(0.3, 0), I_G=0.03),
-    ]
-    joints = [Revolute((1, 2), "A0"), Revolute((2, 3), "A"), Revolute((3, 4), "B"), Revolute((1, 4), "B0")]
-    mech = Mechanism(links, joints, Driver(2), [PointForce(4, "P", (0.0, -100.0))])
-    return Problem("toggle four-bar", mech, np.zeros(1), np.full(1, 10.0), np.zeros(1))
-
-
 def test_positions_the_linkage_cannot_reach_are_marked_with_their_reason():
-    s = _read(_toggle_fourbar(), 36)
+    s = _read(toggle_fourbar(), 36)
     theta = np.asarray(s["input"]["values"])
     expected = np.cos(theta) < -0.35  # beyond the toggle
     assert expected.any() and (~expected).any()
