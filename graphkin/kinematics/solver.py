@@ -224,9 +224,9 @@ def _steps(plan: Plan, mech: Mechanism) -> list:
             else:
                 sigma = mech.assembly.get(g.key, 1)
                 steps.append((g.type == "RRR" and _rrr_step(plan, g, sigma, index)) or _dyad_step(g, sigma))
+        # The branches first, the steps last: another thread that finds the steps finds their branches too.
+        plan.compiled["branches"] = _branches(plan, mech, steps)
         plan.compiled["kinematics"] = steps
-        plan.compiled["branches"] = {}  # the sample below runs on np.angle's branch
-        plan.compiled["branches"] = _branches(plan, mech)
     return steps
 
 
@@ -241,7 +241,7 @@ SAMPLE = 721
 """Positions over a turn of the crank (half a degree apart) from which :func:`_branches` finds each arm's branch."""
 
 
-def _branches(plan: Plan, mech: Mechanism) -> dict:
+def _branches(plan: Plan, mech: Mechanism, steps: list) -> dict:
     """For each link placed by a dyad that a gear turns with (its carrier, or its mate): its branch (m, c).
 
     m is the turns it makes per turn of the crank (0 when a slider drives), c the middle of the range of the rest
@@ -261,7 +261,8 @@ def _branches(plan: Plan, mech: Mechanism) -> dict:
                     for p1 in k.points.values()] + [1e-3])
         q = np.linspace(-4 * size, 4 * size, 8 * SAMPLE)
     with np.errstate(all="ignore"):
-        st, valid = run(plan, mech, q, np.ones_like(q), np.zeros_like(q))
+        # The sample runs on np.angle's branch (none found yet).
+        st, valid = run(plan, mech, q, np.ones_like(q), np.zeros_like(q), compiled=(steps, {}))
     out = {}
     for link in links:
         theta = np.unwrap(st.angle(link)[valid])
@@ -283,16 +284,20 @@ memory a solve needs beyond its result is that of one chunk (a few MB)."""
 _FIELDS = ("theta", "omega", "alpha", "e", "O", "v_O", "a_O")
 
 
-def run(plan: Plan, mech: Mechanism, q, q_dot, q_ddot, rates=(None, None), *, angles: bool = True):
+def run(plan: Plan, mech: Mechanism, q, q_dot, q_ddot, rates=(None, None), *, angles: bool = True,
+        compiled=None):
     """Every step over one batch of positions: the filled state and where it is valid.
 
     ``rates`` are the input speed and acceleration as numbers when they are the same at every position
-    (:func:`constant`), else None.
+    (:func:`constant`), else None. ``compiled``: the steps and branches to run, while they are being compiled.
     """
-    steps = _steps(plan, mech)
+    if compiled is None:
+        steps = _steps(plan, mech)
+        compiled = steps, plan.compiled["branches"]
+    steps, branches = compiled
     st = State(mech, len(q), plan)
     st.q, st.q_dot, st.q_ddot = q, q_dot, q_ddot
-    st.branches = plan.compiled["branches"]
+    st.branches = branches
     # Constant input rates (the usual case) make the crank's factors numbers instead of arrays.
     st.w0, st.al0 = rates
     for step in steps:
