@@ -43,6 +43,10 @@ COMMANDS = {"list": listing, "solve": solve, "cycle": cycle, "study": study, "ex
 """Each command and the module that carries it out, in the order ``graphkin --help`` lists them."""
 
 
+INTERRUPTED = 130
+"""The exit code of a command ended by Ctrl-C (128 + SIGINT, as a shell reports it)."""
+
+
 def parser() -> argparse.ArgumentParser:
     """The ``graphkin`` command's parser, with every command's subparser."""
     p = Parser(prog="graphkin", description="Kinetostatics of planar machinery.")
@@ -61,7 +65,7 @@ def main(argv=None) -> int:
         return exc.code if isinstance(exc.code, int) else 2
     except KeyboardInterrupt:
         print("graphkin: interrupted", file=sys.stderr)
-        return 130
+        return INTERRUPTED
     single_threaded_blas()  # after parsing: --help and a mistyped option need no numpy
     one_line_warnings()
     try:
@@ -76,7 +80,7 @@ def main(argv=None) -> int:
         # Every file is written to a temporary file and moved into place, so Ctrl-C leaves none half-written;
         # a batch adds which files it had written (graphkin.cli.solve).
         print("graphkin: interrupted" + (f": {exc.args[0]}" if exc.args and exc.args[0] else ""), file=sys.stderr)
-        return 130
+        return INTERRUPTED
     except OSError as exc:
         # A write that passed the checks made before the work (a full disk, a folder removed meanwhile).
         where = f"{exc.filename}: " if exc.filename else ""
@@ -93,6 +97,12 @@ def command():
     would print a KeyboardInterrupt traceback and the exit code would stay 0, so
     from the moment the command is done a Ctrl-C ends the process at once.
     Every file is already whole by then (written to a temporary file and moved).
+
+    An interrupted command ends the process at once too. CPython (3.11) marks
+    a KeyboardInterrupt raised inside ``exec`` of a string (dataclasses build
+    their methods so, while matplotlib is imported) as unhandled, even when
+    :func:`main` caught it, and at exit would kill the process by SIGINT
+    (exit -2) instead of returning 130.
     """
     ours = signal.getsignal(signal.SIGINT) is signal.default_int_handler  # a background job's SIG_IGN is kept
     try:
@@ -107,6 +117,8 @@ def command():
     if code is None:
         _interrupted_late()
     _flush()
+    if code == INTERRUPTED:
+        os._exit(code)
     sys.exit(code)
 
 
@@ -118,7 +130,7 @@ def _interrupted_late(signum=None, frame=None):
         os.write(2, b"graphkin: interrupted\n")
     except OSError:
         pass
-    os._exit(130)
+    os._exit(INTERRUPTED)
 
 
 def _flush():
