@@ -457,8 +457,7 @@ export function draw(root, base, options = {}) {
   view.scene = scene;
 
   // Each input event is timed from the event (its timeStamp) to the SVG updated (view.timings, ms) and to the next
-  // frame the browser draws (view.frames); view.work is the drawing alone, from the handler's start. (Chromium holds
-  // pointer moves back to the next frame, so a drag's event-to-update time includes up to a frame of waiting.)
+  // frame the browser draws (view.frames); view.work is the drawing alone, from the handler's start.
   view.frames = [];
   view.work = [];
   function step(event, i) {
@@ -554,7 +553,40 @@ export function draw(root, base, options = {}) {
     }
     return best;
   }
+  //
+  // A move is drawn when it comes. Chromium holds "pointermove" back to the start of the next frame (a drag's move
+  // waited 5–15 ms there before its handler ran); "pointerrawupdate" comes at once, where the browser has it
+  // (Chromium, in a page from disk, https or localhost). A mouse may report far more moves than there are frames:
+  // the moves of one frame are drawn at once until they have taken BUDGET ms of it, and any later one at the frame.
+  const BUDGET = 6;
+  const MOVE = "onpointerrawupdate" in window ? "pointerrawupdate" : "pointermove";
   let dragging = false;
+  let spent = 0; // ms of drawing moves since the last frame
+  let held = null; // the last move held for the frame
+  let counting = false;
+  function move(event) {
+    const k = nearest(pointer(event));
+    if (k === view.index && held === null) return; // the pointer is still nearest the position shown
+    if (!counting) {
+      counting = true;
+      requestAnimationFrame(() => {
+        counting = false;
+        spent = 0;
+        if (held !== null) {
+          const [e, j] = held;
+          held = null;
+          step(e, j);
+        }
+      });
+    }
+    if (spent >= BUDGET) {
+      held = [event, k];
+      return;
+    }
+    const t = performance.now();
+    step(event, k);
+    spent += performance.now() - t;
+  }
   mech.svg.addEventListener("pointerdown", (e) => {
     toDrawing = mech.svg.getScreenCTM().inverse();
     const p = pointer(e);
@@ -564,7 +596,7 @@ export function draw(root, base, options = {}) {
     mech.svg.setPointerCapture(e.pointerId);
     e.preventDefault();
   });
-  mech.svg.addEventListener("pointermove", (e) => { if (dragging) step(e, nearest(pointer(e))); });
+  mech.svg.addEventListener(MOVE, (e) => { if (dragging) move(e); });
   mech.svg.addEventListener("pointerup", () => { dragging = false; });
 
   // Hovering a force reads it in polar form.
