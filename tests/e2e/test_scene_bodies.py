@@ -204,3 +204,24 @@ def test_play_runs_at_the_chosen_fraction_of_the_true_speed(browser, tmp_path):
         assert errors == []
     finally:
         context.close()
+
+
+def test_each_svgs_arrowheads_are_its_own(browser, tmp_path):
+    """An id is the document's: every polygon's and free body's SVG drew the mechanism's arrowheads, at the
+    mechanism's size, while each had markers of the same ids. Each arrow's head is now a marker of its own SVG."""
+    path = tmp_path / "cutter.html"
+    write_page(scene(catalog.load("strip_cutter"), 12, motion=True), path)
+    context, page, asked, errors = _open(browser, path)
+    try:
+        ids = page.evaluate("[...document.querySelectorAll('marker')].map((m) => m.id)")
+        assert len(ids) == len(set(ids))
+        foreign = page.evaluate("""() => [...document.querySelectorAll('line[marker-end]')].filter((l) => {
+          const id = l.getAttribute('marker-end').slice(5, -1);
+          return l.ownerSVGElement.querySelector(`marker[id="${id}"]`) === null;
+        }).length""")
+        assert foreign == 0
+        assert page.locator("svg[data-body]").count() and page.locator("svg[data-motion]").count()
+        assert errors == []
+    finally:
+        context.close()
+    assert asked == [path.as_uri()]
