@@ -225,3 +225,27 @@ def test_each_svgs_arrowheads_are_its_own(browser, tmp_path):
     finally:
         context.close()
     assert asked == [path.as_uri()]
+
+
+def test_tapping_a_force_reads_it_on_a_touch_screen(browser, tmp_path):
+    from tests.e2e.test_scene_page import UNCOVERED
+
+    path = tmp_path / "cutter.html"
+    write_page(scene(catalog.load("strip_cutter"), 36), path)
+    context = browser.new_context(offline=True, has_touch=True, viewport={"width": 1300, "height": 1000})
+    context.route("**/*", lambda route: route.continue_() if route.request.url == path.as_uri() else route.abort())
+    page = context.new_page()
+    errors = []
+    page.on("pageerror", lambda e: errors.append(str(e)))
+    try:
+        page.goto(path.as_uri())
+        page.wait_for_function("window.graphkin && window.graphkin.view")
+        s = _scene_of(page)
+        name, x, y = page.evaluate(UNCOVERED)
+        page.touchscreen.tap(x, y)
+        F = _xy(next(f for f in s["forces"] if f["name"] == name)["analytical"], 0)
+        text = page.locator(".gk-readout").text_content()
+        assert text.startswith(f"{name} = ") and f"{np.hypot(*F):.4g}" in text.replace("−", "-")
+        assert errors == []
+    finally:
+        context.close()
