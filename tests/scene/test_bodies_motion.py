@@ -125,3 +125,16 @@ def test_the_book_units_are_the_report_systems():
         assert b[kind] == {"unit": us.symbol(kind), "scale": us.scales[kind]}
     assert b["force"]["scale"] == pytest.approx(1 / 4.4482216152605)
     assert SI.scales["force"] == 1.0
+
+
+def test_the_notebook_widget_asks_for_the_motion_polygons_and_the_book_units():
+    pytest.importorskip("anywidget")
+    from graphkin.widgets.browser import BrowserExplorer
+
+    us = unit_system("US")
+    ex = BrowserExplorer(gk.load("strip_cutter"), 12, polygons=False, motion=True, units=us)
+    sent = json.loads(ex.widget.scene)
+    assert sent["motion"] is not None and sent["book"]["name"] == "US"
+    ex.set("mass.3", 4.0)  # a new scene, asked for as the first
+    sent = json.loads(ex.widget.scene)
+    assert sent["motion"] is not None and sent["book"]["force"]["unit"] == us.symbol("force")
