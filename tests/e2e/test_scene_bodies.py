@@ -29,7 +29,7 @@ READ_MORE = """() => {
         g.style.display === "none" ? null : line(g)])};
   }
   for (const svg of document.querySelectorAll("svg[data-motion]")) {
-    if (svg.parentNode.style.display === "none") continue;
+    if (svg.parentNode.style.display === "none" || svg.closest(".gk-motions").style.display === "none") continue;
     out.motion[svg.getAttribute("data-motion")] = [...svg.querySelectorAll("g.gk-arrow")].map(line);
   }
   return out;
@@ -76,6 +76,9 @@ def check_more(drawn: dict, s: dict, i: int, bodies: bool):
                 want = np.concatenate([_svg(tail), _svg(tail + F / scale)])
                 np.testing.assert_allclose(line, want, rtol=0, atol=tol, err_msg=f"{name} on link {b['link']}")
     m = s["motion"]
+    if m is None:
+        assert drawn["motion"] == {}
+        return
     assert set(drawn["motion"]) == ({str(k) for k in range(len(m["polygons"]))} if m["valid"][i] else set())
     for k, p in enumerate(m["polygons"]):
         if not m["valid"][i]:
@@ -249,3 +252,31 @@ def test_tapping_a_force_reads_it_on_a_touch_screen(browser, tmp_path):
         assert errors == []
     finally:
         context.close()
+
+
+def test_at_another_speed_the_free_bodies_follow_and_the_motion_polygons_go(browser, tmp_path):
+    """The free bodies refer to the forces, so they are drawn at the speed typed; the motion polygons are presolved
+    at the file's speed only, and each position is reached at its time × ω₀/ω."""
+    path = tmp_path / "cutter.html"
+    write_page(scene(catalog.load("strip_cutter"), 36, motion=True), path)
+    context, page, asked, errors = _open(browser, path)
+    try:
+        s = _scene_of(page)
+        page.check("[data-toggle=bodies]")
+        box = page.locator("[data-do=rate]")
+        box.fill(repr(float(box.input_value()) * 1.5))
+        box.dispatch_event("change")
+        live = page.evaluate("window.graphkin.view.scene")
+        assert live["motion"] is None and "motion polygons" in page.locator("[data-do=rate-note]").text_content()
+        np.testing.assert_allclose(live["input"]["period"], s["input"]["period"] / 1.5, rtol=1e-12)
+        np.testing.assert_allclose(live["input"]["time"], np.array(s["input"]["time"]) / 1.5, rtol=1e-12)
+        for i in (4, 20):
+            page.locator("[data-do=position]").fill(str(i))
+            check_more(page.evaluate(READ_MORE), live, i, bodies=True)
+        # The live forces are not the file's: the free bodies moved with them.
+        assert live["forces"][0]["analytical"] != s["forces"][0]["analytical"]
+        assert page.locator(".gk-motions").is_hidden()
+        assert errors == []
+    finally:
+        context.close()
+    assert asked == [path.as_uri()]
