@@ -6,16 +6,27 @@ MathML namespaces itself). The equations are MathML, which browsers draw
 natively (Chromium from version 109, Firefox, Safari), converted from the
 LaTeX writer's output by ``latex2mathml``; a reader without MathML support
 still sees the symbols and digits in order.
+
+A handout whose document carries a scene (``doc["scene"]``: :func:`graphkin.scene.scene` of its problem, docs/json.md)
+has one more figure: the mechanism a student moves, drawn by the browser from that presolved cycle, after the first
+figure printed to scale and at the position worked out. Its drawing module and the scene's JSON are inlined (the one
+script of the page, and it fetches nothing): the file still works from disk with the network off. Printed, it is
+left out — paper cannot move::
+
+    doc = handout.build("strip_cutter")
+    handout.write({**doc, "scene": gk.scene.scene(gk.load("strip_cutter"))}, "cutter.html")
 """
 
 from __future__ import annotations
 
 import html as _html
+import math
 import re
 
 from graphkin.errors import GraphkinError
 from graphkin.handout import maths as M
 from graphkin.handout.figures import inline_svg
+from graphkin.scene.page import asset, module, scene_json
 
 CSS = """
 body { font-family: "Libertinus Serif", "Linux Libertine", Georgia, "DejaVu Serif", serif; max-width: 52rem;
@@ -56,7 +67,9 @@ figcaption { font-size: 0.9rem; text-align: left; margin-top: 0.3rem; }
                .pagebreak { break-after: page; }
                .space, figure, .eq, table, .boxed, li { break-inside: avoid; }
                h2, h3, h4, p.keep { break-after: avoid; }
-               .eq { overflow: visible; } }
+               .eq { overflow: visible; } figure.live { display: none; } }
+figure.live { text-align: left; border-top: 1px solid #ccc; padding-top: 0.5rem; }
+figure.live .gk-scene:focus { outline: 1px dotted #999; }
 """
 
 
@@ -151,12 +164,50 @@ def _sized(svg: str, height: float) -> str:
     return svg.replace("<svg ", f'<svg style="max-height: {height:g}mm; width: auto; max-width: 100%" ', 1)
 
 
+def _nearest(scene: dict, q: float) -> int:
+    """The scene's position nearest the input ``q`` (a crank's angle the short way round)."""
+    def gap(x):
+        d = x - q
+        return abs(math.remainder(d, 2 * math.pi)) if scene["input"]["name"] == "theta" else abs(d)
+
+    return min(range(scene["n"]), key=lambda k: gap(scene["input"]["values"][k]))
+
+
+def _live(doc: dict, label: str) -> str:
+    """The figure a student moves: the scene drawn by the browser, shown first at the position worked out."""
+    scene = doc["scene"]
+    code = module()
+    if "</script" in code.lower():  # pragma: no cover - the shipped module is written without one
+        raise ValueError("scene.js must not contain '</script'")
+    start = _nearest(scene, doc["worked"][0]["q"]) if doc.get("worked") else 0
+    data = scene_json(scene).replace("<", "\\u003c")  # no string of the scene can close its element
+    after = f"{label}, moving" if label else "The mechanism, moving"
+    caption = (f"{after}: its whole cycle, solved once. Drag the crank, or click the figure and use the arrow keys; "
+               "play, and show or hide the forces, the polygons and the free bodies.")
+    return (f'<figure class="live"><div id="graphkin" tabindex="0"></div><figcaption>{_html.escape(caption)}'
+            f'</figcaption></figure>\n<script type="application/json" id="graphkin-scene">{data}</script>\n'
+            f'<script type="module">\n{code}\nconst scene = JSON.parse(document.getElementById("graphkin-scene")'
+            f'.textContent);\nconst root = document.getElementById("graphkin");\n'
+            f"window.graphkin = {{ scene, view: draw(root, scene, {{ keys: root }}) }};\n"
+            f"window.graphkin.view.show({start});\n</script>")
+
+
 def render(doc: dict) -> str:
-    """The handout as one HTML document (a str)."""
+    """The handout as one HTML document (a str); with ``doc["scene"]``, the figure a student moves as well."""
     esc = _html.escape
-    body = "\n".join(_block(b) for b in doc["blocks"])
+    parts = [_block(b) for b in doc["blocks"]]
+    if doc.get("scene"):
+        # After the first figure printed to scale (the mechanism), else at the end.
+        at = next((k for k, b in enumerate(doc["blocks"]) if b["kind"] == "figure" and b["pictures"]
+                   and all(p.natural for p in b["pictures"])), None)
+        if at is None:
+            parts.append(_live(doc, ""))
+        else:
+            parts.insert(at + 1, _live(doc, doc["blocks"][at]["label"]))
+    body = "\n".join(parts)
+    style = asset("scene.css") if doc.get("scene") else ""
     return (f'<!DOCTYPE html>\n<html lang="en">\n<head>\n<meta charset="utf-8">\n'
             f'<meta name="viewport" content="width=device-width, initial-scale=1">\n'
-            f"<title>{esc(doc['title'])} — {esc(doc['subtitle'])}</title>\n<style>{CSS}</style>\n</head>\n<body>\n"
+            f"<title>{esc(doc['title'])} — {esc(doc['subtitle'])}</title>\n<style>{CSS}{style}</style>\n</head>\n<body>\n"
             f"<header><h1>{esc(doc['title'])}</h1><div>{esc(doc['subtitle'])}</div>"
             f"<div class=\"source\">{esc(doc['source'])}</div></header>\n<main>\n{body}\n</main>\n</body>\n</html>\n")

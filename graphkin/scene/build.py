@@ -2,10 +2,11 @@
 
 The whole cycle is solved once, vectorised (:func:`graphkin.cycle.sweep`), and every number a drawing of it needs is
 put in arrays over the positions: each link's named points, every joint force at its point by both routes, each
-external load, each inertia resultant on its offset line, the driving effort, and the graphical route's force
-polygons (:mod:`graphkin.scene.polygons`). The browser draws these and computes nothing of the mechanics: a
-drawing that scrubs through a cycle is a lookup. The layout is docs/json.md's "scene"; its version is
-:data:`SCHEMA`.
+external load, each inertia resultant on its offset line, the driving effort, each moving link's free body
+(:mod:`graphkin.scene.bodies`), the graphical route's force polygons (:mod:`graphkin.scene.polygons`) and, when
+asked, the velocity and acceleration polygons (:mod:`graphkin.scene.motion`). The browser draws these and computes
+nothing of the mechanics: a drawing that scrubs through a cycle is a lookup. The layout is docs/json.md's "scene";
+its version is :data:`SCHEMA`.
 
 A vector over the positions is one flat list ``[x0, y0, x1, y1, …]`` (2n numbers), a scalar one list of n, each
 ``null`` where the position has no value (the linkage cannot reach it, or the graphical route was not built or
@@ -27,11 +28,14 @@ from graphkin.cycle import sweep
 from graphkin.graphical.construction import nice_scale
 from graphkin.graphical.guard import mechanism_size
 from graphkin.model import GearMesh, PointForce, Prismatic, Revolute
+from graphkin.scene.bodies import free_bodies
 from graphkin.scene.labels import label
+from graphkin.scene.motion import motion_polygons
 from graphkin.scene.polygons import force_polygons
 from graphkin.scene.speed import PRESOLVED, linearity, parts
+from graphkin.units.systems import SI
 
-SCHEMA = 1
+SCHEMA = 2
 """The version of the scene's layout (docs/json.md): raised whenever a reader of an older scene would misread it."""
 
 PRECISION = 1e-9
@@ -42,7 +46,7 @@ ARROW = 0.35
 that rounded up to 1, 2 or 5 times a power of ten)."""
 
 
-def scene(problem, n: int = 360, *, polygons: bool = True) -> dict:
+def scene(problem, n: int = 360, *, polygons: bool = True, motion: bool = False, units=None) -> dict:
     """The problem over its cycle as plain data a browser draws (docs/json.md, "scene").
 
     Parameters
@@ -56,6 +60,11 @@ def scene(problem, n: int = 360, *, polygons: bool = True) -> dict:
         Build the graphical route at every position: its joint forces beside the analytical ones, and each
         link's force polygon. The costly part (~1.5 ms a position for the strip cutter); without it the scene
         holds the analytical route only.
+    motion : bool
+        Build the velocity and acceleration polygons at every position (~0.3–0.8 ms a position).
+    units : graphkin.units.systems.UnitSystem, optional
+        The book's units, which the page offers beside SI for reading a value (default: graphkin's report units,
+        :data:`graphkin.units.systems.SI`: mm, N, N·m).
 
     Returns
     -------
@@ -67,12 +76,20 @@ def scene(problem, n: int = 360, *, polygons: bool = True) -> dict:
     >>> from graphkin import catalog
     >>> s = scene(catalog.load("strip_cutter"), 36, polygons=False)
     >>> s["schema"], s["n"], s["effort"]["label"], s["speed"]["kind"]
-    (1, 40, {'symbol': 'T', 'sub': '12', 'mark': '', 'unit': 'N*m'}, 'superpose')
+    (2, 40, {'symbol': 'T', 'sub': '12', 'mark': '', 'unit': 'N*m'}, 'superpose')
     """
     problem = drawn(problem)
-    out = _at_speed(problem, n, polygons)
+    out = _at_speed(problem, n, polygons, motion)
     out["speed"] = _speed(problem, n, out)
+    out["book"] = _book(units)
     return out
+
+
+def _book(units) -> dict:
+    """The scene's ``book`` field: the units a reader may switch to, each kind's symbol and its factor from SI."""
+    u = SI if units is None else units
+    return {"name": u.name, **{kind: {"unit": u.symbol(kind), "scale": u.scales[kind]}
+                               for kind in ("length", "force", "torque", "velocity", "acceleration")}}
 
 
 def drawn(problem):
@@ -96,7 +113,7 @@ def _cycle(problem, n):
     return (sweep(problem, n) if problem.mechanism.driver.crank else sweep(problem)).analysis
 
 
-def _at_speed(problem, n: int, polygons: bool) -> dict:
+def _at_speed(problem, n: int, polygons: bool, motion: bool = False) -> dict:
     """The scene at the problem's own input rate, without its ``speed`` field."""
     mech = problem.mechanism
     result = _cycle(problem, n)
@@ -114,13 +131,16 @@ def _at_speed(problem, n: int, polygons: bool) -> dict:
     force = _Rounder(biggest)
     scale = nice_scale(biggest, ARROW * size)  # N per metre of the drawing
     graphical = force_polygons(result, valid) if polygons else None
+    bodies = free_bodies(mech, links, forces, loads, inertias, scale)
+    moving = motion_polygons(kin, valid) if motion and not kin.static else None
     gears = _gears(mech)
     out = {
         "schema": SCHEMA,
         "problem": problem.name,
         "title": problem.title,
         "source": problem.source,
-        "units": {"length": "m", "angle": "rad", "force": "N", "torque": "N*m", "time": "s"},
+        "units": {"length": "m", "angle": "rad", "force": "N", "torque": "N*m", "time": "s", "velocity": "m/s",
+                  "acceleration": "m/s^2"},
         "precision": PRECISION,
         "n": int(result.n),
         "input": _input(kin, mech, length),
@@ -138,8 +158,11 @@ def _at_speed(problem, n: int, polygons: bool) -> dict:
         "loads": [],
         "inertia": [],
         "effort": _effort(result, valid, force, size),
+        "free_bodies": [{**body, "box": length.scalars(body["box"])} for body in bodies],
         "graphical": None,
+        "motion": None,
         "speed": None,
+        "book": None,
     }
     for f in forces:
         key = f.pop("key")
@@ -162,7 +185,17 @@ def _at_speed(problem, n: int, polygons: bool) -> dict:
         out["effort"]["graphical"] = force.torque(graphical.effort, size) if mech.driver.crank else \
             force.scalars(graphical.effort)
         out["graphical"] = graphical.data(force)
+    if moving is not None:
+        out["motion"] = _motion(moving)
     return out
+
+
+def _motion(moving: dict) -> dict:
+    """The motion polygons rounded, each kind at the scale of its largest vector."""
+    for p in moving["polygons"]:
+        V = p["vectors"]
+        p["vectors"] = _Rounder(float(np.nanmax(np.abs(V))) if np.isfinite(V).any() else 0.0)(V)
+    return {**moving, "valid": moving["valid"].astype(int).tolist()}
 
 
 class _Rounder:
@@ -327,7 +360,19 @@ def _input(kin, mech, length) -> dict:
     crank = mech.driver.crank
     values = np.round(kin.q, 12).tolist() if crank else length.scalars(kin.q)
     return {"name": "theta" if crank else "s", "label": label(mech.driver.input_symbol, "rad" if crank else "m"),
-            "values": values, "rate": np.asarray(kin.q_dot, float).tolist()}
+            "values": values, "rate": np.asarray(kin.q_dot, float).tolist(), **_time(kin, crank)}
+
+
+def _time(kin, crank: bool) -> dict:
+    """When each position is reached [s], from the first, over one turn of ``period`` = 2π/|ω| [s] (null where
+    the crank does not turn at one constant speed: a static problem, a slider-driven one, a varying ω)."""
+    rate = np.unique(np.asarray(kin.q_dot, float))
+    if not crank or rate.size != 1 or rate[0] == 0:
+        return {"time": None, "period": None}
+    omega = float(rate[0])
+    period = 2 * math.pi / abs(omega)
+    t = np.mod((np.asarray(kin.q, float) - float(kin.q[0])) / omega, period)
+    return {"time": np.round(t, 15).tolist(), "period": period}
 
 
 def _driver(mech, length) -> dict:

@@ -52,6 +52,10 @@ class BrowserExplorer:
         Crank angles over one turn (:func:`graphkin.scene.scene`).
     polygons : bool
         Build the graphical route and its force polygons at every position.
+    motion : bool
+        Build the velocity and acceleration polygons at every position.
+    units : graphkin.units.systems.UnitSystem, optional
+        The book's units, offered beside SI for reading a value (:func:`graphkin.scene.scene`).
 
     Attributes
     ----------
@@ -61,8 +65,8 @@ class BrowserExplorer:
         The scene drawn (docs/json.md).
     """
 
-    def __init__(self, problem, n: int = 360, polygons: bool = True):
-        self.n, self.polygons = n, polygons
+    def __init__(self, problem, n: int = 360, polygons: bool = True, motion: bool = False, units=None):
+        self.n, self.polygons, self.motion, self.units = n, polygons, motion, units
         self.widget = scene_widget()()
         self.problem = problem
 
@@ -73,7 +77,7 @@ class BrowserExplorer:
 
     @problem.setter
     def problem(self, problem) -> None:
-        data = scene(problem, self.n, polygons=self.polygons)
+        data = scene(problem, self.n, polygons=self.polygons, motion=self.motion, units=self.units)
         self._problem, self.scene = problem, data
         self.widget.scene = scene_json(data)
 

@@ -280,3 +280,62 @@ def test_a_position_the_linkage_cannot_reach_shows_why(browser, tmp_path):
     finally:
         context.close()
     assert asked == [path.as_uri()]
+
+
+MOVES = """([points, wait]) => new Promise((done) => {
+  // Pointer moves as Chromium reports them at once ("pointerrawupdate"), all in one task: the position drawn after
+  // each, then the one drawn at the next frame.
+  const svg = document.querySelector("svg.gk-mechanism");
+  const view = window.graphkin.view;
+  const M = svg.getScreenCTM();
+  if (wait) {
+    // A drawing this slow: the position's text, which every drawing writes, takes `wait` ms to write.
+    const where = document.querySelector("[data-do=where]");
+    const own = Object.getOwnPropertyDescriptor(Node.prototype, "textContent");
+    Object.defineProperty(where, "textContent", { configurable: true, set(v) {
+      for (const t = performance.now(); performance.now() - t < wait;);
+      own.set.call(this, v);
+    } });
+  }
+  const shown = points.map(([x, y]) => {
+    const p = new DOMPoint(x, -y).matrixTransform(M);
+    svg.dispatchEvent(new PointerEvent("pointerrawupdate", {clientX: p.x, clientY: p.y, pointerId: 1,
+      pointerType: "mouse", bubbles: true}));
+    return view.index;
+  });
+  requestAnimationFrame(() => done([shown, view.index]));
+})"""
+
+
+def test_a_drag_move_is_drawn_when_it_comes_and_a_frame_holds_a_bounded_drawing(browser, tmp_path):
+    """Chromium holds "pointermove" back to the next frame; the drag draws on "pointerrawupdate", in its handler.
+    Moves that come faster than the frames are drawn at once up to a budget of the frame's time, the last of the
+    rest at the frame."""
+    path = tmp_path / "strip_cutter.html"
+    assert main(["explore", "strip_cutter", "-o", str(path), "--n", "36"]) == 0
+    context, page, asked, errors = _open(browser, path)
+    try:
+        s = _scene_of(page)
+        handle = next(lk for lk in s["links"] if lk["number"] == s["driver"]["link"])["points"][s["driver"]["handle"]]
+        start = page.evaluate("window.graphkin.view.index")
+        x, y = page.evaluate(
+            "([x, y]) => { const p = new DOMPoint(x, -y).matrixTransform("
+            "document.querySelector('svg.gk-mechanism').getScreenCTM()); return [p.x, p.y]; }",
+            _xy(handle, start).tolist())
+        page.mouse.move(x, y)
+        page.mouse.down()
+        targets = [(start + k) % s["n"] for k in range(1, 4)]
+        shown, _ = page.evaluate(MOVES, [[_xy(handle, j).tolist() for j in targets], 0])
+        assert shown == targets  # each drawn in its own handler, none waiting for a frame
+        check_drawn(page.evaluate(READ_BACK), s, targets[-1])
+        # Moves whose drawing takes the frame's budget: the first drawn at once, the last at the frame.
+        more = [(targets[-1] + k) % s["n"] for k in range(1, 6)]
+        shown, framed = page.evaluate(MOVES, [[_xy(handle, j).tolist() for j in more], 4])
+        assert shown[:2] == more[:2] and shown[2:] == [more[1]] * 3  # 8 ms spent: the rest held
+        assert framed == more[-1]
+        check_drawn(page.evaluate(READ_BACK), s, more[-1])
+        page.mouse.up()
+        assert errors == []
+    finally:
+        context.close()
+    assert asked == [path.as_uri()]

@@ -2,9 +2,11 @@
 // cycle (docs/json.md, "scene"). One ES module, no library, no network, no build step.
 //
 // It draws what the scene holds and computes nothing of the mechanics: every coordinate drawn is a number of the
-// scene, placed (y up becomes SVG's y down) or scaled by the scene's own force scale. Its only other arithmetic is
-// the reader's: a vector's polar form for the table and the hover read-out, and the nearest presolved position
-// to the pointer when the crank is dragged. A new input speed is speed.js's (the scene's two presolved parts added,
+// scene, placed (y up becomes SVG's y down), scaled by the scene's own force scale, or (a free body's reaction)
+// multiplied by the sign the scene states. Its only other arithmetic is the reader's: a vector's polar form for the
+// table and the hover read-out (in SI or in the book's units, by the factors the scene gives), the nearest presolved
+// position to the pointer when the crank is dragged, and, when playing, the presolved position whose time (the
+// scene's) has come. A new input speed is speed.js's (the scene's two presolved parts added,
 // or a presolved speed picked); this module draws the live copy of the scene it gives.
 //
 //   import { draw } from "./scene.js";
@@ -36,6 +38,10 @@ function html(tag, attrs, parent, text) {
 function svgLabel(label, parent, size) {
   const t = el("text", { "font-size": size, class: "gk-label" }, parent);
   t.appendChild(document.createTextNode(label.symbol));
+  if (label.sup) {
+    const s = el("tspan", { "baseline-shift": "super", "font-size": "70%" }, t);
+    s.textContent = label.sup;
+  }
   if (label.sub) {
     const s = el("tspan", { "baseline-shift": "sub", "font-size": "70%" }, t);
     s.textContent = label.sub;
@@ -49,19 +55,27 @@ function svgLabel(label, parent, size) {
 
 function htmlLabel(label, parent) {
   parent.appendChild(document.createTextNode(label.symbol));
+  if (label.sup) html("sup", {}, parent, label.sup);
   if (label.sub) html("sub", {}, parent, label.sub);
   if (label.mark) parent.appendChild(document.createTextNode(label.mark));
 }
 
-const UNIT = { "N*m": "N·m", N: "N", m: "m", rad: "rad" };
+// Each kind's unit in SI as the page writes it; the book's are the scene's (scene.book), with their factors from SI.
+export const SI = { length: { unit: "m", scale: 1 }, force: { unit: "N", scale: 1 }, torque: { unit: "N·m", scale: 1 },
+  velocity: { unit: "m/s", scale: 1 }, acceleration: { unit: "m/s²", scale: 1 } };
+const KIND = { "N*m": "torque", N: "force", m: "length", "m/s": "velocity", "m/s^2": "acceleration" };
 
-// The polar form as the books print it: 27.04 N ∠ −73.78°.
-export function polar(x, y, unit) {
+// The polar form as the books print it, in the unit u ({unit, scale}: shown = scale × SI): 27.04 N ∠ −73.78°.
+export function polar(x, y, u = SI.force) {
   if (x === null || y === null) return "—";
-  const size = Math.hypot(x, y);
+  const size = u.scale * Math.hypot(x, y);
   const angle = (Math.atan2(y, x) * 180) / Math.PI;
-  return `${number(size)} ${UNIT[unit] || unit} ∠ ${number(angle, 2, true)}°`;
+  return `${number(size)} ${u.unit} ∠ ${number(angle, 2, true)}°`;
 }
+
+// Distinct arrowheads' ids for each SVG of a page (an id is the document's: a second SVG's marker of the same id
+// would draw the first's, at the first's size).
+let heads = 0;
 
 function number(v, decimals, fixed) {
   if (v === null) return "—";
@@ -89,6 +103,7 @@ function shown(node, yes) {
 
 // An arrow drawn tail at `tail` [m] with its vector `F` [N] at `scale` N per metre of drawing.
 function arrow(group, colour, marker, name, label, size) {
+  // `marker` is an id markers() gave.
   const g = el("g", { class: "gk-arrow", "data-name": name }, group);
   const hit = el("line", { stroke: "transparent", "stroke-width": 10, "vector-effect": "non-scaling-stroke" }, g);
   const line = el("line", { stroke: colour, "stroke-width": 2, "vector-effect": "non-scaling-stroke",
@@ -108,12 +123,16 @@ function placeArrow(a, tail, F, scale) {
   a.text.setAttribute("y", -tip[1]);
 }
 
+// Arrowheads of each colour for one SVG, `size` its drawing's size; returns the id of the head of a colour's name.
 function markers(defs, size) {
+  heads += 1;
+  const prefix = `gk${heads}-head-`;
   for (const [name, colour] of Object.entries(INK)) {
-    const m = el("marker", { id: `gk-head-${name}`, viewBox: "0 0 10 10", refX: 9, refY: 5,
+    const m = el("marker", { id: `${prefix}${name}`, viewBox: "0 0 10 10", refX: 9, refY: 5,
       markerUnits: "userSpaceOnUse", markerWidth: 0.035 * size, markerHeight: 0.035 * size, orient: "auto" }, defs);
     el("path", { d: "M0,0 L10,5 L0,10 z", fill: colour }, m);
   }
+  return (name) => `${prefix}${name}`;
 }
 
 // -- the mechanism ------------------------------------------------------------------------------------------------
@@ -122,7 +141,7 @@ function mechanism(view, scene) {
   const size = scene.size;
   const svg = el("svg", { class: "gk-mechanism", viewBox: `${x0} ${-y1} ${x1 - x0} ${y1 - y0}`,
     role: "img", "aria-label": `${scene.title}: the mechanism and its forces` }, view.figures);
-  markers(el("defs", {}, svg), size);
+  const head = markers(el("defs", {}, svg), size);
   const parts = { svg, links: [], forces: [], loads: [], inertia: [], points: [] };
   const bodies = el("g", { class: "gk-links" }, svg);
   const font = 0.04 * size;
@@ -167,17 +186,17 @@ function mechanism(view, scene) {
     "stroke-dasharray": "6 3", "vector-effect": "non-scaling-stroke", "data-guide": guide.slider }, bodies));
   const forces = el("g", { class: "gk-forces" }, svg);
   for (const f of scene.forces) {
-    parts.forces.push({ f, a: arrow(forces, INK.joint, "gk-head-joint", f.name, f.label, font) });
+    parts.forces.push({ f, a: arrow(forces, INK.joint, head("joint"), f.name, f.label, font) });
   }
   const loads = el("g", { class: "gk-loads" }, svg);
   for (const ld of scene.loads.filter((x) => x.force)) {
-    parts.loads.push({ ld, a: arrow(loads, INK.load, "gk-head-load", ld.name, ld.label, font) });
+    parts.loads.push({ ld, a: arrow(loads, INK.load, head("load"), ld.name, ld.label, font) });
   }
   const inertia = el("g", { class: "gk-inertia" }, svg);
   for (const inn of scene.inertia) {
     const offset = el("line", { stroke: INK.inertia, "stroke-width": 1, "stroke-dasharray": "3 3",
       "vector-effect": "non-scaling-stroke" }, inertia);
-    parts.inertia.push({ inn, offset, a: arrow(inertia, INK.inertia, "gk-head-inertia", inn.name, inn.label, font) });
+    parts.inertia.push({ inn, offset, a: arrow(inertia, INK.inertia, head("inertia"), inn.name, inn.label, font) });
   }
   parts.groups = { forces, loads, inertia };
   parts.reason = el("text", { x: x0 + 0.02 * size, y: -y1 + 0.06 * size, "font-size": font, fill: INK.load,
@@ -185,21 +204,30 @@ function mechanism(view, scene) {
   return parts;
 }
 
+// A link's outline (a polygon), a block (a rectangle at its point) or a gear (its pitch circle) at position i.
+function placeLink(shape, link, scene, i) {
+  if (link.outline.length > 1) {
+    shape.setAttribute("points", link.outline.map((name) => {
+      const p = at(link.points[name], i);
+      return `${p[0]},${-p[1]}`;
+    }).join(" "));
+  } else if (link.outline.length === 1) {
+    const p = at(link.points[link.outline[0]], i);
+    shape.setAttribute("x", p[0] - 0.04 * scene.size);
+    shape.setAttribute("y", -p[1] - 0.03 * scene.size);
+  } else {
+    const gear = scene.gears.find((g) => g.link === link.number);
+    const p = at(link.points[gear.centre], i);
+    shape.setAttribute("cx", p[0]);
+    shape.setAttribute("cy", -p[1]);
+  }
+}
+
 function drawMechanism(parts, scene, i, ok) {
   const scale = scene.scales.force;
   for (const { link, shape } of parts.links) {
     shown(shape, ok);
-    if (!ok) continue;
-    if (link.outline.length > 1) {
-      shape.setAttribute("points", link.outline.map((name) => {
-        const p = at(link.points[name], i);
-        return `${p[0]},${-p[1]}`;
-      }).join(" "));
-    } else {
-      const p = at(link.points[link.outline[0]], i);
-      shape.setAttribute("x", p[0] - 0.04 * scene.size);
-      shape.setAttribute("y", -p[1] - 0.03 * scene.size);
-    }
+    if (ok) placeLink(shape, link, scene, i);
   }
   for (const { flat, node } of [...parts.gears, ...parts.points]) {
     const p = ok ? at(flat, i) : null;
@@ -292,10 +320,10 @@ function polygons(view, scene) {
     const box = html("figure", { class: "gk-cell" }, view.polygonBox);
     const svg = el("svg", { viewBox: `${cx - side / 2} ${-cy - side / 2} ${side} ${side}`, "data-polygon": k,
       role: "img" }, box);
-    markers(el("defs", {}, svg), side * 0.6);
+    const head = markers(el("defs", {}, svg), side * 0.6);
     const sides = p.names.map((name, j) => {
       const colour = p.known[j] ? INK.load : INK.graphical;
-      const a = arrow(svg, colour, p.known[j] ? "gk-head-load" : "gk-head-graphical", name, p.labels[j], side * 0.05);
+      const a = arrow(svg, colour, head(p.known[j] ? "load" : "graphical"), name, p.labels[j], side * 0.05);
       return a;
     });
     const caption = html("figcaption", {}, box);
@@ -327,6 +355,126 @@ function drawPolygons(parts, scene, i) {
   }
 }
 
+// -- the free bodies ------------------------------------------------------------------------------------------------
+// Each moving link alone with the forces on it (scene.free_bodies): the scene's joint forces times the sign it states
+// (+1: the force on this link as the scene holds it, −1: its reaction), its loads and its inertia resultant, at the
+// scene's force scale, in a box that holds it over the whole cycle.
+function bodies(view, scene, read) {
+  if (!scene.free_bodies || scene.free_bodies.length === 0) return null;
+  const cells = scene.free_bodies.map((b) => {
+    const link = scene.links.find((l) => l.number === b.link);
+    const [x0, y0, x1, y1] = b.box;
+    const side = Math.max(x1 - x0, y1 - y0) || scene.size;
+    const box = html("figure", { class: "gk-cell gk-body" }, view.bodyBox);
+    const svg = el("svg", { viewBox: `${x0} ${-y1} ${x1 - x0 || side} ${y1 - y0 || side}`, "data-body": b.link,
+      role: "img", "aria-label": `the free body of link ${b.link}` }, box);
+    const head = markers(el("defs", {}, svg), side * 0.6);
+    const style = { fill: INK.fill, "fill-opacity": 0.8, stroke: INK.link, "stroke-width": 2,
+      "vector-effect": "non-scaling-stroke", "data-link": b.link };
+    const gear = scene.gears.find((g) => g.link === b.link);
+    const shape = link.outline.length > 1 ? el("polygon", style, svg)
+      : link.outline.length === 1 ? el("rect", { ...style, width: 0.08 * scene.size, height: 0.06 * scene.size }, svg)
+        : gear ? el("circle", { ...style, r: gear.radius, "stroke-dasharray": "8 3" }, svg) : null;
+    const font = 0.05 * side;
+    const arrows = [];
+    for (const f of b.forces) {
+      const a = arrow(svg, INK.joint, head("joint"), f.name, f.label, font);
+      const vector = (sc, i) => {
+        const F = at(sc.forces[f.index].analytical, i);
+        return F === null ? null : [f.sign * F[0], f.sign * F[1]];
+      };
+      arrows.push({ a, tail: (sc, i) => at(sc.forces[f.index].at, i), vector });
+      read.set(a.g, (sc, i) => [f.name, vector(sc, i), "force"]);
+    }
+    for (const j of b.loads.filter((k) => scene.loads[k].force)) {
+      const ld = scene.loads[j];
+      const a = arrow(svg, INK.load, head("load"), ld.name, ld.label, font);
+      arrows.push({ a, tail: (sc, i) => at(ld.at, i), vector: (sc, i) => at(ld.force, i) });
+      read.set(a.g, (sc, i) => [ld.name, at(ld.force, i), "force"]);
+    }
+    if (b.inertia !== null) {
+      const inn = scene.inertia[b.inertia];
+      const a = arrow(svg, INK.inertia, head("inertia"), inn.name, inn.label, font);
+      arrows.push({ a, tail: (sc, i) => at(sc.inertia[b.inertia].line_point, i),
+        vector: (sc, i) => at(sc.inertia[b.inertia].force, i) });
+      read.set(a.g, (sc, i) => [inn.name, at(sc.inertia[b.inertia].force, i), "force"]);
+    }
+    // Torques are not drawn as arrows: the caption names them.
+    const torques = b.loads.filter((k) => !scene.loads[k].force).map((k) => scene.loads[k].name);
+    if (scene.driver.kind !== "slider" && scene.driver.link === b.link) torques.push(scene.effort.name);
+    const caption = html("figcaption", {}, box);
+    caption.textContent = `link ${b.link}${link.name ? ` (${link.name})` : ""}` +
+      (torques.length ? `; also the torque${torques.length > 1 ? "s" : ""} ${torques.join(", ")}` : "");
+    return { b, link, box, shape, arrows };
+  });
+  return { cells };
+}
+
+function drawBodies(parts, scene, i, ok) {
+  const scale = scene.scales.force;
+  for (const { link, box, shape, arrows } of parts.cells) {
+    shown(box, ok);
+    if (!ok) continue;
+    if (shape) placeLink(shape, link, scene, i);
+    for (const { a, tail, vector } of arrows) {
+      const F = vector(scene, i);
+      placeArrow(a, F !== null && (F[0] !== 0 || F[1] !== 0) ? tail(scene, i) : null, F, scale);
+    }
+  }
+}
+
+// -- the velocity and acceleration polygons ----------------------------------------------------------------------------
+// Each from its pole, each vector from its tail to its tip as the scene holds them (scene.motion): given vectors red,
+// those whose line only is known green, those found blue.
+function motionPolygons(view, scene, read) {
+  if (!scene.motion) return null;
+  const colour = { "size and direction": "load", direction: "graphical", found: "joint" };
+  const cells = scene.motion.polygons.map((p, k) => {
+    const side = Math.max(p.box[2] - p.box[0], p.box[3] - p.box[1]) * 1.25 || 1;
+    const cx = (p.box[0] + p.box[2]) / 2;
+    const cy = (p.box[1] + p.box[3]) / 2;
+    const box = html("figure", { class: "gk-cell gk-motion" }, view.motionBox);
+    const svg = el("svg", { viewBox: `${cx - side / 2} ${-cy - side / 2} ${side} ${side}`, "data-motion": k,
+      role: "img", "aria-label": `the ${p.kind} polygon` }, box);
+    const head = markers(el("defs", {}, svg), side * 0.6);
+    const m = p.names.length;
+    const sides = p.names.map((name, j) => {
+      const a = arrow(svg, INK[colour[p.known[j]]], head(colour[p.known[j]]), name, p.labels[j], side * 0.05);
+      read.set(a.g, (sc, i) => {
+        const v = sc.motion ? sc.motion.polygons[k].vectors : null;
+        const o = 4 * (m * i + j);
+        return [name, v && v[o] !== null ? [v[o + 2] - v[o], v[o + 3] - v[o + 1]] : null, p.kind];
+      });
+      return a;
+    });
+    html("figcaption", {}, box, `${p.kind} polygon`);
+    return { p, box, sides, m };
+  });
+  const reason = html("p", { class: "gk-reason" }, view.motionBox);
+  return { cells, reason };
+}
+
+function drawMotion(parts, scene, i) {
+  const ok = scene.motion.valid[i] === 1;
+  parts.reason.textContent = ok || scene.valid[i] !== 1 ? ""
+    : `No polygons: ${scene.motion.invalid.find((e) => e.index === i)?.reason || ""}`;
+  for (const { p, box, sides, m } of parts.cells) {
+    const base = 4 * m * i;
+    const here = ok && p.vectors[base] !== null;
+    shown(box, here);
+    if (!here) continue;
+    sides.forEach((a, j) => {
+      const o = base + 4 * j;
+      const tail = [p.vectors[o], p.vectors[o + 1]];
+      const tip = [p.vectors[o + 2], p.vectors[o + 3]];
+      setLine(a.line, tail, tip);
+      setLine(a.hit, tail, tip);
+      a.text.setAttribute("x", (tail[0] + tip[0]) / 2);
+      a.text.setAttribute("y", -(tail[1] + tip[1]) / 2);
+    });
+  }
+}
+
 // -- the table of forces --------------------------------------------------------------------------------------------
 function table(view, scene) {
   const t = html("table", { class: "gk-table" }, view.tableBox);
@@ -345,18 +493,19 @@ function table(view, scene) {
   return { rows, effort };
 }
 
-function drawTable(parts, scene, i) {
+function drawTable(parts, scene, i, units) {
+  const force = units("force");
   for (const { f, a, g } of parts.rows) {
     const A = at(f.analytical, i);
-    a.textContent = A ? polar(A[0], A[1], "N") : "—";
+    a.textContent = A ? polar(A[0], A[1], force) : "—";
     const G = f.graphical ? at(f.graphical, i) : null;
-    g.textContent = G ? polar(G[0], G[1], "N") : "—";
+    g.textContent = G ? polar(G[0], G[1], force) : "—";
   }
-  const unit = UNIT[scene.effort.label.unit];
+  const u = units(KIND[scene.effort.label.unit]);
   const A = scene.effort.analytical[i];
   const G = scene.effort.graphical ? scene.effort.graphical[i] : null;
-  parts.effort.a.textContent = A === null ? "—" : `${number(A)} ${unit}`;
-  parts.effort.g.textContent = G === null ? "—" : `${number(G)} ${unit}`;
+  parts.effort.a.textContent = A === null ? "—" : `${number(u.scale * A)} ${u.unit}`;
+  parts.effort.g.textContent = G === null ? "—" : `${number(u.scale * G)} ${u.unit}`;
 }
 
 // -- the input speed -------------------------------------------------------------------------------------------------
@@ -399,19 +548,43 @@ function controls(view, scene) {
   const slider = html("input", { type: "range", min: 0, max: scene.n - 1, step: 1, value: 0,
     "aria-label": "position in the cycle", "data-do": "position" }, bar);
   const where = html("output", { "data-do": "where" }, bar);
-  const speed = html("select", { "aria-label": "positions a second while playing", "data-do": "speed" }, bar);
-  for (const v of [15, 30, 60, 120]) html("option", v === 30 ? { value: v, selected: "" } : { value: v }, speed, `${v}/s`);
+  // Playing at the true speed or slowed (a fraction of it: the scene's time of each position), or, where the input
+  // has no one speed, at so many positions a second.
+  const timed = scene.input.time !== null && scene.input.time !== undefined;
+  const speed = html("select", { "aria-label": timed ? "playing speed, of the true speed" : "positions a second while playing",
+    "data-do": "speed" }, bar);
+  if (timed) {
+    const fractions = [1, 1 / 2, 1 / 5, 1 / 10, 1 / 20, 1 / 50, 1 / 100, 1 / 200, 1 / 500];
+    // Slowed at first to the fastest that takes two seconds or more a cycle.
+    const first = fractions.find((f) => scene.input.period / f >= 2) ?? fractions[fractions.length - 1];
+    for (const f of fractions) {
+      html("option", f === first ? { value: f, selected: "" } : { value: f }, speed,
+        f === 1 ? "true speed" : `slowed ×1/${Math.round(1 / f)}`);
+    }
+  } else {
+    for (const v of [15, 30, 60, 120]) html("option", v === 30 ? { value: v, selected: "" } : { value: v }, speed, `${v}/s`);
+  }
   const toggles = {};
   const names = [["forces", "joint forces"], ["loads", "loads"], ["inertia", "inertia"], ["curve", "torque curve"],
     ["table", "table"]];
   if (scene.graphical) names.push(["polygons", "force polygons"]);
+  if (scene.motion) names.push(["motion", "motion polygons"]);
+  if (scene.free_bodies && scene.free_bodies.length) names.push(["bodies", "free bodies"]);
   for (const [key, text] of names) {
     const lab = html("label", {}, bar);
-    toggles[key] = html("input", { type: "checkbox", checked: "", "data-toggle": key }, lab);
+    toggles[key] = html("input", key === "bodies" ? { type: "checkbox", "data-toggle": key }
+      : { type: "checkbox", checked: "", "data-toggle": key }, lab);
     lab.appendChild(document.createTextNode(` ${text}`));
   }
+  // The units a value is read in: SI, or the book's.
+  const lab = html("label", {}, bar, "units ");
+  const units = html("select", { "data-do": "units", "aria-label": "the units values are read in" }, lab);
+  html("option", { value: "SI", selected: "" }, units, "SI");
+  const b = scene.book;
+  html("option", { value: "book" }, units,
+    `${b.name === "SI" ? "the book's" : b.name} (${b.length.unit}, ${b.force.unit}, ${b.torque.unit})`);
   const rate = scene.speed ? rateControl(bar, scene) : null;
-  return { play, slider, where, speed, toggles, rate };
+  return { play, slider, where, speed, timed, toggles, units, rate };
 }
 
 function inputText(scene, i) {
@@ -424,7 +597,7 @@ function inputText(scene, i) {
 // options.keys: what listens for the arrow keys and the space bar (the page: the document; a notebook's widget: its
 // own element, so that keys typed in a cell stay the cell's).
 export function draw(root, base, options = {}) {
-  if (base.schema !== 1) throw new Error(`graphkin scene: schema ${base.schema} is not one this page reads (1)`);
+  if (base.schema !== 2) throw new Error(`graphkin scene: schema ${base.schema} is not one this page reads (2)`);
   const scene = live(base);
   root.classList.add("gk-scene");
   const view = { root, index: 0, timings: [] };
@@ -433,6 +606,14 @@ export function draw(root, base, options = {}) {
   const mech = mechanism(view, scene);
   view.polygonBox = html("div", { class: "gk-polygons" }, view.figures);
   const poly = polygons(view, scene);
+  // What hovering an arrow of a free body or a motion polygon reads: its name, its vector at a position, its kind.
+  const read = new Map();
+  view.motionBox = html("div", { class: "gk-motions" }, view.figures);
+  const motion = motionPolygons(view, scene, read);
+  shown(view.motionBox, motion !== null);
+  view.bodyBox = html("div", { class: "gk-bodies" }, view.figures);
+  const body = bodies(view, scene, read);
+  shown(view.bodyBox, false);
   view.readout = html("p", { class: "gk-readout", "aria-live": "polite" }, root);
   const below = html("div", { class: "gk-below" }, root);
   view.curveBox = html("div", { class: "gk-curvebox" }, below);
@@ -441,6 +622,8 @@ export function draw(root, base, options = {}) {
   const tableParts = table(view, scene);
 
   const on = (key) => !ui.toggles[key] || ui.toggles[key].checked;
+  view.units = "SI";
+  const units = (kind) => (view.units === "book" ? scene.book[kind] : SI[kind]);
   function show(i) {
     const k = ((Math.round(i) % scene.n) + scene.n) % scene.n;
     view.index = k;
@@ -448,17 +631,19 @@ export function draw(root, base, options = {}) {
     drawMechanism(mech, scene, k, ok);
     if (on("curve")) drawCurve(curveParts, scene, k);
     if (poly && on("polygons") && scene.graphical) drawPolygons(poly, scene, k);
-    if (on("table")) drawTable(tableParts, scene, k);
+    if (motion && on("motion") && scene.motion) drawMotion(motion, scene, k);
+    if (body && on("bodies")) drawBodies(body, scene, k, ok);
+    if (on("table")) drawTable(tableParts, scene, k, units);
     ui.slider.value = k;
     ui.where.textContent = inputText(scene, k);
+    readout();
     return k;
   }
   view.show = show;
   view.scene = scene;
 
   // Each input event is timed from the event (its timeStamp) to the SVG updated (view.timings, ms) and to the next
-  // frame the browser draws (view.frames); view.work is the drawing alone, from the handler's start. (Chromium holds
-  // pointer moves back to the next frame, so a drag's event-to-update time includes up to a frame of waiting.)
+  // frame the browser draws (view.frames); view.work is the drawing alone, from the handler's start.
   view.frames = [];
   view.work = [];
   function step(event, i) {
@@ -493,11 +678,26 @@ export function draw(root, base, options = {}) {
     let last = performance.now();
     ui.play.textContent = "⏸";
     ui.play.setAttribute("aria-label", "pause");
+    // At the true speed or slowed: the mechanism's time runs at the chosen fraction of the clock's, and the position
+    // shown is the last one reached by then. Otherwise: so many positions a second.
+    let clock = ui.timed ? scene.input.time[view.index] : 0;
     const frame = (now) => {
-      const steps = Math.floor(((now - last) * Number(ui.speed.value)) / 1000);
-      if (steps > 0) {
-        last += (steps * 1000) / Number(ui.speed.value);
-        show(view.index + steps);
+      if (ui.timed) {
+        const { time, period } = scene.input;
+        clock = (clock + ((now - last) / 1000) * Number(ui.speed.value)) % period;
+        last = now;
+        let k = view.index;
+        let reached = -Infinity;
+        for (let j = 0; j < scene.n; j += 1) {
+          if (time[j] <= clock && time[j] > reached) { reached = time[j]; k = j; }
+        }
+        if (k !== view.index) show(k);
+      } else {
+        const steps = Math.floor(((now - last) * Number(ui.speed.value)) / 1000);
+        if (steps > 0) {
+          last += (steps * 1000) / Number(ui.speed.value);
+          show(view.index + steps);
+        }
       }
       playing = requestAnimationFrame(frame);
     };
@@ -509,8 +709,10 @@ export function draw(root, base, options = {}) {
   for (const [key, box] of Object.entries(ui.toggles)) {
     box.addEventListener("change", () => {
       const target = { forces: mech.groups.forces, loads: mech.groups.loads, inertia: mech.groups.inertia,
-        curve: view.curveBox, table: view.tableBox, polygons: view.polygonBox }[key];
-      shown(target, box.checked && (key !== "polygons" || scene.graphical !== null));
+        curve: view.curveBox, table: view.tableBox, polygons: view.polygonBox, motion: view.motionBox,
+        bodies: view.bodyBox }[key];
+      shown(target, box.checked && (key !== "polygons" || scene.graphical !== null)
+        && (key !== "motion" || scene.motion !== null));
       show(view.index);
     });
   }
@@ -527,8 +729,10 @@ export function draw(root, base, options = {}) {
       setRate(scene, base, rate);
       setCurve(curveParts, scene);
       shown(view.polygonBox, scene.graphical !== null && on("polygons"));
+      shown(view.motionBox, scene.motion !== null && on("motion"));
       ui.rate.note.textContent = ui.rate.text + (base.graphical && !scene.graphical
-        ? " The graphical route and the force polygons are presolved at the file's speed only." : "");
+        ? " The graphical route and the force polygons are presolved at the file's speed only." : "")
+        + (base.motion && !scene.motion ? " The motion polygons are presolved at the file's speed only." : "");
       show(view.index);
     });
   }
@@ -554,7 +758,41 @@ export function draw(root, base, options = {}) {
     }
     return best;
   }
+  //
+  // A move is drawn when it comes. Chromium holds "pointermove" back to the start of the next frame (a drag's move
+  // waited 5–15 ms there before its handler ran); "pointerrawupdate" comes at once, where the browser has it
+  // (Chromium, in a secure context: a page from disk, over TLS, or from localhost). A mouse may report far more
+  // moves than there are frames: the moves of one frame are drawn at once until they have taken BUDGET ms of it,
+  // and any later one at the frame.
+  const BUDGET = 6;
+  const MOVE = "onpointerrawupdate" in window ? "pointerrawupdate" : "pointermove";
   let dragging = false;
+  let spent = 0; // ms of drawing moves since the last frame
+  let held = null; // the last move held for the frame
+  let counting = false;
+  function move(event) {
+    const k = nearest(pointer(event));
+    if (k === view.index && held === null) return; // the pointer is still nearest the position shown
+    if (!counting) {
+      counting = true;
+      requestAnimationFrame(() => {
+        counting = false;
+        spent = 0;
+        if (held !== null) {
+          const [e, j] = held;
+          held = null;
+          step(e, j);
+        }
+      });
+    }
+    if (spent >= BUDGET) {
+      held = [event, k];
+      return;
+    }
+    const t = performance.now();
+    step(event, k);
+    spent += performance.now() - t;
+  }
   mech.svg.addEventListener("pointerdown", (e) => {
     toDrawing = mech.svg.getScreenCTM().inverse();
     const p = pointer(e);
@@ -564,31 +802,51 @@ export function draw(root, base, options = {}) {
     mech.svg.setPointerCapture(e.pointerId);
     e.preventDefault();
   });
-  mech.svg.addEventListener("pointermove", (e) => { if (dragging) step(e, nearest(pointer(e))); });
+  mech.svg.addEventListener(MOVE, (e) => { if (dragging) move(e); });
   mech.svg.addEventListener("pointerup", () => { dragging = false; });
 
-  // Hovering a force reads it in polar form.
-  function hover(e) {
-    const g = e.target.closest?.(".gk-arrow");
-    if (!g) return;
-    const name = g.getAttribute("data-name");
+  // Hovering (or tapping) a force reads it in polar form, in the units chosen; so does a free body's arrow and a
+  // motion polygon's vector. The read-out follows the position and the units until another arrow is hovered.
+  let hovered = null;
+  function readout() {
+    if (!hovered) return;
     const k = view.index;
+    const reader = read.get(hovered);
+    if (reader) {
+      const [name, v, kind] = reader(scene, k);
+      view.readout.textContent = `${name} = ${v ? polar(v[0], v[1], units(kind)) : "—"}`;
+      return;
+    }
+    const name = hovered.getAttribute("data-name");
+    const force = units("force");
     const f = scene.forces.find((x) => x.name === name);
     if (f) {
       const A = at(f.analytical, k);
       const G = f.graphical ? at(f.graphical, k) : null;
-      view.readout.textContent = `${name} = ${A ? polar(A[0], A[1], "N") : "—"} analytically` +
-        (f.graphical ? `, ${G ? polar(G[0], G[1], "N") : "—"} graphically` : "");
+      view.readout.textContent = `${name} = ${A ? polar(A[0], A[1], force) : "—"} analytically` +
+        (f.graphical ? `, ${G ? polar(G[0], G[1], force) : "—"} graphically` : "");
       return;
     }
     const other = scene.loads.find((x) => x.name === name) || scene.inertia.find((x) => x.name === name);
     if (other) {
       const F = at(other.force, k);
-      view.readout.textContent = `${name} = ${F ? polar(F[0], F[1], "N") : "—"}` +
-        (other.h !== undefined && other.h[k] !== null ? `, its line ${number(other.h[k] * 1000)} mm from G` : "");
+      const L = units("length");
+      view.readout.textContent = `${name} = ${F ? polar(F[0], F[1], force) : "—"}` +
+        (other.h !== undefined && other.h[k] !== null ? `, its line ${number(other.h[k] * L.scale)} ${L.unit} from G`
+          : "");
     }
   }
-  mech.svg.addEventListener("pointerover", hover);
+  function hover(e) {
+    const g = e.target.closest?.(".gk-arrow");
+    if (!g) return;
+    hovered = g;
+    readout();
+  }
+  for (const box of [mech.svg, view.motionBox, view.bodyBox]) box.addEventListener("pointerover", hover);
+  ui.units.addEventListener("change", () => {
+    view.units = ui.units.value;
+    show(view.index);
+  });
   show(0);
   view.ready = performance.now(); // the first frame's drawing done, from the page's start
   return view;

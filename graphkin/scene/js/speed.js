@@ -6,7 +6,7 @@
 // What the drawing reads is a copy of the scene whose speed-dependent values the speed box replaces (the parts drawn
 // hold its objects); the scene itself stays as Python gave it.
 export function live(scene) {
-  return { ...scene, scales: { ...scene.scales }, effort: { ...scene.effort },
+  return { ...scene, scales: { ...scene.scales }, effort: { ...scene.effort }, input: { ...scene.input },
     forces: scene.forces.map((f) => ({ ...f })), inertia: scene.inertia.map((x) => ({ ...x })) };
 }
 
@@ -25,8 +25,8 @@ const scaled = (flat, c) => flat.map((v) => (v === null ? null : c * v));
 
 // Set the live scene `view` to the input rate `rate` [rad/s or m/s] of `base`: at its own speed, its own values;
 // otherwise F_rest + rate² F_ω² and each inertia resultant times (rate/rate₀)², its line unmoved (speed.kind
-// "superpose"), or the presolved speed's values ("presolved"). The graphical route is presolved at the own speed
-// only. The force scale grows, never shrinks, so that the largest arrow stays as long as the scene drew it.
+// "superpose"), or the presolved speed's values ("presolved"). The graphical route and the motion polygons are
+// presolved at the own speed only. At one constant speed a position is reached at its time × rate₀/rate. The force scale grows, never shrinks, so that the largest arrow stays as long as the scene drew it.
 export function setRate(view, base, rate) {
   const sp = base.speed;
   const own = rate === sp.value;
@@ -52,6 +52,11 @@ export function setRate(view, base, rate) {
   Object.assign(view.effort, { analytical: T, graphical: own ? base.effort.graphical : undefined,
     range: own ? base.effort.range : hi > lo ? [lo, hi] : [-1, 1] });
   view.graphical = own ? base.graphical : null;
+  view.motion = own ? base.motion : null;
+  if (base.input.time) {
+    const c = sp.value / rate;
+    Object.assign(view.input, { time: base.input.time.map((t) => t * c), period: base.input.period * c });
+  }
   view.scales.force = own ? base.scales.force : base.scales.force * Math.max(1, largest(view) / largest(base));
   view.rate = rate;
 }
