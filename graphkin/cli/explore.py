@@ -58,6 +58,10 @@ def add_parser(sub) -> None:
     e.add_argument("--n", type=int, default=None, help="with -o: crank angles over the turn (default 360)")
     e.add_argument("--no-polygons", action="store_true", help="with -o: leave the graphical route's force "
                    "polygons out (a smaller page, built faster)")
+    e.add_argument("--motion", action="store_true", help="with -o: the velocity and acceleration polygons too, "
+                   "with a toggle on the page")
+    e.add_argument("--units", metavar="SI|US|FILE", help="with -o: the units a reader may switch to beside SI, "
+                   "when hovering a force: US (in, lbf, lbf·ft) or a units file (TOML)")
 
 
 def notebook(source: str, title: str) -> dict:
@@ -116,8 +120,9 @@ def run(args) -> int:
     problem = catalog.load(args.problem)  # a bad name or file: GraphkinError, before anything starts
     if args.output is not None:
         return _write(problem, args)
-    if args.n is not None or args.no_polygons:
-        raise GraphkinError("--n and --no-polygons go with -o PAGE.html (the page of the presolved cycle)")
+    if args.n is not None or args.no_polygons or args.motion or args.units:
+        raise GraphkinError("--n, --no-polygons, --motion and --units go with -o PAGE.html (the page of the "
+                            "presolved cycle)")
     source = args.problem if args.problem in catalog.names() else str(Path(args.problem).resolve())
     from graphkin.optional import available, missing
 
@@ -166,7 +171,10 @@ def _write(problem, args) -> int:
     from graphkin.scene import scene, write_page
 
     path = check_destination(args.output, "-o")  # a folder or an unwritable place is refused before the solve
-    data = scene(problem, 360 if args.n is None else args.n, polygons=not args.no_polygons)
+    from graphkin.units.systems import unit_system
+
+    data = scene(problem, 360 if args.n is None else args.n, polygons=not args.no_polygons, motion=args.motion,
+                 units=unit_system(args.units))
     write_page(data, path, "-o")
     n = data["n"]
     print(f"graphkin: wrote {path} ({path.stat().st_size / 1e6:.2f} MB, {n} position{'s' * (n != 1)} of "

@@ -87,10 +87,27 @@ def run(args) -> int:
     secret = _secret(args) if args.student else ""
     doc = handout.build(args.source, student=args.student, secret=secret, at=args.at, version=_version(args),
                         Cs=args.cs, detail=args.detail, units=units, from_motion=args.from_motion)
-    written = handout.write(doc, args.output)
+    moving = _moving(args, secret, units)
+    written = handout.write({**doc, "scene": moving} if moving else doc, args.output)
     extra = f" and {len(written) - 1} figures beside it" if len(written) > 1 else ""
     print(f"{doc['subtitle'].lower()} written to {written[-1]}{extra}", file=sys.stderr)
     return 0
+
+
+def _moving(args, secret: str, units):
+    """The scene of an HTML key: the figure a student moves, beside the one printed to scale; None otherwise.
+
+    Only a key has it: a worksheet or a student's sheet leaves the forces to be found, and the moving figure
+    would show them. PDF and Markdown have no place for it.
+    """
+    if Path(args.output).suffix.lower() != ".html" or args.blank or (args.student and not args.key):
+        return None
+    from graphkin import catalog, exercises
+    from graphkin.scene import scene
+
+    problem = exercises.variant(args.source, args.student, secret).problem if args.student else \
+        catalog.load(args.source)
+    return scene(problem, units=units)
 
 
 def _secret(args) -> str:

@@ -65,7 +65,20 @@ def test_mistakes_are_one_line_and_leave_the_old_file(capsys, tmp_path):
     code, _, err = run(capsys, "strip_cutter", "-o", tmp_path)
     assert code == 2 and "is a folder, not a file" in err
     code, _, err = run(capsys, "strip_cutter", "--n", 36)
-    assert code == 2 and "--n and --no-polygons go with -o" in err
+    assert code == 2 and "--n, --no-polygons, --motion and --units go with -o" in err
+    code, _, err = run(capsys, "strip_cutter", "-o", path, "--units", "furlongs")
+    assert code == 2 and "--units 'furlongs'" in err and path.read_text(encoding="utf-8") == "old"
+
+
+def test_the_motion_polygons_and_the_books_units_on_the_page(capsys, tmp_path):
+    from graphkin.units.systems import unit_system
+
+    path = tmp_path / "crank.html"
+    code, _, _ = run(capsys, "slider_crank_dynamic_makdin", "-o", path, "--n", 12, "--motion", "--units", "US")
+    assert code == 0
+    expected = scene(catalog.load("slider_crank_dynamic_makdin"), 12, motion=True, units=unit_system("US"))
+    assert _scene_in(path.read_text(encoding="utf-8")) == json.loads(scene_json(expected))
+    assert expected["motion"] is not None and expected["book"] != scene(catalog.load("slider_crank_dynamic_makdin"), 12)["book"]
 
 
 def test_a_base_url_that_is_not_a_path_is_one_line(capsys):
