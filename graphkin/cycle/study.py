@@ -12,14 +12,14 @@ keeps the branch its file states (``[assembly]``); a design that cannot be assem
 cycle is marked with the first such position and the reason, and its figures of merit are nan (a peak over part
 of a cycle would look better than the design is).
 
-The designs are solved one after another, each a sweep vectorised over its positions. A broadcast over designs
-(designs × positions as one batch) needs every per-mechanism constant as an array, one value per
-design-position: :func:`graphkin.kinematics.plan.plan_of` works out each point as a complex number and each bar's
-length once per mechanism, and the compiled steps of :mod:`graphkin.kinematics.solver` (``_crank_step``,
-``_rrr_step``) close over them as Python scalars (``abs(dj)``, ``if p == 0``); the force analysis's compiled groups
-(``_crank``, ``_rrr`` in :mod:`graphkin.analytical.kinetostatics`) take G, m and I_G the same way, and the loads
-(:mod:`graphkin.analytical.loads`) and ``Kinematics.position`` read points from the mechanism's links. Until
-those take arrays, :attr:`Study.vectorised` is False and :attr:`Study.why_not_vectorised` says so.
+The designs are solved together, designs × positions as one batch (:func:`graphkin.analytical.designs.solve_designs`):
+designs that differ only in numbers the plan of the linkage holds -- a point's place on its link, a mass, I_G,
+G, a load's value or a counterweight's, the speed -- are laid end to end, each such number an array with the
+design's value at each of its positions, and the kinematic and force steps run once over them all, CHUNK
+positions at a time; the figures of merit are read off the (designs, positions) arrays at once. Each design's
+numbers are those of a sweep of it alone (the same operations on the same numbers). A design that cannot
+share a batch -- a slider driver, a gear train, a load that varies over the cycle (a table, a spring), values
+given at one position -- is swept on its own, and :attr:`Study.why_not_vectorised` says how many and why.
 """
 
 from __future__ import annotations
@@ -29,15 +29,23 @@ import math
 import tomllib
 from dataclasses import dataclass
 from pathlib import Path
+from types import SimpleNamespace
 from typing import Any, Mapping
 
 import numpy as np
 
 from graphkin import catalog
-from graphkin.cycle.flywheel import check_Cs
+from graphkin.analytical.designs import Batch, batch_key, solve_designs
+from graphkin.cycle._sampling import sweep_positions
+from graphkin.cycle.flywheel import check_Cs, size_flywheel
 from graphkin.cycle.sweep import Cycle, sweep
+from graphkin.cycle.turn import TURN, closing_step, weights
 from graphkin.errors import GraphkinError, ProblemFileError
 from graphkin.files import read_text
+from graphkin.geometry import zcross
+from graphkin.kinematics.solver import CHUNK
+from graphkin.model import Prismatic, Revolute
+from graphkin.model.names import force_name
 from graphkin.notation import position_text
 from graphkin.problem import build_problem
 from graphkin.problem.fields import missing, set_field
@@ -47,9 +55,9 @@ __all__ = ["MAX_DESIGNS", "Design", "Study", "VaryError", "merit", "study"]
 MAX_DESIGNS = 100_000
 """The most designs one study solves (the product of the numbers of values of its fields)."""
 
-NOT_VECTORISED = ("the designs are solved one after another (each over its positions at once): the compiled "
-                  "kinematic and force steps take each mechanism's points, lengths, masses and I_G as scalars")
-"""Why :attr:`Study.vectorised` is False (the module's docstring says what a broadcast over designs needs)."""
+BATCH = 4 * CHUNK
+"""Design-positions solved together: as many whole designs as fit (at least one). Their arrays (a few MB) are
+freed before the next batch, so a study's memory does not grow with its designs beyond their figures of merit."""
 
 
 class VaryError(GraphkinError):
@@ -131,9 +139,9 @@ class Study:
     Cs : float
         The coefficient of speed fluctuation the flywheels are sized for.
     vectorised : bool
-        True if the designs were solved as one batch over designs and positions.
+        True if every design was solved in a batch over designs and positions (see the module).
     why_not_vectorised : str or None
-        Why not, when they were not.
+        How many designs were swept one by one, and why; None when none was.
     crank : bool
         True if the driver is a crank (the effort is a torque [N·m]); False for a slider (a force [N]).
     """
@@ -297,12 +305,141 @@ def study(problem, vary: Mapping[str, Any], *, n: int | None = None, Cs: float =
                 raise VaryError(field, f"{value!r}: " + (exc.message if exc.field == field else str(exc))) from None
             except GraphkinError as exc:
                 raise VaryError(field, f"{value!r}: {exc}") from None
-    designs, crank = [], build_problem(data, file=file, base=base).mechanism.driver.crank
-    for values in itertools.product(*grid):
+    crank = build_problem(data, file=file, base=base).mechanism.driver.crank
+    designs, batches, alone = {}, {}, {}
+    for index, values in enumerate(itertools.product(*grid)):
         try:
             p = _design_problem(data, fields, values, file, base)
         except GraphkinError as exc:  # each value builds alone: together these do not
-            designs.append(_unbuilt(values, str(exc)))
+            designs[index] = _unbuilt(values, str(exc))
             continue
-        designs.append(merit(sweep(p, n), values, Cs))
-    return Study(file, fields, grid, tuple(designs), n, Cs, False, NOT_VECTORISED, crank)
+        key, q = _batch_key(p, n)
+        if q is None:
+            alone[index] = (values, p, key)
+        else:
+            batches.setdefault(key, (q, []))[1].append((index, values, p))
+    for q, members in batches.values():
+        per = max(1, BATCH // len(q))
+        for s in range(0, len(members), per):
+            part = members[s:s + per]
+            designs.update(zip((m[0] for m in part), _merits([m[2] for m in part], [m[1] for m in part], q, Cs)))
+    for index, (values, p, _) in alone.items():
+        designs[index] = merit(sweep(p, n), values, Cs)
+    why = None
+    if alone:
+        reasons = sorted({key for _, _, key in alone.values()})
+        why = (f"{len(alone)} of the {len(designs)} designs were swept one after another, not in a batch over "
+               f"designs: {'; '.join(reasons)}")
+    return Study(file, fields, grid, tuple(designs[i] for i in range(len(designs))), n, Cs, not alone, why, crank)
+
+
+def _batch_key(p, n: int | None) -> tuple:
+    """What a design shares with the designs it can be solved with, and its positions; or why it is swept alone
+    and None."""
+    if not p.mechanism.driver.crank:
+        return "the driver is a slider", None
+    if p.given:
+        return "the problem gives kinematic values ([given]) that hold at one position", None
+    if p.unknown is not None:
+        return "the effort is asked of a link other than the driver", None
+    key, why = batch_key(p.mechanism)
+    if key is None:
+        return f"the linkage has {why}", None
+    q = sweep_positions(p, n)
+    if q is None:
+        return "the input rates vary with position", None
+    return (key, q.tobytes(), p.static), q
+
+
+def _means(q: np.ndarray, f: np.ndarray) -> np.ndarray:
+    """:meth:`Cycle.mean` of each row of ``f`` (designs, positions), by the same rule."""
+    gap = closing_step(q)
+    if gap is not None:
+        return np.sum(weights(q, gap) * f, axis=1) / TURN
+    if len(q) < 2 or q[-1] == q[0]:
+        return f[:, 0] if len(q) == 1 else np.full(len(f), math.nan)
+    return np.sum(0.5 * (f[:, 1:] + f[:, :-1]) * np.diff(q), axis=1) / (q[-1] - q[0])
+
+
+def _four_bar(mech) -> tuple | None:
+    """The pins (link, point) of a crank-driven four-bar's transmission angle: A and B on the coupler, B0 on the
+    frame (:meth:`Cycle.transmission_angle`); None for another linkage."""
+    if not (len(mech.links) == 4 and len(mech.joints) == 4 and mech.driver.crank
+            and all(isinstance(j, Revolute) for j in mech.joints)):
+        return None
+    crank = mech.driver.link
+    coupler = [j for j in mech.moving if j != crank and any(set(J.links) == {crank, j} for J in mech.joints)]
+    if len(coupler) != 1:
+        return None
+    (coupler,) = coupler
+    (rocker,) = [j for j in mech.moving if j not in (crank, coupler)]
+    return ((coupler, mech.joint_between(crank, coupler).point), (coupler, mech.joint_between(coupler, rocker).point),
+            (mech.frame, mech.joint_between(mech.frame, rocker).point))
+
+
+def _frame_pins(mech, forces) -> list:
+    """Each joint with the frame, in the order of ``forces`` (pairs of links): (joint, moving link, the point its
+    force acts at)."""
+    out = []
+    for i, j in forces:
+        if mech.frame in (i, j):
+            joint = mech.joint_between(i, j)
+            at = (joint.slider, joint.point) if isinstance(joint, Prismatic) else (mech.frame, joint.point)
+            out.append((joint, j if i == mech.frame else i, at))
+    return out
+
+
+def _shaking(b: Batch, mech, pins) -> tuple[np.ndarray, np.ndarray]:
+    """The shaking force (complex) and moment of each design at each position, as :class:`Cycle` sums them."""
+    S = np.zeros(b.effort.shape, complex)
+    M = np.zeros(b.effort.shape)
+    for joint, j, at in pins:
+        F = b.forces[(mech.frame, j)]
+        S = S - F
+        M = M + zcross(b.points[at], -F)
+        if isinstance(joint, Prismatic):
+            M = M - b.couple[(mech.frame, j)]
+    return S, M - b.effort
+
+
+def _merits(problems: list, values: list, q: np.ndarray, Cs: float) -> list[Design]:
+    """The figures of merit of designs that share a batch (:func:`merit`'s, each design's to rounding)."""
+    mech = problems[0].mechanism
+    four = _four_bar(mech)
+    b = solve_designs([p.mechanism for p in problems], q, [p.q_dot[0] for p in problems],
+                      [p.q_ddot[0] for p in problems], static=problems[0].static,
+                      points=[at for _, _, at in _frame_pins(mech, [j.links for j in mech.joints])] + list(four or ()))
+    pins = _frame_pins(mech, b.forces)  # in the order a Cycle sums them
+    names = [force_name(mech, i, j) for (i, j) in b.forces]
+    T, N = b.effort, len(q)
+    with np.errstate(all="ignore"):  # a design that fails carries nan; its figures are not read
+        peak, square = np.max(np.abs(T), axis=1), _means(q, T * T)
+        joints = [np.max(np.hypot(F.real, F.imag), axis=1) for F in b.forces.values()]
+        S, M = _shaking(b, mech, pins)
+        shaking_force, shaking_moment = np.max(np.hypot(S.real, S.imag), axis=1), np.max(np.abs(M), axis=1)
+        if four is not None:
+            A, B, B0 = (b.points[at] for at in four)
+            u, v = A - B, B0 - B
+            mu = np.arctan2(np.abs(zcross(u, v)), u.real * v.real + u.imag * v.imag)
+            mu_min = np.min(np.minimum(mu, np.pi - mu), axis=1)
+    out, closed = [], closing_step(q) is not None
+    for d, (p, vals) in enumerate(zip(problems, values)):
+        bad = np.flatnonzero(~b.valid[d])
+        if len(bad):
+            i = int(bad[0])
+            nan = math.nan
+            out.append(Design(vals, nan, nan, dict.fromkeys(names, nan), nan, nan, nan, nan,
+                              f"no solution at {len(bad)} of the {N} positions, the first at "
+                              f"{position_text(q[i], True)}: {b.reason(d, i)}", float(q[i]),
+                              "the design cannot be assembled over the whole cycle"))
+            continue
+        q_dot = np.full(N, p.q_dot[0])
+        # The design's own cycle's words for a flywheel it cannot have (a valid design of a crank: the speed).
+        why = Cycle.why_no_flywheel(SimpleNamespace(problem=p, closed=closed, valid=b.valid[d], q_dot=q_dot))
+        out.append(Design(
+            values=vals, torque_peak=float(peak[d]), torque_rms=math.sqrt(square[d]),
+            joint_peaks={name: float(x[d]) for name, x in zip(names, joints)},
+            I_s=math.nan if why else size_flywheel(q, T[d], omega_avg=float(np.mean(q_dot)), Cs=Cs).I_s,
+            shaking_force_peak=float(shaking_force[d]), shaking_moment_peak=float(shaking_moment[d]),
+            transmission_angle_min=float(mu_min[d]) if four is not None else math.nan, no_flywheel=why))
+    return out

@@ -84,9 +84,25 @@ def test_every_design_equals_a_single_sweep_of_it(name, vary, n):
     assert 0 < failed < len(s.designs), "the grid should hold designs that turn and designs that cannot"
 
 
-def test_a_study_is_not_vectorised_and_says_why():
-    s = study("strip_cutter", {"links[1].mass": ["2 kg"]}, n=36)
-    assert s.vectorised is False and "one after another" in s.why_not_vectorised
+@pytest.mark.parametrize("name", ["strip_cutter", "slider_crank_friction", "engine_gas_force"])
+def test_a_crank_driven_linkage_of_numbers_is_solved_in_a_batch(name):
+    s = study(name, {"links[1].mass": ["2 kg", "3 kg"]}, n=36)
+    assert s.vectorised is True and s.why_not_vectorised is None
+
+
+@pytest.mark.parametrize(("name", "vary", "words"), [
+    ("shaper_six_bar", {"links[1].mass": ["2 kg", "3 kg"]}, "a load that varies over the cycle"),
+    ("gearset", {"links[1].mass": ["2 kg", "3 kg"]}, "a gear train"),
+    ("double_slider", {"links[1].mass": ["2 kg", "3 kg"]}, "the driver is a slider"),
+])
+def test_designs_that_cannot_share_a_batch_are_swept_alone_and_it_says_so(name, vary, words):
+    s = study(name, vary, n=36 if name != "double_slider" else None)
+    assert s.vectorised is False and s.why_not_vectorised.startswith("2 of the 2 designs were swept one after another")
+    assert words in s.why_not_vectorised
+    fields = tuple(vary)
+    for d in s.designs:  # the loop's numbers are a single sweep's too
+        c = single(name, fields, d.values, 36 if name != "double_slider" else None)
+        assert close(d.torque_peak, float(np.max(np.abs(c.torque))))
 
 
 def test_a_design_without_a_flywheel_says_why():
