@@ -7,7 +7,10 @@ and its compiled steps. Here their positions are laid end to end, design after d
 differs between them (a point in its link's frame, m, I_G, G, a weight, a load's value, ω, α) becomes an array
 with the design's own value at each of its positions (:func:`graphkin.kinematics.solver.plan_with`). The
 kinematic and force steps then run once over the whole batch, doing to each design's numbers what a solve of
-that design alone does: the same operations on the same numbers, so the same results.
+that design alone does. The results agree to rounding, not always to the last bit: one design alone works some
+constants out as Python numbers (a bar's e^{iθ} factor, conj(d)/|d|²), the batch as NumPy arrays, and the two
+round complex products and quotients differently in the last bit; a value that is the difference of larger ones
+(a couple that is nearly 0) then differs by the rounding of those (tests/analytical/test_designs.py).
 
 What cannot share a batch (:func:`batch_key` says why): a gear train (its gears' branches are sampled over a
 turn of each design alone) and a load that varies over the cycle (a table, a spring, a sense that follows the

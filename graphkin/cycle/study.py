@@ -17,7 +17,7 @@ designs that differ only in numbers the plan of the linkage holds -- a point's p
 G, a load's value or a counterweight's, the speed -- are laid end to end, each such number an array with the
 design's value at each of its positions, and the kinematic and force steps run once over them all, CHUNK
 positions at a time; the figures of merit are read off the (designs, positions) arrays at once. Each design's
-numbers are those of a sweep of it alone (the same operations on the same numbers). A design that cannot
+numbers are those of a sweep of it alone, to rounding (:mod:`graphkin.analytical.designs`). A design that cannot
 share a batch -- a slider driver, a gear train, a load that varies over the cycle (a table, a spring), values
 given at one position -- is swept on its own, and :attr:`Study.why_not_vectorised` says how many and why.
 """
@@ -306,14 +306,14 @@ def study(problem, vary: Mapping[str, Any], *, n: int | None = None, Cs: float =
             except GraphkinError as exc:
                 raise VaryError(field, f"{value!r}: {exc}") from None
     crank = build_problem(data, file=file, base=base).mechanism.driver.crank
-    designs, batches, alone = {}, {}, {}
+    designs, batches, alone, positions = {}, {}, {}, {}
     for index, values in enumerate(itertools.product(*grid)):
         try:
             p = _design_problem(data, fields, values, file, base)
         except GraphkinError as exc:  # each value builds alone: together these do not
             designs[index] = _unbuilt(values, str(exc))
             continue
-        key, q = _batch_key(p, n)
+        key, q = _batch_key(p, n, positions)
         if q is None:
             alone[index] = (values, p, key)
         else:
@@ -333,9 +333,9 @@ def study(problem, vary: Mapping[str, Any], *, n: int | None = None, Cs: float =
     return Study(file, fields, grid, tuple(designs[i] for i in range(len(designs))), n, Cs, not alone, why, crank)
 
 
-def _batch_key(p, n: int | None) -> tuple:
+def _batch_key(p, n: int | None, positions: dict) -> tuple:
     """What a design shares with the designs it can be solved with, and its positions; or why it is swept alone
-    and None."""
+    and None. ``positions`` keeps the positions found for each key: a batch's loads switch at the same angles."""
     if not p.mechanism.driver.crank:
         return "the driver is a slider", None
     if p.given:
@@ -345,7 +345,11 @@ def _batch_key(p, n: int | None) -> tuple:
     key, why = batch_key(p.mechanism)
     if key is None:
         return f"the linkage has {why}", None
-    q = sweep_positions(p, n)
+    # With n, the positions follow from the key (the driver, the loads' windows); else from the file's own too.
+    at = (key, n) if n is not None else (key, p.q.tobytes(), len(set(p.q_dot)) == 1 and len(set(p.q_ddot)) == 1)
+    if at not in positions:
+        positions[at] = sweep_positions(p, n)
+    q = positions[at]
     if q is None:
         return "the input rates vary with position", None
     return (key, q.tobytes(), p.static), q

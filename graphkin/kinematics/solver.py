@@ -10,8 +10,8 @@ numbers, bar lengths, the branch, messages) worked out once per mechanism by
 
 A constant may also be an array with one value per position: a batch of designs of one linkage laid end to end,
 each design's points repeated over its positions (:func:`plan_with`, used by
-:mod:`graphkin.analytical.designs`). The steps then do the same arithmetic on the same numbers, position by
-position; only a test of a constant against 0, which saves work for one design, is never made of such an array.
+:mod:`graphkin.analytical.designs`). The steps then do the same arithmetic, position by position; only a test of
+a constant against 0, which saves work for one design, is never made of such an array.
 """
 from __future__ import annotations
 
