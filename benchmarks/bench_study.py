@@ -11,8 +11,8 @@ CPU time (``time.process_time``) of one run each of
   2  the loop of single solves it replaces: per design, set_field on the file's data, build_problem, sweep, and
      the figures of merit read off the Cycle (what tests/cycle/test_study.py compares with)
 
-then where the study's time goes (its parts, timed inside one more run): building each design's problem from the
-file, the batched solve, sizing each design's flywheel; and the peak memory of a study (``tracemalloc``, a separate
+then where the study's time goes: building each design's problem from the file and the batched solve, each done on
+its own, and the rest (grouping the designs, the figures of merit); and the peak memory of a study (``tracemalloc``, a separate
 run) per design-position. The aims (issue 39): the study ≤ 2 s, ≥ 20× faster than the loop, ≤ 200 B per
 design-position.
 """
@@ -27,8 +27,9 @@ import tracemalloc
 import numpy as np
 
 from graphkin import catalog
+from graphkin.analytical.designs import solve_designs
 from graphkin.cycle import study, sweep
-from graphkin.cycle.study import merit
+from graphkin.cycle.study import BATCH, merit
 from graphkin.problem import build_problem
 from graphkin.problem.fields import set_field
 
@@ -49,32 +50,19 @@ def grid(designs: int) -> dict:
             "links[1].mass": [f"{x!r} kg" for x in np.linspace(1, 5, masses).tolist()]}
 
 
-def parts(vary: dict) -> dict:
-    """CPU time of the study's parts, from one run with its steps wrapped (the module's own names)."""
-    module = sys.modules["graphkin.cycle.study"]
-    spent = {}
-    names = {"_design_problem": "building each design's problem", "solve_designs": "the batched solve",
-             "size_flywheel": "each design's flywheel"}
-    saved = {name: getattr(module, name) for name in names}
+def parts(data: dict, vary: dict, designs: tuple, q: np.ndarray) -> dict:
+    """CPU time of the study's two large parts, done here on their own: building every design's problem from the
+    file's data, and solving them in batches of BATCH design-positions."""
+    problems, t_build = cpu(lambda: [_build(data, vary, d.values) for d in designs])
+    per = max(1, BATCH // len(q))
 
-    def timed(name, fn):
-        def run(*args, **kwargs):
-            t = time.process_time()
-            try:
-                return fn(*args, **kwargs)
-            finally:
-                spent[names[name]] = spent.get(names[name], 0.0) + time.process_time() - t
-        return run
+    def solve():
+        for s in range(0, len(problems), per):
+            part = problems[s:s + per]
+            solve_designs([p.mechanism for p in part], q, [p.q_dot[0] for p in part], [p.q_ddot[0] for p in part])
 
-    try:
-        for name, fn in saved.items():
-            setattr(module, name, timed(name, fn))
-        _, total = cpu(lambda: study("strip_cutter", vary, n=N))
-    finally:
-        for name, fn in saved.items():
-            setattr(module, name, fn)
-    spent["the rest (grouping, figures of merit)"] = total - sum(spent.values())
-    return spent
+    _, t_solve = cpu(solve)
+    return {"building each design's problem": t_build, "the batched solve": t_solve}
 
 
 def main(designs: int = 1000) -> int:
@@ -85,7 +73,8 @@ def main(designs: int = 1000) -> int:
     D, positions = len(s.designs), sweep(catalog.load("strip_cutter"), N).n
     assert all(d.ok for d in s.designs) and s.vectorised
     _, t_loop = cpu(lambda: [merit(sweep(_build(data, vary, d.values), N), d.values, s.Cs) for d in s.designs])
-    split = parts(vary)
+    split = parts(data, vary, s.designs, sweep(catalog.load("strip_cutter"), N).q)
+    split["the rest (grouping, figures of merit)"] = t_study - sum(split.values())
 
     tracemalloc.start()
     study("strip_cutter", vary, n=N)

@@ -37,9 +37,9 @@ import numpy as np
 from graphkin import catalog
 from graphkin.analytical.designs import Batch, batch_key, solve_designs
 from graphkin.cycle._sampling import sweep_positions
-from graphkin.cycle.flywheel import check_Cs, size_flywheel
+from graphkin.cycle.flywheel import check_Cs
 from graphkin.cycle.sweep import Cycle, sweep
-from graphkin.cycle.turn import TURN, closing_step, weights
+from graphkin.cycle.turn import TURN, closing_step, steps, weights
 from graphkin.errors import GraphkinError, ProblemFileError
 from graphkin.files import read_text
 from graphkin.geometry import zcross
@@ -55,7 +55,7 @@ __all__ = ["MAX_DESIGNS", "Design", "Study", "VaryError", "merit", "study"]
 MAX_DESIGNS = 100_000
 """The most designs one study solves (the product of the numbers of values of its fields)."""
 
-BATCH = 4 * CHUNK
+BATCH = CHUNK
 """Design-positions solved together: as many whole designs as fit (at least one). Their arrays (a few MB) are
 freed before the next batch, so a study's memory does not grow with its designs beyond their figures of merit."""
 
@@ -218,6 +218,14 @@ def _unbuilt(values: tuple, why: str) -> Design:
     return Design(values, nan, nan, {}, nan, nan, nan, nan, why, nan, "the design cannot be built")
 
 
+def _failed(values: tuple, names: list, count: int, q: np.ndarray, i: int, crank: bool, reason: str) -> Design:
+    """A design that has no solution at ``count`` of the positions ``q``, the first ``q[i]``, for ``reason``."""
+    nan = math.nan
+    return Design(values, nan, nan, dict.fromkeys(names, nan), nan, nan, nan, nan,
+                  f"no solution at {count} of the {len(q)} positions, the first at {position_text(q[i], crank)}: "
+                  f"{reason}", float(q[i]), "the design cannot be assembled over the whole cycle")
+
+
 def merit(cycle: Cycle, values: tuple, Cs: float) -> Design:
     """The figures of merit of one design's cycle (see :class:`Design`).
 
@@ -234,12 +242,8 @@ def merit(cycle: Cycle, values: tuple, Cs: float) -> Design:
     bad = np.flatnonzero(~cycle.valid)
     if len(bad):
         i = int(bad[0])
-        crank = cycle.problem.mechanism.driver.crank
-        failure = (f"no solution at {len(bad)} of the {cycle.n} positions, the first at "
-                   f"{position_text(cycle.q[i], crank)}: {cycle.analysis.reason(i)}")
-        nan = math.nan
-        return Design(values, nan, nan, dict.fromkeys(names, nan), nan, nan, nan, nan, failure, float(cycle.q[i]),
-                      "the design cannot be assembled over the whole cycle")
+        return _failed(values, names, len(bad), cycle.q, i, cycle.problem.mechanism.driver.crank,
+                       cycle.analysis.reason(i))
     T = cycle.torque
     peaks = cycle.peaks().forces
     why = cycle.why_no_flywheel()
@@ -316,13 +320,15 @@ def study(problem, vary: Mapping[str, Any], *, n: int | None = None, Cs: float =
         key, q = _batch_key(p, n, positions)
         if q is None:
             alone[index] = (values, p, key)
-        else:
-            batches.setdefault(key, (q, []))[1].append((index, values, p))
+            continue
+        members = batches.setdefault(key, (q, []))[1]
+        members.append((index, values, p))
+        if len(members) * len(q) >= BATCH:  # solved as soon as it is full: a study holds one batch at a time
+            designs.update(_solved(members, q, Cs))
+            members.clear()
     for q, members in batches.values():
-        per = max(1, BATCH // len(q))
-        for s in range(0, len(members), per):
-            part = members[s:s + per]
-            designs.update(zip((m[0] for m in part), _merits([m[2] for m in part], [m[1] for m in part], q, Cs)))
+        if members:
+            designs.update(_solved(members, q, Cs))
     for index, (values, p, _) in alone.items():
         designs[index] = merit(sweep(p, n), values, Cs)
     why = None
@@ -331,6 +337,11 @@ def study(problem, vary: Mapping[str, Any], *, n: int | None = None, Cs: float =
         why = (f"{len(alone)} of the {len(designs)} designs were swept one after another, not in a batch over "
                f"designs: {'; '.join(reasons)}")
     return Study(file, fields, grid, tuple(designs[i] for i in range(len(designs))), n, Cs, not alone, why, crank)
+
+
+def _solved(members: list, q: np.ndarray, Cs: float) -> dict:
+    """The Design of each of a batch's members ``(index, values, problem)``, by index."""
+    return dict(zip((m[0] for m in members), _merits([m[2] for m in members], [m[1] for m in members], q, Cs)))
 
 
 def _batch_key(p, n: int | None, positions: dict) -> tuple:
@@ -406,6 +417,39 @@ def _shaking(b: Batch, mech, pins) -> tuple[np.ndarray, np.ndarray]:
     return S, M - b.effort
 
 
+def _energy_swings(theta: np.ndarray, T: np.ndarray) -> np.ndarray:
+    """The energy swing E [J] of :func:`graphkin.cycle.flywheel.size_flywheel` for each row of ``T`` (designs, one
+    closed turn ``theta``), driven at its mean, by the same steps row by row; rows with nan give nan.
+
+    With m crossings of T and its mean in a row, the pulses' areas are padded with zeros to the row's length:
+    their running sum then stays at its last value, which changes neither its largest nor its smallest value.
+    """
+    k, n = T.shape
+    h = steps(theta, closing_step(theta))
+    T_avg = np.sum(0.5 * (T + np.roll(T, -1, axis=1)) * h, axis=1) / TURN
+    D = T - T_avg[:, None]
+    D_next = np.roll(D, -1, axis=1)
+    U = np.concatenate([np.zeros((k, 1)), np.cumsum(0.5 * (D + D_next) * h, axis=1)], axis=1)
+    cross = (D >= 0) != (D_next >= 0)
+    frac = D / (D - D_next)
+    at = theta + frac * h
+    U_c = U[:, :-1] + 0.5 * D * frac * h
+    wrap = at >= theta[0] + TURN * (1 - 1e-12)
+    at = np.where(wrap, at - TURN, at)
+    U_c = np.where(wrap, U_c - U[:, -1:], U_c)
+    # Each row's crossings in order of angle (the others after them), then the areas between them.
+    order = np.argsort(np.where(cross, at, np.inf), axis=1, kind="stable")
+    U_c = np.take_along_axis(np.where(cross, U_c, np.nan), order, axis=1)
+    m = cross.sum(axis=1)
+    rows = np.arange(k)
+    ends = np.append(U_c[:, 1:], np.full((k, 1), np.nan), axis=1)
+    ends[rows[m > 0], m[m > 0] - 1] = U_c[m > 0, 0] + U[m > 0, -1]
+    areas = np.where(np.arange(n) < m[:, None], ends - U_c, 0.0)
+    accumulated = np.cumsum(areas, axis=1)
+    E = np.maximum(accumulated.max(axis=1, initial=0.0), 0.0) - np.minimum(accumulated.min(axis=1, initial=0.0), 0.0)
+    return np.where(np.isfinite(T).all(axis=1), E, np.nan)
+
+
 def _merits(problems: list, values: list, q: np.ndarray, Cs: float) -> list[Design]:
     """The figures of merit of designs that share a batch (:func:`merit`'s, each design's to rounding)."""
     mech = problems[0].mechanism
@@ -426,24 +470,25 @@ def _merits(problems: list, values: list, q: np.ndarray, Cs: float) -> list[Desi
             u, v = A - B, B0 - B
             mu = np.arctan2(np.abs(zcross(u, v)), u.real * v.real + u.imag * v.imag)
             mu_min = np.min(np.minimum(mu, np.pi - mu), axis=1)
-    out, closed = [], closing_step(q) is not None
+        closed = closing_step(q) is not None
+        swing = _energy_swings(q, T) if closed else None  # where T does not cross its mean: 0/0, x/0, not read
+    out, whys = [], {}
     for d, (p, vals) in enumerate(zip(problems, values)):
         bad = np.flatnonzero(~b.valid[d])
         if len(bad):
-            i = int(bad[0])
-            nan = math.nan
-            out.append(Design(vals, nan, nan, dict.fromkeys(names, nan), nan, nan, nan, nan,
-                              f"no solution at {len(bad)} of the {N} positions, the first at "
-                              f"{position_text(q[i], True)}: {b.reason(d, i)}", float(q[i]),
-                              "the design cannot be assembled over the whole cycle"))
+            out.append(_failed(vals, names, len(bad), q, int(bad[0]), True, b.reason(d, int(bad[0]))))
             continue
         q_dot = np.full(N, p.q_dot[0])
-        # The design's own cycle's words for a flywheel it cannot have (a valid design of a crank: the speed).
-        why = Cycle.why_no_flywheel(SimpleNamespace(problem=p, closed=closed, valid=b.valid[d], q_dot=q_dot))
+        # The design's own cycle's words for a flywheel it cannot have: for a valid design of a crank they follow
+        # from its speed (and, at rest, whether its analysis is static), the same for designs that share them.
+        said = (p.q_dot[0], p.analysis)
+        if said not in whys:
+            whys[said] = Cycle.why_no_flywheel(SimpleNamespace(problem=p, closed=closed, valid=b.valid[d], q_dot=q_dot))
+        why = whys[said]
         out.append(Design(
             values=vals, torque_peak=float(peak[d]), torque_rms=math.sqrt(square[d]),
             joint_peaks={name: float(x[d]) for name, x in zip(names, joints)},
-            I_s=math.nan if why else size_flywheel(q, T[d], omega_avg=float(np.mean(q_dot)), Cs=Cs).I_s,
+            I_s=math.nan if why else float(swing[d]) / (Cs * float(np.mean(q_dot)) ** 2),
             shaking_force_peak=float(shaking_force[d]), shaking_moment_peak=float(shaking_moment[d]),
             transmission_angle_min=float(mu_min[d]) if four is not None else math.nan, no_flywheel=why))
     return out
