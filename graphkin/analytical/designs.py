@@ -25,13 +25,12 @@ from typing import Mapping, Sequence
 import numpy as np
 
 from graphkin.analytical.kinetostatics import _pass, _program
-from graphkin.analytical.loads import load_specs
 from graphkin.kinematics import Kinematics
 from graphkin.kinematics.plan import plan_of
 from graphkin.kinematics.solver import plan_with, run
 from graphkin.model import GearMesh, Mechanism, PointForce
 
-__all__ = ["Batch", "batch_key", "solve_designs"]
+__all__ = ["Batch", "batch_key", "numbers", "solve_designs"]
 
 NOT_FINITE = "the motion is not finite there (no group says why)"
 """:meth:`graphkin.kinematics.Kinematics.reason`'s words for a position no group explains."""
@@ -113,36 +112,51 @@ def _per_design(values: Sequence, N: int):
     return np.repeat(np.asarray(values), N)
 
 
-def _specs(base_specs: dict, mechs: Sequence[Mechanism], points: dict, N: int) -> dict:
+def numbers(mech: Mechanism) -> dict:
+    """The numbers of a design that a batch takes as arrays, by what they are.
+
+    ``("point", link, name)``: a named point in its link's frame [m], complex; ``("mass", link)`` [kg],
+    ``("I_G", link)`` [kg·m²] and ``("G", link)`` [m, complex] of each link; ``("load", i)``: the force [N, complex]
+    or torque [N·m] of the i-th load. Designs of one :func:`batch_key` have the same keys.
+    """
+    out = {("point", link.number, name): complex(x, y) for link in mech.links for name, (x, y) in link.points.items()}
+    for link in mech.links:
+        out["mass", link.number], out["I_G", link.number], out["G", link.number] = link.mass, link.I_G, complex(*link.G)
+    for i, load in enumerate(mech.loads):
+        out["load", i] = complex(*load.force) if isinstance(load, PointForce) else load.torque
+    return out
+
+
+def _specs(mech: Mechanism, designs: Sequence[dict], points: dict, N: int) -> dict:
     """:func:`graphkin.analytical.loads.load_specs` of the batch: each number one per design-position where the
     designs differ (the same expressions as for one design, design by design)."""
-    specs = {}
-    for link in base_specs:
-        bodies = [m.link(link) for m in mechs]
-        W = [-1j * b.mass * m.gravity if m.gravity and b.mass else 0j for b, m in zip(bodies, mechs)]
-        # The loads on the link in the order load_specs takes them (the designs' loads match one for one).
-        on = [[load for load in m.loads if load.link == link] for m in mechs]
-        pf = [[load for load in ls if isinstance(load, PointForce)] for ls in on]
-        tq = [[load for load in ls if not isinstance(load, PointForce)] for ls in on]
-        specs[link] = (
-            _per_design([b.mass for b in bodies], N), _per_design([b.I_G for b in bodies], N),
-            _per_design([complex(*b.G) for b in bodies], N), _per_design(W, N),
-            [(points[link, load.point], _per_design([complex(*ls[i].force) for ls in pf], N), load.active)
-             for i, load in enumerate(pf[0])],
-            [(_per_design([ls[i].torque for ls in tq], N), load.active) for i, load in enumerate(tq[0])],
-            [],
-        )
+    def each(key):
+        return _per_design([d[key] for d in designs], N)
+
+    g, specs = mech.gravity, {}
+    for link in mech.moving:
+        W = [-1j * d["mass", link] * g if g and d["mass", link] else 0j for d in designs]
+        # The loads on the link in the order load_specs takes them (every design has the same loads).
+        loads = [(i, load) for i, load in enumerate(mech.loads) if load.link == link]
+        specs[link] = (each(("mass", link)), each(("I_G", link)), each(("G", link)), _per_design(W, N),
+                       [(points[link, load.point], each(("load", i)), load.active)
+                        for i, load in loads if isinstance(load, PointForce)],
+                       [(each(("load", i)), load.active) for i, load in loads if not isinstance(load, PointForce)],
+                       [])
     return specs
 
 
-def solve_designs(mechs: Sequence[Mechanism], q, q_dot, q_ddot, *, static: bool = False,
+def solve_designs(mech: Mechanism, designs: Sequence[dict], q, q_dot, q_ddot, *, static: bool = False,
                   points: Sequence[tuple] = ()) -> Batch:
     """Kinematics and kinetostatics of k designs of one linkage at the same N positions, as one batch.
 
     Parameters
     ----------
-    mechs : sequence of Mechanism
-        The designs, all with one :func:`batch_key` (not None).
+    mech : Mechanism
+        One of the designs, with a :func:`batch_key` (not None): its links, joints, loads and driver are every
+        design's.
+    designs : sequence of dict
+        Each design's :func:`numbers`.
     q : ndarray, shape (N,)
         Input positions [rad or m], every design's.
     q_dot, q_ddot : sequence of float, length k
@@ -155,16 +169,22 @@ def solve_designs(mechs: Sequence[Mechanism], q, q_dot, q_ddot, *, static: bool 
     Returns
     -------
     Batch
-        Each design's numbers those of a solve of that design alone
+        Each design's numbers those of a solve of that design alone, to rounding
         (:func:`graphkin.analytical.solve_forces` of :func:`graphkin.kinematics.solve_kinematics`).
+
+    Examples
+    --------
+    >>> from graphkin import catalog
+    >>> m = catalog.load("strip_cutter").mechanism
+    >>> longer = numbers(m) | {("point", 2, "A"): 0.09 + 0j}
+    >>> b = solve_designs(m, [numbers(m), longer], np.radians([0.0, 90.0]), [94.25] * 2, [0.0] * 2)
+    >>> b.effort.shape, bool(b.valid.all())
+    ((2, 2), True)
     """
-    mech, k, N = mechs[0], len(mechs), len(q)
+    k, N = len(designs), len(q)
     base = plan_of(mech)
-    keys = list(base.points)
-    table = [{(link.number, name): complex(x, y) for link in m.links for name, (x, y) in link.points.items()}
-             for m in mechs]
-    plan = plan_with(base, {key: _per_design([t[key] for t in table], N) for key in keys})
-    plan.compiled["loads"] = _specs(load_specs(base, mech), mechs, plan.points, N)
+    plan = plan_with(base, {key: _per_design([d[("point", *key)] for d in designs], N) for key in base.points})
+    plan.compiled["loads"] = _specs(mech, designs, plan.points, N)
     w, al = _per_design(list(q_dot), N), _per_design(list(q_ddot), N)
     rates = (float(w), float(al)) if not (np.ndim(w) or np.ndim(al)) else (None, None)
     n = k * N

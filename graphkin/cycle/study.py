@@ -5,18 +5,21 @@ the whole cycle: the peak and RMS driving torque, the flywheel it needs, the pea
 shaking force and moment on the frame, the smallest transmission angle (Norton, *Design of Machinery*, ch. 11).
 :func:`study` varies fields of a problem file, named by their paths as exercises name them
 (:mod:`graphkin.problem.fields`: ``"links[0].points.A"``, ``"links[1].mass"``), over the grid of every
-combination of their values, and reads those figures of merit off each design's :class:`~graphkin.cycle.Cycle`.
+combination of their values, and reads those figures of merit off each design's cycle.
 
-Each design is the problem file with the values put in, built by :func:`graphkin.problem.build_problem`, so it
+Each design is the problem file with the values put in, as :func:`graphkin.problem.build_problem` reads it, so it
 keeps the branch its file states (``[assembly]``); a design that cannot be assembled at some position of its
 cycle is marked with the first such position and the reason, and its figures of merit are nan (a peak over part
-of a cycle would look better than the design is).
+of a cycle would look better than the design is). The file is read once with each field's value alone: where
+each field changes a part of the linkage no other field changes (a link's points, a link's mass, I_G and G, a
+load, the speed: :func:`_changes`), a design's numbers are the file's with each field's changes put in, and no
+file is read per design; else each design is read from its own file.
 
 The designs are solved together, designs × positions as one batch (:func:`graphkin.analytical.designs.solve_designs`):
 designs that differ only in numbers the plan of the linkage holds -- a point's place on its link, a mass, I_G,
 G, a load's value or a counterweight's, the speed -- are laid end to end, each such number an array with the
-design's value at each of its positions, and the kinematic and force steps run once over them all, CHUNK
-positions at a time; the figures of merit are read off the (designs, positions) arrays at once. Each design's
+design's value at each of its positions, and the kinematic and force steps run once over them all, BATCH
+design-positions at a time; the figures of merit are read off the (designs, positions) arrays at once. Each design's
 numbers are those of a sweep of it alone, to rounding (:mod:`graphkin.analytical.designs`). A design that cannot
 share a batch -- a slider driver, a gear train, a load that varies over the cycle (a table, a spring), values
 given at one position -- is swept on its own, and :attr:`Study.why_not_vectorised` says how many and why.
@@ -35,7 +38,7 @@ from typing import Any, Mapping
 import numpy as np
 
 from graphkin import catalog
-from graphkin.analytical.designs import Batch, batch_key, solve_designs
+from graphkin.analytical.designs import Batch, batch_key, numbers, solve_designs
 from graphkin.cycle._sampling import sweep_positions
 from graphkin.cycle.flywheel import check_Cs
 from graphkin.cycle.sweep import Cycle, sweep
@@ -301,34 +304,37 @@ def study(problem, vary: Mapping[str, Any], *, n: int | None = None, Cs: float =
     Cs = check_Cs(Cs)
     data, file, base = _problem_data(problem)
     fields, grid = _grid(data, vary)
-    for field, values in zip(fields, grid):  # each field's values alone in the file: a fault named by its field
-        for value in values:
+    singles = [[_single(data, field, value, file, base) for value in values] for field, values in zip(fields, grid)]
+    first = build_problem(data, file=file, base=base)
+    positions: dict = {}
+    changes = _changes(first, singles, n, positions)
+    designs, batches, alone = {}, {}, {}
+    for index, at in enumerate(itertools.product(*(range(len(v)) for v in grid))):
+        values = tuple(v[i] for v, i in zip(grid, at))
+        if changes is not None:  # the file's numbers with each field's own put in (see _changes)
+            own = dict(changes[0])
+            for field, i in enumerate(at):
+                own.update(changes[1][field][i])
+            shape, (key, q), member = first, changes[2], (own, *own.pop(RATES))
+        else:
             try:
-                _design_problem(data, (field,), (value,), file, base)
-            except ProblemFileError as exc:  # the file's words for the fault, less the design's name
-                raise VaryError(field, f"{value!r}: " + (exc.message if exc.field == field else str(exc))) from None
-            except GraphkinError as exc:
-                raise VaryError(field, f"{value!r}: {exc}") from None
-    crank = build_problem(data, file=file, base=base).mechanism.driver.crank
-    designs, batches, alone, positions = {}, {}, {}, {}
-    for index, values in enumerate(itertools.product(*grid)):
-        try:
-            p = _design_problem(data, fields, values, file, base)
-        except GraphkinError as exc:  # each value builds alone: together these do not
-            designs[index] = _unbuilt(values, str(exc))
-            continue
-        key, q = _batch_key(p, n, positions)
-        if q is None:
-            alone[index] = (values, p, key)
-            continue
-        members = batches.setdefault(key, (q, []))[1]
-        members.append((index, values, p))
+                shape = _design_problem(data, fields, values, file, base)
+            except GraphkinError as exc:  # each value builds alone: together these do not
+                designs[index] = _unbuilt(values, str(exc))
+                continue
+            key, q = _batch_key(shape, n, positions)
+            if q is None:
+                alone[index] = (values, shape, key)
+                continue
+            member = (numbers(shape.mechanism), shape.q_dot[0], shape.q_ddot[0])
+        shape, q, members = batches.setdefault(key, (shape, q, []))
+        members.append((index, values, *member))
         if len(members) * len(q) >= BATCH:  # solved as soon as it is full: a study holds one batch at a time
-            designs.update(_solved(members, q, Cs))
+            designs.update(_merits(shape, members, q, Cs))
             members.clear()
-    for q, members in batches.values():
+    for shape, q, members in batches.values():
         if members:
-            designs.update(_solved(members, q, Cs))
+            designs.update(_merits(shape, members, q, Cs))
     for index, (values, p, _) in alone.items():
         designs[index] = merit(sweep(p, n), values, Cs)
     why = None
@@ -336,12 +342,64 @@ def study(problem, vary: Mapping[str, Any], *, n: int | None = None, Cs: float =
         reasons = sorted({key for _, _, key in alone.values()})
         why = (f"{len(alone)} of the {len(designs)} designs were swept one after another, not in a batch over "
                f"designs: {'; '.join(reasons)}")
+    crank = first.mechanism.driver.crank
     return Study(file, fields, grid, tuple(designs[i] for i in range(len(designs))), n, Cs, not alone, why, crank)
 
 
-def _solved(members: list, q: np.ndarray, Cs: float) -> dict:
-    """The Design of each of a batch's members ``(index, values, problem)``, by index."""
-    return dict(zip((m[0] for m in members), _merits([m[2] for m in members], [m[1] for m in members], q, Cs)))
+def _single(data: dict, field: str, value, file: str, base):
+    """The problem with one field's value put in; a fault is named by the field."""
+    try:
+        return _design_problem(data, (field,), (value,), file, base)
+    except ProblemFileError as exc:  # the file's words for the fault, less the design's name
+        raise VaryError(field, f"{value!r}: " + (exc.message if exc.field == field else str(exc))) from None
+    except GraphkinError as exc:
+        raise VaryError(field, f"{value!r}: {exc}") from None
+
+
+RATES = ("rates",)
+"""The key of a design's input speed and acceleration among its numbers (:func:`_changes`)."""
+
+
+def _part(key: tuple) -> tuple:
+    """The part of a linkage a number belongs to, as the model checks it: a link's points (its pins' distances), a
+    link's body (mass, I_G, G), a load, the input's rates."""
+    return ("link", key[1]) if key[0] == "point" else ("body", key[1]) if key[0] in ("mass", "I_G", "G") else key
+
+
+def _changes(first, singles: list, n: int | None, positions: dict):
+    """How each field's values change the file's numbers, if the designs need not be read from the file one by one.
+
+    They need not when each value alone gives a linkage of the file's batch (:func:`_batch_key`: the same links,
+    joints, loads, branch and positions) and no two fields change the same part (:func:`_part`): then a design is
+    the file's numbers with each field's changes put in, the numbers its own file would give, and it builds as
+    each of its values alone builds (the model's checks of numbers are of one part at a time: a link's pins). Two
+    fields that change one part (a mass and the radius of gyration of one link, two points of one link) are read
+    design by design.
+
+    Returns
+    -------
+    tuple or None
+        The file's numbers (:func:`graphkin.analytical.designs.numbers`, the rates under :data:`RATES`); for each
+        field and value, the numbers of the parts the field changes; and the file's batch key and positions.
+        None if the designs are to be read one by one.
+    """
+    key, q = _batch_key(first, n, positions)
+    if q is None:
+        return None
+    own = numbers(first.mechanism) | {RATES: (first.q_dot[0], first.q_ddot[0])}
+    out, taken = [], set()
+    for problems in singles:
+        theirs = []
+        for p in problems:
+            if _batch_key(p, n, positions)[0] != key:
+                return None
+            theirs.append(numbers(p.mechanism) | {RATES: (p.q_dot[0], p.q_ddot[0])})
+        parts = {_part(x) for x in own for mine in theirs if mine[x] != own[x]}
+        if parts & taken:
+            return None
+        taken |= parts
+        out.append([{x: mine[x] for x in own if _part(x) in parts} for mine in theirs])
+    return own, out, (key, q)
 
 
 def _batch_key(p, n: int | None, positions: dict) -> tuple:
@@ -450,12 +508,16 @@ def _energy_swings(theta: np.ndarray, T: np.ndarray) -> np.ndarray:
     return np.where(np.isfinite(T).all(axis=1), E, np.nan)
 
 
-def _merits(problems: list, values: list, q: np.ndarray, Cs: float) -> list[Design]:
-    """The figures of merit of designs that share a batch (:func:`merit`'s, each design's to rounding)."""
-    mech = problems[0].mechanism
+def _merits(shape, members: list, q: np.ndarray, Cs: float) -> dict:
+    """The figures of merit of designs that share a batch (:func:`merit`'s, each design's to rounding), by index.
+
+    ``shape`` is one of the designs' problems (their links, joints, loads, analysis); ``members`` are
+    ``(index, values, numbers, q_dot, q_ddot)``.
+    """
+    mech = shape.mechanism
     four = _four_bar(mech)
-    b = solve_designs([p.mechanism for p in problems], q, [p.q_dot[0] for p in problems],
-                      [p.q_ddot[0] for p in problems], static=problems[0].static,
+    b = solve_designs(mech, [m[2] for m in members], q, [m[3] for m in members], [m[4] for m in members],
+                      static=shape.static,
                       points=[at for _, _, at in _frame_pins(mech, [j.links for j in mech.joints])] + list(four or ()))
     pins = _frame_pins(mech, b.forces)  # in the order a Cycle sums them
     names = [force_name(mech, i, j) for (i, j) in b.forces]
@@ -472,23 +534,22 @@ def _merits(problems: list, values: list, q: np.ndarray, Cs: float) -> list[Desi
             mu_min = np.min(np.minimum(mu, np.pi - mu), axis=1)
         closed = closing_step(q) is not None
         swing = _energy_swings(q, T) if closed else None  # where T does not cross its mean: 0/0, x/0, not read
-    out, whys = [], {}
-    for d, (p, vals) in enumerate(zip(problems, values)):
+    out, whys = {}, {}
+    for d, (index, vals, _, w, _) in enumerate(members):
         bad = np.flatnonzero(~b.valid[d])
         if len(bad):
-            out.append(_failed(vals, names, len(bad), q, int(bad[0]), True, b.reason(d, int(bad[0]))))
+            out[index] = _failed(vals, names, len(bad), q, int(bad[0]), True, b.reason(d, int(bad[0])))
             continue
-        q_dot = np.full(N, p.q_dot[0])
+        q_dot = np.full(N, w)
         # The design's own cycle's words for a flywheel it cannot have: for a valid design of a crank they follow
-        # from its speed (and, at rest, whether its analysis is static), the same for designs that share them.
-        said = (p.q_dot[0], p.analysis)
-        if said not in whys:
-            whys[said] = Cycle.why_no_flywheel(SimpleNamespace(problem=p, closed=closed, valid=b.valid[d], q_dot=q_dot))
-        why = whys[said]
-        out.append(Design(
+        # from its speed (and, at rest, whether its analysis is static, which a batch shares).
+        if w not in whys:
+            whys[w] = Cycle.why_no_flywheel(SimpleNamespace(problem=shape, closed=closed, valid=b.valid[d], q_dot=q_dot))
+        why = whys[w]
+        out[index] = Design(
             values=vals, torque_peak=float(peak[d]), torque_rms=math.sqrt(square[d]),
             joint_peaks={name: float(x[d]) for name, x in zip(names, joints)},
             I_s=math.nan if why else float(swing[d]) / (Cs * float(np.mean(q_dot)) ** 2),
             shaking_force_peak=float(shaking_force[d]), shaking_moment_peak=float(shaking_moment[d]),
-            transmission_angle_min=float(mu_min[d]) if four is not None else math.nan, no_flywheel=why))
+            transmission_angle_min=float(mu_min[d]) if four is not None else math.nan, no_flywheel=why)
     return out

@@ -17,7 +17,7 @@ from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
 from graphkin.analytical import solve_forces
-from graphkin.analytical.designs import batch_key, solve_designs
+from graphkin.analytical.designs import batch_key, numbers, solve_designs
 from graphkin.errors import GraphkinError
 from graphkin.kinematics import solve_kinematics
 from graphkin.model import PointForce
@@ -78,7 +78,7 @@ def test_each_design_of_a_batch_equals_a_solve_of_it_alone(family, data):
     al = [data.draw(rate) * 10] * len(designs)
     q = case.q
 
-    b = solve_designs(designs, q, w, al)
+    b = solve_designs(mech, [numbers(m) for m in designs], q, w, al)
 
     for d, m in enumerate(designs):
         kin = solve_kinematics(m, q, w[d], al[d])

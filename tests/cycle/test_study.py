@@ -99,6 +99,19 @@ def test_a_random_grid_of_designs_equals_single_sweeps(data):
     assert_single_sweeps(name, vary, n, s)
 
 
+@pytest.mark.parametrize("vary", [
+    # Each field its own part (a link's points, a link's body, a load, the speed): the file's numbers with each
+    # field's changes put in, no file read per design.
+    {"frame.points.B0[0]": ["540 mm", "600 mm"], "links[0].points.A[0]": ["80 mm", "95 mm"],
+     "loads[1].force.magnitude": ["1000 N", "3000 N"], "driver.omega": ["600 rpm", "1200 rpm"]},
+    # Two fields of one part (the coupler's mass and radius of gyration both set its I_G): read design by design.
+    {"links[1].mass": ["1 kg", "4 kg"], "links[1].k": ["150 mm", "300 mm"]},
+])
+def test_fields_of_their_own_parts_or_of_one_part_equal_single_sweeps(vary):
+    s = study("strip_cutter", vary, n=40, Cs=0.03)
+    assert s.vectorised and assert_single_sweeps("strip_cutter", vary, 40, s) == 0
+
+
 def assert_single_sweeps(name, vary, n, s) -> int:
     """Each design of the study ``s`` against a single sweep of it; returns how many cannot be assembled."""
     fields = tuple(vary)
