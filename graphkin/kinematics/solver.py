@@ -37,7 +37,7 @@ from graphkin.ranges import MAX_POSITIONS, RANGES, as_array
 
 def is_zero(x) -> bool:
     """Whether a constant is the number 0 (an array of a batch of designs' values never is: see the module)."""
-    return not np.ndim(x) and x == 0
+    return not isinstance(x, np.ndarray) and x == 0
 
 
 def rows(x, y) -> np.ndarray:
