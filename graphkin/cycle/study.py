@@ -21,8 +21,8 @@ G, a load's value or a counterweight's, the speed -- are laid end to end, each s
 design's value at each of its positions, and the kinematic and force steps run once over them all, BATCH
 design-positions at a time; the figures of merit are read off the (designs, positions) arrays at once. Each design's
 numbers are those of a sweep of it alone, to rounding (:mod:`graphkin.analytical.designs`). A design that cannot
-share a batch -- a slider driver, a gear train, a load that varies over the cycle (a table, a spring), values
-given at one position -- is swept on its own, and :attr:`Study.why_not_vectorised` says how many and why.
+share a batch -- a gear train, a load that varies over the cycle (a table, a spring), values given at one
+position -- is swept on its own, and :attr:`Study.why_not_vectorised` says how many and why.
 """
 
 from __future__ import annotations
@@ -405,8 +405,9 @@ def _changes(first, singles: list, n: int | None, positions: dict):
 def _batch_key(p, n: int | None, positions: dict) -> tuple:
     """What a design shares with the designs it can be solved with, and its positions; or why it is swept alone
     and None. ``positions`` keeps the positions found for each key: a batch's loads switch at the same angles."""
-    if not p.mechanism.driver.crank:
-        return "the driver is a slider", None
+    driver = p.mechanism.joint_between(p.mechanism.frame, p.mechanism.driver.link)
+    if not p.mechanism.driver.crank and driver.guide != p.mechanism.frame:
+        return "the driver slides on a guide of its own, not the frame's", None
     if p.given:
         return "the problem gives kinematic values ([given]) that hold at one position", None
     if p.unknown is not None:
@@ -472,7 +473,12 @@ def _shaking(b: Batch, mech, pins) -> tuple[np.ndarray, np.ndarray]:
         M = M + zcross(b.points[at], -F)
         if isinstance(joint, Prismatic):
             M = M - b.couple[(mech.frame, j)]
-    return S, M - b.effort
+    if mech.driver.crank:
+        return S, M - b.effort
+    # A slider driver's actuator pushes along the frame's guide: F1j = effort u, at the slider's point.
+    joint = mech.joint_between(mech.frame, mech.driver.link)
+    F = b.effort * np.exp(1j * joint.direction)
+    return S - F, M + zcross(b.points[joint.slider, joint.point], -F)
 
 
 def _energy_swings(theta: np.ndarray, T: np.ndarray) -> np.ndarray:
@@ -538,7 +544,7 @@ def _merits(shape, members: list, q: np.ndarray, Cs: float) -> dict:
     for d, (index, vals, _, w, _) in enumerate(members):
         bad = np.flatnonzero(~b.valid[d])
         if len(bad):
-            out[index] = _failed(vals, names, len(bad), q, int(bad[0]), True, b.reason(d, int(bad[0])))
+            out[index] = _failed(vals, names, len(bad), q, int(bad[0]), mech.driver.crank, b.reason(d, int(bad[0])))
             continue
         q_dot = np.full(N, w)
         # The design's own cycle's words for a flywheel it cannot have: for a valid design of a crank they follow
