@@ -1,22 +1,20 @@
-"""Design-study benchmark: 1000 designs × 360 crank angles of the strip cutter (issue 39).
+"""Design-study benchmark: 1000 designs × 360 crank angles of the strip cutter, a four-bar (issue 39).
 
-Run directly: ``.venv/bin/python benchmarks/bench_study.py [designs]``.
+Run from the repository: ``PYTHONPATH=. .venv/bin/python benchmarks/bench_study.py [designs]``.
 
 The designs: 40 crank lengths A0A from 80 to 90 mm × 25 coupler masses from 1 to 5 kg (every one turns fully), each
 swept over 360 crank angles (364 positions with the samples either side of the cutting force's switching angles).
-CPU time (``time.process_time``) of one run each:
+CPU time (``time.process_time``) of one run each of
 
-  1  ``study(...)``: the whole study, as a user calls it
-  2  the loop of single solves: per design, set_field on the file's data, build_problem, sweep, and the figures
-     of merit read off the Cycle (what the equality test does)
-  3  its parts, summed over the designs: building the problems, the sweeps, the figures of merit
-  4  for reference, the floor a broadcast over designs would approach: one design swept at D·N positions in one
-     batch, and 5 the arrays its figures of merit are read from (peaks, shaking force and moment, μ)
+  1  ``study(...)``, as a user calls it: the designs solved in batches over designs × positions
+     (graphkin/analytical/designs.py), the figures of merit read off the (designs, positions) arrays
+  2  the loop of single solves it replaces: per design, set_field on the file's data, build_problem, sweep, and
+     the figures of merit read off the Cycle (what tests/cycle/test_study.py compares with)
 
-and the peak memory of the study (``tracemalloc``, a separate run) per design-position. The aims (issue 39):
-the study ≤ 2 s and ≥ 20× faster than the loop, ≤ 200 B per design-position. Today the study *is* a loop over
-designs (``Study.vectorised`` is False: see graphkin/cycle/study.py for what a broadcast needs), so row 1 ≈ row 2
-and the speed-up aim is NOT MET by construction; rows 3 say where the time goes.
+then where the study's time goes: the batched solve (done again on its own) and the rest (reading the file and each
+field's values, the figures of merit); and the peak memory of a study (``tracemalloc``, a separate
+run) per design-position. The aims (issue 39): the study ≤ 2 s, ≥ 20× faster than the loop, ≤ 200 B per
+design-position.
 """
 
 from __future__ import annotations
@@ -29,8 +27,9 @@ import tracemalloc
 import numpy as np
 
 from graphkin import catalog
+from graphkin.analytical.designs import numbers, solve_designs
 from graphkin.cycle import study, sweep
-from graphkin.cycle.study import merit
+from graphkin.cycle.study import BATCH, merit
 from graphkin.problem import build_problem
 from graphkin.problem.fields import set_field
 
@@ -51,24 +50,30 @@ def grid(designs: int) -> dict:
             "links[1].mass": [f"{x!r} kg" for x in np.linspace(1, 5, masses).tolist()]}
 
 
+def batched_solve(data: dict, vary: dict, designs: tuple, q: np.ndarray) -> float:
+    """CPU time of the study's batched solve alone: every design's numbers, BATCH design-positions at a time."""
+    problems = [_build(data, vary, d.values) for d in designs]
+    mech, per = problems[0].mechanism, max(1, BATCH // len(q))
+    own = [numbers(p.mechanism) for p in problems]
+
+    def solve():
+        for s in range(0, len(problems), per):
+            part = problems[s:s + per]
+            solve_designs(mech, own[s:s + per], q, [p.q_dot[0] for p in part], [p.q_ddot[0] for p in part])
+
+    return cpu(solve)[1]
+
+
 def main(designs: int = 1000) -> int:
     vary = grid(designs)
     data = tomllib.loads(catalog.path("strip_cutter").read_text(encoding="utf-8"))
     study("strip_cutter", {"links[1].mass": ["2 kg"]}, n=N)  # warm-up: imports, pint's registry
     s, t_study = cpu(lambda: study("strip_cutter", vary, n=N))
     D, positions = len(s.designs), sweep(catalog.load("strip_cutter"), N).n
-    assert all(d.ok for d in s.designs)
-
-    problems, t_build = cpu(lambda: [_build(data, vary, d.values) for d in s.designs])
-    cycles, t_sweep = cpu(lambda: [sweep(p, N) for p in problems])
-    _, t_merit = cpu(lambda: [merit(c, d.values, s.Cs) for c, d in zip(cycles, s.designs)])
+    assert all(d.ok for d in s.designs) and s.vectorised
     _, t_loop = cpu(lambda: [merit(sweep(_build(data, vary, d.values), N), d.values, s.Cs) for d in s.designs])
-    # The floor a broadcast over designs would approach: one mechanism swept at D·N positions in one batch, and
-    # the arrays the figures of merit are read from (the same work per position, no per-design Python).
-    at = np.linspace(0.0, 2 * np.pi, len(s.designs) * sweep(problems[0], N).n, endpoint=False)
-    batch, t_batch = cpu(lambda: sweep(problems[0], at=at))
-    _, t_arrays = cpu(lambda: (batch.peaks(), batch.shaking_force(), batch.shaking_moment(),
-                               batch.transmission_angle()))
+    t_solve = batched_solve(data, vary, s.designs, sweep(catalog.load("strip_cutter"), N).q)
+    split = {"the batched solve": t_solve, "the rest (reading the file, figures of merit)": t_study - t_solve}
 
     tracemalloc.start()
     study("strip_cutter", vary, n=N)
@@ -78,12 +83,12 @@ def main(designs: int = 1000) -> int:
     cells = D * positions
     print(f"strip cutter: {D} designs × {positions} positions = {cells:,} design-positions "
           f"(vectorised over designs: {s.vectorised})")
-    rows = [("1 study(...)", t_study), ("2 loop of single solves", t_loop), ("3a   build_problem", t_build),
-            ("3b   sweep", t_sweep), ("3c   figures of merit", t_merit),
-            ("4 one sweep of D·N positions", t_batch), ("5   its figures' arrays", t_arrays)]
-    print(f"{'':28}{'CPU s':>9}{'µs/design-position':>20}{'ms/design':>11}")
-    for name, t in rows:
-        print(f"{name:28}{t:9.3f}{1e6 * t / cells:20.3f}{1e3 * t / D:11.3f}")
+    print(f"{'':28}{'CPU s':>9}{'designs/s':>12}{'µs/design-position':>20}{'speed-up':>10}")
+    for name, t in (("study(...)", t_study), ("loop of single solves", t_loop)):
+        print(f"{name:28}{t:9.3f}{D / t:12.0f}{1e6 * t / cells:20.3f}{t_loop / t:9.2f}×")
+    print("the study's time:")
+    for name, t in split.items():
+        print(f"  {name:48}{t:9.3f} s{1e6 * t / cells:10.3f} µs/design-position")
     per_cell = peak / cells
     print(f"peak memory of the study: {peak / 1e6:.1f} MB, {per_cell:.1f} B per design-position")
     scale = 1000 / D

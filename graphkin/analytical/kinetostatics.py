@@ -37,7 +37,7 @@ from graphkin.geometry import zdot as dot
 from graphkin.kinematics import DriverGroup, Dyad, GearGroup, Kinematics
 from graphkin.kinematics.groups import solve_columns
 from graphkin.kinematics.plan import Plan, plan_of
-from graphkin.kinematics.solver import CHUNK, deferred_kinematics, prepare, run
+from graphkin.kinematics.solver import CHUNK, deferred_kinematics, prepare, rows, run
 from graphkin.model import Mechanism, Prismatic, Revolute
 
 
@@ -210,7 +210,8 @@ def _solve_dyad_with_friction(kin, d, L, M, failures):
 # account themselves, as moments about the dyad's middle pin or the crank's pivot, from the arms and rates of
 # the kinematic pass (or from the Kinematics, worked out once). Loads from elsewhere (external loads, weight,
 # the reactions of groups solved before) arrive in L (force) and M (moment about the origin); a link with none
-# has no entry, and costs nothing.
+# has no entry, and costs nothing. Each link's m, I_G and G come from the plan's load specs (load_specs), which a
+# batch of designs (graphkin.analytical.designs) fills with one value per position where its designs differ.
 
 
 def _add(d, key, x):
@@ -228,12 +229,13 @@ def _rrr(plan: Plan, mech: Mechanism, d: Dyad):
     P, frame = plan.points, plan.frame
     a, b, j, k = d.a, d.b, d.j, d.k
     pa, pb, pk2 = P[a, d.J1.point], P[b, d.J3.point], P[k, d.J2.point]
-    bj, bk = mech.link(j), mech.link(k)
+    specs = load_specs(plan, mech)
+    (mj, Ij, Gj), (mk, Ik, Gk) = specs[j][:3], specs[k][:3]
     # Rows j and k: G from the outer pin (J1 on j, J3 on k) in the link's frame, −m, I_G.
-    G_out = np.array([[complex(*bj.G) - P[j, d.J1.point]], [complex(*bk.G) - P[k, d.J3.point]]])
-    minus_m = np.array([[-bj.mass], [-bk.mass]])
-    I_G = np.array([[bj.I_G], [bk.I_G]])
-    heavy = bool(bj.mass or bk.mass or bj.I_G or bk.I_G)
+    G_out = rows(Gj - P[j, d.J1.point], Gk - P[k, d.J3.point])
+    minus_m = rows(-mj, -mk)
+    I_G = rows(Ij, Ik)
+    heavy = any(map(np.any, (mj, mk, Ij, Ik)))
     sigma = mech.assembly.get(d.key, 1)  # det = r12 × r23 = −σ |det|; the force equations' is −det
     sign1 = 1.0 if j > a else -1.0  # stored as the force of the lower-numbered link on the higher
     sign2 = 1.0 if k > j else -1.0
@@ -315,26 +317,28 @@ def _crank(plan: Plan, mech: Mechanism, g: DriverGroup):
     link, name = g.link, g.joint.point
     X = plan.points[plan.frame, name]
     p0 = plan.points[link, name]
-    body = mech.link(link)
-    m, I_G, G = body.mass, body.I_G, complex(*body.G) - p0  # G from the pivot, in the crank's frame
+    m, I_G, G = load_specs(plan, mech)[link][:3]
+    G = G - p0  # G from the pivot, in the crank's frame
     key = (min(plan.frame, link), max(plan.frame, link))
+    # Tests of the constants made once (np.any: one value per design-position in a batch of designs).
+    swings, spins, off = bool(np.any(m) and np.any(G)), bool(np.any(I_G)), bool(np.any(X))
 
     def forces(kin, L, M, out, loop):
         F, T = L.get(link, 0.0), M.get(link, 0.0)  # loads from elsewhere; T about the origin
         if not kin.static:
-            if m and G:
+            if swings:
                 w, al = kin.omega[link], kin.alpha[link]
                 rho = kin.e[link] * G
                 Fi = (1j * al - w * w) * rho * -m
                 F = F + Fi
                 T = T + cross(X + rho, Fi)
-            if I_G:
+            if spins:
                 al0 = getattr(kin, "al0", None)  # the solver's state knows a constant input acceleration
                 T = T - (kin.alpha[link] if al0 is None else al0) * I_G
         # The pivot's force balances the rest; the driving torque balances the moments about the origin.
         F = -F
         out[key] = F if link > plan.frame else -F
-        return -(T + cross(X, F)) if X else -T
+        return -(T + cross(X, F)) if off else -T
 
     return forces
 

@@ -277,7 +277,7 @@ def _external_fast(kin, link: int, spec, L, M) -> None:
     spec (:func:`load_specs`); a link with no external load gets no entry.
     """
     m, I_G, pG, W, forces, torques, varying = spec
-    if W:
+    if some(W):
         zG = kin.O[link] + kin.e[link] * pG
         _accumulate(L, M, link, W, cross(zG, W))
     for p, f, active in forces:
@@ -298,13 +298,18 @@ def _inertia_fast(kin, link: int, spec, L, M) -> None:
     m, I_G, pG, W, forces, torques, varying = spec
     if kin.static:
         return
-    if m:
+    if some(m):
         r = kin.e[link] * pG
         w = kin.omega[link]
         F = (kin.a_O[link] + (1j * kin.alpha[link] - w * w) * r) * -m
         _accumulate(L, M, link, F, cross(kin.O[link] + r, F))
-    if I_G:
+    if some(I_G):
         _accumulate(L, M, link, None, kin.alpha[link] * -I_G)
+
+
+def some(x) -> bool:
+    """Whether a constant of a load spec is not 0: a number, or one value per position of a batch of designs."""
+    return bool(x.any()) if isinstance(x, np.ndarray) else bool(x)
 
 
 def _accumulate(L, M, link, F, T):

@@ -7,9 +7,15 @@ equations with fewer array operations and every constant (points as complex
 numbers, bar lengths, the branch, messages) worked out once per mechanism by
 :mod:`graphkin.kinematics.plan`; the other groups run the general code.
 :func:`solve_kinematics` runs the steps :data:`CHUNK` positions at a time.
+
+A constant may also be an array with one value per position: a batch of designs of one linkage laid end to end,
+each design's points repeated over its positions (:func:`plan_with`, used by
+:mod:`graphkin.analytical.designs`). The steps then do the same arithmetic, position by position; only a test of
+a constant against 0, which saves work for one design, is never made of such an array.
 """
 from __future__ import annotations
 
+import copy
 from collections.abc import Mapping
 
 import numpy as np
@@ -29,6 +35,18 @@ from graphkin.ranges import MAX_POSITIONS, RANGES, as_array
 # lean form; the other groups run the general code above.
 
 
+def is_zero(x) -> bool:
+    """Whether a constant is the number 0 (an array of a batch of designs' values never is: see the module)."""
+    return not isinstance(x, np.ndarray) and x == 0
+
+
+def rows(x, y) -> np.ndarray:
+    """Two constants as the rows of a (2, 1) array, or of a (2, n) array if either has one value per position."""
+    if np.ndim(x) or np.ndim(y):
+        return np.stack(np.broadcast_arrays(x, y))
+    return np.array([[x], [y]])
+
+
 def _crank_step(plan: Plan, g: DriverGroup):
     link, name = g.link, g.joint.point
     X, p = plan.points[plan.frame, name], plan.points[link, name]
@@ -39,7 +57,7 @@ def _crank_step(plan: Plan, g: DriverGroup):
         st.e[link] = e
         st.theta[link], st.omega[link], st.alpha[link] = q, w, al
         st.pivots[link] = (X, p)
-        if p == 0:  # the link's origin on the pivot: it does not move
+        if is_zero(p):  # the link's origin on the pivot: it does not move
             O = st.O[link] = np.full(st.n, X)
             st.v_O[link] = st.a_O[link] = st.zero
             st.finite.add(id(O))
@@ -73,7 +91,7 @@ def _point_motion(st, link, p):
     if pivot is not None:
         X, p0 = pivot
         r = st.e[link] * (p - p0)
-        motion = (X + r if X else r), st.spin(w) * r, st.turn(w, st.alpha[link]) * r
+        motion = (r if is_zero(X) else X + r), st.spin(w) * r, st.turn(w, st.alpha[link]) * r
         st.finite.update(map(id, motion))
         return motion
     r = st.e[link] * p
@@ -99,7 +117,7 @@ def _rrr_step(plan: Plan, d: Dyad, sigma: int, index: int):
     Lj2 = Lj**2
     half_c = (Lj**2 - Lk**2) / 2
     # Rows 0 and 1 of the (2, n) arrays below are links j and k: their arms r12, r23, e^{iθ}, ω, α.
-    to_e = np.array([[dj.conjugate() / abs(dj) ** 2], [dk.conjugate() / abs(dk) ** 2]])
+    to_e = rows(dj.conjugate() / abs(dj) ** 2, dk.conjugate() / abs(dk) ** 2)
     # Cramer's determinants: w_j = (rhs · r23) / det, w_k = (r12 · rhs) / (−det), det = r12 × r23 = −σ |det|.
     signs = np.array([[-1.0], [1.0]]) * sigma
     # |A| |B| of the general test (the arms' lengths, to rounding): below this |det| is a dead point.
@@ -128,7 +146,12 @@ def _rrr_step(plan: Plan, d: Dyad, sigma: int, index: int):
         at_one = dd2 == 0  # the outer pins coincide: no direction to build the dyad on
         if at_one.any():
             # Equal arms fold onto each other and may turn about the pins; unequal arms cannot reach each other.
-            st.fail(together if abs(Lj - Lk) <= 1e-12 * max(Lj, Lk) else reach, at_one)
+            equal = abs(Lj - Lk) <= 1e-12 * np.maximum(Lj, Lk)
+            if np.ndim(equal):  # a batch of designs: each design's own reason
+                st.fail(together, at_one & equal)
+                st.fail(reach, at_one & ~equal)
+            else:
+                st.fail(together if equal else reach, at_one)
         t = half_c / dd2
         t += 0.5
         h2 = Lj2 / dd2
@@ -144,8 +167,8 @@ def _rrr_step(plan: Plan, d: Dyad, sigma: int, index: int):
         X2 = X1 + r12
         st.e[j], st.e[k] = E = R * to_e
         # Each link's origin from its outer pin: no arithmetic when that pin is the link's origin.
-        rj = None if pj1 == 0 else E[0] * -pj1
-        rk = None if pk3 == 0 else E[1] * -pk3
+        rj = None if is_zero(pj1) else E[0] * -pj1
+        rk = None if is_zero(pk3) else E[1] * -pk3
         st.O[j] = _at(st, X1, rj)
         st.O[k] = _at(st, X3, rk)
 
@@ -228,6 +251,22 @@ def _steps(plan: Plan, mech: Mechanism) -> list:
         plan.compiled["branches"] = _branches(plan, mech, steps)
         plan.compiled["kinematics"] = steps
     return steps
+
+
+def plan_with(plan: Plan, points: Mapping) -> Plan:
+    """A copy of ``plan`` with other values of its points and nothing compiled yet: a batch of designs' plan.
+
+    Parameters
+    ----------
+    plan : Plan
+        The plan of one design (its groups, links and frame are every design's).
+    points : dict of (int, str) to complex or complex ndarray, shape (n,)
+        Each point in its link's frame [m]: a number where every design has it there, else one value per
+        position of the batch. The copy is not cached (:func:`graphkin.kinematics.plan.plan_of` never returns it).
+    """
+    batch = copy.copy(plan)
+    batch.points, batch.compiled = points, {}
+    return batch
 
 
 def branches(mech: Mechanism) -> dict:

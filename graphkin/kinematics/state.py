@@ -67,6 +67,10 @@ class Kinematics:
         numbers to the last digit whether it is called on these kinematics or
         through :func:`graphkin.analytical.solve`. Empty once values are given
         (:meth:`with_given`).
+    points : dict of (int, str) to complex or complex ndarray, shape (n,), optional
+        Each named point in its link's frame [m], in place of the mechanism's: a batch of designs of one
+        linkage (:mod:`graphkin.analytical.designs`) gives one value per position where its designs differ.
+        None (the default): the mechanism's own.
     """
 
     mechanism: Mechanism
@@ -86,6 +90,7 @@ class Kinematics:
     given: Mapping[tuple, np.ndarray] = field(default_factory=dict)
     static: bool = False
     loops: Mapping[int, tuple] = field(default_factory=dict, repr=False, compare=False)
+    points: Mapping[tuple, complex | np.ndarray] | None = field(default=None, repr=False, compare=False)
 
     @property
     def n(self) -> int:
@@ -150,6 +155,8 @@ class Kinematics:
     # -- complex forms, used by the solvers -------------------------------
     def _p(self, link: int, point) -> complex:
         if isinstance(point, str):
+            if self.points is not None and (link, point) in self.points:
+                return self.points[link, point]
             point = self.mechanism.link(link).point(point)
         return complex(point[0], point[1])
 

@@ -89,7 +89,7 @@ def format_study(data: dict) -> str:
     positions = f"{data['n']} crank angles" if data["n"] else "the problem's own positions"
     out = [f"{data['problem']}: {len(designs)} designs ({shape}), each over {positions}"]
     if not data["vectorised"]:
-        out.append(f"(not vectorised over designs: {data['why_not_vectorised']})")
+        out.append(f"({data['why_not_vectorised']})")
     out += ["", "  ".join(h.rjust(w) for h, w in zip(heads, width))]
     out += ["  ".join(c.rjust(w) for c, w in zip(r, width)) for r in rows]
     if notes:

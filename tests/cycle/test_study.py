@@ -3,7 +3,10 @@
 Each design is rebuilt here on its own, the problem file's data with the values put in by ``set_field`` and read by
 ``build_problem``, swept by ``graphkin.cycle.sweep``, and its figures of merit read off that Cycle; the study's
 must equal them to 1e-12 relative, over grids that cross the four-bar's and the slider-crank's parameters, with
-designs that cannot be assembled among them.
+designs that cannot be assembled among them, and over random grids (hypothesis) of the numbers a study varies:
+lengths and point positions, masses, I_G, a counterweight (the crank's mass and G), loads, the speed, the offset.
+The study solves the designs in batches over designs and positions (graphkin.analytical.designs), the single
+sweep one design at a time.
 """
 
 import itertools
@@ -12,6 +15,8 @@ import tomllib
 
 import numpy as np
 import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
 
 from graphkin import catalog
 from graphkin.cycle import study, sweep
@@ -54,6 +59,61 @@ GRIDS = [
 @pytest.mark.parametrize(("name", "vary", "n"), GRIDS, ids=[g[0] for g in GRIDS])
 def test_every_design_equals_a_single_sweep_of_it(name, vary, n):
     s = study(name, vary, n=n, Cs=0.03)
+    assert s.vectorised
+    failed = assert_single_sweeps(name, vary, n, s)
+    assert 0 < failed < len(s.designs), "the grid should hold designs that turn and designs that cannot"
+
+
+def _values(lo: float, hi: float, unit: str):
+    """Values of a field as a problem file writes them, to 0.1 of the unit."""
+    return st.integers(round(lo * 10), round(hi * 10)).map(lambda k: f"{k / 10} {unit}")
+
+
+FIELDS = {
+    "strip_cutter": {
+        "links[0].points.A[0]": _values(60, 200, "mm"), "frame.points.B0[0]": _values(520, 620, "mm"),
+        "links[1].mass": _values(0, 6, "kg"), "links[1].k": _values(100, 400, "mm"),
+        "links[0].mass": _values(0, 8, "kg"), "links[0].G[0]": _values(-80, 80, "mm"),  # a counterweight
+        "links[0].G[1]": _values(-80, 80, "mm"), "links[2].G.r": _values(100, 500, "mm"),
+        "loads[0].force.magnitude": _values(0, 4000, "N"), "driver.omega": _values(100, 1500, "rpm"),
+    },
+    "slider_crank_friction": {
+        "links[0].points.A[0]": _values(30, 120, "mm"), "links[1].points.B[0]": _values(120, 300, "mm"),
+        "frame.points.E[1]": _values(-60, 60, "mm"), "links[1].mass": _values(0, 3, "kg"),
+        "links[0].G[0]": _values(-40, 40, "mm"), "links[0].I_G": _values(0, 0.01, "kg*m^2"),
+        "loads[0].force[0]": _values(-1000, 0, "N"), "driver.omega": _values(50, 1000, "rpm"),
+    },
+}
+
+
+@settings(max_examples=12, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(data=st.data())
+def test_a_random_grid_of_designs_equals_single_sweeps(data):
+    name = data.draw(st.sampled_from(sorted(FIELDS)), label="problem")
+    fields = data.draw(st.lists(st.sampled_from(sorted(FIELDS[name])), min_size=1, max_size=3, unique=True),
+                       label="fields")
+    vary = {f: data.draw(st.lists(FIELDS[name][f], min_size=1, max_size=3, unique=True), label=f) for f in fields}
+    n = data.draw(st.integers(8, 48), label="n")
+    s = study(name, vary, n=n, Cs=0.03)
+    assert s.vectorised
+    assert_single_sweeps(name, vary, n, s)
+
+
+@pytest.mark.parametrize("vary", [
+    # Each field its own part (a link's points, a link's body, a load, the speed): the file's numbers with each
+    # field's changes put in, no file read per design.
+    {"frame.points.B0[0]": ["540 mm", "600 mm"], "links[0].points.A[0]": ["80 mm", "95 mm"],
+     "loads[1].force.magnitude": ["1000 N", "3000 N"], "driver.omega": ["600 rpm", "1200 rpm"]},
+    # Two fields of one part (the coupler's mass and radius of gyration both set its I_G): read design by design.
+    {"links[1].mass": ["1 kg", "4 kg"], "links[1].k": ["150 mm", "300 mm"]},
+])
+def test_fields_of_their_own_parts_or_of_one_part_equal_single_sweeps(vary):
+    s = study("strip_cutter", vary, n=40, Cs=0.03)
+    assert s.vectorised and assert_single_sweeps("strip_cutter", vary, 40, s) == 0
+
+
+def assert_single_sweeps(name, vary, n, s) -> int:
+    """Each design of the study ``s`` against a single sweep of it; returns how many cannot be assembled."""
     fields = tuple(vary)
     assert s.fields == fields and s.shape == tuple(len(v) for v in vary.values())
     assert [d.values for d in s.designs] == list(itertools.product(*vary.values()))  # the last field fastest
@@ -72,21 +132,48 @@ def test_every_design_equals_a_single_sweep_of_it(name, vary, n):
         T = c.torque
         assert close(d.torque_peak, float(np.max(np.abs(T))))
         assert close(d.torque_rms, math.sqrt(c.mean(T**2)))
-        assert close(d.I_s, c.flywheel(0.03).I_s)
+        assert d.no_flywheel == c.why_no_flywheel()
+        assert close(d.I_s, math.nan if d.no_flywheel else c.flywheel(0.03).I_s)
         assert close(d.shaking_force_peak, float(np.max(np.linalg.norm(c.shaking_force(), axis=1))))
         assert close(d.shaking_moment_peak, float(np.max(np.abs(c.shaking_moment()))))
         peaks = c.peaks().forces
         assert set(d.joint_peaks) == set(peaks) and all(close(d.joint_peaks[k], peaks[k].value) for k in peaks)
         if name == "strip_cutter":
             assert close(d.transmission_angle_min, float(np.min(c.transmission_angle())))
-        else:  # a slider-crank has no four-bar transmission angle
+        else:  # a slider-crank or a double slider has no four-bar transmission angle
             assert math.isnan(d.transmission_angle_min)
-    assert 0 < failed < len(s.designs), "the grid should hold designs that turn and designs that cannot"
+    return failed
 
 
-def test_a_study_is_not_vectorised_and_says_why():
-    s = study("strip_cutter", {"links[1].mass": ["2 kg"]}, n=36)
-    assert s.vectorised is False and "one after another" in s.why_not_vectorised
+@pytest.mark.parametrize("name", ["strip_cutter", "slider_crank_friction", "engine_gas_force"])
+def test_a_crank_driven_linkage_of_numbers_is_solved_in_a_batch(name):
+    s = study(name, {"links[1].mass": ["2 kg", "3 kg"]}, n=36)
+    assert s.vectorised is True and s.why_not_vectorised is None
+
+
+def test_a_slider_driven_linkage_is_solved_in_a_batch_and_equals_single_sweeps():
+    # The double slider at its own positions, its rod's length and mass varied; a slider has no flywheel.
+    vary = {"links[1].points.B[0]": ["450 mm", "500 mm", "600 mm"], "links[1].mass": ["3 kg", "5 kg"]}
+    s = study("double_slider", vary, Cs=0.03)
+    assert s.vectorised and not s.crank
+    assert assert_single_sweeps("double_slider", vary, None, s) == 0
+    assert all("slider" in d.no_flywheel for d in s.designs)
+
+
+@pytest.mark.parametrize(("name", "vary", "words"), [
+    ("shaper_six_bar", {"links[1].mass": ["2 kg", "3 kg"]}, "a load that varies over the cycle"),
+    ("gearset", {"links[1].mass": ["2 kg", "3 kg"]}, "a gear train"),
+    ("spring_link_hibbeler", {"links[0].mass": ["2 kg", "3 kg"]}, "a load that varies over the cycle"),
+])
+def test_designs_that_cannot_share_a_batch_are_swept_alone_and_it_says_so(name, vary, words):
+    n = 36 if name != "spring_link_hibbeler" else None  # a slider driver is swept at its own positions
+    s = study(name, vary, n=n)
+    assert s.vectorised is False and s.why_not_vectorised.startswith("2 of the 2 designs were swept one after another")
+    assert words in s.why_not_vectorised
+    fields = tuple(vary)
+    for d in s.designs:  # the loop's numbers are a single sweep's too
+        c = single(name, fields, d.values, n)
+        assert close(d.torque_peak, float(np.max(np.abs(c.torque))))
 
 
 def test_a_design_without_a_flywheel_says_why():

@@ -1,0 +1,109 @@
+"""A batch of designs (graphkin.analytical.designs): every design's numbers are those of a solve of it alone.
+
+Random linkages of the families below (tests/strategies.py), each with a few variants that move every
+point of every link, change every mass, I_G and G and every load's value, and run at a speed of their own: the
+batch's validity and reasons must equal solve_forces(solve_kinematics(...)) of each design, and its forces,
+couples and effort equal them to 1e-12 relative to the design's forces at that position (N; N·m for the couples
+and a crank's torque, with the linkage's size as the arm). Relative to the forces, not to each value: one design
+alone rounds some constant products in Python's complex arithmetic, the batch in NumPy's, which differ in the
+last bit; a couple that is nearly 0 (the difference of moments of hundreds of N·m) differs by that rounding.
+"""
+
+from dataclasses import replace
+
+import numpy as np
+import pytest
+from hypothesis import HealthCheck, assume, given, settings
+from hypothesis import strategies as st
+
+from graphkin.analytical import solve_forces
+from graphkin.analytical.designs import batch_key, numbers, solve_designs
+from graphkin.errors import GraphkinError
+from graphkin.kinematics import solve_kinematics
+from graphkin.model import PointForce
+from tests.strategies import families, friction_families
+
+REL = 1e-12
+# The four-bar and the slider-crank, a dyad of each other kind (RPR, the six-bar's two RRR loops, RPP), a slider
+# driver, and Coulomb friction (the general groups read the batch's points through the Kinematics).
+FAMILIES = {**{name: families[name] for name in ("fourbar", "slider_crank", "inverted_slider_crank", "watt2",
+                                                   "double_slider")},
+            "slider_crank (friction)": friction_families["slider_crank"]}
+
+
+def _near(draw, x: float, spread: float = 0.2) -> float:
+    return x * (1 + draw(st.floats(-spread, spread)))
+
+
+def variant(draw, mech, scale: float):
+    """``mech`` with every number a study may vary redrawn near its own value (the same links, joints, loads)."""
+    def moved(p):
+        return (p[0] + scale * draw(st.floats(-0.03, 0.03)), p[1] + scale * draw(st.floats(-0.03, 0.03)))
+
+    links = tuple(replace(link, points={name: moved(p) for name, p in link.points.items()},
+                          mass=_near(draw, link.mass) if link.mass else draw(st.sampled_from([0.0, 1.5])),
+                          I_G=_near(draw, link.I_G), G=moved(link.G))
+                  for link in mech.links)
+    loads = tuple(replace(load, force=(_near(draw, load.force[0]), _near(draw, load.force[1])))
+                  if isinstance(load, PointForce) else replace(load, torque=_near(draw, load.torque))
+                  for load in mech.loads)
+    return replace(mech, links=links, loads=loads)
+
+
+def close(a, b, scale):
+    """|a − b| ≤ 1e-12 · scale at every position (``scale`` > 0 wherever b is not 0)."""
+    assert np.all(np.abs(a - b) <= REL * scale), (a, b, scale)
+
+
+@pytest.mark.parametrize("family", FAMILIES)
+@settings(max_examples=15, deadline=None, suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much])
+@given(data=st.data())
+def test_each_design_of_a_batch_equals_a_solve_of_it_alone(family, data):
+    case = data.draw(FAMILIES[family], label="case")
+    # A load that varies over the cycle (a spring) cannot share a batch: the rest of the linkage can.
+    mech = replace(case.mechanism, loads=tuple(x for x in case.mechanism.loads if not x.varies))
+    assume(batch_key(mech)[0] is not None)
+    scale = max(abs(complex(*p)) for link in mech.links for p in link.points.values())
+    designs = [mech]
+    for _ in range(data.draw(st.integers(1, 3), label="variants")):
+        try:
+            designs.append(variant(data.draw, mech, scale))
+        except GraphkinError:  # a variant the model refuses (two pins on one point): not a design
+            continue
+    assert len({batch_key(m)[0] for m in designs}) == 1
+    # Rates in steps of 0.01 (graphkin refuses a rate so small it is surely a mistake, 1e-47 rad/s).
+    rate = st.integers(-3000, 3000).map(lambda k: k / 100 * (1.0 if mech.driver.crank else scale / 10))
+    same = data.draw(st.booleans(), label="one speed")
+    w = [data.draw(rate)] * len(designs) if same else [data.draw(rate) for _ in designs]
+    al = [data.draw(rate) * 10] * len(designs)
+    q = case.q
+
+    b = solve_designs(mech, [numbers(m) for m in designs], q, w, al)
+
+    for d, m in enumerate(designs):
+        kin = solve_kinematics(m, q, w[d], al[d])
+        r = solve_forces(kin)
+        assert np.array_equal(kin.valid, b.kin_valid[d]) and np.array_equal(r.valid, b.valid[d])
+        ok = r.valid
+        # The force scale at each position: the largest joint force or the driving force.
+        force = np.max([np.hypot(F[:, 0], F[:, 1]) for F in r.forces.values()], axis=0)[ok]
+        if not m.driver.crank:
+            force = np.maximum(force, np.abs(r.effort[ok]))
+        for key, F in r.forces.items():
+            close(b.forces[key][d][ok], (F[:, 0] + 1j * F[:, 1])[ok], force)
+        for key, N in r.normal.items():
+            close(b.normal[key][d][ok], N[ok], force)
+            close(b.couple[key][d][ok], r.couple[key][ok], force * scale)
+        close(b.effort[d][ok], r.effort[ok], force * scale if m.driver.crank else force)
+        for i in np.flatnonzero(~ok):
+            assert b.reason(d, int(i)) == r.reason(int(i))
+
+
+def test_what_cannot_share_a_batch_says_why():
+    from graphkin import catalog
+
+    key, why = batch_key(catalog.load("gearset").mechanism)
+    assert key is None and "gear train" in why
+    assert "varies over the cycle" in batch_key(catalog.load("shaper_six_bar").mechanism)[1]
+    key, why = batch_key(catalog.load("strip_cutter").mechanism)
+    assert why is None and hash(key)
