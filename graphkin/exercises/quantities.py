@@ -14,14 +14,16 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from graphkin.exercises.drawn import drawing_slack
 from graphkin.exercises.exercise import MOTION_KINDS, Question, dimension_of
-from graphkin.exercises.precision import ANGLE, LENGTH, drawing_slack
+from graphkin.exercises.precision import ANGLE, LENGTH
 from graphkin.graphical.paper import (
     POLYGON_ROOM,
     READING,
     force_text,
     length_text,
     motion_scales,
+    motion_text,
     reading_error,
     sheet_scales,
 )
@@ -278,10 +280,10 @@ def measurable(solved, q: Question) -> float:
 
 def drawing_error(solved, q: Question, value) -> float:
     """What a careful student's drawing makes of a graphical answer [SI; rad for a direction]: the stated precision
-    of each line carried through the construction (:func:`graphkin.exercises.precision.drawing_slack`), or where
-    the construction is not replayed (or the value is not drawn but computed), the final reading alone
+    of each line carried through the construction (:func:`graphkin.exercises.drawn.drawing_slack`), or where
+    the drawing is not replayed (or the value is not drawn but computed), the final reading alone
     (:func:`measurable`)."""
-    drawn = drawing_slack(solved.construction, q, value) if q.kind not in MOTION_KINDS else None
+    drawn = drawing_slack(solved, q, value)
     if drawn is not None:
         return drawn
     return 0.0 if _form(q) == "direction" else measurable(solved, q)
@@ -313,7 +315,7 @@ def within(q: Question, solved=None) -> str:
             else f"{100 * q.tolerance:g} %")
     if solved is None:
         return text
-    if q.route == "graphical" and q.kind not in MOTION_KINDS and solved.construction.valid:
+    if q.route == "graphical":
         drawn = _drawn_text(solved, q)
         if drawn:
             return f"{text} or {drawn}, the larger"
@@ -346,12 +348,16 @@ def _drawn_text(solved, q: Question) -> str:
     """The slack the stated precision gives a graphical answer, and the precision, in words ("" where the
     construction is not replayed)."""
     value = value_of(solved, q)
-    drawn = None if value is None else drawing_slack(solved.construction, q, value)
+    drawn = None if value is None else drawing_slack(solved, q, value)
     if drawn is None:
         return ""
-    scales = sheet_scales(solved.construction)
-    how = (f"each line drawn to ±{LENGTH:g} mm and ±{ANGLE:g}° at {length_text(scales.length)} and "
-           f"{force_text(scales.polygon)}")
+    if q.kind in MOTION_KINDS:
+        Xv, Xa = motion_scales(solved.motion, POLYGON_ROOM)
+        at = f"{motion_text(Xv, 'velocity')} and {motion_text(Xa, 'acceleration')}"
+    else:
+        scales = sheet_scales(solved.construction)
+        at = f"{length_text(scales.length)} and {force_text(scales.polygon)}"
+    how = f"each line drawn to ±{LENGTH:g} mm and ±{ANGLE:g}° at {at}"
     if _form(q) == "direction":
         return f"±{math.degrees(drawn):.2g}° ({how})"
     unit = q.unit or ""
