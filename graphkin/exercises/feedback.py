@@ -21,7 +21,7 @@ from graphkin.exercises.answers import Reading, Unreadable, read_answer
 from graphkin.exercises.exercise import Question, dimension_of
 from graphkin.exercises.notebooks import NotData, answer_variables
 from graphkin.exercises.quantities import Expected, _distance, _form, unit_factor
-from graphkin.notation import unit_text
+from graphkin.notation import num, unit_text
 
 _TORQUE_KINDS = ("driver_torque", "inertia_torque", "peak_torque", "lowest_torque", "average_torque")
 
@@ -225,12 +225,17 @@ def how_far_off(exp: Expected, a) -> str:
 
 
 def tolerance_text(exp: Expected) -> str:
+    """The slack as a wrong answer's feedback states it: ``"1 %"``, ``"0.57°"``, ``"15 mm (3 % of the mechanism's
+    size)"``; for a graphical answer whose slack the drawing's precision sets, that slack in the question's unit
+    (``"±0.2958 N"``), as its sheet states it."""
     q = exp.question
     if exp.form == "direction":
         return f"{math.degrees(exp.slack):.2g}°"
     tol = f"{100 * q.tolerance:g} %"
     if exp.form == "point":
         tol = f"{1000 * exp.slack:.3g} mm ({tol} of the mechanism's size)"
+    elif q.route == "graphical" and exp.slack > q.tolerance * abs(exp.value) * (1 + 1e-9):
+        tol = f"±{num(exp.slack / _factor(q), 4, power=True)}" + (f" {unit_text(q.unit)}" if q.unit else "")
     return tol
 
 

@@ -14,13 +14,16 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from graphkin.exercises.drawn import drawing_slack
 from graphkin.exercises.exercise import MOTION_KINDS, Question, dimension_of
+from graphkin.exercises.precision import ANGLE, LENGTH
 from graphkin.graphical.paper import (
     POLYGON_ROOM,
     READING,
     force_text,
     length_text,
     motion_scales,
+    motion_text,
     reading_error,
     sheet_scales,
 )
@@ -275,13 +278,26 @@ def measurable(solved, q: Question) -> float:
     return reading_error(c, what)
 
 
+def drawing_error(solved, q: Question, value) -> float:
+    """What a careful student's drawing makes of a graphical answer [SI; rad for a direction]: the stated precision
+    of each line carried through the construction (:func:`graphkin.exercises.drawn.drawing_slack`), or where
+    the drawing is not replayed (or the value is not drawn but computed), the final reading alone
+    (:func:`measurable`)."""
+    drawn = drawing_slack(solved, q, value)
+    if drawn is not None:
+        return drawn
+    return 0.0 if _form(q) == "direction" else measurable(solved, q)
+
+
 def within(q: Question, solved=None) -> str:
     """A question's tolerance as every sheet, key, command and platform states it.
 
     ``"1 %"``; an angle's ``"1.7°"`` or a sweep's ``"the step of the sweep"``; a graphical answer measured off
-    the worksheet or off a velocity or acceleration polygon (``solved`` given) also states what a ruler reads
-    at its printed scale, the larger of the two being what the grader allows (:func:`measurable`):
-    ``"3 % or ±2.5 N (±0.5 mm at 1 mm = 5 N), the larger"``.
+    the worksheet or off a velocity or acceleration polygon (``solved`` given) also states what a careful
+    drawing allows at its printed scales, the larger of the two being what the grader allows
+    (:func:`drawing_error`): ``"3 % or ±0.2646 N (each line drawn to ±0.5 mm and ±0.5° at 1:5 and
+    1 mm = 0.2 N), the larger"``, or where only the final reading is counted ``"3 % or ±2.5 N (±0.5 mm at
+    1 mm = 5 N), the larger"``.
 
     Parameters
     ----------
@@ -293,10 +309,17 @@ def within(q: Question, solved=None) -> str:
     -------
     str
     """
-    if _form(q) == "direction":
-        return "the step of the sweep" if q.part == "at" else f"{math.degrees(math.atan(q.tolerance)):.2g}°"
-    text = f"{100 * q.tolerance:g} %"
+    if q.part == "at":
+        return "the step of the sweep"
+    text = (f"{math.degrees(math.atan(q.tolerance)):.2g}°" if _form(q) == "direction"
+            else f"{100 * q.tolerance:g} %")
     if solved is None:
+        return text
+    if q.route == "graphical":
+        drawn = _drawn_text(solved, q)
+        if drawn:
+            return f"{text} or {drawn}, the larger"
+    if _form(q) == "direction":
         return text
     if q.kind in MOTION_KINDS:
         error = _motion_reading(solved, q) if q.route == "graphical" else 0.0
@@ -319,6 +342,27 @@ def within(q: Question, solved=None) -> str:
     if what == "torque":
         return f"{text} or ±{num(error, 4, power=True)} N·m (a reading to ±{READING:g} mm on each drawing), the larger"
     return f"{text} or ±{num(error, 4, power=True)} N (±{READING:g} mm at {force_text(scales.polygon)}), the larger"
+
+
+def _drawn_text(solved, q: Question) -> str:
+    """The slack the stated precision gives a graphical answer, and the precision, in words ("" where the
+    construction is not replayed)."""
+    value = value_of(solved, q)
+    drawn = None if value is None else drawing_slack(solved, q, value)
+    if drawn is None:
+        return ""
+    if q.kind in MOTION_KINDS:
+        Xv, Xa = motion_scales(solved.motion, POLYGON_ROOM)
+        at = f"{motion_text(Xv, 'velocity')} and {motion_text(Xa, 'acceleration')}"
+    else:
+        scales = sheet_scales(solved.construction)
+        at = f"{length_text(scales.length)} and {force_text(scales.polygon)}"
+    how = f"each line drawn to ±{LENGTH:g} mm and ±{ANGLE:g}° at {at}"
+    if _form(q) == "direction":
+        return f"±{math.degrees(drawn):.2g}° ({how})"
+    unit = q.unit or ""
+    size = drawn / unit_factor(unit, dimension_of(q.kind, q.part))
+    return f"±{num(size, 4, power=True)}{' ' + unit_text(unit) if unit else ''} ({how})"
 
 
 def _motion_reading(solved, q: Question) -> float:
@@ -502,11 +546,11 @@ def expected(variant, q: Question) -> Expected:
             slack = max(slack, float(np.max(grid)) if len(grid) else 0.0)
     else:
         floor = q.floor if q.floor is not None else 1e-3 * _scale(solved, q)
-        if q.route == "graphical":
-            # Measured off a printed drawing: no finer than a ruler reads at the worksheet's scales.
-            floor = max(floor, measurable(solved, q))
         size = solved.span if form == "point" else abs(value)
         slack = max(q.tolerance * size, floor)
+    if q.route == "graphical":
+        # Measured off a printed drawing: no finer than a careful student draws and reads at the worksheet's scales.
+        slack = max(slack, drawing_error(solved, q, value))
     hint = _hint(solved, q)
     anchor = None
     if q.kind == "h" and q.part == "point":

@@ -8,6 +8,7 @@ import math
 import pytest
 
 from graphkin import exercises
+from graphkin.exercises.drawn import drawing_slack
 from graphkin.exercises.grading import grade_question
 from graphkin.graphical.paper import POLYGON_ROOM, READING, motion_scales
 
@@ -36,13 +37,17 @@ def test_the_key_is_the_analytical_kinematics(name, student):
 
 
 @pytest.mark.parametrize("name", ["fourbar_polygons", "shaper_polygons"])
-def test_the_tolerance_is_half_a_millimetre_at_the_printed_scale_or_3_percent(name):
+def test_the_tolerance_is_what_a_careful_drawing_allows_at_the_printed_scale_or_3_percent(name):
+    """The drawing's slack (issue 36: each line within ±0.5 mm and ±0.5°, carried through the polygons) is at
+    least the final reading, half a millimetre at the printed scale; the grader allows it or 3 %, the larger."""
     v = exercises.variant(name, "s003")
     mc = v.solved.motion
     _, Xa = motion_scales(mc, POLYGON_ROOM)
     q = next(q for q in v.exercise.questions if q.kind == "a_G")
     e = v.expected(q)
-    assert e.slack == pytest.approx(max(0.03 * abs(e.value), READING * Xa), rel=1e-9)
+    drawn = drawing_slack(v.solved, q, e.value)
+    assert drawn > READING * Xa
+    assert e.slack == pytest.approx(max(0.03 * abs(e.value), drawn), rel=1e-9)
     # Just inside and just outside the slack.
     assert grade_question(v, q, f"{e.value + 0.95 * e.slack:.8g} m/s^2")["verdict"] == "correct"
     assert grade_question(v, q, f"{e.value + 1.3 * e.slack:.8g} m/s^2")["verdict"] != "correct"

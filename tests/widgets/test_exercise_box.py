@@ -19,7 +19,7 @@ def test_each_question_states_how_close_an_answer_must_be_once_an_id_is_typed():
         shown = box.asks[q["id"]].value
         # The tolerance a graphical question allows follows its printed scale: the box says it as the sheet does.
         assert f"(within {q['within']})" in shown.replace("&#x27;", "'"), shown
-    assert "±0.5 mm at 1 mm = " in box.asks["F23"].value
+    assert "each line drawn to ±0.5 mm and ±0.5° at 1:" in box.asks["F23"].value
 
 
 def test_a_student_id_that_cannot_be_read_keeps_the_questions_as_written():
