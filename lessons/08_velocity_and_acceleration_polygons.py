@@ -158,8 +158,8 @@ assert math.isclose(ex.motion_construction.omega[3], motion.omega[3], rel_tol=1e
 # angle and speed for the same four-bar. **Before you type any answer**, draw the mechanism at your
 # angle (AB = 235 mm, B0B = 550 mm, A0B0 = 565 mm), then the velocity polygon on paper at a scale of
 # your choosing. Measure v_BA, divide by AB, and that is ω3 (CCW positive). Go on to the acceleration polygon for α3 and a_G. Then type your readings and
-# press **Check**: answers within 3 %, or half a millimetre at a worksheet's printed scale, are right,
-# and the feedback names the usual slips (a normal component left out, g′ put at the link's end).
+# press **Check**: answers within 3 %, or what a careful drawing allows (each line to ±0.5 mm and ±0.5°
+# at a worksheet's printed scales), are right, and the feedback names the usual slips (a normal component left out, g′ put at the link's end).
 
 # %%
 student = "your-id"  # ← type your own id here
