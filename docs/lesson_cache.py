@@ -34,6 +34,9 @@ pages), ``digest`` (what they were made from) and ``runtimes.json`` (each lesson
 
 LESSONS = ROOT / "lessons"
 
+RAN: set[str] = set()
+"""The docnames of the lessons :func:`prepare` ran in this build."""
+
 
 def source_digest(root: Path = ROOT) -> str:
     """A hash of what a lesson's outputs depend on besides its own code: graphkin's files (source, catalog,
@@ -143,8 +146,15 @@ def prepare(app) -> None:
                 continue
             cache.cache_notebook_bundle(CacheBundleIn(nb, path, data={"execution_seconds": seconds}),
                                         check_validity=False, overwrite=True)
+            RAN.add(Path(path).relative_to(ROOT).with_suffix("").as_posix())
             logger.info(f"{Path(path).name} ran in {seconds:.1f} s")
     times_file.write_text(json.dumps(times, indent=1, sort_keys=True))
+
+
+def outdated(app, env, added, changed, removed) -> list[str]:
+    """``env-get-outdated``: the lessons run in this build are read again, though their notebooks did not change
+    (graphkin did): their pages show the new outputs."""
+    return sorted(RAN & env.found_docs)
 
 
 def copy_scenes(app, exception) -> None:
@@ -161,5 +171,6 @@ def copy_scenes(app, exception) -> None:
 
 def setup(app):
     app.connect("builder-inited", prepare)
+    app.connect("env-get-outdated", outdated)
     app.connect("build-finished", copy_scenes)
     return {"parallel_read_safe": True, "parallel_write_safe": True}
