@@ -18,6 +18,7 @@ the pydata theme is the one numpy, SciPy and matplotlib users know.
 
 from __future__ import annotations
 
+import hashlib
 import sys
 from pathlib import Path
 
@@ -87,3 +88,11 @@ html_show_sourcelink = False
 html_copy_source = False
 
 suppress_warnings = ["mystnb.unknown_mime_type"]
+
+# Sphinx reads a page again when it or a setting changed, not when an extension's code did: this setting is the
+# code of the site's own extensions (docs/*.py), so that a change to how a page is made remakes every page.
+docs_code = hashlib.sha256(b"".join(p.read_bytes() for p in sorted((ROOT / "docs").glob("*.py")))).hexdigest()
+
+
+def setup(app):
+    app.add_config_value("docs_code", "", "env")

@@ -120,7 +120,8 @@ NOTE = ("A still copy of an interactive widget: the controls work when the noteb
 
 
 def _attrs(**kv) -> str:
-    return "".join(f' {k.rstrip("_").replace("_", "-")}="{html.escape(str(v), quote=True)}"'
+    """HTML attributes: ``True`` is a bare attribute (``disabled``), ``None`` and ``False`` none."""
+    return "".join(f' {k}' if v is True else f' {k}="{html.escape(str(v), quote=True)}"'
                    for k, v in kv.items() if v is not None and v is not False)
 
 

@@ -79,9 +79,9 @@ def test_a_widget_is_drawn_as_it_was_left_with_its_controls_disabled():
     out = static_widget(_box(), "root")
     assert out.startswith('<div class="graphkin-static-widget">')
     assert "<h4>Strip cutter &amp; its torque</h4>" in out  # an HTML widget's value is its HTML
-    assert '<input type="range" min="0" max="360" value="140" disabled="True">' in out
+    assert '<input type="range" min="0" max="360" value="140" disabled>' in out
     assert 'value="a&quot;b&lt;c"' in out  # a text box's value is text
-    assert '<input type="checkbox" checked="True" disabled="True"> polygons' in out
+    assert '<input type="checkbox" checked disabled> polygons' in out
     assert "<button disabled>Check</button>" in out
     assert f'src="data:image/png;base64,{PNG}"' in out  # the figure the kernel last drew, from the state's buffers
     assert 'class="gk-hbox"' in out and "export default" not in out
