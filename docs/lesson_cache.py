@@ -103,6 +103,8 @@ def prepare(app) -> None:
     from sphinx.util import logging
 
     logger = logging.getLogger(__name__)
+    if app.config.nb_execution_mode != "cache":  # e.g. -D nb_execution_mode=off: the lessons are not run at all
+        return
     digest = source_digest()
     stamp, times_file, scenes = CACHE / "digest", CACHE / "runtimes.json", CACHE / "scenes"
     times = json.loads(times_file.read_text()) if times_file.exists() else {}
