@@ -54,13 +54,17 @@ lint: $(VENV)/.installed
 	$(BIN)/lint-imports
 
 # The documentation site: the guide (docs/), the lessons run as it is built, the API from the docstrings.
-# Warnings are errors, so a broken link between pages or a lesson that fails stops the build.
+# Warnings are errors, so a broken link between pages or a lesson that fails stops the build. A lesson runs again
+# only when it, graphkin or an installed package changed (its outputs are kept in build/.docs-cache), and the
+# lessons that must run do so on every core before the pages are read (docs/lesson_cache.py). The site must be
+# whole offline, its widgets drawn: tests/docs/ checks every page of it.
 $(VENV)/.docs: $(VENV)/.installed
 	$(BIN)/python -m pip install --quiet -e '.[test,docs]'
 	touch $@
 
 docs: $(VENV)/.docs
 	$(BIN)/python -m sphinx -W --keep-going -j auto -q -b html -c docs . build/docs
+	GRAPHKIN_DOCS_SITE=build/docs $(BIN)/python -m pytest -q -p no:cacheprovider tests/docs
 	@echo "the site is in build/docs (open build/docs/index.html)"
 
 # The lessons (cell by cell in JupyterLab, and in Voilà) and `graphkin explore` in a real browser:

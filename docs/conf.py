@@ -1,5 +1,8 @@
 """Sphinx configuration of graphkin's documentation site: ``make docs`` builds it into build/docs.
 
+The site is whole offline: no page asks another host for a script, a style sheet, a font or an image
+(docs/offline.py; tests/docs/ checks every page).
+
 The source folder is the repository itself, so that the guide (docs/), the
 lessons (lessons/*.ipynb) and the README keep the links they have on GitHub;
 ``include_patterns`` lists what is a page. The lessons are executed at build
@@ -15,6 +18,7 @@ the pydata theme is the one numpy, SciPy and matplotlib users know.
 
 from __future__ import annotations
 
+import hashlib
 import sys
 from pathlib import Path
 
@@ -39,16 +43,22 @@ extensions = [
     "numpydoc",
     "catalog_page",
     "mathml",  # formulas as MathML, drawn by the browser: no script from a CDN (docs/mathml.py)
+    "offline",  # widgets drawn without a CDN, the README's images local (docs/offline.py)
+    "lesson_cache",  # the lessons run before reading, on every core, once per change (docs/lesson_cache.py)
 ]
 
 # -- MyST and the notebooks ---------------------------------------------------------------------------------
 myst_enable_extensions = ["dollarmath", "amsmath", "colon_fence", "deflist", "attrs_inline"]
 myst_heading_anchors = 3  # links such as exercises.md#grading-platforms
-nb_execution_mode = "force"  # the lessons run at every build: what the site shows is what graphkin computes now
+# The lessons' outputs are what graphkin computes now: a lesson runs again whenever its code, graphkin, the files
+# beside it or an installed package changed (docs/lesson_cache.py); otherwise its last run is taken from the cache.
+nb_execution_mode = "cache"
+nb_execution_cache_path = str(ROOT / "build" / ".docs-cache" / "jupyter")
 nb_execution_timeout = 600
 nb_execution_raise_on_error = True
 nb_execution_in_temp = False  # a lesson reads and writes beside itself, as in JupyterLab
 nb_merge_streams = True
+nb_ipywidgets_js = {}  # no require.js and widget manager from CDNs: docs/offline.py draws the widgets
 
 # -- the API reference ---------------------------------------------------------------------------------------
 autosummary_generate = True
@@ -78,3 +88,11 @@ html_show_sourcelink = False
 html_copy_source = False
 
 suppress_warnings = ["mystnb.unknown_mime_type"]
+
+# Sphinx reads a page again when it or a setting changed, not when an extension's code did: this setting is the
+# code of the site's own extensions (docs/*.py), so that a change to how a page is made remakes every page.
+docs_code = hashlib.sha256(b"".join(p.read_bytes() for p in sorted((ROOT / "docs").glob("*.py")))).hexdigest()
+
+
+def setup(app):
+    app.add_config_value("docs_code", "", "env")
