@@ -104,6 +104,9 @@ bench: $(VENV)/.installed
 	$(BIN)/python benchmarks/bench_handout.py
 	$(BIN)/python benchmarks/bench_cli.py
 	$(BIN)/python benchmarks/bench_animate.py
+	$(BIN)/python benchmarks/bench_figure.py
+	$(BIN)/python benchmarks/bench_study.py
+	$(BIN)/python benchmarks/bench_scene.py
 
 clean:
 	rm -rf $(VENV) $(LOWEST) build *.egg-info
