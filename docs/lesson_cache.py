@@ -84,12 +84,15 @@ def _run(path: str, timeout: int) -> tuple[str, dict | None, float, str | None]:
 
 
 def _scene(name: str, path: str) -> tuple[str, float]:
-    """Write problem ``name``'s scene page (``graphkin explore NAME -o page.html``) to ``path``: (name, seconds)."""
+    """Write problem ``name``'s scene page to ``path``: (name, seconds).
+
+    As ``graphkin explore NAME --motion -o page.html`` writes it: the motion polygons too, for lesson 08.
+    """
     from graphkin import catalog
     from graphkin.scene import scene, write_page
 
     start = time.perf_counter()
-    write_page(scene(catalog.load(name)), path)
+    write_page(scene(catalog.load(name), motion=True), path)
     return name, time.perf_counter() - start
 
 

@@ -239,9 +239,9 @@ def scene_frame(name: str, docname: str) -> str:
     src = posixpath.relpath(f"{SCENES}/{name}.html", posixpath.dirname(docname) or ".")
     return (f'<div class="graphkin-scene"><iframe src="{html.escape(src)}" title="{html.escape(name)}: every position '
             f'of the cycle" loading="lazy"></iframe><p class="gk-note">On this page your browser draws the cycle, '
-            f'solved once when the site was built (<code>graphkin explore {html.escape(name)} -o page.html</code> '
+            f'solved once when the site was built (<code>graphkin explore {html.escape(name)} --motion -o page.html</code> '
             f'writes this page; <a href="{html.escape(src)}">open it whole</a>). In the notebook, the explorer is '
-            f'computed by the kernel: any speed, the velocity and acceleration polygons.</p></div>')
+            f'computed by the kernel: a length, a mass or a load can change too.</p></div>')
 
 
 # -- what a page would fetch from another host ---------------------------------------------------------------------
