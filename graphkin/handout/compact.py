@@ -15,6 +15,7 @@ import numpy as np
 
 from graphkin.exercises.exercise import MOTION_KINDS
 from graphkin.exercises.quantities import equilibrium_steps
+from graphkin.graphical.paper import length_text, sheet_reach, sheet_scales
 from graphkin.handout import book, equilibrium, scaled
 from graphkin.handout import maths as M
 from graphkin.handout import motion as polygons
@@ -128,12 +129,18 @@ def graphical(doc: Doc, s: Subject, entry: dict, c, i: int, bodies: str | None =
     force polygons, and every step of the construction numbered as the feedback names them, with what it finds."""
     doc.heading(2, "The graphical construction")
     first, at = doc.figures + 1, len(doc.blocks)
-    concurrent = [st for st in c.steps if st.kind in ("three-force", "line", "couple") and st.lines]
-    if concurrent:
-        k = scaled.construction_scale(c, concurrent)
-        titles = _construction_titles(concurrent) if len(concurrent) > 1 else None
-        doc.figure([scaled.constructions(s, c, i, concurrent, k, titles)],
-                   "The lines of action of each three-force member, and where they meet. " + scaled.statement(k))
+    # How each resultant's line is found, then each three-force member's lines, each as far as the page holds it.
+    found = [p for p in (scaled.resultant_panel(c, st) for st in c.steps if st.kind == "resultant") if p is not None]
+    concurrent = [scaled.drawable(c, st) for st in c.steps if st.kind in ("three-force", "line", "couple") and st.lines]
+    k = None
+    if found or concurrent:
+        panels = found + concurrent
+        k = scaled.construction_scale(c, panels)
+        titles = _construction_titles(panels) if len(panels) > 1 else None
+        doc.figure([scaled.constructions(s, c, i, panels, k, titles)],
+                   ("How each resultant's line is found: the lines of its parts meet at K, which it passes through. "
+                    if found else "") + "The lines of action of each three-force member, and where they meet. "
+                   + scaled.statement(k))
     steps = worked_steps(c)
     sums = [scaled.resultant_step(c, st) for st in c.steps if st.kind == "resultant" and not getattr(st, "sub", "")]
     drawn = [st for st in sums if st is not None] + steps
@@ -158,11 +165,18 @@ def graphical(doc: Doc, s: Subject, entry: dict, c, i: int, bodies: str | None =
     blocks, doc.blocks[at:] = doc.blocks[at:], []
     doc.text(f"The construction, step by step ({figures} draw it):")
     doc.items(items, small=True)
+    detours = sheet_reach(c).detours
+    if detours:
+        k = k or sheet_scales(c).length
+        doc.text(f"Drawn another way, where a point lies off the page (lengths on the drawing at {length_text(k)}):")
+        doc.items([scaled.detour_text(d, k, True) for d in detours], small=True)
     doc.blocks += blocks
 
 
 def _construction_title(step) -> str:
     sub = getattr(step, "sub", "")
+    if step.kind == "resultant":
+        return f"Link {step.link}: R{step.link}'s line"
     return (f"Sub-problem {sub}, link {step.link}" if sub else f"Link {step.link}")
 
 

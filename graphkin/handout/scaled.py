@@ -14,7 +14,7 @@ import math
 
 import numpy as np
 
-from graphkin.graphical import Arrow, Step
+from graphkin.graphical import Arrow, Line, Step
 from graphkin.graphical.paper import (
     FIGURE_WIDTH,
     LENGTH_SCALES,
@@ -23,10 +23,13 @@ from graphkin.graphical.paper import (
     length_scale,
     length_text,
     polygon_size,
+    sheet_reach,
 )
+from graphkin.handout import maths as M
 from graphkin.handout.document import Subject
 from graphkin.handout.figures import Picture
 from graphkin.model import GearMesh
+from graphkin.notation import num
 
 FREE_BODY_ROOM = (FIGURE_WIDTH, 120.0)
 """Room for a figure of every free body [mm]."""
@@ -182,6 +185,81 @@ def resultant_step(c, step) -> Step | None:
     name = next((line.name for line in step.lines if line.name == f"R{link}"), f"R{link}")
     return Step("polygon", f"{name} = " + " + ".join(a.name for a in parts), link,
                 polygon=tuple(parts) + (Arrow(f"−{name}", (-float(total[0]), -float(total[1])), False),))
+
+
+# -- what a drawing of the construction holds (graphkin.graphical.reach) -------------------------------------------
+def mm(x: float) -> str:
+    """A length on the sheet [mm], as a ruler reads it: ``"12.5 mm"``."""
+    return f"{num(x, 3)} mm"
+
+
+def detour_text(d, k: float, numbers: bool) -> tuple:
+    """A sentence for a step drawn another way (:class:`graphkin.graphical.reach.Detour`) on a drawing at 1:k:
+    the resultant's line by its offset, or moments about a pin; ``numbers=False`` leaves the offsets and arms
+    out (a sheet whose student finds the inertia loads)."""
+    if d.kind == "offset":
+        h = d.arms[d.name] * 1e3
+        if d.far.what.startswith("where ") and d.parts:
+            names = []
+            for n, part in enumerate(d.parts):
+                names += ([" and " if n == len(d.parts) - 1 else ", "] if n else []) + [M.name(part), "'s"]
+            head = (*names, " lines meet off the page")
+        else:
+            head = (d.far.what[:1].upper() + d.far.what[1:] + " lies off the page",)
+        if not numbers:
+            return (*head, ": draw ", M.name(d.name), "'s line directly, parallel to ", M.name(d.name),
+                    f", at h = |ΣM| / |{d.name}| from {d.about} (the moment of link {d.link}'s loads about "
+                    f"{d.about} over the size of their sum), to the side that turns link {d.link} as that moment does.")
+        return (*head, ": draw ", M.name(d.name), "'s line directly, parallel to ", M.name(d.name),
+                f" from its polygon, {mm(h / k)} from {d.about} on the drawing (h = {mm(h)}), to the side that turns "
+                f"link {d.link} {d.sense} about {d.about}.")
+    (R, a_R), (F, a_F) = sorted(d.arms.items(), key=lambda kv: kv[0] == d.name)
+    arms = ("; on the drawing ", M.sub("d", F), f" = {mm(a_F * 1e3 / k)} and ", M.sub("d", R),
+            f" = {mm(a_R * 1e3 / k)}") if numbers else ()
+    return (f"The lines of link {d.link}'s three forces meet at ", M.name(d.far.what), ", off the page: take moments "
+            f"about {d.about} instead, |", M.name(F), "| ", M.sub("d", F), " = |", M.name(R), "| ", M.sub("d", R),
+            f", each d the perpendicular from {d.about} to the force's line", *arms, "; the polygon then closes on "
+            "the third force.")
+
+
+def drawable(c, step) -> Step:
+    """``step`` as a drawing on the mechanism shows it: only the lines and points inside the sheet's box
+    (:func:`graphkin.graphical.paper.sheet_reach`), each line by a point of it there. What lies beyond is drawn
+    another way, which the text says (:func:`detour_text`)."""
+    r = sheet_reach(c)
+    ref = next((np.asarray(P, float) for P in step.points.values() if r.holds(P)), None)
+    if ref is None:
+        ref = np.asarray(c.G.get(step.link, r.centre) if step.link is not None else r.centre, float)
+    lines = []
+    for line in step.lines:
+        P, d = np.asarray(line.point, float), np.asarray(line.direction, float)
+        foot = P + d * float(np.dot(ref - P, d))
+        if r.holds(P) or r.holds(foot):
+            lines.append(Line(line.name, tuple(P if r.holds(P) else foot), line.direction, line.role))
+    points = {name: P for name, P in step.points.items() if r.holds(P)}
+    return dataclasses.replace(step, lines=tuple(lines), points=points)
+
+
+def resultant_panel(c, step) -> Step | None:
+    """How a resultant's line is found, as a drawing on the mechanism shows it: the lines of its parts (R3i, Fc3)
+    and K3, where they meet, which its line (R3) passes through. None when the resultant has one part only, or
+    when they meet off the page: its line is then drawn at its offset (:class:`graphkin.graphical.reach.Detour`),
+    in the panel of the step that uses it."""
+    L = step.link
+    r = sheet_reach(c)
+    parts = [line for line in step.lines if line.name != f"R{L}" and line.name.startswith(f"R{L}")]
+    parts += [Line(a.name, a.at, tuple(np.asarray(a.vector, float) / math.hypot(*a.vector)), "resultant")
+              for a in c.external.get(L, []) if a.at is not None and math.hypot(*a.vector) > 0]
+    if len(parts) < 2:
+        return None
+    whole = [Line(line.name, line.point, line.direction, "found") for line in step.lines
+             if line.name not in {p.name for p in parts}]
+    detoured = any(d.kind == "offset" and d.link == L and not d.far.what.endswith("'s line") for d in r.detours
+                   if c.steps[d.step] is step)
+    meets = [m.at for m in r.marks if c.steps[m.step] is step and m.what.startswith("where ")]
+    if detoured or not meets:
+        return None  # its line is drawn at its offset, in the panel of the step that uses it
+    return drawable(c, Step("resultant", step.caption, L, tuple(parts + whole), {f"K{L}": meets[-1]}))
 
 
 # -- pictures ---------------------------------------------------------------------------------------------------------

@@ -17,7 +17,7 @@ from __future__ import annotations
 import math
 
 from graphkin.exercises.exercise import MOTION_KINDS
-from graphkin.graphical.paper import POLYGON_ROOM, READING, force_text, length_text, sheet_scales
+from graphkin.graphical.paper import POLYGON_ROOM, READING, force_text, length_text, sheet_reach, sheet_scales
 from graphkin.handout import maths as M
 from graphkin.handout import motion as polygons
 from graphkin.handout import scaled
@@ -79,6 +79,8 @@ def worksheet(doc: Doc, s: Subject, entry: dict, c, i: int, *, find=True, from_m
     doc.figure([scaled.mechanism(s, c, i, k, room=True, key="sheet-mechanism")],
                f"The mechanism at {s.where(i)}, with room around it to draw the lines of action and find where they "
                f"meet. Scale {length_text(k)}: measure a length and multiply it by {M.fmt(k)}.")
+    if not motion_only(s):
+        where_to_draw(doc, s, c, k, offsets=not from_motion)
     if motion_only(s):
         polygons.boxes(doc, s, i)
         if find:
@@ -112,6 +114,31 @@ def worksheet(doc: Doc, s: Subject, entry: dict, c, i: int, *, find=True, from_m
         doc.space(BOX[1], label, polygon_equation(st), width=BOX[0])
     if find:
         answer_room(doc, s)
+
+
+def where_to_draw(doc: Doc, s: Subject, c, k: float, *, offsets=True):
+    """Where the lines of action go on the sheet's drawing at 1:k: each inertia resultant's offset from G on the
+    paper, and each step drawn another way because a point of it lies off the drawing (:mod:`graphkin.graphical.reach`).
+    ``offsets=False``: the inertia resultants are the student's to find, and so are their offsets."""
+    r = sheet_reach(c)
+    items = []
+    if offsets:
+        for link, d in c.inertia.items():
+            if d.get("h") and math.hypot(*d["F"]) > 0:
+                h = float(d["h"]) * 1e3
+                line = f"R{link}i"
+                drawn = any(m.what == f"{line}'s line" for m in r.marks)
+                instead = next((x.name for x in r.detours if x.kind == "offset" and line in x.parts), None)
+                tail = (".",) if drawn else (": not needed, ", M.name(instead), "'s line is drawn directly (below).") \
+                    if instead else (", beyond the drawing: the steps that use it are drawn another way (below).",)
+                items.append((M.name(line), f"'s line: {scaled.mm(h / k)} from G{link} on the drawing "
+                              f"(h = {scaled.mm(h)})", *tail))
+    for d in r.detours:
+        items.append(scaled.detour_text(d, k, offsets))
+    if items:
+        doc.text("Where the lines go on this drawing" + (" (a point of the construction that lies off the page is "
+                 "reached another way, as said):" if r.detours else ":"))
+        doc.items(items, small=True)
 
 
 def motion_room(doc: Doc, s: Subject, entry: dict):
