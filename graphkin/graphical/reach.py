@@ -217,7 +217,7 @@ def _resultant(c, n, st, near, marks, detours):
     L = st.link
     G = np.asarray(c.G.get(L, c.points[L][next(iter(c.points[L]))]), float)
     parts = [(line.name, np.asarray(line.point, float), _unit(line.direction)) for line in st.lines
-             if line.name != f"R{L}" and line.name.startswith(f"R{L}")]
+             if line.name == f"R{L}i"]
     parts += [(a.name, np.asarray(a.at, float), _unit(a.vector)) for a in c.external.get(L, [])
               if a.at is not None and math.hypot(*a.vector) > 0]
     whole = [line for line in st.lines if line.name not in {p[0] for p in parts}]

@@ -130,7 +130,8 @@ def graphical(doc: Doc, s: Subject, entry: dict, c, i: int, bodies: str | None =
     doc.heading(2, "The graphical construction")
     first, at = doc.figures + 1, len(doc.blocks)
     # How each resultant's line is found, then each three-force member's lines, each as far as the page holds it.
-    found = [p for p in (scaled.resultant_panel(c, st) for st in c.steps if st.kind == "resultant") if p is not None]
+    found = scaled.merged([p for p in (scaled.resultant_panel(c, st) for st in c.steps if st.kind == "resultant")
+                           if p is not None], 2)
     concurrent = [scaled.drawable(c, st) for st in c.steps if st.kind in ("three-force", "line", "couple") and st.lines]
     k = None
     if found or concurrent:
@@ -176,7 +177,7 @@ def graphical(doc: Doc, s: Subject, entry: dict, c, i: int, bodies: str | None =
 def _construction_title(step) -> str:
     sub = getattr(step, "sub", "")
     if step.kind == "resultant":
-        return f"Link {step.link}: R{step.link}'s line"
+        return step.caption
     return (f"Sub-problem {sub}, link {step.link}" if sub else f"Link {step.link}")
 
 

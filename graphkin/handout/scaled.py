@@ -247,7 +247,7 @@ def resultant_panel(c, step) -> Step | None:
     in the panel of the step that uses it."""
     L = step.link
     r = sheet_reach(c)
-    parts = [line for line in step.lines if line.name != f"R{L}" and line.name.startswith(f"R{L}")]
+    parts = [line for line in step.lines if line.name == f"R{L}i"]
     parts += [Line(a.name, a.at, tuple(np.asarray(a.vector, float) / math.hypot(*a.vector)), "resultant")
               for a in c.external.get(L, []) if a.at is not None and math.hypot(*a.vector) > 0]
     if len(parts) < 2:
@@ -259,7 +259,22 @@ def resultant_panel(c, step) -> Step | None:
     meets = [m.at for m in r.marks if c.steps[m.step] is step and m.what.startswith("where ")]
     if detoured or not meets:
         return None  # its line is drawn at its offset, in the panel of the step that uses it
-    return drawable(c, Step("resultant", step.caption, L, tuple(parts + whole), {f"K{L}": meets[-1]}))
+    return drawable(c, Step("resultant", f"Link {L}: R{L}'s line", L, tuple(parts + whole), {f"K{L}": meets[-1]}))
+
+
+def merged(panels, n: int) -> list[Step]:
+    """Resultant panels (:func:`resultant_panel`) drawn ``n`` to a panel, so that a mechanism of many loaded links
+    takes few panels: ``Links 3, 4: resultants' lines``."""
+    out = []
+    for k in range(0, len(panels), n):
+        group = panels[k:k + n]
+        if len(group) == 1:
+            out.append(group[0])
+            continue
+        links = ", ".join(str(p.link) for p in group)
+        out.append(Step("resultant", f"Links {links}: the resultants' lines", None,
+                        tuple(line for p in group for line in p.lines), {k: v for p in group for k, v in p.points.items()}))
+    return out
 
 
 # -- pictures ---------------------------------------------------------------------------------------------------------

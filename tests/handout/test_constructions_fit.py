@@ -121,3 +121,52 @@ def test_the_sheet_s_drawing_holds_every_point_it_draws(name, at):
         X, Y = np.asarray(m.at, float) * 1e3
         assert x0 <= X <= x1 and y0 <= Y <= y1, f"{m.what} at ({X:.0f}, {Y:.0f}) mm is outside the view"
     assert (x1 - x0) / k <= MECHANISM_ROOM[0] + 2.0 and (y1 - y0) / k <= MECHANISM_ROOM[1] + 2.0
+
+
+def _list_text(doc) -> str:
+    from graphkin.handout import maths as M
+
+    return "\n".join("".join(r if isinstance(r, str) else M.to_text(r) for r in item)
+                     for b in doc["blocks"] if b["kind"] == "list" for item in b["items"])
+
+
+@pytest.mark.parametrize("version", ["key", "blank"])
+def test_the_strip_cutter_s_key_and_sheet_say_how_r3_s_line_is_drawn_at_140_deg(version):
+    from graphkin import handout
+
+    doc = handout.build("strip_cutter", at="140 deg", version=version)
+    c = subject("strip_cutter", at="140 deg").construction(0)
+    h = next(d for d in sheet_reach(c).detours if d.name == "R3").arms["R3"] * 1e3
+    text = _list_text(doc)
+    assert "R3's line directly" in text.replace("₃", "3")
+    assert f"(h = {h:.3g} mm)" in text
+
+
+@pytest.mark.parametrize("name", catalog.names())
+def test_the_key_draws_how_each_resultant_s_line_is_found(name):
+    """Each resultant of two or more loads: a panel of the key draws its parts' lines and K, where they meet, on
+    the sheet's drawing; or its step is drawn another way (its line at its offset)."""
+    from graphkin.handout import scaled
+
+    s = subject(name)
+    for i in s.worked():
+        c = s.construction(i)
+        if c is None or not c.valid:
+            continue
+        r = sheet_reach(c)
+        for n, st in enumerate(c.steps):
+            if st.kind != "resultant" or st.sub:
+                continue
+            parts = [ln for ln in st.lines if ln.name == f"R{st.link}i"] + [
+                a for a in c.external.get(st.link, []) if a.at is not None and math.hypot(*a.vector) > 0]
+            if len(parts) < 2 or any(d.step == n for d in r.detours):
+                continue
+            panel = scaled.resultant_panel(c, st)
+            collinear = panel is None and not any(m.step == n and m.what.startswith("where ") for m in r.marks)
+            if collinear:
+                continue  # its parts act on one line (a piston's): so does it
+            assert panel is not None, f"{name}: link {st.link}'s resultant is not drawn"
+            K = np.asarray(panel.points[f"K{st.link}"], float)
+            assert r.holds(K)
+            names = {ln.name for ln in panel.lines}
+            assert f"R{st.link}" in names and {getattr(p, "name", "") for p in parts} <= names
