@@ -117,11 +117,8 @@ def _result(step) -> list:
 def free_bodies(doc: Doc, s: Subject, c, i: int) -> str:
     """The free bodies, which both routes start from: the analytical one writes their equations, the graphical one
     draws their lines of action and polygons. Returns the figure's label."""
-    links = list(s.mech.moving)
-    k_fb, X_fb = scaled.free_body_scales(c, links)
-    return doc.figure([scaled.free_bodies(s, c, i, links, k_fb, X_fb)],
-                      "Every force on each moving link" + ("" if s.static else ", the inertia resultant on its offset "
-                                                           "line") + ". " + scaled.statement(k_fb, X_fb))
+    return scaled.free_body_figures(doc, s, c, i, list(s.mech.moving), "Every force on each moving link" + (
+        "" if s.static else ", the inertia resultant on its offset line") + ".")
 
 
 def graphical(doc: Doc, s: Subject, entry: dict, c, i: int, bodies: str | None = None):

@@ -115,19 +115,77 @@ def _rows_height(sizes, width: float) -> float:
     return total + row_h
 
 
+SHORTEST_LINK = 15.0
+"""The shortest a link of two or more points may print on a free body [mm]: shorter, its pins, arrows and labels
+pile up on one spot (an engine's crank at 1:100 printed 3 mm long, four labels on one point)."""
+
+
+def _span(c, link: int) -> float:
+    """The length [mm, true] of ``link`` drawn as a bar or plate: the longest distance between two of its points;
+    0 for a link of one point (a slider, a gear drawn about its centre)."""
+    pts = [np.asarray(p, float) * 1e3 for p in c.points[link].values()]
+    return max([math.dist(p, q) for n, p in enumerate(pts) for q in pts[n + 1:]] + [0.0])
+
+
 def free_body_scales(c, links, room=FREE_BODY_ROOM) -> tuple[float, float]:
-    """(k, X) for a figure of the free bodies of ``links``: the links about 55 mm at most, the largest force
-    about 40 mm, both made smaller together until the figure fits ``room``."""
-    size = max(float(np.max(np.ptp(np.asarray(_outline(c, n), float), axis=0))) if len(_outline(c, n)) > 1
-               else 10.0 for n in links)
-    largest = max([math.hypot(*F) for n in links for _, F in _loads(c, n)] + [1e-9])
+    """(k, X) for the free bodies of ``links``: the largest link about 55 mm at most, the largest force about 40 mm;
+    where a body is then larger than ``room``, its forces are drawn shorter first, then its links smaller. The
+    bodies are laid out in as many figures as they take, a link too short to read at k in one of its own
+    (:func:`free_body_plan`)."""
+    size = max([float(np.max(np.ptp(np.asarray(_outline(c, n), float), axis=0))) for n in links] + [10.0])
     k = length_scale(size, 55.0)
+    largest = max([math.hypot(*F) for n in links for _, F in _loads(c, n)] + [1e-9])
     X = force_scale(largest, 40.0)
     for _ in range(12):
-        if _rows_height([free_body_size(c, n, k, X) for n in links], room[0]) <= room[1]:
+        if not all(w <= room[0] and h <= room[1] for w, h in (free_body_size(c, n, k, X) for n in links)):
+            # A body larger than the room: shorter forces first (up to a quarter of their length), then smaller links.
+            if X < force_scale(largest, 10.0):
+                X = _bigger_X(X)
+            else:
+                k = _bigger_k(k)
+            continue
+        # All in one figure, both scales smaller together, while every link readable now stays readable.
+        readable = [n for n in links if _span(c, n) / k >= SHORTEST_LINK * (1 - 1e-9)]
+        sizes = [free_body_size(c, n, k if n in readable or not _span(c, n) else _readable_k(c, n, X, room), X)
+                 for n in links]
+        smaller = _bigger_k(k)
+        if _rows_height(sizes, room[0]) <= room[1] or \
+                any(_span(c, n) / smaller < SHORTEST_LINK * (1 - 1e-9) for n in readable) or smaller == k:
             break
-        k, X = _bigger_k(k), _bigger_X(X)
+        k, X = smaller, _bigger_X(X)
     return k, X
+
+
+def _readable_k(c, link: int, X: float, room) -> float:
+    """The smallest drawing of ``link`` (the largest standard k) at which it prints :data:`SHORTEST_LINK` long and
+    fits ``room``, or the largest that fits when none is that long."""
+    span = _span(c, link)
+    fits = [k for k in LENGTH_SCALES if all(a <= b for a, b in zip(free_body_size(c, link, k, X), room))]
+    readable = [k for k in fits if span / k >= SHORTEST_LINK * (1 - 1e-9)]
+    return readable[-1] if readable else fits[0] if fits else LENGTH_SCALES[-1]
+
+
+def free_body_plan(c, links, room=FREE_BODY_ROOM) -> list[tuple[float, float, list[int], dict]]:
+    """The figures of the free bodies of ``links``: (k, X, links of the figure, {link: its own k}), in the links'
+    order.
+
+    The bodies are drawn at :func:`free_body_scales`, as many to a figure as fit ``room``; a link that would print
+    shorter than :data:`SHORTEST_LINK` there (a crank beside a long connecting rod) is enlarged, at a length scale
+    of its own that its panel states, at the same force scale.
+    """
+    k, X = free_body_scales(c, links, room)
+    plan = []
+    for n in links:
+        own = {} if _span(c, n) == 0 or _span(c, n) / k >= SHORTEST_LINK * (1 - 1e-9) else \
+            {n: _readable_k(c, n, X, room)}
+        last = plan[-1] if plan else None
+        if last and _rows_height([free_body_size(c, m, {**last[3], **own}.get(m, k), X) for m in last[2] + [n]],
+                                 room[0]) <= room[1]:
+            last[2].append(n)
+            last[3].update(own)
+        else:
+            plan.append((k, X, [n], own))
+    return plan
 
 
 # -- polygons -------------------------------------------------------------------------------------------------------
@@ -285,7 +343,23 @@ def mechanism(s: Subject, c, i: int, k: float, *, room=False, key="mechanism") -
                      f"the mechanism at {s.where(i)}, drawn at {length_text(k)}", natural=True)
 
 
-def free_bodies(s: Subject, c, i: int, links, k: float, X: float, *, unknowns=True, inertia=True) -> Picture:
+def free_body_figures(doc, s: Subject, c, i: int, links, caption: str, **kw) -> str:
+    """The free bodies of ``links`` in as many figures as fit the page (:func:`free_body_plan`), each at the same
+    scales (:func:`free_body_scales`), the first captioned ``caption`` and its scales. Returns its label."""
+    first = None
+    for k, X, group, own in free_body_plan(c, links):
+        said = statement(k, X)
+        if own:
+            said = said.replace("; forces", "".join(f"; link {n} at {length_text(m)}, enlarged to read"
+                                                     for n, m in own.items()) + "; forces")
+        label = doc.figure([free_bodies(s, c, i, group, k, X, enlarged=own, **kw)],
+                           (caption if first is None else "The free bodies, continued.") + " " + said)
+        first = first or label
+    return first
+
+
+def free_bodies(s: Subject, c, i: int, links, k: float, X: float, *, unknowns=True, inertia=True,
+                enlarged=None) -> Picture:
     """The free bodies of ``links`` at 1:k and 1 mm = X N; ``unknowns=False`` leaves out the forces the
     construction finds, ``inertia=False`` the inertia resultants too (a sheet whose student finds them from the
     input motion: only the external loads are drawn)."""
@@ -293,8 +367,11 @@ def free_bodies(s: Subject, c, i: int, links, k: float, X: float, *, unknowns=Tr
 
     shown = c if inertia else dataclasses.replace(c, inertia={})
     key = f"free-bodies-{i}-{'all' if unknowns else 'given'}{'' if inertia else '-external'}"
+    if list(links) != list(c.mechanism.moving):
+        key += "-" + "-".join(str(n) for n in links)
+    key += "".join(f"-{n}at{m:g}" for n, m in (enlarged or {}).items())
     return s.picture(key, lambda: paper.draw_free_bodies(shown, links, length_scale=k, force_scale=X,
-                                                         unknowns=unknowns),
+                                                         unknowns=unknowns, enlarged=enlarged),
                      alt=f"the free bodies at {length_text(k)}, forces at {force_text(X)}", natural=True)
 
 

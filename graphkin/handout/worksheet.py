@@ -90,8 +90,6 @@ def worksheet(doc: Doc, s: Subject, entry: dict, c, i: int, *, find=True, from_m
         polygons.boxes(doc, s, i)
         motion_room(doc, s, entry)
     links = list(s.mech.moving)
-    # The scale that holds every force the free bodies carry once the student has drawn their inertia resultants.
-    k_fb, X_fb = scaled.free_body_scales(c, links)
     if from_motion:
         caption = ("The free bodies with the external loads only. Draw each inertia resultant from your table, on its "
                    "line at h from G: here, or on the mechanism's drawing, which has room for a line far from its "
@@ -100,8 +98,8 @@ def worksheet(doc: Doc, s: Subject, entry: dict, c, i: int, *, find=True, from_m
         caption = ("The free bodies with the loads known before the construction ("
                    + ("" if s.static else "the inertia resultant on its line, ") + "external loads); the joint forces "
                    "are yours to find. ")
-    doc.figure([scaled.free_bodies(s, c, i, links, k_fb, X_fb, unknowns=False, inertia=not from_motion)],
-               caption + scaled.statement(k_fb, X_fb))
+    # At the scales that hold every force the free bodies carry once the student has drawn the inertia resultants.
+    scaled.free_body_figures(doc, s, c, i, links, caption.rstrip(), unknowns=False, inertia=not from_motion)
     X = scales.polygon
     doc.heading(2, "Force polygons")
     doc.text(f"Draw each polygon tip to tail at {force_text(X)}, each in its box (it fits at that scale), and "
