@@ -84,3 +84,18 @@ def test_the_engine_s_crank_is_enlarged_and_measured_15_mm_or_more_on_paper():
         assert max(math.dist(p, q) for p in pts for q in pts) * mm_per_unit >= scaled.SHORTEST_LINK - 1e-6
         if n in own:
             assert f"1:{own[n]:g}" in ax.get_title()
+
+
+def test_each_pitch_point_of_the_epicyclic_train_has_its_own_name():
+    """Issue 36: "P" named both pitch points of the epicyclic train. Each is named by its mesh, as the drawing of
+    the mechanism labels it (P34), and one name is never two points."""
+    s = subject("epicyclic_khurmi")
+    c = s.construction(s.worked()[0])
+    where: dict = {}
+    for step in c.steps:
+        for name, X in step.points.items():
+            where.setdefault(name, []).append(np.asarray(X, float))
+    for name, points in where.items():
+        assert all(np.allclose(points[0], X) for X in points), f"{name} names {len(points)} points"
+    pitch = {name for name in where if name.startswith("P")}
+    assert pitch == {"P" + "".join(map(str, sorted(key))) for key in c.pitch_points}
