@@ -17,6 +17,7 @@ from __future__ import annotations
 import math
 
 from graphkin.exercises.exercise import MOTION_KINDS
+from graphkin.exercises.quantities import equilibrium_steps
 from graphkin.graphical.paper import POLYGON_ROOM, READING, force_text, length_text, sheet_reach, sheet_scales
 from graphkin.handout import maths as M
 from graphkin.handout import motion as polygons
@@ -116,8 +117,36 @@ def worksheet(doc: Doc, s: Subject, entry: dict, c, i: int, *, find=True, from_m
         label = f"Polygon {n}" + (f", link {st.link}" if st.link is not None else "") + \
             (f" (sub-problem {st.sub})" if getattr(st, "sub", "") else "") + f", at {force_text(X)}: "
         doc.space(BOX[1], label, polygon_equation(st), width=BOX[0])
+    if asks_analytical(s, from_motion):
+        analytical_room(doc, s)
     if find:
         answer_room(doc, s)
+
+
+def asks_analytical(s: Subject, from_motion: bool = False) -> bool:
+    """Whether the sheet asks for the analytical route too: a problem's does ("both analytically and graphically"),
+    unless it starts from the input motion (graphically only); an exercise's where its text asks for it."""
+    if s.variant is not None:
+        return "analytic" in s.variant.sheet()["intro"].lower()
+    return not from_motion
+
+
+def analytical_room(doc: Doc, s: Subject):
+    """Room for the analytical route, numbered as the key numbers it: each group's equilibrium equations, a link's
+    ΣFx = 0, ΣFy = 0 and ΣM_G = 0 each, from the last group located to the driver."""
+    loads = "its external loads" + ("" if s.static else " and its inertia loads (given above)")
+    doc.heading(2, "The analytical part")
+    doc.text(f"Each moving link is in equilibrium under the joint forces, {loads}: write ΣFx = 0, ΣFy = 0 and ΣM "
+             "about its centre of mass G = 0 for each link, group by group as numbered (step 1, the inertia loads, "
+             "is given above), and solve each group for its unknowns.")
+    for n, g in equilibrium_steps(s.mech):
+        links = ", ".join(str(link) for link in g.links)
+        doc.space(ANALYTICAL_ROOM * len(g.links) + 12.0, f"Step {n}. The equilibrium of {g.label} "
+                  f"(link{'s' if len(g.links) > 1 else ''} {links}):")
+
+
+ANALYTICAL_ROOM = 24.0
+"""Room for one link's three equations with the numbers in, and what they give [mm]."""
 
 
 def where_to_draw(doc: Doc, s: Subject, c, k: float, *, offsets=True):

@@ -67,3 +67,32 @@ def test_the_shaper_s_sheet_names_what_it_sets_aside_and_boxes_the_rest():
     text = "".join(r if isinstance(r, str) else M.to_text(r) for r in said["runs"])
     assert f"{NEGLIGIBLE:.1%}" in text
     assert all(M.to_text(polygon_equation(st)) in text for st in aside)
+
+
+@pytest.mark.parametrize("name, from_motion, asked", [("strip_cutter", False, True), ("shaper_six_bar", False, True),
+                                                     ("strip_cutter", True, False)])
+def test_a_sheet_that_asks_for_both_routes_has_room_for_the_analytical_one(name, from_motion, asked):
+    """The problem says "both analytically and graphically": its worksheet has a box per step of the analytical
+    solution, numbered as the key numbers them; a sheet that starts from the input motion asks for the polygons."""
+    from graphkin.exercises.quantities import equilibrium_steps
+
+    doc = handout.build(name, version="blank", from_motion=from_motion)
+    steps = [b["label"] for b in doc["blocks"] if b["kind"] == "space" and b["label"].startswith("Step ")]
+    said = " ".join(M.to_text(r) if not isinstance(r, str) else r for b in doc["blocks"] if b["kind"] == "text"
+                    for r in b["runs"])
+    mech = subject(name).mech
+    if asked:
+        assert "both analytically and graphically" in said
+        assert [label.split(".")[0] for label in steps] == [f"Step {n}" for n, _ in equilibrium_steps(mech)]
+    else:
+        assert steps == []
+
+
+@pytest.mark.parametrize("name", ["double_slider_graphical", "shaper_polygons", "fourbar_polygons"])
+def test_an_exercise_sheet_has_room_for_the_analytical_part_only_when_it_asks(name):
+    from graphkin import exercises
+
+    doc = handout.build(name, student="s1", secret="x")
+    steps = [b for b in doc["blocks"] if b["kind"] == "space" and b["label"].startswith("Step ")]
+    asks = "analytic" in exercises.variant(name, "s1", "x").sheet()["intro"].lower()
+    assert bool(steps) == asks
