@@ -142,8 +142,11 @@ def graphical(doc: Doc, s: Subject, entry: dict, c, i: int, bodies: str | None =
     steps = worked_steps(c)
     sums = [scaled.resultant_step(c, st) for st in c.steps if st.kind == "resultant" and not getattr(st, "sub", "")]
     drawn = [st for st in sums if st is not None] + steps
+    drawn, aside, limit = scaled.set_aside(drawn)
     if drawn:
         X = scaled.polygon_scale(drawn)
+        if aside:
+            doc.text(*scaled.set_aside_text(aside, limit, X, polygon_equation))
         # As many figures as it takes for each to fit a page (the shaper's thirteen polygons take two).
         groups = scaled.polygon_groups(drawn, X, [_polygon_title(st) for st in drawn])
         for n, group in enumerate(groups):

@@ -335,6 +335,35 @@ def merged(panels, n: int) -> list[Step]:
     return out
 
 
+NEGLIGIBLE = 0.005
+"""A polygon whose every force is under this fraction of the largest force of the construction is set aside on a
+worksheet (and its key): it would print as a dot (the shaper's sub-problems of a link's own weight and inertia, under 1 N beside
+its 500 N cutting force), and what it adds to any answer is under what a ruler reads."""
+
+
+def set_aside(steps) -> tuple[list, list, float]:
+    """``steps`` split into those a worksheet gives a box and those it sets aside as negligible (:data:`NEGLIGIBLE`):
+    a polygon of negligible forces only, and a sum of the sub-problems with one part that is not negligible (it
+    equals that part). Returns (kept, set aside, the limit [N])."""
+    largest = max((math.hypot(*a.vector) for st in steps for a in st.polygon), default=0.0)
+    limit = NEGLIGIBLE * largest
+    kept, aside = [], []
+    for st in steps:
+        sizes = [math.hypot(*a.vector) for a in st.polygon]
+        parts = sizes[:-1] if st.kind == "superpose" else sizes
+        small = max(sizes, default=0.0) < limit or st.kind == "superpose" and sum(x >= limit for x in parts) <= 1
+        (aside if small and st.kind != "driver" else kept).append(st)
+    return kept, aside, limit
+
+
+def set_aside_text(aside, limit: float, X: float, equation) -> tuple:
+    """The sentence that names the polygons set aside (:func:`set_aside`) at 1 mm = X N, each by its ``equation``."""
+    return (f"Set aside, negligible at this scale (each of its forces under {NEGLIGIBLE:.1%} of the largest, "
+            f"{M.fmt(limit)} N, which prints under {M.fmt(limit / X, 2)} mm): ",
+            *[x for n, st in enumerate(aside) for x in ([", "] if n else []) + [equation(st)]],
+            ". A sum whose other parts are set aside equals its one part to the drawing's precision.")
+
+
 # -- pictures ---------------------------------------------------------------------------------------------------------
 def mechanism(s: Subject, c, i: int, k: float, *, room=False, key="mechanism") -> Picture:
     from graphkin import draw

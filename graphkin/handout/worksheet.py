@@ -107,12 +107,9 @@ def worksheet(doc: Doc, s: Subject, entry: dict, c, i: int, *, find=True, from_m
              f"measure the sides you find: a reading to ±{READING:g} mm is ±{M.fmt(READING * X)} N.")
     sums = [scaled.resultant_step(c, st) for st in c.steps if st.kind == "resultant" and not getattr(st, "sub", "")]
     steps = [st for st in sums if st is not None] + worked_steps(c)
-    steps, aside, limit = set_aside(steps)
+    steps, aside, limit = scaled.set_aside(steps)
     if aside:
-        doc.text(f"Set aside, negligible at this scale (each of its forces under {NEGLIGIBLE:.1%} of the largest, "
-                 f"{M.fmt(limit)} N, which prints under {M.fmt(limit / X, 2)} mm): ",
-                 *[x for n, st in enumerate(aside) for x in ([", "] if n else []) + [polygon_equation(st)]],
-                 ". A sum whose other parts are set aside equals its one part to the drawing's precision.")
+        doc.text(*scaled.set_aside_text(aside, limit, X, polygon_equation))
     for n, st in enumerate(steps, start=1):
         label = f"Polygon {n}" + (f", link {st.link}" if st.link is not None else "") + \
             (f" (sub-problem {st.sub})" if getattr(st, "sub", "") else "") + f", at {force_text(X)}: "
@@ -172,27 +169,6 @@ def where_to_draw(doc: Doc, s: Subject, c, k: float, *, offsets=True):
         doc.text("Where the lines go on this drawing" + (" (a point of the construction that lies off the page is "
                  "reached another way, as said):" if r.detours else ":"))
         doc.items(items, small=True)
-
-
-NEGLIGIBLE = 0.005
-"""A polygon whose every force is under this fraction of the largest force of the construction is set aside on a
-worksheet: it would print as a dot (the shaper's sub-problems of a link's own weight and inertia, under 1 N beside
-its 500 N cutting force), and what it adds to any answer is under what a ruler reads."""
-
-
-def set_aside(steps) -> tuple[list, list, float]:
-    """``steps`` split into those a worksheet gives a box and those it sets aside as negligible (:data:`NEGLIGIBLE`):
-    a polygon of negligible forces only, and a sum of the sub-problems with one part that is not negligible (it
-    equals that part). Returns (kept, set aside, the limit [N])."""
-    largest = max((math.hypot(*a.vector) for st in steps for a in st.polygon), default=0.0)
-    limit = NEGLIGIBLE * largest
-    kept, aside = [], []
-    for st in steps:
-        sizes = [math.hypot(*a.vector) for a in st.polygon]
-        parts = sizes[:-1] if st.kind == "superpose" else sizes
-        small = max(sizes, default=0.0) < limit or st.kind == "superpose" and sum(x >= limit for x in parts) <= 1
-        (aside if small and st.kind != "driver" else kept).append(st)
-    return kept, aside, limit
 
 
 def motion_room(doc: Doc, s: Subject, entry: dict):

@@ -18,7 +18,7 @@ from graphkin.handout import maths as M
 from graphkin.handout import scaled
 from graphkin.handout.compact import polygon_equation, worked_steps
 from graphkin.handout.document import subject
-from graphkin.handout.worksheet import NEGLIGIBLE, set_aside
+from graphkin.handout.scaled import NEGLIGIBLE, set_aside
 
 
 def _sheet_steps(name: str):
