@@ -268,7 +268,9 @@ def draw_free_body(construction, link: int, *, ax=None, force_scale=None, title=
             # Points per mm of drawing, roughly (the view spans about 1.3 L): arrows go outside below ~16 pt.
             drawn += dimension(ax, lab, G, P, text, s=s, small=16 / ppu, color=s.ink, broken=broken)
             drawn.labels["h"] = drawn[-1]
-        else:
+        elif len(pts) > 1:
+            # A body that turns: its resultant passes through G, said in words. A slider (one point) never turns:
+            # "h = 0" there would be one more label on its one crowded point.
             away = G - centroid if np.hypot(*(G - centroid)) else (1, -1)
             t = lab.label("h = 0", _around(G, away, (9.0, 16.0, 26.0)), size=s.small_size)
             drawn.labels["h"] = t

@@ -28,7 +28,7 @@ from graphkin.draw.geometry import Geometry
 from graphkin.draw.labels import Labeler, point_label_candidates
 from graphkin.draw.scales import nice_round, scale_bar
 from graphkin.draw.text import sub
-from graphkin.graphical.paper import length_text
+from graphkin.graphical.paper import length_text, sheet_reach
 from graphkin.model import Prismatic, Revolute
 
 
@@ -338,9 +338,8 @@ def draw_mechanism(construction, *, ax=None, labels=True, faint=False, emphasis=
         drawn.add(dot)
         lab.dot(X, 3.6)
     if room:
-        centre = np.mean([p for d in geom.P.values() for p in d.values()], axis=0)
-        extent += [P for step in c.steps for P in (np.asarray(X, float) * MM for X in step.points.values())
-                   if np.all(np.isfinite(P)) and np.hypot(*(P - centre)) <= 3 * geom.size]
+        # Every point the construction draws here (those far off are drawn another way: graphical.paper.sheet_reach).
+        extent += [np.asarray(X, float) * MM for X in sheet_reach(c).points()]
     # A length scale: the drawing is to scale, in mm.
     arr = np.asarray(extent, float)
     lo = arr.min(axis=0)

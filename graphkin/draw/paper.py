@@ -202,7 +202,7 @@ def _names(text: str) -> str:
 
 
 def draw_free_bodies(construction, links=None, *, length_scale: float, force_scale: float, unknowns=True,
-                     width: float = FIGURE_WIDTH, **style) -> Figure:
+                     width: float = FIGURE_WIDTH, enlarged=None, **style) -> Figure:
     """Every free body of ``links`` at one length scale and one force scale, side by side, printed at them.
 
     Parameters
@@ -218,6 +218,9 @@ def draw_free_bodies(construction, links=None, *, length_scale: float, force_sca
         Draw the joint forces and the driver's effort (False: only the known loads, for a worksheet).
     width : float
         The figure's width [mm].
+    enlarged : dict of int to float, optional
+        A link drawn at a length scale of its own, k (a crank too short to read beside a long rod): its title and a
+        length bar under it state its scale.
 
     Returns
     -------
@@ -226,18 +229,38 @@ def draw_free_bodies(construction, links=None, *, length_scale: float, force_sca
     """
     c = construction
     links = list(c.mechanism.moving if links is None else links)
+    enlarged = enlarged or {}
+    s = _style.resolve(**style)
     fig = _new_figure(width)
-    paper = 1.0 / length_scale
     panels = []
     for link in links:
+        k = enlarged.get(link, length_scale)
         ax = fig.add_axes([0, 0, 0.2, 0.2], axes_class=BareAxes)
+        title = c.mechanism.link(link).label + (f", {length_text(k)}" if link in enlarged else "")
         # In the drawing's units (mm of the mechanism), X N per printed mm is X / k N per mm drawn.
-        draw_free_body(c, link, ax=ax, force_scale=force_scale / length_scale, title=c.mechanism.link(link).label,
-                       unknowns=unknowns, paper=paper, bar=False, place=False, **style)
-        panels.append((ax, paper))
+        drawn = draw_free_body(c, link, ax=ax, force_scale=force_scale / k, title=title, unknowns=unknowns,
+                               paper=1.0 / k, bar=False, place=False, **style)
+        if link in enlarged:
+            _own_length_bar(ax, drawn, k, s)
+        panels.append((ax, 1.0 / k))
     height = arrange(fig, panels, width=width, strip=STRIP)
     scale_strip(fig, height, length_scale=length_scale, force_scale=force_scale, width=width, **style)
     return fig
+
+
+def _own_length_bar(ax, drawn, k: float, s) -> None:
+    """A length bar under a panel drawn at a scale of its own (about 15 mm on paper), reading its scale."""
+    (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
+    value = nice_round(15.0 * k)
+    note = length_text(k)
+    at = (x0 + 3.0 * k, y0 - 6.0 * k)
+    drawn += scale_bar(ax, at, value, value, s=s, unit_text="mm", tick=1.0 * k, note=note,
+                       labeler=getattr(drawn, "labeler", None))
+    # Room in the panel for the bar and its reading (about 1.8 mm a character at its size), so that the reading
+    # keeps off the next panel.
+    reading = len(f"{num(value)} mm   ({note})")
+    ax.set_xlim(x0, max(x1, at[0] + value + (3.0 + 1.8 * reading) * k))
+    ax.set_ylim(y0 - 10.0 * k, y1)
 
 
 def _one_axes(fig):

@@ -579,20 +579,23 @@ class Builder:
         d /= abs(d)
         nW, nF = self.name(g.j, g.k), self.name(g.support, g.k)
         Rk = self.rname[g.k]
+        # Each mesh's pitch point its own name, as the drawing of the mechanism labels it: P34, not a second "P".
+        pitch = "P" + "".join(str(n) for n in sorted(mesh.links))
         if flow:
-            where = Later(lambda scope, nW, angle, k, eta, rho, rk, driven: _lead(
+            where = Later(lambda scope, nW, angle, k, eta, rho, rk, driven, pitch: _lead(
                 scope, f"the tooth force {nW} lies on a line inclined {number(math.degrees(angle))}° to the common "
                 f"tangent, on the flank that opposes the load on gear {k}; with the mesh efficiency η = {number(eta)} "
-                f"it crosses the line of centres at P′, {number(rho * 1e3)} mm from gear {k}'s centre instead of the "
-                f"pitch radius {number(rk * 1e3)} mm, so that the driven gear {driven} receives η times the ideal "
+                f"it crosses the line of centres at {pitch}′, {number(rho * 1e3)} mm from gear {k}'s centre instead of "
+                f"the pitch radius {number(rk * 1e3)} mm, so that the driven gear {driven} receives η times the ideal "
                 f"torque (relative to the carrier)."), self.scope, nW, mesh.pressure_angle, g.k, mesh.efficiency,
-                rho, mesh.radius(g.k), g.k if flow > 0 else g.j)
-            self.add("line", where, g.k, (Line(nW, xy(P), xy(d)),), {"P′": xy(P)})
+                rho, mesh.radius(g.k), g.k if flow > 0 else g.j, pitch)
+            self.add("line", where, g.k, (Line(nW, xy(P), xy(d)),), {f"{pitch}′": xy(P)})
         else:
-            self.add("line", Later(lambda scope, nW, angle, k: _lead(
-                scope, f"the tooth force {nW} lies on the pressure line through the pitch point P, inclined "
+            self.add("line", Later(lambda scope, nW, angle, k, pitch: _lead(
+                scope, f"the tooth force {nW} lies on the pressure line through the pitch point {pitch}, inclined "
                 f"{number(math.degrees(angle))}° to the common tangent, on the flank that opposes the load on gear "
-                f"{k}."), self.scope, nW, mesh.pressure_angle, g.k), g.k, (Line(nW, xy(P), xy(d)),), {"P": xy(P)})
+                f"{k}."), self.scope, nW, mesh.pressure_angle, g.k, pitch), g.k, (Line(nW, xy(P), xy(d)),),
+                {pitch: xy(P)})
         arm = cross(P - Ck, d)
         F_W = (-R.about(Ck) / arm) * d
         F_piv = -R.F - F_W

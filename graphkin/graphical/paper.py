@@ -18,6 +18,7 @@ Examples
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import weakref
 from dataclasses import dataclass
@@ -25,6 +26,8 @@ from functools import partial
 
 import numpy as np
 
+from graphkin.graphical.reach import reach
+from graphkin.model import GearMesh, Prismatic
 from graphkin.notation import num
 
 PAGE_WIDTH = 210.0
@@ -128,23 +131,35 @@ def polygon_size(arrows) -> tuple[float, float]:
 
 
 def mechanism_size(construction, *, points=None) -> tuple[float, float]:
-    """Width and height [mm] of a drawing of the mechanism at the construction's position.
+    """Width and height [mm] of a drawing of the mechanism at the construction's position, as
+    :func:`graphkin.draw.draw_mechanism` draws it: its points, each gear's pitch circle and teeth, each slider's
+    rails along its guide, the ground symbols and the scale bar under them, and a margin of 9 % of the larger side
+    all round.
 
     ``points`` [m]: points the drawing also shows or leaves room for (a point of concurrency, where a student
-    draws lines of action to), those within three mechanism sizes (a drawing names a point further off
-    instead of showing it). The ground symbols, slider blocks and labels add a fifth of its size.
+    draws lines of action to: :func:`sheet_reach` chooses them).
     """
-    pts = np.array([p for link in construction.points.values() for p in link.values()] or [(0.0, 0.0)]) * 1e3
-    size = float(np.max(np.ptp(pts, axis=0))) if len(pts) > 1 else 1.0
-    if points:
-        centre = pts.mean(axis=0)
-        extra = [np.asarray(P, float) * 1e3 for P in points]
-        extra = [P for P in extra if np.all(np.isfinite(P)) and np.hypot(*(P - centre)) <= 3 * max(size, 1.0)]
-        if extra:
-            pts = np.vstack([pts, extra])
-    w, h = np.ptp(pts, axis=0)
-    pad = 0.2 * max(size, 1.0)
-    return float(w + pad), float(h + pad)
+    c = construction
+    pts = [np.asarray(p, float) * 1e3 for link in c.points.values() for p in link.values()] or [np.zeros(2)]
+    gears = [(np.asarray(c.points[n][name], float) * 1e3, r * 1e3) for mesh in c.mechanism.joints
+             if isinstance(mesh, GearMesh) for n, name, r in zip(mesh.links, mesh.centers, mesh.radii)]
+    for O, r in gears:
+        pts += [O - r, O + r]
+    size = max(float(np.max(np.ptp(np.asarray(pts), axis=0))), 1.0)
+    sym = 0.032 * size  # graphkin.draw.geometry's symbol size: a slider's rails are 2 × 5.44 of it long
+    for O, r in gears:
+        pts += [O - 1.2 * r, O + 1.2 * r]
+    for joint in c.mechanism.joints:
+        if isinstance(joint, Prismatic):
+            u = np.asarray(c.guides.get(tuple(sorted((joint.guide, joint.slider))), (1.0, 0.0)), float)
+            X = np.asarray(c.points[joint.slider][joint.point], float) * 1e3
+            pts += [X - u * 6.04 * sym, X + u * 6.04 * sym]
+    pts += [np.asarray(P, float) * 1e3 for P in points or () if np.all(np.isfinite(P))]
+    w, h = np.ptp(np.asarray(pts), axis=0)
+    # The ground symbols (2 sym) and the scale bar (0.1 size) under everything.
+    h = h + 2 * sym + 0.1 * size
+    margin = 0.18 * max(w, h)
+    return float(w + margin), float(h + margin)
 
 
 # -- the scales of a student's worksheet ----------------------------------------------------------------------
@@ -215,8 +230,42 @@ def sheet_scales(construction) -> SheetScales:
     return _once(construction, "sheet", partial(_sheet_scales, construction))
 
 
+def sheet_reach(construction):
+    """What a worksheet's drawing of the mechanism has room for (:class:`graphkin.graphical.reach.Reach`).
+
+    The drawing keeps the mechanism as large as it can: at the largest standard scale at which the mechanism and
+    every point its construction draws (lines of action near their links, where they meet) fit
+    :data:`MECHANISM_ROOM`, or one scale smaller than the mechanism alone needs when they do not. At that scale
+    the points are taken nearest the mechanism first, as many as fit; a point further off is not drawn, and its
+    step is drawn another way (:mod:`graphkin.graphical.reach`). The key draws the same points.
+    """
+    return _once(construction, "reach", partial(_sheet_reach, construction))
+
+
+def _sheet_reach(construction):
+    every = reach(construction, near=lambda X: True)
+    alone = length_scale(mechanism_size(construction), MECHANISM_ROOM)
+    if length_scale(mechanism_size(construction, points=every.points()), MECHANISM_ROOM) <= alone * (1 + 1e-9):
+        box = np.asarray(every.points() + [p for link in construction.points.values() for p in link.values()])
+        return dataclasses.replace(every, box=(tuple(box.min(axis=0)), tuple(box.max(axis=0))))
+    smaller = next((k for k in LENGTH_SCALES if k > alone * (1 + 1e-9)), alone)
+    centre = np.asarray(every.centre, float)
+    kept = []
+    for P in sorted(every.points(), key=lambda P: math.hypot(*(np.asarray(P) - centre))):
+        w, h = mechanism_size(construction, points=kept + [P])
+        if w / smaller <= MECHANISM_ROOM[0] and h / smaller <= MECHANISM_ROOM[1]:
+            kept.append(P)
+    box = np.asarray(kept or [every.centre], float)
+    lo, hi = box.min(axis=0) - 1e-9, box.max(axis=0) + 1e-9
+    pts = np.array([p for link in construction.points.values() for p in link.values()])
+    lo, hi = np.minimum(lo, pts.min(axis=0)), np.maximum(hi, pts.max(axis=0))
+    held = reach(construction, near=lambda X: bool(np.all((X >= lo) & (X <= hi))))
+    return dataclasses.replace(held, box=(tuple(lo), tuple(hi)))
+
+
 def _sheet_scales(construction) -> SheetScales:
-    points = [P for step in construction.steps for P in step.points.values()]
+    # Room for every point the construction draws on the mechanism; a point further off is drawn another way.
+    points = sheet_reach(construction).points()
     k = length_scale(mechanism_size(construction, points=points), MECHANISM_ROOM)
     sizes = [polygon_size(step.polygon) for step in construction.steps if step.polygon]
     X = max([force_scale(size, POLYGON_ROOM) for size in sizes] or [1.0])

@@ -15,6 +15,7 @@ import numpy as np
 
 from graphkin.exercises.exercise import MOTION_KINDS
 from graphkin.exercises.quantities import equilibrium_steps
+from graphkin.graphical.paper import length_text, sheet_reach, sheet_scales
 from graphkin.handout import book, equilibrium, scaled
 from graphkin.handout import maths as M
 from graphkin.handout import motion as polygons
@@ -116,11 +117,8 @@ def _result(step) -> list:
 def free_bodies(doc: Doc, s: Subject, c, i: int) -> str:
     """The free bodies, which both routes start from: the analytical one writes their equations, the graphical one
     draws their lines of action and polygons. Returns the figure's label."""
-    links = list(s.mech.moving)
-    k_fb, X_fb = scaled.free_body_scales(c, links)
-    return doc.figure([scaled.free_bodies(s, c, i, links, k_fb, X_fb)],
-                      "Every force on each moving link" + ("" if s.static else ", the inertia resultant on its offset "
-                                                           "line") + ". " + scaled.statement(k_fb, X_fb))
+    return scaled.free_body_figures(doc, s, c, i, list(s.mech.moving), "Every force on each moving link" + (
+        "" if s.static else ", the inertia resultant on its offset line") + ".")
 
 
 def graphical(doc: Doc, s: Subject, entry: dict, c, i: int, bodies: str | None = None):
@@ -128,17 +126,27 @@ def graphical(doc: Doc, s: Subject, entry: dict, c, i: int, bodies: str | None =
     force polygons, and every step of the construction numbered as the feedback names them, with what it finds."""
     doc.heading(2, "The graphical construction")
     first, at = doc.figures + 1, len(doc.blocks)
-    concurrent = [st for st in c.steps if st.kind in ("three-force", "line", "couple") and st.lines]
-    if concurrent:
-        k = scaled.construction_scale(c, concurrent)
-        titles = _construction_titles(concurrent) if len(concurrent) > 1 else None
-        doc.figure([scaled.constructions(s, c, i, concurrent, k, titles)],
-                   "The lines of action of each three-force member, and where they meet. " + scaled.statement(k))
+    # How each resultant's line is found, then each three-force member's lines, each as far as the page holds it.
+    found = scaled.merged([p for p in (scaled.resultant_panel(c, st) for st in c.steps if st.kind == "resultant")
+                           if p is not None], 2)
+    concurrent = [scaled.drawable(c, st) for st in c.steps if st.kind in ("three-force", "line", "couple") and st.lines]
+    k = None
+    if found or concurrent:
+        panels = found + concurrent
+        k = scaled.construction_scale(c, panels)
+        titles = _construction_titles(panels) if len(panels) > 1 else None
+        doc.figure([scaled.constructions(s, c, i, panels, k, titles)],
+                   ("How each resultant's line is found: the lines of its parts meet at K, which it passes through. "
+                    if found else "") + "The lines of action of each three-force member, and where they meet. "
+                   + scaled.statement(k))
     steps = worked_steps(c)
     sums = [scaled.resultant_step(c, st) for st in c.steps if st.kind == "resultant" and not getattr(st, "sub", "")]
     drawn = [st for st in sums if st is not None] + steps
+    drawn, aside, limit = scaled.set_aside(drawn)
     if drawn:
         X = scaled.polygon_scale(drawn)
+        if aside:
+            doc.text(*scaled.set_aside_text(aside, limit, X, polygon_equation))
         # As many figures as it takes for each to fit a page (the shaper's thirteen polygons take two).
         groups = scaled.polygon_groups(drawn, X, [_polygon_title(st) for st in drawn])
         for n, group in enumerate(groups):
@@ -158,11 +166,18 @@ def graphical(doc: Doc, s: Subject, entry: dict, c, i: int, bodies: str | None =
     blocks, doc.blocks[at:] = doc.blocks[at:], []
     doc.text(f"The construction, step by step ({figures} draw it):")
     doc.items(items, small=True)
+    detours = sheet_reach(c).detours
+    if detours:
+        k = k or sheet_scales(c).length
+        doc.text(f"Drawn another way, where a point lies off the page (lengths on the drawing at {length_text(k)}):")
+        doc.items([scaled.detour_text(d, k, True) for d in detours], small=True)
     doc.blocks += blocks
 
 
 def _construction_title(step) -> str:
     sub = getattr(step, "sub", "")
+    if step.kind == "resultant":
+        return step.caption
     return (f"Sub-problem {sub}, link {step.link}" if sub else f"Link {step.link}")
 
 

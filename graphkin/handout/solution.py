@@ -90,11 +90,9 @@ def graphical(doc: Doc, s: Subject, entry: dict, c, i: int):
         doc.text(f"The construction cannot be drawn here: {g.get('reason') or (c.reason if c else '')}.")
         return
     links = list(s.mech.moving)
-    k_fb, X_fb = scaled.free_body_scales(c, links)
     doc.text("The free bodies first, every force on each link"
              + ("" if s.static else ", with the inertia resultant on its offset line") + ":")
-    doc.figure([scaled.free_bodies(s, c, i, links, k_fb, X_fb)],
-               "Free bodies of every moving link, with every force found. " + scaled.statement(k_fb, X_fb))
+    scaled.free_body_figures(doc, s, c, i, links, "Free bodies of every moving link, with every force found.")
     drawn = [st for st in c.steps if st.kind not in _TEXT_ONLY and st.kind != "sub-problem"]
     sums = [scaled.resultant_step(c, st) for st in drawn if st.kind == "resultant"]
     X = scaled.polygon_scale(drawn + [st for st in sums if st is not None], _POLYGON_ROOM)

@@ -17,7 +17,8 @@ from __future__ import annotations
 import math
 
 from graphkin.exercises.exercise import MOTION_KINDS
-from graphkin.graphical.paper import POLYGON_ROOM, READING, force_text, length_text, sheet_scales
+from graphkin.exercises.quantities import equilibrium_steps
+from graphkin.graphical.paper import POLYGON_ROOM, READING, force_text, length_text, sheet_reach, sheet_scales
 from graphkin.handout import maths as M
 from graphkin.handout import motion as polygons
 from graphkin.handout import scaled
@@ -79,6 +80,8 @@ def worksheet(doc: Doc, s: Subject, entry: dict, c, i: int, *, find=True, from_m
     doc.figure([scaled.mechanism(s, c, i, k, room=True, key="sheet-mechanism")],
                f"The mechanism at {s.where(i)}, with room around it to draw the lines of action and find where they "
                f"meet. Scale {length_text(k)}: measure a length and multiply it by {M.fmt(k)}.")
+    if not motion_only(s):
+        where_to_draw(doc, s, c, k, offsets=not from_motion)
     if motion_only(s):
         polygons.boxes(doc, s, i)
         if find:
@@ -88,8 +91,6 @@ def worksheet(doc: Doc, s: Subject, entry: dict, c, i: int, *, find=True, from_m
         polygons.boxes(doc, s, i)
         motion_room(doc, s, entry)
     links = list(s.mech.moving)
-    # The scale that holds every force the free bodies carry once the student has drawn their inertia resultants.
-    k_fb, X_fb = scaled.free_body_scales(c, links)
     if from_motion:
         caption = ("The free bodies with the external loads only. Draw each inertia resultant from your table, on its "
                    "line at h from G: here, or on the mechanism's drawing, which has room for a line far from its "
@@ -98,20 +99,76 @@ def worksheet(doc: Doc, s: Subject, entry: dict, c, i: int, *, find=True, from_m
         caption = ("The free bodies with the loads known before the construction ("
                    + ("" if s.static else "the inertia resultant on its line, ") + "external loads); the joint forces "
                    "are yours to find. ")
-    doc.figure([scaled.free_bodies(s, c, i, links, k_fb, X_fb, unknowns=False, inertia=not from_motion)],
-               caption + scaled.statement(k_fb, X_fb))
+    # At the scales that hold every force the free bodies carry once the student has drawn the inertia resultants.
+    scaled.free_body_figures(doc, s, c, i, links, caption.rstrip(), unknowns=False, inertia=not from_motion)
     X = scales.polygon
     doc.heading(2, "Force polygons")
     doc.text(f"Draw each polygon tip to tail at {force_text(X)}, each in its box (it fits at that scale), and "
              f"measure the sides you find: a reading to ±{READING:g} mm is ±{M.fmt(READING * X)} N.")
     sums = [scaled.resultant_step(c, st) for st in c.steps if st.kind == "resultant" and not getattr(st, "sub", "")]
     steps = [st for st in sums if st is not None] + worked_steps(c)
+    steps, aside, limit = scaled.set_aside(steps)
+    if aside:
+        doc.text(*scaled.set_aside_text(aside, limit, X, polygon_equation))
     for n, st in enumerate(steps, start=1):
         label = f"Polygon {n}" + (f", link {st.link}" if st.link is not None else "") + \
             (f" (sub-problem {st.sub})" if getattr(st, "sub", "") else "") + f", at {force_text(X)}: "
         doc.space(BOX[1], label, polygon_equation(st), width=BOX[0])
+    if asks_analytical(s, from_motion):
+        analytical_room(doc, s)
     if find:
         answer_room(doc, s)
+
+
+def asks_analytical(s: Subject, from_motion: bool = False) -> bool:
+    """Whether the sheet asks for the analytical route too: a problem's does ("both analytically and graphically"),
+    unless it starts from the input motion (graphically only); an exercise's where its text asks for it."""
+    if s.variant is not None:
+        return "analytic" in s.variant.sheet()["intro"].lower()
+    return not from_motion
+
+
+def analytical_room(doc: Doc, s: Subject):
+    """Room for the analytical route, numbered as the key numbers it: each group's equilibrium equations, a link's
+    ΣFx = 0, ΣFy = 0 and ΣM_G = 0 each, from the last group located to the driver."""
+    loads = "its external loads" + ("" if s.static else " and its inertia loads (given above)")
+    doc.heading(2, "The analytical part")
+    doc.text(f"Each moving link is in equilibrium under the joint forces, {loads}: write ΣFx = 0, ΣFy = 0 and ΣM "
+             "about its centre of mass G = 0 for each link, group by group as numbered (step 1, the inertia loads, "
+             "is given above), and solve each group for its unknowns.")
+    for n, g in equilibrium_steps(s.mech):
+        links = ", ".join(str(link) for link in g.links)
+        doc.space(ANALYTICAL_ROOM * len(g.links) + 12.0, f"Step {n}. The equilibrium of {g.label} "
+                  f"(link{'s' if len(g.links) > 1 else ''} {links}):")
+
+
+ANALYTICAL_ROOM = 24.0
+"""Room for one link's three equations with the numbers in, and what they give [mm]."""
+
+
+def where_to_draw(doc: Doc, s: Subject, c, k: float, *, offsets=True):
+    """Where the lines of action go on the sheet's drawing at 1:k: each inertia resultant's offset from G on the
+    paper, and each step drawn another way because a point of it lies off the drawing (:mod:`graphkin.graphical.reach`).
+    ``offsets=False``: the inertia resultants are the student's to find, and so are their offsets."""
+    r = sheet_reach(c)
+    items = []
+    if offsets:
+        for link, d in c.inertia.items():
+            if d.get("h") and math.hypot(*d["F"]) > 0:
+                h = float(d["h"]) * 1e3
+                line = f"R{link}i"
+                drawn = any(m.what == f"{line}'s line" for m in r.marks)
+                instead = next((x.name for x in r.detours if x.kind == "offset" and line in x.parts), None)
+                tail = (".",) if drawn else (": not needed, ", M.name(instead), "'s line is drawn directly (below).") \
+                    if instead else (", beyond the drawing: the steps that use it are drawn another way (below).",)
+                items.append((M.name(line), f"'s line: {scaled.mm(h / k)} from G{link} on the drawing "
+                              f"(h = {scaled.mm(h)})", *tail))
+    for d in r.detours:
+        items.append(scaled.detour_text(d, k, offsets))
+    if items:
+        doc.text("Where the lines go on this drawing" + (" (a point of the construction that lies off the page is "
+                 "reached another way, as said):" if r.detours else ":"))
+        doc.items(items, small=True)
 
 
 def motion_room(doc: Doc, s: Subject, entry: dict):

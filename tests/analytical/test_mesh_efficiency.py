@@ -195,7 +195,8 @@ def test_the_graphical_route_says_where_the_tooth_force_acts():
     c = construct_forces(parse_problem(epicyclic(0.98)).kinematics(), 0)
     captions = [s.caption for s in c.steps if s.kind == "line" and "efficiency" in s.caption]
     assert len(captions) == 2
-    assert "η = 0.98" in captions[0] and "P′" in captions[0] and "driven gear 3" in captions[0]
+    # Named by its mesh (P34′), as each of the train's two meshes is named apart (issue 36).
+    assert "η = 0.98" in captions[0] and "P34′" in captions[0] and "driven gear 3" in captions[0]
     pitch, contact = np.array(c.pitch_points[(3, 4)]), np.array(c.contacts[(3, 4)])
     # The sun drives: its arm grows from 40 mm, the planet's shrinks from 60 mm, in the ratio η r_P / r_S.
     rho_sun = np.hypot(*contact)

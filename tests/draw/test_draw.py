@@ -136,7 +136,7 @@ def test_every_fbd_arrow_starts_or_ends_at_its_point_of_application(case):
             tail, tip = tail_tip(d.arrows[name])
             length = math.hypot(*(tip - tail))
             tol = 0.02 * length + slack
-            if name.endswith("i") and "not to scale" in d.labels["h"].get_text():
+            if name.endswith("i") and "h" in d.labels and "not to scale" in d.labels["h"].get_text():
                 # A far line of action drawn nearer G (a broken dimension): on the way from G to the true line.
                 G = np.array(c.G[link]) * MM
                 ends = (tail, tip) if math.hypot(*(tail - X)) < math.hypot(*(tip - X)) else (tip, tail)
@@ -190,6 +190,10 @@ def test_h_is_dimensioned_where_the_inertia_force_is_offset(case):
         if not inert or inert["h"] is None or math.hypot(*inert["F"]) == 0:
             continue
         h_texts = [t for t in texts_of(d.ax) if "h =" in t]
+        if inert["h"] == 0 and len(c.points[link]) == 1:
+            # A slider never turns: no "h = 0" crowding its one point (issue 36).
+            assert not h_texts, (case.name, link)
+            continue
         assert h_texts, (case.name, link)
         if inert["h"] > 0:
             assert any(t.startswith(f"h = {inert['h'] * MM:.4g} mm".replace("-", "−")) for t in h_texts), h_texts

@@ -268,7 +268,7 @@ def test_the_gearset_graphically(gears):
     F23g = np.array(poly3.values["F23"])
     assert cg.valid and not cg.warnings
     assert not steps_of(cg, "three-force") and "only a couple" in couple.caption
-    assert np.allclose(pressure.points["P"], P) and np.allclose(cg.pitch_points[(2, 3)], P)
+    assert np.allclose(pressure.points["P23"], P) and np.allclose(cg.pitch_points[(2, 3)], P)
     assert math.isclose(tilt(line.direction, e23), 90 - math.degrees(phi))
     assert math.isclose(off_line(O2, line), r2 * math.cos(phi)) and math.isclose(off_line(O3, line), r3 * math.cos(phi))
     assert [arrow.name for arrow in poly3.polygon] == ["F23", "F13"]
