@@ -221,13 +221,14 @@ class Labeler:
         self.ax, self.s = ax, s
         self.items = []
         self.owns = []
+        self.spares = []
         self.segments = []
         self.boxes = []
         self.texts = []
         self.fixed = []
         self.heads = []
         self.vectors = []
-        """The arrows a label may name (:meth:`arrow`'s index): (tail, tip) [data]."""
+        """The arrows a label may name (:meth:`arrow`'s index): (tail, tip) [data], head [pt]."""
         self.leaders = []
         """Leader lines drawn by :meth:`place` from a label put away from its anchor to the anchor."""
         self.room = None
@@ -266,7 +267,7 @@ class Labeler:
         self.segment(tail, tip, lw)
         if head > 0:
             self.heads.append((np.asarray(tail, float), np.asarray(tip, float), float(head)))
-        self.vectors.append((np.asarray(tail, float), np.asarray(tip, float)))
+        self.vectors.append((np.asarray(tail, float), np.asarray(tip, float), float(head)))
         return len(self.vectors) - 1
 
     def curve(self, pts, lw=0.0, head=0.0):
@@ -280,9 +281,11 @@ class Labeler:
         """A mark ``size`` points across centred on ``P`` (a pin, a centre of mass)."""
         self.box(P[0], P[1], P[0], P[1], pad=size / 2.0)
 
-    def label(self, text, candidates, *, color=None, size=None, zorder=6.0, own=None, **kw):
+    def label(self, text, candidates, *, color=None, size=None, zorder=6.0, own=None, spare=None, **kw):
         """Add a label; ``candidates`` is a list of (anchor, direction, pad [pt]), best first; ``own``: the index
-        of the arrow it names (:meth:`arrow`), which it must lie nearer than any other (:data:`ASTRAY_COST`)."""
+        of the arrow it names (:meth:`arrow`), which it must lie nearer than any other (:data:`ASTRAY_COST`);
+        ``spare``: a table (a label added after this one, :func:`short_table`) that takes the label as a row
+        when no spot beside its arrow or at a leader's end is clean of other arrows and texts."""
         anchor, d, pad = candidates[0]
         d = unit(d)
         ha, va = _align(d)
@@ -291,6 +294,7 @@ class Labeler:
         t.set_path_effects([halo()])
         self.items.append((t, candidates))
         self.owns.append(own)
+        self.spares.append(spare)
         return t
 
     def avoid(self, texts):
@@ -311,6 +315,31 @@ class Labeler:
         self.fixed += list(texts)
 
     def place(self):
+        """Place every label, once the axes limits are final; a label with a ``spare`` table that finds no clean
+        spot becomes a row of its table, and the labels are placed again without it."""
+        # A table is placed after the labels that may join it: it takes what room they leave.
+        tables = {id(t) for t in self.spares if t is not None}
+        last = [id(t) in tables for t, _ in self.items]
+        order = sorted(range(len(self.items)), key=lambda k: last[k])
+        self.items, self.owns, self.spares = ([v[k] for k in order] for v in (self.items, self.owns, self.spares))
+        while True:
+            # Each round moves a label or more to its table, or ends: the table grows, and may push another out.
+            covers = self._place()
+            moved = [k for k, c in enumerate(covers) if self.spares[k] is not None and c >= ASTRAY_COST]
+            if not moved:
+                return
+            for k in moved:
+                t, table = self.items[k][0], self.spares[k]
+                table.set_text("\n".join(filter(None, [table.get_text(), t.get_text()])))
+                rows = [table.get_gid()[len("table:"):], t.get_gid()[len("label:"):]]
+                table.set_gid("table:" + "|".join(filter(None, rows)))
+                t.set_visible(False)
+            keep = [k for k in range(len(self.items)) if k not in moved]
+            self.items, self.owns, self.spares = ([v[k] for k in keep] for v in (self.items, self.owns, self.spares))
+
+    def _place(self) -> list[float]:
+        """Place each label at its cheapest spot; returns what each covers there (its price, a leader's own
+        price and the preference for nearer spots left out)."""
         ax = self.ax
         for leader in self.leaders:  # placed again: the leaders of last time go
             leader.remove()
@@ -394,7 +423,7 @@ class Labeler:
         # the obstacles other than labels do not depend on the other labels, so one vectorised test
         # serves them all; only the overlaps with labels placed before need the loop.
         if not self.items:
-            return
+            return []
         # All the candidates of all the labels at once: numpy's cost per call, not per spot, was most of this.
         counts = [len(candidates) for _, candidates in self.items]
         spots = [spot for _, candidates in self.items for spot in candidates]
@@ -419,12 +448,20 @@ class Labeler:
         spots = [(d, p, b, A[k], float(wh[0]), float(wh[1])) for d, p, b, k, wh in
                  zip(np.split(D, cuts), np.split(pads, cuts), np.split(every, cuts), firsts, sizes)]
         leaders = []  # display segments of the leaders drawn so far: later labels keep off them
-        ends = to(np.array([e for v in self.vectors for e in v], float).reshape(-1, 2)) if self.vectors else None
+        covers = []
+        if self.vectors:
+            ends = to(np.array([e for v in self.vectors for e in v[:2]], float).reshape(-1, 2))
+            # A head is drawn whole however short its arrow: it reaches 0.75 of its size back from the tip, 0.3 wide.
+            T, B = ends[1::2], ends[0::2]
+            size = np.array([v[2] for v in self.vectors]) * dpi / 72
+            u = (T - B) / np.maximum(np.hypot(*(T - B).T), 1e-300)[:, None]
+            reach = np.maximum(np.hypot(*(T - B).T), 0.75 * size)
+            vectors = (T - u * reach[:, None], T, 0.3 * size)
         for (t, candidates), (D, pads, boxes, A0, w, h), score, own in zip(self.items, spots, np.split(fixed, cuts),
                                                                            self.owns):
             score = score + _box_overlaps(boxes, placed, [TEXT_COST] * len(placed)) + self._on_leaders(boxes, leaders)
             if own is not None:
-                score = score + ASTRAY_COST * _astray(boxes, ends[0::2], ends[1::2], own)
+                score = score + ASTRAY_COST * _astray(boxes, *vectors, own)
             # The first spot, in order of preference, that covers nothing ends the search; the best so far wins.
             n = len(score)
             clean = np.flatnonzero(score == 0)
@@ -433,8 +470,10 @@ class Labeler:
             if score[k] >= LEADER_COST:
                 far = self._with_leader(t, A0, w, h, room, page, cost, placed, leaders, score[k])
                 if far is not None:
-                    placed.append(far)
+                    placed.append(far[0])
+                    covers.append(far[1])
                     continue
+            covers.append(float(score[k]))
             anchor, d = candidates[k][0], D[k]
             ha, va = _align(d)
             t.set_position(tuple(map(float, anchor)))
@@ -443,6 +482,7 @@ class Labeler:
             t.set_va(va)
             placed.append(tuple(boxes[k]))
         self.placed = placed[first:]
+        return covers
 
     @staticmethod
     def _on_leaders(boxes, leaders):
@@ -454,7 +494,8 @@ class Labeler:
 
     def _with_leader(self, t, A, w, h, room, page, cost, placed, leaders, worst):
         """Put a label that has no clean spot beside its anchor where there is room in its panel, joined to the
-        anchor ``A`` (display) by a thin leader line; None when that is no better. Returns the box taken.
+        anchor ``A`` (display) by a thin leader line; None when that is no better. Returns the box taken and what
+        it covers there.
 
         A vector's label so joined names its arrow wherever it stands: the leader ends on it."""
         grow = (w, h) if self.fence is not None else (0.0, 0.0)  # a fenced label may stand beside its room
@@ -476,6 +517,7 @@ class Labeler:
             _, k = _hit_pairs(np.broadcast_to(np.asarray(A, float), ends.shape), ends, np.zeros(len(ends)),
                               np.asarray(placed, float))
             score += TEXT_COST * np.bincount(k, minlength=len(boxes))
+        covers = score
         score = score + LEADER_COST + 0.05 * reach
         j = int(np.argmin(score))
         if not score[j] < worst:
@@ -492,7 +534,7 @@ class Labeler:
                                      solid_capstyle="butt", zorder=t.get_zorder() - 0.1,
                                      gid=f"leader:{t.get_gid()}" if t.get_gid() else None))
             leaders.append((np.asarray(A, float), ends[j]))
-        return tuple(boxes[j])
+        return tuple(boxes[j]), float(covers[j])
 
 
 def _box_segment_distance(boxes, P, Q):
@@ -522,14 +564,15 @@ def _box_segment_distance(boxes, P, Q):
     return out.reshape(n, m)
 
 
-def _astray(boxes, P, Q, own):
-    """1 for each box nearer another arrow P[k]–Q[k] than arrow ``own`` (by :data:`ASTRAY_MARGIN`), else 0.
+def _astray(boxes, P, Q, R, own):
+    """1 for each box nearer another arrow P[k]–Q[k] (its head R[k] wide on either side) than arrow ``own``'s shaft
+    (by :data:`ASTRAY_MARGIN`), else 0.
 
     An arrow drawn over its own (the same ends) is no other.
     """
     D = _box_segment_distance(boxes, P, Q)
     same = (np.hypot(*(P - P[own]).T) < 0.5) & (np.hypot(*(Q - Q[own]).T) < 0.5)
-    others = np.where(same[None, :], np.inf, D)
+    others = np.where(same[None, :], np.inf, D - R[None, :])
     return (others.min(axis=1) < D[:, own] + ASTRAY_MARGIN).astype(float)
 
 
@@ -586,7 +629,8 @@ def table_candidates(lo, hi, pad):
 
 def short_table(lab, rows, kind: str, pts, s):
     """The vectors too short to carry a label beside their arrow (under :data:`~graphkin.draw.labels.SHORT`),
-    listed one a line beside the polygon whose points are ``pts`` [data]: ``rows`` of (name, text).
+    listed one a line beside the polygon whose points are ``pts`` [data]: ``rows`` of (name, text), perhaps none
+    yet; the labels that find no clean spot join them (:meth:`Labeler.label`'s ``spare``).
 
     Its gid names each vector's arrow (``table:velocity:v_B|velocity:v_BA``), for a test to find them listed.
     """

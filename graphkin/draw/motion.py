@@ -172,20 +172,19 @@ def draw_motion_polygon(construction, polygon: str = "velocity", *, scale: float
         drawn.labels[name] = t
         drawn.add(t)
     if values:
-        table = []  # the vectors too short to carry their label: listed beside the polygon
+        rows, beside = [], []  # the vectors too short to carry their label (listed beside the polygon), the others
         for names, k in vectors.values():
             tail, tip = (np.asarray(p) for p in drawn.ends[names[0]])
             size = float(np.hypot(*(tip - tail))) * scale
             text = " = ".join(motion_name(name) for name in names) + f" = {num(size)} {unit}"
-            if float(np.hypot(*(tip - tail))) * ppu < SHORT:
-                table.append((names[0], text))
-                continue
+            (rows if float(np.hypot(*(tip - tail))) * ppu < SHORT else beside).append((names[0], text, tail, tip, k))
+        table = short_table(lab, [(name, text) for name, text, *_ in rows], polygon, np.asarray(pts), s)
+        drawn.add(table)
+        for name, text, tail, tip, k in beside:
             mid = 0.5 * (tail + tip)
             t = lab.label(text, arrow_label_candidates(tail, tip, mid - centre, s.label_pad), color=s.ink,
-                          size=s.small_size, own=k, gid=f"label:{polygon}:{names[0]}")
+                          size=s.small_size, own=k, spare=table, gid=f"label:{polygon}:{name}")
             drawn.add(t)
-        if table:
-            drawn.add(short_table(lab, table, polygon, np.asarray(pts), s))
     lo = np.min(np.asarray(pts), axis=0)
     extent = list(pts)
     if bar:

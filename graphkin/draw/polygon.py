@@ -171,11 +171,18 @@ def draw_force_polygon(step, *, scale: float, ax=None, origin=(0.0, 0.0), values
     lab.dot(start, 9.0)
     for v in verts[1:-1]:
         lab.dot(v, 3.0)
-    table = []  # the forces too short to carry their label: listed beside the polygon
+    # The forces too short to carry their label, listed beside the polygon; a label that finds no clean spot
+    # beside its arrow joins them.
+    short = [(a.name, f"{sub(a.name)} = {num(math.hypot(*a.vector), power='superscript')} N") for a, _ in shown
+             if values and float(np.hypot(*np.subtract(*drawn.ends[a.name]))) * ppu < SHORT]
+    table = short_table(lab, short, "polygon", verts, s) if values else None
+    if table is not None:
+        for name, _ in short:
+            drawn.labels[name] = table
+        drawn.add(table)
     for a, _ in shown:
         tail, tip = (np.asarray(p) for p in drawn.ends[a.name])
-        if values and float(np.hypot(*(tip - tail))) * ppu < SHORT:
-            table.append((a.name, f"{sub(a.name)} = {num(math.hypot(*a.vector), power='superscript')} N"))
+        if a.name in dict(short):
             continue
         mid = 0.5 * (tail + tip)
         away = mid - centre
@@ -186,13 +193,8 @@ def draw_force_polygon(step, *, scale: float, ax=None, origin=(0.0, 0.0), values
         text = sub(a.name) + (f" = {num(math.hypot(*a.vector), power='superscript')} N" if values else "")
         color = s.driver if driver_name and a.name == driver_name else s.known if a.known else s.unknown
         t = lab.label(text, arrow_label_candidates(tail, tip, away, s.label_pad), color=color,
-                      own=index[a.name], gid=f"label:polygon:{a.name}")
+                      own=index[a.name], spare=table, gid=f"label:polygon:{a.name}")
         drawn.labels[a.name] = t
-        drawn.add(t)
-    if table:
-        t = short_table(lab, table, "polygon", verts, s)
-        for name, _ in table:
-            drawn.labels[name] = t
         drawn.add(t)
     for name in zero:
         t = lab.label(f"{sub(name)} = 0", [spot for pad in (9.0, 16.0, 26.0)
