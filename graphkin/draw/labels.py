@@ -34,8 +34,9 @@ LEADER_COST = 40.0
 ASTRAY_COST = 60.0
 """Price of a vector's label nearer another arrow than its own: it reads as that arrow's name. Dearer than a
 leader line, which ties the label to its arrow."""
-ASTRAY_MARGIN = 2.5
-"""How much nearer [px] its own arrow than any other a vector's label must be (a head is wider than its shaft)."""
+ASTRAY_MARGIN = 4.0
+"""How much nearer [px] its own arrow than any other a vector's label must be: the Labeler sees an arrow as its
+line and its head's width, the measure in tests/draw/test_polygon_labels.py reads the head as drawn."""
 GROW = 1.5
 """Margin [px] around each label's box while placing it."""
 

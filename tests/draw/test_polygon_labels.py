@@ -2,8 +2,9 @@
 
 For every catalog problem, at the position figures/ draws and at 4 others over its range, the handout's figures
 of polygons (the velocity and acceleration polygons, :func:`graphkin.draw.paper.draw_motion_paper`, and the force
-polygons, :func:`graphkin.draw.paper.draw_polygons`, each at the scales a key prints them) are laid out and
-measured from the artists:
+polygons, :func:`graphkin.draw.paper.draw_polygons`, each at the scales a key prints them) and the screen's
+(:func:`graphkin.draw.draw_motion_polygons`, and :func:`graphkin.draw.draw_solution` beside its force polygons)
+are laid out and measured from the artists:
 
 * each vector's label lies nearer its own arrow than any other arrow of the figure (or is tied to it by a leader
   line that ends on it);
@@ -139,9 +140,11 @@ def _where(problem, q) -> str:
 
 
 def _figures(name):
-    """(where, what, figure) of the handout's figures of polygons at figures/' position and 4 others."""
+    """(where, what, figure) of the figures of polygons at figures/' position and 4 others: the handout's (printed
+    at its scales), and the screen's (``draw_motion_polygons``, and ``draw_solution`` with its force polygons)."""
     from matplotlib.backends.backend_agg import FigureCanvasAgg
 
+    from graphkin import draw
     from graphkin.draw import paper
     from graphkin.graphical import construct_forces, construct_kinematics
     from graphkin.graphical.paper import motion_scales
@@ -157,15 +160,19 @@ def _figures(name):
             mc = construct_kinematics(result.kinematics, i)
             if mc.valid:
                 Xv, Xa = motion_scales(mc)
-                fig = paper.draw_motion_paper(mc, velocity_scale=Xv, acceleration_scale=Xa)
-                FigureCanvasAgg(fig)
-                yield _where(problem, q), "motion", fig
+                for what, fig in (("motion", paper.draw_motion_paper(mc, velocity_scale=Xv, acceleration_scale=Xa)),
+                                  ("motion on screen", draw.draw_motion_polygons(mc))):
+                    FigureCanvasAgg(fig)
+                    yield _where(problem, q), what, fig
         c = construct_forces(result.kinematics, i)
         steps = [st for st in c.steps if st.polygon] if c.valid else []
         if steps:
             fig = paper.draw_polygons(steps, force_scale=polygon_scale(steps), driver_name=c.driver_name)
             FigureCanvasAgg(fig)
             yield _where(problem, q), "forces", fig
+            fig = draw.draw_solution(c, result)
+            FigureCanvasAgg(fig)
+            yield _where(problem, q), "solution", fig
 
 
 CROWDED = {
