@@ -268,6 +268,10 @@ def draw_free_body(construction, link: int, *, ax=None, force_scale=None, title=
             # Points per mm of drawing, roughly (the view spans about 1.3 L): arrows go outside below ~16 pt.
             drawn += dimension(ax, lab, G, P, text, s=s, small=16 / ppu, color=s.ink, broken=broken)
             drawn.labels["h"] = drawn[-1]
+            # A short dimension's arrows stand outside it, pointing in (0.8 × small, scales.dimension): the view
+            # and the scale bar under it keep clear of them.
+            d = unit(P - G) if np.hypot(*(P - G)) > 0 else np.array([1.0, 0.0])
+            extent += [G - d * 0.8 * 16 / ppu, P + d * 0.8 * 16 / ppu]
         elif len(pts) > 1:
             # A body that turns: its resultant passes through G, said in words. A slider (one point) never turns:
             # "h = 0" there would be one more label on its one crowded point.

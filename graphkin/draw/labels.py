@@ -31,6 +31,12 @@ OFF_PAGE_COST = 60.0
 """Price per pixel of a label outside the figure (cut off in the explorer's image)."""
 LEADER_COST = 40.0
 """Price of a label put away from its anchor, with a leader line: worth it rather than covering an outline."""
+ASTRAY_COST = 60.0
+"""Price of a vector's label nearer another arrow than its own: it reads as that arrow's name. Dearer than a
+leader line, which ties the label to its arrow."""
+ASTRAY_MARGIN = 4.0
+"""How much nearer [px] its own arrow than any other a vector's label must be: the Labeler sees an arrow as its
+line and its head's width, the measure in tests/draw/test_polygon_labels.py reads the head as drawn."""
 GROW = 1.5
 """Margin [px] around each label's box while placing it."""
 
@@ -215,16 +221,25 @@ class Labeler:
     def __init__(self, ax, s):
         self.ax, self.s = ax, s
         self.items = []
+        self.owns = []
+        self.spares = []
         self.segments = []
         self.boxes = []
         self.texts = []
         self.fixed = []
         self.heads = []
+        self.vectors = []
+        """The arrows a label may name (:meth:`arrow`'s index): (tail, tip) [data], head [pt]."""
         self.leaders = []
         """Leader lines drawn by :meth:`place` from a label put away from its anchor to the anchor."""
         self.room = None
         """The box (x0, y0, x1, y1) [data] the labels are kept in: a panel of a figure drawn on one axes with
         others (:func:`graphkin.draw.paper.draw_polygons`). None: the axes' own box."""
+        self.fence = None
+        """Boxes (x0, y0, x1, y1) [data] a label keeps out of, when its panel shares a figure with others: the other
+        panels and the scale strip (:data:`OUTSIDE_COST` per pixel into one). With a fence, a label may leave its
+        own :attr:`room` for the figure's free space, beside a polygon its panel's margin is too narrow for; its
+        panel's title row above stays out of bounds. None: the room holds."""
         self.taken = []
         """Boxes (x0, y0, x1, y1) [display] that texts placed elsewhere take: the labels keep off them too (the
         labels of the panels placed before, already measured)."""
@@ -243,12 +258,18 @@ class Labeler:
         if closed and len(pts) > 2:
             self.segment(pts[-1], pts[0], width, soft=soft)
 
-    def arrow(self, tail, tip, lw=0.0, head=0.0):
+    def arrow(self, tail, tip, lw=0.0, head=0.0) -> int:
         """An arrow as an obstacle: its shaft ``lw`` points wide, and its head (matplotlib's mutation scale
-        ``head`` [pt], as :func:`graphkin.draw.arrows.arrow` draws it) as wide as the head is."""
+        ``head`` [pt], as :func:`graphkin.draw.arrows.arrow` draws it) as wide as the head is.
+
+        Returns the arrow's index, for a label that names it (:meth:`label`'s ``own``): a polygon's label is
+        kept nearer its own arrow than any other, or it would read as the other's name.
+        """
         self.segment(tail, tip, lw)
         if head > 0:
             self.heads.append((np.asarray(tail, float), np.asarray(tip, float), float(head)))
+        self.vectors.append((np.asarray(tail, float), np.asarray(tip, float), float(head)))
+        return len(self.vectors) - 1
 
     def curve(self, pts, lw=0.0, head=0.0):
         """A curved arrow (a couple's arc) as an obstacle: the polyline, and a head at its last point."""
@@ -261,8 +282,11 @@ class Labeler:
         """A mark ``size`` points across centred on ``P`` (a pin, a centre of mass)."""
         self.box(P[0], P[1], P[0], P[1], pad=size / 2.0)
 
-    def label(self, text, candidates, *, color=None, size=None, zorder=6.0, **kw):
-        """Add a label; ``candidates`` is a list of (anchor, direction, pad [pt]), best first."""
+    def label(self, text, candidates, *, color=None, size=None, zorder=6.0, own=None, spare=None, **kw):
+        """Add a label; ``candidates`` is a list of (anchor, direction, pad [pt]), best first; ``own``: the index
+        of the arrow it names (:meth:`arrow`), which it must lie nearer than any other (:data:`ASTRAY_COST`);
+        ``spare``: a table (a label added after this one, :func:`short_table`) that takes the label as a row
+        when no spot beside its arrow or at a leader's end is clean of other arrows and texts."""
         anchor, d, pad = candidates[0]
         d = unit(d)
         ha, va = _align(d)
@@ -270,6 +294,8 @@ class Labeler:
                         fontsize=size or self.s.label_size, zorder=zorder, **kw)
         t.set_path_effects([halo()])
         self.items.append((t, candidates))
+        self.owns.append(own)
+        self.spares.append(spare)
         return t
 
     def avoid(self, texts):
@@ -290,6 +316,31 @@ class Labeler:
         self.fixed += list(texts)
 
     def place(self):
+        """Place every label, once the axes limits are final; a label with a ``spare`` table that finds no clean
+        spot becomes a row of its table, and the labels are placed again without it."""
+        # A table is placed after the labels that may join it: it takes what room they leave.
+        tables = {id(t) for t in self.spares if t is not None}
+        last = [id(t) in tables for t, _ in self.items]
+        order = sorted(range(len(self.items)), key=lambda k: last[k])
+        self.items, self.owns, self.spares = ([v[k] for k in order] for v in (self.items, self.owns, self.spares))
+        while True:
+            # Each round moves a label or more to its table, or ends: the table grows, and may push another out.
+            covers = self._place()
+            moved = [k for k, c in enumerate(covers) if self.spares[k] is not None and c >= ASTRAY_COST]
+            if not moved:
+                return
+            for k in moved:
+                t, table = self.items[k][0], self.spares[k]
+                table.set_text("\n".join(filter(None, [table.get_text(), t.get_text()])))
+                rows = [table.get_gid()[len("table:"):], t.get_gid()[len("label:"):]]
+                table.set_gid("table:" + "|".join(filter(None, rows)))
+                t.set_visible(False)
+            keep = [k for k in range(len(self.items)) if k not in moved]
+            self.items, self.owns, self.spares = ([v[k] for k in keep] for v in (self.items, self.owns, self.spares))
+
+    def _place(self) -> list[float]:
+        """Place each label at its cheapest spot; returns what each covers there (its price, a leader's own
+        price and the preference for nearer spots left out)."""
         ax = self.ax
         for leader in self.leaders:  # placed again: the leaders of last time go
             leader.remove()
@@ -346,17 +397,34 @@ class Labeler:
             return (np.maximum(0.0, box[0] - b[:, 0]) + np.maximum(0.0, b[:, 2] - box[2])
                     + np.maximum(0.0, box[1] - b[:, 1]) + top * np.maximum(0.0, b[:, 3] - box[3]))
 
+        fence = (to(np.asarray(self.fence, float).reshape(-1, 2)).reshape(-1, 4) if self.fence is not None
+                 else None)
+
+        def beyond(b):
+            """How far [px] each box leaves its room, or (a fenced panel) runs into the fence or above its room."""
+            if fence is None:
+                # Above the room is the title's row: a label there reads as part of the title.
+                return outside(b, room, top=3.0)
+            above = 3.0 * np.maximum(0.0, b[:, 3] - room[3]) * (b[:, 2] > room[0]) * (b[:, 0] < room[2])
+            if not len(fence):
+                return above
+            lo, hi = np.minimum(fence[:, :2], fence[:, 2:]), np.maximum(fence[:, :2], fence[:, 2:])
+            ox = np.minimum(b[:, None, 2], hi[None, :, 0]) - np.maximum(b[:, None, 0], lo[None, :, 0])
+            oy = np.minimum(b[:, None, 3], hi[None, :, 1]) - np.maximum(b[:, None, 1], lo[None, :, 1])
+            # Another panel's arrows are not this Labeler's obstacles: its box is kept as dear as an arrow.
+            into = np.maximum(0.0, np.minimum(ox, oy))
+            return above + (into + HARD_COST / OUTSIDE_COST * (into > 0)).sum(axis=1)
+
         def cost(b):
             """What a box covers that does not depend on the other labels."""
-            # Above the room is the title's row: a label there reads as part of the title.
             return (_hits_many(P, Q, W, C, b) + _box_overlaps(b, marks, [HARD_COST] * len(marks))
-                    + OUTSIDE_COST * outside(b, room, top=3.0) + OFF_PAGE_COST * outside(b, page))
+                    + OUTSIDE_COST * beyond(b) + OFF_PAGE_COST * outside(b, page))
 
         # Every label's candidate boxes first: a label's size does not depend on where it goes, and
         # the obstacles other than labels do not depend on the other labels, so one vectorised test
         # serves them all; only the overlaps with labels placed before need the loop.
         if not self.items:
-            return
+            return []
         # All the candidates of all the labels at once: numpy's cost per call, not per spot, was most of this.
         counts = [len(candidates) for _, candidates in self.items]
         spots = [spot for _, candidates in self.items for spot in candidates]
@@ -381,8 +449,20 @@ class Labeler:
         spots = [(d, p, b, A[k], float(wh[0]), float(wh[1])) for d, p, b, k, wh in
                  zip(np.split(D, cuts), np.split(pads, cuts), np.split(every, cuts), firsts, sizes)]
         leaders = []  # display segments of the leaders drawn so far: later labels keep off them
-        for (t, candidates), (D, pads, boxes, A0, w, h), score in zip(self.items, spots, np.split(fixed, cuts)):
+        covers = []
+        if self.vectors:
+            ends = to(np.array([e for v in self.vectors for e in v[:2]], float).reshape(-1, 2))
+            # A head is drawn whole however short its arrow: it reaches 0.75 of its size back from the tip, 0.3 wide.
+            T, B = ends[1::2], ends[0::2]
+            size = np.array([v[2] for v in self.vectors]) * dpi / 72
+            u = (T - B) / np.maximum(np.hypot(*(T - B).T), 1e-300)[:, None]
+            reach = np.maximum(np.hypot(*(T - B).T), 0.75 * size)
+            vectors = (T - u * reach[:, None], T, 0.3 * size)
+        for (t, candidates), (D, pads, boxes, A0, w, h), score, own in zip(self.items, spots, np.split(fixed, cuts),
+                                                                           self.owns):
             score = score + _box_overlaps(boxes, placed, [TEXT_COST] * len(placed)) + self._on_leaders(boxes, leaders)
+            if own is not None:
+                score = score + ASTRAY_COST * _astray(boxes, *vectors, own)
             # The first spot, in order of preference, that covers nothing ends the search; the best so far wins.
             n = len(score)
             clean = np.flatnonzero(score == 0)
@@ -391,8 +471,10 @@ class Labeler:
             if score[k] >= LEADER_COST:
                 far = self._with_leader(t, A0, w, h, room, page, cost, placed, leaders, score[k])
                 if far is not None:
-                    placed.append(far)
+                    placed.append(far[0])
+                    covers.append(far[1])
                     continue
+            covers.append(float(score[k]))
             anchor, d = candidates[k][0], D[k]
             ha, va = _align(d)
             t.set_position(tuple(map(float, anchor)))
@@ -401,6 +483,7 @@ class Labeler:
             t.set_va(va)
             placed.append(tuple(boxes[k]))
         self.placed = placed[first:]
+        return covers
 
     @staticmethod
     def _on_leaders(boxes, leaders):
@@ -412,9 +495,13 @@ class Labeler:
 
     def _with_leader(self, t, A, w, h, room, page, cost, placed, leaders, worst):
         """Put a label that has no clean spot beside its anchor where there is room in its panel, joined to the
-        anchor ``A`` (display) by a thin leader line; None when that is no better. Returns the box taken."""
-        x0, y0 = max(room[0], page[0]), max(room[1], page[1])
-        x1, y1 = min(room[2], page[2]), min(room[3], page[3])
+        anchor ``A`` (display) by a thin leader line; None when that is no better. Returns the box taken and what
+        it covers there.
+
+        A vector's label so joined names its arrow wherever it stands: the leader ends on it."""
+        grow = (w, h) if self.fence is not None else (0.0, 0.0)  # a fenced label may stand beside its room
+        x0, y0 = max(room[0] - grow[0], page[0]), max(room[1] - grow[1], page[1])
+        x1, y1 = min(room[2] + grow[0], page[2]), min(room[3], page[3])
         if x1 - x0 < w or y1 - y0 < h:
             return None
         cx, cy = np.meshgrid(np.linspace(x0 + w / 2 + GROW, x1 - w / 2 - GROW, 14),
@@ -431,6 +518,7 @@ class Labeler:
             _, k = _hit_pairs(np.broadcast_to(np.asarray(A, float), ends.shape), ends, np.zeros(len(ends)),
                               np.asarray(placed, float))
             score += TEXT_COST * np.bincount(k, minlength=len(boxes))
+        covers = score
         score = score + LEADER_COST + 0.05 * reach
         j = int(np.argmin(score))
         if not score[j] < worst:
@@ -444,9 +532,49 @@ class Labeler:
         if reach[j] > 0:
             a, b = back(A), back(ends[j])
             self.leaders.append(line(ax, [a[0], b[0]], [a[1], b[1]], color=t.get_color(), lw=0.7,
-                                     solid_capstyle="butt", zorder=t.get_zorder() - 0.1))
+                                     solid_capstyle="butt", zorder=t.get_zorder() - 0.1,
+                                     gid=f"leader:{t.get_gid()}" if t.get_gid() else None))
             leaders.append((np.asarray(A, float), ends[j]))
-        return tuple(boxes[j])
+        return tuple(boxes[j]), float(covers[j])
+
+
+def _box_segment_distance(boxes, P, Q):
+    """Distance [px] from each box (x0, y0, x1, y1) to each segment P[k]–Q[k]: an array, boxes × segments.
+
+    Zero where they meet; elsewhere the nearest of a segment's ends to the box, or of the box's corners to the
+    segment (two convex shapes apart are nearest at a vertex of one of them).
+    """
+    boxes = np.asarray(boxes, float)
+    n, m = len(boxes), len(P)
+    x0, y0, x1, y1 = (boxes[:, k, None] for k in range(4))
+
+    def to_box(X):  # each end X[k] to each box
+        dx = np.maximum(np.maximum(x0 - X[None, :, 0], X[None, :, 0] - x1), 0.0)
+        dy = np.maximum(np.maximum(y0 - X[None, :, 1], X[None, :, 1] - y1), 0.0)
+        return np.hypot(dx, dy)
+
+    out = np.minimum(to_box(P), to_box(Q))
+    d = Q - P
+    dd = np.maximum(np.einsum("ij,ij->i", d, d), 1e-300)
+    for cx, cy in ((x0, y0), (x0, y1), (x1, y0), (x1, y1)):
+        rx, ry = cx - P[None, :, 0], cy - P[None, :, 1]
+        s = np.clip((rx * d[None, :, 0] + ry * d[None, :, 1]) / dd[None, :], 0.0, 1.0)
+        out = np.minimum(out, np.hypot(rx - s * d[None, :, 0], ry - s * d[None, :, 1]))
+    b, k = _hit_pairs(P, Q, np.zeros(m), boxes)
+    out[b, k] = 0.0
+    return out.reshape(n, m)
+
+
+def _astray(boxes, P, Q, R, own):
+    """1 for each box nearer another arrow P[k]–Q[k] (its head R[k] wide on either side) than arrow ``own``'s shaft
+    (by :data:`ASTRAY_MARGIN`), else 0.
+
+    An arrow drawn over its own (the same ends) is no other.
+    """
+    D = _box_segment_distance(boxes, P, Q)
+    same = (np.hypot(*(P - P[own]).T) < 0.5) & (np.hypot(*(Q - Q[own]).T) < 0.5)
+    others = np.where(same[None, :], np.inf, D - R[None, :])
+    return (others.min(axis=1) < D[:, own] + ASTRAY_MARGIN).astype(float)
 
 
 def arrow_label_candidates(tail, tip, away, pad):
@@ -468,6 +596,10 @@ def arrow_label_candidates(tail, tip, away, pad):
         for e in (tip, tail):
             out.append((e, n, k * pad))
             out.append((e, -n, k * pad))
+        # Beyond an end and to one side: off a polygon's vertex, where the next arrow starts on the other side.
+        for e, along in ((tip, u), (tail, -u)):
+            out.append((e, unit(along + n), k * pad))
+            out.append((e, unit(along - n), k * pad))
     for k in (5.0, 8.0, 12.0):
         for t in (0.5, 0.8, 0.2, 1.0, 0.0):
             P = tail + t * (tip - tail)
@@ -476,6 +608,37 @@ def arrow_label_candidates(tail, tip, away, pad):
         out.append((tip, u, k * pad))
         out.append((tail, -u, k * pad))
     return out
+
+
+SHORT = 14.0
+"""Length [pt] under which a polygon's arrow is too short to carry its label beside it (5 mm): a label there sits
+as near the arrows that meet it at its ends, so it is listed in a table beside the polygon instead
+(:func:`table_candidates`)."""
+
+
+def table_candidates(lo, hi, pad):
+    """Candidate spots for a table beside a polygon whose extent runs from ``lo`` to ``hi`` [data]: outside each
+    corner, then beside each side's middle, nearest first, then further out."""
+    lo, hi = np.asarray(lo, float), np.asarray(hi, float)
+    mid = (lo + hi) / 2
+    corners = [(np.array([x, y]), np.array([np.sign(x - mid[0]), np.sign(y - mid[1])]))
+               for x in (hi[0], lo[0]) for y in (lo[1], hi[1])]
+    sides = [(np.array([hi[0], mid[1]]), np.array([1.0, 0.0])), (np.array([lo[0], mid[1]]), np.array([-1.0, 0.0])),
+             (np.array([mid[0], lo[1]]), np.array([0.0, -1.0])), (np.array([mid[0], hi[1]]), np.array([0.0, 1.0]))]
+    return [(P, unit(d), k * pad) for k in (1.0, 3.0, 6.0) for P, d in corners + sides]
+
+
+def short_table(lab, rows, kind: str, pts, s):
+    """The vectors too short to carry a label beside their arrow (under :data:`~graphkin.draw.labels.SHORT`),
+    listed one a line beside the polygon whose points are ``pts`` [data]: ``rows`` of (name, text), perhaps none
+    yet; the labels that find no clean spot join them (:meth:`Labeler.label`'s ``spare``).
+
+    Its gid names each vector's arrow (``table:velocity:v_B|velocity:v_BA``), for a test to find them listed.
+    """
+    pts = np.asarray(pts, float).reshape(-1, 2)
+    return lab.label("\n".join(text for _, text in rows), table_candidates(pts.min(axis=0), pts.max(axis=0),
+                                                                          2 * s.label_pad),
+                     color=s.ink, size=s.small_size, gid="table:" + "|".join(f"{kind}:{name}" for name, _ in rows))
 
 
 def _compass():

@@ -23,7 +23,7 @@ from graphkin.draw.axes import (
     set_limits,
     setup_axes,
 )
-from graphkin.draw.labels import Labeler, arrow_label_candidates, point_label_candidates
+from graphkin.draw.labels import SHORT, Labeler, arrow_label_candidates, point_label_candidates, short_table
 from graphkin.draw.scales import nice_round, scale_bar
 from graphkin.draw.text import motion_name
 from graphkin.errors import GraphkinError
@@ -124,7 +124,7 @@ def draw_motion_polygon(construction, polygon: str = "velocity", *, scale: float
             ax.add_patch(patch)
             drawn.add(patch)
 
-    seen = set()
+    vectors = {}  # each arrow drawn, by its ends: the names of the vectors it draws, and its index in the Labeler
     for st in steps:
         if st.kind == "image":
             continue
@@ -137,10 +137,17 @@ def draw_motion_polygon(construction, polygon: str = "velocity", *, scale: float
             drawn.add(line(ax, [a[0], b[0]], [a[1], b[1]], color=s.ink, lw=s.thin_lw, ls="--", alpha=0.5, zorder=3.2))
         for v in st.vectors:
             tail, tip = O + np.asarray(v.tail, float) / scale, O + np.asarray(v.tip, float) / scale
-            key = (v.name, tuple(np.round(tail, 9)), tuple(np.round(tip, 9)))
-            if key in seen or float(np.hypot(*(tip - tail))) <= floor:
+            if float(np.hypot(*(tip - tail))) <= floor:
                 continue
-            seen.add(key)
+            # Two vectors with the same ends (v_P, and v_PP1 along a fixed guide) are one arrow with both names.
+            key = (tuple(np.round(tail / floor)), tuple(np.round(tip / floor)))
+            if key in vectors:
+                names = vectors[key][0]
+                if v.name not in names:
+                    names.append(v.name)
+                    drawn.arrows[v.name] = drawn.arrows[names[0]]
+                    drawn.ends[v.name] = drawn.ends[names[0]]
+                continue
             known = v.known == "size and direction"
             color = s.known if known else s.unknown
             art = arrow(ax, tail, tip, color=color, lw=s.known_lw if known else s.unknown_lw, s=s, hollow=not known,
@@ -148,7 +155,7 @@ def draw_motion_polygon(construction, polygon: str = "velocity", *, scale: float
             drawn.arrows[v.name] = art
             drawn.ends[v.name] = (tuple(tail), tuple(tip))
             drawn.add(art)
-            lab.arrow(tail, tip, art.get_linewidth(), art.get_mutation_scale())
+            vectors[key] = ([v.name], lab.arrow(tail, tip, art.get_linewidth(), art.get_mutation_scale()))
     pole = images[pole_name]
     drawn += [markers(ax, *pole, ms=8, mfc="none", mec=s.ink, mew=1.0, zorder=5)]
     lab.dot(pole, 9.0)
@@ -160,16 +167,23 @@ def draw_motion_polygon(construction, polygon: str = "velocity", *, scale: float
         lab.dot(p, 3.0)
     for name, p in images.items():
         away = p - centre if np.hypot(*(p - centre)) > floor else np.array([-1.0, 1.0])
-        t = lab.label(motion_name(name), point_label_candidates(p, away, (6.0, 12.0, 20.0)), color=s.ink)
+        t = lab.label(motion_name(name), point_label_candidates(p, away, (6.0, 12.0, 20.0)), color=s.ink,
+                      gid=f"point:{polygon}:{name}")
         drawn.labels[name] = t
         drawn.add(t)
     if values:
-        for name, (tail, tip) in drawn.ends.items():
-            tail, tip = np.asarray(tail), np.asarray(tip)
+        rows, beside = [], []  # the vectors too short to carry their label (listed beside the polygon), the others
+        for names, k in vectors.values():
+            tail, tip = (np.asarray(p) for p in drawn.ends[names[0]])
             size = float(np.hypot(*(tip - tail))) * scale
+            text = " = ".join(motion_name(name) for name in names) + f" = {num(size)} {unit}"
+            (rows if float(np.hypot(*(tip - tail))) * ppu < SHORT else beside).append((names[0], text, tail, tip, k))
+        table = short_table(lab, [(name, text) for name, text, *_ in rows], polygon, np.asarray(pts), s)
+        drawn.add(table)
+        for name, text, tail, tip, k in beside:
             mid = 0.5 * (tail + tip)
-            t = lab.label(f"{motion_name(name)} = {num(size)} {unit}",
-                          arrow_label_candidates(tail, tip, mid - centre, s.label_pad), color=s.ink, size=s.small_size)
+            t = lab.label(text, arrow_label_candidates(tail, tip, mid - centre, s.label_pad), color=s.ink,
+                          size=s.small_size, own=k, spare=table, gid=f"label:{polygon}:{name}")
             drawn.add(t)
     lo = np.min(np.asarray(pts), axis=0)
     extent = list(pts)

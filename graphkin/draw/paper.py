@@ -324,6 +324,8 @@ def _place_on(ax, drawings, width: float, height: float):
     for drawn, room, _ in drawings:
         lab = drawn.labeler
         lab.room = room
+        # The other panels and the scale strip under them: a label may use the figure's free space, not theirs.
+        lab.fence = [r for _, r, _ in drawings if r is not room] + [(0.0, 0.0, width, STRIP)]
         lab.taken = list(taken)
         lab.place()
         drawn += lab.leaders

@@ -20,7 +20,7 @@ from graphkin.draw.axes import (
     set_limits,
     setup_axes,
 )
-from graphkin.draw.labels import Labeler, arrow_label_candidates, point_label_candidates
+from graphkin.draw.labels import SHORT, Labeler, arrow_label_candidates, point_label_candidates, short_table
 from graphkin.draw.scales import nice_round, scale_bar
 from graphkin.draw.text import sub
 from graphkin.notation import num
@@ -144,6 +144,7 @@ def draw_force_polygon(step, *, scale: float, ax=None, origin=(0.0, 0.0), values
     side = perp(along)
     flat = len(shown) >= 2 and float(np.max(np.abs((verts - start) @ side))) < 0.02 * span
     centre = verts.mean(axis=0)
+    index = {}  # each force's arrow among the Labeler's, for its label to keep nearest
     for (a, size), tail0, tip0 in zip(shown, verts[:-1], verts[1:]):
         shift = side * (LANE / ppu) * (1 if float(np.dot(tip0 - tail0, along)) > 0 else -1) if flat else np.zeros(2)
         tail, tip = tail0 + shift, tip0 + shift
@@ -162,7 +163,7 @@ def draw_force_polygon(step, *, scale: float, ax=None, origin=(0.0, 0.0), values
                         solid_capstyle="butt", zorder=4.0)
             drawn.add(band)
             lab.segment(tail, tip, 7.5)
-        lab.arrow(tail, tip, art.get_linewidth(), art.get_mutation_scale())
+        index[a.name] = lab.arrow(tail, tip, art.get_linewidth(), art.get_mutation_scale())
     # The start, where the polygon closes.
     ring = markers(ax, *start, ms=8, mfc="none", mec=s.ink, mew=1.0, zorder=5)
     dots = markers(ax, *verts[1:-1].T, ms=3, color=s.ink, zorder=5)
@@ -170,8 +171,19 @@ def draw_force_polygon(step, *, scale: float, ax=None, origin=(0.0, 0.0), values
     lab.dot(start, 9.0)
     for v in verts[1:-1]:
         lab.dot(v, 3.0)
+    # The forces too short to carry their label, listed beside the polygon; a label that finds no clean spot
+    # beside its arrow joins them.
+    short = [(a.name, f"{sub(a.name)} = {num(math.hypot(*a.vector), power='superscript')} N") for a, _ in shown
+             if values and float(np.hypot(*np.subtract(*drawn.ends[a.name]))) * ppu < SHORT]
+    table = short_table(lab, short, "polygon", verts, s) if values else None
+    if table is not None:
+        for name, _ in short:
+            drawn.labels[name] = table
+        drawn.add(table)
     for a, _ in shown:
         tail, tip = (np.asarray(p) for p in drawn.ends[a.name])
+        if a.name in dict(short):
+            continue
         mid = 0.5 * (tail + tip)
         away = mid - centre
         if flat:
@@ -180,7 +192,8 @@ def draw_force_polygon(step, *, scale: float, ax=None, origin=(0.0, 0.0), values
             away = np.array([-(tip - tail)[1], (tip - tail)[0]]) * (1 if a.known else -1)
         text = sub(a.name) + (f" = {num(math.hypot(*a.vector), power='superscript')} N" if values else "")
         color = s.driver if driver_name and a.name == driver_name else s.known if a.known else s.unknown
-        t = lab.label(text, arrow_label_candidates(tail, tip, away, s.label_pad), color=color)
+        t = lab.label(text, arrow_label_candidates(tail, tip, away, s.label_pad), color=color,
+                      own=index[a.name], spare=table, gid=f"label:polygon:{a.name}")
         drawn.labels[a.name] = t
         drawn.add(t)
     for name in zero:

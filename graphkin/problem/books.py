@@ -548,15 +548,19 @@ def unknown(rd, value, mech):
     return Unknown(link, name)
 
 
-ASKED = {"F_T": "the tangential force on the crank pin", "F_B": "the thrust on the crank-shaft bearing",
+ASKED = {"F_P": "the net force on the piston along the line of stroke",
+         "F_T": "the tangential force on the crank pin", "F_B": "the thrust on the crank-shaft bearing",
          "T": "the turning moment the connecting rod exerts on the crank", "T_hold": "the torque that holds a gear "
-         "meshing with the frame (an annulus held still)"}
+         "meshing with the frame (an annulus held still)", "W_t": "the tangential (transmitted) component of a "
+         "tooth force", "W_r": "the radial (separating) component of a tooth force", "alpha": "the flywheel's "
+         "angular acceleration ([forward])"}
 """What a book may ask besides the joint forces and the driver's effort, by the name the handout prints."""
 
 
-def asked(rd, value, mech, effort: str) -> tuple[str, ...]:
+def asked(rd, value, mech, effort: str, forward: bool = False) -> tuple[str, ...]:
     """``asked``: the answers the book asks for, by the names a handout prints them under (``["T12", "F23",
-    "G14"]``): joint forces, the driver's effort ``effort`` (or ``[unknown]``'s) and the names of :data:`ASKED`."""
+    "G14"]``): joint forces, the driver's effort ``effort`` (or ``[unknown]``'s) and the names of :data:`ASKED`
+    (``"alpha"`` only with a ``[forward]`` step, ``forward``)."""
     if not isinstance(value, list) or not all(isinstance(x, str) for x in value):
         raise rd.fail("asked", f"must be a list of names such as [\"T12\", \"F23\"], got {value!r}")
     forces = {force_name(mech, i, j) for joint in mech.joints for a, b in [sorted(joint.links)] for i, j in
@@ -566,4 +570,7 @@ def asked(rd, value, mech, effort: str) -> tuple[str, ...]:
         if name not in known:
             raise rd.fail(f"asked[{k}]", f"{name!r} is not a quantity a handout prints; one of "
                           f"{', '.join(sorted(known))}")
+        if name == "alpha" and not forward:
+            raise rd.fail(f"asked[{k}]", "the flywheel's angular acceleration needs [forward] (its mass and "
+                          "radius of gyration, and the power taken off)")
     return tuple(value)

@@ -264,7 +264,7 @@ def build_problem(data: Mapping[str, Any], *, file: str = "<problem>", base: str
     if unknown is not None and forward is not None:
         raise rd.fail("unknown", "a forward step needs the driver's effort; with [unknown] the driver carries none")
     effort = unknown.label(mech) if unknown is not None else mech.driver.symbol
-    asked = books.asked(rd, data["asked"], mech, effort) if "asked" in data else ()
+    asked = books.asked(rd, data["asked"], mech, effort, forward is not None) if "asked" in data else ()
     return Problem(file, mech, q, q_dot, q_ddot, given, str(data.get("title", "")), str(data.get("source", "")),
                    str(data.get("notes", "")), analysis, str(data.get("cite", "")), forward, unknown, asked)
 
