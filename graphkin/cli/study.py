@@ -105,16 +105,30 @@ def run(args) -> int:
         if field in vary:
             raise GraphkinError(f"--vary {text!r}: {field} is varied twice")
         given[field], vary[field] = text, values
-    try:
-        with Progress(f"studying {args.problem}"):
-            s = study(args.problem, vary, n=args.n, Cs=args.cs)
-    except VaryError as exc:  # the field's fault, named by the --vary the user wrote
-        raise GraphkinError(f"--vary {given[exc.field]!r}: " + str(exc).removeprefix(f"vary {exc.field}: ")) from None
-    choice = None
-    if args.best:
-        choice = best(s, args.best, [requirement(s, r, "--require") for r in args.require], label="--best")
-    if args.merit:
-        figure_values(s, args.merit, label="--merit")
+
+    def solved(grid):
+        try:
+            return study(args.problem, grid, n=args.n, Cs=args.cs)
+        except VaryError as exc:  # the field's fault, named by the --vary the user wrote
+            raise GraphkinError(f"--vary {given[exc.field]!r}: "
+                                + str(exc).removeprefix(f"vary {exc.field}: ")) from None
+
+    def chosen(s):
+        """The best design of ``s`` under the limits (None without --best), each name and unit checked."""
+        limits = [requirement(s, r, "--require") for r in args.require]
+        if args.merit:
+            figure_values(s, args.merit, label="--merit")
+        return best(s, args.best, limits, label="--best") if args.best else None
+
+    if args.best or args.merit:
+        # One design has every figure the grid has (its joints' names too, once it is built): a figure or a unit
+        # named wrong is told before the whole grid is solved.
+        probe = solved({field: values[:1] for field, values in vary.items()})
+        if probe.designs[0].joint_peaks:
+            chosen(probe)
+    with Progress(f"studying {args.problem}"):
+        s = solved(vary)
+    choice = chosen(s)
     data = study_data(s, choice)
     if args.csv:
         write_text(args.csv, study_csv(data), "--csv")

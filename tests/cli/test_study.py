@@ -185,3 +185,22 @@ def test_a_figure_is_written(capsys, tmp_path):
     assert code == 0 and f"figure written to {path}" in err
     assert path.read_text(encoding="utf-8").lstrip().startswith("<?xml")
     assert sorted(p.name for p in tmp_path.iterdir()) == ["study.svg"]
+
+
+def test_a_bad_limit_is_told_before_the_grid_is_solved(capsys, monkeypatch):
+    import sys
+
+    module = sys.modules["graphkin.cycle.study"]
+    solved = []
+
+    def counted(problem, vary, **kw):
+        solved.append(math.prod(len(v) for v in vary.values()))
+        return study(problem, vary, **kw)
+
+    monkeypatch.setattr(module, "study", counted)
+    code, _, err = run(capsys, "strip_cutter", *VARY, "--n", "36", "--best", "torque_peak",
+                       "--require", "F23_peak < 2 kg")
+    assert code == 2 and "--require 'F23_peak < 2 kg': expected a force" in err
+    assert solved == [1]  # one design, not the grid of eight
+    code, _, _ = run(capsys, "strip_cutter", *VARY, "--n", "36", "--best", "torque_peak", "--require", "F23_peak < 2 MN")
+    assert code == 0 and solved == [1, 1, 8]
