@@ -50,7 +50,8 @@ def _axis(study, k: int) -> tuple[np.ndarray, str, list | None]:
     values = study.grid[k]
     numbers = field_axis(values)
     if numbers is None:  # points or tables: one tick each, labelled as the file writes them
-        return np.arange(len(values), dtype=float), study.fields[k], [str(v) for v in values]
+        written = [f"({', '.join(map(str, v))})" if isinstance(v, (list, tuple)) else str(v) for v in values]
+        return np.arange(len(values), dtype=float), study.fields[k], written
     unit, x = numbers
     return x, f"{study.fields[k]} [{unit}]" if unit else study.fields[k], None
 
@@ -121,7 +122,7 @@ def _against_one(study, k: int, chosen: int | None) -> Figure:
         y, ylabel = _shown(study, name)
         ax.plot(x, y, ".-", color="tab:blue", lw=1.2, ms=3)
         if chosen is not None:
-            ax.plot(x[chosen], y[chosen], "*", color="black", ms=11, zorder=3)
+            ax.plot(x[chosen], y[chosen], "*", color="black", ms=11, zorder=3, clip_on=False)
         ax.set_ylabel(ylabel, fontsize=8)
         ax.set_xlabel(label, fontsize=8)
         ax.tick_params(labelsize=7)
@@ -153,10 +154,11 @@ def _contours(study, varied: list, merit: str, chosen: int | None) -> Figure:
         fig.colorbar(dots, ax=ax, label=zlabel)
     bad = ~np.isfinite(z)
     if bad.any():
-        ax.plot(x[bad], y[bad], "x", color="0.45", ms=5, label="cannot be assembled" if any(
+        ax.plot(x[bad], y[bad], "x", color="0.45", ms=5, clip_on=False, label="cannot be assembled" if any(
             not d.ok for d in study.designs) else f"{merit} not defined")
     if chosen is not None:
-        ax.plot(x[chosen], y[chosen], "*", color="black", mec="white", ms=16, label="the chosen design")
+        ax.plot(x[chosen], y[chosen], "*", color="black", mec="white", ms=16, clip_on=False, zorder=3,
+                label="the chosen design")
     if bad.any() or chosen is not None:
         ax.legend(fontsize=8, loc="best")
     _, xlabel, xticks = _axis(study, i)

@@ -169,11 +169,11 @@ def format_study(data: dict) -> str:
     if notes:
         out += ["", f"{len(notes)} of the {len(designs)} designs cannot be assembled over the whole cycle:"] + notes
     if best is not None:
-        out += ["", _best_text(best, designs, effort)]
+        out += ["", _best_text(best, designs, data["driver"] == "crank")]
     return "\n".join(out)
 
 
-def _best_text(best: dict, designs: list, effort: str) -> str:
+def _best_text(best: dict, designs: list, crank: bool) -> str:
     """The line naming the best design (marked * in the table), or why there is none."""
     limits = f" with {' and '.join(best['require'])}" if best["require"] else ""
     if best["index"] is None:
@@ -183,8 +183,8 @@ def _best_text(best: dict, designs: list, effort: str) -> str:
     if name == "transmission_angle_min":
         x, unit = math.degrees(d[name]), "°"
     else:
-        x = d[name] if name in d else d["joint_peaks"][name.removesuffix("_peak")]
-        unit = {"I_s": "kg·m²", "shaking_moment_peak": "N·m"}.get(name, effort.split()[1][1:-1] if name.startswith(
-            "torque") else "N")
+        x = d[name] if name in d else d["joint_peaks"][name.removesuffix("_peak")]  # else a joint's peak force
+        effort = "N·m" if crank else "N"  # a slider's driving effort is a force
+        unit = {"torque_peak": effort, "torque_rms": effort, "I_s": "kg·m²", "shaking_moment_peak": "N·m"}.get(name, "N")
     values = ", ".join(_value(v) for v in d["values"])
     return f"best (*): design {best['index'] + 1} ({values}), least {name} = {x:.6g} {unit}{limits}"

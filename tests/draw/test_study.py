@@ -104,3 +104,11 @@ def test_a_study_and_its_choice_do_not_load_matplotlib():
     code = ("import sys, graphkin, graphkin.cycle.choice, graphkin.report.study, graphkin.cli.study; "
             "assert 'matplotlib' not in sys.modules")
     assert subprocess.run([sys.executable, "-c", code], capture_output=True).returncode == 0
+
+
+def test_a_point_field_is_an_axis_of_its_values_as_written():
+    s = study("slider_crank_friction", {"links[0].points.A": [["40 mm", "0 mm"], ["60 mm", "0 mm"]],
+                                        "links[2].mass": ["0.5 kg", "2 kg"]}, n=24)
+    ax = draw_study(s, s.best("torque_peak")).axes[0]
+    assert [t.get_text() for t in ax.get_yticklabels()] == ["(40 mm, 0 mm)", "(60 mm, 0 mm)"]
+    assert ax.get_ylabel() == "links[0].points.A"
