@@ -130,14 +130,16 @@ def run(args) -> int:
         s = solved(vary)
     choice = chosen(s)
     data = study_data(s, choice)
+    if args.figure:  # drawn before anything is written: a figure that cannot be drawn leaves no table behind
+        from graphkin import draw
+
+        with Progress(f"drawing {Path(args.figure).name}"):
+            figure = draw.draw_study(s, choice, merit=args.merit)
     if args.csv:
         write_text(args.csv, study_csv(data), "--csv")
         print(f"table written to {args.csv}", file=sys.stderr)
     if args.figure:
-        from graphkin import draw
-
-        with Progress(f"drawing {Path(args.figure).name}"):
-            draw.save(draw.draw_study(s, choice, merit=args.merit), args.figure)
+        draw.save(figure, args.figure)
         print(f"figure written to {args.figure}", file=sys.stderr)
     print(json_text(data) if args.json else format_study(data))
     return 0

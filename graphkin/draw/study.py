@@ -88,13 +88,16 @@ def draw_study(study, choice=None, *, merit: str | None = None) -> Figure:
     Raises
     ------
     GraphkinError
-        If ``merit`` names no figure of the study, or no design can be assembled (there is nothing to draw).
+        If ``merit`` names no figure of the study or one no design has, or no design can be assembled (there is
+        nothing to draw).
     """
     merit = merit or (choice.minimise if choice is not None else "torque_peak")
-    figure_values(study, merit, "merit")
+    z = figure_values(study, merit, "merit")
     if not any(d.ok for d in study.designs):
         raise GraphkinError(f"{study.problem}: no design of the study can be assembled over its cycle; "
                             "there is nothing to draw")
+    if np.isnan(z).all():  # e.g. μ of a linkage that is not a four-bar: an empty map would say nothing
+        raise GraphkinError(f"merit {merit!r}: not defined for any design of {study.problem}; choose another")
     varied = [k for k, v in enumerate(study.grid) if len(v) > 1] or [0]
     chosen = None if choice is None else choice.index
     if len(varied) == 1:

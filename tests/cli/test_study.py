@@ -204,3 +204,12 @@ def test_a_bad_limit_is_told_before_the_grid_is_solved(capsys, monkeypatch):
     assert solved == [1]  # one design, not the grid of eight
     code, _, _ = run(capsys, "strip_cutter", *VARY, "--n", "36", "--best", "torque_peak", "--require", "F23_peak < 2 MN")
     assert code == 0 and solved == [1, 1, 8]
+
+
+def test_a_merit_no_design_has_is_refused_and_nothing_written(capsys, tmp_path):
+    table, figure = tmp_path / "t.csv", tmp_path / "f.png"
+    code, out, err = run(capsys, "double_slider", "--vary", "links[1].mass=4..6 kg:3", "--csv", str(table),
+                         "--figure", str(figure), "--merit", "transmission_angle_min")
+    assert code == 2 and out == "" and err.count("\n") == 1
+    assert "merit 'transmission_angle_min': not defined for any design of double_slider" in err
+    assert list(tmp_path.iterdir()) == []
