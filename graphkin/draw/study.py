@@ -179,6 +179,7 @@ def _parallel(study, varied: list, merit: str, chosen: int | None) -> Figure:
     axis scaled from its least to its largest value, coloured by ``merit``; the chosen design in black."""
     from matplotlib import colormaps
     from matplotlib.cm import ScalarMappable
+    from matplotlib.collections import LineCollection
     from matplotlib.colors import Normalize
 
     ok = np.array([d.ok for d in study.designs])
@@ -194,8 +195,10 @@ def _parallel(study, varied: list, merit: str, chosen: int | None) -> Figure:
     fig = Figure(figsize=(1.6 * len(columns) + 2, 4.8), dpi=100, layout="constrained")
     ax = fig.subplots()
     at = np.arange(len(columns))
-    for d, c in zip(U.T, colour[ok]):
-        ax.plot(at, d, color=cmap(norm(c)) if np.isfinite(c) else "0.6", lw=0.8, alpha=0.6)
+    # One collection for all the designs: a study may have thousands, and a line each would take minutes to save.
+    lines = LineCollection([np.column_stack([at, d]) for d in U.T], colors=[
+        cmap(norm(c)) if np.isfinite(c) else "0.6" for c in colour[ok]], linewidths=0.8, alpha=0.6)
+    ax.add_collection(lines)
     if chosen is not None:
         ax.plot(at, U[:, int(np.flatnonzero(ok).tolist().index(chosen))], color="black", lw=2.4,
                 label="the chosen design")
@@ -206,6 +209,7 @@ def _parallel(study, varied: list, merit: str, chosen: int | None) -> Figure:
         ax.text(a, 1.04, f"{hi:.4g}", ha="center", va="bottom", fontsize=7)
     ax.set_xticks(at, [label for _, label in columns], rotation=20, ha="right", fontsize=7)
     ax.set_yticks([])
+    ax.set_xlim(-0.3, len(columns) - 0.7)  # a collection does not widen the axes
     ax.set_ylim(-0.12, 1.12)
     for side in ("top", "right", "left"):
         ax.spines[side].set_visible(False)
