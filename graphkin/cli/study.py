@@ -1,8 +1,14 @@
-"""``graphkin study PROBLEM --vary "FIELD=FROM..TO UNIT:N"``: a problem's figures of merit over a grid of designs."""
+"""``graphkin study PROBLEM --vary "FIELD=FROM..TO UNIT:N"``: a problem's figures of merit over a grid of designs.
+
+``--best FIGURE [--require "FIGURE OP VALUE UNIT"]...`` marks the design with the least FIGURE among those that meet
+the limits; ``--csv FILE`` writes a row per design, ``--figure FILE`` draws the study (:func:`graphkin.draw.draw_study`).
+"""
 
 from __future__ import annotations
 
 import re
+import sys
+from pathlib import Path
 
 from graphkin.cli._common import DOCS, Progress
 from graphkin.errors import GraphkinError
@@ -24,6 +30,17 @@ def add_parser(sub) -> None:
     c.add_argument("--cs", type=float, default=0.05, metavar="CS",
                    help="coefficient of speed fluctuation the flywheels are sized for (default 0.05)")
     c.add_argument("--json", action="store_true", help=f"print the study as JSON in SI units (schema: {DOCS}/json.html)")
+    c.add_argument("--best", metavar="FIGURE", help="mark the design with the least FIGURE (torque_peak, torque_rms, "
+                   "I_s, shaking_force_peak, shaking_moment_peak, transmission_angle_min, F12_peak, ...)")
+    c.add_argument("--require", action="append", default=[], metavar="\"FIGURE OP VALUE UNIT\"",
+                   help="with --best: a limit the best design must meet, e.g. \"transmission_angle_min >= 40 deg\" "
+                   "(OP one of <=, >=, <, >); give --require again for another")
+    c.add_argument("--csv", metavar="FILE", help="write a row per design (the fields' values, each figure of merit "
+                   "with its unit, where and why a design cannot be assembled) to FILE")
+    c.add_argument("--figure", metavar="FILE", help="draw the study (.png, .svg or .pdf): each figure of merit against "
+                   "one varied field, a contour map over two, parallel coordinates over more")
+    c.add_argument("--merit", metavar="FIGURE", help="with --figure: the figure of merit a contour map or parallel "
+                   "coordinates colour by (default: --best's, else torque_peak)")
 
 
 def vary_values(text: str) -> tuple[str, list[str]]:
@@ -63,12 +80,23 @@ def vary_values(text: str) -> tuple[str, list[str]]:
 
 def run(args) -> int:
     """Carry out ``graphkin study``; returns the exit code (0, also when some designs cannot be assembled)."""
+    from graphkin.cycle.choice import best, figure_values, requirement
     from graphkin.cycle.flywheel import check_Cs
     from graphkin.cycle.study import VaryError, study
-    from graphkin.files import json_text
-    from graphkin.report.study import format_study, study_data
+    from graphkin.files import check_destination, json_text, write_text
+    from graphkin.report.study import format_study, study_csv, study_data
 
     check_Cs(args.cs, "--cs")
+    if args.require and not args.best:
+        raise GraphkinError(f"--require {args.require[0]!r}: a limit goes with --best FIGURE (the figure to minimise)")
+    if args.merit and not args.figure:
+        raise GraphkinError(f"--merit {args.merit}: goes with --figure FILE")
+    if args.figure:  # a figure or table that cannot be written is refused before the solve, as every command does
+        if Path(args.figure).suffix.lower() not in (".png", ".svg", ".pdf"):
+            raise GraphkinError(f"--figure {args.figure}: the figure's file must end in .png, .svg or .pdf")
+        check_destination(args.figure, "--figure")
+    if args.csv:
+        check_destination(args.csv, "--csv")
     if args.n is not None and args.n < 2:
         raise GraphkinError(f"--n {args.n}: give at least 2 crank angles")
     given, vary = {}, {}
@@ -77,10 +105,41 @@ def run(args) -> int:
         if field in vary:
             raise GraphkinError(f"--vary {text!r}: {field} is varied twice")
         given[field], vary[field] = text, values
-    try:
-        with Progress(f"studying {args.problem}"):
-            data = study_data(study(args.problem, vary, n=args.n, Cs=args.cs))
-    except VaryError as exc:  # the field's fault, named by the --vary the user wrote
-        raise GraphkinError(f"--vary {given[exc.field]!r}: " + str(exc).removeprefix(f"vary {exc.field}: ")) from None
+
+    def solved(grid):
+        try:
+            return study(args.problem, grid, n=args.n, Cs=args.cs)
+        except VaryError as exc:  # the field's fault, named by the --vary the user wrote
+            raise GraphkinError(f"--vary {given[exc.field]!r}: "
+                                + str(exc).removeprefix(f"vary {exc.field}: ")) from None
+
+    def chosen(s):
+        """The best design of ``s`` under the limits (None without --best), each name and unit checked."""
+        limits = [requirement(s, r, "--require") for r in args.require]
+        if args.merit:
+            figure_values(s, args.merit, label="--merit")
+        return best(s, args.best, limits, label="--best") if args.best else None
+
+    if args.best or args.merit:
+        # One design has every figure the grid has (its joints' names too, once it is built): a figure or a unit
+        # named wrong is told before the whole grid is solved.
+        probe = solved({field: values[:1] for field, values in vary.items()})
+        if probe.designs[0].joint_peaks:
+            chosen(probe)
+    with Progress(f"studying {args.problem}"):
+        s = solved(vary)
+    choice = chosen(s)
+    data = study_data(s, choice)
+    if args.figure:  # drawn before anything is written: a figure that cannot be drawn leaves no table behind
+        from graphkin import draw
+
+        with Progress(f"drawing {Path(args.figure).name}"):
+            figure = draw.draw_study(s, choice, merit=args.merit)
+    if args.csv:
+        write_text(args.csv, study_csv(data), "--csv")
+        print(f"table written to {args.csv}", file=sys.stderr)
+    if args.figure:
+        draw.save(figure, args.figure)
+        print(f"figure written to {args.figure}", file=sys.stderr)
     print(json_text(data) if args.json else format_study(data))
     return 0

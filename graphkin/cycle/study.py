@@ -40,6 +40,7 @@ import numpy as np
 from graphkin import catalog
 from graphkin.analytical.designs import Batch, batch_key, numbers, solve_designs
 from graphkin.cycle._sampling import sweep_positions
+from graphkin.cycle.choice import best
 from graphkin.cycle.flywheel import check_Cs
 from graphkin.cycle.sweep import Cycle, sweep
 from graphkin.cycle.turn import TURN, closing_step, steps, weights
@@ -163,6 +164,11 @@ class Study:
     def shape(self) -> tuple:
         """The grid's shape: the number of values of each field."""
         return tuple(len(v) for v in self.grid)
+
+    def best(self, minimise: str, require=()):
+        """The design with the least ``minimise`` among those that meet ``require``
+        (:func:`graphkin.cycle.choice.best`): ``s.best("torque_peak", ["transmission_angle_min >= 40 deg"])``."""
+        return best(self, minimise, require)
 
 
 def _problem_data(problem) -> tuple[dict, str, Path | None]:

@@ -42,6 +42,7 @@ _LATER = {
                      "draw_torque_curve"), "cycle"),
     "draw_shaking_components": "shaking",
     "draw_transmission_angle": "transmission",
+    "draw_study": "study",
     "draw_positions": "positions",
     **dict.fromkeys(("draw_grades", "what_went_wrong"), "grades"),
     "draw_free_bodies": "paper",

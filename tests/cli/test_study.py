@@ -89,3 +89,127 @@ def test_a_slider_drivers_effort_is_a_force(capsys):
     assert efforts == sorted(efforts) and efforts[0] < efforts[-1]  # a heavier rod takes a larger push
     code, out, _ = run(capsys, "double_slider", "--vary", "links[1].mass=4..6 kg:3")
     assert "F_peak [N]" in out and "T_peak" not in out
+
+
+def test_csv_is_a_row_per_design_with_units(capsys, expected, tmp_path):
+    import csv
+
+    out_file = tmp_path / "study.csv"
+    code, out, err = run(capsys, "strip_cutter", *VARY, "--n", "36", "--cs", "0.02", "--csv", str(out_file))
+    assert code == 0 and f"table written to {out_file}" in err
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["study.csv"]  # no temporary file left beside it
+    rows = list(csv.reader(out_file.read_text(encoding="utf-8").splitlines()))
+    head = rows[0]
+    assert head[:4] == ["design", "links[0].points.A[0] [mm]", "links[1].mass [kg]", "ok"]
+    assert {"torque_peak [N*m]", "I_s [kg*m^2]", "transmission_angle_min [deg]", "F23_peak [N]",
+            "failed_at [rad]", "failure"} <= set(head)
+    assert len(rows) == 1 + len(expected.designs)
+    col = {h: i for i, h in enumerate(head)}
+    mm = np.linspace(60, 240, 4)
+    for k, (row, d) in enumerate(zip(rows[1:], expected.designs)):
+        assert float(row[col["links[0].points.A[0] [mm]"]]) == mm[k // 2]
+        assert row[col["ok"]] == str(d.ok)
+        if d.ok:
+            assert float(row[col["torque_peak [N*m]"]]) == d.torque_peak
+            assert float(row[col["transmission_angle_min [deg]"]]) == math.degrees(d.transmission_angle_min)
+            assert float(row[col["F23_peak [N]"]]) == d.joint_peaks["F23"]
+            assert row[col["failure"]] == row[col["failed_at [rad]"]] == ""
+        else:
+            assert row[col["torque_peak [N*m]"]] == ""
+            assert float(row[col["failed_at [rad]"]]) == d.failed_at and row[col["failure"]] == d.failure
+
+
+def test_study_rows_are_the_csv(expected):
+    from graphkin.report.study import study_csv, study_rows
+
+    data = study_data(expected)
+    rows = study_rows(data)
+    assert study_csv(data).count("\n") == len(rows) == 1 + len(expected.designs)
+    assert [r[0] for r in rows[1:]] == list(range(1, len(expected.designs) + 1))
+
+
+@pytest.mark.parametrize(("flag", "where", "words"), [
+    ("--csv", "{dir}", "is a folder, not a file"),
+    ("--csv", "{file}/t.csv", "is a file, not a folder"),
+    ("--figure", "{dir}/f.gif", "must end in .png, .svg or .pdf"),
+    ("--figure", "{file}/f.png", "is a file, not a folder"),
+])
+def test_a_bad_destination_is_refused_before_the_solve(capsys, tmp_path, monkeypatch, flag, where, words):
+    import sys
+
+    module = sys.modules["graphkin.cycle.study"]  # the module, which graphkin.cycle's function of its name hides
+
+    def no_solve(*a, **k):
+        raise AssertionError("solved before the destination was checked")
+
+    monkeypatch.setattr(module, "study", no_solve)
+    (tmp_path / "a.txt").write_text("x")
+    dest = where.format(dir=tmp_path, file=tmp_path / "a.txt")
+    code, out, err = run(capsys, "strip_cutter", *VARY, flag, dest)
+    assert code == 2 and out == "" and err.count("\n") == 1
+    assert err.startswith(f"graphkin: error: {flag} ") and words in err
+
+
+def test_best_under_limits_is_printed_marked_and_in_json(capsys, expected):
+    limit = "transmission_angle_min >= 45 deg"
+    choice = expected.best("torque_rms", [limit])
+    assert choice.index is not None
+    code, out, _ = run(capsys, "strip_cutter", *VARY, "--n", "36", "--cs", "0.02", "--best", "torque_rms",
+                       "--require", limit, "--json")
+    assert code == 0
+    assert json.loads(out)["best"] == {"minimise": "torque_rms", "require": [limit], "index": choice.index,
+                                       "why": None}
+    code, out, _ = run(capsys, "strip_cutter", *VARY, "--n", "36", "--cs", "0.02", "--best", "torque_rms",
+                       "--require", limit)
+    marked = [line.split()[0] for line in out.split("\n\n")[1].splitlines()[1:] if line.split()[0].endswith("*")]
+    assert marked == [f"{choice.index + 1}*"]
+    d = expected.designs[choice.index]
+    assert f"best (*): design {choice.index + 1} " in out and f"least torque_rms = {d.torque_rms:.6g} N·m" in out
+
+
+@pytest.mark.parametrize(("args", "words"), [
+    (["--best", "peak_torque"], "--best 'peak_torque': no such figure of merit; the study has torque_peak"),
+    (["--best", "torque_peak", "--require", "mu>40 deg"], "--require 'mu>40 deg': 'mu': no such figure of merit"),
+    (["--best", "torque_peak", "--require", "I_s < 2 kg"], "--require 'I_s < 2 kg': expected a moment of inertia"),
+    (["--require", "I_s < 2 kg*m^2"], "--require 'I_s < 2 kg*m^2': a limit goes with --best FIGURE"),
+    (["--merit", "I_s"], "--merit I_s: goes with --figure FILE"),
+])
+def test_a_bad_best_or_limit_is_one_line_naming_it(capsys, args, words):
+    code, out, err = run(capsys, "strip_cutter", *VARY, "--n", "36", *args)
+    assert code == 2 and out == "" and err.count("\n") == 1 and words in err
+
+
+def test_a_figure_is_written(capsys, tmp_path):
+    path = tmp_path / "study.svg"
+    code, _, err = run(capsys, "strip_cutter", *VARY, "--n", "36", "--best", "torque_peak", "--figure", str(path))
+    assert code == 0 and f"figure written to {path}" in err
+    assert path.read_text(encoding="utf-8").lstrip().startswith("<?xml")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["study.svg"]
+
+
+def test_a_bad_limit_is_told_before_the_grid_is_solved(capsys, monkeypatch):
+    import sys
+
+    module = sys.modules["graphkin.cycle.study"]
+    solved = []
+
+    def counted(problem, vary, **kw):
+        solved.append(math.prod(len(v) for v in vary.values()))
+        return study(problem, vary, **kw)
+
+    monkeypatch.setattr(module, "study", counted)
+    code, _, err = run(capsys, "strip_cutter", *VARY, "--n", "36", "--best", "torque_peak",
+                       "--require", "F23_peak < 2 kg")
+    assert code == 2 and "--require 'F23_peak < 2 kg': expected a force" in err
+    assert solved == [1]  # one design, not the grid of eight
+    code, _, _ = run(capsys, "strip_cutter", *VARY, "--n", "36", "--best", "torque_peak", "--require", "F23_peak < 2 MN")
+    assert code == 0 and solved == [1, 1, 8]
+
+
+def test_a_merit_no_design_has_is_refused_and_nothing_written(capsys, tmp_path):
+    table, figure = tmp_path / "t.csv", tmp_path / "f.png"
+    code, out, err = run(capsys, "double_slider", "--vary", "links[1].mass=4..6 kg:3", "--csv", str(table),
+                         "--figure", str(figure), "--merit", "transmission_angle_min")
+    assert code == 2 and out == "" and err.count("\n") == 1
+    assert "merit 'transmission_angle_min': not defined for any design of double_slider" in err
+    assert list(tmp_path.iterdir()) == []

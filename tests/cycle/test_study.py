@@ -224,3 +224,66 @@ def test_values_that_make_no_mechanism_together_mark_that_design():
     assert [d.ok for d in s.designs] == [True, True, True, False]
     last = s.designs[-1]
     assert "pins A and A0 coincide" in last.failure and math.isnan(last.failed_at) and math.isnan(last.torque_peak)
+
+
+# The best design under stated limits (graphkin.cycle.choice): the least of one figure among the designs that
+# assemble and meet every limit, checked against a search of the designs written out here.
+
+CHOICE_VARY = {"links[0].points.A[0]": ["60 mm", "110 mm", "160 mm", "210 mm", "240 mm"],
+               "links[1].mass": ["1 kg", "4 kg"]}
+
+
+@pytest.fixture(scope="module")
+def choosing():
+    return study("strip_cutter", CHOICE_VARY, n=36)
+
+
+@pytest.mark.parametrize(("minimise", "require", "limits"), [
+    ("torque_peak", [], []),
+    ("transmission_angle_min", [], []),  # least μ: the longest crank that still turns
+    ("shaking_force_peak", ["transmission_angle_min >= 40 deg"], [("transmission_angle_min", ">=", math.radians(40))]),
+    ("I_s", ["F23_peak < 30 kN", "torque_rms>=0.1 kN*m"], [("F23", "<", 30000.0), ("torque_rms", ">=", 100.0)]),
+])
+def test_the_best_design_is_the_least_that_meets_the_limits(choosing, minimise, require, limits):
+    def value(d, name):
+        return getattr(d, name) if hasattr(d, name) else d.joint_peaks[name]
+
+    compare = {"<": lambda a, b: a < b, ">=": lambda a, b: a >= b}
+    candidates = [k for k, d in enumerate(choosing.designs)
+                  if d.ok and all(compare[op](value(d, f), bound) for f, op, bound in limits)]
+    assert 0 < len(candidates) < len(choosing.designs)  # the limits and failures leave some out, not all
+    expected = min(candidates, key=lambda k: value(choosing.designs[k], minimise))
+    got = choosing.best(minimise, require)
+    assert got.index == expected and got.why is None and [r.text for r in got.require] == [r.strip() for r in require]
+
+
+def test_no_design_meeting_the_limits_says_why(choosing):
+    got = choosing.best("torque_peak", ["transmission_angle_min > 89 deg"])
+    assert got.index is None
+    assert got.why == ("no design that assembles over its cycle meets transmission_angle_min > 89 deg and has a "
+                       "torque_peak")
+
+
+@pytest.mark.parametrize(("minimise", "require", "words"), [
+    ("peak_torque", [], "best 'peak_torque': no such figure of merit; the study has torque_peak, "),
+    ("torque_peak", ["mu >= 40 deg"], "require 'mu >= 40 deg': 'mu': no such figure of merit"),
+    ("torque_peak", ["transmission_angle_min >= 40 kg"], "require 'transmission_angle_min >= 40 kg': expected an "
+                                                         "angle"),
+    ("torque_peak", ["torque_peak <= 3"], "require 'torque_peak <= 3': units are missing"),
+    ("torque_peak", ["torque_peak == 3 N*m"], "require 'torque_peak == 3 N*m': write it FIGURE OP VALUE UNIT"),
+    ("torque_peak", ["__import__('os') >= 1 m"], "write it FIGURE OP VALUE UNIT"),
+])
+def test_a_bad_figure_or_limit_is_named(choosing, minimise, require, words):
+    with pytest.raises(GraphkinError) as e:
+        choosing.best(minimise, require)
+    assert words in str(e.value) and "\n" not in str(e.value)
+
+
+def test_a_fields_values_as_numbers_in_their_unit():
+    from graphkin.cycle.choice import field_axis
+
+    unit, x = field_axis(["60.0 mm", "1e2 mm", "-.5 mm"])
+    assert unit == "mm" and x.tolist() == [60.0, 100.0, -0.5]
+    assert field_axis([2, 3.5])[0] == ""
+    assert field_axis(["60 mm", "0.1 m"]) is None  # two units: not one axis
+    assert field_axis([["80 mm", "0 mm"]]) is None  # a point

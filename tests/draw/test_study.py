@@ -1,0 +1,116 @@
+"""draw_study: what a study's picture shows is the study's numbers, the chosen design marked where it is.
+
+One varied field: a panel per defined figure of merit, its line the figure against the field; two: a contour map
+with the designs that cannot be assembled crossed out; more: parallel coordinates, a line per design that
+assembles. The chosen design (Study.best) is the black star or line in each.
+"""
+
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+from matplotlib.collections import LineCollection
+from matplotlib.contour import ContourSet
+
+from graphkin.cycle import study
+from graphkin.cycle.choice import figure_values, figures
+from graphkin.draw import draw_study, save
+from graphkin.errors import GraphkinError
+
+CRANK = ["60 mm", "100 mm", "140 mm", "180 mm", "240 mm"]  # the 240 mm crank cannot turn
+
+
+@pytest.fixture(scope="module")
+def one():
+    return study("strip_cutter", {"links[0].points.A[0]": CRANK}, n=36)
+
+
+@pytest.fixture(scope="module")
+def two():
+    return study("strip_cutter", {"links[0].points.A[0]": CRANK, "links[1].mass": ["1 kg", "2.5 kg", "4 kg"]}, n=36)
+
+
+def stars(ax):
+    return [line for line in ax.lines if line.get_marker() == "*"]
+
+
+def test_one_field_each_figure_against_it(one):
+    choice = one.best("shaking_moment_peak", ["transmission_angle_min >= 45 deg"])
+    fig = draw_study(one, choice)
+    panels = [ax for ax in fig.axes if ax.get_visible()]
+    names = [n for n in figures(one) if not np.isnan(figure_values(one, n)).all()]
+    assert len(panels) == len(names) == 10  # six figures and four joints
+    x = np.array([60, 100, 140, 180, 240], float)
+    for ax, name in zip(panels, names):
+        y = figure_values(one, name)
+        if name == "transmission_angle_min":
+            y = np.degrees(y)
+        (curve,) = [line for line in ax.lines if line.get_marker() == "."]
+        np.testing.assert_array_equal(curve.get_xdata(), x)
+        np.testing.assert_array_equal(curve.get_ydata(), y)  # nan: the crank that cannot turn is a gap
+        (star,) = stars(ax)
+        assert (star.get_xdata()[0], star.get_ydata()[0]) == (x[choice.index], y[choice.index])
+        assert ax.get_xlabel() == "links[0].points.A[0] [mm]"
+
+
+def test_two_fields_a_contour_map_failures_crossed_out(two):
+    choice = two.best("torque_rms")
+    fig = draw_study(two, choice, merit="I_s")
+    ax = fig.axes[0]
+    assert any(isinstance(c, ContourSet) for c in ax.collections)
+    assert ax.get_xlabel() == "links[1].mass [kg]" and ax.get_ylabel() == "links[0].points.A[0] [mm]"
+    mass, crank = np.meshgrid([60, 100, 140, 180, 240], [1, 2.5, 4], indexing="ij")
+    (crosses,) = [line for line in ax.lines if line.get_marker() == "x"]
+    bad = np.array([not d.ok for d in two.designs])
+    assert bad.sum() == 3
+    np.testing.assert_array_equal(crosses.get_xdata(), crank.ravel()[bad])
+    np.testing.assert_array_equal(crosses.get_ydata(), mass.ravel()[bad])
+    (star,) = stars(ax)
+    assert (star.get_xdata()[0], star.get_ydata()[0]) == (crank.ravel()[choice.index], mass.ravel()[choice.index])
+    assert "flywheel I_s" in fig.axes[1].get_ylabel()  # the colour bar names the merit drawn
+
+
+def test_more_fields_parallel_coordinates():
+    s = study("strip_cutter", {"links[0].points.A[0]": ["60 mm", "240 mm"], "links[1].mass": ["1 kg", "4 kg"],
+                               "links[2].mass": ["2 kg", "3 kg", "5 kg"]}, n=36)
+    choice = s.best("I_s")
+    ax = draw_study(s, choice).axes[0]
+    ok = [k for k, d in enumerate(s.designs) if d.ok]
+    (designs,) = [c for c in ax.collections if isinstance(c, LineCollection)]
+    thick = [line for line in ax.lines if line.get_linewidth() > 2]
+    assert len(designs.get_segments()) == len(ok) == 6 and len(thick) == 1
+    assert any(np.array_equal(seg[:, 1], thick[0].get_ydata()) for seg in designs.get_segments())
+    # the least flywheel: the short crank and the lightest links, each at the bottom of its field's axis
+    assert s.designs[choice.index].values == ("60 mm", "1 kg", "2 kg")
+    assert thick[0].get_ydata()[:3].tolist() == [0, 0, 0]
+    assert thick[0].get_ydata()[5] == 0  # fields, T_peak, T_rms, then I_s: its least
+    assert choice.index in ok
+
+
+def test_a_bad_merit_or_nothing_to_draw_is_named(one):
+    with pytest.raises(GraphkinError, match="merit 'mu': no such figure of merit"):
+        draw_study(one, merit="mu")
+    none = study("strip_cutter", {"links[0].points.A[0]": ["240 mm", "250 mm"]}, n=12)
+    with pytest.raises(GraphkinError, match="no design of the study can be assembled"):
+        draw_study(none)
+
+
+@pytest.mark.parametrize("suffix", ["png", "svg", "pdf"])
+def test_saved_whole_in_each_format(one, tmp_path, suffix):
+    path = save(draw_study(one, one.best("torque_peak")), tmp_path / f"s.{suffix}")
+    assert path.stat().st_size > 1000 and [p.name for p in tmp_path.iterdir()] == [f"s.{suffix}"]
+
+
+def test_a_study_and_its_choice_do_not_load_matplotlib():
+    code = ("import sys, graphkin, graphkin.cycle.choice, graphkin.report.study, graphkin.cli.study; "
+            "assert 'matplotlib' not in sys.modules")
+    assert subprocess.run([sys.executable, "-c", code], capture_output=True).returncode == 0
+
+
+def test_a_point_field_is_an_axis_of_its_values_as_written():
+    s = study("slider_crank_friction", {"links[0].points.A": [["40 mm", "0 mm"], ["60 mm", "0 mm"]],
+                                        "links[2].mass": ["0.5 kg", "2 kg"]}, n=24)
+    ax = draw_study(s, s.best("torque_peak")).axes[0]
+    assert [t.get_text() for t in ax.get_yticklabels()] == ["(40 mm, 0 mm)", "(60 mm, 0 mm)"]
+    assert ax.get_ylabel() == "links[0].points.A"
