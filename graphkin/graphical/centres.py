@@ -24,7 +24,7 @@ import numpy as np
 from graphkin.analytical.meshes import pitch as pitch_point
 from graphkin.errors import GraphkinError
 from graphkin.graphical.captions import Captions, Later, number
-from graphkin.graphical.guard import centres_disagreement, derived
+from graphkin.graphical.guard import centres_disagreement, derived, kept
 from graphkin.kinematics import DriverGroup, Kinematics
 from graphkin.kinematics.plan import plan_of
 from graphkin.model import GearMesh, Prismatic, Revolute
@@ -116,6 +116,33 @@ def _kennedy(a: int, b: int, j: int, via: int, P, size: float) -> str:
             f"{_where(P, size)}.")
 
 
+class _Placed:
+    """Where the instant centres of one kinematics start from, at every position, worked out at once (numpy over
+    the positions; kept while the kinematics lives, :func:`graphkin.graphical.guard.kept`).
+
+    ``keys``: every named point of every link, ``(link, name)``; ``where``: where each is [m], a row per position
+    (complex); ``size``: the unit of the homogeneous points at each position, the largest distance of a point from
+    the origin [m] (1 m where every point is at it); ``e``: each moving link's direction (unit complex); ``G``: each
+    moving link's centre of mass [m]; ``names``: each moving link's named points.
+    """
+
+    def __init__(self, kin: Kinematics):
+        mech = kin.mechanism
+        points = plan_of(mech).points  # (link, name): the point in its link's own frame [m], complex
+        moving = mech.moving
+        O = {n: np.asarray(kin.O[n], dtype=complex) for n in moving}
+        e = {n: np.asarray(kin.e[n], dtype=complex) for n in moving}
+        self.keys = list(points)
+        self.where = np.stack([np.full(kin.n, p) if link == mech.frame else O[link] + e[link] * p
+                               for (link, _), p in points.items()], axis=1)
+        self.G = np.stack([O[n] + e[n] * complex(*mech.link(n).G) for n in moving], axis=1)
+        self.e = np.stack([e[n] for n in moving], axis=1)
+        with np.errstate(invalid="ignore"):  # positions that cannot be assembled are nan, and never asked for
+            size = np.abs(self.where).max(axis=1)
+        self.size = np.where(size == 0, 1.0, size)
+        self.names = {n: list(mech.link(n).points) for n in moving}
+
+
 def instant_centres(kin: Kinematics, index: int = 0) -> InstantCentres:
     """Every instant centre Kennedy's theorem reaches at position ``index``, and the velocities they give.
 
@@ -144,37 +171,33 @@ def instant_centres(kin: Kinematics, index: int = 0) -> InstantCentres:
     frame = mech.frame
     kin, at = derived(kin, i)  # placed by the input motion alone, a problem's given values left out
 
-    O = {n: complex(kin.O[n].item(at)) for n in mech.moving}
-    e = {n: complex(kin.e[n].item(at)) for n in mech.moving}
-    points = plan_of(mech).points  # (link, name): the point in its link's own frame [m], complex
-
-    def pos(link, name):
-        p = points[link, name]
-        return p if link == frame else O[link] + e[link] * p
-
-    size = max([abs(pos(link, name)) for link, name in points]) or 1.0
+    placed = kept(kin, "centres", _Placed)
+    pos = dict(zip(placed.keys, placed.where[at].tolist()))  # (link, name): where the point is [m]
+    e = dict(zip(mech.moving, placed.e[at].tolist()))
+    size = placed.size.item(at)
 
     def hom(z: complex):
         return _unit((z.real / size, z.imag / size, 1.0))
 
-    known: dict[frozenset, tuple] = {}
+    # Each centre found, under both orders of its links: (a, b) and (b, a).
+    known: dict[tuple[int, int], tuple] = {}
     steps = []
     for joint in mech.joints:
         a, b = joint.links
         if isinstance(joint, Revolute):
-            P = hom(pos(a, joint.point))
+            P = hom(pos[a, joint.point])
             how = f"the pin {joint.point}"
         elif isinstance(joint, Prismatic):
             u = (1 + 0j if joint.guide == frame else e[joint.guide]) * cmath.exp(1j * joint.direction)
             P = (-u.imag, u.real, 0.0)
             how = f"at infinity, perpendicular to the guide at {joint.point}"
         elif isinstance(joint, GearMesh):
-            A, B = pos(a, joint.centers[0]), pos(b, joint.centers[1])
+            A, B = pos[a, joint.centers[0]], pos[b, joint.centers[1]]
             P = hom(complex(pitch_point(joint, a, A, B)[0]))  # an internal mesh's lies beyond the pinion
             how = "the pitch point"
         else:  # pragma: no cover - the model has these three joints only
             raise AssertionError(joint)
-        known[frozenset((a, b))] = P
+        known[a, b] = known[b, a] = P
         steps.append(Later(_primary, min(a, b), max(a, b), how, P, size))
 
     links = [link.number for link in mech.links]
@@ -182,13 +205,13 @@ def instant_centres(kin: Kinematics, index: int = 0) -> InstantCentres:
     while progress:
         progress = False
         for a, b in combinations(links, 2):
-            if frozenset((a, b)) in known:
+            if (a, b) in known:
                 continue
             lines = []
             for j in links:
-                if j in (a, b):
+                if j == a or j == b:
                     continue
-                p, q = known.get(frozenset((a, j))), known.get(frozenset((j, b)))
+                p, q = known.get((a, j)), known.get((j, b))
                 if p is None or q is None:
                     continue
                 line = _line(p, q)
@@ -198,7 +221,7 @@ def instant_centres(kin: Kinematics, index: int = 0) -> InstantCentres:
                     P = _cross(line, other)
                     if _norm(P) > SAME:
                         P = _unit(P)
-                        known[frozenset((a, b))] = P
+                        known[a, b] = known[b, a] = P
                         steps.append(Later(_kennedy, a, b, j, via, P, size))
                         progress = True
                         break
@@ -212,7 +235,7 @@ def instant_centres(kin: Kinematics, index: int = 0) -> InstantCentres:
     g = next(g for g in kin.groups if isinstance(g, DriverGroup))
     q_dot = float(kin.q_dot[at])
     if isinstance(g.joint, Revolute):
-        I12 = known[frozenset((frame, g.link))]
+        I12 = known[frame, g.link]
         fields[g.link] = (q_dot * size / I12[2], complex(I12[0], I12[1]), I12[2])
     else:
         # A driving slider translates: w = 0 and X = i v, so that v(P) = -iX is v at every point.
@@ -221,12 +244,12 @@ def instant_centres(kin: Kinematics, index: int = 0) -> InstantCentres:
     while progress:
         progress = False
         for k in links:
-            if k in fields or frozenset((frame, k)) not in known:
+            if k in fields or (frame, k) not in known:
                 continue
-            I1k = known[frozenset((frame, k))]
+            I1k = known[frame, k]
             X, w = complex(I1k[0], I1k[1]), I1k[2]
             for m, (Om, Xm, wm) in list(fields.items()):
-                Imk = known.get(frozenset((m, k)))
+                Imk = known.get((m, k))
                 if Imk is None:
                     continue
                 Y, s = complex(Imk[0], Imk[1]), Imk[2]
@@ -239,27 +262,26 @@ def instant_centres(kin: Kinematics, index: int = 0) -> InstantCentres:
                 break
 
     omega, velocity, v_G = {}, {}, {}
-    for link in mech.moving:
+    for link, G in zip(mech.moving, placed.G[at].tolist()):
         if link not in fields:
             continue
         Om, X, w = fields[link]
-        omega[link] = float(Om * w / size)
-        for name in mech.link(link).points:
-            v = 1j * Om * (pos(link, name) / size * w - X)
-            velocity[link, name] = (float(v.real), float(v.imag))
-        gx, gy = mech.link(link).G
-        G = O[link] + e[link] * complex(gx, gy)
+        omega[link] = Om * w / size
+        for name in placed.names[link]:
+            v = 1j * Om * (pos[link, name] / size * w - X)
+            velocity[link, name] = (v.real, v.imag)
         v = 1j * Om * (G / size * w - X)
-        v_G[link] = (float(v.real), float(v.imag))
+        v_G[link] = (v.real, v.imag)
     centres, infinite = {}, {}
-    for pair, P in known.items():
-        lo, hi = sorted(pair)
+    for (lo, hi), P in known.items():
+        if lo > hi:
+            continue
         if abs(P[2]) <= SAME:
             d = math.hypot(P[0], P[1])
-            infinite[lo, hi] = (float(P[0] / d), float(P[1] / d))
+            infinite[lo, hi] = (P[0] / d, P[1] / d)
         else:
-            centres[lo, hi] = (float(P[0] / P[2] * size), float(P[1] / P[2] * size))
-    missing = tuple(sorted((a, b) for a, b in combinations(sorted(links), 2) if frozenset((a, b)) not in known))
+            centres[lo, hi] = (P[0] / P[2] * size, P[1] / P[2] * size)
+    missing = tuple(sorted((a, b) for a, b in combinations(sorted(links), 2) if (a, b) not in known))
     ic = InstantCentres(mech, i, centres, infinite, tuple(steps), missing, omega, velocity, v_G)
     # Checked against the analytical kinematics before anyone sees them (graphical/guard.py).
     why = centres_disagreement(kin, at, ic)

@@ -130,7 +130,8 @@ class _Shape:
     """What the guard reads of a mechanism at every position, made once per mechanism (its plan's cache).
 
     ``keys``: every named point of every moving link, ``(link, name)``, then each centre of mass, ``(link, None)``;
-    ``local``: where each is in its link's own frame [m].
+    ``local``: where each is in its link's own frame [m]; ``index``: each key's place in ``keys``. ``column``: each
+    link's place in a row of link values, the moving links in order, then the frame.
     """
 
     def __init__(self, mech):
@@ -141,7 +142,8 @@ class _Shape:
         self.keys = [(n, name) for n in self.moving for name in mech.link(n).points] + [(n, None) for n in self.moving]
         self.local = np.array([points[key] if key[1] is not None else complex(*mech.link(key[0]).G)
                                for key in self.keys], dtype=complex)
-        self.column = [self.moving.index(n) for n, _ in self.keys]
+        self.index = {key: k for k, key in enumerate(self.keys)}
+        self.column = {n: j for j, n in enumerate(self.moving + (self.frame,))}
 
 
 def _shape(mech) -> _Shape:
@@ -156,17 +158,18 @@ class _Table:
     """The analytical motion of one kinematics at every position, worked out at once (numpy over the positions).
 
     A row per position: ``values`` (complex) holds the velocity and acceleration of every key of the
-    :class:`_Shape`, then each moving link's origin O, direction e, v_O, a_O, iω and iα − ω²; ``rates`` (real)
-    holds ω and α of each moving link, then the position's scales: the largest speed (acceleration) of a named
-    point or centre of mass, or of a link's ω (α) times the mechanism's size.
+    :class:`_Shape`, then each link's origin O, v_O, a_O, iω and iα − ω² (the moving links, then the frame's: all
+    0); ``rates`` (real) holds ω and α of each link (the same order), then the position's scales: the largest speed
+    (acceleration) of a named point or centre of mass, or of a link's ω (α) times the mechanism's size.
     """
 
     def __init__(self, kin):
         shape = self.shape = _shape(kin.mechanism)
-        moving, column = shape.moving, shape.column
+        moving = shape.moving
+        column = [shape.column[n] for n, _ in shape.keys]
 
-        def links(arrays, kind):
-            return np.stack([np.asarray(arrays[n], dtype=kind) for n in moving], axis=1)  # (positions, links)
+        def links(arrays, kind):  # (positions, links), the frame's 0 last
+            return np.stack([np.asarray(arrays[m], dtype=kind) for m in moving] + [np.zeros(kin.n, kind)], axis=1)
 
         O, e, v_O, a_O = (links(x, complex) for x in (kin.O, kin.e, kin.v_O, kin.a_O))
         w, al = links(kin.omega, float), links(kin.alpha, float)
@@ -177,58 +180,61 @@ class _Table:
         with np.errstate(invalid="ignore"):  # positions that cannot be assembled are nan, and never asked for
             v_top = np.maximum(np.abs(v).max(axis=1), np.abs(w).max(axis=1) * shape.size)
             a_top = np.maximum(np.abs(a).max(axis=1), np.abs(al).max(axis=1) * shape.size)
-        self.values = np.concatenate([v, a, O, e, v_O, a_O, iw, turn], axis=1)
+        self.values = np.concatenate([v, a, O, v_O, a_O, iw, turn], axis=1)
         self.rates = np.concatenate([w, al, v_top[:, None], a_top[:, None]], axis=1)
 
 
 class _Truth:
-    """The analytical motion of one position: any point's velocity and acceleration as a point of any link.
+    """The analytical motion of one position, as lists of Python numbers (a position has a few dozen values, too
+    few for numpy to pay).
 
-    ``v[key]``, ``a[key]``: the velocity and acceleration of each named point and centre of mass [m/s, m/s²];
-    ``motion[link]`` is ``(O, e, v_O, a_O, iω, iα − ω²)``: the link's origin and direction [m, unit complex], its
-    origin's velocity and acceleration, and the factors that carry them to a point r = P − O away (v = v_O + iω r,
-    a = a_O + (iα − ω²) r).
+    ``v``, ``a``: the velocity and acceleration of each key of the :class:`_Shape` [m/s, m/s²], in its order
+    (``index``); ``O``, ``v_O``, ``a_O``, ``iw``, ``turn``: each link's origin [m], its velocity and acceleration and
+    the factors iω and iα − ω² that carry them to a point r = P − O away (v = v_O + iω r, a = a_O + (iα − ω²) r);
+    ``w``, ``al``: each link's ω and α; all of these in the order of ``column``.
     """
 
-    __slots__ = ("frame", "size", "v", "a", "motion", "w", "al", "v_scale", "a_scale")
+    __slots__ = ("size", "index", "column", "v", "a", "O", "v_O", "a_O", "iw", "turn", "w", "al", "v_scale",
+                 "a_scale")
 
     def __init__(self, table: _Table, i: int):
         shape = table.shape
-        moving, keys, frame = shape.moving, shape.keys, shape.frame
-        K, L = len(keys), len(moving)
-        # One row each, as Python numbers: a position has a few dozen values, too few for numpy to pay.
+        K, L = len(shape.keys), len(shape.column)
         z, x = table.values[i].tolist(), table.rates[i].tolist()
-        self.frame, self.size = frame, shape.size
-        self.v, self.a = dict(zip(keys, z[:K])), dict(zip(keys, z[K:2 * K]))
-        self.motion = dict(zip(moving, zip(*(z[2 * K + k * L:2 * K + (k + 1) * L] for k in range(6)))))
-        self.motion[frame] = (0j, 1 + 0j, 0j, 0j, 0j, 0j)
-        self.w, self.al = dict(zip(moving, x[:L])), dict(zip(moving, x[L:2 * L]))
-        self.w[frame] = self.al[frame] = 0.0
+        self.size, self.index, self.column = shape.size, shape.index, shape.column
+        self.v, self.a = z[:K], z[K:2 * K]
+        self.O, self.v_O, self.a_O, self.iw, self.turn = (z[2 * K + k * L:2 * K + (k + 1) * L] for k in range(5))
+        self.w, self.al = x[:L], x[L:2 * L]
         self.v_scale, self.a_scale = x[2 * L], x[2 * L + 1]
 
     def at(self, link: int, P: complex) -> complex:
         """Velocity [m/s] of the point at ``P`` [m] moving with ``link``."""
-        O, _, v_O, _, iw, _ = self.motion[link]
-        return v_O + iw * (P - O)
+        j = self.column[link]
+        return self.v_O[j] + self.iw[j] * (P - self.O[j])
 
 
 _KEPT: list = []
-"""What the guard last worked out for a few kinematics, ``(weakref to the kinematics, what, value)``: their
-:class:`_Table`, and the kinematics solved again without a problem's given values (:func:`derived`). The polygons
-and the instant centres of every position of one kinematics share them."""
+"""What was last worked out for a few kinematics, ``(weakref to the kinematics, what, value)``: the guard's
+:class:`_Table`, the kinematics solved again without a problem's given values (:func:`derived`), what the instant
+centres read. Every position of one kinematics shares them."""
 
 
-def _kept(kin, what: str, make):
+def kept(kin, what: str, make):
+    """``make(kin)``, worked out once for the kinematics ``kin`` while it lives (of the last few, each ``what``).
+
+    For what a construction or its check reads at every position of one kinematics (numpy over the positions):
+    a :class:`~graphkin.kinematics.Kinematics` is frozen, so what is made of it holds as long as it does.
+    """
     for ref, kind, value in _KEPT:
         if kind == what and ref() is kin:
             return value
     value = make(kin)
-    _KEPT[:] = [(weakref.ref(kin), what, value)] + _KEPT[:7]
+    _KEPT[:] = [(weakref.ref(kin), what, value)] + _KEPT[:11]
     return value
 
 
 def _truth(kin, i: int) -> _Truth:
-    return _Truth(_kept(kin, "table", _Table), i)
+    return _Truth(kept(kin, "table", _Table), i)
 
 
 class _Check:
@@ -236,54 +242,47 @@ class _Check:
 
     Each difference is measured against the largest value of its kind at the position: the named points', the
     links' ω (α) times the mechanism's size, and every analytical value compared (a pitch point that is no named
-    point may be the only thing that moves). The values come a list at a time and only the worst of each kind is
-    kept; it is put in words only where the routes disagree.
+    point may be the only thing that moves). The values come a list at a time and are judged all at once, at the
+    end; only where the routes disagree is the worst found and put in words.
     """
 
-    __slots__ = ("scale", "worst", "found")
+    __slots__ = ("scale", "seen")
 
     def __init__(self, truth: _Truth):
         self.scale = [truth.v_scale, truth.a_scale]
-        self.worst = [0.0, 0.0]
-        self.found: list = [None, None]  # per kind: (z, t, say, name) of the worst so far
+        self.seen: list = []
 
-    def see(self, kind: int, zs: list, ts: list, say: tuple, names: list, sized: bool = False):
+    def see(self, kind: int, zs: list, ts: list, say: tuple, names, sized: bool = False):
         """The construction's values ``zs`` against the analytical ``ts`` [m/s or m/s²], in step.
 
-        ``say`` is a function and its first arguments, ``names[j]`` the next ones (a tuple, or one value), to put
-        the j-th difference in words. ``sized``: the ``ts`` may be larger than the position's scale (a point that
-        is not a named one), so they join it.
+        ``say`` is a function and its first arguments, the j-th of ``names`` the next ones (a tuple, or one value),
+        to put the j-th difference in words. ``sized``: the ``ts`` may be larger than the position's scale (a point
+        that is not a named one), so they join it.
         """
-        if not zs:
-            return
-        if sized:
-            top = max(map(abs, ts))
-            if top > self.scale[kind]:
-                self.scale[kind] = top
-        worst = self.worst[kind]
-        if worst != worst:  # a nan is the worst there is
-            return
-        gaps = [abs(z - t) for z, t in zip(zs, ts)]
-        gap = max(gaps)
-        total = sum(gaps)
-        if total != total:  # max() passes over a nan: find it
-            j = next(j for j, g in enumerate(gaps) if g != g)
-            gap = math.nan
-        elif gap < worst or (gap == worst and self.found[kind] is not None):
-            return
-        else:
-            j = gaps.index(gap)
-        self.worst[kind], self.found[kind] = gap, (zs[j], ts[j], say, names[j])
+        if zs:
+            self.seen.append((kind, zs, ts, say, names))
+            if sized:
+                top = max(map(abs, ts))
+                if top > self.scale[kind]:
+                    self.scale[kind] = top
 
     def reason(self, route: str) -> str:
+        """'' where every difference is within :data:`AGREEMENT` of its scale, else the worst one in words."""
+        scale = self.scale
+        for kind, zs, ts, _, _ in self.seen:
+            gaps = [abs(z - t) for z, t in zip(zs, ts)]
+            total, top = sum(gaps), scale[kind]  # a nan anywhere makes the sum nan (max() passes over one)
+            if total != total or not top > 0 or max(gaps) / top > AGREEMENT:
+                break
+        else:
+            return ""
         worst, found, at = 0.0, None, 0.0
-        for kind in (0, 1):
-            if self.found[kind] is None:
+        for kind, (gap, where) in enumerate(self._worst()):
+            if where is None:
                 continue
-            gap, scale = self.worst[kind], self.scale[kind]
-            ratio = gap / scale if scale > 0 else (0.0 if gap == 0 else math.inf)
+            ratio = gap / scale[kind] if scale[kind] > 0 else (0.0 if gap == 0 else math.inf)
             if ratio != ratio or ratio > worst:
-                worst, found, at = ratio, self.found[kind], scale
+                worst, found, at = ratio, where, scale[kind]
                 if ratio != ratio:
                     break
         if worst <= AGREEMENT:
@@ -291,6 +290,26 @@ class _Check:
         z, t, (say, *args), name = found
         name = name if type(name) is tuple else (name,)
         return f"the {route} and the analytical route disagree: {say(*args, *name, z, t, at)}"
+
+    def _worst(self) -> list:
+        """Per kind, the largest difference (a nan is the largest there is; of equal ones, the first) and
+        ``(z, t, say, name)`` of it, or None where nothing of the kind was compared."""
+        worst: list = [[0.0, None], [0.0, None]]
+        for kind, zs, ts, say, names in self.seen:
+            gap, found = worst[kind]
+            if gap != gap:
+                continue
+            gaps = [abs(z - t) for z, t in zip(zs, ts)]
+            top, total = max(gaps), sum(gaps)
+            if total != total:
+                j = next(j for j, g in enumerate(gaps) if g != g)
+                top = math.nan
+            elif top < gap or (top == gap and found is not None):
+                continue
+            else:
+                j = gaps.index(top)
+            worst[kind] = [top, (zs[j], ts[j], say, list(names)[j])]
+        return worst
 
 
 _UNIT = ("m/s", "m/s²")
@@ -314,6 +333,10 @@ def _point(kind: int, link: int, point: str | None, z: complex, t: complex, scal
     return _vectors(name, kind, z, t, scale)
 
 
+def _centre_of_mass(kind: int, link: int, z: complex, t: complex, scale: float) -> str:
+    return _point(kind, link, None, z, t, scale)
+
+
 def _rates(symbol: str, unit: str, size: float, link: int, z: float, t: float, scale: float) -> str:
     return f"{symbol}{link} is {_rate(z / size, unit)} graphically, {_rate(t / size, unit)} analytically"
 
@@ -321,17 +344,16 @@ def _rates(symbol: str, unit: str, size: float, link: int, z: float, t: float, s
 def _motion_values(check: _Check, truth: _Truth, kind: int, rates: dict, points: dict, centres_of_mass: dict):
     """Compare a construction's ω (kind 0; α, kind 1) of each link and the velocity (acceleration) of each named
     point and G (``points`` by ``(link, name)``, ``centres_of_mass`` by link)."""
-    size = truth.size
+    size, index, column = truth.size, truth.index, truth.column
     true, symbol, unit = (truth.w, "ω", "rad/s") if kind == 0 else (truth.al, "α", "rad/s²")
     # ω and α times the mechanism's size: measured as the speed (acceleration) they give its farthest point.
-    check.see(kind, [x * size for x in rates.values()], [true[link] * size for link in rates],
-              (_rates, symbol, unit, size), list(rates))
+    check.see(kind, [x * size for x in rates.values()], [true[column[link]] * size for link in rates],
+              (_rates, symbol, unit, size), rates)
     true = truth.v if kind == 0 else truth.a
-    check.see(kind, [complex(x, y) for x, y in points.values()], [true[key] for key in points], (_point, kind),
-              list(points))
-    keys = [(link, None) for link in centres_of_mass]
-    check.see(kind, [complex(x, y) for x, y in centres_of_mass.values()], [true[key] for key in keys], (_point, kind),
-              keys)
+    check.see(kind, [complex(x, y) for x, y in points.values()], [true[index[key]] for key in points], (_point, kind),
+              points)
+    check.see(kind, [complex(x, y) for x, y in centres_of_mass.values()],
+              [true[index[link, None]] for link in centres_of_mass], (_centre_of_mass, kind), centres_of_mass)
 
 
 def _image(polygon: str, kind: int, name: str, z: complex, t: complex, scale: float) -> str:
@@ -372,20 +394,21 @@ def motion_disagreement(kin, i: int, c, where: dict, coriolis: dict) -> str:
     check = _Check(truth)
     _motion_values(check, truth, 0, c.omega, c.velocity, c.v_G)
     _motion_values(check, truth, 1, c.alpha, c.acceleration, c.a_G)
-    motion = truth.motion
-    for kind, polygon, table, true in ((0, "velocity", (c.velocity, c.v_G), truth.v),
-                                       (1, "acceleration", (c.acceleration, c.a_G), truth.a)):
+    index, column = truth.index, truth.column
+    for kind, polygon, table, true, base, factor in ((0, "velocity", (c.velocity, c.v_G), truth.v, truth.v_O, truth.iw),
+                                                     (1, "acceleration", (c.acceleration, c.a_G), truth.a, truth.a_O,
+                                                      truth.turn)):
         zs, ts, names, unknown = [], [], [], []
         for name, z in c.images[polygon].items():
             if name in where:
                 link, P, key = where[name]
                 if key is None:  # a point that is no named one (a pitch point, a slider's coincident point)
-                    O, _, v_O, a_O, iw, turn = motion[link]
-                    ts.append(a_O + turn * (P - O) if kind else v_O + iw * (P - O))
+                    j = column[link]
+                    ts.append(base[j] + factor[j] * (P - truth.O[j]))
                 elif z == (table[0].get(key) if key[1] is not None else table[1].get(link)):
                     continue  # the very value compared above, as the named point's (or G's)
                 else:
-                    ts.append(true[key])
+                    ts.append(true[index[key]])
             elif name in ("o", "o′"):  # the pole is the frame's image: 0
                 ts.append(0j)
             else:  # an image a construction added without saying whose point it is cannot be checked: not shown
@@ -397,8 +420,9 @@ def motion_disagreement(kin, i: int, c, where: dict, coriolis: dict) -> str:
         check.see(kind, [complex(math.inf)] * len(unknown), [0j] * len(unknown), (_unknown_image, polygon), unknown)
     if coriolis:
         found = [v for v in c.vectors("acceleration") if v.name in coriolis]
+        w, at = truth.w, truth.at
         check.see(1, [complex(*v.vector) for v in found],
-                  [2j * truth.w[m] * (truth.at(k, X) - truth.at(b, X)) for m, k, b, X in (coriolis[v.name] for v in found)],
+                  [2j * w[column[m]] * (at(k, X) - at(b, X)) for m, k, b, X in (coriolis[v.name] for v in found)],
                   (_vectors,), [(v.name, 1) for v in found], sized=True)
     return check.reason("velocity and acceleration polygons")
 
@@ -413,18 +437,20 @@ def centres_disagreement(kin, i: int, ic) -> str:
     """
     truth = _truth(kin, i)
     check = _Check(truth)
-    at, size, motion = truth.at, truth.size, truth.motion
-    pairs, places = list(ic.centres), [complex(x, y) for x, y in ic.centres.values()]
+    size, column, O, v_O, iw, w = truth.size, truth.column, truth.O, truth.v_O, truth.iw, truth.w
+    pairs = ic.centres
     # v_b(P) − v_a(P), each v = v_O + iω (P − O) of its link
-    check.see(0, [(mb[2] + mb[4] * (P - mb[0])) - (ma[2] + ma[4] * (P - ma[0]))
-                  for ma, mb, P in zip([motion[a] for a, _ in pairs], [motion[b] for _, b in pairs], places)],
-              [0j] * len(pairs), (_moving_centre, ic.centres), pairs)
-    pairs = list(ic.at_infinity)
-    check.see(0, [(truth.w[b] - truth.w[a]) * size for a, b in pairs], [0.0] * len(pairs), (_turning_apart,),
-              [(a, b, size) for a, b in pairs])
-    d = [at(b, 0j) - at(a, 0j) for a, b in pairs]  # where ω_a = ω_b, the same at every point
-    check.see(0, [z.real * u[0] + z.imag * u[1] for z, u in zip(d, ic.at_infinity.values())], [0.0] * len(pairs),
-              (_sliding_apart,), pairs)
+    check.see(0, [(v_O[b] + iw[b] * (P - O[b])) - (v_O[a] + iw[a] * (P - O[a]))
+                  for (a, b), P in zip([(column[a], column[b]) for a, b in pairs],
+                                       [complex(x, y) for x, y in pairs.values()])],
+              [0j] * len(pairs), (_moving_centre, pairs), pairs)
+    pairs = ic.at_infinity
+    if pairs:
+        check.see(0, [(w[column[b]] - w[column[a]]) * size for a, b in pairs], [0.0] * len(pairs), (_turning_apart,),
+                  [(a, b, size) for a, b in pairs])
+        d = [truth.at(b, 0j) - truth.at(a, 0j) for a, b in pairs]  # where ω_a = ω_b, the same at every point
+        check.see(0, [z.real * u[0] + z.imag * u[1] for z, u in zip(d, pairs.values())], [0.0] * len(pairs),
+                  (_sliding_apart,), pairs)
     _motion_values(check, truth, 0, ic.omega, ic.velocity, ic.v_G)
     return check.reason("instant centres")
 
@@ -461,4 +487,4 @@ def derived(kin, i: int):
     """
     if not kin.given:
         return kin, i
-    return _kept(kin, "derived", _input_motion), i
+    return kept(kin, "derived", _input_motion), i
