@@ -59,6 +59,10 @@ class InstantCentres:
         Their centres of mass [m/s].
     valid : bool
     reason : str
+    disagreement : bool
+        True where the centres are not valid because a value they yield disagrees with the analytical route
+        (:mod:`graphkin.graphical.guard`): a fault in graphkin's arithmetic, to be reported, not a position the
+        linkage cannot take (the ``reason`` names the quantity and both values).
     """
 
     mechanism: object
@@ -72,6 +76,7 @@ class InstantCentres:
     v_G: dict = field(default_factory=dict)
     valid: bool = True
     reason: str = ""
+    disagreement: bool = False
 
     def __getstate__(self):
         # Steps not yet written are written before the result is copied or pickled.
@@ -286,6 +291,6 @@ def instant_centres(kin: Kinematics, index: int = 0) -> InstantCentres:
     # Checked against the analytical kinematics before anyone sees them (graphical/guard.py).
     why = centres_disagreement(kin, at, ic)
     if why:
-        return InstantCentres(mech, i, steps=tuple(steps) + (f"{why}.",), valid=False, reason=why)
+        return InstantCentres(mech, i, steps=tuple(steps) + (f"{why}.",), valid=False, reason=why, disagreement=True)
     return ic
 

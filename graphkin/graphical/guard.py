@@ -7,7 +7,8 @@ limits; a wrong term in either route (a pitch point on the wrong side of an inte
 passed on) is a difference of order one. Whatever differs by more than :data:`AGREEMENT` of the position's scale
 is not a number anyone may see: the construction is returned not valid, its reason naming the quantity and both
 values, and every reader (the report and its JSON, the figures, the handouts, the exercises' keys, the widgets)
-already refuses an invalid construction.
+already refuses an invalid construction. Its ``disagreement`` flag tells this fault of graphkin's apart from a
+position the linkage cannot take (an exercise refuses to be made from it, rather than drawing other data).
 
 What is compared, position by position:
 
@@ -42,12 +43,6 @@ AGREEMENT = 1e-9
 """How far a graphical value may differ from the analytical one, relative to the largest value of its kind at the
 position, before the position's construction is not valid (issue 35). The routes differ by rounding, ~1e-13 on
 textbook problems and at most ~1e-10 on the property tests' random linkages; any wrong term is O(1)."""
-
-
-def is_disagreement(reason: str) -> bool:
-    """Whether a construction is not valid because this guard found it disagreeing with the analytical route (a
-    fault in graphkin's arithmetic, to be reported, rather than a position the linkage cannot take)."""
-    return "analytical route disagree: " in reason or "analytical routes disagree: " in reason
 
 
 def mechanism_size(mech) -> float:
@@ -116,13 +111,13 @@ def check_forces(result, c, i: int):
     -------
     Construction or None
         ``c`` itself where both routes agree (or where the analytical route has no solution, whose reason the
-        construction already gives); else a copy whose ``valid`` is False and whose ``reason`` names the force
-        and both values.
+        construction already gives); else a copy whose ``valid`` is False, whose ``disagreement`` is True and whose
+        ``reason`` names the force and both values.
     """
     if c is None or not c.valid or not result.valid[i]:
         return c
     why = forces_disagreement(result, c, i)
-    return replace(c, valid=False, reason=why) if why else c
+    return replace(c, valid=False, reason=why, disagreement=True) if why else c
 
 
 # -- motion -----------------------------------------------------------------------------------------------------

@@ -578,5 +578,5 @@ def construct_kinematics(kin: Kinematics, index: int = 0, *, slip: str | None = 
         why = motion_disagreement(own, at, c, b.where, b.coriolis)
         if why:
             b.step("acceleration", "note", f"{why}.", ())
-            return MotionConstruction(mech, index, q, tuple(b.steps), valid=False, reason=why)
+            return MotionConstruction(mech, index, q, tuple(b.steps), valid=False, reason=why, disagreement=True)
     return c
