@@ -152,10 +152,10 @@ def _shape(mech) -> _Shape:
 class _Table:
     """The analytical motion of one kinematics at every position, worked out at once (numpy over the positions).
 
-    A row per position: ``values`` (complex) holds the velocity and acceleration of every key of the
-    :class:`_Shape`, then each link's origin O, v_O, a_O, iω and iα − ω² (the moving links, then the frame's: all
-    0); ``rates`` (real) holds ω and α of each link (the same order), then the position's scales: the largest speed
-    (acceleration) of a named point or centre of mass, or of a link's ω (α) times the mechanism's size.
+    A row per position, of Python numbers: ``values`` (complex) holds the velocity and acceleration of every key of
+    the :class:`_Shape`, then each link's origin O, v_O, a_O, iω and iα − ω² (the moving links, then the frame's:
+    all 0); ``rates`` (real) holds ω and α of each link (the same order), then the position's scales: the largest
+    speed (acceleration) of a named point or centre of mass, or of a link's ω (α) times the mechanism's size.
     """
 
     def __init__(self, kin):
@@ -175,13 +175,13 @@ class _Table:
         with np.errstate(invalid="ignore"):  # positions that cannot be assembled are nan, and never asked for
             v_top = np.maximum(np.abs(v).max(axis=1), np.abs(w).max(axis=1) * shape.size)
             a_top = np.maximum(np.abs(a).max(axis=1), np.abs(al).max(axis=1) * shape.size)
-        self.values = np.concatenate([v, a, O, v_O, a_O, iw, turn], axis=1)
-        self.rates = np.concatenate([w, al, v_top[:, None], a_top[:, None]], axis=1)
+        # As Python numbers, all at once: a position's few dozen values are too few for numpy to pay.
+        self.values = np.concatenate([v, a, O, v_O, a_O, iw, turn], axis=1).tolist()
+        self.rates = np.concatenate([w, al, v_top[:, None], a_top[:, None]], axis=1).tolist()
 
 
 class _Truth:
-    """The analytical motion of one position, as lists of Python numbers (a position has a few dozen values, too
-    few for numpy to pay).
+    """The analytical motion of one position, as lists of Python numbers (a row of the :class:`_Table`).
 
     ``v``, ``a``: the velocity and acceleration of each key of the :class:`_Shape` [m/s, m/s²], in its order
     (``index``); ``O``, ``v_O``, ``a_O``, ``iw``, ``turn``: each link's origin [m], its velocity and acceleration and
@@ -195,7 +195,7 @@ class _Truth:
     def __init__(self, table: _Table, i: int):
         shape = table.shape
         K, L = len(shape.keys), len(shape.column)
-        z, x = table.values[i].tolist(), table.rates[i].tolist()
+        z, x = table.values[i], table.rates[i]
         self.size, self.index, self.column = shape.size, shape.index, shape.column
         self.v, self.a = z[:K], z[K:2 * K]
         self.O, self.v_O, self.a_O, self.iw, self.turn = (z[2 * K + k * L:2 * K + (k + 1) * L] for k in range(5))
@@ -208,10 +208,10 @@ class _Truth:
         return self.v_O[j] + self.iw[j] * (P - self.O[j])
 
 
-_KEPT: list = []
-"""What was last worked out for a few kinematics, ``(weakref to the kinematics, what, value)``: the guard's
-:class:`_Table`, the kinematics solved again without a problem's given values (:func:`derived`), what the instant
-centres read. Every position of one kinematics shares them."""
+_KEPT: dict = {}
+"""What was last worked out for a few kinematics, ``(id of the kinematics, what): (weakref to it, value)``, the
+oldest first: the guard's :class:`_Table`, the kinematics solved again without a problem's given values
+(:func:`derived`), what the polygons and the instant centres read. Every position of one kinematics shares them."""
 
 
 def kept(kin, what: str, make):
@@ -220,11 +220,15 @@ def kept(kin, what: str, make):
     For what a construction or its check reads at every position of one kinematics (numpy over the positions):
     a :class:`~graphkin.kinematics.Kinematics` is frozen, so what is made of it holds as long as it does.
     """
-    for ref, kind, value in _KEPT:
-        if kind == what and ref() is kin:
-            return value
+    key = (id(kin), what)
+    ref, value = _KEPT.get(key, (None, None))
+    if ref is not None and ref() is kin:  # (an id is reused once its object is gone: the reference tells)
+        return value
     value = make(kin)
-    _KEPT[:] = [(weakref.ref(kin), what, value)] + _KEPT[:11]
+    _KEPT.pop(key, None)
+    while len(_KEPT) >= 16:
+        del _KEPT[next(iter(_KEPT))]
+    _KEPT[key] = (weakref.ref(kin), value)
     return value
 
 
@@ -237,15 +241,17 @@ class _Check:
 
     Each difference is measured against the largest value of its kind at the position: the named points', the
     links' ω (α) times the mechanism's size, and every analytical value compared (a pitch point that is no named
-    point may be the only thing that moves). The values come a list at a time and are judged all at once, at the
-    end; only where the routes disagree is the worst found and put in words.
+    point may be the only thing that moves). The values come a list at a time, join one list per kind, and are
+    judged all at once, at the end; only where the routes disagree is the worst found and put in words.
     """
 
-    __slots__ = ("scale", "seen")
+    __slots__ = ("scale", "zs", "ts", "seen")
 
     def __init__(self, truth: _Truth):
         self.scale = [truth.v_scale, truth.a_scale]
-        self.seen: list = []
+        self.zs: tuple = ([], [])
+        self.ts: tuple = ([], [])
+        self.seen: list = []  # (kind, where its values start in zs[kind], say, names): to put one in words
 
     def see(self, kind: int, zs: list, ts: list, say: tuple, names, sized: bool = False):
         """The construction's values ``zs`` against the analytical ``ts`` [m/s or m/s²], in step.
@@ -255,7 +261,9 @@ class _Check:
         that is not a named one), so they join it.
         """
         if zs:
-            self.seen.append((kind, zs, ts, say, names))
+            self.seen.append((kind, len(self.zs[kind]), say, names))
+            self.zs[kind].extend(zs)
+            self.ts[kind].extend(ts)
             if sized:
                 top = max(map(abs, ts))
                 if top > self.scale[kind]:
@@ -264,47 +272,42 @@ class _Check:
     def reason(self, route: str) -> str:
         """'' where every difference is within :data:`AGREEMENT` of its scale, else the worst one in words."""
         scale = self.scale
-        for kind, zs, ts, _, _ in self.seen:
-            gaps = [abs(z - t) for z, t in zip(zs, ts)]
-            total, top = sum(gaps), scale[kind]  # a nan anywhere makes the sum nan (max() passes over one)
-            if total != total or not top > 0 or max(gaps) / top > AGREEMENT:
-                break
+        for kind in (0, 1):
+            if self.zs[kind]:
+                gaps = [abs(z - t) for z, t in zip(self.zs[kind], self.ts[kind])]
+                total, top = sum(gaps), scale[kind]  # a nan anywhere makes the sum nan (max() passes over one)
+                if total != total or not top > 0 or max(gaps) / top > AGREEMENT:
+                    break
         else:
             return ""
         worst, found, at = 0.0, None, 0.0
-        for kind, (gap, where) in enumerate(self._worst()):
-            if where is None:
+        for kind in (0, 1):
+            if not self.zs[kind]:
                 continue
+            gap, j = self._worst(kind)
             ratio = gap / scale[kind] if scale[kind] > 0 else (0.0 if gap == 0 else math.inf)
             if ratio != ratio or ratio > worst:
-                worst, found, at = ratio, where, scale[kind]
+                worst, found, at = ratio, (kind, j), scale[kind]
                 if ratio != ratio:
                     break
         if worst <= AGREEMENT:
             return ""
-        z, t, (say, *args), name = found
+        kind, j = found
+        start, (say, *args), names = next((start, say, names) for k, start, say, names in reversed(self.seen)
+                                          if k == kind and start <= j)
+        name = list(names)[j - start]
         name = name if type(name) is tuple else (name,)
+        z, t = self.zs[kind][j], self.ts[kind][j]
         return f"the {route} and the analytical route disagree: {say(*args, *name, z, t, at)}"
 
-    def _worst(self) -> list:
-        """Per kind, the largest difference (a nan is the largest there is; of equal ones, the first) and
-        ``(z, t, say, name)`` of it, or None where nothing of the kind was compared."""
-        worst: list = [[0.0, None], [0.0, None]]
-        for kind, zs, ts, say, names in self.seen:
-            gap, found = worst[kind]
-            if gap != gap:
-                continue
-            gaps = [abs(z - t) for z, t in zip(zs, ts)]
-            top, total = max(gaps), sum(gaps)
-            if total != total:
-                j = next(j for j, g in enumerate(gaps) if g != g)
-                top = math.nan
-            elif top < gap or (top == gap and found is not None):
-                continue
-            else:
-                j = gaps.index(top)
-            worst[kind] = [top, (zs[j], ts[j], say, list(names)[j])]
-        return worst
+    def _worst(self, kind: int) -> tuple[float, int]:
+        """The largest difference of a kind (a nan is the largest there is; of equal ones, the first) and where it
+        is in ``zs[kind]``."""
+        gaps = [abs(z - t) for z, t in zip(self.zs[kind], self.ts[kind])]
+        if sum(gaps) != sum(gaps):
+            return math.nan, next(j for j, g in enumerate(gaps) if g != g)
+        top = max(gaps)
+        return top, gaps.index(top)
 
 
 _UNIT = ("m/s", "m/s²")
