@@ -24,7 +24,7 @@ import numpy as np
 from graphkin.analytical.meshes import pitch as pitch_point
 from graphkin.errors import GraphkinError
 from graphkin.graphical.captions import Captions, Later, number
-from graphkin.graphical.guard import centres_disagreement, derived, kept
+from graphkin.graphical.guard import centres_disagreement, derived
 from graphkin.kinematics import DriverGroup, Kinematics
 from graphkin.kinematics.plan import plan_of
 from graphkin.model import GearMesh, Prismatic, Revolute
@@ -121,31 +121,15 @@ def _kennedy(a: int, b: int, j: int, via: int, P, size: float) -> str:
             f"{_where(P, size)}.")
 
 
-class _Placed:
-    """Where the instant centres of one kinematics start from, at every position, worked out at once (numpy over
-    the positions; kept while the kinematics lives, :func:`graphkin.graphical.guard.kept`).
-
-    ``keys``: every named point of every link, ``(link, name)``; ``where``: where each is [m], a row per position
-    (complex); ``size``: the unit of the homogeneous points at each position, the largest distance of a point from
-    the origin [m] (1 m where every point is at it); ``e``: each moving link's direction (unit complex); ``G``: each
-    moving link's centre of mass [m]; ``names``: each moving link's named points.
-    """
-
-    def __init__(self, kin: Kinematics):
-        mech = kin.mechanism
-        points = plan_of(mech).points  # (link, name): the point in its link's own frame [m], complex
-        moving = mech.moving
-        O = {n: np.asarray(kin.O[n], dtype=complex) for n in moving}
-        e = {n: np.asarray(kin.e[n], dtype=complex) for n in moving}
-        self.keys = list(points)
-        self.where = np.stack([np.full(kin.n, p) if link == mech.frame else O[link] + e[link] * p
-                               for (link, _), p in points.items()], axis=1)
-        self.G = np.stack([O[n] + e[n] * complex(*mech.link(n).G) for n in moving], axis=1)
-        self.e = np.stack([e[n] for n in moving], axis=1)
-        with np.errstate(invalid="ignore"):  # positions that cannot be assembled are nan, and never asked for
-            size = np.abs(self.where).max(axis=1)
-        self.size = np.where(size == 0, 1.0, size)
-        self.names = {n: list(mech.link(n).points) for n in moving}
+def _shape(mech) -> tuple[dict, dict, dict]:
+    """What the centres read of a mechanism, made once per mechanism (its plan's cache): every named point in its
+    link's own frame [m] by ``(link, name)``, each moving link's point names, and its centre of mass [m]."""
+    plan = plan_of(mech)
+    shape = plan.compiled.get("centres")
+    if shape is None:
+        shape = plan.compiled["centres"] = (plan.points, {n: list(mech.link(n).points) for n in mech.moving},
+                                            {n: complex(*mech.link(n).G) for n in mech.moving})
+    return shape
 
 
 def instant_centres(kin: Kinematics, index: int = 0) -> InstantCentres:
@@ -176,10 +160,12 @@ def instant_centres(kin: Kinematics, index: int = 0) -> InstantCentres:
     frame = mech.frame
     kin, at = derived(kin, i)  # placed by the input motion alone, a problem's given values left out
 
-    placed = kept(kin, "centres", _Placed)
-    pos = dict(zip(placed.keys, placed.where[at].tolist()))  # (link, name): where the point is [m]
-    e = dict(zip(mech.moving, placed.e[at].tolist()))
-    size = placed.size.item(at)
+    points, names, G_local = _shape(mech)
+    O = {n: kin.O[n].item(at) for n in mech.moving}  # .item: a Python complex, no numpy scalar made
+    e = {n: kin.e[n].item(at) for n in mech.moving}
+    pos = {(link, name): p if link == frame else O[link] + e[link] * p  # where each point is [m]
+           for (link, name), p in points.items()}
+    size = max(map(abs, pos.values())) or 1.0
 
     def hom(z: complex):
         return _unit((z.real / size, z.imag / size, 1.0))
@@ -267,12 +253,13 @@ def instant_centres(kin: Kinematics, index: int = 0) -> InstantCentres:
                 break
 
     omega, velocity, v_G = {}, {}, {}
-    for link, G in zip(mech.moving, placed.G[at].tolist()):
+    for link in mech.moving:
         if link not in fields:
             continue
         Om, X, w = fields[link]
         omega[link] = Om * w / size
-        for name in placed.names[link]:
+        G = O[link] + e[link] * G_local[link]
+        for name in names[link]:
             v = 1j * Om * (pos[link, name] / size * w - X)
             velocity[link, name] = (v.real, v.imag)
         v = 1j * Om * (G / size * w - X)

@@ -33,7 +33,7 @@ from graphkin.errors import GraphkinError
 from graphkin.geometry import zcross as cross
 from graphkin.graphical.captions import Later, number
 from graphkin.graphical.construction import nice_scale
-from graphkin.graphical.guard import derived, kept, motion_disagreement
+from graphkin.graphical.guard import derived, motion_disagreement
 from graphkin.graphical.motion import MotionConstruction, MotionStep, PolygonLine, Vector
 from graphkin.graphical.motion_captions import A, V, acceleration_image, rate, sense, vector, velocity_image
 from graphkin.kinematics import DriverGroup, Dyad, GearGroup, Kinematics
@@ -101,8 +101,7 @@ class _Side:
 
 
 class _Fixed:
-    """What the polygons of one kinematics share at every position, worked out once (kept while the kinematics
-    lives, :func:`graphkin.graphical.guard.kept`).
+    """What the polygons of a mechanism share at every position, worked out once (kept in its plan).
 
     Attributes
     ----------
@@ -116,13 +115,9 @@ class _Fixed:
         for a named point and ``(link, None)`` for G.
     size : float
         The mechanism's size [m], for what counts as rounding in a caption.
-    O, e : ndarray, shape (n, links)
-        Each moving link's origin [m] and direction (unit complex) at each position, the links in
-        ``mechanism.moving`` order.
     """
 
-    def __init__(self, kin: Kinematics):
-        mech = kin.mechanism
+    def __init__(self, mech):
         plan = plan_of(mech)
         self.points = plan.points
         carriers: dict[str, set] = {}
@@ -141,8 +136,14 @@ class _Fixed:
             rows.append(((n, None), f"G{n}", f"g{n}", complex(*body.G)))
             self.images[n] = rows
         self.size = sum(max(abs(complex(*p)) for p in link.points.values()) for link in mech.links) or 1.0
-        self.O = np.stack([np.asarray(kin.O[n], dtype=complex) for n in mech.moving], axis=1)
-        self.e = np.stack([np.asarray(kin.e[n], dtype=complex) for n in mech.moving], axis=1)
+
+
+def _fixed(mech) -> _Fixed:
+    compiled = plan_of(mech).compiled
+    fixed = compiled.get("polygons")
+    if fixed is None:
+        fixed = compiled["polygons"] = _Fixed(mech)
+    return fixed
 
 
 class _Polygons:
@@ -152,7 +153,7 @@ class _Polygons:
         self.kin, self.i, self.slip = kin, i, slip
         self.mech = mech = kin.mechanism
         self.frame = mech.frame
-        self.fixed = kept(kin, "polygons", _Fixed)
+        self.fixed = _fixed(mech)
         self.motion = {self.frame: _Motion(0j, 0j, 0.0, 0j, 0.0)}
         self.steps: list[MotionStep] = []
         self.v_img = {"o": (0.0, 0.0)}
@@ -161,8 +162,8 @@ class _Polygons:
         # Whose point each image is, and what each Coriolis component is of, for the guard (graphical/guard.py).
         self.where: dict[str, tuple[int, complex, tuple | None]] = {}
         self.coriolis: dict[str, tuple[int, int, int, complex]] = {}
-        self._O = dict(zip(mech.moving, self.fixed.O[i].tolist()))
-        self._e = dict(zip(mech.moving, self.fixed.e[i].tolist()))
+        self._O = {n: kin.O[n].item(i) for n in mech.moving}  # .item: a Python complex, no numpy scalar made
+        self._e = {n: kin.e[n].item(i) for n in mech.moving}
         # What a residue of rounding is beside, in the captions: the input's speed over the mechanism's size.
         size = self.fixed.size
         w, al = abs(float(kin.q_dot[i])), abs(float(kin.q_ddot[i]))
