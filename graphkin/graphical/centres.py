@@ -24,7 +24,7 @@ import numpy as np
 from graphkin.analytical.meshes import pitch as pitch_point
 from graphkin.errors import GraphkinError
 from graphkin.graphical.captions import Captions, Later, number
-from graphkin.graphical.guard import centres_disagreement, derived
+from graphkin.graphical.guard import centres_disagreement, derived, kept
 from graphkin.kinematics import DriverGroup, Kinematics
 from graphkin.kinematics.plan import plan_of
 from graphkin.model import GearMesh, Prismatic, Revolute
@@ -121,9 +121,11 @@ def _kennedy(a: int, b: int, j: int, via: int, P, size: float) -> str:
             f"{_where(P, size)}.")
 
 
-def _shape(mech) -> tuple[dict, dict, dict]:
-    """What the centres read of a mechanism, made once per mechanism (its plan's cache): every named point in its
-    link's own frame [m] by ``(link, name)``, each moving link's point names, and its centre of mass [m]."""
+def _shape(kin: Kinematics) -> tuple[dict, dict, dict]:
+    """What the centres read of a kinematics' mechanism, made once per mechanism (its plan's cache) and found once
+    per kinematics (:func:`graphkin.graphical.guard.kept`): every named point in its link's own frame [m] by
+    ``(link, name)``, each moving link's point names, and its centre of mass [m]."""
+    mech = kin.mechanism
     plan = plan_of(mech)
     shape = plan.compiled.get("centres")
     if shape is None:
@@ -160,7 +162,7 @@ def instant_centres(kin: Kinematics, index: int = 0) -> InstantCentres:
     frame = mech.frame
     kin, at = derived(kin, i)  # placed by the input motion alone, a problem's given values left out
 
-    points, names, G_local = _shape(mech)
+    points, names, G_local = kept(kin, "centres", _shape)
     O = {n: kin.O[n].item(at) for n in mech.moving}  # .item: a Python complex, no numpy scalar made
     e = {n: kin.e[n].item(at) for n in mech.moving}
     pos = {(link, name): p if link == frame else O[link] + e[link] * p  # where each point is [m]

@@ -209,26 +209,33 @@ class _Truth:
 
 
 _KEPT: dict = {}
-"""What the guard last worked out for a few kinematics, ``(id of the kinematics, what): (weakref to it, value)``,
-the oldest first: their :class:`_Table`, and the kinematics solved again without a problem's given values
-(:func:`derived`). The polygons and the instant centres of every position of one kinematics share them."""
+"""What was last worked out for a few kinematics, ``(id of the kinematics, what): (weakref to it, value)``, the
+oldest first: the guard's :class:`_Table`, the kinematics solved again without a problem's given values
+(:func:`derived`), what the polygons and the instant centres read of its mechanism. Every position of one
+kinematics shares them."""
 
 
-def _kept(kin, what: str, make):
+def kept(kin, what: str, make):
+    """``make(kin)``, worked out once for the kinematics ``kin`` while it lives (of the last few, each ``what``).
+
+    A :class:`~graphkin.kinematics.Kinematics` is frozen, so what is made of it (and of its mechanism) holds as
+    long as it does; finding it here is a dict's lookup, where a mechanism's plan (:func:`plan_of`) checks every
+    part of the mechanism for a change on each call.
+    """
     key = (id(kin), what)
     ref, value = _KEPT.get(key, (None, None))
     if ref is not None and ref() is kin:  # (an id is reused once its object is gone: the reference tells)
         return value
     value = make(kin)
     _KEPT.pop(key, None)
-    while len(_KEPT) >= 8:
+    while len(_KEPT) >= 16:
         del _KEPT[next(iter(_KEPT))]
     _KEPT[key] = (weakref.ref(kin), value)
     return value
 
 
 def _truth(kin, i: int) -> _Truth:
-    return _Truth(_kept(kin, "table", _Table), i)
+    return _Truth(kept(kin, "table", _Table), i)
 
 
 class _Check:
@@ -480,4 +487,4 @@ def derived(kin, i: int):
     """
     if not kin.given:
         return kin, i
-    return _kept(kin, "derived", _input_motion), i
+    return kept(kin, "derived", _input_motion), i
