@@ -5,7 +5,10 @@
 other work, wall time measures the neighbours). Each checkout's graphkin runs in a worker process of its own (the
 same interpreter, its folder first on ``sys.path``); the workers are asked in turn, round after round, so that both
 see the same load; the table gives each checkout's median over the rounds [µs per position] and the ratio to the
-first checkout's. Then ``graphkin solve strip_cutter --json`` (with and without ``--motion-polygons``) end to end,
+first checkout's. "warm" repeats the positions of one kinematics (what is worked out once per kinematics is made
+before the timing); "cold" goes once over the positions of a new kinematics object each time (the same arrays),
+so that what is worked out once per kinematics is timed too, spread over its positions. Then
+``graphkin solve strip_cutter --json`` (with and without ``--motion-polygons``) end to end,
 a new process each run, its CPU time (user + system, from ``getrusage`` of the children), alternately too.
 
     .venv/bin/python benchmarks/bench_guard.py [--rounds 15] [--runs 9] [--problems a,b] BASE_DIR [OTHER_DIR ...]
@@ -30,7 +33,7 @@ HERE = Path(__file__).resolve().parent
 PROBLEMS = ("strip_cutter", "slider_crank_friction", "shaper_six_bar", "gearset", "fourbar_dynamic_makdin")
 
 WORKER = r"""
-import gc, json, math, sys, time
+import dataclasses, gc, json, math, sys, time
 sys.path.insert(0, sys.argv[1])
 sys.path.insert(1, sys.argv[2])
 from fourbar_linkage import fourbar
@@ -47,13 +50,14 @@ for kin in cases.values():  # a warm-up: caches filled, code paths taken once
         construct_kinematics(kin, i), instant_centres(kin, i)
 
 
-def cpu(fn, kin, reps):
+def cpu(fn, kin, reps, cold):
     best = math.inf
     for _ in range(reps):
         gc.collect()
+        one = dataclasses.replace(kin) if cold else kin  # a new object: nothing kept for it yet
         t = time.process_time()
-        for i in range(kin.n):
-            fn(kin, i)
+        for i in range(one.n):
+            fn(one, i)
         best = min(best, time.process_time() - t)
     return best / kin.n * 1e6
 
@@ -62,7 +66,7 @@ for line in sys.stdin:
     out = {}
     for name, kin in cases.items():
         reps = max(1, 60 // kin.n)
-        out[name] = (cpu(construct_kinematics, kin, reps), cpu(instant_centres, kin, reps))
+        out[name] = [cpu(fn, kin, reps, cold) for cold in (False, True) for fn in (construct_kinematics, instant_centres)]
     print(json.dumps(out), flush=True)
 """
 
@@ -108,16 +112,16 @@ def main() -> int:
         w.stdin.close()
         w.wait()
 
-    print(f"\nCPU µs per position, median of {args.rounds} alternating rounds (ratio to {names[0]})")
-    head = f"{'problem':<24}" + "".join(f"{n[:12] + ' poly':>18}{'centres':>14}" for n in names)
-    print(head)
-    for case in samples[0]:
-        row = f"{case:<24}"
-        base = [statistics.median(t[k] for t in samples[0][case]) for k in (0, 1)]
-        for got in samples:
-            p, c = (statistics.median(t[k] for t in got[case]) for k in (0, 1))
-            row += f"{p:>9.1f} ({p / base[0]:4.2f}){c:>7.1f} ({c / base[1]:4.2f})"
-        print(row)
+    for start, how in ((0, "warm"), (2, "cold")):
+        print(f"\nCPU µs per position, {how}, median of {args.rounds} alternating rounds (ratio to {names[0]})")
+        print(f"{'problem':<24}" + "".join(f"{n[:12] + ' poly':>18}{'centres':>14}" for n in names))
+        for case in samples[0]:
+            row = f"{case:<24}"
+            base = [statistics.median(t[k] for t in samples[0][case]) for k in (start, start + 1)]
+            for got in samples:
+                p, c = (statistics.median(t[k] for t in got[case]) for k in (start, start + 1))
+                row += f"{p:>9.1f} ({p / base[0]:4.2f}){c:>7.1f} ({c / base[1]:4.2f})"
+            print(row)
 
     print(f"\nCPU ms of a whole command (new process), median of {args.runs} alternating runs")
     for argv in (["solve", "strip_cutter", "--json"], ["solve", "strip_cutter", "--json", "--motion-polygons"]):

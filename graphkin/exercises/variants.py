@@ -30,7 +30,7 @@ from graphkin.exercises.grading import grade_variant
 from graphkin.exercises.quantities import _span, expected, message_words, question_data, undefined, value_of, within
 from graphkin.exercises.symbols import fill_symbols
 from graphkin.graphical import construct_forces, construct_kinematics
-from graphkin.graphical.guard import check_forces, is_disagreement
+from graphkin.graphical.guard import check_forces
 from graphkin.graphical.polygons import SLIPS as POLYGON_SLIPS
 from graphkin.notation import input_text, unit_text
 from graphkin.problem import build_problem
@@ -295,7 +295,7 @@ def _unusable(ex: Exercise, solved: Solved) -> str | None:
         return (f"a point moves {ratio:.0f} times as fast as the input: the linkage is near a dead point")
     c = solved.construction
     if not c.valid:
-        _refuse_disagreement(ex, solved, c.reason)
+        _refuse_disagreement(ex, solved, c)
         return f"the graphical construction fails: {c.reason}"
     if c.warnings:
         return f"the graphical construction is not clean: {c.warnings[0]}"
@@ -307,7 +307,7 @@ def _unusable(ex: Exercise, solved: Solved) -> str | None:
                 "point")
 
     if any(q.kind in MOTION_KINDS for q in ex.questions) and not solved.motion.valid:
-        _refuse_disagreement(ex, solved, solved.motion.reason)
+        _refuse_disagreement(ex, solved, solved.motion)
     for q in ex.questions:
         if q.kind not in CYCLE_KINDS:
             why = undefined(solved, q)
@@ -316,12 +316,13 @@ def _unusable(ex: Exercise, solved: Solved) -> str | None:
     return None
 
 
-def _refuse_disagreement(ex: Exercise, solved: Solved, reason: str) -> None:
-    """Stop making the exercise where a construction disagrees with the analytical route: drawing other data would
-    hide a fault that every student drawing these values would be graded against."""
-    if is_disagreement(reason):
-        raise GraphkinError(f"exercise {ex.id}: no key is made for the data {solved.problem.name}: {reason}; this is "
-                            "a fault of graphkin's, please report it with the exercise file")
+def _refuse_disagreement(ex: Exercise, solved: Solved, c) -> None:
+    """Stop making the exercise where the construction ``c`` disagrees with the analytical route (its
+    ``disagreement``): drawing other data would hide a fault that every student drawing these values would be graded
+    against."""
+    if c.disagreement:
+        raise GraphkinError(f"exercise {ex.id}: no key is made for the data {solved.problem.name}: {c.reason}; this "
+                            "is a fault of graphkin's, please report it with the exercise file")
 
 
 def _span_of(solved: Solved) -> float:

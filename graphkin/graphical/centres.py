@@ -24,7 +24,7 @@ import numpy as np
 from graphkin.analytical.meshes import pitch as pitch_point
 from graphkin.errors import GraphkinError
 from graphkin.graphical.captions import Captions, Later, number
-from graphkin.graphical.guard import centres_disagreement, derived
+from graphkin.graphical.guard import centres_disagreement, derived, kept
 from graphkin.kinematics import DriverGroup, Kinematics
 from graphkin.kinematics.plan import plan_of
 from graphkin.model import GearMesh, Prismatic, Revolute
@@ -59,6 +59,10 @@ class InstantCentres:
         Their centres of mass [m/s].
     valid : bool
     reason : str
+    disagreement : bool
+        True where the centres are not valid because a value they yield disagrees with the analytical route
+        (:mod:`graphkin.graphical.guard`): a fault in graphkin's arithmetic, to be reported, not a position the
+        linkage cannot take (the ``reason`` names the quantity and both values).
     """
 
     mechanism: object
@@ -72,6 +76,7 @@ class InstantCentres:
     v_G: dict = field(default_factory=dict)
     valid: bool = True
     reason: str = ""
+    disagreement: bool = False
 
     def __getstate__(self):
         # Steps not yet written are written before the result is copied or pickled.
@@ -116,6 +121,19 @@ def _kennedy(a: int, b: int, j: int, via: int, P, size: float) -> str:
             f"{_where(P, size)}.")
 
 
+def _shape(kin: Kinematics) -> tuple[dict, dict, dict]:
+    """What the centres read of a kinematics' mechanism, made once per mechanism (its plan's cache) and found once
+    per kinematics (:func:`graphkin.graphical.guard.kept`): every named point in its link's own frame [m] by
+    ``(link, name)``, each moving link's point names, and its centre of mass [m]."""
+    mech = kin.mechanism
+    plan = plan_of(mech)
+    shape = plan.compiled.get("centres")
+    if shape is None:
+        shape = plan.compiled["centres"] = (plan.points, {n: list(mech.link(n).points) for n in mech.moving},
+                                            {n: complex(*mech.link(n).G) for n in mech.moving})
+    return shape
+
+
 def instant_centres(kin: Kinematics, index: int = 0) -> InstantCentres:
     """Every instant centre Kennedy's theorem reaches at position ``index``, and the velocities they give.
 
@@ -144,37 +162,35 @@ def instant_centres(kin: Kinematics, index: int = 0) -> InstantCentres:
     frame = mech.frame
     kin, at = derived(kin, i)  # placed by the input motion alone, a problem's given values left out
 
-    O = {n: complex(kin.O[n].item(at)) for n in mech.moving}
-    e = {n: complex(kin.e[n].item(at)) for n in mech.moving}
-    points = plan_of(mech).points  # (link, name): the point in its link's own frame [m], complex
-
-    def pos(link, name):
-        p = points[link, name]
-        return p if link == frame else O[link] + e[link] * p
-
-    size = max([abs(pos(link, name)) for link, name in points]) or 1.0
+    points, names, G_local = kept(kin, "centres", _shape)
+    O = {n: kin.O[n].item(at) for n in mech.moving}  # .item: a Python complex, no numpy scalar made
+    e = {n: kin.e[n].item(at) for n in mech.moving}
+    pos = {(link, name): p if link == frame else O[link] + e[link] * p  # where each point is [m]
+           for (link, name), p in points.items()}
+    size = max(map(abs, pos.values())) or 1.0
 
     def hom(z: complex):
         return _unit((z.real / size, z.imag / size, 1.0))
 
-    known: dict[frozenset, tuple] = {}
+    # Each centre found, under both orders of its links: (a, b) and (b, a).
+    known: dict[tuple[int, int], tuple] = {}
     steps = []
     for joint in mech.joints:
         a, b = joint.links
         if isinstance(joint, Revolute):
-            P = hom(pos(a, joint.point))
+            P = hom(pos[a, joint.point])
             how = f"the pin {joint.point}"
         elif isinstance(joint, Prismatic):
             u = (1 + 0j if joint.guide == frame else e[joint.guide]) * cmath.exp(1j * joint.direction)
             P = (-u.imag, u.real, 0.0)
             how = f"at infinity, perpendicular to the guide at {joint.point}"
         elif isinstance(joint, GearMesh):
-            A, B = pos(a, joint.centers[0]), pos(b, joint.centers[1])
+            A, B = pos[a, joint.centers[0]], pos[b, joint.centers[1]]
             P = hom(complex(pitch_point(joint, a, A, B)[0]))  # an internal mesh's lies beyond the pinion
             how = "the pitch point"
         else:  # pragma: no cover - the model has these three joints only
             raise AssertionError(joint)
-        known[frozenset((a, b))] = P
+        known[a, b] = known[b, a] = P
         steps.append(Later(_primary, min(a, b), max(a, b), how, P, size))
 
     links = [link.number for link in mech.links]
@@ -182,13 +198,13 @@ def instant_centres(kin: Kinematics, index: int = 0) -> InstantCentres:
     while progress:
         progress = False
         for a, b in combinations(links, 2):
-            if frozenset((a, b)) in known:
+            if (a, b) in known:
                 continue
             lines = []
             for j in links:
-                if j in (a, b):
+                if j == a or j == b:
                     continue
-                p, q = known.get(frozenset((a, j))), known.get(frozenset((j, b)))
+                p, q = known.get((a, j)), known.get((j, b))
                 if p is None or q is None:
                     continue
                 line = _line(p, q)
@@ -198,7 +214,7 @@ def instant_centres(kin: Kinematics, index: int = 0) -> InstantCentres:
                     P = _cross(line, other)
                     if _norm(P) > SAME:
                         P = _unit(P)
-                        known[frozenset((a, b))] = P
+                        known[a, b] = known[b, a] = P
                         steps.append(Later(_kennedy, a, b, j, via, P, size))
                         progress = True
                         break
@@ -212,7 +228,7 @@ def instant_centres(kin: Kinematics, index: int = 0) -> InstantCentres:
     g = next(g for g in kin.groups if isinstance(g, DriverGroup))
     q_dot = float(kin.q_dot[at])
     if isinstance(g.joint, Revolute):
-        I12 = known[frozenset((frame, g.link))]
+        I12 = known[frame, g.link]
         fields[g.link] = (q_dot * size / I12[2], complex(I12[0], I12[1]), I12[2])
     else:
         # A driving slider translates: w = 0 and X = i v, so that v(P) = -iX is v at every point.
@@ -221,12 +237,12 @@ def instant_centres(kin: Kinematics, index: int = 0) -> InstantCentres:
     while progress:
         progress = False
         for k in links:
-            if k in fields or frozenset((frame, k)) not in known:
+            if k in fields or (frame, k) not in known:
                 continue
-            I1k = known[frozenset((frame, k))]
+            I1k = known[frame, k]
             X, w = complex(I1k[0], I1k[1]), I1k[2]
             for m, (Om, Xm, wm) in list(fields.items()):
-                Imk = known.get(frozenset((m, k)))
+                Imk = known.get((m, k))
                 if Imk is None:
                     continue
                 Y, s = complex(Imk[0], Imk[1]), Imk[2]
@@ -243,27 +259,27 @@ def instant_centres(kin: Kinematics, index: int = 0) -> InstantCentres:
         if link not in fields:
             continue
         Om, X, w = fields[link]
-        omega[link] = float(Om * w / size)
-        for name in mech.link(link).points:
-            v = 1j * Om * (pos(link, name) / size * w - X)
-            velocity[link, name] = (float(v.real), float(v.imag))
-        gx, gy = mech.link(link).G
-        G = O[link] + e[link] * complex(gx, gy)
+        omega[link] = Om * w / size
+        G = O[link] + e[link] * G_local[link]
+        for name in names[link]:
+            v = 1j * Om * (pos[link, name] / size * w - X)
+            velocity[link, name] = (v.real, v.imag)
         v = 1j * Om * (G / size * w - X)
-        v_G[link] = (float(v.real), float(v.imag))
+        v_G[link] = (v.real, v.imag)
     centres, infinite = {}, {}
-    for pair, P in known.items():
-        lo, hi = sorted(pair)
+    for (lo, hi), P in known.items():
+        if lo > hi:
+            continue
         if abs(P[2]) <= SAME:
             d = math.hypot(P[0], P[1])
-            infinite[lo, hi] = (float(P[0] / d), float(P[1] / d))
+            infinite[lo, hi] = (P[0] / d, P[1] / d)
         else:
-            centres[lo, hi] = (float(P[0] / P[2] * size), float(P[1] / P[2] * size))
-    missing = tuple(sorted((a, b) for a, b in combinations(sorted(links), 2) if frozenset((a, b)) not in known))
+            centres[lo, hi] = (P[0] / P[2] * size, P[1] / P[2] * size)
+    missing = tuple(sorted((a, b) for a, b in combinations(sorted(links), 2) if (a, b) not in known))
     ic = InstantCentres(mech, i, centres, infinite, tuple(steps), missing, omega, velocity, v_G)
     # Checked against the analytical kinematics before anyone sees them (graphical/guard.py).
     why = centres_disagreement(kin, at, ic)
     if why:
-        return InstantCentres(mech, i, steps=tuple(steps) + (f"{why}.",), valid=False, reason=why)
+        return InstantCentres(mech, i, steps=tuple(steps) + (f"{why}.",), valid=False, reason=why, disagreement=True)
     return ic
 

@@ -276,6 +276,10 @@ class Construction:
         Why the construction cannot close, when not valid.
     warnings : tuple of str
         Polygons that failed to close within tolerance, and similar notes.
+    disagreement : bool
+        True where the construction is not valid because a value it yields disagrees with the analytical route
+        (:mod:`graphkin.graphical.guard`): a fault in graphkin's arithmetic, to be reported, not a position the
+        linkage cannot take (the ``reason`` names the quantity and both values).
     """
 
     mechanism: object
@@ -331,6 +335,7 @@ class Construction:
     angles: dict = field(default_factory=dict)
     driver_vector: tuple[float, float] | None = None
     subproblems: tuple[SubProblem, ...] = ()
+    disagreement: bool = False
 
     @property
     def driver_name(self) -> str:

@@ -7,7 +7,8 @@ limits; a wrong term in either route (a pitch point on the wrong side of an inte
 passed on) is a difference of order one. Whatever differs by more than :data:`AGREEMENT` of the position's scale
 is not a number anyone may see: the construction is returned not valid, its reason naming the quantity and both
 values, and every reader (the report and its JSON, the figures, the handouts, the exercises' keys, the widgets)
-already refuses an invalid construction.
+already refuses an invalid construction. Its ``disagreement`` flag tells this fault of graphkin's apart from a
+position the linkage cannot take (an exercise refuses to be made from it, rather than drawing other data).
 
 What is compared, position by position:
 
@@ -42,12 +43,6 @@ AGREEMENT = 1e-9
 """How far a graphical value may differ from the analytical one, relative to the largest value of its kind at the
 position, before the position's construction is not valid (issue 35). The routes differ by rounding, ~1e-13 on
 textbook problems and at most ~1e-10 on the property tests' random linkages; any wrong term is O(1)."""
-
-
-def is_disagreement(reason: str) -> bool:
-    """Whether a construction is not valid because this guard found it disagreeing with the analytical route (a
-    fault in graphkin's arithmetic, to be reported, rather than a position the linkage cannot take)."""
-    return "analytical route disagree: " in reason or "analytical routes disagree: " in reason
 
 
 def mechanism_size(mech) -> float:
@@ -116,13 +111,13 @@ def check_forces(result, c, i: int):
     -------
     Construction or None
         ``c`` itself where both routes agree (or where the analytical route has no solution, whose reason the
-        construction already gives); else a copy whose ``valid`` is False and whose ``reason`` names the force
-        and both values.
+        construction already gives); else a copy whose ``valid`` is False, whose ``disagreement`` is True and whose
+        ``reason`` names the force and both values.
     """
     if c is None or not c.valid or not result.valid[i]:
         return c
     why = forces_disagreement(result, c, i)
-    return replace(c, valid=False, reason=why) if why else c
+    return replace(c, valid=False, reason=why, disagreement=True) if why else c
 
 
 # -- motion -----------------------------------------------------------------------------------------------------
@@ -130,7 +125,8 @@ class _Shape:
     """What the guard reads of a mechanism at every position, made once per mechanism (its plan's cache).
 
     ``keys``: every named point of every moving link, ``(link, name)``, then each centre of mass, ``(link, None)``;
-    ``local``: where each is in its link's own frame [m].
+    ``local``: where each is in its link's own frame [m]; ``index``: each key's place in ``keys``. ``column``: each
+    link's place in a row of link values, the moving links in order, then the frame.
     """
 
     def __init__(self, mech):
@@ -141,7 +137,8 @@ class _Shape:
         self.keys = [(n, name) for n in self.moving for name in mech.link(n).points] + [(n, None) for n in self.moving]
         self.local = np.array([points[key] if key[1] is not None else complex(*mech.link(key[0]).G)
                                for key in self.keys], dtype=complex)
-        self.column = [self.moving.index(n) for n, _ in self.keys]
+        self.index = {key: k for k, key in enumerate(self.keys)}
+        self.column = {n: j for j, n in enumerate(self.moving + (self.frame,))}
 
 
 def _shape(mech) -> _Shape:
@@ -155,18 +152,19 @@ def _shape(mech) -> _Shape:
 class _Table:
     """The analytical motion of one kinematics at every position, worked out at once (numpy over the positions).
 
-    A row per position: ``values`` (complex) holds the velocity and acceleration of every key of the
-    :class:`_Shape`, then each moving link's origin O, direction e, v_O, a_O, iω and iα − ω²; ``rates`` (real)
-    holds ω and α of each moving link, then the position's scales: the largest speed (acceleration) of a named
-    point or centre of mass, or of a link's ω (α) times the mechanism's size.
+    A row per position, of Python numbers: ``values`` (complex) holds the velocity and acceleration of every key of
+    the :class:`_Shape`, then each link's origin O, v_O, a_O, iω and iα − ω² (the moving links, then the frame's:
+    all 0); ``rates`` (real) holds ω and α of each link (the same order), then the position's scales: the largest
+    speed (acceleration) of a named point or centre of mass, or of a link's ω (α) times the mechanism's size.
     """
 
     def __init__(self, kin):
         shape = self.shape = _shape(kin.mechanism)
-        moving, column = shape.moving, shape.column
+        moving = shape.moving
+        column = [shape.column[n] for n, _ in shape.keys]
 
-        def links(arrays, kind):
-            return np.stack([np.asarray(arrays[n], dtype=kind) for n in moving], axis=1)  # (positions, links)
+        def links(arrays, kind):  # (positions, links), the frame's 0 last
+            return np.stack([np.asarray(arrays[m], dtype=kind) for m in moving] + [np.zeros(kin.n, kind)], axis=1)
 
         O, e, v_O, a_O = (links(x, complex) for x in (kin.O, kin.e, kin.v_O, kin.a_O))
         w, al = links(kin.omega, float), links(kin.alpha, float)
@@ -177,58 +175,67 @@ class _Table:
         with np.errstate(invalid="ignore"):  # positions that cannot be assembled are nan, and never asked for
             v_top = np.maximum(np.abs(v).max(axis=1), np.abs(w).max(axis=1) * shape.size)
             a_top = np.maximum(np.abs(a).max(axis=1), np.abs(al).max(axis=1) * shape.size)
-        self.values = np.concatenate([v, a, O, e, v_O, a_O, iw, turn], axis=1)
-        self.rates = np.concatenate([w, al, v_top[:, None], a_top[:, None]], axis=1)
+        # As Python numbers, all at once: a position's few dozen values are too few for numpy to pay.
+        self.values = np.concatenate([v, a, O, v_O, a_O, iw, turn], axis=1).tolist()
+        self.rates = np.concatenate([w, al, v_top[:, None], a_top[:, None]], axis=1).tolist()
 
 
 class _Truth:
-    """The analytical motion of one position: any point's velocity and acceleration as a point of any link.
+    """The analytical motion of one position, as lists of Python numbers (a row of the :class:`_Table`).
 
-    ``v[key]``, ``a[key]``: the velocity and acceleration of each named point and centre of mass [m/s, m/s²];
-    ``motion[link]`` is ``(O, e, v_O, a_O, iω, iα − ω²)``: the link's origin and direction [m, unit complex], its
-    origin's velocity and acceleration, and the factors that carry them to a point r = P − O away (v = v_O + iω r,
-    a = a_O + (iα − ω²) r).
+    ``v``, ``a``: the velocity and acceleration of each key of the :class:`_Shape` [m/s, m/s²], in its order
+    (``index``); ``O``, ``v_O``, ``a_O``, ``iw``, ``turn``: each link's origin [m], its velocity and acceleration and
+    the factors iω and iα − ω² that carry them to a point r = P − O away (v = v_O + iω r, a = a_O + (iα − ω²) r);
+    ``w``, ``al``: each link's ω and α; all of these in the order of ``column``.
     """
 
-    __slots__ = ("frame", "size", "v", "a", "motion", "w", "al", "v_scale", "a_scale")
+    __slots__ = ("size", "index", "column", "v", "a", "O", "v_O", "a_O", "iw", "turn", "w", "al", "v_scale",
+                 "a_scale")
 
     def __init__(self, table: _Table, i: int):
         shape = table.shape
-        moving, keys, frame = shape.moving, shape.keys, shape.frame
-        K, L = len(keys), len(moving)
-        # One row each, as Python numbers: a position has a few dozen values, too few for numpy to pay.
-        z, x = table.values[i].tolist(), table.rates[i].tolist()
-        self.frame, self.size = frame, shape.size
-        self.v, self.a = dict(zip(keys, z[:K])), dict(zip(keys, z[K:2 * K]))
-        self.motion = dict(zip(moving, zip(*(z[2 * K + k * L:2 * K + (k + 1) * L] for k in range(6)))))
-        self.motion[frame] = (0j, 1 + 0j, 0j, 0j, 0j, 0j)
-        self.w, self.al = dict(zip(moving, x[:L])), dict(zip(moving, x[L:2 * L]))
-        self.w[frame] = self.al[frame] = 0.0
+        K, L = len(shape.keys), len(shape.column)
+        z, x = table.values[i], table.rates[i]
+        self.size, self.index, self.column = shape.size, shape.index, shape.column
+        self.v, self.a = z[:K], z[K:2 * K]
+        self.O, self.v_O, self.a_O, self.iw, self.turn = (z[2 * K + k * L:2 * K + (k + 1) * L] for k in range(5))
+        self.w, self.al = x[:L], x[L:2 * L]
         self.v_scale, self.a_scale = x[2 * L], x[2 * L + 1]
 
     def at(self, link: int, P: complex) -> complex:
         """Velocity [m/s] of the point at ``P`` [m] moving with ``link``."""
-        O, _, v_O, _, iw, _ = self.motion[link]
-        return v_O + iw * (P - O)
+        j = self.column[link]
+        return self.v_O[j] + self.iw[j] * (P - self.O[j])
 
 
-_KEPT: list = []
-"""What the guard last worked out for a few kinematics, ``(weakref to the kinematics, what, value)``: their
-:class:`_Table`, and the kinematics solved again without a problem's given values (:func:`derived`). The polygons
-and the instant centres of every position of one kinematics share them."""
+_KEPT: dict = {}
+"""What was last worked out for a few kinematics, ``(id of the kinematics, what): (weakref to it, value)``, the
+oldest first: the guard's :class:`_Table`, the kinematics solved again without a problem's given values
+(:func:`derived`), what the polygons and the instant centres read of its mechanism. Every position of one
+kinematics shares them."""
 
 
-def _kept(kin, what: str, make):
-    for ref, kind, value in _KEPT:
-        if kind == what and ref() is kin:
-            return value
+def kept(kin, what: str, make):
+    """``make(kin)``, worked out once for the kinematics ``kin`` while it lives (of the last few, each ``what``).
+
+    A :class:`~graphkin.kinematics.Kinematics` is frozen, so what is made of it (and of its mechanism) holds as
+    long as it does; finding it here is a dict's lookup, where a mechanism's plan (:func:`plan_of`) checks every
+    part of the mechanism for a change on each call.
+    """
+    key = (id(kin), what)
+    ref, value = _KEPT.get(key, (None, None))
+    if ref is not None and ref() is kin:  # (an id is reused once its object is gone: the reference tells)
+        return value
     value = make(kin)
-    _KEPT[:] = [(weakref.ref(kin), what, value)] + _KEPT[:7]
+    _KEPT.pop(key, None)
+    while len(_KEPT) >= 16:
+        del _KEPT[next(iter(_KEPT))]
+    _KEPT[key] = (weakref.ref(kin), value)
     return value
 
 
 def _truth(kin, i: int) -> _Truth:
-    return _Truth(_kept(kin, "table", _Table), i)
+    return _Truth(kept(kin, "table", _Table), i)
 
 
 class _Check:
@@ -236,61 +243,73 @@ class _Check:
 
     Each difference is measured against the largest value of its kind at the position: the named points', the
     links' ω (α) times the mechanism's size, and every analytical value compared (a pitch point that is no named
-    point may be the only thing that moves). The values come a list at a time and only the worst of each kind is
-    kept; it is put in words only where the routes disagree.
+    point may be the only thing that moves). The values come a list at a time, join one list per kind, and are
+    judged all at once, at the end; only where the routes disagree is the worst found and put in words.
     """
 
-    __slots__ = ("scale", "worst", "found")
+    __slots__ = ("scale", "zs", "ts", "seen")
 
     def __init__(self, truth: _Truth):
         self.scale = [truth.v_scale, truth.a_scale]
-        self.worst = [0.0, 0.0]
-        self.found: list = [None, None]  # per kind: (z, t, say, name) of the worst so far
+        self.zs: tuple = ([], [])
+        self.ts: tuple = ([], [])
+        self.seen: list = []  # (kind, where its values start in zs[kind], say, names): to put one in words
 
-    def see(self, kind: int, zs: list, ts: list, say: tuple, names: list, sized: bool = False):
+    def see(self, kind: int, zs: list, ts: list, say: tuple, names, sized: bool = False):
         """The construction's values ``zs`` against the analytical ``ts`` [m/s or m/s²], in step.
 
-        ``say`` is a function and its first arguments, ``names[j]`` the next ones (a tuple, or one value), to put
-        the j-th difference in words. ``sized``: the ``ts`` may be larger than the position's scale (a point that
-        is not a named one), so they join it.
+        ``say`` is a function and its first arguments, the j-th of ``names`` the next ones (a tuple, or one value),
+        to put the j-th difference in words. ``sized``: the ``ts`` may be larger than the position's scale (a point
+        that is not a named one), so they join it.
         """
-        if not zs:
-            return
-        if sized:
-            top = max(map(abs, ts))
-            if top > self.scale[kind]:
-                self.scale[kind] = top
-        worst = self.worst[kind]
-        if worst != worst:  # a nan is the worst there is
-            return
-        gaps = [abs(z - t) for z, t in zip(zs, ts)]
-        gap = max(gaps)
-        total = sum(gaps)
-        if total != total:  # max() passes over a nan: find it
-            j = next(j for j, g in enumerate(gaps) if g != g)
-            gap = math.nan
-        elif gap < worst or (gap == worst and self.found[kind] is not None):
-            return
-        else:
-            j = gaps.index(gap)
-        self.worst[kind], self.found[kind] = gap, (zs[j], ts[j], say, names[j])
+        if zs:
+            self.seen.append((kind, len(self.zs[kind]), say, names))
+            self.zs[kind].extend(zs)
+            self.ts[kind].extend(ts)
+            if sized:
+                top = max(map(abs, ts))
+                if top > self.scale[kind]:
+                    self.scale[kind] = top
 
     def reason(self, route: str) -> str:
+        """'' where every difference is within :data:`AGREEMENT` of its scale, else the worst one in words."""
+        scale = self.scale
+        for kind in (0, 1):
+            if self.zs[kind]:
+                gaps = [abs(z - t) for z, t in zip(self.zs[kind], self.ts[kind])]
+                total, top = sum(gaps), scale[kind]  # a nan anywhere makes the sum nan (max() passes over one)
+                if total != total or not top > 0 or max(gaps) / top > AGREEMENT:
+                    break
+        else:
+            return ""
         worst, found, at = 0.0, None, 0.0
         for kind in (0, 1):
-            if self.found[kind] is None:
+            if not self.zs[kind]:
                 continue
-            gap, scale = self.worst[kind], self.scale[kind]
-            ratio = gap / scale if scale > 0 else (0.0 if gap == 0 else math.inf)
+            gap, j = self._worst(kind)
+            ratio = gap / scale[kind] if scale[kind] > 0 else (0.0 if gap == 0 else math.inf)
             if ratio != ratio or ratio > worst:
-                worst, found, at = ratio, self.found[kind], scale
+                worst, found, at = ratio, (kind, j), scale[kind]
                 if ratio != ratio:
                     break
         if worst <= AGREEMENT:
             return ""
-        z, t, (say, *args), name = found
+        kind, j = found
+        start, (say, *args), names = next((start, say, names) for k, start, say, names in reversed(self.seen)
+                                          if k == kind and start <= j)
+        name = list(names)[j - start]
         name = name if type(name) is tuple else (name,)
+        z, t = self.zs[kind][j], self.ts[kind][j]
         return f"the {route} and the analytical route disagree: {say(*args, *name, z, t, at)}"
+
+    def _worst(self, kind: int) -> tuple[float, int]:
+        """The largest difference of a kind (a nan is the largest there is; of equal ones, the first) and where it
+        is in ``zs[kind]``."""
+        gaps = [abs(z - t) for z, t in zip(self.zs[kind], self.ts[kind])]
+        if sum(gaps) != sum(gaps):
+            return math.nan, next(j for j, g in enumerate(gaps) if g != g)
+        top = max(gaps)
+        return top, gaps.index(top)
 
 
 _UNIT = ("m/s", "m/s²")
@@ -314,6 +333,10 @@ def _point(kind: int, link: int, point: str | None, z: complex, t: complex, scal
     return _vectors(name, kind, z, t, scale)
 
 
+def _centre_of_mass(kind: int, link: int, z: complex, t: complex, scale: float) -> str:
+    return _point(kind, link, None, z, t, scale)
+
+
 def _rates(symbol: str, unit: str, size: float, link: int, z: float, t: float, scale: float) -> str:
     return f"{symbol}{link} is {_rate(z / size, unit)} graphically, {_rate(t / size, unit)} analytically"
 
@@ -321,17 +344,16 @@ def _rates(symbol: str, unit: str, size: float, link: int, z: float, t: float, s
 def _motion_values(check: _Check, truth: _Truth, kind: int, rates: dict, points: dict, centres_of_mass: dict):
     """Compare a construction's ω (kind 0; α, kind 1) of each link and the velocity (acceleration) of each named
     point and G (``points`` by ``(link, name)``, ``centres_of_mass`` by link)."""
-    size = truth.size
+    size, index, column = truth.size, truth.index, truth.column
     true, symbol, unit = (truth.w, "ω", "rad/s") if kind == 0 else (truth.al, "α", "rad/s²")
     # ω and α times the mechanism's size: measured as the speed (acceleration) they give its farthest point.
-    check.see(kind, [x * size for x in rates.values()], [true[link] * size for link in rates],
-              (_rates, symbol, unit, size), list(rates))
+    check.see(kind, [x * size for x in rates.values()], [true[column[link]] * size for link in rates],
+              (_rates, symbol, unit, size), rates)
     true = truth.v if kind == 0 else truth.a
-    check.see(kind, [complex(x, y) for x, y in points.values()], [true[key] for key in points], (_point, kind),
-              list(points))
-    keys = [(link, None) for link in centres_of_mass]
-    check.see(kind, [complex(x, y) for x, y in centres_of_mass.values()], [true[key] for key in keys], (_point, kind),
-              keys)
+    check.see(kind, [complex(x, y) for x, y in points.values()], [true[index[key]] for key in points], (_point, kind),
+              points)
+    check.see(kind, [complex(x, y) for x, y in centres_of_mass.values()],
+              [true[index[link, None]] for link in centres_of_mass], (_centre_of_mass, kind), centres_of_mass)
 
 
 def _image(polygon: str, kind: int, name: str, z: complex, t: complex, scale: float) -> str:
@@ -372,20 +394,21 @@ def motion_disagreement(kin, i: int, c, where: dict, coriolis: dict) -> str:
     check = _Check(truth)
     _motion_values(check, truth, 0, c.omega, c.velocity, c.v_G)
     _motion_values(check, truth, 1, c.alpha, c.acceleration, c.a_G)
-    motion = truth.motion
-    for kind, polygon, table, true in ((0, "velocity", (c.velocity, c.v_G), truth.v),
-                                       (1, "acceleration", (c.acceleration, c.a_G), truth.a)):
+    index, column = truth.index, truth.column
+    for kind, polygon, table, true, base, factor in ((0, "velocity", (c.velocity, c.v_G), truth.v, truth.v_O, truth.iw),
+                                                     (1, "acceleration", (c.acceleration, c.a_G), truth.a, truth.a_O,
+                                                      truth.turn)):
         zs, ts, names, unknown = [], [], [], []
         for name, z in c.images[polygon].items():
             if name in where:
                 link, P, key = where[name]
                 if key is None:  # a point that is no named one (a pitch point, a slider's coincident point)
-                    O, _, v_O, a_O, iw, turn = motion[link]
-                    ts.append(a_O + turn * (P - O) if kind else v_O + iw * (P - O))
+                    j = column[link]
+                    ts.append(base[j] + factor[j] * (P - truth.O[j]))
                 elif z == (table[0].get(key) if key[1] is not None else table[1].get(link)):
                     continue  # the very value compared above, as the named point's (or G's)
                 else:
-                    ts.append(true[key])
+                    ts.append(true[index[key]])
             elif name in ("o", "o′"):  # the pole is the frame's image: 0
                 ts.append(0j)
             else:  # an image a construction added without saying whose point it is cannot be checked: not shown
@@ -397,8 +420,9 @@ def motion_disagreement(kin, i: int, c, where: dict, coriolis: dict) -> str:
         check.see(kind, [complex(math.inf)] * len(unknown), [0j] * len(unknown), (_unknown_image, polygon), unknown)
     if coriolis:
         found = [v for v in c.vectors("acceleration") if v.name in coriolis]
+        w, at = truth.w, truth.at
         check.see(1, [complex(*v.vector) for v in found],
-                  [2j * truth.w[m] * (truth.at(k, X) - truth.at(b, X)) for m, k, b, X in (coriolis[v.name] for v in found)],
+                  [2j * w[column[m]] * (at(k, X) - at(b, X)) for m, k, b, X in (coriolis[v.name] for v in found)],
                   (_vectors,), [(v.name, 1) for v in found], sized=True)
     return check.reason("velocity and acceleration polygons")
 
@@ -413,18 +437,20 @@ def centres_disagreement(kin, i: int, ic) -> str:
     """
     truth = _truth(kin, i)
     check = _Check(truth)
-    at, size, motion = truth.at, truth.size, truth.motion
-    pairs, places = list(ic.centres), [complex(x, y) for x, y in ic.centres.values()]
+    size, column, O, v_O, iw, w = truth.size, truth.column, truth.O, truth.v_O, truth.iw, truth.w
+    pairs = ic.centres
     # v_b(P) − v_a(P), each v = v_O + iω (P − O) of its link
-    check.see(0, [(mb[2] + mb[4] * (P - mb[0])) - (ma[2] + ma[4] * (P - ma[0]))
-                  for ma, mb, P in zip([motion[a] for a, _ in pairs], [motion[b] for _, b in pairs], places)],
-              [0j] * len(pairs), (_moving_centre, ic.centres), pairs)
-    pairs = list(ic.at_infinity)
-    check.see(0, [(truth.w[b] - truth.w[a]) * size for a, b in pairs], [0.0] * len(pairs), (_turning_apart,),
-              [(a, b, size) for a, b in pairs])
-    d = [at(b, 0j) - at(a, 0j) for a, b in pairs]  # where ω_a = ω_b, the same at every point
-    check.see(0, [z.real * u[0] + z.imag * u[1] for z, u in zip(d, ic.at_infinity.values())], [0.0] * len(pairs),
-              (_sliding_apart,), pairs)
+    check.see(0, [(v_O[b] + iw[b] * (P - O[b])) - (v_O[a] + iw[a] * (P - O[a]))
+                  for (a, b), P in zip([(column[a], column[b]) for a, b in pairs],
+                                       [complex(x, y) for x, y in pairs.values()])],
+              [0j] * len(pairs), (_moving_centre, pairs), pairs)
+    pairs = ic.at_infinity
+    if pairs:
+        check.see(0, [(w[column[b]] - w[column[a]]) * size for a, b in pairs], [0.0] * len(pairs), (_turning_apart,),
+                  [(a, b, size) for a, b in pairs])
+        d = [truth.at(b, 0j) - truth.at(a, 0j) for a, b in pairs]  # where ω_a = ω_b, the same at every point
+        check.see(0, [z.real * u[0] + z.imag * u[1] for z, u in zip(d, pairs.values())], [0.0] * len(pairs),
+                  (_sliding_apart,), pairs)
     _motion_values(check, truth, 0, ic.omega, ic.velocity, ic.v_G)
     return check.reason("instant centres")
 
@@ -461,4 +487,4 @@ def derived(kin, i: int):
     """
     if not kin.given:
         return kin, i
-    return _kept(kin, "derived", _input_motion), i
+    return kept(kin, "derived", _input_motion), i

@@ -140,6 +140,10 @@ class MotionConstruction:
     valid : bool
     reason : str
         Why there are no polygons, when not valid.
+    disagreement : bool
+        True where the polygons are not valid because a value they yield disagrees with the analytical route
+        (:mod:`graphkin.graphical.guard`): a fault in graphkin's arithmetic, to be reported, not a position the
+        linkage cannot take (the ``reason`` names the quantity and both values).
     """
 
     mechanism: object
@@ -157,6 +161,7 @@ class MotionConstruction:
     acceleration_scale: float = 1.0
     valid: bool = True
     reason: str = ""
+    disagreement: bool = False
 
     def vectors(self, polygon: str) -> list[Vector]:
         """Every vector of the ``"velocity"`` or ``"acceleration"`` polygon, in the order drawn."""

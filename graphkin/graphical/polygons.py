@@ -33,7 +33,7 @@ from graphkin.errors import GraphkinError
 from graphkin.geometry import zcross as cross
 from graphkin.graphical.captions import Later, number
 from graphkin.graphical.construction import nice_scale
-from graphkin.graphical.guard import derived, motion_disagreement
+from graphkin.graphical.guard import derived, kept, motion_disagreement
 from graphkin.graphical.motion import MotionConstruction, MotionStep, PolygonLine, Vector
 from graphkin.graphical.motion_captions import A, V, acceleration_image, rate, sense, vector, velocity_image
 from graphkin.kinematics import DriverGroup, Dyad, GearGroup, Kinematics
@@ -138,7 +138,10 @@ class _Fixed:
         self.size = sum(max(abs(complex(*p)) for p in link.points.values()) for link in mech.links) or 1.0
 
 
-def _fixed(mech) -> _Fixed:
+def _fixed(kin: Kinematics) -> _Fixed:
+    """The polygons' :class:`_Fixed` of the kinematics' mechanism (kept in its plan, and found once per kinematics:
+    :func:`graphkin.graphical.guard.kept`)."""
+    mech = kin.mechanism
     compiled = plan_of(mech).compiled
     fixed = compiled.get("polygons")
     if fixed is None:
@@ -153,7 +156,7 @@ class _Polygons:
         self.kin, self.i, self.slip = kin, i, slip
         self.mech = mech = kin.mechanism
         self.frame = mech.frame
-        self.fixed = _fixed(mech)
+        self.fixed = kept(kin, "polygons", _fixed)
         self.motion = {self.frame: _Motion(0j, 0j, 0.0, 0j, 0.0)}
         self.steps: list[MotionStep] = []
         self.v_img = {"o": (0.0, 0.0)}
@@ -162,8 +165,8 @@ class _Polygons:
         # Whose point each image is, and what each Coriolis component is of, for the guard (graphical/guard.py).
         self.where: dict[str, tuple[int, complex, tuple | None]] = {}
         self.coriolis: dict[str, tuple[int, int, int, complex]] = {}
-        self._O = {n: complex(kin.O[n][i]) for n in mech.moving}
-        self._e = {n: complex(kin.e[n][i]) for n in mech.moving}
+        self._O = {n: kin.O[n].item(i) for n in mech.moving}  # .item: a Python complex, no numpy scalar made
+        self._e = {n: kin.e[n].item(i) for n in mech.moving}
         # What a residue of rounding is beside, in the captions: the input's speed over the mechanism's size.
         size = self.fixed.size
         w, al = abs(float(kin.q_dot[i])), abs(float(kin.q_ddot[i]))
@@ -578,5 +581,5 @@ def construct_kinematics(kin: Kinematics, index: int = 0, *, slip: str | None = 
         why = motion_disagreement(own, at, c, b.where, b.coriolis)
         if why:
             b.step("acceleration", "note", f"{why}.", ())
-            return MotionConstruction(mech, index, q, tuple(b.steps), valid=False, reason=why)
+            return MotionConstruction(mech, index, q, tuple(b.steps), valid=False, reason=why, disagreement=True)
     return c

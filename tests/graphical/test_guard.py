@@ -17,7 +17,7 @@ import pytest
 from graphkin import catalog, exercises, report
 from graphkin.errors import GraphkinError
 from graphkin.graphical import centres, construct_forces, construct_kinematics, instant_centres, polygons
-from graphkin.graphical.guard import AGREEMENT, check_forces, is_disagreement
+from graphkin.graphical.guard import AGREEMENT, check_forces
 from graphkin.kinematics import solve_kinematics
 from graphkin.model import Driver, GearMesh, Link, Mechanism, Revolute
 
@@ -45,10 +45,10 @@ def _old_centres(mesh, k, Ck, Cj):
 
 def test_the_old_pitch_point_is_refused_with_both_values(monkeypatch):
     kin = solve_kinematics(_pinion_in_annulus(), [0.4], 10.0, 2.0)
-    assert construct_kinematics(kin, 0).valid
+    assert construct_kinematics(kin, 0).valid and not construct_kinematics(kin, 0).disagreement
     monkeypatch.setattr(polygons, "pitch_point", _old_polygons)
     c = construct_kinematics(kin, 0)
-    assert not c.valid and is_disagreement(c.reason)
+    assert not c.valid and c.disagreement
     assert c.omega == {} and c.velocity == {} and c.images == {}  # no number survives to be shown
     # The worst difference against its scale, named with both values: B of the annulus, which turned at −10 rad/s
     # instead of +10/3 (and α3 at −2 instead of +2/3).
@@ -62,7 +62,7 @@ def test_the_old_instant_centre_is_refused(monkeypatch):
     assert instant_centres(kin, 0).valid
     monkeypatch.setattr(centres, "pitch_point", _old_centres)
     ic = instant_centres(kin, 0)
-    assert not ic.valid and is_disagreement(ic.reason)
+    assert not ic.valid and ic.disagreement
     assert ic.centres == {} and ic.omega == {}
     assert ic.reason == ("the instant centres and the analytical route disagree: ω3 is -10 rad/s graphically, "
                          "3.33333 rad/s analytically")
@@ -79,7 +79,8 @@ def test_the_json_says_why_and_gives_no_polygon(monkeypatch):
     data = report.solution(problem, result, report.constructions(result),
                            report.kinematic_constructions(result.kinematics))
     gk = json.loads(json.dumps(data))["positions"][0]["graphical_kinematics"]
-    assert gk["valid"] is False and is_disagreement(gk["reason"])
+    assert gk["valid"] is False
+    assert gk["reason"].startswith("the velocity and acceleration polygons and the analytical route disagree: ")
     assert set(gk) == {"valid", "reason"}
 
 
@@ -90,7 +91,8 @@ def test_a_force_construction_that_drops_a_reaction_is_refused():
     key = next(iter(c.forces))
     worse = dataclasses.replace(c, forces={**c.forces, key: (0.0, 0.0)})
     checked = check_forces(result, worse, 0)
-    assert not checked.valid and checked.reason.startswith("the graphical and analytical routes disagree: ")
+    assert not checked.valid and checked.disagreement
+    assert checked.reason.startswith("the graphical and analytical routes disagree: ")
     assert "0 N graphically" in checked.reason
 
 
@@ -132,6 +134,30 @@ def test_an_exercise_refuses_to_key_a_disagreeing_polygon(monkeypatch):
                                    "1 rad/s graphically, 2 rad/s analytically")
     try:
         with pytest.raises(GraphkinError, match="no key is made .* disagree: ω3 is 1 rad/s graphically"):
+            exercises.key(ex, "s1")
+    finally:
+        exercises.variants._CACHE.clear()
+        exercises.variants._DRAWS.clear()
+
+
+def test_the_flag_not_the_wording_says_a_construction_disagrees(monkeypatch):
+    """A position the linkage cannot take is not valid but no disagreement; a construction the guard refuses is one,
+    however its reason is worded, and an exercise refuses to be made from it (before, the exercise read the wording
+    of the reason, and a reason worded otherwise let it draw other data)."""
+    kin = solve_kinematics(_pinion_in_annulus(), [0.4], 10.0, 2.0)
+    apart = dataclasses.replace(kin, valid=np.array([False]))
+    for c in (construct_kinematics(apart, 0), instant_centres(apart, 0)):
+        assert not c.valid and not c.disagreement
+    result = catalog.load("strip_cutter").solve()
+    c = construct_forces(result.kinematics, 0)
+    assert check_forces(result, c, 0) is c and not c.disagreement
+
+    ex = exercises.load("fourbar_polygons")
+    exercises.variants._CACHE.clear()
+    exercises.variants._DRAWS.clear()
+    monkeypatch.setattr(polygons, "motion_disagreement", lambda *a: "ω3 is 1 rad/s graphically, 2 rad/s analytically")
+    try:
+        with pytest.raises(GraphkinError, match="no key is made .*: ω3 is 1 rad/s graphically"):
             exercises.key(ex, "s1")
     finally:
         exercises.variants._CACHE.clear()
