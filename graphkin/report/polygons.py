@@ -100,10 +100,10 @@ def graphical_kinematics_data(kin: Kinematics, c: graphical.MotionConstruction,
         velocity and acceleration, both polygons, the steps and the relative differences.
     """
     if not c.valid:
-        return {"valid": False, "reason": c.reason}
+        return {"valid": False, "reason": c.reason, "disagreement": c.disagreement}
     mech = c.mechanism
     data = {
-        "valid": True, "reason": "",
+        "valid": True, "reason": "", "disagreement": False,
         "velocity_scale_m_per_s_per_mm": c.velocity_scale,
         "acceleration_scale_m_per_s2_per_mm": c.acceleration_scale,
         "omega": {str(l): w for l, w in c.omega.items() if l != mech.frame},
@@ -117,5 +117,6 @@ def graphical_kinematics_data(kin: Kinematics, c: graphical.MotionConstruction,
         "relative_difference": {k: (v if math.isfinite(v) else None) for k, v in _difference(c, kin).items()},
     }
     if ic is not None:
-        data["instant_centres"] = _centres(ic, steps) if ic.valid else {"valid": False, "reason": ic.reason}
+        data["instant_centres"] = _centres(ic, steps) if ic.valid else {"valid": False, "reason": ic.reason,
+                                                                         "disagreement": ic.disagreement}
     return data

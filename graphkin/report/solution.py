@@ -75,9 +75,9 @@ def _graphical(result: ForceAnalysis, c, i, size: float) -> dict:
     """The graphical route at position i as plain data, with its difference from the analytical one (``size``:
     :func:`graphkin.graphical.guard.mechanism_size` of the mechanism, worked out once for every position)."""
     if c is None:
-        return {"valid": False, "reason": result.reason(i)}
+        return {"valid": False, "reason": result.reason(i), "disagreement": False}
     if not c.valid:
-        return {"valid": False, "reason": c.reason}
+        return {"valid": False, "reason": c.reason, "disagreement": c.disagreement}
     forces = {}
     diff = {}
     scale = max([float(np.hypot(*result.force(a, b)[i])) for a, b in result.forces] + [1e-300])
@@ -111,7 +111,8 @@ def _graphical(result: ForceAnalysis, c, i, size: float) -> dict:
               "polygon": [{"name": a.name, "vector": list(a.vector), "known": a.known} for a in s.polygon],
               "values": {k: (list(v) if isinstance(v, tuple) else v) for k, v in s.values.items()}}
              for s in c.steps]
-    return {"valid": True, "forces": forces, "driver": {"name": c.driver_name, "value": float(c.effort)},
+    return {"valid": True, "reason": "", "disagreement": False, "forces": forces,
+            "driver": {"name": c.driver_name, "value": float(c.effort)},
             "relative_difference": diff, "force_scale_N_per_mm": c.force_scale, "steps": steps,
             "subproblems": subproblems, "warnings": list(c.warnings)}
 

@@ -81,7 +81,9 @@ def test_the_json_says_why_and_gives_no_polygon(monkeypatch):
     gk = json.loads(json.dumps(data))["positions"][0]["graphical_kinematics"]
     assert gk["valid"] is False
     assert gk["reason"].startswith("the velocity and acceleration polygons and the analytical route disagree: ")
-    assert set(gk) == {"valid", "reason"}
+    assert set(gk) == {"valid", "reason", "disagreement"} and gk["disagreement"] is True
+    forces = json.loads(json.dumps(data))["positions"][0]["graphical"]
+    assert forces["valid"] is True and forces["disagreement"] is False
 
 
 def test_a_force_construction_that_drops_a_reaction_is_refused():
