@@ -244,9 +244,8 @@ gk.draw.draw_free_body(gk.exercises.variant("inertia_resultant", student).constr
 # line and a force scale bar; the joint forces are left out. Print the figure (or copy it onto
 # paper), then draw the line of $\vec F_{43}$ (step 2), find $I_3$ and the line $AI_3$ (step 3), draw the
 # polygons of the rod and of slider 2 at the printed force scale (steps 4–6), and measure the sides.
-# An answer within 3 %, or within what a careful drawing allows where that is larger (each line drawn
-# to ±0.5 mm and ±0.5° at the printed scales, carried through the steps before it), earns full marks:
-# the sheet states both beside each question.
+# An answer within 3 %, or what a careful drawing allows (each line to ±0.5 mm and ±0.5°), earns
+# full marks: the sheet states both.
 
 # %%
 mine = gk.exercises.variant("double_slider_graphical", student)
