@@ -117,7 +117,7 @@ def worksheet(doc: Doc, s: Subject, entry: dict, c, i: int, *, find=True, from_m
     if asks_analytical(s, from_motion):
         analytical_room(doc, s)
     if find:
-        answer_room(doc, s)
+        answer_room(doc, s, both=asks_analytical(s, from_motion))
 
 
 def asks_analytical(s: Subject, from_motion: bool = False) -> bool:
@@ -192,8 +192,8 @@ def motion_room(doc: Doc, s: Subject, entry: dict):
                       "of inertia about G, and h = |T|/|F|, to the side that reproduces the torque's sense")
 
 
-def answer_room(doc: Doc, s: Subject):
-    """What to find, with an empty cell for each answer."""
+def answer_room(doc: Doc, s: Subject, both: bool = False):
+    """What to find, with an empty cell for each answer (``both``: the sheet asks for the analytical route too)."""
     r = s.result
     rows = [[M.name(r.name_of(a, b)), "", ""] for a, b in r.forces]
     d = s.mech.driver
@@ -201,4 +201,6 @@ def answer_room(doc: Doc, s: Subject):
     doc.heading(2, "Answers")
     doc.table(["find", "magnitude", "direction [°] or sense"], rows, "lll",
               caption="Every joint force (magnitude and direction) and the driving "
-                      + ("torque" if d.crank else "force") + ", read off your polygons", boxed=True, tall=True)
+                      + ("torque" if d.crank else "force") + ", read off your polygons"
+                      + (" and found again by your equations: the two routes agree" if both else ""),
+              boxed=True, tall=True)

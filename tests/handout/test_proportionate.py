@@ -81,11 +81,16 @@ def test_a_sheet_that_asks_for_both_routes_has_room_for_the_analytical_one(name,
     said = " ".join(M.to_text(r) if not isinstance(r, str) else r for b in doc["blocks"] if b["kind"] == "text"
                     for r in b["runs"])
     mech = subject(name).mech
+    answers = next(b for b in doc["blocks"] if b["kind"] == "table" and b["caption"]
+                   and "".join(r if isinstance(r, str) else M.to_text(r) for r in b["caption"]).startswith("Every"))
+    caption = "".join(r if isinstance(r, str) else M.to_text(r) for r in answers["caption"])
     if asked:
         assert "both analytically and graphically" in said
         assert [label.split(".")[0] for label in steps] == [f"Step {n}" for n, _ in equilibrium_steps(mech)]
+        assert "found again by your equations" in caption  # the answers come from both, not the polygons alone
     else:
         assert steps == []
+        assert "equations" not in caption
 
 
 @pytest.mark.parametrize("name", ["double_slider_graphical", "shaper_polygons", "fourbar_polygons"])
