@@ -57,7 +57,7 @@ from graphkin.problem import FieldReader, Problem, build_problem
 from graphkin.problem.fields import missing, set_field
 from graphkin.problem.study_table import MAX_DESIGNS, StudyTable, read_study
 
-__all__ = ["MAX_DESIGNS", "Design", "Study", "VaryError", "merit", "study"]
+__all__ = ["MAX_DESIGNS", "Design", "Study", "VaryError", "merit", "solve_grid", "stated", "study"]
 
 BATCH = CHUNK
 """Design-positions solved together: as many whole designs as fit (at least one). Their arrays (a few MB) are
@@ -183,6 +183,18 @@ def _problem_data(problem) -> tuple[dict, str, Path | None]:
         return tomllib.loads(read_text(path, "problem", shown=name)), name, path
     except tomllib.TOMLDecodeError as exc:
         raise GraphkinError(f"{name}: is not valid TOML ({exc})") from None
+
+
+def stated(problem) -> StudyTable | None:
+    """The ``[study]`` table of a problem (a catalog name, a file or its data), read and checked; None if it has none.
+
+    Raises
+    ------
+    ProblemFileError
+        An entry of the table at fault, named ``study.FIELD``.
+    """
+    data, file, _ = _problem_data(problem)
+    return read_study(FieldReader(file), data["study"], data) if "study" in data else None
 
 
 def _grid(data: dict, vary) -> tuple[tuple, tuple]:

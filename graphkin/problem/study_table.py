@@ -26,7 +26,7 @@ from typing import Any
 from graphkin.errors import GraphkinError
 from graphkin.problem.fields import missing
 
-__all__ = ["MAX_DESIGNS", "StudyTable", "read_study", "vary_values"]
+__all__ = ["FORM", "MAX_DESIGNS", "StudyTable", "parse_values", "read_study"]
 
 MAX_DESIGNS = 100_000
 """The most designs one study solves (the product of the numbers of values of its fields)."""
@@ -35,10 +35,14 @@ KEYS = ("vary", "n", "Cs", "best", "require", "optimize")
 """The fields of a ``[study]`` table."""
 
 _NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
-_RANGE = re.compile(rf"\s*(?P<a>{_NUMBER})\s*\.\.\s*(?P<b>{_NUMBER})\s+(?P<unit>\S(?:.*\S)?)\s*:\s*(?P<n>\d+)\s*")
+_RANGE = re.compile(r"\s*(?P<a>[-+]?[\d.]+(?:[eE][-+]?\d+)?)\s*\.\.\s*(?P<b>[-+]?[\d.]+(?:[eE][-+]?\d+)?)"
+                    r"\s+(?P<unit>\S(?:.*\S)?)\s*:\s*(?P<n>\d+)\s*")
 """``FROM..TO UNIT:N``: two numbers, the unit they are in, and how many equally spaced values from one to the other."""
 _VALUE = re.compile(rf"\s*{_NUMBER}\s*(?:[^\s,\d.+-][^,]*)?")
 """One value of a list written on one line: a number and its unit (``2 kg``)."""
+
+FORM = 'FROM..TO UNIT:N (e.g. "2..4 kg:11") or a list V1, V2, ... (e.g. "2 kg, 3 kg, 5 kg")'
+"""How the values of a varied field are written, for messages."""
 
 
 @dataclass(frozen=True)
@@ -69,36 +73,33 @@ class StudyTable:
     optimize: str | None = None
 
 
-def vary_values(text: str, label: str) -> list[str]:
+def parse_values(text: str) -> list[str] | None:
     """The values of one varied field written as text: ``"FROM..TO UNIT:N"`` or ``"2 kg, 3 kg, 5 kg"``.
-
-    Parameters
-    ----------
-    text : str
-        The values.
-    label : str
-        What messages call them (``--vary 'links[1].mass=...'``, ``study.vary.links[1].mass``).
 
     Returns
     -------
-    list of str
-        The values as a problem file writes them (``"62.5 mm"``); a range's as ``f"{x!r} {unit}"``.
+    list of str or None
+        The values as a problem file writes them (``"62.5 mm"``; a range's as ``f"{x!r} {unit}"``); None if the
+        text is neither form (:data:`FORM`).
 
     Raises
     ------
     GraphkinError
-        Naming ``label`` if the text is neither, or N < 1, or a range whose N and ends disagree.
+        A range whose ends are not numbers, or whose N (1 to :data:`MAX_DESIGNS`) and ends disagree.
     """
     import numpy as np
 
-    m = _RANGE.fullmatch(text) if isinstance(text, str) else None
+    if not isinstance(text, str):
+        return None
+    m = _RANGE.fullmatch(text)
     if m is None:
-        parts = text.split(",") if isinstance(text, str) and ".." not in text else []
-        if parts and all(_VALUE.fullmatch(p) for p in parts):
-            return [p.strip() for p in parts]
-        raise GraphkinError(f"{label}: write the values FROM..TO UNIT:N (e.g. \"2..4 kg:11\") or as a list "
-                            f"(\"2 kg, 3 kg, 5 kg\"), got {text!r}")
-    a, b, n = float(m["a"]), float(m["b"]), int(m["n"])
+        parts = text.split(",") if ".." not in text else []
+        return [p.strip() for p in parts] if parts and all(_VALUE.fullmatch(p) for p in parts) else None
+    try:
+        a, b = float(m["a"]), float(m["b"])
+    except ValueError:
+        raise GraphkinError(f"{m['a']}..{m['b']} is not a range of two numbers") from None
+    n = int(m["n"])
     why = None
     if not 1 <= n <= MAX_DESIGNS:
         why = f"N = {n}: give from 1 to {MAX_DESIGNS:,} values"
@@ -107,7 +108,7 @@ def vary_values(text: str, label: str) -> list[str]:
     elif n > 1 and a == b:
         why = f"{n} values from {m['a']} to {m['b']} would all be equal; give N = 1 or two different ends"
     if why:
-        raise GraphkinError(f"{label}: {why}")
+        raise GraphkinError(why)
     return [f"{x!r} {m['unit']}" for x in np.linspace(a, b, n).tolist()]
 
 
@@ -147,9 +148,11 @@ def read_study(rd, value: Any, data: dict) -> StudyTable:
             raise rd.fail(where, f"the problem has no {gap}")
         if isinstance(values, str):
             try:
-                values = vary_values(values, where)
+                values = parse_values(values)
             except GraphkinError as exc:
-                raise rd.fail(where, str(exc).removeprefix(f"{where}: ")) from None
+                raise rd.fail(where, f"{values!r}: {exc}") from None
+            if values is None:
+                raise rd.fail(where, f"write its values {FORM}, got {vary[field]!r}")
         elif not isinstance(values, list) or not values:
             raise rd.fail(where, f'give a range "FROM..TO UNIT:N" or a list of one or more values, got {values!r:.60}')
         out[field] = tuple(values)
