@@ -81,7 +81,6 @@ def run(args) -> int:
     from graphkin.cycle.optimum import objective_of, optimum
     from graphkin.cycle.study import VaryError, stated, study
     from graphkin.files import check_destination, json_text, write_text
-    from graphkin.problem.toml_text import toml_text
     from graphkin.report.study import format_study, study_csv, study_data, study_in
     from graphkin.units.systems import unit_system
 
@@ -180,8 +179,7 @@ def run(args) -> int:
         values = best_one.values if best_one is not None else s.designs[choice.index].values
         what = "the optimum" if best_one is not None else f"design {choice.index + 1}, the best of the grid,"
         shown = ", ".join(f"{f} = {v}" for f, v in zip(s.fields, values))
-        write_text(args.output, toml_text(s.design_data(values), f"{what} of graphkin study {args.problem}:\n"
-                                          f"{shown}"), "-o")
+        s.write_design(values, args.output, f"{what} of graphkin study {args.problem}:\n{shown}")
         print(f"design written to {args.output}", file=sys.stderr)
     print(json_text(data if units is None else study_in(data, units)) if args.json else format_study(data, units))
     return 0

@@ -157,6 +157,29 @@ class Study:
         shown = ", ".join(f"{f}={v}" for f, v in zip(self.fields, values))
         return build_problem(self.design_data(values), file=f"{self.problem} ({shown})", base=self.base)
 
+    def write_design(self, which, path, comment: str | None = None) -> Path:
+        """Write one design as a problem file (atomically) that ``graphkin solve``, ``cycle``, ``handout`` and
+        ``explore`` read, and return its path: ``gk.handout.build(s.write_design(3, "design.toml"))``.
+
+        Parameters
+        ----------
+        which : int or tuple
+            As for :meth:`design_data`.
+        path : str or Path
+            The file (``.toml``); a load's ``csv`` table is named as the study's file names it, so write the design
+            beside that file if it has one.
+        comment : str, optional
+            Lines written first as ``#`` comments (default: the study and the design's values).
+        """
+        from graphkin.files import write_text
+        from graphkin.problem.toml_text import toml_text
+
+        values = self.designs[which].values if isinstance(which, (int, np.integer)) else tuple(which)
+        if comment is None:
+            comment = f"a design of the study of {self.problem}: " + ", ".join(
+                f"{f} = {v}" for f, v in zip(self.fields, values))
+        return write_text(path, toml_text(self.design_data(values), comment), "design")
+
     def optimum(self, objective: str, require=(), **options):
         """The design between the grid's values that minimises (or maximises) one figure of merit under limits,
         by ``scipy.optimize`` started from the best design of the grid (:func:`graphkin.cycle.optimum.optimum`).
