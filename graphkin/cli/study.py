@@ -124,11 +124,6 @@ def run(args) -> int:
         if Path(args.output).suffix.lower() != ".toml":
             raise GraphkinError(f"-o {args.output}: a problem file's name ends in .toml")
         check_destination(args.output, "-o")
-    if aim:
-        from graphkin.optional import require
-
-        require("scipy.optimize", f"{aim_label} {aim!r}")
-
     def solved(grid):
         try:
             return study(args.problem, None if own and grid is None else grid, n=args.n, Cs=args.cs)
@@ -154,6 +149,17 @@ def run(args) -> int:
         probe = solved({field: list(values[:1]) for field, values in grid.items()})
         if probe.designs[0].joint_peaks:
             chosen(probe)
+    if aim:
+        from graphkin.optional import missing, require
+
+        if aim_label == "--optimize":
+            require("scipy.optimize", f"{aim_label} {aim!r}")
+        else:  # the file's table asks for it: without scipy the grid is still studied, and a note says why not more
+            try:
+                require("scipy.optimize", f"{aim_label} {aim!r}")
+            except GraphkinError:
+                print(f"note: {missing('scipy', f'{aim_label} {aim!r}')}; studying the grid only", file=sys.stderr)
+                aim = None
     with Progress(f"studying {args.problem}"):
         s = solved(None if own else vary)
     choice, limits = chosen(s)
@@ -162,8 +168,9 @@ def run(args) -> int:
         with Progress(f"optimising {args.problem}"):
             best_one = optimum(s, aim, limits, label=aim_label)
     data = study_data(s, choice, best_one)
-    if args.output and best_one is None and choice.index is None:
-        raise GraphkinError(f"-o {args.output}: no design to write: {choice.why}")
+    if args.output and best_one is None and (choice is None or choice.index is None):
+        raise GraphkinError(f"-o {args.output}: no design to write: "
+                            + (choice.why if choice is not None else "no best design was asked for, and no optimum"))
     if args.figure:  # drawn before anything is written: a figure that cannot be drawn leaves no table behind
         from graphkin import draw
 
