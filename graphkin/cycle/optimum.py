@@ -167,8 +167,6 @@ def optimum(study, objective: str, require=(), *, maxiter: int = 100, tol: float
     >>> o.design.torque_peak <= min(d.torque_peak for d in s.designs)   # doctest: +SKIP
     True
     """
-    from graphkin.cycle.study import solve_grid
-
     name, sense = objective_of(study, objective, label)
     limits = tuple(r if isinstance(r, Requirement) else requirement(study, r) for r in require)
     axes = [field_axis(values) for values in study.grid]
@@ -208,11 +206,7 @@ def optimum(study, objective: str, require=(), *, maxiter: int = 100, tol: float
 
     def solve(xs: list) -> list:
         """The designs at the points ``xs`` (each a value of every field), as one batch."""
-        grid = [sorted({float(x[k]) for x in xs}) for k in range(len(axes))]
-        combos = [tuple(grid[k].index(float(x[k])) for k in range(len(axes))) for x in xs]
-        values = tuple(tuple(_value(v, units[k]) for v in g) for k, g in enumerate(grid))
-        designs, _, _ = solve_grid(study.data, study.problem, study.base, study.fields, values, combos, study.n,
-                                   study.Cs)
+        designs = study.solve_values([tuple(_value(float(v), units[k]) for k, v in enumerate(x)) for x in xs])
         solved[0] += len(designs)
         return list(designs)
 

@@ -45,10 +45,11 @@ from graphkin.cycle._sampling import sweep_positions
 from graphkin.cycle.choice import best
 from graphkin.cycle.flywheel import check_Cs
 from graphkin.cycle.merit import Design, failed, merit, unbuilt
+from graphkin.cycle.optimum import optimum as find_optimum
 from graphkin.cycle.sweep import Cycle, sweep
 from graphkin.cycle.turn import TURN, closing_step, steps, weights
 from graphkin.errors import GraphkinError, ProblemFileError
-from graphkin.files import read_text
+from graphkin.files import read_text, write_text
 from graphkin.geometry import zcross
 from graphkin.kinematics.solver import CHUNK
 from graphkin.model import Prismatic, Revolute
@@ -56,6 +57,7 @@ from graphkin.model.names import force_name
 from graphkin.problem import FieldReader, Problem, build_problem
 from graphkin.problem.fields import missing, set_field
 from graphkin.problem.study_table import MAX_DESIGNS, StudyTable, read_study
+from graphkin.problem.toml_text import toml_text
 
 __all__ = ["MAX_DESIGNS", "Design", "Study", "VaryError", "merit", "solve_grid", "stated", "study"]
 
@@ -171,9 +173,6 @@ class Study:
         comment : str, optional
             Lines written first as ``#`` comments (default: the study and the design's values).
         """
-        from graphkin.files import write_text
-        from graphkin.problem.toml_text import toml_text
-
         values = self.designs[which].values if isinstance(which, (int, np.integer)) else tuple(which)
         if comment is None:
             comment = f"a design of the study of {self.problem}: " + ", ".join(
@@ -186,9 +185,16 @@ class Study:
 
         ``s.optimum("torque_peak", ["transmission_angle_min >= 40 deg"])``; ``"maximise transmission_angle_min"``.
         """
-        from graphkin.cycle.optimum import optimum
+        return find_optimum(self, objective, require, **options)
 
-        return optimum(self, objective, require, **options)
+    def solve_values(self, rows) -> tuple:
+        """The designs with these values of the fields (each row one value per field, as the file writes them),
+        solved together as one batch, each as :func:`study` solves its grid's: :class:`Design` s, in order."""
+        rows = [tuple(r) for r in rows]
+        grid = tuple(list(dict.fromkeys(map(_hashable, (r[k] for r in rows)))) for k in range(len(self.fields)))
+        combos = [tuple(grid[k].index(_hashable(r[k])) for k in range(len(self.fields))) for r in rows]
+        values = tuple(tuple(_unhashable(v) for v in g) for g in grid)
+        return solve_grid(self.data, self.problem, self.base, self.fields, values, combos, self.n, self.Cs)[0]
 
 
 def _problem_data(problem) -> tuple[dict, str, Path | None]:
@@ -206,6 +212,14 @@ def _problem_data(problem) -> tuple[dict, str, Path | None]:
         return tomllib.loads(read_text(path, "problem", shown=name)), name, path
     except tomllib.TOMLDecodeError as exc:
         raise GraphkinError(f"{name}: is not valid TOML ({exc})") from None
+
+
+def _hashable(v):
+    return tuple(_hashable(x) for x in v) if isinstance(v, list) else v
+
+
+def _unhashable(v):
+    return [_unhashable(x) for x in v] if isinstance(v, tuple) else v
 
 
 def stated(problem) -> StudyTable | None:
