@@ -120,3 +120,16 @@ def test_a_value_the_table_gives_that_the_problem_rejects_names_the_tables_field
     with pytest.raises(ProblemFileError) as e:
         study(data)
     assert e.value.field == "study.vary.links[1].mass" and "-1 kg" in str(e.value)
+
+
+def test_a_design_is_one_call_from_its_handout_and_explorer(cutter, tmp_path):
+    from graphkin import handout
+    from graphkin.optional import available
+
+    path = cutter.write_design(3, tmp_path / "design.toml")
+    doc = handout.build(str(path), at="30 deg")
+    assert doc["title"] == load_problem(path).title and "[study]" not in path.read_text(encoding="utf-8")
+    if available("ipywidgets") and available("anywidget"):
+        from graphkin.widgets import explore
+
+        assert explore(cutter.design(3), n=12).problem.mechanism.link(3).mass == 4.0
