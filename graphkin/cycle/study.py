@@ -24,10 +24,8 @@ numbers are those of a sweep of it alone, to rounding (:mod:`graphkin.analytical
 share a batch -- a gear train, a load that varies over the cycle (a table, a spring), values given at one
 position -- is swept on its own, and :attr:`Study.why_not_vectorised` says how many and why.
 
-A problem file may state its study in a ``[study]`` table (:mod:`graphkin.problem.study_table`), which
-:func:`study` reads when no ``vary`` is given. A study's design is an ordinary problem one call away
-(:meth:`Study.design`, :meth:`Study.write_design`), and :meth:`Study.optimum` finds the best design between the
-grid's values with scipy (:mod:`graphkin.cycle.optimum`).
+A file's ``[study]`` table (:mod:`graphkin.problem.study_table`) is read when no ``vary`` is given; a design is a
+problem (:meth:`Study.design`); :meth:`Study.optimum` searches between the grid's values (:mod:`.optimum`).
 """
 
 from __future__ import annotations
