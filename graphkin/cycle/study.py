@@ -25,7 +25,7 @@ share a batch -- a gear train, a load that varies over the cycle (a table, a spr
 position -- is swept on its own, and :attr:`Study.why_not_vectorised` says how many and why.
 
 A file's ``[study]`` table (:mod:`graphkin.problem.study_table`) is read when no ``vary`` is given; a design is a
-problem (:meth:`Study.design`); :meth:`Study.optimum` searches between the grid's values (:mod:`.optimum`).
+problem (:meth:`Study.design`); :meth:`Study.optimum` searches between the grid's values (:mod:`graphkin.cycle.optimum`).
 """
 
 from __future__ import annotations
