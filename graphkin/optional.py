@@ -13,6 +13,7 @@ ipywidgets, anywidget,  ``notebook``    the explorer and the exercise box
 IPython
 voila                   ``explore``     ``graphkin explore``
 nbformat                ``platforms``   ``graphkin exercise export --to otter|nbgrader``
+scipy                   ``study``       a design study's optimum (``graphkin study --optimize``)
 ======================  ==============  ===========================================
 """
 
@@ -24,7 +25,8 @@ import importlib.util
 from graphkin.errors import GraphkinError
 
 EXTRAS = {"ipywidgets": "notebook", "anywidget": "notebook", "traitlets": "notebook", "IPython": "notebook",
-          "voila": "explore", "nbformat": "platforms"}
+          "voila": "explore", "nbformat": "platforms",
+          "scipy": "study"}
 """The extra (``pip install 'graphkin[EXTRA]'``) that installs each optional package."""
 
 

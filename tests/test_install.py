@@ -179,7 +179,8 @@ def test_the_extras_bring_what_their_users_expect():
     assert extras["notebook"] | {"jupyterlab"} <= extras["lab"]
     assert "voila" in extras["explore"] and "jupyterlab" not in extras["explore"]
     assert "nbformat" in extras["platforms"]
-    assert set().union(*(extras[e] for e in ("notebook", "lab", "explore", "platforms"))) <= extras["all"]
+    assert extras["study"] == {"scipy"}  # Study.optimum and graphkin study --optimize, nothing more
+    assert set().union(*(extras[e] for e in ("notebook", "lab", "explore", "platforms", "study"))) <= extras["all"]
     # make e2e drives the lessons cell by cell in JupyterLab and as pages in Voilà.
     assert {"jupyterlab", "voila", "playwright"} <= extras["e2e"]
 

@@ -36,6 +36,7 @@ FAMILIES = {
     "single_link": "single link (a crank alone)",
     "slider_crank_friction": "offset slider-crank with slider friction",
     "strip_cutter": "four-bar with a cutting load",
+    "strip_cutter_study": "four-bar with a cutting load: a design study of its crank and coupler ([study])",
     "vertical_engine_sarkar": "vertical engine at speed, short rod (l = 4 r): the effective turning moment, weight "
                               "included",
     "vertical_engine_gudgeon_expertsmind": "vertical engine at speed: gudgeon-pin load and cylinder-wall thrust, weight "

@@ -23,10 +23,15 @@ design-positions at a time; the figures of merit are read off the (designs, posi
 numbers are those of a sweep of it alone, to rounding (:mod:`graphkin.analytical.designs`). A design that cannot
 share a batch -- a gear train, a load that varies over the cycle (a table, a spring), values given at one
 position -- is swept on its own, and :attr:`Study.why_not_vectorised` says how many and why.
+
+A file's ``[study]`` table (:mod:`graphkin.problem.study_table`) is read when no ``vary`` is given; a design is a
+problem (:meth:`Study.design`); :meth:`Study.optimum` searches between the grid's values (:mod:`graphkin.cycle.optimum`).
 """
 
 from __future__ import annotations
 
+import copy
+import dataclasses
 import itertools
 import math
 import tomllib
@@ -42,22 +47,22 @@ from graphkin.analytical.designs import Batch, batch_key, numbers, solve_designs
 from graphkin.cycle._sampling import sweep_positions
 from graphkin.cycle.choice import best
 from graphkin.cycle.flywheel import check_Cs
+from graphkin.cycle.merit import Design, failed, merit, unbuilt
+from graphkin.cycle.optimum import optimum as find_optimum
 from graphkin.cycle.sweep import Cycle, sweep
 from graphkin.cycle.turn import TURN, closing_step, steps, weights
 from graphkin.errors import GraphkinError, ProblemFileError
-from graphkin.files import read_text
+from graphkin.files import read_text, write_text
 from graphkin.geometry import zcross
 from graphkin.kinematics.solver import CHUNK
 from graphkin.model import Prismatic, Revolute
 from graphkin.model.names import force_name
-from graphkin.notation import position_text
-from graphkin.problem import build_problem
+from graphkin.problem import FieldReader, Problem, build_problem
 from graphkin.problem.fields import missing, set_field
+from graphkin.problem.study_table import MAX_DESIGNS, StudyTable, read_study
+from graphkin.problem.toml_text import toml_text
 
-__all__ = ["MAX_DESIGNS", "Design", "Study", "VaryError", "merit", "study"]
-
-MAX_DESIGNS = 100_000
-"""The most designs one study solves (the product of the numbers of values of its fields)."""
+__all__ = ["MAX_DESIGNS", "Design", "Study", "VaryError", "merit", "solve_grid", "stated", "study"]
 
 BATCH = CHUNK
 """Design-positions solved together: as many whole designs as fit (at least one). Their arrays (a few MB) are
@@ -70,58 +75,6 @@ class VaryError(GraphkinError):
     def __init__(self, field: str, message: str):
         self.field = field
         super().__init__(f"vary {field}: {message}")
-
-
-@dataclass(frozen=True)
-class Design:
-    """One design of a study and its figures of merit over the cycle (SI units; nan where not defined).
-
-    Attributes
-    ----------
-    values : tuple
-        The value of each varied field, in the order of :attr:`Study.fields`, as given (problem-file values).
-    torque_peak : float
-        Largest |T1j| over the cycle [N·m] (a slider driver: |F1j| [N]).
-    torque_rms : float
-        Root mean square of the driving effort, √(mean T²) by the cycle's trapezoidal rule
-        (:meth:`Cycle.mean`) [N·m] (or [N]).
-    joint_peaks : dict of str to float
-        Largest |F| at each joint over the cycle [N], by the force's name (``"F12"``, ``"F23"``, ...).
-    I_s : float
-        The flywheel's system inertia for the study's C_s [kg·m²] (:meth:`Cycle.flywheel`); nan where none can
-        be sized, and :attr:`no_flywheel` says why.
-    shaking_force_peak : float
-        Largest |Σ F_j1| on the frame [N] (:meth:`Cycle.shaking_force`).
-    shaking_moment_peak : float
-        Largest |M| of the mechanism on the frame about the origin [N·m] (:meth:`Cycle.shaking_moment`).
-    transmission_angle_min : float
-        Smallest transmission angle μ over the cycle [rad] (folded to [0, π/2]); nan for a linkage that is not
-        a crank-driven four-bar of revolutes.
-    failure : str or None
-        Where and why the design cannot be assembled over the whole cycle (its first such position); None if it
-        can.
-    failed_at : float
-        That position, θ [rad] or s [m]; nan if the design assembles everywhere.
-    no_flywheel : str or None
-        Why no flywheel can be sized (:meth:`Cycle.why_no_flywheel`); None if one can.
-    """
-
-    values: tuple
-    torque_peak: float
-    torque_rms: float
-    joint_peaks: Mapping[str, float]
-    I_s: float
-    shaking_force_peak: float
-    shaking_moment_peak: float
-    transmission_angle_min: float
-    failure: str | None = None
-    failed_at: float = math.nan
-    no_flywheel: str | None = None
-
-    @property
-    def ok(self) -> bool:
-        """True if the design assembles at every position of its cycle."""
-        return self.failure is None
 
 
 @dataclass(frozen=True)
@@ -148,6 +101,13 @@ class Study:
         How many designs were swept one by one, and why; None when none was.
     crank : bool
         True if the driver is a crank (the effort is a torque [N·m]); False for a slider (a force [N]).
+    data : dict or None
+        The problem file's data, without its ``[study]`` table: each design is it with its values put in
+        (:meth:`design_data`).
+    base : Path or None
+        The problem file's path (a load's ``csv`` table is read from its folder).
+    stated : StudyTable or None
+        The file's ``[study]`` table, if it has one (its ``best``, ``require`` and ``optimize``).
     """
 
     problem: str
@@ -159,6 +119,9 @@ class Study:
     vectorised: bool
     why_not_vectorised: str | None
     crank: bool = True
+    data: Mapping | None = dataclasses.field(default=None, repr=False, compare=False)
+    base: Any = dataclasses.field(default=None, repr=False, compare=False)
+    stated: StudyTable | None = dataclasses.field(default=None, repr=False, compare=False)
 
     @property
     def shape(self) -> tuple:
@@ -169,6 +132,72 @@ class Study:
         """The design with the least ``minimise`` among those that meet ``require``
         (:func:`graphkin.cycle.choice.best`): ``s.best("torque_peak", ["transmission_angle_min >= 40 deg"])``."""
         return best(self, minimise, require)
+
+    def design_data(self, which) -> dict:
+        """The problem file's data of one design: the file (less its ``[study]``) with the design's values put in.
+
+        Parameters
+        ----------
+        which : int or tuple
+            The design's index in :attr:`designs`, or the value of each field (as the file writes them).
+        """
+        values = self.designs[which].values if isinstance(which, (int, np.integer)) else tuple(which)
+        if len(values) != len(self.fields):
+            raise GraphkinError(f"design: give one value for each of the {len(self.fields)} fields "
+                                f"({', '.join(self.fields)}), got {values!r:.80}")
+        out = copy.deepcopy(dict(self.data))
+        for f, v in zip(self.fields, values):
+            set_field(out, f, copy.deepcopy(v))
+        return out
+
+    def design(self, which) -> Problem:
+        """One design as an ordinary :class:`~graphkin.problem.Problem`: ``gk.solve``, ``gk.sweep``,
+        ``gk.handout`` and ``gk.explore`` take it (``which`` as for :meth:`design_data`).
+
+        >>> s = study("strip_cutter", {"links[1].mass": ["2 kg", "4 kg"]}, n=36)
+        >>> s.design(1).mechanism.link(3).mass
+        4.0
+        """
+        values = self.designs[which].values if isinstance(which, (int, np.integer)) else tuple(which)
+        shown = ", ".join(f"{f}={v}" for f, v in zip(self.fields, values))
+        return build_problem(self.design_data(values), file=f"{self.problem} ({shown})", base=self.base)
+
+    def write_design(self, which, path, comment: str | None = None) -> Path:
+        """Write one design as a problem file (atomically) that ``graphkin solve``, ``cycle``, ``handout`` and
+        ``explore`` read, and return its path: ``gk.handout.build(s.write_design(3, "design.toml"))``.
+
+        Parameters
+        ----------
+        which : int or tuple
+            As for :meth:`design_data`.
+        path : str or Path
+            The file (``.toml``); a load's ``csv`` table is named as the study's file names it, so write the design
+            beside that file if it has one.
+        comment : str, optional
+            Lines written first as ``#`` comments (default: the study and the design's values).
+        """
+        values = self.designs[which].values if isinstance(which, (int, np.integer)) else tuple(which)
+        if comment is None:
+            comment = f"a design of the study of {self.problem}: " + ", ".join(
+                f"{f} = {v}" for f, v in zip(self.fields, values))
+        return write_text(path, toml_text(self.design_data(values), comment), "design")
+
+    def optimum(self, objective: str, require=(), **options):
+        """The design between the grid's values that minimises (or maximises) one figure of merit under limits,
+        by ``scipy.optimize`` started from the best design of the grid (:func:`graphkin.cycle.optimum.optimum`).
+
+        ``s.optimum("torque_peak", ["transmission_angle_min >= 40 deg"])``; ``"maximise transmission_angle_min"``.
+        """
+        return find_optimum(self, objective, require, **options)
+
+    def solve_values(self, rows) -> tuple:
+        """The designs with these values of the fields (each row one value per field, as the file writes them),
+        solved together as one batch, each as :func:`study` solves its grid's: :class:`Design` s, in order."""
+        rows = [tuple(r) for r in rows]
+        grid = tuple(list(dict.fromkeys(map(_hashable, (r[k] for r in rows)))) for k in range(len(self.fields)))
+        combos = [tuple(grid[k].index(_hashable(r[k])) for k in range(len(self.fields))) for r in rows]
+        values = tuple(tuple(_unhashable(v) for v in g) for g in grid)
+        return solve_grid(self.data, self.problem, self.base, self.fields, values, combos, self.n, self.Cs)[0]
 
 
 def _problem_data(problem) -> tuple[dict, str, Path | None]:
@@ -186,6 +215,26 @@ def _problem_data(problem) -> tuple[dict, str, Path | None]:
         return tomllib.loads(read_text(path, "problem", shown=name)), name, path
     except tomllib.TOMLDecodeError as exc:
         raise GraphkinError(f"{name}: is not valid TOML ({exc})") from None
+
+
+def _hashable(v):
+    return tuple(_hashable(x) for x in v) if isinstance(v, list) else v
+
+
+def _unhashable(v):
+    return [_unhashable(x) for x in v] if isinstance(v, tuple) else v
+
+
+def stated(problem) -> StudyTable | None:
+    """The ``[study]`` table of a problem (a catalog name, a file or its data), read and checked; None if it has none.
+
+    Raises
+    ------
+    ProblemFileError
+        An entry of the table at fault, named ``study.FIELD``.
+    """
+    data, file, _ = _problem_data(problem)
+    return read_study(FieldReader(file), data["study"], data) if "study" in data else None
 
 
 def _grid(data: dict, vary) -> tuple[tuple, tuple]:
@@ -221,73 +270,24 @@ def _design_problem(data: dict, fields: tuple, values: tuple, file: str, base):
     return build_problem(trial, file=f"{file} ({shown})", base=base)
 
 
-def _unbuilt(values: tuple, why: str) -> Design:
-    """A design whose values, together, make no mechanism (each alone does): marked, its figures nan."""
-    nan = math.nan
-    return Design(values, nan, nan, {}, nan, nan, nan, nan, why, nan, "the design cannot be built")
-
-
-def _failed(values: tuple, names: list, count: int, q: np.ndarray, i: int, crank: bool, reason: str) -> Design:
-    """A design that has no solution at ``count`` of the positions ``q``, the first ``q[i]``, for ``reason``."""
-    nan = math.nan
-    return Design(values, nan, nan, dict.fromkeys(names, nan), nan, nan, nan, nan,
-                  f"no solution at {count} of the {len(q)} positions, the first at {position_text(q[i], crank)}: "
-                  f"{reason}", float(q[i]), "the design cannot be assembled over the whole cycle")
-
-
-def merit(cycle: Cycle, values: tuple, Cs: float) -> Design:
-    """The figures of merit of one design's cycle (see :class:`Design`).
-
-    Parameters
-    ----------
-    cycle : Cycle
-        The design swept over its cycle.
-    values : tuple
-        The design's values of the varied fields.
-    Cs : float
-        Coefficient of speed fluctuation for the flywheel.
-    """
-    names = [cycle.analysis.name_of(i, j) for (i, j) in cycle.analysis.forces]
-    bad = np.flatnonzero(~cycle.valid)
-    if len(bad):
-        i = int(bad[0])
-        return _failed(values, names, len(bad), cycle.q, i, cycle.problem.mechanism.driver.crank,
-                       cycle.analysis.reason(i))
-    T = cycle.torque
-    peaks = cycle.peaks().forces
-    why = cycle.why_no_flywheel()
-    try:
-        mu = float(np.min(cycle.transmission_angle()))
-    except GraphkinError:  # not a crank-driven four-bar: μ is not defined (the joint-force index is)
-        mu = math.nan
-    return Design(
-        values=values,
-        torque_peak=float(np.max(np.abs(T))),
-        torque_rms=math.sqrt(cycle.mean(T * T)),
-        joint_peaks={name: peaks[name].value for name in names},
-        I_s=math.nan if why else cycle.flywheel(Cs).I_s,
-        shaking_force_peak=float(np.max(np.hypot(*cycle.shaking_force().T))),
-        shaking_moment_peak=float(np.max(np.abs(cycle.shaking_moment()))),
-        transmission_angle_min=mu,
-        no_flywheel=why,
-    )
-
-
-def study(problem, vary: Mapping[str, Any], *, n: int | None = None, Cs: float = 0.05) -> Study:
+def study(problem, vary: Mapping[str, Any] | None = None, *, n: int | None = None, Cs: float | None = None) -> Study:
     """Solve a problem over its cycle for every combination of the values of some of its fields.
 
     Parameters
     ----------
     problem : str, Path or dict
         A catalog name, a problem file, or a problem file's data as ``tomllib`` reads it.
-    vary : dict of str to list
+    vary : dict of str to list, optional
         Each field's path (:mod:`graphkin.problem.fields`; ``links[0]`` is the file's first ``[[links]]``) and
         its values as the problem file writes them, with units: ``{"links[0].mass": ["2 kg", "3 kg"],
-        "links[0].points.A": [["80 mm", "0 mm"], ["90 mm", "0 mm"]]}``.
+        "links[0].points.A": [["80 mm", "0 mm"], ["90 mm", "0 mm"]]}``. Default: the file's ``[study]`` table
+        (:mod:`graphkin.problem.study_table`).
     n : int, optional
-        Equally spaced crank angles per design (:func:`graphkin.cycle.sweep`); default the file's positions.
+        Equally spaced crank angles per design (:func:`graphkin.cycle.sweep`); default the ``[study]`` table's,
+        else the file's positions.
     Cs : float, optional
-        Coefficient of speed fluctuation the flywheel of each design is sized for.
+        Coefficient of speed fluctuation the flywheel of each design is sized for; default the ``[study]``
+        table's, else 0.05.
 
     Returns
     -------
@@ -298,6 +298,8 @@ def study(problem, vary: Mapping[str, Any], *, n: int | None = None, Cs: float =
     ------
     VaryError
         A varied field the problem does not have, or a value it rejects (naming the field).
+    ProblemFileError
+        The same of a field the file's ``[study]`` table varies, naming it ``study.vary.FIELD``.
     GraphkinError
         Any other input at fault.
 
@@ -307,15 +309,47 @@ def study(problem, vary: Mapping[str, Any], *, n: int | None = None, Cs: float =
     >>> [round(d.torque_peak, 1) for d in s.designs]
     [324.6, 392.6]
     """
-    Cs = check_Cs(Cs)
     data, file, base = _problem_data(problem)
-    fields, grid = _grid(data, vary)
+    stated = None
+    if "study" in data:
+        rd = FieldReader(file)
+        stated = read_study(rd, data["study"], data)
+        data = {k: v for k, v in data.items() if k != "study"}  # each design is the file without its study
+    if vary is None and stated is None:
+        raise GraphkinError(f"study {file}: give the fields to vary (vary=..., --vary) or a [study] table in the "
+                            "problem file (docs/problem-files.md)")
+    own = vary is None
+    n = stated.n if n is None and stated is not None else n
+    Cs = check_Cs((stated.Cs if stated is not None and stated.Cs is not None else 0.05) if Cs is None else Cs)
+    try:
+        fields, grid = _grid(data, stated.vary if own else vary)
+        designs, why, crank = solve_grid(data, file, base, fields, grid,
+                                         itertools.product(*(range(len(v)) for v in grid)), n, Cs)
+    except VaryError as exc:
+        if not own:
+            raise
+        raise ProblemFileError(file, f"study.vary.{exc.field}", str(exc).removeprefix(f"vary {exc.field}: ")) from None
+    return Study(file, fields, grid, designs, n, Cs, why is None, why, crank, data, base, stated)
+
+
+def solve_grid(data: dict, file: str, base, fields: tuple, grid: tuple, combos, n: int | None, Cs: float):
+    """The designs ``combos`` (for each, the index of its value of each field in ``grid``), solved in batches.
+
+    Returns
+    -------
+    designs : tuple of Design
+        In the order of ``combos``.
+    why : str or None
+        How many designs were swept one by one, and why (:attr:`Study.why_not_vectorised`).
+    crank : bool
+        True if the driver is a crank.
+    """
     singles = [[_single(data, field, value, file, base) for value in values] for field, values in zip(fields, grid)]
     first = build_problem(data, file=file, base=base)
     positions: dict = {}
     changes = _changes(first, singles, n, positions)
     designs, batches, alone = {}, {}, {}
-    for index, at in enumerate(itertools.product(*(range(len(v)) for v in grid))):
+    for index, at in enumerate(combos):
         values = tuple(v[i] for v, i in zip(grid, at))
         if changes is not None:  # the file's numbers with each field's own put in (see _changes)
             own = dict(changes[0])
@@ -326,7 +360,7 @@ def study(problem, vary: Mapping[str, Any], *, n: int | None = None, Cs: float =
             try:
                 shape = _design_problem(data, fields, values, file, base)
             except GraphkinError as exc:  # each value builds alone: together these do not
-                designs[index] = _unbuilt(values, str(exc))
+                designs[index] = unbuilt(values, str(exc))
                 continue
             key, q = _batch_key(shape, n, positions)
             if q is None:
@@ -348,8 +382,7 @@ def study(problem, vary: Mapping[str, Any], *, n: int | None = None, Cs: float =
         reasons = sorted({key for _, _, key in alone.values()})
         why = (f"{len(alone)} of the {len(designs)} designs were swept one after another, not in a batch over "
                f"designs: {'; '.join(reasons)}")
-    crank = first.mechanism.driver.crank
-    return Study(file, fields, grid, tuple(designs[i] for i in range(len(designs))), n, Cs, not alone, why, crank)
+    return tuple(designs[i] for i in range(len(designs))), why, first.mechanism.driver.crank
 
 
 def _single(data: dict, field: str, value, file: str, base):
@@ -550,7 +583,7 @@ def _merits(shape, members: list, q: np.ndarray, Cs: float) -> dict:
     for d, (index, vals, _, w, _) in enumerate(members):
         bad = np.flatnonzero(~b.valid[d])
         if len(bad):
-            out[index] = _failed(vals, names, len(bad), q, int(bad[0]), mech.driver.crank, b.reason(d, int(bad[0])))
+            out[index] = failed(vals, names, len(bad), q, int(bad[0]), mech.driver.crank, b.reason(d, int(bad[0])))
             continue
         q_dot = np.full(N, w)
         # The design's own cycle's words for a flywheel it cannot have: for a valid design of a crank they follow

@@ -26,10 +26,11 @@ from graphkin.problem.problem import Problem
 from graphkin.problem.reader import FieldReader
 from graphkin.problem.shared import mechanism_once, read_once
 from graphkin.problem.stated import check_stated
+from graphkin.problem.study_table import read_study
 from graphkin.problem.tables import load_table
 
 _TOP = {"title", "source", "cite", "notes", "analysis", "gravity", "frame", "links", "joints", "driver", "loads", "assembly",
-        "given", "forward", "unknown", "asked"}
+        "given", "forward", "unknown", "asked", "study"}
 _ANALYSES = ("dynamic", "static")
 _LINK = {"number", "name", "points", "mass", "G", "I_G", "k", "shape"}
 _JOINT = {
@@ -265,6 +266,8 @@ def build_problem(data: Mapping[str, Any], *, file: str = "<problem>", base: str
         raise rd.fail("unknown", "a forward step needs the driver's effort; with [unknown] the driver carries none")
     effort = unknown.label(mech) if unknown is not None else mech.driver.symbol
     asked = books.asked(rd, data["asked"], mech, effort, forward is not None) if "asked" in data else ()
+    if "study" in data:  # read by a study (graphkin.cycle.study); checked here, so a bad entry is named at once
+        read_study(rd, data["study"], data)
     return Problem(file, mech, q, q_dot, q_ddot, given, str(data.get("title", "")), str(data.get("source", "")),
                    str(data.get("notes", "")), analysis, str(data.get("cite", "")), forward, unknown, asked)
 
