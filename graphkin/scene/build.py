@@ -35,7 +35,7 @@ from graphkin.scene.polygons import force_polygons
 from graphkin.scene.speed import PRESOLVED, linearity, parts
 from graphkin.units.systems import SI
 
-SCHEMA = 2
+SCHEMA = 3
 """The version of the scene's layout (docs/json.md): raised whenever a reader of an older scene would misread it."""
 
 PRECISION = 1e-9
@@ -76,7 +76,7 @@ def scene(problem, n: int = 360, *, polygons: bool = True, motion: bool = False,
     >>> from graphkin import catalog
     >>> s = scene(catalog.load("strip_cutter"), 36, polygons=False)
     >>> s["schema"], s["n"], s["effort"]["label"], s["speed"]["kind"]
-    (2, 40, {'symbol': 'T', 'sub': '12', 'mark': '', 'unit': 'N*m'}, 'superpose')
+    (3, 40, {'symbol': 'T', 'sub': '12', 'mark': '', 'unit': 'N*m'}, 'superpose')
     """
     problem = drawn(problem)
     out, graphical = _at_speed(problem, n, polygons, motion)
@@ -132,9 +132,9 @@ def _at_speed(problem, n: int, polygons: bool, motion: bool = False):
     force = _Rounder(biggest)
     scale = nice_scale(biggest, ARROW * size)  # N per metre of the drawing
     graphical = force_polygons(result, valid) if polygons else None
-    bodies = free_bodies(mech, links, forces, loads, inertias, scale)
-    moving = motion_polygons(kin, valid) if motion and not kin.static else None
     gears = _gears(mech)
+    bodies = free_bodies(mech, links, forces, loads, inertias, scale, result.driver_name, gears)
+    moving = motion_polygons(kin, valid) if motion and not kin.static else None
     out = {
         "schema": SCHEMA,
         "problem": problem.name,
