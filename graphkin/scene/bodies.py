@@ -56,7 +56,7 @@ def free_bodies(mech, links: list[dict], forces: list[dict], loads: list[dict], 
     -------
     list of dict
         ``{"link", "forces": [{"index", "sign", "name", "label"}], "loads": [index], "inertia": index or None,
-        "torques": [{"name", "label", "of", "index", "point", "radius", "start"}],
+        "torques": [{"name", "label", "of", "index", "point", "radius", "start", "span"}],
         "box": [xmin, ymin, xmax, ymax]}`` [m], one per moving link, in the links' order.
     """
     out = []
@@ -117,5 +117,6 @@ def _torques(mech, k: int, link: dict, loads: list[dict], on: list[int], resulta
         ring = rings.get(where, 0)
         rings[where] = ring + 1
         out.append({"name": name, "label": label(name, "N*m"), "of": of, "index": index, "point": point,
-                    "radius": max(RING * L, 0.3 * gear) + 0.05 * ring * L, "start": -0.7 * math.pi + 0.35 * ring})
+                    "radius": max(RING * L, 0.3 * gear) + 0.05 * ring * L, "start": -0.7 * math.pi + 0.35 * ring,
+                    "span": SPAN})
     return out
