@@ -170,3 +170,18 @@ def test_presolved_speeds_carry_their_own_graphical_route():
         for f, F in zip(s["forces"], g["forces"]):
             np.testing.assert_allclose(_flat(F), direct.forces[f["of"], f["on"]].reshape(-1), rtol=0,
                                        atol=2 * PRECISION * top)
+
+
+def test_the_docs_list_each_catalog_problem_under_its_kind():
+    """docs/json.md names which catalog problems a page rescales exactly, which it offers at presolved speeds and
+    which are static: the list is linearity's."""
+    from pathlib import Path
+
+    text = (Path(__file__).resolve().parents[2] / "docs" / "json.md").read_text(encoding="utf-8")
+    block = text.split("The catalog's problems by kind", 1)[1].split("\n\n", 2)[1]
+    listed = {}
+    for item in block.split("\n- "):
+        kind, _, names = item.lstrip("- ").partition(": ")
+        for name in names.replace("\n", " ").split(","):
+            listed[name.split("(")[0].strip()] = kind
+    assert listed == KINDS
