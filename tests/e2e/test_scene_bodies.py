@@ -224,6 +224,15 @@ def test_a_hovered_force_reads_in_si_or_the_books_units(browser, tmp_path):
         vector = page.locator("svg[data-motion='0'] g.gk-arrow").nth(1)
         vector.locator("line").nth(1).hover(force=True)
         assert readout.text_content().split(" ")[3] == us.symbol("velocity")
+        # The driving torque's curved arrow on the crank reads its value, unit and sense, in the units chosen.
+        page.evaluate(f"window.graphkin.view.show({i})")
+        couple = page.locator(f"svg[data-body='{body['link']}'] g.gk-couple[data-name='{s['effort']['name']}']")
+        couple.locator("text").hover(force=True)  # its label (an arc's box centre is off its stroke)
+        T = s["effort"]["analytical"][i]
+        name, _, rest = readout.text_content().partition(" = ")
+        size, unit, sense = rest.rsplit(" ", 2)
+        assert (name, unit, sense) == (s["effort"]["name"], us.symbol("torque"), "CCW" if T > 0 else "CW")
+        assert _number(size) == pytest.approx(us.scales["torque"] * abs(T), rel=1e-3)
         assert errors == []
     finally:
         context.close()
