@@ -7,7 +7,8 @@ wall time measures the neighbours too), each the best of k runs after a warm-up:
 
   1  ``scene(problem, n, polygons=False)``: the sweep and the analytical route's scene
   2  ``scene(problem, n)``: the same with the graphical route built and checked at every position
-     (``construct_forces`` + ``guard.check_forces``) and every force polygon kept
+     (``construct_forces`` + ``guard.check_forces``) and every force polygon kept; where the scene superposes the
+     speed (both problems here), built at twice the file's speed too, for the polygons' two parts in ω²
   3  ``scene_json``: the compact JSON of row 2
   4  ``page``: the self-contained HTML page (the JSON and the drawing module inlined)
 

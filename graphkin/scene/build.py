@@ -35,7 +35,7 @@ from graphkin.scene.polygons import force_polygons
 from graphkin.scene.speed import PRESOLVED, linearity, parts
 from graphkin.units.systems import SI
 
-SCHEMA = 2
+SCHEMA = 3
 """The version of the scene's layout (docs/json.md): raised whenever a reader of an older scene would misread it."""
 
 PRECISION = 1e-9
@@ -76,11 +76,11 @@ def scene(problem, n: int = 360, *, polygons: bool = True, motion: bool = False,
     >>> from graphkin import catalog
     >>> s = scene(catalog.load("strip_cutter"), 36, polygons=False)
     >>> s["schema"], s["n"], s["effort"]["label"], s["speed"]["kind"]
-    (2, 40, {'symbol': 'T', 'sub': '12', 'mark': '', 'unit': 'N*m'}, 'superpose')
+    (3, 40, {'symbol': 'T', 'sub': '12', 'mark': '', 'unit': 'N*m'}, 'superpose')
     """
     problem = drawn(problem)
-    out = _at_speed(problem, n, polygons, motion)
-    out["speed"] = _speed(problem, n, out)
+    out, graphical = _at_speed(problem, n, polygons, motion)
+    out["speed"] = _speed(problem, n, out, graphical)
     out["book"] = _book(units)
     return out
 
@@ -113,8 +113,9 @@ def _cycle(problem, n):
     return (sweep(problem, n) if problem.mechanism.driver.crank else sweep(problem)).analysis
 
 
-def _at_speed(problem, n: int, polygons: bool, motion: bool = False) -> dict:
-    """The scene at the problem's own input rate, without its ``speed`` field."""
+def _at_speed(problem, n: int, polygons: bool, motion: bool = False):
+    """The scene at the problem's own input rate, without its ``speed`` field, and its graphical route
+    (:class:`graphkin.scene.polygons.Polygons`, or None without polygons)."""
     mech = problem.mechanism
     result = _cycle(problem, n)
     kin = result.kinematics
@@ -131,9 +132,9 @@ def _at_speed(problem, n: int, polygons: bool, motion: bool = False) -> dict:
     force = _Rounder(biggest)
     scale = nice_scale(biggest, ARROW * size)  # N per metre of the drawing
     graphical = force_polygons(result, valid) if polygons else None
-    bodies = free_bodies(mech, links, forces, loads, inertias, scale)
-    moving = motion_polygons(kin, valid) if motion and not kin.static else None
     gears = _gears(mech)
+    bodies = free_bodies(mech, links, forces, loads, inertias, scale, result.driver_name, gears)
+    moving = motion_polygons(kin, valid) if motion and not kin.static else None
     out = {
         "schema": SCHEMA,
         "problem": problem.name,
@@ -187,7 +188,7 @@ def _at_speed(problem, n: int, polygons: bool, motion: bool = False) -> dict:
         out["graphical"] = graphical.data(force)
     if moving is not None:
         out["motion"] = _motion(moving)
-    return out
+    return out, graphical
 
 
 def _motion(moving: dict) -> dict:
@@ -217,10 +218,11 @@ class _Rounder:
         return np.round(np.asarray(T, float), decimals).tolist()
 
 
-def _speed(problem, n: int, out: dict) -> dict:
+def _speed(problem, n: int, out: dict, graphical) -> dict:
     """The scene's ``speed`` field (docs/json.md): how its forces change with the input speed
     (:func:`graphkin.scene.speed.linearity`), with the two parts that rescale them exactly, or the forces at a few
-    presolved speeds."""
+    presolved speeds; the graphical route's too where the scene has it (``graphical``, its
+    :class:`graphkin.scene.polygons.Polygons`)."""
     kind, reason = linearity(problem)
     crank = problem.mechanism.driver.crank
     rates = set(problem.q_dot)
@@ -243,16 +245,49 @@ def _speed(problem, n: int, out: dict) -> dict:
             "forces": [{"rest": rounders[0](_masked(F[0], valid)), "omega2": rounders[1](_masked(F[1], valid))}
                        for F in found],
             "effort": {"rest": torque(rounders[0], effort[0]), "omega2": torque(rounders[1], effort[1])}}
+        if graphical is not None:
+            field["superpose"]["graphical"] = _graphical_parts(graphical.parts(force_polygons(b, np.asarray(
+                b.valid, bool)), rate, 2 * rate), out, crank)
     elif kind == "presolved":
         field["presolved"] = []
         for fraction in PRESOLVED:
-            other = _at_speed(problem.at_speed(fraction * field["value"]), n, False)
+            other, _ = _at_speed(problem.at_speed(fraction * field["value"]), n, graphical is not None)
             field["presolved"].append({
                 "value": fraction * field["value"],
                 "forces": [f["analytical"] for f in other["forces"]],
                 "effort": other["effort"]["analytical"],
-                "inertia": [{k: inn[k] for k in ("force", "torque", "h", "line_point")} for inn in other["inertia"]]})
+                "inertia": [{k: inn[k] for k in ("force", "torque", "h", "line_point")} for inn in other["inertia"]],
+                "graphical": None if other["graphical"] is None else {
+                    **other["graphical"], "forces": [f["graphical"] for f in other["forces"]],
+                    "effort": other["effort"]["graphical"]}})
     return field
+
+
+def _graphical_parts(found: dict, out: dict, crank: bool) -> dict:
+    """The ``speed.superpose.graphical`` field: the graphical route's two parts (:meth:`Polygons.parts`), each kind
+    rounded at the scale of its own largest value."""
+    valid = found["valid"]
+    size = out["size"]
+    keys = [(f["of"], f["on"]) for f in out["forces"]]
+    vectors = [found["forces"][key] for key in keys] + found["vertices"]
+    rounders = []
+    for k in range(2):
+        top = [float(np.nanmax(np.abs(F[k]))) for F in vectors if np.isfinite(F[k]).any()]
+        rounders.append(_Rounder(max(top + [0.0])))
+
+    def effort(r, T):
+        return r.torque(T, size) if crank else r.scalars(T)
+
+    def pair(X):
+        return {"rest": rounders[0](X[0]), "omega2": rounders[1](X[1])}
+
+    return {"valid": valid.astype(int).tolist(),
+            "invalid": sorted(out["graphical"]["invalid"] + [{"index": i, "reason": why}
+                                                             for i, why in found["reasons"].items()],
+                              key=lambda entry: entry["index"]),
+            "forces": [pair(found["forces"][key]) for key in keys],
+            "effort": {"rest": effort(rounders[0], found["effort"][0]), "omega2": effort(rounders[1], found["effort"][1])},
+            "polygons": [pair(V) for V in found["vertices"]]}
 
 
 def _masked(xy, valid) -> np.ndarray:

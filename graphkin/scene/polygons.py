@@ -19,6 +19,7 @@ import numpy as np
 from graphkin.graphical import construct_forces
 from graphkin.graphical.guard import check_forces
 from graphkin.scene.labels import label
+from graphkin.scene.speed import parts
 
 
 class Polygons:
@@ -73,6 +74,63 @@ class Polygons:
             self.vertices.append(np.full((n, len(names) + 1, 2), np.nan))
         tips = np.cumsum([(0.0, 0.0)] + [a.vector for a in step.polygon], axis=0)
         self.vertices[k][i] = tips
+
+    def parts(self, other: Polygons, rate: float, other_rate: float) -> dict:
+        """The graphical route's two parts, X(ω) = X_rest + ω² X_ω², from this cycle's constructions and ``other``'s
+        at another input rate of the same sense (the same positions).
+
+        Every arrow of a construction is a force the statics of its step makes linear in the loads' wrenches (a
+        sub-problem's unknowns in its one resultant load, a superposition's sums in the sub-problems' values), and
+        every load is its rest part plus ω² times its part at unit speed: so each vertex, a sum of arrows, is too,
+        while the construction keeps its steps. Where the two speeds' constructions differ (a step one of them lacks,
+        a position the guard refused at one only) the parts are nan and the position not valid.
+
+        Parameters
+        ----------
+        other : Polygons
+            The same problem's graphical route at ``other_rate``.
+        rate, other_rate : float
+            The input rates [rad/s or m/s] of this cycle and of ``other``.
+
+        Returns
+        -------
+        dict
+            ``"valid"`` (n,) bool; ``"reasons"``: index → why a position valid here is not in the parts;
+            ``"forces"``: key → (rest, omega2), each (n, 2) [N, N/(rad/s)²]; ``"effort"``: (rest, omega2), each
+            (n,); ``"vertices"``: one (rest, omega2) per template of this cycle, each (n, m + 1, 2).
+        """
+        valid = self.valid & other.valid
+        reasons = {i: f"the construction is refused at {other_rate:g} (the second speed its parts are found from): "
+                      f"{other.reasons[i]}" for i in np.flatnonzero(self.valid & ~other.valid).tolist()}
+        # The same steps at both speeds, position by position: else the parts would mix two constructions.
+        mine, theirs = self._present(), other._present()
+        same = np.ones(len(valid), bool)
+        for key, k in self._index.items():
+            j = other._index.get(key)
+            same &= mine[:, k] == (theirs[:, j] if j is not None else False)
+        for key, j in other._index.items():
+            if key not in self._index:
+                same &= ~theirs[:, j]
+        for i in np.flatnonzero(valid & ~same).tolist():
+            reasons[i] = f"the construction takes other steps at {other_rate:g} (the second speed its parts are found from)"
+        valid &= same
+        mask = np.where(valid, 1.0, np.nan)
+        forces = {key: parts(F * mask[:, None], other.forces[key] * mask[:, None], rate, other_rate)
+                  for key, F in self.forces.items()}
+        effort = parts(self.effort * mask, other.effort * mask, rate, other_rate)
+        vertices = []
+        for key, k in self._index.items():
+            j = other._index.get(key)
+            V = self.vertices[k] * mask[:, None, None]
+            W = other.vertices[j] if j is not None else np.full_like(V, np.nan)
+            vertices.append(parts(V, W, rate, other_rate))
+        return {"valid": valid, "reasons": reasons, "forces": forces, "effort": effort, "vertices": vertices}
+
+    def _present(self) -> np.ndarray:
+        """(n, templates) bool: which template's polygon each position's construction has."""
+        if not self.vertices:
+            return np.zeros((len(self.valid), 0), bool)
+        return np.stack([np.isfinite(V).all(axis=(1, 2)) for V in self.vertices], axis=1)
 
     def data(self, force) -> dict:
         """As the scene holds it (docs/json.md): ``force`` rounds a force array and makes it a list."""

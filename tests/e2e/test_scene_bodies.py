@@ -26,7 +26,13 @@ READ_MORE = """() => {
         ? shape.getAttribute("points").trim().split(/\\s+/).map((xy) => xy.split(",").map(Number))
         : shape.tagName === "circle" ? [[num(shape, "cx"), num(shape, "cy")]] : [[num(shape, "x"), num(shape, "y")]],
       arrows: [...svg.querySelectorAll("g.gk-arrow")].map((g) => [g.getAttribute("data-name"),
-        g.style.display === "none" ? null : line(g)])};
+        g.style.display === "none" ? null : line(g)]),
+      couples: [...svg.querySelectorAll("g.gk-couple")].map((g) => [g.getAttribute("data-name"),
+        g.style.display === "none" ? null : g.querySelectorAll("path")[1].getAttribute("d")]),
+      offset: [...svg.querySelectorAll("line[data-offset]")].map((l) => l.style.display === "none" ? null
+        : [num(l, "x1"), num(l, "y1"), num(l, "x2"), num(l, "y2")]),
+      viewBox: svg.getAttribute("viewBox").split(" ").map(Number),
+      overflow: getComputedStyle(svg).overflow};
   }
   for (const svg of document.querySelectorAll("svg[data-motion]")) {
     if (svg.parentNode.style.display === "none" || svg.closest(".gk-motions").style.display === "none") continue;
@@ -36,8 +42,55 @@ READ_MORE = """() => {
 }"""
 
 
-def check_more(drawn: dict, s: dict, i: int, bodies: bool):
-    """The free bodies (when shown) and the motion polygons at position i against the scene."""
+def couple_value(s: dict, t: dict, i: int):
+    """A free body's couple at position i [N·m]: its array's value; the inertia torque only where the scene's
+    resultant has no line (the printed free body's rule, graphkin.draw.fbd.loads_on)."""
+    if t["of"] == "effort":
+        return s["effort"]["analytical"][i]
+    if t["of"] == "load":
+        return s["loads"][t["index"]]["torque"][i]
+    inn = s["inertia"][t["index"]]
+    return inn["torque"][i] if _xy(inn["line_point"], i) is None else None
+
+
+def check_couples(got: dict, s: dict, b: dict, link: dict, i: int, tol: float):
+    """Each couple's curved arrow: its arc on the scene's ring around its centre, counter-clockwise where the value
+    is positive; and the inertia resultant's offset from G to its line."""
+    assert [c[0] for c in got["couples"]] == [t["name"] for t in b["torques"]]
+    for (name, d), t in zip(got["couples"], b["torques"]):
+        T = couple_value(s, t, i)
+        if T is None or T == 0:
+            assert d is None, name
+            continue
+        C = _xy(link["G"] if t["point"] == "G" else link["points"][t["point"]], i)
+        a0, a1 = (t["start"], t["start"] + t["span"]) if T > 0 else (t["start"] + t["span"], t["start"])
+        M, A = d.split("A")
+        start = [float(v) for v in M.strip("M ").split(",")]
+        r, rest = A.split(" ", 1)
+        flags, end = rest.rsplit(" ", 1)
+        rx, ry = (float(v) for v in r.split(","))
+        large, sweep = flags.split()[1:]
+        np.testing.assert_allclose(start, _svg(C + t["radius"] * np.array([np.cos(a0), np.sin(a0)])), rtol=0,
+                                   atol=tol, err_msg=name)
+        np.testing.assert_allclose([float(v) for v in end.split(",")],
+                                   _svg(C + t["radius"] * np.array([np.cos(a1), np.sin(a1)])), rtol=0, atol=tol,
+                                   err_msg=name)
+        np.testing.assert_allclose([rx, ry], t["radius"], rtol=0, atol=tol)
+        assert (large, sweep) == ("1", "0" if T > 0 else "1"), name  # SVG's y is down: CCW is the negative sweep
+    if b["inertia"] is None:
+        assert got["offset"] == []
+        return
+    P = _xy(s["inertia"][b["inertia"]]["line_point"], i)
+    if P is None:
+        assert got["offset"] == [None]
+    else:
+        np.testing.assert_allclose(got["offset"][0], [*_svg(_xy(link["G"], i)), *_svg(P)], rtol=0, atol=tol)
+
+
+def check_more(drawn: dict, s: dict, i: int, bodies: bool) -> list:
+    """The free bodies (when shown) and the motion polygons at position i against the scene; the names of the couples
+    drawn."""
+    drawn_couples = []
     tol = 1e-6 * s["size"]
     scale = s["scales"]["force"]
     if not bodies:
@@ -68,6 +121,12 @@ def check_more(drawn: dict, s: dict, i: int, bodies: bool):
             if b["inertia"] is not None:
                 inn = s["inertia"][b["inertia"]]
                 expected.append((inn["name"], _xy(inn["line_point"], i), _xy(inn["force"], i)))
+            # The box is the scene's (the link, its forces and couples), whatever the inertia line: cut at it.
+            x0, y0, x1, y1 = b["box"]
+            np.testing.assert_allclose(got["viewBox"], [x0, -y1, x1 - x0, y1 - y0], rtol=0, atol=tol)
+            assert got["overflow"] == "hidden"
+            drawn_couples.extend(name for name, d in got["couples"] if d is not None)
+            check_couples(got, s, b, link, i, tol)
             assert [a[0] for a in got["arrows"]] == [e[0] for e in expected]
             for (name, line), (_, tail, F) in zip(got["arrows"], expected):
                 if tail is None or not F.any():
@@ -78,7 +137,7 @@ def check_more(drawn: dict, s: dict, i: int, bodies: bool):
     m = s["motion"]
     if m is None:
         assert drawn["motion"] == {}
-        return
+        return drawn_couples
     assert set(drawn["motion"]) == ({str(k) for k in range(len(m["polygons"]))} if m["valid"][i] else set())
     for k, p in enumerate(m["polygons"]):
         if not m["valid"][i]:
@@ -87,6 +146,7 @@ def check_more(drawn: dict, s: dict, i: int, bodies: bool):
         extent = max(p["box"][2] - p["box"][0], p["box"][3] - p["box"][1])
         np.testing.assert_allclose(drawn["motion"][str(k)], V * [1, -1, 1, -1], rtol=0, atol=1e-6 * extent,
                                    err_msg=p["kind"])
+    return drawn_couples
 
 
 @pytest.mark.parametrize("name", ["strip_cutter", "shaper_six_bar", "gearset", "slider_crank_friction"])
@@ -101,10 +161,14 @@ def test_free_bodies_and_motion_polygons_drawn_are_the_scene(browser, tmp_path, 
         assert page.locator(".gk-bodies").is_hidden()  # off at first
         check_more(page.evaluate(READ_MORE), s, 3, bodies=False)
         page.check("[data-toggle=bodies]")
+        couples = set()
         for i in (3, 17, s["n"] - 1):
             slider.fill(str(i))
             check_drawn(page.evaluate(READ_BACK), s, i)
-            check_more(page.evaluate(READ_MORE), s, i, bodies=True)
+            couples |= set(check_more(page.evaluate(READ_MORE), s, i, bodies=True))
+        assert s["effort"]["name"] in couples  # the driving torque on the crank's free body
+        if name == "gearset":
+            assert {"T13", "T2i", "T3i"} <= couples  # an external torque; inertia torques alone (G on the pivot)
         page.uncheck("[data-toggle=motion]")
         assert page.locator(".gk-motions").is_hidden()
         assert errors == []
@@ -160,6 +224,15 @@ def test_a_hovered_force_reads_in_si_or_the_books_units(browser, tmp_path):
         vector = page.locator("svg[data-motion='0'] g.gk-arrow").nth(1)
         vector.locator("line").nth(1).hover(force=True)
         assert readout.text_content().split(" ")[3] == us.symbol("velocity")
+        # The driving torque's curved arrow on the crank reads its value, unit and sense, in the units chosen.
+        page.evaluate(f"window.graphkin.view.show({i})")
+        couple = page.locator(f"svg[data-body='{body['link']}'] g.gk-couple[data-name='{s['effort']['name']}']")
+        couple.locator("text").hover(force=True)  # its label (an arc's box centre is off its stroke)
+        T = s["effort"]["analytical"][i]
+        name, _, rest = readout.text_content().partition(" = ")
+        size, unit, sense = rest.rsplit(" ", 2)
+        assert (name, unit, sense) == (s["effort"]["name"], us.symbol("torque"), "CCW" if T > 0 else "CW")
+        assert _number(size) == pytest.approx(us.scales["torque"] * abs(T), rel=1e-3)
         assert errors == []
     finally:
         context.close()

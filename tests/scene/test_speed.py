@@ -14,6 +14,7 @@ from graphkin.cycle import sweep
 from graphkin.model import GearMesh, Prismatic
 from graphkin.scene import PRECISION, scene, scene_json
 from graphkin.scene.build import drawn
+from graphkin.scene.polygons import force_polygons
 from graphkin.scene.speed import PRESOLVED, linearity
 
 N = 24
@@ -113,3 +114,74 @@ def test_a_problem_held_to_its_own_speed_says_why():
     kind, reason = linearity(at_rest)
     assert kind == "fixed" and "at rest (v = 0)" in reason
     assert scene(at_rest, polygons=False)["speed"] == {"kind": kind, "reason": reason, "value": 0.0, "unit": "m/s"}
+
+
+def _template(p) -> tuple:
+    return p["sub"], p["link"], p["kind"], tuple(p["names"]), tuple(p["known"])
+
+
+@pytest.mark.parametrize("name", [k for k, v in KINDS.items() if v == "superpose"])
+@pytest.mark.parametrize("factor", [0.3, 1.7])
+def test_superposed_polygons_equal_a_construction_at_another_speed(name, factor):
+    """The graphical route follows the speed as the analytical one does: each polygon's vertices, each joint force
+    and the effort the page adds up from the scene's two parts equal the construction built at that speed, to 1e-9 of
+    its largest value (every arrow is linear in the loads' wrenches, each load in ω²: scene/polygons.py)."""
+    problem = gk.load(name)
+    s = json.loads(scene_json(scene(problem, N)))
+    sup = s["speed"]["superpose"]["graphical"]
+    rate = factor * s["speed"]["value"]
+    r = _direct(problem, rate)
+    direct = force_polygons(r, np.asarray(r.valid, bool))
+    valid = np.array(sup["valid"], bool)
+    # Every position the scene's construction holds is in the parts: both speeds took the same steps.
+    assert valid.tolist() == (np.array(s["graphical"]["valid"], bool) & direct.valid).tolist()
+    assert valid.sum() >= 0.9 * sum(s["valid"])
+    index = {_template(t): k for k, t in enumerate(direct.templates)}
+    top = max(float(np.nanmax(np.abs(V[valid]))) for V in direct.vertices)
+    for p, part in zip(s["graphical"]["polygons"], sup["polygons"]):
+        found = (_flat(part["rest"]) + rate**2 * _flat(part["omega2"])).reshape(direct.vertices[0].shape[0], -1, 2)
+        want = direct.vertices[index[_template(p)]]
+        np.testing.assert_allclose(found[valid], want[valid], rtol=0, atol=1e-9 * top, err_msg=str(p["names"]))
+    # The polygons the construction at that speed draws are those the parts give, position by position.
+    for k in np.flatnonzero(valid):
+        here = {_template(p) for p, part in zip(s["graphical"]["polygons"], sup["polygons"])
+                if part["rest"][2 * (len(p["names"]) + 1) * k] is not None}
+        assert here == {_template(t) for t, V in zip(direct.templates, direct.vertices) if np.isfinite(V[k]).all()}
+    for f, part in zip(s["forces"], sup["forces"]):
+        found = (_flat(part["rest"]) + rate**2 * _flat(part["omega2"])).reshape(-1, 2)
+        np.testing.assert_allclose(found[valid], direct.forces[f["of"], f["on"]][valid], rtol=0, atol=1e-9 * top)
+    found = _flat(sup["effort"]["rest"]) + rate**2 * _flat(sup["effort"]["omega2"])
+    arm = s["size"] if s["driver"]["kind"] == "crank" else 1.0
+    np.testing.assert_allclose(found[valid], direct.effort[valid], rtol=0, atol=1e-9 * top * arm)
+
+
+def test_presolved_speeds_carry_their_own_graphical_route():
+    problem = gk.load("slider_crank_friction")
+    s = json.loads(scene_json(scene(problem, N)))
+    for p in s["speed"]["presolved"]:
+        r = _direct(problem, p["value"])
+        direct = force_polygons(r, np.asarray(r.valid, bool))
+        g = p["graphical"]
+        assert g["valid"] == direct.valid.astype(int).tolist()
+        assert [_template(t) for t in g["polygons"]] == [_template(t) for t in direct.templates]
+        top = max(float(np.nanmax(np.abs(V))) for V in direct.vertices)
+        for t, V in zip(g["polygons"], direct.vertices):
+            np.testing.assert_allclose(_flat(t["vertices"]), V.reshape(-1), rtol=0, atol=2 * PRECISION * top)
+        for f, F in zip(s["forces"], g["forces"]):
+            np.testing.assert_allclose(_flat(F), direct.forces[f["of"], f["on"]].reshape(-1), rtol=0,
+                                       atol=2 * PRECISION * top)
+
+
+def test_the_docs_list_each_catalog_problem_under_its_kind():
+    """docs/json.md names which catalog problems a page rescales exactly, which it offers at presolved speeds and
+    which are static: the list is linearity's."""
+    from pathlib import Path
+
+    text = (Path(__file__).resolve().parents[2] / "docs" / "json.md").read_text(encoding="utf-8")
+    block = text.split("The catalog's problems by kind", 1)[1].split("\n\n", 2)[1]
+    listed = {}
+    for item in block.split("\n- "):
+        kind, _, names = item.lstrip("- ").partition(": ")
+        for name in names.replace("\n", " ").split(","):
+            listed[name.split("(")[0].strip()] = kind
+    assert listed == KINDS

@@ -358,7 +358,47 @@ function drawPolygons(parts, scene, i) {
 // -- the free bodies ------------------------------------------------------------------------------------------------
 // Each moving link alone with the forces on it (scene.free_bodies): the scene's joint forces times the sign it states
 // (+1: the force on this link as the scene holds it, −1: its reaction), its loads and its inertia resultant, at the
-// scene's force scale, in a box that holds it over the whole cycle.
+// scene's force scale, in a box that holds it over the whole cycle; the resultant's offset from G (dashed) and its
+// arrow are cut at the box where its line lies outside. Its couples are curved arrows on the rings the scene gives
+// (centre, radius, start, span), counter-clockwise for a positive value of the array each refers to: the driving
+// effort, a load's torque, or the inertia torque where the scene's resultant has no line (its force vanishes).
+const COUPLE = { effort: "joint", load: "load", inertia: "inertia" };
+
+function couple(svg, t, head, font) {
+  const g = el("g", { class: "gk-couple", "data-name": t.name }, svg);
+  const hit = el("path", { fill: "none", stroke: "transparent", "stroke-width": 10,
+    "vector-effect": "non-scaling-stroke" }, g);
+  const path = el("path", { fill: "none", stroke: INK[COUPLE[t.of]], "stroke-width": 2,
+    "vector-effect": "non-scaling-stroke", "marker-end": `url(#${head(COUPLE[t.of])})` }, g);
+  const text = svgLabel(t.label, g, font);
+  text.setAttribute("fill", INK[COUPLE[t.of]]);
+  return { g, hit, path, text };
+}
+
+// The couple's value at position i in the live scene `sc` [N·m], or null where it is not drawn.
+function coupleValue(sc, t, i) {
+  if (t.of === "effort") return sc.effort.analytical[i];
+  if (t.of === "load") return sc.loads[t.index].torque[i];
+  const inn = sc.inertia[t.index];
+  return at(inn.line_point, i) === null ? inn.torque[i] : null;
+}
+
+function placeCouple(c, centre, t, T) {
+  if (centre === null || T === null || T === 0) return shown(c.g, false);
+  shown(c.g, true);
+  const point = (a) => [centre[0] + t.radius * Math.cos(a), centre[1] + t.radius * Math.sin(a)];
+  const [from, to] = T > 0 ? [t.start, t.start + t.span] : [t.start + t.span, t.start];
+  const a = point(from);
+  const b = point(to);
+  // On the page y points down: counter-clockwise on the drawing is SVG's negative sweep.
+  const d = `M${a[0]},${-a[1]} A${t.radius},${t.radius} 0 ${t.span > Math.PI ? 1 : 0} ${T > 0 ? 0 : 1} ${b[0]},${-b[1]}`;
+  c.path.setAttribute("d", d);
+  c.hit.setAttribute("d", d);
+  const m = point(t.start + t.span / 2);
+  c.text.setAttribute("x", centre[0] + 1.15 * (m[0] - centre[0]));
+  c.text.setAttribute("y", -(centre[1] + 1.15 * (m[1] - centre[1])));
+}
+
 function bodies(view, scene, read) {
   if (!scene.free_bodies || scene.free_bodies.length === 0) return null;
   const cells = scene.free_bodies.map((b) => {
@@ -367,7 +407,7 @@ function bodies(view, scene, read) {
     const side = Math.max(x1 - x0, y1 - y0) || scene.size;
     const box = html("figure", { class: "gk-cell gk-body" }, view.bodyBox);
     const svg = el("svg", { viewBox: `${x0} ${-y1} ${x1 - x0 || side} ${y1 - y0 || side}`, "data-body": b.link,
-      role: "img", "aria-label": `the free body of link ${b.link}` }, box);
+      role: "img", "aria-label": `the free body of link ${b.link}`, overflow: "hidden" }, box);
     const head = markers(el("defs", {}, svg), side * 0.6);
     const style = { fill: INK.fill, "fill-opacity": 0.8, stroke: INK.link, "stroke-width": 2,
       "vector-effect": "non-scaling-stroke", "data-link": b.link };
@@ -392,27 +432,35 @@ function bodies(view, scene, read) {
       arrows.push({ a, tail: (sc, i) => at(ld.at, i), vector: (sc, i) => at(ld.force, i) });
       read.set(a.g, (sc, i) => [ld.name, at(ld.force, i), "force"]);
     }
+    let offset = null;
     if (b.inertia !== null) {
       const inn = scene.inertia[b.inertia];
+      offset = el("line", { stroke: INK.inertia, "stroke-width": 1, "stroke-dasharray": "3 3",
+        "vector-effect": "non-scaling-stroke", "data-offset": inn.name }, svg);
       const a = arrow(svg, INK.inertia, head("inertia"), inn.name, inn.label, font);
       arrows.push({ a, tail: (sc, i) => at(sc.inertia[b.inertia].line_point, i),
         vector: (sc, i) => at(sc.inertia[b.inertia].force, i) });
       read.set(a.g, (sc, i) => [inn.name, at(sc.inertia[b.inertia].force, i), "force"]);
     }
-    // Torques are not drawn as arrows: the caption names them.
-    const torques = b.loads.filter((k) => !scene.loads[k].force).map((k) => scene.loads[k].name);
-    if (scene.driver.kind !== "slider" && scene.driver.link === b.link) torques.push(scene.effort.name);
+    const couples = (b.torques || []).map((t) => {
+      const c = couple(svg, t, head, font);
+      read.set(c.g, (sc, i) => [t.name, coupleValue(sc, t, i), "torque"]);
+      return { t, c, centre: t.point === "G" ? link.G : link.points[t.point] };
+    });
     const caption = html("figcaption", {}, box);
-    caption.textContent = `link ${b.link}${link.name ? ` (${link.name})` : ""}` +
-      (torques.length ? `; also the torque${torques.length > 1 ? "s" : ""} ${torques.join(", ")}` : "");
-    return { b, link, box, shape, arrows };
+    const inertia = b.inertia !== null ? scene.inertia[b.inertia].name : null;
+    caption.textContent = `link ${b.link}${link.name ? ` (${link.name})` : ""}` + (inertia
+      ? `; ${inertia}: −m a_G and −I_G α as one resultant, its line h from G (cut at this box)` +
+        (couples.some(({ t }) => t.of === "inertia") ? `, or the couple T${b.link}i where the force vanishes` : "")
+      : "");
+    return { b, link, box, shape, arrows, offset, couples };
   });
   return { cells };
 }
 
 function drawBodies(parts, scene, i, ok) {
   const scale = scene.scales.force;
-  for (const { link, box, shape, arrows } of parts.cells) {
+  for (const { b, link, box, shape, arrows, offset, couples } of parts.cells) {
     shown(box, ok);
     if (!ok) continue;
     if (shape) placeLink(shape, link, scene, i);
@@ -420,6 +468,12 @@ function drawBodies(parts, scene, i, ok) {
       const F = vector(scene, i);
       placeArrow(a, F !== null && (F[0] !== 0 || F[1] !== 0) ? tail(scene, i) : null, F, scale);
     }
+    if (offset) {
+      const P = at(scene.inertia[b.inertia].line_point, i);
+      shown(offset, P !== null);
+      if (P !== null) setLine(offset, at(link.G, i), P);
+    }
+    for (const { t, c, centre } of couples) placeCouple(c, at(centre, i), t, coupleValue(scene, t, i));
   }
 }
 
@@ -597,7 +651,10 @@ function inputText(scene, i) {
 // options.keys: what listens for the arrow keys and the space bar (the page: the document; a notebook's widget: its
 // own element, so that keys typed in a cell stay the cell's).
 export function draw(root, base, options = {}) {
-  if (base.schema !== 2) throw new Error(`graphkin scene: schema ${base.schema} is not one this page reads (2)`);
+  // Schema 2 has no couples on its free bodies and no graphical route at other speeds: drawn without them.
+  if (base.schema !== 3 && base.schema !== 2) {
+    throw new Error(`graphkin scene: schema ${base.schema} is not one this page reads (2, 3)`);
+  }
   const scene = live(base);
   root.classList.add("gk-scene");
   const view = { root, index: 0, timings: [] };
@@ -605,7 +662,7 @@ export function draw(root, base, options = {}) {
   view.figures = html("div", { class: "gk-figures" }, root);
   const mech = mechanism(view, scene);
   view.polygonBox = html("div", { class: "gk-polygons" }, view.figures);
-  const poly = polygons(view, scene);
+  let poly = polygons(view, scene);
   // What hovering an arrow of a free body or a motion polygon reads: its name, its vector at a position, its kind.
   const read = new Map();
   view.motionBox = html("div", { class: "gk-motions" }, view.figures);
@@ -728,6 +785,10 @@ export function draw(root, base, options = {}) {
       }
       setRate(scene, base, rate);
       setCurve(curveParts, scene);
+      // The polygons at the new speed: each at the scale of its extent there (a presolved speed's construction
+      // may hold other steps).
+      view.polygonBox.replaceChildren();
+      poly = polygons(view, scene);
       shown(view.polygonBox, scene.graphical !== null && on("polygons"));
       shown(view.motionBox, scene.motion !== null && on("motion"));
       ui.rate.note.textContent = ui.rate.text + (base.graphical && !scene.graphical
@@ -814,7 +875,10 @@ export function draw(root, base, options = {}) {
     const reader = read.get(hovered);
     if (reader) {
       const [name, v, kind] = reader(scene, k);
-      view.readout.textContent = `${name} = ${v ? polar(v[0], v[1], units(kind)) : "—"}`;
+      const u = units(kind);
+      view.readout.textContent = `${name} = ${kind === "torque"
+        ? (v === null ? "—" : `${number(u.scale * Math.abs(v))} ${u.unit} ${v > 0 ? "CCW" : "CW"}`)
+        : v ? polar(v[0], v[1], u) : "—"}`;
       return;
     }
     const name = hovered.getAttribute("data-name");
@@ -837,7 +901,7 @@ export function draw(root, base, options = {}) {
     }
   }
   function hover(e) {
-    const g = e.target.closest?.(".gk-arrow");
+    const g = e.target.closest?.(".gk-arrow, .gk-couple");
     if (!g) return;
     hovered = g;
     readout();
