@@ -24,7 +24,7 @@ def _same_scene(ex, problem):
 
 @pytest.fixture
 def cutter():
-    return gk.explore(gk.load("strip_cutter"), n=N, browser=True)
+    return gk.explore(gk.load("strip_cutter"), n=N)
 
 
 def test_the_widget_is_the_shipped_module_and_its_scene_is_the_problems(cutter):
