@@ -120,6 +120,7 @@ class BrowserExplorer:
             raise GraphkinError(f"explore: n must be a whole number of positions ≥ 2, got {n!r}")
         self.n, self.polygons, self.motion, self.units = n, polygons, motion, units
         self.widget = scene_widget()()
+        self.scene = None
         self.problem = spread(problem, n, limits)
         q0 = float(problem.q[0])  # first shown: the file's own position, as presolved
         self.position = math.degrees(q0) if self.crank else q0 * 1e3
@@ -132,8 +133,12 @@ class BrowserExplorer:
     @problem.setter
     def problem(self, problem) -> None:
         data = scene(problem, self.n, polygons=self.polygons, motion=self.motion, units=self.units)
+        shown = self.position if getattr(self, "scene", None) is not None else None
         self._problem, self.scene = problem, data
-        self.widget.scene = scene_json(data)
+        with self.widget.hold_sync():  # one message: the new scene and where it is shown
+            if shown is not None:  # at the position set from Python (or the nearest the new scene has)
+                self.widget.index = nearest(data, shown)
+            self.widget.scene = scene_json(data)
 
     @property
     def index(self) -> int:

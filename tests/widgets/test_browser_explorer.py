@@ -1,4 +1,4 @@
-"""``gk.explore(problem, browser=True)`` (issue 37): the browser draws the scene with the shipped module; the kernel
+"""``gk.explore(problem)`` (issue 37): the browser draws the scene with the shipped module; the kernel
 answers only a change the scene cannot express, with a new scene equal to one built directly."""
 
 from __future__ import annotations

@@ -8,6 +8,7 @@ import json
 import math
 import subprocess
 import sys
+from dataclasses import replace
 
 import numpy as np
 import pytest
@@ -130,3 +131,14 @@ def test_graphkin_explore_page_holds_the_problem_and_nothing_else():
     assert code == ["from graphkin import catalog\nfrom graphkin.widgets import explore\n\n"
                     "explore(catalog.load('strip_cutter'))"]
     assert nb["metadata"]["kernelspec"]["name"] == "python3" and nb["nbformat"] == 4
+
+
+def test_a_new_scene_is_shown_at_the_position_set_from_python():
+    """A change that adds positions (a load that switches on adds samples either side of each switch) keeps the
+    angle shown, not the index."""
+    p = catalog.load("strip_cutter")
+    ex = explore(replace(p, mechanism=replace(p.mechanism, loads=())), n=SMALL)
+    assert ex.scene["n"] == SMALL
+    ex.position = 130
+    ex.problem = p  # the cut switches on and off: four more positions
+    assert ex.scene["n"] == SMALL + 4 and ex.position == pytest.approx(130)
