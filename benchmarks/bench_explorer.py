@@ -33,7 +33,7 @@ def _cpu(f):
 
 
 def main():
-    print(f"{'problem':<24}{'positions':>10}{'explore s':>11}{'set mass s':>12}{'JSON kB':>9}"
+    print(f"{'problem':<36}{'positions':>10}{'explore s':>11}{'set mass s':>12}{'JSON kB':>9}"
           f"{'messages a position':>21}")
     for name in catalog.names():
         problem = catalog.load(name)
@@ -45,7 +45,7 @@ def main():
             mass = 2 * problem.mechanism.link(link).mass
             _, spent = _cpu(lambda: ex.set(f"mass.{link}", mass))  # noqa: B023 - called at once
             changed = f"{spent:.2f}"
-        print(f"{name:<24}{ex.scene['n']:>10}{shown:>11.2f}{changed:>12}{len(ex.widget.scene) / 1e3:>9.0f}{0:>21}")
+        print(f"{name:<36}{ex.scene['n']:>10}{shown:>11.2f}{changed:>12}{len(ex.widget.scene) / 1e3:>9.0f}{0:>21}")
 
 
 if __name__ == "__main__":
