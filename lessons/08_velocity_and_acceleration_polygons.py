@@ -136,9 +136,9 @@ assert math.isclose(forces.effort, T12, rel_tol=1e-6)
 # %% [markdown]
 # ## 5. The explorer, with the polygons
 #
-# `motion=True` adds both polygons at every crank angle; tick **motion polygons** and they are drawn
-# beside the force polygons. Drag the crank round: watch ω3 change sign as the coupler swings back, and
-# the Coriolis arrow appear on the slotted lever of `gk.load("shaper_six_bar")`.
+# `motion=True` adds both polygons at every crank angle, drawn beside the force polygons (the **motion
+# polygons** toggle hides them). Drag the crank round: watch ω3 change sign as the coupler swings back,
+# and the Coriolis arrow appear on the slotted lever of `gk.load("shaper_six_bar")`.
 
 # %%
 ex = gk.explore(problem, motion=True)
