@@ -116,12 +116,12 @@ class BrowserExplorer:
 
     def __init__(self, problem, n: int = 360, polygons: bool = True, motion: bool = False, units=None,
                  limits=None):
-        if isinstance(n, bool) or not isinstance(n, int) or n < 2:
+        if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 2:
             raise GraphkinError(f"explore: n must be a whole number of positions ≥ 2, got {n!r}")
-        self.n, self.polygons, self.motion, self.units = n, polygons, motion, units
+        self.n, self.polygons, self.motion, self.units = int(n), polygons, motion, units
         self.widget = scene_widget()()
         self.scene = None
-        self.problem = spread(problem, n, limits)
+        self.problem = spread(problem, self.n, limits)
         q0 = float(problem.q[0])  # first shown: the file's own position, as presolved
         self.position = math.degrees(q0) if self.crank else q0 * 1e3
 
