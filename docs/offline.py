@@ -241,7 +241,7 @@ def scene_frame(name: str, docname: str) -> str:
             f'of the cycle" loading="lazy"></iframe><p class="gk-note">On this page your browser draws the cycle, '
             f'solved once when the site was built (<code>graphkin explore {html.escape(name)} --motion -o page.html</code> '
             f'writes this page; <a href="{html.escape(src)}">open it whole</a>). In the notebook, the explorer is '
-            f'computed by the kernel: a length, a mass or a load can change too.</p></div>')
+            f'this drawing, and Python answers a new length, mass or load with a new scene.</p></div>')
 
 
 # -- what a page would fetch from another host ---------------------------------------------------------------------
@@ -334,15 +334,21 @@ def _code_sources(path: Path) -> tuple[list[str], dict[int, int]]:
     return sources, position
 
 
-def _is_explorer(models: dict, ref: str) -> bool:
-    """Whether the widget is a :class:`graphkin.widgets.Explorer`'s (its figure is the image classed
-    ``graphkin-image``)."""
+def is_explorer(models: dict, ref: str) -> bool:
+    """Whether the widget is an explorer's (:func:`graphkin.widgets.explore`): an anywidget whose state holds a scene.
+
+    Examples
+    --------
+    >>> is_explorer({"w": {"model_name": "AnyModel", "state": {"_esm": "...", "scene": "{}", "index": 0}}}, "IPY_MODEL_w")
+    True
+    >>> is_explorer({"w": {"model_name": "AnyModel", "state": {"_esm": "..."}}}, "w")
+    False
+    """
     model = models.get(ref.removeprefix("IPY_MODEL_"))
     if model is None:
         return False
     state = model["state"]
-    return "graphkin-image" in state.get("_dom_classes", ()) or any(_is_explorer(models, c)
-                                                                     for c in state.get("children", ()))
+    return ("_esm" in state and "scene" in state) or any(is_explorer(models, c) for c in state.get("children", ()))
 
 
 def replace_widgets(app, doctree) -> None:
@@ -366,7 +372,7 @@ def replace_widgets(app, doctree) -> None:
         while cell is not None and cell.get("nb_element") != "cell_code":
             cell = cell.parent
         problem = None
-        if cell is not None and _is_explorer(models, model_id):
+        if cell is not None and is_explorer(models, model_id):
             problem = explored_problem(sources, position[cell["cell_index"]])
         text = scene_frame(problem, docname) if problem else static_widget(models, model_id)
         raw.replace_self(nodes.raw("", text, format="html"))

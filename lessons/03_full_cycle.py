@@ -211,8 +211,8 @@ gk.draw.draw_transmission_angle(cyc).figure
 # %% [markdown]
 # ## 7. The interactive explorer
 #
-# `gk.explore(problem)` builds a small app: a slider for the crank angle, a box for the speed, and one
-# picture with the mechanism, the free bodies, the force polygons and the torque curve.
+# `gk.explore(problem)` solves the cycle once; your browser draws it. Drag the crank, toggle the free
+# bodies and polygons, hover a force. `ex.set("mass.3", 4.0)` asks Python for a new cycle.
 
 # %%
 ex = gk.explore(p)

@@ -192,10 +192,10 @@ assert gk.joint_force_index(long_crank).immovable and gk.joint_force_index(long_
 # %% [markdown]
 # ## 6. The interactive explorer
 #
-# `gk.explore(problem)` puts the analysis behind a **slider** for the crank angle and a **speed** box.
-# Type 600 rpm: the torque curve is re-swept. Predict first: the inertia part of the torque scales
-# with $\omega^2$, the cutting part not at all — so at 600 rpm, where is the largest torque, and does
-# the average move?
+# `gk.explore(problem)` puts the whole cycle behind the crank (drag it, or use the slider) and a **speed**
+# box. Type 600 rpm: the torque curve is redrawn at once. Predict first: the inertia part of the torque
+# scales with $\omega^2$, the cutting part not at all — so at 600 rpm, where is the largest torque, and
+# does the average move? (That scaling is how the browser redraws it: the two parts, solved once.)
 
 # %%
 ex = gk.explore(p)

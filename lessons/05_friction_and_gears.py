@@ -180,7 +180,7 @@ gk.draw.draw_solution(gk.construct_forces(rg.kinematics, 0), rg)
 # **Power.** The tooth forces act at the pitch point, where both pitch circles have the same velocity, so
 # together they take no power: power in = power to the load + $I_{G2}\alpha_2\omega_2 + I_{G3}\alpha_3\omega_3$.
 # At steady speed the torque ratio is exactly $r_2/r_3$ and this ideal mesh has no losses. In the
-# explorer the teeth move as the gear turns; the forces, and so the torque curve, do not:
+# explorer, drag the crank round: the forces, and so the torque curve, do not change:
 
 # %%
 ex_g = gk.explore(g)

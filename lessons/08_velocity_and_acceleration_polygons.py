@@ -136,20 +136,27 @@ assert math.isclose(forces.effort, T12, rel_tol=1e-6)
 # %% [markdown]
 # ## 5. The explorer, with the polygons
 #
-# Tick **velocity and acceleration polygons** under the slider and both polygons are drawn under the
-# force polygons at each angle. Watch ω3 change sign as the coupler swings back, and the Coriolis
-# arrow appear on the slotted lever of `gk.load("shaper_six_bar")`.
+# `motion=True` adds both polygons at every crank angle, drawn beside the force polygons (the **motion
+# polygons** toggle hides them). Drag the crank round: watch ω3 change sign as the coupler swings back,
+# and the Coriolis arrow appear on the slotted lever of `gk.load("shaper_six_bar")`.
 
 # %%
-ex = gk.explore(problem)
-ex.motion.value = True
-ex.slider.value = 140
+ex = gk.explore(problem, motion=True)
+ex.position = 140
 ex
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
 # The lesson's own check (folded): it keeps what the text above says right; nothing to do here.
-assert ex.motion_construction is not None and ex.motion_construction.valid
-assert math.isclose(ex.motion_construction.omega[3], motion.omega[3], rel_tol=1e-9)
+# At 140° the explorer's velocity polygon turns the coupler at the ω3 found above: v_BA = ω3 k × AB.
+s, i = ex.scene, ex.index
+(vel,) = [poly for poly in s["motion"]["polygons"] if poly["kind"] == "velocity"]
+k = 4 * (len(vel["names"]) * i + vel["names"].index("v_BA"))
+x0, y0, x1, y1 = vel["vectors"][k:k + 4]
+(coupler,) = [link for link in s["links"] if link["number"] == 3]
+(ax, ay), (bx, by) = (coupler["points"][name][2 * i:2 * i + 2] for name in "AB")
+omega3 = ((bx - ax) * (y1 - y0) - (by - ay) * (x1 - x0)) / ((bx - ax) ** 2 + (by - ay) ** 2)
+assert math.isclose(ex.position, 140, abs_tol=1e-9) and s["motion"]["valid"][i]
+assert math.isclose(omega3, motion.omega[3], rel_tol=1e-6)
 
 # %% [markdown]
 # ## 6. Your turn

@@ -6,7 +6,7 @@ from __future__ import annotations
 import base64
 
 import pytest
-from offline import explored_problem, explored_problems, external_references, scene_frame, static_widget
+from offline import explored_problem, explored_problems, external_references, is_explorer, scene_frame, static_widget
 
 # -- what a page fetches ------------------------------------------------------------------------------------------
 
@@ -133,3 +133,12 @@ def test_a_notebook_s_explored_problems(tmp_path):
 def test_a_scene_frame_points_at_the_site_s_scene_page_from_any_folder():
     assert 'src="../_scenes/strip_cutter.html"' in scene_frame("strip_cutter", "lessons/03_full_cycle")
     assert 'src="_scenes/gearset.html"' in scene_frame("gearset", "index")
+
+
+def test_an_explorer_is_known_by_the_scene_its_widget_saved():
+    """gk.explore's widget (an anywidget holding the scene's JSON) is drawn as the problem's scene page; any other
+    anywidget (a probe, a plot) is drawn as it was left."""
+    scene = {"model_name": "AnyModel", "state": {"_esm": "export default {}", "scene": '{"schema": 2}', "index": 3}}
+    models = {**_box(), "explorer": scene, "box": {"model_name": "VBoxModel", "state": {"children": ["IPY_MODEL_explorer"]}}}
+    assert is_explorer(models, "IPY_MODEL_explorer") and is_explorer(models, "box")
+    assert not is_explorer(models, "root") and not is_explorer(models, "probe") and not is_explorer(models, "gone")

@@ -2,7 +2,7 @@
 
 For every catalog problem, at 12 positions over its range, the side-by-side
 solution figure (``draw_solution``: mechanism, free bodies, force polygons,
-table) and the explorer's figure are laid out by matplotlib, and then
+table) and the step frames are laid out by matplotlib, and then
 measured in display coordinates from the artists themselves:
 
 * every text's box (``Text.get_window_extent``; a table or legend as one box);
@@ -224,9 +224,9 @@ def _positions(problem, count=POSITIONS):
     slider-driven linkage assembles (as the explorer finds it)."""
     if problem.mechanism.driver.kind == "crank":
         return np.radians(np.arange(count) * 360.0 / count)
-    from graphkin.widgets.controls import assembling_span as _assembling_span
+    from graphkin.widgets.positions import assembling_span
 
-    lo, hi = _assembling_span(problem, float(problem.q[0]), 360)
+    lo, hi = assembling_span(problem, float(problem.q[0]), 360)
     return np.linspace(lo, hi, count + 2)[1:-1]
 
 
@@ -265,24 +265,6 @@ def test_no_label_on_a_label_or_an_outline_in_the_solution_figure(name):
         fig = draw.draw_solution(c, result)
         FigureCanvasAgg(fig)
         bad += [(_where(c), *o) for o in overlaps(fig)]
-    assert not bad, "\n".join(map(str, bad))
-
-
-@pytest.mark.parametrize("name", NAMES)
-def test_no_label_on_a_label_or_an_outline_in_the_explorer(name):
-    """The explorer's figure (smaller panels, no values on the polygons) at 12 positions, cut to the figure."""
-    pytest.importorskip("ipywidgets")
-    from graphkin.widgets import explore
-
-    problem = catalog.load(name)
-    ex = explore(problem)
-    bad = []
-    for q in _positions(problem):
-        value = math.degrees(q) if ex.crank else q * 1e3
-        ex.slider.value = float(np.clip(round(value / ex.step) * ex.step, *ex.limits))
-        if ex.message:
-            continue
-        bad += [(f"{ex.value:g}", *o) for o in overlaps(ex.figure, panels=ex._panels, page=True)]
     assert not bad, "\n".join(map(str, bad))
 
 
@@ -379,23 +361,3 @@ def test_the_measure_sees_labels_left_where_they_were_first_put(monkeypatch):
     found = overlaps(fig)
     kinds = {what.split()[0] for _, what, _ in found}
     assert {"arrow", "line", "axes"} <= kinds, found
-
-
-def test_a_long_link_name_does_not_run_into_the_next_title_in_the_explorer(tmp_path):
-    """The explorer's free-body titles sit side by side in small panels: a long name goes to a second line
-    (the static engine's piston, named as engine_gas_force names it, overlapped its neighbour at 90°)."""
-    pytest.importorskip("ipywidgets")
-    from graphkin.problem import load_problem
-    from graphkin.widgets import explore
-
-    text = catalog.path("engine_static_khurmi").read_text(encoding="utf-8")
-    path = tmp_path / "long.toml"
-    path.write_text(text.replace('name = "piston P"', 'name = "piston P (reciprocating parts)"'), encoding="utf-8")
-    ex = explore(load_problem(path))
-    bad = []
-    for value in (90.0, 270.0, 30.0):
-        ex.slider.value = value
-        bad += [(value, *o) for o in overlaps(ex.figure, panels=ex._panels, page=True)]
-    assert not bad, "\n".join(map(str, bad))
-    titles = [ax.get_title() for ax in ex.figure.axes if ax.get_title().startswith("Free body: link 4")]
-    assert titles == ["Free body: link 4\n(piston P (reciprocating parts))"]

@@ -1,4 +1,4 @@
-"""``gk.explore(problem, browser=True)`` in JupyterLab (issue 37): the browser draws the scene the kernel sent, with
+"""``gk.explore(problem)`` in JupyterLab (issue 37): the browser draws the scene the kernel sent, with
 no image from the kernel; a change the scene cannot express (a mass) is a new scene, drawn as Python built it; the
 position set from Python is shown; the widget's keys are its own.
 
@@ -22,7 +22,7 @@ from tests.e2e.test_scene_page import READ_BACK, check_drawn
 
 N = 36
 NAME = "scene_widget.ipynb"
-CELLS = ["import graphkin as gk\nex = gk.explore(gk.load('strip_cutter'), n=36, browser=True)\nex"]
+CELLS = ["import graphkin as gk\nex = gk.explore(gk.load('strip_cutter'), n=36)\nex"]
 # The page's read-back, from the widget's own view (anywidget's element holds it, as the page's window does).
 READ = READ_BACK.replace("window.graphkin.view.index", "document.querySelector('.gk-scene').parentElement.graphkin.index")
 INDEX = "() => document.querySelector('.gk-scene').parentElement.graphkin.index"

@@ -16,6 +16,7 @@ import pytest
 
 import graphkin as gk
 from graphkin.cycle.sweep import SWITCH
+from tests.lessons.explorer_reads import effort, force, force_tol, scene_of, torque_tol
 
 RPM = math.pi / 30
 
@@ -175,23 +176,25 @@ def test_transmission_angle(cutter):
 
 
 def test_the_explorer_driven_from_code(cutter):
-    pytest.importorskip("ipywidgets")
-    p, cyc, _, _ = cutter
+    """The explorer's scene, as the browser draws it, at angles set from Python: the sweep's joint forces and torque,
+    the graphical route's torque agreeing, and the torque curve the sweep's own."""
+    pytest.importorskip("anywidget")
+    p, _, _, _ = cutter
+    cyc = gk.sweep(p, 360)
     r = cyc.analysis
     ex = gk.explore(p)
-    ex.speed.value = 900
+    s = scene_of(ex)
+    assert s["n"] == cyc.n == 360 + 4 and np.allclose(s["input"]["values"], cyc.q, atol=1e-9)
+    assert np.allclose(s["effort"]["analytical"], cyc.torque, rtol=0, atol=torque_tol(s))
     for a in (140.0, 40.0, 130.0):
-        ex.slider.value = a
-        i_ex, i = at_angle(ex.cycle, a), at_angle(cyc, a)
-        analytical = float(ex.analytical["T12"][0])
-        assert ex.construction.valid and not ex.message
-        assert math.isclose(ex.construction.effort, analytical, rel_tol=1e-9)
-        assert math.isclose(analytical, ex.cycle.torque[i_ex], rel_tol=1e-12)
-        assert math.isclose(analytical, cyc.torque[i], rel_tol=1e-12)
+        ex.position = a
+        i = ex.index
+        assert i == at_angle(cyc, a) and math.isclose(ex.position, a, abs_tol=1e-9)
+        assert s["valid"][i] and s["graphical"]["valid"][i]
+        assert abs(effort(s, i) - cyc.torque[i]) <= torque_tol(s)
+        assert abs(effort(s, i, "graphical") - cyc.torque[i]) <= 1e-9 * abs(cyc.torque[i]) + torque_tol(s)
         for name in ("F23", "F34", "F14"):
-            assert np.allclose(ex.construction[name], r[name][i], rtol=1e-9, atol=1e-9)
-        assert np.allclose(ex.marker.get_data(), [[a], [analytical]])
-    assert ex.cycle.n == 360 + 4 and math.isclose(ex.cycle.average, gk.sweep(p, 360).average)
+            assert np.allclose(force(s, name, i), r[name][i], rtol=0, atol=force_tol(s))
 
 
 @pytest.mark.parametrize(("speed", "start"), [(450, "124 deg"), (900, "118 deg")])

@@ -15,6 +15,7 @@ import numpy as np
 import pytest
 
 import graphkin as gk
+from tests.lessons.explorer_reads import effort, force, force_tol, scene_of, superposed_effort, torque_tol
 
 TURN = 2 * math.pi
 RPM = math.pi / 30
@@ -224,36 +225,42 @@ def test_a_linkage_that_toggles():
 
 
 def test_the_explorer_at_600_rpm(cutter):
-    pytest.importorskip("ipywidgets")
+    """600 rpm typed in the explorer's speed box: the browser sums the scene's two presolved parts (the strip cutter's
+    forces are linear in ω²); that sum is the sweep of the file at 600 rpm, and so is the scene Python sends for it."""
+    pytest.importorskip("anywidget")
     p, _, _ = cutter
     text = gk.catalog.path("strip_cutter").read_text()
     speed_line = 'omega = "900 rpm"'
     assert text.count(speed_line) == 1
     ex = gk.explore(p)
-    ex.speed.value = 600
+    s = scene_of(ex)
     c600 = gk.sweep(gk.parse_problem(text.replace(speed_line, 'omega = "600 rpm"')), ex.n)
     c900 = gk.sweep(p, ex.n)
     T_static = gk.static_problem(p).solve(at=c900.q).effort
-    assert ex.n == 360 and ex.cycle.n == 364
-    assert math.isclose(ex.cycle.q_dot[0], 600 * RPM) and np.allclose(ex.cycle.q, c600.q)
-    assert np.allclose(ex.cycle.torque, c600.torque, rtol=1e-12, atol=1e-9)
-    assert np.allclose(ex.cycle.torque, T_static + (600 / 900) ** 2 * (c900.torque - T_static), rtol=1e-9, atol=1e-9)
-    assert math.isclose(ex.cycle.average, c900.average, rel_tol=1e-9)
+    assert ex.n == 360 and s["n"] == 364 and np.allclose(s["input"]["values"], c600.q)
+    assert s["speed"]["kind"] == "superpose" and math.isclose(s["speed"]["value"], 900 * RPM)
+    typed = superposed_effort(s, 600 * RPM)
+    assert np.allclose(typed, c600.torque, rtol=0, atol=2 * torque_tol(s))
+    assert np.allclose(c600.torque, T_static + (600 / 900) ** 2 * (c900.torque - T_static), rtol=1e-9, atol=1e-9)
+    for k, f in enumerate(s["forces"]):
+        parts = s["speed"]["superpose"]["forces"][k]
+        F = np.array(parts["rest"], float) + (600 * RPM) ** 2 * np.array(parts["omega2"], float)
+        assert np.allclose(F.reshape(-1, 2), c600.analysis[f["name"]], rtol=0, atol=2 * force_tol(s)), f["name"]
     f600, f900 = c600.flywheel(0.05), c900.flywheel(0.05)
     assert f600.E < 0.5 * f900.E and f600.I_s > f900.I_s
     i_max = int(np.argmax(c600.torque))
     assert i_max == np.flatnonzero(p.mechanism.loads[0].active.mask(c600.q))[0]
     theta = math.ceil(math.degrees(c600.q[i_max]))
-    i_at = int(np.argmin(abs(np.degrees(c600.q) - theta)))
     assert theta == 125
-    ex.slider.value = theta
-    marker_x, marker_y = (float(v[0]) for v in ex.marker.get_data())
-    assert math.isclose(ex.analytical.effort[0], c600.torque[i_at], rel_tol=1e-9)
-    assert math.isclose(ex.construction.effort, c600.torque[i_at], rel_tol=1e-9)
-    assert math.isclose(marker_x, theta) and math.isclose(marker_y, c600.torque[i_at], rel_tol=1e-9)
-    for name in ex.analytical.names():
-        assert np.allclose(ex.analytical[name][0], c600.analysis[name][i_at], rtol=1e-9, atol=1e-6)
-        assert np.allclose(ex.construction[name], c600.analysis[name][i_at], rtol=1e-9, atol=1e-6)
+    # The same speed asked of Python: a new scene, at the file's 600 rpm, shown at 125°.
+    ex.set("speed", 600 * RPM)
+    ex.position = theta
+    s600, i_at = scene_of(ex), ex.index
+    assert math.isclose(math.degrees(c600.q[i_at]), theta, abs_tol=1e-9)
+    assert abs(effort(s600, i_at) - c600.torque[i_at]) <= torque_tol(s600)
+    assert abs(effort(s600, i_at, "graphical") - c600.torque[i_at]) <= 1e-9 * abs(c600.torque[i_at]) + torque_tol(s600)
+    for f in s600["forces"]:
+        assert np.allclose(force(s600, f["name"], i_at), c600.analysis[f["name"]][i_at], rtol=0, atol=force_tol(s600))
 
 
 def test_the_exercises_keys_and_the_feedback():

@@ -1,4 +1,4 @@
-"""``gk.explore(problem, browser=True)`` (issue 37): the browser draws the scene with the shipped module; the kernel
+"""``gk.explore(problem)`` (issue 37): the browser draws the scene with the shipped module; the kernel
 answers only a change the scene cannot express, with a new scene equal to one built directly."""
 
 from __future__ import annotations
@@ -24,7 +24,7 @@ def _same_scene(ex, problem):
 
 @pytest.fixture
 def cutter():
-    return gk.explore(gk.load("strip_cutter"), n=N, browser=True)
+    return gk.explore(gk.load("strip_cutter"), n=N)
 
 
 def test_the_widget_is_the_shipped_module_and_its_scene_is_the_problems(cutter):
