@@ -178,6 +178,10 @@ def _from_python(page, root, name: str, count: int) -> int:
         return count
     el = root.element_handle().evaluate_handle("r => r.parentElement")  # anywidget's element: it stays
     el.evaluate("el => { el.graphkin.__old = true; }")
+    # What the student chose on the drawing stays across the new scene: here the force table hidden.
+    table = root.locator("[data-toggle=table]")
+    if table.count():
+        table.uncheck()
     count = _type_cell(page, f"{name}.set('mass.{link}', 2 * {name}.problem.mechanism.link({link}).mass); "
                              f"{name}.index = {shown}", count)
     page.wait_for_function("el => !el.graphkin.__old && !!el.querySelector('svg.gk-mechanism')", arg=el,
@@ -191,6 +195,9 @@ def _from_python(page, root, name: str, count: int) -> int:
     np.testing.assert_allclose(new_R, 2 * old_R, rtol=0, atol=3 * tol)
     _wait_index(page, new_root, shown)
     check_drawn(new_root.evaluate(READ), new, shown)
+    if table.count():
+        assert not new_root.locator("[data-toggle=table]").is_checked(), "a new scene showed the table again"
+        assert not new_root.locator(".gk-tablebox").is_visible()
     return count
 
 
