@@ -473,14 +473,15 @@ def _shaking(b: Batch, mech, pins) -> tuple[np.ndarray, np.ndarray]:
     """The shaking force (complex) and moment of each design at each position, as :class:`Cycle` sums them."""
     S = np.zeros(b.effort.shape, complex)
     M = np.zeros(b.effort.shape)
-    for joint, j, at in pins:
+    for joint, j, at in pins:  # in place: arrays of every design-position of the batch
         F = b.forces[(mech.frame, j)]
-        S = S - F
-        M = M + zcross(b.points[at], -F)
+        S -= F
+        M -= zcross(b.points[at], F)
         if isinstance(joint, Prismatic):
-            M = M - b.couple[(mech.frame, j)]
+            M -= b.couple[(mech.frame, j)]
     if mech.driver.crank:
-        return S, M - b.effort
+        M -= b.effort
+        return S, M
     # A slider driver's actuator pushes along the frame's guide: F1j = effort u, at the slider's point.
     joint = mech.joint_between(mech.frame, mech.driver.link)
     F = b.effort * np.exp(1j * joint.direction)
@@ -490,6 +491,48 @@ def _shaking(b: Batch, mech, pins) -> tuple[np.ndarray, np.ndarray]:
 def _energy_swings(theta: np.ndarray, T: np.ndarray) -> np.ndarray:
     """The energy swing E [J] of :func:`graphkin.cycle.flywheel.size_flywheel` for each row of ``T`` (designs, one
     closed turn ``theta``), driven at its mean, by the same steps row by row; rows with nan give nan.
+
+    The pulses' areas, accumulated from the first crossing of T with its mean, are the energies at the crossings
+    less that at the first (the last accumulated sum, the whole turn's, is U at the turn's end); so E is the larger
+    of their largest and U's end less the smaller of their smallest and U's end (0 without a crossing). The first
+    crossing is the first by index, or the last interval's where it lies past the turn's end (it is then one turn
+    back, first of all). Rows with a crossing past the turn's end elsewhere (a turn whose last angle repeats the
+    first), or angles that decrease, take :func:`_energy_swings_sorted`.
+    """
+    k, n = T.shape
+    h = steps(theta, closing_step(theta))
+    T_avg = np.sum(0.5 * (T + np.roll(T, -1, axis=1)) * h, axis=1) / TURN
+    D = T - T_avg[:, None]
+    D_next = np.roll(D, -1, axis=1)
+    step = D + D_next
+    step *= 0.5 * h
+    U = np.cumsum(step, axis=1)  # U[:, i] the energy at sample i + 1; at sample 0 it is 0
+    U_end = U[:, -1].copy()
+    cross = (D >= 0) != (D_next >= 0)
+    frac = D / (D - D_next)
+    at = theta + frac * h
+    wrap = at >= theta[0] + TURN * (1 - 1e-12)
+    wrap &= cross
+    # The energy at each crossing: U at the interval's start plus the trapezoid up to it.
+    V = D * frac
+    V *= 0.5 * h
+    V[:, 1:] += U[:, :-1]
+    V[:, -1] = np.where(wrap[:, -1], V[:, -1] - U_end, V[:, -1])
+    rows = np.arange(k)
+    first = np.where(wrap[:, -1], n - 1, np.argmax(cross, axis=1))
+    V0 = V[rows, first]
+    top = np.max(np.where(cross, V, -np.inf), axis=1) - V0
+    low = np.min(np.where(cross, V, np.inf), axis=1) - V0
+    E = np.maximum(np.maximum(top, U_end), 0.0) - np.minimum(np.minimum(low, U_end), 0.0)
+    E[~cross.any(axis=1)] = 0.0
+    odd = wrap[:, :-1].any(axis=1) | (not np.all(np.diff(theta) > 0))
+    if odd.any():
+        E[odd] = _energy_swings_sorted(theta, T[odd])
+    return np.where(np.isfinite(T).all(axis=1), E, np.nan)
+
+
+def _energy_swings_sorted(theta: np.ndarray, T: np.ndarray) -> np.ndarray:
+    """:func:`_energy_swings` with the crossings sorted by angle and their pulses' areas summed, for any closed turn.
 
     With m crossings of T and its mean in a row, the pulses' areas are padded with zeros to the row's length:
     their running sum then stays at its last value, which changes neither its largest nor its smallest value.
@@ -535,33 +578,49 @@ def _merits(shape, members: list, q: np.ndarray, Cs: float) -> dict:
     names = [force_name(mech, i, j) for (i, j) in b.forces]
     T, N = b.effort, len(q)
     with np.errstate(all="ignore"):  # a design that fails carries nan; its figures are not read
+        # Reductions over each design's positions; |x| peaks as the root of the largest square (one root a design).
         peak, square = np.max(np.abs(T), axis=1), _means(q, T * T)
-        joints = [np.max(np.hypot(F.real, F.imag), axis=1) for F in b.forces.values()]
+        joints = [_peak_size(F) for F in b.forces.values()]
         S, M = _shaking(b, mech, pins)
-        shaking_force, shaking_moment = np.max(np.hypot(S.real, S.imag), axis=1), np.max(np.abs(M), axis=1)
+        shaking_force, shaking_moment = _peak_size(S), np.max(np.abs(M), axis=1)
         if four is not None:
+            # μ folded to [0, π/2] grows with |u × v| / |u · v|: its least is μ at the position of the least ratio.
             A, B, B0 = (b.points[at] for at in four)
             u, v = A - B, B0 - B
-            mu = np.arctan2(np.abs(zcross(u, v)), u.real * v.real + u.imag * v.imag)
-            mu_min = np.min(np.minimum(mu, np.pi - mu), axis=1)
+            size, along = np.abs(zcross(u, v)), u.real * v.real + u.imag * v.imag
+            at = np.argmin(size / np.abs(along), axis=1)
+            rows = np.arange(len(at))
+            mu = np.arctan2(size[rows, at], along[rows, at])
+            mu_min = np.minimum(mu, np.pi - mu).tolist()
         closed = closing_step(q) is not None
-        swing = _energy_swings(q, T) if closed else None  # where T does not cross its mean: 0/0, x/0, not read
+        swing = _energy_swings(q, T).tolist() if closed else None  # T not crossing its mean: 0/0, x/0, not read
+    ok = b.valid.all(axis=1).tolist()
+    peak, square, shaking_force, shaking_moment = (x.tolist() for x in (peak, square, shaking_force, shaking_moment))
+    joints = [x.tolist() for x in joints]
     out, whys = {}, {}
     for d, (index, vals, _, w, _) in enumerate(members):
-        bad = np.flatnonzero(~b.valid[d])
-        if len(bad):
+        if not ok[d]:
+            bad = np.flatnonzero(~b.valid[d])
             out[index] = _failed(vals, names, len(bad), q, int(bad[0]), mech.driver.crank, b.reason(d, int(bad[0])))
             continue
-        q_dot = np.full(N, w)
         # The design's own cycle's words for a flywheel it cannot have: for a valid design of a crank they follow
         # from its speed (and, at rest, whether its analysis is static, which a batch shares).
         if w not in whys:
-            whys[w] = Cycle.why_no_flywheel(SimpleNamespace(problem=shape, closed=closed, valid=b.valid[d], q_dot=q_dot))
-        why = whys[w]
+            q_dot = np.full(N, w)
+            why = Cycle.why_no_flywheel(SimpleNamespace(problem=shape, closed=closed, valid=b.valid[d], q_dot=q_dot))
+            whys[w] = why, None if why else Cs * float(np.mean(q_dot)) ** 2
+        why, per = whys[w]
         out[index] = Design(
-            values=vals, torque_peak=float(peak[d]), torque_rms=math.sqrt(square[d]),
-            joint_peaks={name: float(x[d]) for name, x in zip(names, joints)},
-            I_s=math.nan if why else float(swing[d]) / (Cs * float(np.mean(q_dot)) ** 2),
-            shaking_force_peak=float(shaking_force[d]), shaking_moment_peak=float(shaking_moment[d]),
-            transmission_angle_min=float(mu_min[d]) if four is not None else math.nan, no_flywheel=why)
+            values=vals, torque_peak=peak[d], torque_rms=math.sqrt(square[d]),
+            joint_peaks={name: x[d] for name, x in zip(names, joints)},
+            I_s=math.nan if why else swing[d] / per,
+            shaking_force_peak=shaking_force[d], shaking_moment_peak=shaking_moment[d],
+            transmission_angle_min=mu_min[d] if four is not None else math.nan, no_flywheel=why)
     return out
+
+
+def _peak_size(F: np.ndarray) -> np.ndarray:
+    """The largest |F| of each row of complex ``F`` (designs, positions): √ of the largest |F|²."""
+    F2 = F.real * F.real
+    F2 += F.imag * F.imag
+    return np.sqrt(np.max(F2, axis=1))

@@ -53,7 +53,7 @@ def _crank_step(plan: Plan, g: DriverGroup):
 
     def step(st):
         q, w, al = st.q, st.q_dot, st.q_ddot
-        e = np.exp(1j * q)
+        e = np.exp(1j * q) if st.e_q is None else st.e_q
         st.e[link] = e
         st.theta[link], st.omega[link], st.alpha[link] = q, w, al
         st.pivots[link] = (X, p)
@@ -324,11 +324,12 @@ _FIELDS = ("theta", "omega", "alpha", "e", "O", "v_O", "a_O")
 
 
 def run(plan: Plan, mech: Mechanism, q, q_dot, q_ddot, rates=(None, None), *, angles: bool = True,
-        compiled=None):
+        compiled=None, e_q=None):
     """Every step over one batch of positions: the filled state and where it is valid.
 
     ``rates`` are the input speed and acceleration as numbers when they are the same at every position
     (:func:`constant`), else None. ``compiled``: the steps and branches to run, while they are being compiled.
+    ``e_q``: e^{iq} of a crank's input angles, if the caller has it (else worked out here).
     """
     if compiled is None:
         steps = _steps(plan, mech)
@@ -337,6 +338,7 @@ def run(plan: Plan, mech: Mechanism, q, q_dot, q_ddot, rates=(None, None), *, an
     st = State(mech, len(q), plan)
     st.q, st.q_dot, st.q_ddot = q, q_dot, q_ddot
     st.branches = branches
+    st.e_q = e_q
     # Constant input rates (the usual case) make the crank's factors numbers instead of arrays.
     st.w0, st.al0 = rates
     for step in steps:
