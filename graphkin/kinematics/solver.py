@@ -122,7 +122,6 @@ def _rrr_step(plan: Plan, d: Dyad, sigma: int, index: int):
     signs = np.array([[-1.0], [1.0]]) * sigma
     # |A| |B| of the general test (the arms' lengths, to rounding): below this |det| is a dead point.
     dead = DEAD_POINT * Lj * Lk
-    branch = 1j * sigma
     reach = f"{d.label} cannot be assembled ({d.J1.point}{d.J3.point} out of reach)"
     toggle = f"{d.label} is at a dead point"
     together = (f"{d.label} has no definite position: its outer pins {d.J1.point} and {d.J3.point} coincide, "
@@ -161,7 +160,10 @@ def _rrr_step(plan: Plan, d: Dyad, sigma: int, index: int):
             st.fail(reach, short)
         s = np.sqrt(h2)
         R = np.empty((2, st.n), complex)
-        r12 = np.multiply(D, t + branch * s, out=R[0])
+        z = R[1]  # t + iσ s, made of its parts in the row r23 takes next (the same numbers as t + branch · s)
+        z.real = t
+        np.multiply(s, sigma, out=z.imag)
+        r12 = np.multiply(D, z, out=R[0])
         np.subtract(D, r12, out=R[1])  # r23
         Rx = R[::-1]  # r23, r12: the other arm of each row, for the dot products
         X2 = X1 + r12
