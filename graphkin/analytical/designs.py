@@ -127,11 +127,24 @@ def numbers(mech: Mechanism) -> dict:
     return out
 
 
-def _specs(mech: Mechanism, designs: Sequence[dict], points: dict, N: int) -> dict:
+def _specs(mech: Mechanism, designs: Sequence[dict], points: dict, q: np.ndarray) -> dict:
     """:func:`graphkin.analytical.loads.load_specs` of the batch: each number one per design-position where the
-    designs differ (the same expressions as for one design, design by design)."""
+    designs differ (the same expressions as for one design, design by design). A load's window is applied here,
+    to each design's positions ``q`` alike: its force or torque is an array, 0 where the load does not act (as
+    :func:`graphkin.analytical.loads._external_fast` makes it), and the spec's window None."""
+    k, N = len(designs), len(q)
+
     def each(key):
         return _per_design([d[key] for d in designs], N)
+
+    masks: dict = {}
+
+    def acting(value, active):
+        if active is None:
+            return value, None
+        if active not in masks:  # where it acts over one design's positions, then over every design's
+            masks[active] = np.tile(active.mask(q), k)
+        return masks[active] * value, None
 
     g, specs = mech.gravity, {}
     for link in mech.moving:
@@ -139,9 +152,9 @@ def _specs(mech: Mechanism, designs: Sequence[dict], points: dict, N: int) -> di
         # The loads on the link in the order load_specs takes them (every design has the same loads).
         loads = [(i, load) for i, load in enumerate(mech.loads) if load.link == link]
         specs[link] = (each(("mass", link)), each(("I_G", link)), each(("G", link)), _per_design(W, N),
-                       [(points[link, load.point], each(("load", i)), load.active)
+                       [(points[link, load.point], *acting(each(("load", i)), load.active))
                         for i, load in loads if isinstance(load, PointForce)],
-                       [(each(("load", i)), load.active) for i, load in loads if not isinstance(load, PointForce)],
+                       [acting(each(("load", i)), load.active) for i, load in loads if not isinstance(load, PointForce)],
                        [])
     return specs
 
@@ -184,21 +197,26 @@ def solve_designs(mech: Mechanism, designs: Sequence[dict], q, q_dot, q_ddot, *,
     k, N = len(designs), len(q)
     base = plan_of(mech)
     plan = plan_with(base, {key: _per_design([d[("point", *key)] for d in designs], N) for key in base.points})
-    plan.compiled["loads"] = _specs(mech, designs, plan.points, N)
+    plan.compiled["loads"] = _specs(mech, designs, plan.points, np.asarray(q, dtype=float))
     w, al = _per_design(list(q_dot), N), _per_design(list(q_ddot), N)
     rates = (float(w), float(al)) if not (np.ndim(w) or np.ndim(al)) else (None, None)
     n = k * N
     qs = np.tile(np.asarray(q, dtype=float), k)
+    crank = mech.driver.crank
     with np.errstate(all="ignore"):  # positions that cannot be assembled carry nan, by design
+        # A crank's e^{iq} over one design's positions, repeated: the same numbers as over the batch's.
         st, kin_valid = run(plan, mech, qs, np.broadcast_to(w, (n,)).astype(float),
-                            np.broadcast_to(al, (n,)).astype(float), rates, angles=False)
+                            np.broadcast_to(al, (n,)).astype(float), rates, angles=False,
+                            e_q=np.tile(np.exp(1j * np.asarray(q, dtype=float)), k) if crank else None)
         st.static = static
         _program(plan, mech)
         kin = Kinematics(mech, st.q, st.q_dot, st.q_ddot, st.theta, st.omega, st.alpha, st.e, st.O, st.v_O, st.a_O,
                          kin_valid, st.failures, plan.groups, static=static, points=plan.points) \
             if plan.compiled["general"] else st
         forces, normal, couple, effort, valid, failures = _pass(kin, plan, kin_valid, st.loops)
-        where = {key: st.O[key[0]] + st.e[key[0]] * plan.points[key] for key in points}
+        # A point of the frame is where the frame has it (its own, or each design's, repeated over its positions).
+        where = {key: np.broadcast_to(plan.points[key], (n,)) if key[0] == mech.frame
+                 else st.O[key[0]] + st.e[key[0]] * plan.points[key] for key in points}
 
     def shaped(d: dict) -> dict:
         return {key: x.reshape(k, N) for key, x in d.items()}

@@ -28,11 +28,10 @@ from dataclasses import replace
 
 import numpy as np
 
-from graphkin.analytical.loads import _external_fast, _inertia_fast, _known, load_specs, springs_without_a_line
+from graphkin.analytical.loads import _external_fast, _inertia_fast, _known, cross, load_specs, springs_without_a_line
 from graphkin.analytical.meshes import contact, power_flow
 from graphkin.analytical.result import ForceAnalysis
 from graphkin.errors import GraphkinError
-from graphkin.geometry import zcross as cross
 from graphkin.geometry import zdot as dot
 from graphkin.kinematics import DriverGroup, Dyad, GearGroup, Kinematics
 from graphkin.kinematics.groups import solve_columns
@@ -233,7 +232,7 @@ def _rrr(plan: Plan, mech: Mechanism, d: Dyad):
     (mj, Ij, Gj), (mk, Ik, Gk) = specs[j][:3], specs[k][:3]
     # Rows j and k: G from the outer pin (J1 on j, J3 on k) in the link's frame, −m, I_G.
     G_out = rows(Gj - P[j, d.J1.point], Gk - P[k, d.J3.point])
-    minus_m = rows(-mj, -mk)
+    minus_m = rows(-mj, -mk).astype(complex)  # −m a_G as one complex product (NumPy's, with the mass made complex)
     I_G = rows(Ij, Ik)
     heavy = any(map(np.any, (mj, mk, Ij, Ik)))
     sigma = mech.assembly.get(d.key, 1)  # det = r12 × r23 = −σ |det|; the force equations' is −det
@@ -256,12 +255,15 @@ def _rrr(plan: Plan, mech: Mechanism, d: Dyad):
         X1, X2, X3, R, size, a1, a3, *rows = from_kinematics(kin) if loop is None else loop
         E, W, AL = rows or (np.stack([kin.e[j], kin.e[k]]), np.stack([kin.omega[j], kin.omega[k]]),
                             np.stack([kin.alpha[j], kin.alpha[k]]))
-        W2 = W * W
         r12, r23 = R
         if heavy and not kin.static:
             # a_G = a(outer pin) + (iα − ω²) ρ with ρ from the pin to G; F = −m a_G.
             rho = E * G_out
-            A = (1j * AL - W2) * rho
+            A = np.empty(rho.shape, complex)  # iα − ω², made of its parts (no product with 1j, no real − complex)
+            np.multiply(W, W, out=A.real)
+            np.negative(A.real, out=A.real)
+            A.imag = AL
+            A *= rho
             if a1 is not None:
                 A[0] += a1
             if a3 is not None:
@@ -291,7 +293,8 @@ def _rrr(plan: Plan, mech: Mechanism, d: Dyad):
         T = Fj + Fk
         ndet = size if sigma > 0 else -size
         b3 = Mk - cross(r23, T)
-        F1 = (b3 * r12 - Mj * r23) / ndet
+        F1 = r12 * (b3 / ndet)  # real quotients: a complex one by a real divisor costs ten times as much
+        F1 -= r23 * (Mj / ndet)
         F3 = -(T + F1)
         F2 = F1 + Fj
         for key, sign, F in zip(keys, (sign1, sign2, sign3), (F1, F2, F3)):

@@ -3,20 +3,27 @@
 A designer judges a choice by what it costs over the whole cycle (Norton, *Design of Machinery*, ch. 11): the peak
 and RMS driving torque, the flywheel it needs, the peak force at each joint, the shaking force and moment on the
 frame, the smallest transmission angle. A design that cannot be assembled somewhere on its cycle has none of them
-(nan): a peak over part of a cycle would look better than the design is. :func:`graphkin.cycle.study` reads the same
-figures off a batch of designs at once; :func:`merit` reads them off one :class:`~graphkin.cycle.Cycle`.
+(nan): a peak over part of a cycle would look better than the design is. :func:`merit` reads them off one
+:class:`~graphkin.cycle.Cycle`; :func:`batch_merits` off a batch of designs solved together (what
+:func:`graphkin.cycle.study` does), array by array, each design's to rounding.
 """
 
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from types import SimpleNamespace
 from typing import Mapping
 
 import numpy as np
 
+from graphkin.analytical.designs import Batch, solve_designs
 from graphkin.cycle.sweep import Cycle
+from graphkin.cycle.turn import TURN, closing_step, steps, weights
 from graphkin.errors import GraphkinError
+from graphkin.geometry import zcross
+from graphkin.model import Prismatic, Revolute
+from graphkin.model.names import force_name
 from graphkin.notation import position_text
 
 __all__ = ["Design", "failed", "merit", "unbuilt"]
@@ -127,3 +134,196 @@ def merit(cycle: Cycle, values: tuple, Cs: float) -> Design:
     )
 
 
+def _means(q: np.ndarray, f: np.ndarray) -> np.ndarray:
+    """:meth:`Cycle.mean` of each row of ``f`` (designs, positions), by the same rule."""
+    gap = closing_step(q)
+    if gap is not None:
+        return np.sum(weights(q, gap) * f, axis=1) / TURN
+    if len(q) < 2 or q[-1] == q[0]:
+        return f[:, 0] if len(q) == 1 else np.full(len(f), math.nan)
+    return np.sum(0.5 * (f[:, 1:] + f[:, :-1]) * np.diff(q), axis=1) / (q[-1] - q[0])
+
+
+def _four_bar(mech) -> tuple | None:
+    """The pins (link, point) of a crank-driven four-bar's transmission angle: A and B on the coupler, B0 on the
+    frame (:meth:`Cycle.transmission_angle`); None for another linkage."""
+    if not (len(mech.links) == 4 and len(mech.joints) == 4 and mech.driver.crank
+            and all(isinstance(j, Revolute) for j in mech.joints)):
+        return None
+    crank = mech.driver.link
+    coupler = [j for j in mech.moving if j != crank and any(set(J.links) == {crank, j} for J in mech.joints)]
+    if len(coupler) != 1:
+        return None
+    (coupler,) = coupler
+    (rocker,) = [j for j in mech.moving if j not in (crank, coupler)]
+    return ((coupler, mech.joint_between(crank, coupler).point), (coupler, mech.joint_between(coupler, rocker).point),
+            (mech.frame, mech.joint_between(mech.frame, rocker).point))
+
+
+def _frame_pins(mech, forces) -> list:
+    """Each joint with the frame, in the order of ``forces`` (pairs of links): (joint, moving link, the point its
+    force acts at)."""
+    out = []
+    for i, j in forces:
+        if mech.frame in (i, j):
+            joint = mech.joint_between(i, j)
+            at = (joint.slider, joint.point) if isinstance(joint, Prismatic) else (mech.frame, joint.point)
+            out.append((joint, j if i == mech.frame else i, at))
+    return out
+
+
+def _shaking(b: Batch, mech, pins) -> tuple[np.ndarray, np.ndarray]:
+    """The shaking force (complex) and moment of each design at each position, as :class:`Cycle` sums them."""
+    S = np.zeros(b.effort.shape, complex)
+    M = np.zeros(b.effort.shape)
+    for joint, j, at in pins:  # in place: arrays of every design-position of the batch
+        F = b.forces[(mech.frame, j)]
+        S -= F
+        M -= (np.conjugate(b.points[at]) * F).imag  # zcross(at, F) as one complex product
+        if isinstance(joint, Prismatic):
+            M -= b.couple[(mech.frame, j)]
+    if mech.driver.crank:
+        M -= b.effort
+        return S, M
+    # A slider driver's actuator pushes along the frame's guide: F1j = effort u, at the slider's point.
+    joint = mech.joint_between(mech.frame, mech.driver.link)
+    F = b.effort * np.exp(1j * joint.direction)
+    return S - F, M + zcross(b.points[joint.slider, joint.point], -F)
+
+
+def _energy_swings(theta: np.ndarray, T: np.ndarray) -> np.ndarray:
+    """The energy swing E [J] of :func:`graphkin.cycle.flywheel.size_flywheel` for each row of ``T`` (designs, one
+    closed turn ``theta``), driven at its mean, by the same steps row by row; rows with nan give nan.
+
+    The pulses' areas, accumulated from the first crossing of T with its mean, are the energies at the crossings
+    less that at the first (the last accumulated sum, the whole turn's, is U at the turn's end); so E is the larger
+    of their largest and U's end less the smaller of their smallest and U's end (0 without a crossing). The first
+    crossing is the first by index, or the last interval's where it lies past the turn's end (it is then one turn
+    back, first of all). Rows with a crossing past the turn's end elsewhere (a turn whose last angle repeats the
+    first), or angles that decrease, take :func:`_energy_swings_sorted`.
+    """
+    k, n = T.shape
+    h = steps(theta, closing_step(theta))
+    T_avg = np.sum(0.5 * (T + np.roll(T, -1, axis=1)) * h, axis=1) / TURN
+    D = T - T_avg[:, None]
+    D_next = np.roll(D, -1, axis=1)
+    step = D + D_next
+    step *= 0.5 * h
+    U = np.cumsum(step, axis=1)  # U[:, i] the energy at sample i + 1; at sample 0 it is 0
+    U_end = U[:, -1].copy()
+    cross = (D >= 0) != (D_next >= 0)
+    frac = D / (D - D_next)
+    at = theta + frac * h
+    wrap = at >= theta[0] + TURN * (1 - 1e-12)
+    wrap &= cross
+    # The energy at each crossing: U at the interval's start plus the trapezoid up to it.
+    V = D * frac
+    V *= 0.5 * h
+    V[:, 1:] += U[:, :-1]
+    V[:, -1] = np.where(wrap[:, -1], V[:, -1] - U_end, V[:, -1])
+    rows = np.arange(k)
+    first = np.where(wrap[:, -1], n - 1, np.argmax(cross, axis=1))
+    V0 = V[rows, first]
+    top = np.max(np.where(cross, V, -np.inf), axis=1) - V0
+    low = np.min(np.where(cross, V, np.inf), axis=1) - V0
+    E = np.maximum(np.maximum(top, U_end), 0.0) - np.minimum(np.minimum(low, U_end), 0.0)
+    E[~cross.any(axis=1)] = 0.0
+    odd = wrap[:, :-1].any(axis=1) | (not np.all(np.diff(theta) > 0))
+    if odd.any():
+        E[odd] = _energy_swings_sorted(theta, T[odd])
+    return np.where(np.isfinite(T).all(axis=1), E, np.nan)
+
+
+def _energy_swings_sorted(theta: np.ndarray, T: np.ndarray) -> np.ndarray:
+    """:func:`_energy_swings` with the crossings sorted by angle and their pulses' areas summed, for any closed turn.
+
+    With m crossings of T and its mean in a row, the pulses' areas are padded with zeros to the row's length:
+    their running sum then stays at its last value, which changes neither its largest nor its smallest value.
+    """
+    k, n = T.shape
+    h = steps(theta, closing_step(theta))
+    T_avg = np.sum(0.5 * (T + np.roll(T, -1, axis=1)) * h, axis=1) / TURN
+    D = T - T_avg[:, None]
+    D_next = np.roll(D, -1, axis=1)
+    U = np.concatenate([np.zeros((k, 1)), np.cumsum(0.5 * (D + D_next) * h, axis=1)], axis=1)
+    cross = (D >= 0) != (D_next >= 0)
+    frac = D / (D - D_next)
+    at = theta + frac * h
+    U_c = U[:, :-1] + 0.5 * D * frac * h
+    wrap = at >= theta[0] + TURN * (1 - 1e-12)
+    at = np.where(wrap, at - TURN, at)
+    U_c = np.where(wrap, U_c - U[:, -1:], U_c)
+    # Each row's crossings in order of angle (the others after them), then the areas between them.
+    order = np.argsort(np.where(cross, at, np.inf), axis=1, kind="stable")
+    U_c = np.take_along_axis(np.where(cross, U_c, np.nan), order, axis=1)
+    m = cross.sum(axis=1)
+    rows = np.arange(k)
+    ends = np.append(U_c[:, 1:], np.full((k, 1), np.nan), axis=1)
+    ends[rows[m > 0], m[m > 0] - 1] = U_c[m > 0, 0] + U[m > 0, -1]
+    areas = np.where(np.arange(n) < m[:, None], ends - U_c, 0.0)
+    accumulated = np.cumsum(areas, axis=1)
+    E = np.maximum(accumulated.max(axis=1, initial=0.0), 0.0) - np.minimum(accumulated.min(axis=1, initial=0.0), 0.0)
+    return np.where(np.isfinite(T).all(axis=1), E, np.nan)
+
+
+def batch_merits(shape, members: list, q: np.ndarray, Cs: float) -> dict:
+    """The figures of merit of designs that share a batch (:func:`merit`'s, each design's to rounding), by index.
+
+    ``shape`` is one of the designs' problems (their links, joints, loads, analysis); ``members`` are
+    ``(index, values, numbers, q_dot, q_ddot)``.
+    """
+    mech = shape.mechanism
+    four = _four_bar(mech)
+    b = solve_designs(mech, [m[2] for m in members], q, [m[3] for m in members], [m[4] for m in members],
+                      static=shape.static,
+                      points=[at for _, _, at in _frame_pins(mech, [j.links for j in mech.joints])] + list(four or ()))
+    pins = _frame_pins(mech, b.forces)  # in the order a Cycle sums them
+    names = [force_name(mech, i, j) for (i, j) in b.forces]
+    T, N = b.effort, len(q)
+    with np.errstate(all="ignore"):  # a design that fails carries nan; its figures are not read
+        # Reductions over each design's positions.
+        peak, square = np.max(np.abs(T), axis=1), _means(q, T * T)
+        joints = [_peak_size(F) for F in b.forces.values()]
+        S, M = _shaking(b, mech, pins)
+        shaking_force, shaking_moment = _peak_size(S), np.max(np.abs(M), axis=1)
+        if four is not None:
+            # μ folded to [0, π/2] grows with |u × v| / |u · v|: its least is μ at the position of the least ratio.
+            A, B, B0 = (b.points[at] for at in four)
+            u, v = A - B, B0 - B
+            uv = np.conjugate(u) * v  # u · v + i u × v, one complex product
+            size, along = np.abs(uv.imag), uv.real
+            at = np.argmin(size / np.abs(along), axis=1)
+            rows = np.arange(len(at))
+            mu = np.arctan2(size[rows, at], along[rows, at])
+            mu_min = np.minimum(mu, np.pi - mu).tolist()
+        closed = closing_step(q) is not None
+        swing = _energy_swings(q, T).tolist() if closed else None  # T not crossing its mean: 0/0, x/0, not read
+    ok = b.valid.all(axis=1).tolist()
+    peak, square, shaking_force, shaking_moment = (x.tolist() for x in (peak, square, shaking_force, shaking_moment))
+    joints = [x.tolist() for x in joints]
+    out, whys = {}, {}
+    for d, (index, vals, _, w, _) in enumerate(members):
+        if not ok[d]:
+            bad = np.flatnonzero(~b.valid[d])
+            out[index] = failed(vals, names, len(bad), q, int(bad[0]), mech.driver.crank, b.reason(d, int(bad[0])))
+            continue
+        # The design's own cycle's words for a flywheel it cannot have: for a valid design of a crank they follow
+        # from its speed (and, at rest, whether its analysis is static, which a batch shares).
+        if w not in whys:
+            q_dot = np.full(N, w)
+            why = Cycle.why_no_flywheel(SimpleNamespace(problem=shape, closed=closed, valid=b.valid[d], q_dot=q_dot))
+            whys[w] = why, None if why else Cs * float(np.mean(q_dot)) ** 2
+        why, per = whys[w]
+        out[index] = Design(
+            values=vals, torque_peak=peak[d], torque_rms=math.sqrt(square[d]),
+            joint_peaks={name: x[d] for name, x in zip(names, joints)},
+            I_s=math.nan if why else swing[d] / per,
+            shaking_force_peak=shaking_force[d], shaking_moment_peak=shaking_moment[d],
+            transmission_angle_min=mu_min[d] if four is not None else math.nan, no_flywheel=why)
+    return out
+
+
+def _peak_size(F: np.ndarray) -> np.ndarray:
+    """The largest |F| of each row of complex ``F`` (designs, positions): np.abs of a complex array is
+    np.hypot of its parts, a third of the time of np.hypot on the strided parts."""
+    return np.max(np.abs(F), axis=1)

@@ -89,6 +89,8 @@ class State:
         self.pivots: dict = {}
         self.finite = {id(self.zero)}
         self.w0 = self.al0 = None
+        # e^{iq} of a crank's input angles when the caller has it (a batch of designs: one turn's, repeated).
+        self.e_q = None
         # Links placed by a dyad whose angle a gear is turned by: link -> (m, c) of :meth:`turned`.
         self.branches: dict = {}
 

@@ -53,7 +53,7 @@ def _crank_step(plan: Plan, g: DriverGroup):
 
     def step(st):
         q, w, al = st.q, st.q_dot, st.q_ddot
-        e = np.exp(1j * q)
+        e = np.exp(1j * q) if st.e_q is None else st.e_q
         st.e[link] = e
         st.theta[link], st.omega[link], st.alpha[link] = q, w, al
         st.pivots[link] = (X, p)
@@ -122,7 +122,6 @@ def _rrr_step(plan: Plan, d: Dyad, sigma: int, index: int):
     signs = np.array([[-1.0], [1.0]]) * sigma
     # |A| |B| of the general test (the arms' lengths, to rounding): below this |det| is a dead point.
     dead = DEAD_POINT * Lj * Lk
-    branch = 1j * sigma
     reach = f"{d.label} cannot be assembled ({d.J1.point}{d.J3.point} out of reach)"
     toggle = f"{d.label} is at a dead point"
     together = (f"{d.label} has no definite position: its outer pins {d.J1.point} and {d.J3.point} coincide, "
@@ -161,7 +160,10 @@ def _rrr_step(plan: Plan, d: Dyad, sigma: int, index: int):
             st.fail(reach, short)
         s = np.sqrt(h2)
         R = np.empty((2, st.n), complex)
-        r12 = np.multiply(D, t + branch * s, out=R[0])
+        z = R[1]  # t + iσ s, made of its parts in the row r23 takes next (the same numbers as t + branch · s)
+        z.real = t
+        np.multiply(s, sigma, out=z.imag)
+        r12 = np.multiply(D, z, out=R[0])
         np.subtract(D, r12, out=R[1])  # r23
         Rx = R[::-1]  # r23, r12: the other arm of each row, for the dot products
         X2 = X1 + r12
@@ -324,11 +326,12 @@ _FIELDS = ("theta", "omega", "alpha", "e", "O", "v_O", "a_O")
 
 
 def run(plan: Plan, mech: Mechanism, q, q_dot, q_ddot, rates=(None, None), *, angles: bool = True,
-        compiled=None):
+        compiled=None, e_q=None):
     """Every step over one batch of positions: the filled state and where it is valid.
 
     ``rates`` are the input speed and acceleration as numbers when they are the same at every position
     (:func:`constant`), else None. ``compiled``: the steps and branches to run, while they are being compiled.
+    ``e_q``: e^{iq} of a crank's input angles, if the caller has it (else worked out here).
     """
     if compiled is None:
         steps = _steps(plan, mech)
@@ -337,6 +340,7 @@ def run(plan: Plan, mech: Mechanism, q, q_dot, q_ddot, rates=(None, None), *, an
     st = State(mech, len(q), plan)
     st.q, st.q_dot, st.q_ddot = q, q_dot, q_ddot
     st.branches = branches
+    st.e_q = e_q
     # Constant input rates (the usual case) make the crank's factors numbers instead of arrays.
     st.w0, st.al0 = rates
     for step in steps:
