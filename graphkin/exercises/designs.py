@@ -27,6 +27,8 @@ from types import SimpleNamespace
 
 import numpy as np
 
+from graphkin.cycle.choice import figure_values, figures, requirement
+from graphkin.cycle.study import study
 from graphkin.errors import GraphkinError, ProblemFileError
 from graphkin.units import to_si
 
@@ -86,8 +88,6 @@ class DesignTable:
 
 def _figures() -> dict:
     """The figures of merit a design has by itself (no study needed to name them), and their dimensions."""
-    from graphkin.cycle.choice import figures
-
     return figures(SimpleNamespace(crank=True, designs=()))
 
 
@@ -118,16 +118,14 @@ def read_design(t: dict, values: tuple, fail) -> DesignTable:
         ``fail(where, message)`` makes the error naming the file and the field ``design.<where>``.
     """
     dim, si = dimension(values, lambda m: fail("design", m))
-    figures = _figures()
+    known = _figures()
     minimise = t.get("minimise", "value")
-    if minimise != "value" and minimise not in figures:
-        raise fail("design.minimise", f"must be \"value\" (the field's own) or one of {', '.join(figures)}, "
+    if minimise != "value" and minimise not in known:
+        raise fail("design.minimise", f"must be \"value\" (the field's own) or one of {', '.join(known)}, "
                                       f"got {minimise!r}")
     require = t.get("require", [])
     if not isinstance(require, list) or not require or not all(isinstance(r, str) for r in require):
         raise fail("design.require", "must be a non-empty list of limits such as [\"shaking_force_peak <= 1500 N\"]")
-    from graphkin.cycle.choice import requirement
-
     for i, text in enumerate(require):
         try:
             requirement(SimpleNamespace(crank=True, designs=()), text, label="limit")
@@ -174,9 +172,6 @@ def choose(table: DesignTable, data: dict, *, n: int | None, Cs: float | None) -
     Cs : float or None
         Coefficient of speed fluctuation, where a limit or the cost is the flywheel's I_s.
     """
-    from graphkin.cycle.choice import figure_values, requirement
-    from graphkin.cycle.study import study
-
     s = study(data, {table.field: list(table.values)}, n=n, Cs=Cs if Cs is not None else 0.05)
     x = np.asarray(table.si, float)
     ok = np.array([d.ok for d in s.designs], bool)
