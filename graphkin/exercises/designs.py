@@ -86,6 +86,34 @@ class DesignTable:
         return float(np.max(np.diff(s))) if len(s) > 1 else 0.0
 
 
+WORDS = {"torque_peak": "the peak driving torque", "torque_rms": "the RMS driving torque", "I_s": "the flywheel's I_s",
+         "shaking_force_peak": "the peak shaking force", "shaking_moment_peak": "the peak shaking moment",
+         "transmission_angle_min": "the least transmission angle"}
+"""Each figure of merit in the words a student's sheet and feedback print (no file keys)."""
+
+_OPS = {"<=": "≤", ">=": "≥", "<": "<", ">": ">"}
+
+
+def figure_words(name: str) -> str:
+    """A figure of merit in words: ``"the peak shaking force"``, ``"the peak |F23|"``."""
+    return WORDS.get(name, f"the peak |{name.removesuffix('_peak')}|")
+
+
+def limit_words(table: DesignTable) -> str:
+    """The limits in words: ``"the peak shaking force ≤ 1500 N"``, joined by "and"."""
+    out = []
+    for text in table.require:
+        r = requirement(SimpleNamespace(crank=True, designs=()), text, label="limit")
+        value = text.split(r.op, 1)[1].strip()
+        out.append(f"{figure_words(r.figure)} {_OPS[r.op]} {value}")
+    return " and ".join(out)
+
+
+def cost_words(table: DesignTable) -> str:
+    """What the design minimises in words: ``"counterweight B"``, ``"the flywheel's I_s"``."""
+    return table.label if table.minimise == "value" else figure_words(table.minimise)
+
+
 def _figures() -> dict:
     """The figures of merit a design has by itself (no study needed to name them), and their dimensions."""
     return figures(SimpleNamespace(crank=True, designs=()))
@@ -201,7 +229,7 @@ def choose(table: DesignTable, data: dict, *, n: int | None, Cs: float | None) -
             runs.append((float(start), float(x[i] if meets[i] else x[order[k - 1]])))
             start = None
     key = cheapest(meets)
-    why = None if key is not None else (f"no {table.label} of the grid meets {' and '.join(table.require)}")
+    why = None if key is not None else f"no {table.label} of the grid meets {limit_words(table)}"
     return Chosen(key, slips, tuple(runs), why)
 
 
@@ -214,8 +242,7 @@ def slack(table: DesignTable, tolerance: float, value: float) -> float:
 def design_words(table: DesignTable, chosen: Chosen) -> dict:
     """The words of a design question's messages: the limits, what is minimised, and the runs of the grid that
     meet the limits (as text, for :func:`design_part`; keys carry them as they carry every word)."""
-    cost = "value of " + table.label if table.minimise == "value" else table.minimise
-    return {"limit": " and ".join(table.require), "cost": cost,
+    return {"limit": limit_words(table), "cost": cost_words(table),
             "feasible": ";".join(f"{lo!r}:{hi!r}" for lo, hi in chosen.feasible)}
 
 
@@ -228,14 +255,13 @@ def design_part(exp, a: float, words: dict, step: float) -> str:
     meets = any(lo - step / 2 <= a <= hi + step / 2 for lo, hi in runs)
     if not meets:
         return f"that design does not meet {words['limit']}"
-    return f"that design meets {words['limit']}, but it is not the one with the least {words['cost']}"
+    return f"that design meets {words['limit']}, but it is not the one of least {words['cost']} that does"
 
 
 def hint(table: DesignTable) -> str:
     """Where a design's answer comes from, for the grader's "revisit"."""
-    cost = f"the least {table.label}" if table.minimise == "value" else f"the least {table.minimise}"
-    return (f"a study of every {table.label} of the grid (graphkin.study), each solved over the cycle, then "
-            f"{cost} among those that meet {' and '.join(table.require)}")
+    return (f"a study of every {table.label} of the grid, each design solved over the cycle, then the one with "
+            f"the least {cost_words(table)} among those that meet {limit_words(table)}")
 
 
 def grid_text(table: DesignTable) -> str:

@@ -71,8 +71,8 @@ MESSAGES = {
                         "Revisit {hint}."),
     "unconstrained": ("That design is the cheapest with the limits left out, and it does not meet {limit}: choose among "
                       "the designs that meet every limit. Revisit {hint}."),
-    "best_for_limit": ("That design is the best for the limit, not the one with the least {cost} that meets it: "
-                       "{limit} asks only that a design meet it. Revisit {hint}."),
+    "best_for_limit": ("That design is the one best for the limit, not the one of least {cost} that meets it: a "
+                       "design need only meet {limit}. Revisit {hint}."),
     "tie": " It fits {others} about as well; it is graded as the one worth more.",
     "dimension": ("{unit} is a unit of {given}, but {name} is {wanted}, measured in {right} (e.g. \"{example}\")."),
     "need_vector": "Give both the size and the direction of {name}, e.g. \"{example}\" or as components \"(x, y) N\".",
