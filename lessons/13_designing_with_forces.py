@@ -201,7 +201,7 @@ assert np.allclose([d.I_s for d in half.designs], 2 * np.array([d.I_s for d in f
 # Type your id in place of `"your-id"` and run the cell. Make a study of your own engine (copy the
 # cells of section 2, with your speed and mass in the file's `driver.omega` and `links[2].mass`, and
 # one field, `links[0].mass`), choose, and type your choice (`"0.42 kg"`). The grader allows one step
-# of the grid, and says whether a wrong choice meets the limit.
+# of the grid, and names the two commonest slips of a design under a limit.
 
 # %%
 student = "your-id"  # ← type your own id here

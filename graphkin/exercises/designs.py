@@ -14,9 +14,9 @@ continuously (a finer grid, a root-finder) lands within that step.
 
 Two slips are keyed as values, found by the same study (:data:`SLIPS`): ``unconstrained``, the design that is
 cheapest when the limits are left out, and ``best_for_limit``, the design that is best for the first limit's
-figure (the counterweight that balances best, heavier than needed). Any other wrong design is told whether it meets
-the limits (:func:`design_part`): that is what a student checks by solving their own design, so it says no more
-than their own study of it would.
+figure (the counterweight that balances best, heavier than needed). With ``feedback = "distance"`` any other wrong
+design is also told whether it meets the limits (:func:`design_part`); not by default, since "meets" and "does not
+meet" part at the key itself and a search would bisect its way there without a study.
 """
 
 from __future__ import annotations

@@ -346,9 +346,10 @@ def _wrong(exp: Expected, a, variant, text: str, reveal: bool, mode: str) -> dic
         return _verdict(exp, "wrong", None, 0.0, msg, text, reveal)
     hint = exp.hint.rstrip(".") if exp.hint else ""
     parts = "" if distance else which_part(exp, a)
-    if q.kind in designs.DESIGN_KINDS:  # a design meets the limits or not: what solving it tells its designer
-        step = variant.exercise.design.step
-        parts = designs.design_part(exp, a, words, step)
+    if q.kind in designs.DESIGN_KINDS and distance:
+        # Whether a design meets the limits is bounded by the key itself (the lightest that meets them), so a search
+        # bisects on it: said only where the feedback says how far off anyway, which gives the key away as it is.
+        parts = designs.design_part(exp, a, words, variant.exercise.design.step) + off
     if parts:
         msg = MESSAGES["wrong_parts" if hint else "wrong_parts_nohint"].format(tolerance=tol, parts=parts, hint=hint)
     else:

@@ -12,6 +12,7 @@ import pytest
 import graphkin as gk
 from graphkin import exercises
 from graphkin.errors import ProblemFileError
+from graphkin.exercises.grading import grade_question
 from graphkin.exercises.keys import Keys, keys_text, make_keys
 
 NAME = "counterweight_design"
@@ -65,19 +66,24 @@ def test_the_slips_of_a_design_are_named_and_earn_their_share():
     assert "does not meet the peak shaking force ≤ 1500 N" in r["feedback"]
 
 
-def test_a_wrong_design_is_told_whether_it_meets_the_limit():
+def test_a_wrong_design_is_told_whether_it_meets_the_limit_where_the_feedback_says_how_far_off():
     v = exercises.variant(NAME, "s001")
-    key = v.expected(v.exercise.questions[0]).value
+    q = v.exercise.questions[0]
+    key = v.expected(q).value
     s = _study_of("s001")
     grid = np.array(v.exercise.design.si)
     peaks = np.array([d.shaking_force_peak for d in s.designs])
     lighter, heavier = key - 0.05, key + 0.05
     assert peaks[np.isclose(grid, lighter)][0] > 1500 >= peaks[np.isclose(grid, heavier)][0]
-    low, high = _grade("s001", f"{lighter:.2f} kg"), _grade("s001", f"{heavier:.2f} kg")
-    assert "that design does not meet the peak shaking force ≤ 1500 N" in low["feedback"]
-    assert "that design meets the peak shaking force ≤ 1500 N, but it is not the one of least counterweight B" in high["feedback"]
+    low, high = (grade_question(v, q, f"{x:.2f} kg", feedback="distance") for x in (lighter, heavier))
+    assert "that design does not meet the peak shaking force ≤ 1500 N (yours is" in low["feedback"]
+    assert "that design meets the peak shaking force ≤ 1500 N, but it is not the one of least counterweight B that " \
+           "does (yours is" in high["feedback"]
     assert low["score"] == high["score"] == 0.0
-    assert f"{key:.2f}" not in low["feedback"] + high["feedback"]
+    # By default ("parts") it is not said: "meets" and "does not meet" part at the key, so a search would bisect on it.
+    for x in (lighter, heavier):
+        r = grade_question(v, q, f"{x:.2f} kg")
+        assert "that design" not in r["feedback"] and f"{key:.2f}" not in r["feedback"]
 
 
 def test_keys_carry_the_design_and_grade_as_live(tmp_path):
