@@ -75,7 +75,8 @@ balanced = counterweights.best("shaking_force_peak")
 gk.draw.draw_study(counterweights, balanced)
 
 # %%
-print(counterweights.designs[balanced.index].values, f"{counterweights.designs[balanced.index].shaking_force_peak:.0f} N")
+best_engine = counterweights.designs[balanced.index]
+print(best_engine.values, f"peak shaking force {best_engine.shaking_force_peak:.0f} N")
 
 # %% [markdown]
 # The map reads like lesson 12's theory. Turned away from 180°, a counterweight adds a force
