@@ -158,6 +158,6 @@ __all__ = [
     "draw_free_body", "draw_given", "draw_grades", "draw_joint_force_index", "draw_mechanism", "draw_motion_polygon",
     "draw_motion_polygons", "draw_motion_steps", "draw_polar_forces", "draw_positions", "draw_shaking",
     "draw_shaking_components", "draw_sign_convention", "draw_solution", "draw_step_grid", "draw_steps",
-    "draw_torque_curve", "draw_transmission_angle", "Drawn", "FORMATS", "loads_on", "measuring_renderer", "save",
-    "style", "what_went_wrong",
+    "draw_study", "draw_torque_curve", "draw_transmission_angle", "Drawn", "FORMATS", "loads_on", "measuring_renderer",
+    "save", "style", "what_went_wrong",
 ]

@@ -17,6 +17,7 @@ from pathlib import Path
 
 from graphkin import catalog
 from graphkin.errors import GraphkinError, ProblemFileError
+from graphkin.exercises import designs
 from graphkin.exercises.symbols import symbol_problem
 from graphkin.files import read_text
 from graphkin.model import Prismatic
@@ -26,7 +27,7 @@ from graphkin.problem.fields import missing, set_field
 from graphkin.units import to_si
 
 _TOP = {"title", "source", "problem", "intro", "route", "vary", "questions", "partial", "positions", "flywheel",
-        "reveal", "max_force_ratio", "max_speed_ratio", "draw", "decimal_comma", "feedback"}
+        "reveal", "max_force_ratio", "max_speed_ratio", "draw", "decimal_comma", "feedback", "design"}
 _VARY = {"field", "from", "to", "step", "values", "label"}
 _QUESTION = {"id", "ask", "find", "part", "unit", "tolerance", "floor", "points", "route"}
 _FLYWHEEL = {"Cs"}
@@ -52,6 +53,7 @@ SLIPS: dict[str, float] = {
     "direction": 0.25,      # a vector's size right, its direction wrong
     "dimension": 0.0,       # a unit of another quantity (J for a torque, N for N·m)
     "no_normal": 0.25, "coriolis_reversed": 0.25, "image_misplaced": 0.25,  # polygons: no ω² r, 2ωv reversed, g′ amiss
+    **designs.SLIPS,  # a design: the cheapest without the limits, the best for the limit (graphkin.exercises.designs)
 }
 
 # What a question may ask for (``find``), with the parts it allows; the first part is the default.
@@ -72,11 +74,14 @@ _PARTS = {
     "flywheel_I": ("value",),
     "jfi_peak": ("value", "at"), "omega": ("value",), "alpha": ("value",),
     "a_G": ("magnitude", "vector", "direction", "x", "y"), "coriolis": ("magnitude", "vector", "direction", "x", "y"),
+    **dict.fromkeys(designs.DESIGN_KINDS, ("value",)),
 }
 # Quantities read off the velocity and acceleration polygons (graphkin.graphical.construct_kinematics), and their dimension.
 MOTION_KINDS = {"omega": "angular_velocity", "alpha": "angular_acceleration", "a_G": "acceleration", "coriolis": "acceleration"}
 # Quantities over the whole cycle (the exercise's problem is swept, not solved at one position).
-CYCLE_KINDS = {"peak_torque", "lowest_torque", "average_torque", "peak_force", "flywheel_E", "flywheel_I", "jfi_peak"}
+# A design (``find = "design"``) is chosen from a study of the cycle of every value of a grid: a cycle kind too.
+CYCLE_KINDS = {"peak_torque", "lowest_torque", "average_torque", "peak_force", "flywheel_E", "flywheel_I",
+               "jfi_peak"} | designs.DESIGN_KINDS
 
 # Default units a bare number is read in, by (kind, part): the units the books print.
 _DEFAULT_UNIT = {
@@ -84,6 +89,7 @@ _DEFAULT_UNIT = {
     "driver_torque": "N*m", "inertia_torque": "N*m", "peak_torque": "N*m", "lowest_torque": "N*m",
     "average_torque": "N*m", "h": "mm", "concurrency": "mm", "flywheel_E": "J", "flywheel_I": "kg*m^2",
     "jfi_peak": "", "omega": "rad/s", "alpha": "rad/s^2", "a_G": "m/s^2", "coriolis": "m/s^2",
+    **{f"design_{d}": unit for d, unit in designs.DIMENSIONS.items()},
 }
 
 _NUMBER_UNIT = re.compile(r"^\s*([+-]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][+-]?\d+)?)\s*(.*?)\s*$")
@@ -226,6 +232,7 @@ class Exercise:
     base_text: str = ""
     decimal_comma: bool = True
     feedback: str = "parts"
+    design: designs.DesignTable | None = None
 
     @property
     def cycle(self) -> bool:
@@ -307,8 +314,10 @@ def _grid(rd: _Reader, t: dict, where: str) -> tuple[str, ...]:
     return tuple(f"{(start + k * step).normalize():f} {unit}".strip() for k in range(count))
 
 
-def _kind_of(find: str, base_names: set[str], driver: str) -> tuple[str, int | None]:
-    """What a question's ``find`` names, and the link it is about."""
+def _kind_of(find: str, base_names: set[str], driver: str, design=None) -> tuple[str, int | None]:
+    """What a question's ``find`` names, and the link it is about (``design``: the exercise's ``[design]`` table)."""
+    if find == "design" and design is not None:
+        return f"design_{design.dimension}", None
     if find in CYCLE_KINDS and find != "peak_force":
         return find, None
     if find == driver or find == "driver":
@@ -341,18 +350,18 @@ def _sliding(mech) -> set[int]:
 
 
 def _question(rd: _Reader, t: dict, where: str, names: set[str], driver: str, route: str, moving,
-              sliding=frozenset()) -> Question:
+              sliding=frozenset(), design=None) -> Question:
     rd.table(t, where, _QUESTION)
     qid = rd.string(t, "id", where)
     if not re.fullmatch(r"[A-Za-z_][\w.]*", qid):
         raise rd.fail(f"{where}.id", f"must be a name of letters, digits, _ and . (it keys the answers), got {qid!r}")
     find = rd.string(t, "find", where)
     try:
-        kind, link = _kind_of(find, names, driver)
+        kind, link = _kind_of(find, names, driver, design)
     except KeyError:
         known = sorted(names) + [driver, "F<k>i", "T<k>i", "h<k>", "I<k>", "omega<k>", "alpha<k>", "aG<k>",
                                  "coriolis<k>"] + sorted(CYCLE_KINDS - {"peak_force"}) \
-            + ["peak_force.<F> (e.g. peak_force.F23)"]
+            + ["peak_force.<F> (e.g. peak_force.F23)", "design (with a [design] table)"]
         raise rd.fail(f"{where}.find", f"{find!r} names nothing this problem has (it has: {', '.join(known)})") from None
     if link is not None and link not in moving:
         raise rd.fail(f"{where}.find", f"{find!r}: link {link} is not a moving link (moving: {', '.join(map(str, moving))})")
@@ -412,6 +421,8 @@ def dimension_of(kind: str, part: str) -> str:
         return "moment_of_inertia"
     if kind == "jfi_peak":
         return "dimensionless"
+    if kind in designs.DESIGN_KINDS:
+        return kind.removeprefix("design_")
     return MOTION_KINDS.get(kind, "torque")
 
 
@@ -483,11 +494,15 @@ def parse_exercise(text: str, *, file: str = "<exercise>", id: str = "exercise",
             field = (rd.string(t, "field", where),)
         values = _grid(rd, t, where)
         vary.append(Vary(symbol, field, values, rd.string(t, "label", where, "") if "label" in t else ""))
+    design = _design(rd, data, base, problem)
     questions_raw = data.get("questions")
     if not isinstance(questions_raw, list) or not questions_raw:
         raise rd.fail("questions", "must be a non-empty list of [[questions]] tables")
-    questions = tuple(_question(rd, t, f"questions[{i}]", names, driver, route, mech.moving, _sliding(mech))
+    questions = tuple(_question(rd, t, f"questions[{i}]", names, driver, route, mech.moving, _sliding(mech), design)
                       for i, t in enumerate(questions_raw))
+    asks = any(q.kind in designs.DESIGN_KINDS for q in questions)
+    if design is not None and not asks:
+        raise rd.fail("design", "no question asks for the design: add one with find = \"design\"")
     ids = [q.id for q in questions]
     if len(set(ids)) != len(ids):
         dup = sorted({i for i in ids if ids.count(i) > 1})
@@ -543,12 +558,33 @@ def parse_exercise(text: str, *, file: str = "<exercise>", id: str = "exercise",
                     rd.number(data, "max_force_ratio", "", 20.0, low=1.0),
                     rd.number(data, "max_speed_ratio", "", 5.0, low=1.0), draw, file,
                     hashlib.sha256("\x1f".join((id, text, base_text)).encode("utf-8")).hexdigest(), text, base_text,
-                    decimal_comma, feedback)
+                    decimal_comma, feedback, design)
 
 
-def _check_field(rd: _Reader, base: dict, symbol: str, field: str) -> None:
-    """A varied field must exist in the base problem."""
-    where = f"vary.{symbol}.field"
+def _design(rd: _Reader, data: dict, base: dict, problem: str):
+    """The exercise's ``[design]`` table (:mod:`graphkin.exercises.designs`), its field and every value checked
+    against the base problem; None if it has none."""
+    import copy
+
+    if "design" not in data:
+        return None
+    t = rd.table(data["design"], "design", designs.TABLE)
+    field = rd.string(t, "field", "design")
+    _check_field(rd, base, "design", field, where="design.field")
+    values = _grid(rd, t, "design")
+    for value in dict.fromkeys((values[0], values[len(values) // 2], values[-1])):  # as _check_values does
+        trial = copy.deepcopy(base)
+        set_field(trial, field, value)
+        try:
+            build_problem(trial, file=problem)
+        except ProblemFileError as exc:
+            raise rd.fail("design", f"the problem does not accept {value!r} at {field}: {exc.message}") from None
+    return designs.read_design(t, values, rd.fail)
+
+
+def _check_field(rd: _Reader, base: dict, symbol: str, field: str, where: str | None = None) -> None:
+    """A varied (or designed) field must exist in the base problem."""
+    where = where or f"vary.{symbol}.field"
     try:
         absent = missing(base, field)
     except KeyError:

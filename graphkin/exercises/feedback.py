@@ -18,6 +18,7 @@ import math
 from dataclasses import dataclass
 
 from graphkin.exercises.answers import Reading, Unreadable, read_answer
+from graphkin.exercises.designs import DESIGN_KINDS
 from graphkin.exercises.exercise import Question, dimension_of
 from graphkin.exercises.notebooks import NotData, answer_variables
 from graphkin.exercises.quantities import Expected, _distance, _form, unit_factor
@@ -68,6 +69,10 @@ MESSAGES = {
     "image_misplaced": ("This is the acceleration of another point of the link, not of G: place g′ on the link's "
                         "acceleration image as G sits on the link (the same shape, turned and scaled). "
                         "Revisit {hint}."),
+    "unconstrained": ("That design is the cheapest with the limits left out, and it does not meet {limit}: choose among "
+                      "the designs that meet every limit. Revisit {hint}."),
+    "best_for_limit": ("That design is the one best for the limit, not the one of least {cost} that meets it: a "
+                       "design need only meet {limit}. Revisit {hint}."),
     "tie": " It fits {others} about as well; it is graded as the one worth more.",
     "dimension": ("{unit} is a unit of {given}, but {name} is {wanted}, measured in {right} (e.g. \"{example}\")."),
     "need_vector": "Give both the size and the direction of {name}, e.g. \"{example}\" or as components \"(x, y) N\".",
@@ -109,6 +114,7 @@ SLIP_WORDS = {
     "angle_from_y": "the angle measured from +y", "clockwise": "the angle measured clockwise",
     "other_data": "another student's data", "no_normal": "the normal components left out",
     "coriolis_reversed": "the Coriolis component reversed", "image_misplaced": "G's image misplaced",
+    "unconstrained": "the limits left out", "best_for_limit": "the design best for the limit",
 }
 
 DIMENSION_WORDS = {"force": "a force", "torque": "a torque", "length": "a length", "angle": "an angle",
@@ -229,6 +235,8 @@ def tolerance_text(exp: Expected) -> str:
     size)"``; for a graphical answer whose slack the drawing's precision sets, that slack in the question's unit
     (``"±0.2958 N"``), as its sheet states it."""
     q = exp.question
+    if q.kind in DESIGN_KINDS:  # one step of the design's grid (graphkin.exercises.designs)
+        return f"±{num(exp.slack / _factor(q), 4, power=True)}" + (f" {unit_text(q.unit)}" if q.unit else "")
     if exp.form == "direction":
         return f"{math.degrees(exp.slack):.2g}°"
     tol = f"{100 * q.tolerance:g} %"

@@ -42,6 +42,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from graphkin.errors import GraphkinError
+from graphkin.exercises import designs
 from graphkin.exercises.answers import Reading
 from graphkin.exercises.exercise import CYCLE_KINDS, FEEDBACK, MOTION_KINDS, dimension_of
 from graphkin.exercises.feedback import (
@@ -68,7 +69,7 @@ VERDICTS = ("correct", "slip", "wrong", "unreadable", "missing", "refused")
 
 #: Slips found by solving the variant again as the student did.
 RESOLVED_SLIPS = ("rpm_as_rad_s", "no_inertia_torque", "no_inertia_force", "no_normal", "coriolis_reversed",
-                  "image_misplaced")
+                  "image_misplaced", *designs.SLIPS)
 
 #: The polygon slips, and the questions each can change (read off the acceleration polygon).
 _POLYGON_SLIPS = {"no_normal": ("alpha", "a_G"), "coriolis_reversed": ("alpha", "a_G", "coriolis"),
@@ -271,6 +272,11 @@ def _fits(exp: Expected, a, variant, classmates: Classmates | None) -> list[_Fit
 
 def _may(q, slip: str) -> bool:
     """Whether a re-solved slip can change this question's answer at all."""
+    if (slip in designs.SLIPS) != (q.kind in designs.DESIGN_KINDS):
+        # A design's slips are its own, and it takes no other: a study per slip, for a design that fails the limit.
+        return False
+    if slip in designs.SLIPS:
+        return True
     if slip == "rpm_as_rad_s":
         return True
     if slip in _POLYGON_SLIPS:
@@ -340,6 +346,10 @@ def _wrong(exp: Expected, a, variant, text: str, reveal: bool, mode: str) -> dic
         return _verdict(exp, "wrong", None, 0.0, msg, text, reveal)
     hint = exp.hint.rstrip(".") if exp.hint else ""
     parts = "" if distance else which_part(exp, a)
+    if q.kind in designs.DESIGN_KINDS and distance:
+        # Whether a design meets the limits is bounded by the key itself (the lightest that meets them), so a search
+        # bisects on it: said only where the feedback says how far off anyway, which gives the key away as it is.
+        parts = designs.design_part(exp, a, words, variant.exercise.design.step) + off
     if parts:
         msg = MESSAGES["wrong_parts" if hint else "wrong_parts_nohint"].format(tolerance=tol, parts=parts, hint=hint)
     else:

@@ -14,6 +14,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from graphkin.exercises import designs
 from graphkin.exercises.drawn import drawing_slack
 from graphkin.exercises.exercise import MOTION_KINDS, Question, dimension_of
 from graphkin.exercises.precision import ANGLE, LENGTH
@@ -36,7 +37,7 @@ from graphkin.units import to_si
 # SI unit of each dimension, as printed in keys.
 _SI = {"force": "N", "torque": "N*m", "length": "m", "angle": "rad", "energy": "J",
        "moment_of_inertia": "kg*m^2", "dimensionless": "", "angular_velocity": "rad/s",
-       "angular_acceleration": "rad/s^2", "acceleration": "m/s^2"}
+       "angular_acceleration": "rad/s^2", "acceleration": "m/s^2", "mass": "kg"}
 
 
 @dataclass(frozen=True)
@@ -168,6 +169,9 @@ def value_of(solved, q: Question):
         return None
     if kind in MOTION_KINDS:
         return _motion_value(solved, q)
+    if kind in designs.DESIGN_KINDS:  # the key, or the design of a student who made the solved draw's slip
+        chosen = solved.design
+        return chosen.slips.get(solved.slip) if solved.slip in designs.SLIPS else chosen.key
     cycle = solved.cycle
     if kind in ("peak_torque", "lowest_torque"):
         p = cycle.peaks().effort_max if kind == "peak_torque" else cycle.peaks().effort_min
@@ -311,6 +315,8 @@ def within(q: Question, solved=None) -> str:
     """
     if q.part == "at":
         return "the step of the sweep"
+    if q.kind in designs.DESIGN_KINDS:
+        return designs.grid_text(solved.exercise.design) if solved is not None else "one step of the grid"
     text = (f"{math.degrees(math.atan(q.tolerance)):.2g}°" if _form(q) == "direction"
             else f"{100 * q.tolerance:g} %")
     if solved is None:
@@ -466,6 +472,8 @@ def _hint(solved, q: Question) -> str:
     """The step of the question's route a student should revisit for ``q``: a step of the graphical
     construction on the graphical route, a step of the analytical solution on the analytical one."""
     kind = q.kind
+    if kind in designs.DESIGN_KINDS:
+        return designs.hint(solved.exercise.design)
     if kind in ("peak_torque", "lowest_torque", "average_torque"):
         return "the driving torque at every crank angle of the cycle (sweep), then its extremes and mean"
     if kind == "peak_force":
@@ -515,9 +523,12 @@ def message_words(solved, q: Question, exp: Expected) -> dict:
         sense = "counter-clockwise" if T > 0 else "clockwise"
     omega = float(np.ravel(solved.problem.q_dot)[0]) if np.size(solved.problem.q_dot) else 0.0
     # Step captions end with a full stop; the messages put their own.
-    return {"name": name, "other": other, "i": str(i), "j": str(j), "sense": sense,
-            "hint": (exp.hint or "the solution").rstrip("."), "rpm": f"{omega * 30 / math.pi:.4g}",
-            "omega": f"{omega:.4g}"}
+    words = {"name": name, "other": other, "i": str(i), "j": str(j), "sense": sense,
+             "hint": (exp.hint or "the solution").rstrip("."), "rpm": f"{omega * 30 / math.pi:.4g}",
+             "omega": f"{omega:.4g}"}
+    if q.kind in designs.DESIGN_KINDS:
+        words |= designs.design_words(solved.exercise.design, solved.design)
+    return words
 
 
 def undefined(solved, q: Question) -> str | None:
@@ -538,7 +549,9 @@ def expected(variant, q: Question) -> Expected:
     value = value_of(solved, q)
     if value is None or (isinstance(value, float) and not math.isfinite(value)):
         return Expected(q, form, 0.0, 0.0, "", undefined=undefined(solved, q))
-    if form == "direction":
+    if q.kind in designs.DESIGN_KINDS:
+        slack = designs.slack(solved.exercise.design, q.tolerance, value)
+    elif form == "direction":
         slack = math.atan(q.tolerance)
         if q.part == "at":
             # A peak's position is known only to the grid of the sweep.

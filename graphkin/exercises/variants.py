@@ -25,6 +25,7 @@ import numpy as np
 
 from graphkin.cycle import sweep
 from graphkin.errors import GraphkinError
+from graphkin.exercises import designs
 from graphkin.exercises.exercise import CYCLE_KINDS, MOTION_KINDS, Exercise, Question
 from graphkin.exercises.grading import grade_variant
 from graphkin.exercises.quantities import _span, expected, message_words, question_data, undefined, value_of, within
@@ -104,8 +105,10 @@ class Given:
 class Solved:
     """A problem's results at the exercise's position or over its cycle, computed when first asked for."""
 
-    def __init__(self, problem, exercise: Exercise, Cs: float | None, slip: str | None = None):
+    def __init__(self, problem, exercise: Exercise, Cs: float | None, slip: str | None = None, data: dict | None = None):
         self.problem = problem
+        self.data = data
+        """The problem file's data the problem was built from (a design's study varies it)."""
         self.exercise = exercise
         self.Cs = Cs
         self.answers: dict = {}
@@ -149,6 +152,11 @@ class Solved:
     @cached_property
     def jfi(self):
         return self.cycle.joint_force_index()
+
+    @cached_property
+    def design(self) -> designs.Chosen:
+        """The key and the keyed slips of the exercise's design question (:func:`graphkin.exercises.designs.choose`)."""
+        return designs.choose(self.exercise.design, self.data, n=self.exercise.positions, Cs=self.Cs)
 
 
 @dataclass(frozen=True)
@@ -269,7 +277,7 @@ def _build(ex: Exercise, data: tuple[Given, ...]):
                 set_field(base, f, g.value, copy=True)
     # Named by its data, not by a student: every student who draws these values shares the problem.
     problem = build_problem(base, file=f"{ex.id} ({', '.join(g.shown for g in data)})")
-    return problem, Cs
+    return problem, Cs, base
 
 
 def _unusable(ex: Exercise, solved: Solved) -> str | None:
@@ -285,6 +293,8 @@ def _unusable(ex: Exercise, solved: Solved) -> str | None:
             return "the driving torque is constant, so there is no flywheel to size"
         if any(q.kind == "jfi_peak" for q in ex.questions) and not math.isfinite(solved.jfi.peak.value):
             return "the joint-force index is not defined (no external load)"
+        if ex.design is not None and solved.design.key is None:
+            return solved.design.why
     if all(q.kind in CYCLE_KINDS for q in ex.questions):
         return None
     r = solved.result
@@ -440,8 +450,8 @@ def _draw(ex: Exercise, data: tuple[Given, ...]) -> tuple[Solved, str | None]:
     if hit is not None and (hit[0].exercise is ex or hit[0].exercise.fingerprint == ex.fingerprint != ""):
         _DRAWS.move_to_end(key)
         return hit
-    problem, Cs = _build(ex, data)
-    solved = Solved(problem, ex, Cs)
+    problem, Cs, base = _build(ex, data)
+    solved = Solved(problem, ex, Cs, data=base)
     hit = (solved, _unusable(ex, solved))
     _DRAWS[key] = hit
     if len(_DRAWS) > CACHE_SIZE:
@@ -461,6 +471,10 @@ def _altered(v: Variant, slip: str) -> Solved | None:
     if slip in ("no_normal", "coriolis_reversed", "image_misplaced"):
         solved = Solved(p, v.exercise, v.Cs, slip)
         solved.__dict__["result"] = v.solved.result  # the positions and input rates are the student's own
+        return solved
+    if slip in designs.SLIPS:  # the same study, read as a student who made the slip chooses
+        solved = Solved(p, v.exercise, v.Cs, slip, v.solved.data)
+        solved.__dict__["design"] = v.solved.design
         return solved
     if slip == "rpm_as_rad_s":
         speed = next((g.value for g in v.data if "driver.omega" in g.field), None) or \
