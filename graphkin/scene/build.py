@@ -154,7 +154,7 @@ def _at_speed(problem, n: int, polygons: bool, motion: bool = False):
         "driver": _driver(mech, length),
         "links": [_round_link(link, length) for link in links],
         "guides": _guides(kin, valid, length),
-        "gears": gears,
+        "gears": [{**gear, "mark": length(_gear_mark(kin, gear, valid))} for gear in gears],
         "forces": [],
         "loads": [],
         "inertia": [],
@@ -317,6 +317,17 @@ def _gears(mech) -> list[dict]:
                 out.setdefault((link, centre, r), {"link": link, "centre": centre, "radius": r,
                                                    "internal": joint.internal and link == joint.ring})
     return list(out.values())
+
+
+def _gear_mark(kin, gear: dict, valid) -> np.ndarray:
+    """A point of the gear's pitch circle that turns with it [m], at every position: the end of the spoke a page
+    draws from the centre, so that a student sees the gear turn (a pitch circle alone looks still)."""
+    mech = kin.mechanism
+    C = np.asarray(mech.link(gear["link"]).points[gear["centre"]], float)
+    mark = (float(C[0]) + gear["radius"], float(C[1]))  # in the gear's own coordinates
+    if gear["link"] == mech.frame:
+        return np.tile(mark, (kin.n, 1))
+    return _masked(kin.position(gear["link"], mark), valid)
 
 
 def _link(kin, link, valid, length) -> dict:

@@ -36,6 +36,10 @@ READ_BACK = """() => {
   for (const c of svg.querySelectorAll("circle[data-gear]")) {
     if (c.style.display !== "none") out.gears[c.getAttribute("data-gear")] = [num(c, "cx"), num(c, "cy"), num(c, "r")];
   }
+  out.spokes = {};
+  for (const l of svg.querySelectorAll("line[data-spoke]")) {
+    if (l.style.display !== "none") out.spokes[l.getAttribute("data-spoke")] = ["x1", "y1", "x2", "y2"].map((k) => num(l, k));
+  }
   for (const g of svg.querySelectorAll("g.gk-arrow")) {
     if (g.style.display === "none") continue;
     const l = g.querySelectorAll("line")[1];
@@ -99,6 +103,9 @@ def check_drawn(drawn: dict, s: dict, i: int, rounding: float = 0.0):
         C = _svg(_xy(links[gear["link"]]["points"][gear["centre"]], i))
         np.testing.assert_allclose(drawn["gears"][f"{gear['link']}.{gear['centre']}"], [*C, gear["radius"]], rtol=0,
                                    atol=tol)
+        if "mark" in gear:  # the spoke that shows the gear turning: from its centre to its mark
+            np.testing.assert_allclose(drawn["spokes"][f"{gear['link']}.{gear['centre']}"],
+                                       [*C, *_svg(_xy(gear["mark"], i))], rtol=0, atol=tol)
     for f in s["forces"]:
         tail, F = _xy(f["at"], i), _xy(f["analytical"], i)
         want = np.concatenate([_svg(tail), _svg(tail + F / scale)])

@@ -169,6 +169,21 @@ def test_gears_are_their_pitch_circles_and_a_constant_effort_has_an_axis():
     assert [g["internal"] for g in s["gears"]].count(True) == 1  # the annulus
     by_number = {link["number"]: link for link in s["links"]}
     assert all(by_number[g["link"]]["outline"] == [] for g in s["gears"] if len(by_number[g["link"]]["points"]) == 1)
+    # Each gear's mark lies on its pitch circle and turns with the gear: its angle about the centre changes as the
+    # gear's own angle θ does (the frame's annulus stays still).
+    kin = gk.sweep(problem, 12).analysis.kinematics
+    for g in s["gears"]:
+        C = np.array(by_number[g["link"]]["points"][g["centre"]], float).reshape(-1, 2)
+        M = np.array(g["mark"], float).reshape(-1, 2)
+        ok = np.isfinite(M[:, 0])
+        np.testing.assert_allclose(np.hypot(*(M - C)[ok].T), g["radius"], rtol=0, atol=2e-6 * s["size"])
+        turned = np.unwrap(np.arctan2(*(M - C)[ok][:, ::-1].T))
+        if g["link"] == problem.mechanism.frame:
+            assert np.ptp(turned) < 1e-9
+        else:
+            theta = np.unwrap(kin.theta[g["link"]][ok])
+            np.testing.assert_allclose(turned - turned[0], theta - theta[0], atol=1e-5)
+            assert np.ptp(turned) > 1e-3  # it turns
     # The arm's torque is the same at every angle: its axis runs from it to 0, not from it to itself.
     T = s["effort"]["analytical"]
     assert max(T) - min(T) < 1e-9 * abs(T[0])

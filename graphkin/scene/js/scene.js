@@ -181,6 +181,12 @@ function mechanism(view, scene) {
       stroke: INK.link, "stroke-width": gear.internal ? 3 : 2, "stroke-dasharray": "8 3",
       "vector-effect": "non-scaling-stroke", "data-gear": `${gear.link}.${gear.centre}` }, bodies),
   }));
+  // A spoke from each gear's centre to a point of its pitch circle that turns with it (schema 3's "mark").
+  parts.spokes = scene.gears.filter((gear) => gear.mark).map((gear) => ({
+    centre: scene.links.find((l) => l.number === gear.link).points[gear.centre], mark: gear.mark,
+    node: el("line", { stroke: INK.link, "stroke-width": 2, "vector-effect": "non-scaling-stroke",
+      "data-spoke": `${gear.link}.${gear.centre}` }, bodies),
+  }));
   bodies.append(...parts.points.map((p) => p.node)); // the pins above the gears
   parts.guides = scene.guides.map((guide) => el("line", { stroke: INK.ground, "stroke-width": 1,
     "stroke-dasharray": "6 3", "vector-effect": "non-scaling-stroke", "data-guide": guide.slider }, bodies));
@@ -235,6 +241,12 @@ function drawMechanism(parts, scene, i, ok) {
     if (p === null) continue;
     node.setAttribute("cx", p[0]);
     node.setAttribute("cy", -p[1]);
+  }
+  for (const { centre, mark, node } of parts.spokes) {
+    const c = ok ? at(centre, i) : null;
+    const m = ok ? at(mark, i) : null;
+    shown(node, c !== null && m !== null);
+    if (c !== null && m !== null) setLine(node, c, m);
   }
   scene.guides.forEach((guide, k) => {
     const a = ok ? at(guide.ends[0], i) : null;
