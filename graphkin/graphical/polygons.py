@@ -244,9 +244,10 @@ class _Polygons:
         O, e = (0j, 1 + 0j) if link == self.frame else (self._O[link], self._e[link])
         vectors, found, listed = [], {}, []
         for key, s, label, p in self.fixed.images[link]:
-            v = m.vel(O + e * p)
+            P = O + e * p
+            v = m.vel(P)
             found[label] = v
-            self.where[label] = (link, O + e * p, key)
+            self.where[label] = (link, P, key)
             vectors.append((f"v_{s}", 0j, v, "found"))
             if label not in self.v_img:  # a point a step before has found is not read off again
                 listed.append((s, v))
@@ -260,11 +261,13 @@ class _Polygons:
         O, e = (0j, 1 + 0j) if link == self.frame else (self._O[link], self._e[link])
         vectors, found, listed = [], {}, []
         for key, s, label, p in self.fixed.images[link]:
-            a = m.acc(O + e * p)
-            found[label + "′"] = a
-            self.where[label + "′"] = (link, O + e * p, key)
+            P = O + e * p
+            a = m.acc(P)
+            label += "′"
+            found[label] = a
+            self.where[label] = (link, P, key)
             vectors.append((f"a_{s}", 0j, a, "found"))
-            if label + "′" not in self.a_img:
+            if label not in self.a_img:
                 listed.append((s, a))
             self.acceleration[key] = a
         caption = Later(acceleration_image, link, m.w, m.al, m.a, listed, self.a_ref)
