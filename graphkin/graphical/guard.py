@@ -68,7 +68,7 @@ def forces_disagreement(result, c, i: int, size: float | None = None) -> str:
     """
     if not c.valid:
         return f"the graphical route cannot close ({c.reason}) where the analytical one finds a solution"
-    size = _shape(result.mechanism).size if size is None else size
+    size = _shape_of(plan_of(result.mechanism), result.mechanism).size if size is None else size
     # Each pair once, as the lower-numbered link's force on the higher (how both routes keep them), in plain
     # floats: the differences are numpy's to the bit, and only the worst is put in words, once it is known.
     known = c.forces
@@ -148,11 +148,25 @@ class _Shape:
         self.pickers: dict = {}  # (what, the keys a construction names, in its order): where they are in a row
 
 
-def _shape(mech) -> _Shape:
-    compiled = plan_of(mech).compiled
-    shape = compiled.get("guard")
+def _plan(kin):
+    return plan_of(kin.mechanism)
+
+
+def plan(kin):
+    """The plan of ``kin``'s mechanism (:func:`~graphkin.kinematics.plan.plan_of`), found once per kinematics while
+    it lives (:func:`kept`): what the guard, the polygons and the instant centres read of the mechanism is kept in
+    it."""
+    return kept(kin, "plan", _plan)
+
+
+def _shape(kin) -> _Shape:
+    return _shape_of(plan(kin), kin.mechanism)
+
+
+def _shape_of(plan, mech) -> _Shape:
+    shape = plan.compiled.get("guard")
     if shape is None:
-        shape = compiled["guard"] = _Shape(mech)
+        shape = plan.compiled["guard"] = _Shape(mech)
     return shape
 
 
@@ -173,7 +187,7 @@ class _Table:
     __slots__ = ("shape", "truths", "rows")
 
     def __init__(self, kin):
-        self.shape = _shape(kin.mechanism)
+        self.shape = _shape(kin)
         self.truths: dict = {}
         self.rows = None  # every position's row, once more than FEW were asked for
 
@@ -182,24 +196,29 @@ class _Table:
         truth = self.truths.get(i)
         if truth is None:
             if self.rows is None and (len(self.truths) < FEW or kin.n <= FEW):
-                row = _row(self.shape, kin, i)
+                truth = _row(self.shape, kin, i)
             else:
                 if self.rows is None:
                     self.rows = _rows(self.shape, kin)
-                row = self.rows[0][i], self.rows[1][i]
-            truth = self.truths[i] = _Truth(self.shape, *row)
+                truth = _Truth(self.shape, self.rows[0][i], self.rows[1][i])
+            self.truths[i] = truth
         return truth
 
 
-def _row(shape: _Shape, kin, i: int) -> tuple[list, list]:
-    """The row of position ``i`` (as :func:`_rows` gives it), in plain Python: ``(values, rates)``."""
+def _row(shape: _Shape, kin, i: int) -> _Truth:
+    """The :class:`_Truth` of position ``i`` alone, in plain Python (as :func:`_rows` and :class:`_Truth` make it)."""
     moving = shape.moving
-    O = [kin.O[n].item(i) for n in moving] + [0j]  # .item: a Python number, no numpy scalar made
-    e = [kin.e[n].item(i) for n in moving] + [0j]
-    v_O = [kin.v_O[n].item(i) for n in moving] + [0j]
-    a_O = [kin.a_O[n].item(i) for n in moving] + [0j]
-    w = [float(kin.omega[n].item(i)) for n in moving] + [0.0]
-    al = [float(kin.alpha[n].item(i)) for n in moving] + [0.0]
+    O = [kin.O[n].item(i) for n in moving]  # .item: a Python number, no numpy scalar made
+    O.append(0j)
+    e = [kin.e[n].item(i) for n in moving]
+    v_O = [kin.v_O[n].item(i) for n in moving]
+    v_O.append(0j)
+    a_O = [kin.a_O[n].item(i) for n in moving]
+    a_O.append(0j)
+    w = [kin.omega[n].item(i) for n in moving]
+    w.append(0.0)
+    al = [kin.alpha[n].item(i) for n in moving]
+    al.append(0.0)
     iw = [1j * x for x in w]
     turn = [1j * y - x * x for x, y in zip(w, al)]
     v, a = [], []
@@ -207,9 +226,13 @@ def _row(shape: _Shape, kin, i: int) -> tuple[list, list]:
         v.append(v_O[j] + iw[j] * e[j] * p)
         a.append(a_O[j] + turn[j] * e[j] * p)
     size = shape.size
-    v_top = max(max(map(abs, v), default=0.0), max(map(abs, w)) * size)
-    a_top = max(max(map(abs, a), default=0.0), max(map(abs, al)) * size)
-    return v + a + O + v_O + a_O + iw + turn, w + al + [v_top, a_top]
+    truth = _Truth.__new__(_Truth)
+    truth.shape, truth.size, truth.index, truth.column = shape, size, shape.index, shape.column
+    truth.v, truth.a, truth.O, truth.v_O, truth.a_O, truth.iw, truth.turn, truth.w, truth.al = (v, a, O, v_O, a_O, iw,
+                                                                                                turn, w, al)
+    truth.v_scale = max(max(map(abs, v), default=0.0), max(map(abs, w)) * size)
+    truth.a_scale = max(max(map(abs, a), default=0.0), max(map(abs, al)) * size)
+    return truth
 
 
 def _rows(shape: _Shape, kin) -> tuple[list, list]:

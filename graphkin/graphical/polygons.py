@@ -34,6 +34,7 @@ from graphkin.geometry import zcross as cross
 from graphkin.graphical.captions import Later, number
 from graphkin.graphical.construction import nice_scale
 from graphkin.graphical.guard import derived, kept, motion_disagreement
+from graphkin.graphical.guard import plan as kept_plan
 from graphkin.graphical.motion import MotionConstruction, MotionStep, PolygonLine, Vector
 from graphkin.graphical.motion_captions import A, V, acceleration_image, rate, sense, vector, velocity_image
 from graphkin.kinematics import DriverGroup, Dyad, GearGroup, Kinematics
@@ -142,7 +143,7 @@ def _fixed(kin: Kinematics) -> _Fixed:
     """The polygons' :class:`_Fixed` of the kinematics' mechanism (kept in its plan, and found once per kinematics:
     :func:`graphkin.graphical.guard.kept`)."""
     mech = kin.mechanism
-    compiled = plan_of(mech).compiled
+    compiled = kept_plan(kin).compiled
     fixed = compiled.get("polygons")
     if fixed is None:
         fixed = compiled["polygons"] = _Fixed(mech)
