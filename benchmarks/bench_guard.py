@@ -7,11 +7,10 @@ same interpreter, its folder first on ``sys.path``); the workers are asked in tu
 see the same load; the table gives each checkout's median over the rounds [µs per position] and the ratio to the
 first checkout's. "warm" repeats the positions of one kinematics (what is worked out once per kinematics is made
 before the timing); "cold" goes once over the positions of a new kinematics object each time (the same arrays),
-so that what is worked out once per kinematics is timed too, spread over its positions. Then
-``graphkin solve PROBLEM`` (and with ``--json --motion-polygons``) for a few problems of one position
-(``--solve``) and ``graphkin solve strip_cutter
---json`` (with and without ``--motion-polygons``) end to end, a new process each run, its CPU time (user +
-system, from ``getrusage`` of the children), alternately too.
+so that what is worked out once per kinematics is timed too, spread over its positions. Then, end to end (a new
+process each run, its CPU time: user + system, from ``getrusage`` of the children, alternately too): ``graphkin
+solve PROBLEM`` and ``graphkin solve PROBLEM --json --motion-polygons`` for a few problems of one position
+(``--solve``), and ``graphkin solve strip_cutter --json`` with and without ``--motion-polygons``.
 
     .venv/bin/python benchmarks/bench_guard.py [--rounds 15] [--runs 9] [--problems a,b] [--solve a,b] BASE_DIR [OTHER_DIR ...]
 
