@@ -7,11 +7,12 @@ same interpreter, its folder first on ``sys.path``); the workers are asked in tu
 see the same load; the table gives each checkout's median over the rounds [µs per position] and the ratio to the
 first checkout's. "warm" repeats the positions of one kinematics (what is worked out once per kinematics is made
 before the timing); "cold" goes once over the positions of a new kinematics object each time (the same arrays),
-so that what is worked out once per kinematics is timed too, spread over its positions. Then
-``graphkin solve strip_cutter --json`` (with and without ``--motion-polygons``) end to end,
-a new process each run, its CPU time (user + system, from ``getrusage`` of the children), alternately too.
+so that what is worked out once per kinematics is timed too, spread over its positions. Then, end to end (a new
+process each run, its CPU time: user + system, from ``getrusage`` of the children, alternately too): ``graphkin
+solve PROBLEM`` and ``graphkin solve PROBLEM --json --motion-polygons`` for a few problems of one position
+(``--solve``), and ``graphkin solve strip_cutter --json`` with and without ``--motion-polygons``.
 
-    .venv/bin/python benchmarks/bench_guard.py [--rounds 15] [--runs 9] [--problems a,b] BASE_DIR [OTHER_DIR ...]
+    .venv/bin/python benchmarks/bench_guard.py [--rounds 15] [--runs 9] [--problems a,b] [--solve a,b] BASE_DIR [OTHER_DIR ...]
 
 Each DIR holds a ``graphkin`` package, e.g. ``git archive 405e4a9 graphkin | tar -x -C /tmp/base`` for the commit
 before the guard; this checkout is added as the last unless given. A measurement, not a test: exit code 0.
@@ -31,6 +32,9 @@ from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
 PROBLEMS = ("strip_cutter", "slider_crank_friction", "shaper_six_bar", "gearset", "fourbar_dynamic_makdin")
+SOLVED = ("gearset", "shaper_six_bar")
+"""Problems of one position whose ``graphkin solve PROBLEM`` (the printed report) and ``graphkin solve PROBLEM
+--json --motion-polygons`` (the polygons and instant centres too, each checked by the guard) are timed end to end."""
 
 WORKER = r"""
 import dataclasses, gc, json, math, sys, time
@@ -92,6 +96,8 @@ def main() -> int:
     parser.add_argument("--rounds", type=int, default=15, help="rounds of the per-position timing")
     parser.add_argument("--runs", type=int, default=9, help="runs of each command, per checkout")
     parser.add_argument("--problems", default=",".join(PROBLEMS), help="catalog problems, comma-separated")
+    parser.add_argument("--solve", default=",".join(SOLVED),
+                        help="catalog problems to time `graphkin solve PROBLEM` of, end to end, comma-separated")
     args = parser.parse_args()
     roots = [str(Path(r).resolve()) for r in args.roots]
     mine = str(HERE.parent)
@@ -124,7 +130,10 @@ def main() -> int:
             print(row)
 
     print(f"\nCPU ms of a whole command (new process), median of {args.runs} alternating runs")
-    for argv in (["solve", "strip_cutter", "--json"], ["solve", "strip_cutter", "--json", "--motion-polygons"]):
+    commands = [argv for name in args.solve.split(",") if name
+                for argv in (["solve", name], ["solve", name, "--json", "--motion-polygons"])]
+    commands += [["solve", "strip_cutter", "--json"], ["solve", "strip_cutter", "--json", "--motion-polygons"]]
+    for argv in commands:
         for root in roots:  # once each before timing: bytecode compiled
             _cli_cpu(root, argv)
         runs: list[list[float]] = [[] for _ in roots]

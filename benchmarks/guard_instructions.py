@@ -7,7 +7,8 @@ valgrind's callgrind, once with 0 repetitions and once with 3, for each checkout
     PYTHONPATH=/tmp/base valgrind --tool=callgrind --callgrind-out-file=/dev/null \\
         .venv/bin/python benchmarks/guard_instructions.py 3 polygons   # or: 0 polygons, 3 centres
 
-(about two minutes a run). Both are made once for every position before the repetitions, so that the
+(about two minutes a run; a third argument names another catalog problem, e.g. ``3 centres gearset``). Both
+are made once for every position before the repetitions, so that the
 counts leave out the imports, the problem and its kinematics, and every cache filled on first use.
 """
 
@@ -19,7 +20,7 @@ from graphkin import catalog
 from graphkin.graphical import construct_kinematics, instant_centres
 
 repetitions, what = int(sys.argv[1]), sys.argv[2]
-kin = catalog.load("strip_cutter").kinematics()
+kin = catalog.load(sys.argv[3] if len(sys.argv) > 3 else "strip_cutter").kinematics()
 for i in range(kin.n):
     construct_kinematics(kin, i), instant_centres(kin, i)
 make = {"polygons": construct_kinematics, "centres": instant_centres}[what]

@@ -25,8 +25,8 @@ from graphkin.analytical.meshes import pitch as pitch_point
 from graphkin.errors import GraphkinError
 from graphkin.graphical.captions import Captions, Later, number
 from graphkin.graphical.guard import centres_disagreement, derived, kept
+from graphkin.graphical.guard import plan as kept_plan
 from graphkin.kinematics import DriverGroup, Kinematics
-from graphkin.kinematics.plan import plan_of
 from graphkin.model import GearMesh, Prismatic, Revolute
 
 SAME = 1e-9
@@ -126,7 +126,7 @@ def _shape(kin: Kinematics) -> tuple[dict, dict, dict]:
     per kinematics (:func:`graphkin.graphical.guard.kept`): every named point in its link's own frame [m] by
     ``(link, name)``, each moving link's point names, and its centre of mass [m]."""
     mech = kin.mechanism
-    plan = plan_of(mech)
+    plan = kept_plan(kin)
     shape = plan.compiled.get("centres")
     if shape is None:
         shape = plan.compiled["centres"] = (plan.points, {n: list(mech.link(n).points) for n in mech.moving},

@@ -32,6 +32,10 @@ from __future__ import annotations
 import math
 import weakref
 from dataclasses import replace
+from functools import partial
+from itertools import starmap
+from operator import itemgetter
+from operator import sub as _sub
 
 import numpy as np
 
@@ -64,7 +68,7 @@ def forces_disagreement(result, c, i: int, size: float | None = None) -> str:
     """
     if not c.valid:
         return f"the graphical route cannot close ({c.reason}) where the analytical one finds a solution"
-    size = _shape(result.mechanism).size if size is None else size
+    size = _shape_of(plan_of(result.mechanism), result.mechanism).size if size is None else size
     # Each pair once, as the lower-numbered link's force on the higher (how both routes keep them), in plain
     # floats: the differences are numpy's to the bit, and only the worst is put in words, once it is known.
     known = c.forces
@@ -139,45 +143,122 @@ class _Shape:
                                for key in self.keys], dtype=complex)
         self.index = {key: k for k, key in enumerate(self.keys)}
         self.column = {n: j for j, n in enumerate(self.moving + (self.frame,))}
+        self.columns = tuple(self.column[n] for n, _ in self.keys)  # each key's link's place in a row
+        self.local_list = self.local.tolist()
+        self.pickers: dict = {}  # (what, the keys a construction names, in its order): where they are in a row
 
 
-def _shape(mech) -> _Shape:
-    compiled = plan_of(mech).compiled
-    shape = compiled.get("guard")
+def _plan(kin):
+    return plan_of(kin.mechanism)
+
+
+def plan(kin):
+    """The plan of ``kin``'s mechanism (:func:`~graphkin.kinematics.plan.plan_of`), found once per kinematics while
+    it lives (:func:`kept`): what the guard, the polygons and the instant centres read of the mechanism is kept in
+    it."""
+    return kept(kin, "plan", _plan)
+
+
+def _shape(kin) -> _Shape:
+    return _shape_of(plan(kin), kin.mechanism)
+
+
+def _shape_of(plan, mech) -> _Shape:
+    shape = plan.compiled.get("guard")
     if shape is None:
-        shape = compiled["guard"] = _Shape(mech)
+        shape = plan.compiled["guard"] = _Shape(mech)
     return shape
 
 
-class _Table:
-    """The analytical motion of one kinematics at every position, worked out at once (numpy over the positions).
+FEW = 4
+"""Positions of one kinematics whose analytical motion the guard works out one at a time, in plain Python (a few
+microseconds each), before it works out all the positions at once with numpy (about 100 µs, whatever their
+number, and a microsecond a position): a one-position problem, or one position asked of a cycle, never pays for
+the whole table."""
 
-    A row per position, of Python numbers: ``values`` (complex) holds the velocity and acceleration of every key of
-    the :class:`_Shape`, then each link's origin O, v_O, a_O, iω and iα − ω² (the moving links, then the frame's:
-    all 0); ``rates`` (real) holds ω and α of each link (the same order), then the position's scales: the largest
-    speed (acceleration) of a named point or centre of mass, or of a link's ω (α) times the mechanism's size.
+
+class _Table:
+    """The analytical motion of one kinematics, a :class:`_Truth` per position asked for, kept.
+
+    The first :data:`FEW` positions asked for are worked out one at a time (:func:`_row`), the rest all at once,
+    numpy over the positions (:func:`_rows`): a row per position, of Python numbers, read as a :class:`_Truth`.
     """
 
+    __slots__ = ("shape", "truths", "rows")
+
     def __init__(self, kin):
-        shape = self.shape = _shape(kin.mechanism)
-        moving = shape.moving
-        column = [shape.column[n] for n, _ in shape.keys]
+        self.shape = _shape(kin)
+        self.truths: dict = {}
+        self.rows = None  # every position's row, once more than FEW were asked for
 
-        def links(arrays, kind):  # (positions, links), the frame's 0 last
-            return np.stack([np.asarray(arrays[m], dtype=kind) for m in moving] + [np.zeros(kin.n, kind)], axis=1)
+    def truth(self, kin, i: int) -> _Truth:
+        """The :class:`_Truth` of position ``i`` of ``kin`` (the kinematics this table was made for)."""
+        truth = self.truths.get(i)
+        if truth is None:
+            if self.rows is None and (len(self.truths) < FEW or kin.n <= FEW):
+                truth = _row(self.shape, kin, i)
+            else:
+                if self.rows is None:
+                    self.rows = _rows(self.shape, kin)
+                truth = _Truth(self.shape, self.rows[0][i], self.rows[1][i])
+            self.truths[i] = truth
+        return truth
 
-        O, e, v_O, a_O = (links(x, complex) for x in (kin.O, kin.e, kin.v_O, kin.a_O))
-        w, al = links(kin.omega, float), links(kin.alpha, float)
-        iw, turn = 1j * w, 1j * al - w * w
-        e_p = e[:, column]  # each point from its link's origin is e p [m]
-        v = v_O[:, column] + iw[:, column] * e_p * shape.local
-        a = a_O[:, column] + turn[:, column] * e_p * shape.local
-        with np.errstate(invalid="ignore"):  # positions that cannot be assembled are nan, and never asked for
-            v_top = np.maximum(np.abs(v).max(axis=1), np.abs(w).max(axis=1) * shape.size)
-            a_top = np.maximum(np.abs(a).max(axis=1), np.abs(al).max(axis=1) * shape.size)
-        # As Python numbers, all at once: a position's few dozen values are too few for numpy to pay.
-        self.values = np.concatenate([v, a, O, v_O, a_O, iw, turn], axis=1).tolist()
-        self.rates = np.concatenate([w, al, v_top[:, None], a_top[:, None]], axis=1).tolist()
+
+def _row(shape: _Shape, kin, i: int) -> _Truth:
+    """The :class:`_Truth` of position ``i`` alone, in plain Python (as :func:`_rows` and :class:`_Truth` make it)."""
+    moving = shape.moving
+    O = [kin.O[n].item(i) for n in moving]  # .item: a Python number, no numpy scalar made
+    O.append(0j)
+    e = [kin.e[n].item(i) for n in moving]
+    v_O = [kin.v_O[n].item(i) for n in moving]
+    v_O.append(0j)
+    a_O = [kin.a_O[n].item(i) for n in moving]
+    a_O.append(0j)
+    w = [kin.omega[n].item(i) for n in moving]
+    w.append(0.0)
+    al = [kin.alpha[n].item(i) for n in moving]
+    al.append(0.0)
+    iw = [1j * x for x in w]
+    turn = [1j * y - x * x for x, y in zip(w, al)]
+    v, a = [], []
+    for j, p in zip(shape.columns, shape.local_list):  # each point e p from its link's origin [m]
+        v.append(v_O[j] + iw[j] * e[j] * p)
+        a.append(a_O[j] + turn[j] * e[j] * p)
+    size = shape.size
+    truth = _Truth.__new__(_Truth)
+    truth.shape, truth.size, truth.index, truth.column = shape, size, shape.index, shape.column
+    truth.v, truth.a, truth.O, truth.v_O, truth.a_O, truth.iw, truth.turn, truth.w, truth.al = (v, a, O, v_O, a_O, iw,
+                                                                                                turn, w, al)
+    truth.v_scale = max(max(map(abs, v), default=0.0), max(map(abs, w)) * size)
+    truth.a_scale = max(max(map(abs, a), default=0.0), max(map(abs, al)) * size)
+    return truth
+
+
+def _rows(shape: _Shape, kin) -> tuple[list, list]:
+    """Every position's row at once (numpy over the positions), as lists of Python numbers: ``values`` (complex)
+    holds the velocity and acceleration of every key of the :class:`_Shape`, then each link's origin O, v_O, a_O,
+    iω and iα − ω² (the moving links, then the frame's: all 0); ``rates`` (real) holds ω and α of each link (the
+    same order), then the position's scales: the largest speed (acceleration) of a named point or centre of mass,
+    or of a link's ω (α) times the mechanism's size."""
+    moving = shape.moving
+    column = list(shape.columns)
+
+    def links(arrays, kind):  # (positions, links), the frame's 0 last
+        return np.stack([np.asarray(arrays[m], dtype=kind) for m in moving] + [np.zeros(kin.n, kind)], axis=1)
+
+    O, e, v_O, a_O = (links(x, complex) for x in (kin.O, kin.e, kin.v_O, kin.a_O))
+    w, al = links(kin.omega, float), links(kin.alpha, float)
+    iw, turn = 1j * w, 1j * al - w * w
+    e_c = e[:, column]  # each point from its link's origin is e p [m]
+    v = v_O[:, column] + iw[:, column] * e_c * shape.local
+    a = a_O[:, column] + turn[:, column] * e_c * shape.local
+    with np.errstate(invalid="ignore"):  # positions that cannot be assembled are nan, and never asked for
+        v_top = np.maximum(np.abs(v).max(axis=1), np.abs(w).max(axis=1) * shape.size)
+        a_top = np.maximum(np.abs(a).max(axis=1), np.abs(al).max(axis=1) * shape.size)
+    # As Python numbers, all at once: a position's few dozen values are too few for numpy to pay.
+    return (np.concatenate([v, a, O, v_O, a_O, iw, turn], axis=1).tolist(),
+            np.concatenate([w, al, v_top[:, None], a_top[:, None]], axis=1).tolist())
 
 
 class _Truth:
@@ -189,14 +270,12 @@ class _Truth:
     ``w``, ``al``: each link's ω and α; all of these in the order of ``column``.
     """
 
-    __slots__ = ("size", "index", "column", "v", "a", "O", "v_O", "a_O", "iw", "turn", "w", "al", "v_scale",
+    __slots__ = ("shape", "size", "index", "column", "v", "a", "O", "v_O", "a_O", "iw", "turn", "w", "al", "v_scale",
                  "a_scale")
 
-    def __init__(self, table: _Table, i: int):
-        shape = table.shape
+    def __init__(self, shape: _Shape, z: list, x: list):
         K, L = len(shape.keys), len(shape.column)
-        z, x = table.values[i], table.rates[i]
-        self.size, self.index, self.column = shape.size, shape.index, shape.column
+        self.shape, self.size, self.index, self.column = shape, shape.size, shape.index, shape.column
         self.v, self.a = z[:K], z[K:2 * K]
         self.O, self.v_O, self.a_O, self.iw, self.turn = (z[2 * K + k * L:2 * K + (k + 1) * L] for k in range(5))
         self.w, self.al = x[:L], x[L:2 * L]
@@ -235,7 +314,7 @@ def kept(kin, what: str, make):
 
 
 def _truth(kin, i: int) -> _Truth:
-    return _Truth(kept(kin, "table", _Table), i)
+    return kept(kin, "table", _Table).truth(kin, i)
 
 
 class _Check:
@@ -364,6 +443,130 @@ def _unknown_image(polygon: str, name: str, z, t, scale) -> str:
     return f"the {polygon} polygon's image {name} is no point of a link the check knows"
 
 
+# -- the quick look: whether everything agrees, in as few Python steps as there can be -------------------------
+# The same values, the same differences and the same scales as :class:`_Check` (so the same answer), gathered with
+# C loops (map, itemgetter) where a construction names its values in its usual order; only where something
+# disagrees does :class:`_Check` go over them all again to find the worst and put it in words.
+def _gap(zs, ts) -> float:
+    """The largest |z − t| of two sequences in step (nan where any is nan; 0 where there are none)."""
+    gaps = list(map(abs, map(_sub, zs, ts)))
+    if not gaps:
+        return 0.0
+    total = sum(gaps)
+    return max(gaps) if total == total else math.nan
+
+
+def _within(gap: float, scale: float) -> bool:
+    """Whether a largest difference ``gap`` is within :data:`AGREEMENT` of ``scale`` (as :meth:`_Check.reason`
+    judges it: a nan never is; against a scale of 0, only 0 is)."""
+    return gap / scale <= AGREEMENT if scale > 0 else gap == 0
+
+
+def _picker(shape: _Shape, what: str, keys: tuple, places: dict):
+    """A function that picks the values of ``keys`` (in their order) out of a row list, by their ``places``: made
+    once per mechanism and order of keys (an itemgetter: a C loop)."""
+    pick = shape.pickers.get((what, keys))
+    if pick is None:
+        at = [places[key] for key in keys]
+        pick = shape.pickers[what, keys] = itemgetter(*at) if len(at) > 1 else partial(_one, at[0])
+    return pick
+
+
+def _one(k: int, row: list) -> tuple:
+    return (row[k],)
+
+
+def _links_agree(truth: _Truth, rates: dict, true: list, scale: float) -> bool:
+    """A construction's ω (α) of each link against ``true`` (the truth's, by column), both times the size."""
+    if not rates:
+        return True
+    size = truth.size
+    ts = _picker(truth.shape, "link", tuple(rates), truth.column)(true)
+    return _within(_gap([x * size for x in rates.values()], [t * size for t in ts]), scale)
+
+
+def _points_agree(truth: _Truth, points: dict, true: list, what: str, scale: float) -> bool:
+    """A construction's ``(x, y)`` of named points (``what`` "point": keyed ``(link, name)``) or of centres of mass
+    (``what`` "G": keyed by link) against ``true`` (the truth's, by key)."""
+    if not points:
+        return True
+    keys = tuple(points)
+    ts = _picker(truth.shape, what, keys if what == "point" else tuple((n, None) for n in keys), truth.index)(true)
+    return _within(_gap(starmap(complex, points.values()), ts), scale)
+
+
+def _motion_agrees(truth: _Truth, c, where: dict, coriolis: dict) -> bool:
+    """Whether :func:`motion_disagreement` finds nothing: every value of the polygons ``c`` within
+    :data:`AGREEMENT` of its scale (a nan, or an image the check cannot place, never is)."""
+    index, column = truth.index, truth.column
+    scale = [truth.v_scale, truth.a_scale]
+    # The images: each against its named point's value (or, a point that is no named one, the link's motion there).
+    found = []
+    for kind, polygon, true, base, factor in ((0, "velocity", truth.v, truth.v_O, truth.iw),
+                                              (1, "acceleration", truth.a, truth.a_O, truth.turn)):
+        images = c.images[polygon]
+        zs, ts = [], []
+        for name, z in images.items():
+            place = where.get(name)
+            if place is None:
+                if name != "o" and name != "o′":
+                    return False  # an image whose point the check does not know: not shown
+                t = 0j
+            elif place[2] is None:
+                j = column[place[0]]
+                t = base[j] + factor[j] * (place[1] - truth.O[j])
+            else:
+                t = true[index[place[2]]]
+            zs.append(z)
+            ts.append(t)
+        if ts:
+            top = max(map(abs, ts))
+            if top > scale[kind]:
+                scale[kind] = top
+        found.append((zs, ts))
+    if coriolis:
+        w, at = truth.w, truth.at
+        vectors = [v for v in c.vectors("acceleration") if v.name in coriolis]
+        zs = [complex(*v.vector) for v in vectors]
+        ts = [2j * w[column[m]] * (at(k, X) - at(b, X)) for m, k, b, X in (coriolis[v.name] for v in vectors)]
+        if ts:
+            top = max(map(abs, ts))
+            if top > scale[1]:
+                scale[1] = top
+        if not _within(_gap(zs, ts), scale[1]):
+            return False
+    for kind in (0, 1):
+        zs, ts = found[kind]
+        if not _within(_gap(starmap(complex, zs), ts), scale[kind]):
+            return False
+    return (_links_agree(truth, c.omega, truth.w, scale[0]) and _links_agree(truth, c.alpha, truth.al, scale[1])
+            and _points_agree(truth, c.velocity, truth.v, "point", scale[0])
+            and _points_agree(truth, c.acceleration, truth.a, "point", scale[1])
+            and _points_agree(truth, c.v_G, truth.v, "G", scale[0])
+            and _points_agree(truth, c.a_G, truth.a, "G", scale[1]))
+
+
+def _centres_agree(truth: _Truth, ic) -> bool:
+    """Whether :func:`centres_disagreement` finds nothing (as :func:`_motion_agrees` for the polygons)."""
+    column, O, v_O, iw, w, size = truth.column, truth.O, truth.v_O, truth.iw, truth.w, truth.size
+    scale = truth.v_scale
+    pairs = ic.centres
+    zs = [(v_O[b] + iw[b] * (P - O[b])) - (v_O[a] + iw[a] * (P - O[a]))
+          for (a, b), P in zip([(column[a], column[b]) for a, b in pairs], starmap(complex, pairs.values()))]
+    if not _within(_gap(zs, [0j] * len(zs)), scale):
+        return False
+    pairs = ic.at_infinity
+    if pairs:
+        if not _within(_gap([(w[column[b]] - w[column[a]]) * size for a, b in pairs], [0.0] * len(pairs)), scale):
+            return False
+        d = [truth.at(b, 0j) - truth.at(a, 0j) for a, b in pairs]
+        if not _within(_gap([z.real * u[0] + z.imag * u[1] for z, u in zip(d, pairs.values())], [0.0] * len(pairs)),
+                       scale):
+            return False
+    return (_links_agree(truth, ic.omega, w, scale) and _points_agree(truth, ic.velocity, truth.v, "point", scale)
+            and _points_agree(truth, ic.v_G, truth.v, "G", scale))
+
+
 def motion_disagreement(kin, i: int, c, where: dict, coriolis: dict) -> str:
     """Why the velocity and acceleration polygons ``c`` of position ``i`` disagree with ``kin`` ('' if they agree).
 
@@ -391,6 +594,9 @@ def motion_disagreement(kin, i: int, c, where: dict, coriolis: dict) -> str:
         and both values.
     """
     truth = _truth(kin, i)
+    if _motion_agrees(truth, c, where, coriolis):
+        return ""
+    # Only where a value disagrees (or is not a number): every difference again, the worst one put in words.
     check = _Check(truth)
     _motion_values(check, truth, 0, c.omega, c.velocity, c.v_G)
     _motion_values(check, truth, 1, c.alpha, c.acceleration, c.a_G)
@@ -436,6 +642,8 @@ def centres_disagreement(kin, i: int, ic) -> str:
     perpendicular to u). The ω and the velocities the centres give are compared as the polygons' are.
     """
     truth = _truth(kin, i)
+    if _centres_agree(truth, ic):
+        return ""
     check = _Check(truth)
     size, column, O, v_O, iw, w = truth.size, truth.column, truth.O, truth.v_O, truth.iw, truth.w
     pairs = ic.centres

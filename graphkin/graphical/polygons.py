@@ -34,6 +34,7 @@ from graphkin.geometry import zcross as cross
 from graphkin.graphical.captions import Later, number
 from graphkin.graphical.construction import nice_scale
 from graphkin.graphical.guard import derived, kept, motion_disagreement
+from graphkin.graphical.guard import plan as kept_plan
 from graphkin.graphical.motion import MotionConstruction, MotionStep, PolygonLine, Vector
 from graphkin.graphical.motion_captions import A, V, acceleration_image, rate, sense, vector, velocity_image
 from graphkin.kinematics import DriverGroup, Dyad, GearGroup, Kinematics
@@ -142,7 +143,7 @@ def _fixed(kin: Kinematics) -> _Fixed:
     """The polygons' :class:`_Fixed` of the kinematics' mechanism (kept in its plan, and found once per kinematics:
     :func:`graphkin.graphical.guard.kept`)."""
     mech = kin.mechanism
-    compiled = plan_of(mech).compiled
+    compiled = kept_plan(kin).compiled
     fixed = compiled.get("polygons")
     if fixed is None:
         fixed = compiled["polygons"] = _Fixed(mech)
@@ -244,9 +245,10 @@ class _Polygons:
         O, e = (0j, 1 + 0j) if link == self.frame else (self._O[link], self._e[link])
         vectors, found, listed = [], {}, []
         for key, s, label, p in self.fixed.images[link]:
-            v = m.vel(O + e * p)
+            P = O + e * p
+            v = m.vel(P)
             found[label] = v
-            self.where[label] = (link, O + e * p, key)
+            self.where[label] = (link, P, key)
             vectors.append((f"v_{s}", 0j, v, "found"))
             if label not in self.v_img:  # a point a step before has found is not read off again
                 listed.append((s, v))
@@ -260,11 +262,13 @@ class _Polygons:
         O, e = (0j, 1 + 0j) if link == self.frame else (self._O[link], self._e[link])
         vectors, found, listed = [], {}, []
         for key, s, label, p in self.fixed.images[link]:
-            a = m.acc(O + e * p)
-            found[label + "′"] = a
-            self.where[label + "′"] = (link, O + e * p, key)
+            P = O + e * p
+            a = m.acc(P)
+            label += "′"
+            found[label] = a
+            self.where[label] = (link, P, key)
             vectors.append((f"a_{s}", 0j, a, "found"))
-            if label + "′" not in self.a_img:
+            if label not in self.a_img:
                 listed.append((s, a))
             self.acceleration[key] = a
         caption = Later(acceleration_image, link, m.w, m.al, m.a, listed, self.a_ref)

@@ -70,3 +70,18 @@ def test_a_nan_force_is_refused_wherever_it_is(strip_cutter):
         bad = dataclasses.replace(c, forces={**c.forces, key: (math.nan, 0.0)})
         checked = guard.check_forces(strip_cutter, bad, 0)
         assert not checked.valid and checked.disagreement, key
+
+
+def test_the_truth_is_the_same_worked_out_alone_or_with_every_position(strip_cutter):
+    """The guard works out the first FEW positions it is asked for one at a time, the rest all at once (numpy):
+    both ways it refuses a value nudged by 100 × AGREEMENT of the position's largest speed, and passes it unnudged."""
+    kin = dataclasses.replace(strip_cutter.kinematics)  # a new kinematics: nothing kept for it yet
+    for i in [*range(guard.FEW + 3), kin.n - 1]:  # alone, then from the table
+        c = instant_centres(kin, i)
+        assert c.valid and guard.centres_disagreement(kin, i, c) == ""
+        top = max(math.hypot(*v) for v in c.velocity.values())
+        key = next(iter(c.velocity))
+        x, y = c.velocity[key]
+        for factor, ok in ((0.01, True), (100.0, False)):
+            nudged = dataclasses.replace(c, velocity={**c.velocity, key: (x + factor * guard.AGREEMENT * top, y)})
+            assert (guard.centres_disagreement(kin, i, nudged) == "") is ok, (i, factor)
