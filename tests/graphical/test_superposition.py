@@ -130,8 +130,10 @@ def check_sums(c) -> None:
     for key in c.couple:
         total = sum(sp.couple[key] for sp in subs)
         assert total == pytest.approx(c.couple[key], rel=0, abs=REL * max(lever, scale * 1e-3))
+    # A driving effort that is zero in the whole problem (a load that the frame holds alone) sums its parts'
+    # rounding too: it is compared as a couple is, at the construction's largest couple or force, not at its own 0.
     efforts = [sp.effort for sp in subs]
-    size = max([abs(c.effort)] + [abs(e) for e in efforts] + [1e-300])
+    size = max([abs(c.effort)] + [abs(e) for e in efforts] + [lever, scale * 1e-3])
     assert sum(efforts) == pytest.approx(c.effort, rel=0, abs=REL * size)
     if c.driver_vector is not None:
         np.testing.assert_allclose(sum(np.asarray(sp.driver_vector) for sp in subs), c.driver_vector, rtol=0,
