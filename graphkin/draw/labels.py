@@ -245,6 +245,8 @@ class Labeler:
         labels of the panels placed before, already measured)."""
         self.placed = []
         """The boxes [display] :meth:`place` gave the labels, for the labels placed after them to keep off."""
+        self.prices = {}
+        """What each label placed covers at its spot (:meth:`place`), by its Text: 0 where it covers nothing."""
 
     def segment(self, p, q, width=0.0, *, soft=False):
         """An obstacle segment (data coordinates), ``width`` points wide; ``soft`` for a dashed line."""
@@ -328,6 +330,7 @@ class Labeler:
             covers = self._place()
             moved = [k for k, c in enumerate(covers) if self.spares[k] is not None and c >= ASTRAY_COST]
             if not moved:
+                self.prices = {t: c for (t, _), c in zip(self.items, covers)}
                 return
             for k in moved:
                 t, table = self.items[k][0], self.spares[k]
@@ -639,6 +642,15 @@ def short_table(lab, rows, kind: str, pts, s):
     return lab.label("\n".join(text for _, text in rows), table_candidates(pts.min(axis=0), pts.max(axis=0),
                                                                           2 * s.label_pad),
                      color=s.ink, size=s.small_size, gid="table:" + "|".join(f"{kind}:{name}" for name, _ in rows))
+
+
+def fixed_table(ax, rows, kind: str, at, s):
+    """A table of short vectors (as :func:`short_table`) at a spot of its own: its upper left corner at ``at``
+    [data], in a column the figure keeps free for it (:func:`graphkin.draw.paper.draw_motion_paper`). The Labeler
+    does not move it; the labels that find no clean spot still join it (:meth:`Labeler.label`'s ``spare``)."""
+    return offset_text(ax, "\n".join(text for _, text in rows), at, (0.0, 0.0), ha="left", va="top", color=s.ink,
+                       fontsize=s.small_size, zorder=6.0, path_effects=[halo()],
+                       gid="table:" + "|".join(f"{kind}:{name}" for name, _ in rows))
 
 
 def _compass():

@@ -175,15 +175,7 @@ def _figures(name):
             yield _where(problem, q), "solution", fig
 
 
-CROWDED = {
-    "shaper_six_bar": "GRAPHKIN BUG (issue 36, item 3): at figures/' 45° the acceleration polygon holds eleven vectors "
-                      "in 40 mm; the table of those that find no spot beside their arrow has no room left in the "
-                      "figure and runs into the scale strip: the figure needs room for it (draw/paper.py's layout)",
-}
-
-
-@pytest.mark.parametrize("name", [pytest.param(n, marks=pytest.mark.xfail(strict=True, reason=CROWDED[n]))
-                                  if n in CROWDED else n for n in catalog.names()])
+@pytest.mark.parametrize("name", catalog.names())
 def test_each_label_of_a_polygon_is_by_its_own_vector(name):
     bad = [(where, what, *m) for where, what, fig in _figures(name) for m in misplaced(fig)]
     assert not bad, "\n".join(map(str, bad))
