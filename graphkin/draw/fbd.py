@@ -106,6 +106,23 @@ def _crowding(option, X, placed, L):
     return total
 
 
+def _slid(option, X, placed, L, gap):
+    """An arrow (tail, tip) from ``X`` moved along its line past every arrow already drawn from ``X`` that it runs
+    along (:func:`_crowding`), ``gap`` beyond the farthest's end: (tail, tip, how far it moved)."""
+    tail, tip = option
+    away = tip - X if np.hypot(*(tip - X)) > np.hypot(*(tail - X)) else tail - X
+    u = unit(away)
+    far = 0.0
+    for Y, t2, h2 in placed:
+        if np.hypot(*(Y - X)) > 1e-6 * L:
+            continue
+        away2 = h2 - Y if np.hypot(*(h2 - Y)) > np.hypot(*(t2 - Y)) else t2 - Y
+        if np.hypot(*away2) and float(np.dot(u, unit(away2))) > math.cos(math.radians(20)):
+            far = max(far, float(np.dot(away2, u)))
+    shift = u * (far + gap) if far > 0 else np.zeros(2)
+    return tail + shift, tip + shift, float(np.hypot(*shift))
+
+
 def _color(kind, s):
     return {"unknown": s.unknown, "known": s.known, "inertia": s.known, "driver": s.driver}[kind]
 
@@ -230,6 +247,7 @@ def draw_free_body(construction, link: int, *, ax=None, force_scale=None, title=
     drawn.scale = force_scale
     ends = []
     placed = []
+    own = {}  # each force's arrow, by name, for its label to keep nearer it than any other (Labeler.arrow)
     ppu = paper * PT_PER_MM if paper else points_per_unit(ax, 1.4 * L)
     # Forces.
     for name, F, at, kind in loads["forces"]:
@@ -246,14 +264,21 @@ def draw_free_body(construction, link: int, *, ax=None, force_scale=None, title=
         pull, push = (X, X + v), (X - v, X)  # starts at its point / ends there
         prefer = push if kind != "inertia" and float(np.dot(F, centroid - X)) > 1e-9 * size * L else pull
         other = pull if prefer is push else push
-        tail, tip = min((prefer, other), key=lambda o: (_crowding(o, X, placed, L), o is not prefer))
+        crowds = {id(o): _crowding(o, X, placed, L) for o in (prefer, other)}
+        if all(crowds.values()):
+            # Along arrows already drawn from the point either way (a slider's forces on one line): the arrow slides
+            # along its line, past the nearer of them, rather than lie on it, its label beside another's.
+            gap = 2.0 / paper if paper else 0.03 * L
+            tail, tip = min((_slid(o, X, placed, L, gap) for o in (prefer, other)), key=lambda o: o[2])[:2]
+        else:
+            tail, tip = min((prefer, other), key=lambda o: (crowds[id(o)], o is not prefer))
         placed.append((X, tail, tip))
         a = arrow(ax, tail, tip, color=color, lw=s.known_lw if kind in ("known", "inertia") else s.unknown_lw, s=s,
                   hollow=kind == "unknown", zorder=4.2, gid=f"fbd{link}:{name}", pt_per_unit=ppu)
         drawn.arrows[name] = a
         drawn.ends[name] = (tuple(tail), tuple(tip))
         drawn.add(a)
-        lab.arrow(tail, tip, a.get_linewidth(), a.get_mutation_scale())
+        own[name] = lab.arrow(tail, tip, a.get_linewidth(), a.get_mutation_scale())
         ends += [tail, tip]
     if line_point is not None and math.hypot(*inert["F"]) > 0:
         P = line_point
@@ -295,7 +320,7 @@ def draw_free_body(construction, link: int, *, ax=None, force_scale=None, title=
                                    s=s, start=-0.7 * math.pi + 0.35 * k, zorder=4.1, gid=f"fbd{link}:{name}")
         drawn.arrows[name] = a
         drawn.add(a)
-        lab.curve(arc, a.get_linewidth(), a.get_mutation_scale())
+        lab.curve(arc, a.get_linewidth(), a.get_mutation_scale(), named=True)
         extent += [X - 1.15 * r, X + 1.15 * r]
         text = f"{sub(name)} = {num(abs(T), power='superscript')} N·m {'CCW' if T > 0 else 'CW'}"
         if not paper and _too_wide(ax, text, s):
@@ -317,7 +342,8 @@ def draw_free_body(construction, link: int, *, ax=None, force_scale=None, title=
             continue
         tail, tip = (np.asarray(p) for p in drawn.ends[name])
         mid = 0.5 * (tail + tip)
-        t = lab.label(sub(name), arrow_label_candidates(tail, tip, mid - centroid, s.label_pad), color=_color(kind, s))
+        t = lab.label(sub(name), arrow_label_candidates(tail, tip, mid - centroid, s.label_pad), color=_color(kind, s),
+                      own=own[name], gid=f"label:fbd{link}:{name}")
         drawn.labels[name] = t
         drawn.add(t)
     extent += ends

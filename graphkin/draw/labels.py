@@ -273,12 +273,19 @@ class Labeler:
         self.vectors.append((np.asarray(tail, float), np.asarray(tip, float), float(head)))
         return len(self.vectors) - 1
 
-    def curve(self, pts, lw=0.0, head=0.0):
-        """A curved arrow (a couple's arc) as an obstacle: the polyline, and a head at its last point."""
+    def curve(self, pts, lw=0.0, head=0.0, *, named=False):
+        """A curved arrow (a couple's arc) as an obstacle: the polyline, and a head at its last point. ``named``: an
+        arrow with a name of its own, as :meth:`arrow`'s, that a label naming another arrow must not lie nearer
+        than its own (a force's label beside the couple's arc at its pin would read as the couple's)."""
         pts = np.asarray(pts, float)
         self.polyline(pts, width=lw)
         if head > 0 and len(pts) > 1:
             self.heads.append((pts[-2], pts[-1], float(head)))
+        if named:
+            for a, b in zip(pts[:-1], pts[1:]):
+                self.vectors.append((a, b, 0.0))
+            if head > 0 and len(pts) > 1:
+                self.vectors[-1] = (pts[-2], pts[-1], float(head))
 
     def dot(self, P, size):
         """A mark ``size`` points across centred on ``P`` (a pin, a centre of mass)."""

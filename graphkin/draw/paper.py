@@ -104,7 +104,8 @@ def layout(sizes, *, width: float = FIGURE_WIDTH, strip: float = 0.0, gap: float
     return height, corners
 
 
-def arrange(fig, panels, *, width: float = FIGURE_WIDTH, strip: float = 0.0, gap: float = GAP) -> float:
+def arrange(fig, panels, *, width: float = FIGURE_WIDTH, strip: float = 0.0, gap: float = GAP,
+            fenced: bool = False) -> float:
     """Lay panels out in rows at their printed size (:func:`layout`), size the figure to them, and place their
     labels.
 
@@ -117,6 +118,9 @@ def arrange(fig, panels, *, width: float = FIGURE_WIDTH, strip: float = 0.0, gap
         The figure's width [mm]; a row holds the panels that fit it, each row centred.
     strip : float
         Height [mm] left free under the rows (for :func:`scale_strip`).
+    fenced : bool
+        A label with no clean spot in its panel may stand in the figure's free space beside it, off the other
+        panels, their titles and the strip (:attr:`graphkin.draw.labels.Labeler.fence`), as a polygon's may.
 
     Returns
     -------
@@ -132,10 +136,23 @@ def arrange(fig, panels, *, width: float = FIGURE_WIDTH, strip: float = 0.0, gap
     fig.set_size_inches(width / 25.4, height / 25.4)
     for (ax, _), (x, y), (w, h, _, _) in zip(panels, corners, sizes):
         ax.set_position([x / width, y / height, w / width, h / height])
+    renderer = measuring_renderer(fig)
+    taken = [tuple(text_extent(ax.title, renderer).extents) for ax, _ in panels if ax.title.get_text().strip()]
     for ax, _ in panels:
         lab = getattr(ax, "_graphkin_labeler", None)
+        if lab is not None and fenced:
+            # The other panels and the strip, in this panel's data units.
+            back = ax.transData.inverted().transform
+            px = fig.dpi / 25.4
+            boxes = [other.get_position().transformed(fig.transFigure).extents for other, _ in panels
+                     if other is not ax] + [np.array([0.0, 0.0, width * px, strip * px])]
+            lab.fence = [tuple(back(np.reshape(b, (2, 2))).ravel()) for b in boxes]
+            lab.taken = [b for b in taken if tuple(b) != tuple(text_extent(ax.title, renderer).extents)]
+            lab.room = tuple(back(ax.bbox.extents.reshape(2, 2)).ravel())
         if lab is not None:
             lab.place()
+            if fenced:
+                taken += lab.placed  # the panels placed after keep off its labels
             drawn = getattr(ax, "_graphkin_drawn", None)
             if drawn is not None:
                 drawn += lab.leaders
@@ -265,7 +282,7 @@ def draw_free_bodies(construction, links=None, *, length_scale: float, force_sca
         if link in enlarged:
             _own_length_bar(ax, drawn, k, s)
         panels.append((ax, 1.0 / k))
-    height = arrange(fig, panels, width=width, strip=STRIP)
+    height = arrange(fig, panels, width=width, strip=STRIP, fenced=True)
     scale_strip(fig, height, length_scale=length_scale, force_scale=force_scale, width=width, **style)
     return fig
 
