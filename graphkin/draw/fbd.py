@@ -106,23 +106,6 @@ def _crowding(option, X, placed, L):
     return total
 
 
-def _slid(option, X, placed, L, gap):
-    """An arrow (tail, tip) from ``X`` moved along its line past every arrow already drawn from ``X`` that it runs
-    along (:func:`_crowding`), ``gap`` beyond the farthest's end: (tail, tip, how far it moved)."""
-    tail, tip = option
-    away = tip - X if np.hypot(*(tip - X)) > np.hypot(*(tail - X)) else tail - X
-    u = unit(away)
-    far = 0.0
-    for Y, t2, h2 in placed:
-        if np.hypot(*(Y - X)) > 1e-6 * L:
-            continue
-        away2 = h2 - Y if np.hypot(*(h2 - Y)) > np.hypot(*(t2 - Y)) else t2 - Y
-        if np.hypot(*away2) and float(np.dot(u, unit(away2))) > math.cos(math.radians(20)):
-            far = max(far, float(np.dot(away2, u)))
-    shift = u * (far + gap) if far > 0 else np.zeros(2)
-    return tail + shift, tip + shift, float(np.hypot(*shift))
-
-
 def _color(kind, s):
     return {"unknown": s.unknown, "known": s.known, "inertia": s.known, "driver": s.driver}[kind]
 
@@ -264,14 +247,7 @@ def draw_free_body(construction, link: int, *, ax=None, force_scale=None, title=
         pull, push = (X, X + v), (X - v, X)  # starts at its point / ends there
         prefer = push if kind != "inertia" and float(np.dot(F, centroid - X)) > 1e-9 * size * L else pull
         other = pull if prefer is push else push
-        crowds = {id(o): _crowding(o, X, placed, L) for o in (prefer, other)}
-        if all(crowds.values()):
-            # Along arrows already drawn from the point either way (a slider's forces on one line): the arrow slides
-            # along its line, past the nearer of them, rather than lie on it, its label beside another's.
-            gap = 2.0 / paper if paper else 0.03 * L
-            tail, tip = min((_slid(o, X, placed, L, gap) for o in (prefer, other)), key=lambda o: o[2])[:2]
-        else:
-            tail, tip = min((prefer, other), key=lambda o: (crowds[id(o)], o is not prefer))
+        tail, tip = min((prefer, other), key=lambda o: (_crowding(o, X, placed, L), o is not prefer))
         placed.append((X, tail, tip))
         a = arrow(ax, tail, tip, color=color, lw=s.known_lw if kind in ("known", "inertia") else s.unknown_lw, s=s,
                   hollow=kind == "unknown", zorder=4.2, gid=f"fbd{link}:{name}", pt_per_unit=ppu)

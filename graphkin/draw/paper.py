@@ -186,13 +186,13 @@ def scale_strip(fig, height: float, *, length_scale=None, force_scale=None, widt
                                               (None, velocity_scale, "m/s"), (None, acceleration_scale, "m/s²"))
               if k is not None or X is not None]
     # Each bar about 30 mm long; where the bars and their readings do not fit the width so, shorter bars.
-    for reach in (30.0, 20.0, 12.0):
+    for reach in (30.0, 20.0):
         out, fits = _bars(ax, scales, reach, y, s, paper, width)
-        if fits or reach == 12.0:
+        if fits:
             return out
         for artist in out:
             artist.remove()
-    return out
+    return _bars(ax, scales, 12.0, y, s, paper, width)[0]
 
 
 STRIP_GAP = 5.0
@@ -203,9 +203,7 @@ def _bars(ax, scales, reach: float, y: float, s, paper, width: float) -> tuple[l
     """The bars of :func:`scale_strip`, each about ``reach`` [mm] long, from the left, 12 mm apart, the last moved
     left (down to :data:`STRIP_GAP` from the one before) where its reading would run past the figure's edge.
     Returns the artists and whether every reading ends within the figure."""
-    out = []
-    x, least = 4.0, 4.0
-    fits = True
+    out, x, least, fits = [], 4.0, 4.0, True
     for k, X, unit in scales:
         if k is not None:
             value = nice_round(reach * k)
@@ -529,7 +527,8 @@ def draw_motion_paper(construction, *, velocity_scale: float, acceleration_scale
     -------
     Figure
         One axes, its data units millimetres of paper: two polygons (one before the acceleration polygon is
-        begun), each drawn from its own origin, and a strip of scale bars.
+        begun), each drawn from its own origin, and a strip of scale bars. A polygon whose table of short vectors
+        finds no clean spot beside it is drawn again with a column of its own for the table, to its right.
     """
     shown = ["velocity", "acceleration"]
     if upto is not None and construction.steps[upto].polygon == "velocity":
@@ -549,10 +548,6 @@ def draw_motion_paper(construction, *, velocity_scale: float, acceleration_scale
     return fig
 
 
-TABLE_GAP = 2.0
-"""Room [mm] between a polygon's margin and the column kept for its table of short vectors."""
-
-
 def _motion_figure(construction, shown, scales, columns, *, upto, values, titles, width, **style):
     """The figure of :func:`draw_motion_paper`, each polygon of ``columns`` with a column (width, height [mm]) to
     its right for its table of short vectors.
@@ -570,7 +565,7 @@ def _motion_figure(construction, shown, scales, columns, *, upto, values, titles
         lo, hi = lo - pad, hi + pad
         if polygon in columns:
             w, h = columns[polygon]
-            hi = hi + (TABLE_GAP + w, 0.0)
+            hi = hi + (2.0 + w, 0.0)  # 2 mm between the polygon's margin and its table's column
             lo = np.minimum(lo, hi - (0.0, h))
         extents.append((lo, hi))
     names = [titles[n] if titles is not None else f"{polygon.capitalize()} polygon" for n, polygon in enumerate(shown)]
