@@ -518,9 +518,10 @@ class Labeler:
                              np.linspace(y0 + h / 2 + GROW, y1 - h / 2 - GROW, 12))
         cx, cy = cx.ravel(), cy.ravel()
         boxes = np.column_stack([cx - w / 2 - GROW, cy - h / 2 - GROW, cx + w / 2 + GROW, cy + h / 2 + GROW])
-        # Where the leader meets each text: its box's point nearest the anchor (the box as measured, not grown).
-        ends = np.column_stack([np.clip(A[0], boxes[:, 0] + GROW, boxes[:, 2] - GROW),
-                                np.clip(A[1], boxes[:, 1] + GROW, boxes[:, 3] - GROW)])
+        # Where the leader meets each text: its box's point nearest the anchor, half the margin off the text as
+        # measured (drawn, it may come a pixel wider or narrower): on neither the text nor far from it.
+        ends = np.column_stack([np.clip(A[0], boxes[:, 0] + GROW / 2, boxes[:, 2] - GROW / 2),
+                                np.clip(A[1], boxes[:, 1] + GROW / 2, boxes[:, 3] - GROW / 2)])
         reach = np.hypot(*(ends - A).T)
         score = cost(boxes) + _box_overlaps(boxes, placed, [TEXT_COST] * len(placed)) + self._on_leaders(boxes, leaders)
         # The leader itself should not run through a text.
