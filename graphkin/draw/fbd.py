@@ -230,6 +230,7 @@ def draw_free_body(construction, link: int, *, ax=None, force_scale=None, title=
     drawn.scale = force_scale
     ends = []
     placed = []
+    own = {}  # each force's arrow, by name, for its label to keep nearer it than any other (Labeler.arrow)
     ppu = paper * PT_PER_MM if paper else points_per_unit(ax, 1.4 * L)
     # Forces.
     for name, F, at, kind in loads["forces"]:
@@ -253,7 +254,7 @@ def draw_free_body(construction, link: int, *, ax=None, force_scale=None, title=
         drawn.arrows[name] = a
         drawn.ends[name] = (tuple(tail), tuple(tip))
         drawn.add(a)
-        lab.arrow(tail, tip, a.get_linewidth(), a.get_mutation_scale())
+        own[name] = lab.arrow(tail, tip, a.get_linewidth(), a.get_mutation_scale())
         ends += [tail, tip]
     if line_point is not None and math.hypot(*inert["F"]) > 0:
         P = line_point
@@ -295,7 +296,7 @@ def draw_free_body(construction, link: int, *, ax=None, force_scale=None, title=
                                    s=s, start=-0.7 * math.pi + 0.35 * k, zorder=4.1, gid=f"fbd{link}:{name}")
         drawn.arrows[name] = a
         drawn.add(a)
-        lab.curve(arc, a.get_linewidth(), a.get_mutation_scale())
+        lab.curve(arc, a.get_linewidth(), a.get_mutation_scale(), named=True)
         extent += [X - 1.15 * r, X + 1.15 * r]
         text = f"{sub(name)} = {num(abs(T), power='superscript')} N·m {'CCW' if T > 0 else 'CW'}"
         if not paper and _too_wide(ax, text, s):
@@ -317,7 +318,8 @@ def draw_free_body(construction, link: int, *, ax=None, force_scale=None, title=
             continue
         tail, tip = (np.asarray(p) for p in drawn.ends[name])
         mid = 0.5 * (tail + tip)
-        t = lab.label(sub(name), arrow_label_candidates(tail, tip, mid - centroid, s.label_pad), color=_color(kind, s))
+        t = lab.label(sub(name), arrow_label_candidates(tail, tip, mid - centroid, s.label_pad), color=_color(kind, s),
+                      own=own[name], gid=f"label:fbd{link}:{name}")
         drawn.labels[name] = t
         drawn.add(t)
     extent += ends

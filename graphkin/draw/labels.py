@@ -245,6 +245,8 @@ class Labeler:
         labels of the panels placed before, already measured)."""
         self.placed = []
         """The boxes [display] :meth:`place` gave the labels, for the labels placed after them to keep off."""
+        self.prices = {}
+        """What each label placed covers at its spot (:meth:`place`), by its Text: 0 where it covers nothing."""
 
     def segment(self, p, q, width=0.0, *, soft=False):
         """An obstacle segment (data coordinates), ``width`` points wide; ``soft`` for a dashed line."""
@@ -271,12 +273,19 @@ class Labeler:
         self.vectors.append((np.asarray(tail, float), np.asarray(tip, float), float(head)))
         return len(self.vectors) - 1
 
-    def curve(self, pts, lw=0.0, head=0.0):
-        """A curved arrow (a couple's arc) as an obstacle: the polyline, and a head at its last point."""
+    def curve(self, pts, lw=0.0, head=0.0, *, named=False):
+        """A curved arrow (a couple's arc) as an obstacle: the polyline, and a head at its last point. ``named``: an
+        arrow with a name of its own, as :meth:`arrow`'s, that a label naming another arrow must not lie nearer
+        than its own (a force's label beside the couple's arc at its pin would read as the couple's)."""
         pts = np.asarray(pts, float)
         self.polyline(pts, width=lw)
         if head > 0 and len(pts) > 1:
             self.heads.append((pts[-2], pts[-1], float(head)))
+        if named:
+            for a, b in zip(pts[:-1], pts[1:]):
+                self.vectors.append((a, b, 0.0))
+            if head > 0 and len(pts) > 1:
+                self.vectors[-1] = (pts[-2], pts[-1], float(head))
 
     def dot(self, P, size):
         """A mark ``size`` points across centred on ``P`` (a pin, a centre of mass)."""
@@ -328,6 +337,7 @@ class Labeler:
             covers = self._place()
             moved = [k for k, c in enumerate(covers) if self.spares[k] is not None and c >= ASTRAY_COST]
             if not moved:
+                self.prices = {t: c for (t, _), c in zip(self.items, covers)}
                 return
             for k in moved:
                 t, table = self.items[k][0], self.spares[k]
@@ -508,8 +518,10 @@ class Labeler:
                              np.linspace(y0 + h / 2 + GROW, y1 - h / 2 - GROW, 12))
         cx, cy = cx.ravel(), cy.ravel()
         boxes = np.column_stack([cx - w / 2 - GROW, cy - h / 2 - GROW, cx + w / 2 + GROW, cy + h / 2 + GROW])
-        # Where the leader meets each box: the box's point nearest the anchor.
-        ends = np.column_stack([np.clip(A[0], boxes[:, 0], boxes[:, 2]), np.clip(A[1], boxes[:, 1], boxes[:, 3])])
+        # Where the leader meets each text: its box's point nearest the anchor, half the margin off the text as
+        # measured (drawn, it may come a pixel wider or narrower): on neither the text nor far from it.
+        ends = np.column_stack([np.clip(A[0], boxes[:, 0] + GROW / 2, boxes[:, 2] - GROW / 2),
+                                np.clip(A[1], boxes[:, 1] + GROW / 2, boxes[:, 3] - GROW / 2)])
         reach = np.hypot(*(ends - A).T)
         score = cost(boxes) + _box_overlaps(boxes, placed, [TEXT_COST] * len(placed)) + self._on_leaders(boxes, leaders)
         # The leader itself should not run through a text.
@@ -639,6 +651,15 @@ def short_table(lab, rows, kind: str, pts, s):
     return lab.label("\n".join(text for _, text in rows), table_candidates(pts.min(axis=0), pts.max(axis=0),
                                                                           2 * s.label_pad),
                      color=s.ink, size=s.small_size, gid="table:" + "|".join(f"{kind}:{name}" for name, _ in rows))
+
+
+def fixed_table(ax, rows, kind: str, at, s):
+    """A table of short vectors (as :func:`short_table`) at a spot of its own: its upper left corner at ``at``
+    [data], in a column the figure keeps free for it (:func:`graphkin.draw.paper.draw_motion_paper`). The Labeler
+    does not move it; the labels that find no clean spot still join it (:meth:`Labeler.label`'s ``spare``)."""
+    return offset_text(ax, "\n".join(text for _, text in rows), at, (0.0, 0.0), ha="left", va="top", color=s.ink,
+                       fontsize=s.small_size, zorder=6.0, path_effects=[halo()],
+                       gid="table:" + "|".join(f"{kind}:{name}" for name, _ in rows))
 
 
 def _compass():

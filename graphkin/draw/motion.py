@@ -23,7 +23,14 @@ from graphkin.draw.axes import (
     set_limits,
     setup_axes,
 )
-from graphkin.draw.labels import SHORT, Labeler, arrow_label_candidates, point_label_candidates, short_table
+from graphkin.draw.labels import (
+    SHORT,
+    Labeler,
+    arrow_label_candidates,
+    fixed_table,
+    point_label_candidates,
+    short_table,
+)
 from graphkin.draw.scales import nice_round, scale_bar
 from graphkin.draw.text import motion_name
 from graphkin.errors import GraphkinError
@@ -41,7 +48,7 @@ def motion_extent(construction, polygon: str, scale: float):
 
 def draw_motion_polygon(construction, polygon: str = "velocity", *, scale: float | None = None, ax=None,
                         values: bool = True, title=None, upto: int | None = None, paper=None, bar=True,
-                        place=True, origin=(0.0, 0.0), **style) -> Drawn:
+                        place=True, origin=(0.0, 0.0), table_at=None, **style) -> Drawn:
     """Draw the velocity or acceleration polygon of a position to a stated scale.
 
     The pole is a ring; each vector a step draws is an arrow (known ones heavy with solid heads, those whose
@@ -74,6 +81,9 @@ def draw_motion_polygon(construction, polygon: str = "velocity", *, scale: float
         Place the labels now; False leaves them to whoever lays the figure out (:func:`graphkin.draw.axes.finish`).
     origin : (float, float)
         Where the pole is drawn [mm of drawing] (a panel of a figure of several drawn on one axes).
+    table_at : (float, float), optional
+        Where the table of short vectors starts, its upper left corner [mm of drawing], in a column kept free for
+        it (:func:`graphkin.draw.paper.draw_motion_paper`); by default the Labeler places it beside the polygon.
     **style
         Overrides of :class:`graphkin.draw.style.Style` fields.
 
@@ -178,7 +188,9 @@ def draw_motion_polygon(construction, polygon: str = "velocity", *, scale: float
             size = float(np.hypot(*(tip - tail))) * scale
             text = " = ".join(motion_name(name) for name in names) + f" = {num(size)} {unit}"
             (rows if float(np.hypot(*(tip - tail))) * ppu < SHORT else beside).append((names[0], text, tail, tip, k))
-        table = short_table(lab, [(name, text) for name, text, *_ in rows], polygon, np.asarray(pts), s)
+        listed = [(name, text) for name, text, *_ in rows]
+        table = (short_table(lab, listed, polygon, np.asarray(pts), s) if table_at is None
+                 else fixed_table(ax, listed, polygon, table_at, s))
         drawn.add(table)
         for name, text, tail, tip, k in beside:
             mid = 0.5 * (tail + tip)

@@ -24,7 +24,7 @@ from matplotlib.transforms import Affine2D
 from graphkin.draw import style as _style
 from graphkin.draw.axes import BareAxes, setup_axes
 from graphkin.draw.fbd import draw_free_body
-from graphkin.draw.labels import _offset, measuring_renderer
+from graphkin.draw.labels import ASTRAY_COST, _offset, measuring_renderer
 from graphkin.draw.mechanism import draw_mechanism
 from graphkin.draw.motion import draw_motion_polygon, motion_extent
 from graphkin.draw.polygon import draw_force_polygon, polygon_vertices, step_title
@@ -104,7 +104,8 @@ def layout(sizes, *, width: float = FIGURE_WIDTH, strip: float = 0.0, gap: float
     return height, corners
 
 
-def arrange(fig, panels, *, width: float = FIGURE_WIDTH, strip: float = 0.0, gap: float = GAP) -> float:
+def arrange(fig, panels, *, width: float = FIGURE_WIDTH, strip: float = 0.0, gap: float = GAP,
+            fenced: bool = False) -> float:
     """Lay panels out in rows at their printed size (:func:`layout`), size the figure to them, and place their
     labels.
 
@@ -117,6 +118,9 @@ def arrange(fig, panels, *, width: float = FIGURE_WIDTH, strip: float = 0.0, gap
         The figure's width [mm]; a row holds the panels that fit it, each row centred.
     strip : float
         Height [mm] left free under the rows (for :func:`scale_strip`).
+    fenced : bool
+        A label with no clean spot in its panel may stand in the figure's free space beside it, off the other
+        panels, their titles and the strip (:attr:`graphkin.draw.labels.Labeler.fence`), as a polygon's may.
 
     Returns
     -------
@@ -132,10 +136,23 @@ def arrange(fig, panels, *, width: float = FIGURE_WIDTH, strip: float = 0.0, gap
     fig.set_size_inches(width / 25.4, height / 25.4)
     for (ax, _), (x, y), (w, h, _, _) in zip(panels, corners, sizes):
         ax.set_position([x / width, y / height, w / width, h / height])
+    renderer = measuring_renderer(fig)
+    taken = [tuple(text_extent(ax.title, renderer).extents) for ax, _ in panels if ax.title.get_text().strip()]
     for ax, _ in panels:
         lab = getattr(ax, "_graphkin_labeler", None)
+        if lab is not None and fenced:
+            # The other panels and the strip, in this panel's data units.
+            back = ax.transData.inverted().transform
+            px = fig.dpi / 25.4
+            boxes = [other.get_position().transformed(fig.transFigure).extents for other, _ in panels
+                     if other is not ax] + [np.array([0.0, 0.0, width * px, strip * px])]
+            lab.fence = [tuple(back(np.reshape(b, (2, 2))).ravel()) for b in boxes]
+            lab.taken = [b for b in taken if tuple(b) != tuple(text_extent(ax.title, renderer).extents)]
+            lab.room = tuple(back(ax.bbox.extents.reshape(2, 2)).ravel())
         if lab is not None:
             lab.place()
+            if fenced:
+                taken += lab.placed  # the panels placed after keep off its labels
             drawn = getattr(ax, "_graphkin_drawn", None)
             if drawn is not None:
                 drawn += lab.leaders
@@ -164,30 +181,50 @@ def scale_strip(fig, height: float, *, length_scale=None, force_scale=None, widt
         setup_axes(ax)
         ax.set_xlim(0, width)
         ax.set_ylim(0, height)
-    out = []
-    x = 4.0
     y = 0.5 + (STRIP - 1.0) / 2
-    for k, X, unit in ((length_scale, None, "mm"), (None, force_scale, "N"), (None, velocity_scale, "m/s"),
-                       (None, acceleration_scale, "m/s²")):
-        if k is None and X is None:
-            continue
+    scales = [(k, X, unit) for k, X, unit in ((length_scale, None, "mm"), (None, force_scale, "N"),
+                                              (None, velocity_scale, "m/s"), (None, acceleration_scale, "m/s²"))
+              if k is not None or X is not None]
+    # Each bar about 30 mm long; where the bars and their readings do not fit the width so, shorter bars.
+    for reach in (30.0, 20.0):
+        out, fits = _bars(ax, scales, reach, y, s, paper, width)
+        if fits:
+            return out
+        for artist in out:
+            artist.remove()
+    return _bars(ax, scales, 12.0, y, s, paper, width)[0]
+
+
+STRIP_GAP = 5.0
+"""The least room [mm] between a bar's reading and the next bar's "0" in a strip of scale bars."""
+
+
+def _bars(ax, scales, reach: float, y: float, s, paper, width: float) -> tuple[list, bool]:
+    """The bars of :func:`scale_strip`, each about ``reach`` [mm] long, from the left, 12 mm apart, the last moved
+    left (down to :data:`STRIP_GAP` from the one before) where its reading would run past the figure's edge.
+    Returns the artists and whether every reading ends within the figure."""
+    out, x, least, fits = [], 4.0, 4.0, True
+    for k, X, unit in scales:
         if k is not None:
-            value = nice_round(30.0 * k)
+            value = nice_round(reach * k)
             length, note = value / k, f"scale {length_text(k)}"
         else:
-            value = nice_round(30.0 * X)
+            value = nice_round(reach * X)
             length, note = value / X, force_text(X) if unit == "N" else f"1 mm = {num(X, 4)} {unit}"
         bar = scale_bar(ax, (x, y), length, value, s=s, unit_text=unit, tick=1.0, note=note, transform=paper)
         over = _right(bar[-1]) - (width - 1.0)
         if over > 0:
-            # Its reading would run past the figure's edge (and the page's margin): the bar moves left to fit.
+            # Its reading would run past the figure's edge (and the page's margin): the bar moves left to fit, but
+            # not onto the reading before it.
+            fits = over <= x - least
             for artist in bar:
                 artist.remove()
-            bar = scale_bar(ax, (x - over, y), length, value, s=s, unit_text=unit, tick=1.0, note=note,
+            bar = scale_bar(ax, (max(x - over, least), y), length, value, s=s, unit_text=unit, tick=1.0, note=note,
                             transform=paper)
         out += bar
         x = _right(bar[-1]) + 12.0
-    return out
+        least = _right(bar[-1]) + STRIP_GAP + 3.0  # the next bar's "0" stands 3 mm left of its start
+    return out, fits
 
 
 def _right(text) -> float:
@@ -243,7 +280,7 @@ def draw_free_bodies(construction, links=None, *, length_scale: float, force_sca
         if link in enlarged:
             _own_length_bar(ax, drawn, k, s)
         panels.append((ax, 1.0 / k))
-    height = arrange(fig, panels, width=width, strip=STRIP)
+    height = arrange(fig, panels, width=width, strip=STRIP, fenced=True)
     scale_strip(fig, height, length_scale=length_scale, force_scale=force_scale, width=width, **style)
     return fig
 
@@ -310,22 +347,26 @@ def _lay_out_on(ax, extents, titles, s, *, width: float, strip: float) -> tuple[
     return height, panels
 
 
-def _place_on(ax, drawings, width: float, height: float):
+def _place_on(ax, drawings, width: float, height: float, reserved=None):
     """Place the labels of panels drawn on one axes (:func:`_lay_out_on`), once they are all drawn.
 
     ``drawings`` holds each panel's Drawn, its box and its title. Each panel's labels keep to its box, off every
-    title and off the labels placed before them (a label may leave its panel when there is no room in it).
+    title and off the labels placed before them (a label may leave its panel when there is no room in it), and off
+    the box ``reserved`` holds for the panel, if any (a column kept for its table, :func:`draw_motion_paper`).
     """
+    reserved = reserved or [None] * len(drawings)
     # Each drawing merged its limits into the view: the figure's own are the view.
     ax.set_xlim(0.0, width)
     ax.set_ylim(0.0, height)
     renderer = measuring_renderer(ax.get_figure(root=True))
     taken = [tuple(text_extent(title, renderer).extents) for _, _, title in drawings]
-    for drawn, room, _ in drawings:
+    for (drawn, room, _), column in zip(drawings, reserved):
         lab = drawn.labeler
         lab.room = room
         # The other panels and the scale strip under them: a label may use the figure's free space, not theirs.
         lab.fence = [r for _, r, _ in drawings if r is not room] + [(0.0, 0.0, width, STRIP)]
+        if column is not None:
+            lab.fence.append(column)
         lab.taken = list(taken)
         lab.place()
         drawn += lab.leaders
@@ -486,29 +527,74 @@ def draw_motion_paper(construction, *, velocity_scale: float, acceleration_scale
     -------
     Figure
         One axes, its data units millimetres of paper: two polygons (one before the acceleration polygon is
-        begun), each drawn from its own origin, and a strip of scale bars.
+        begun), each drawn from its own origin, and a strip of scale bars. A polygon whose table of short vectors
+        finds no clean spot beside it is drawn again with a column of its own for the table, to its right.
     """
-    s = _style.resolve(**style)
-    fig = _new_figure(width)
-    ax = _one_axes(fig)
     shown = ["velocity", "acceleration"]
     if upto is not None and construction.steps[upto].polygon == "velocity":
         shown = ["velocity"]
     scales = {"velocity": velocity_scale, "acceleration": acceleration_scale}
+    columns: dict = {}
+    for _ in range(3):
+        fig, tables = _motion_figure(construction, shown, scales, columns, upto=upto, values=values, titles=titles,
+                                     width=width, **style)
+        # A table that found no clean spot beside its polygon, or outgrew the column kept for it: a column beside
+        # the polygon as large as the table, kept free of the other labels, and the figure drawn again.
+        grown = {polygon: size for polygon, (size, crowded) in tables.items()
+                 if crowded and size != columns.get(polygon)}
+        if not grown:
+            break
+        columns.update(grown)
+    return fig
+
+
+def _motion_figure(construction, shown, scales, columns, *, upto, values, titles, width, **style):
+    """The figure of :func:`draw_motion_paper`, each polygon of ``columns`` with a column (width, height [mm]) to
+    its right for its table of short vectors.
+
+    Returns the figure and, by polygon, its table's size as drawn (width, height [mm]) and whether it is crowded:
+    placed by the Labeler where it covers something, or larger than its column.
+    """
+    s = _style.resolve(**style)
+    fig = _new_figure(width)
+    ax = _one_axes(fig)
     pad = 9.0  # the margin each polygon keeps for its labels, as draw_motion_polygon keeps it on paper [mm]
     extents = []
     for polygon in shown:
         lo, hi = motion_extent(construction, polygon, scales[polygon])
-        extents.append((lo - pad, hi + pad))
+        lo, hi = lo - pad, hi + pad
+        if polygon in columns:
+            w, h = columns[polygon]
+            hi = hi + (2.0 + w, 0.0)  # 2 mm between the polygon's margin and its table's column
+            lo = np.minimum(lo, hi - (0.0, h))
+        extents.append((lo, hi))
     names = [titles[n] if titles is not None else f"{polygon.capitalize()} polygon" for n, polygon in enumerate(shown)]
     height, panels = _lay_out_on(ax, extents, names, s, width=width, strip=STRIP)
-    drawings = []
+    drawings, reserved = [], []
     for polygon, (origin, room, title) in zip(shown, panels):
+        column, at = None, None
+        if polygon in columns:
+            w, _ = columns[polygon]
+            column = (room[2] - w, room[1], room[2], room[3])
+            at = (column[0], column[3])
         drawn = draw_motion_polygon(construction, polygon, scale=scales[polygon], ax=ax, values=values, title=False,
-                                    upto=upto, paper=1.0, bar=False, place=False, origin=origin, **style)
+                                    upto=upto, paper=1.0, bar=False, place=False, origin=origin, table_at=at,
+                                    **style)
         drawings.append((drawn, room, title))
-    _place_on(ax, drawings, width, height)
-    scale_strip(fig, height, velocity_scale=velocity_scale,
-                acceleration_scale=acceleration_scale if "acceleration" in shown else None, width=width, ax=ax,
+        reserved.append(column)
+    _place_on(ax, drawings, width, height, reserved)
+    scale_strip(fig, height, velocity_scale=scales["velocity"],
+                acceleration_scale=scales["acceleration"] if "acceleration" in shown else None, width=width, ax=ax,
                 **style)
-    return fig
+    renderer = measuring_renderer(fig)
+    tables = {}
+    for polygon, (drawn, _, _), column in zip(shown, drawings, reserved):
+        table = next((a for a in drawn if (getattr(a, "get_gid", lambda: None)() or "").startswith("table:")), None)
+        if table is None or not table.get_text().strip():
+            continue
+        bb = text_extent(table, renderer)
+        size = (round(bb.width / fig.dpi * 25.4 + 0.5, 1), round(bb.height / fig.dpi * 25.4 + 0.5, 1))
+        crowded = (drawn.labeler.prices.get(table, 0.0) >= ASTRAY_COST if column is None
+                   else size[0] > columns[polygon][0] or size[1] > columns[polygon][1])
+        tables[polygon] = (size, crowded)
+    return fig, tables

@@ -40,12 +40,13 @@ pytestmark = pytest.mark.slow
 KINDS = ("velocity:", "acceleration:", "polygon:")
 
 
-def arrows(ax):
-    """(gid, shapely geometry [display px]) of every polygon arrow drawn on ``ax``: its path as drawn."""
+def arrows(ax, kinds=KINDS):
+    """(gid, shapely geometry [display px]) of every polygon arrow drawn on ``ax`` (or every arrow whose gid starts
+    with one of ``kinds``): its path as drawn."""
     out = []
     for p in ax.patches:
         gid = p.get_gid() or ""
-        if isinstance(p, FancyArrowPatch) and p.get_visible() and gid.startswith(KINDS):
+        if isinstance(p, FancyArrowPatch) and p.get_visible() and gid.startswith(kinds):
             pieces = [shapely.LineString(line) for line in _lines_of(p.get_path(), p.get_transform())]
             out.append((gid, shapely.union_all(pieces)))
     return out
@@ -84,9 +85,10 @@ def leaders(ax):
     return out
 
 
-def astray(fig, tol=TOL):
-    """Every label of a polygon's arrow that is nearer another arrow than its own (by more than ``tol`` px), or
-    that names no arrow drawn: list of (label, the arrow it is nearer, its distance to its own, to that one).
+def astray(fig, tol=TOL, kinds=KINDS):
+    """Every label of a polygon's arrow (or of an arrow whose gid starts with one of ``kinds``) that is nearer
+    another arrow than its own (by more than ``tol`` px), or that names no arrow drawn: list of (label, the arrow
+    it is nearer, its distance to its own, to that one).
 
     A label joined to its arrow by a leader line is as near its own arrow as the leader's far end, which must lie
     on that arrow (a leader's path over other arrows and texts is :func:`tests.draw.test_overlaps.overlaps`'s).
@@ -95,9 +97,11 @@ def astray(fig, tol=TOL):
     renderer = fig.canvas.get_renderer()
     found = []
     for ax in fig.axes:
-        drawn = arrows(ax)
+        drawn = arrows(ax, kinds)
         tied = leaders(ax)
         for gid, text, box in labels(ax, renderer):
+            if not gid.startswith(kinds):
+                continue
             own = [(k, g) for k, (other, g) in enumerate(drawn) if other == gid]
             if not own:
                 found.append((text, "no arrow " + gid, np.nan, np.nan))
@@ -175,15 +179,7 @@ def _figures(name):
             yield _where(problem, q), "solution", fig
 
 
-CROWDED = {
-    "shaper_six_bar": "GRAPHKIN BUG (issue 36, item 3): at figures/' 45° the acceleration polygon holds eleven vectors "
-                      "in 40 mm; the table of those that find no spot beside their arrow has no room left in the "
-                      "figure and runs into the scale strip: the figure needs room for it (draw/paper.py's layout)",
-}
-
-
-@pytest.mark.parametrize("name", [pytest.param(n, marks=pytest.mark.xfail(strict=True, reason=CROWDED[n]))
-                                  if n in CROWDED else n for n in catalog.names()])
+@pytest.mark.parametrize("name", catalog.names())
 def test_each_label_of_a_polygon_is_by_its_own_vector(name):
     bad = [(where, what, *m) for where, what, fig in _figures(name) for m in misplaced(fig)]
     assert not bad, "\n".join(map(str, bad))

@@ -10,7 +10,6 @@ at its offset h, or moments about a pin), which the sheet says. The drawing itse
 from __future__ import annotations
 
 import math
-import warnings
 
 import numpy as np
 import pytest
@@ -19,6 +18,7 @@ from graphkin import catalog, exercises
 from graphkin.graphical.paper import MECHANISM_ROOM, mechanism_size, sheet_reach, sheet_scales
 from graphkin.graphical.reach import reach
 from graphkin.handout.document import Subject, subject
+from tests.handout.worked import exercise_constructions
 
 STUDENTS = [f"s{n:02d}" for n in range(12)]
 
@@ -40,17 +40,6 @@ def _constructions(name: str):
         c = s.construction(i)
         if c is not None and c.valid:
             yield f"{name} at {s.where(i)}", c
-
-
-def _exercise_constructions(name: str):
-    for student in STUDENTS:
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore")
-            s = subject(name, student=student, secret="fit")
-        for i in s.worked():
-            c = s.construction(i)
-            if c is not None and c.valid:
-                yield f"{name} for {student}", c
 
 
 def _unfit(label: str, c) -> list[str]:
@@ -83,7 +72,7 @@ def test_every_point_of_a_problem_s_construction_lies_on_its_drawing(name):
 
 @pytest.mark.parametrize("name", exercises.names())
 def test_every_point_of_an_exercise_s_construction_lies_on_its_drawing(name):
-    bad = [line for label, c in _exercise_constructions(name) for line in _unfit(label, c)]
+    bad = [line for label, c in exercise_constructions(name, STUDENTS, "fit") for line in _unfit(label, c)]
     assert not bad, "\n".join(bad)
 
 
