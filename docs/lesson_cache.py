@@ -105,6 +105,8 @@ def prepare(app) -> None:
     from offline import explored_problems
     from sphinx.util import logging
 
+    from graphkin import catalog
+
     logger = logging.getLogger(__name__)
     if app.config.nb_execution_mode != "cache":  # e.g. -D nb_execution_mode=off: the lessons are not run at all
         return
@@ -131,7 +133,8 @@ def prepare(app) -> None:
     # grading platforms' first.
     known = all(p.name in times for p in todo)
     todo.sort(key=lambda p: -times[p.name] if known else -_code_length(p))
-    wanted = set().union(*(explored_problems(p) for p in lessons))
+    # The lessons' explorers and the catalog page's: every catalog problem's scene page.
+    wanted = set().union(*(explored_problems(p) for p in lessons)) | set(catalog.names())
     missing = sorted(n for n in wanted if not (scenes / f"{n}.html").exists())
     if not todo and not missing:
         return

@@ -88,3 +88,15 @@ def test_each_explorer_of_the_lessons_is_a_scene_page(pages, site):
         for problem in found:
             page = pages[site / SCENES / f"{problem}.html"]
             assert 'id="graphkin-scene"' in page and "export default" in page, (name, problem)
+
+
+def test_each_catalog_problem_s_section_shows_its_explorer(pages, site):
+    """The catalog page: every problem graphkin ships has its scene page in a frame, and the page is in the site."""
+    from graphkin import catalog
+
+    text = pages[site / "docs" / "catalog.html"]
+    framed = re.findall(rf'<iframe src="\.\./{SCENES}/([a-z0-9_]+)\.html"', text)
+    assert sorted(framed) == sorted(catalog.names())
+    for name in framed:
+        page = pages[site / SCENES / f"{name}.html"]
+        assert 'id="graphkin-scene"' in page and "export default" in page, name
