@@ -10,6 +10,7 @@ from graphkin import catalog
 from graphkin.scene import scene, write_page
 from graphkin.units.systems import unit_system
 from tests.e2e.test_scene_page import READ_BACK, _open, _scene_of, _svg, _xy, check_drawn
+from tests.scene.test_bodies_motion import couple_value
 
 READ_MORE = """() => {
   const num = (node, k) => Number(node.getAttribute(k));
@@ -40,17 +41,6 @@ READ_MORE = """() => {
   }
   return out;
 }"""
-
-
-def couple_value(s: dict, t: dict, i: int):
-    """A free body's couple at position i [N·m]: its array's value; the inertia torque only where the scene's
-    resultant has no line (the printed free body's rule, graphkin.draw.fbd.loads_on)."""
-    if t["of"] == "effort":
-        return s["effort"]["analytical"][i]
-    if t["of"] == "load":
-        return s["loads"][t["index"]]["torque"][i]
-    inn = s["inertia"][t["index"]]
-    return inn["torque"][i] if _xy(inn["line_point"], i) is None else None
 
 
 def check_couples(got: dict, s: dict, b: dict, link: dict, i: int, tol: float):

@@ -56,9 +56,10 @@ def _cross(r, F) -> float:
     return float(r[0] * F[1] - r[1] * F[0])
 
 
-def _torque(s: dict, t: dict, i: int):
-    """A free body's couple at position i as the page draws it: its array's value, the inertia torque only where the
-    resultant has no line."""
+def couple_value(s: dict, t: dict, i: int):
+    """A free body's couple at position i [N·m] as the page draws it: its array's value; the inertia torque only where
+    the scene's resultant has no line (the printed free body's rule, graphkin.draw.fbd.loads_on). The browser's
+    read-back (tests/e2e/test_scene_bodies.py) uses it too."""
     if t["of"] == "effort":
         return s["effort"]["analytical"][i]
     if t["of"] == "load":
@@ -93,7 +94,7 @@ def test_each_free_body_balances_in_moments_with_its_couples(name):
                 inn = s["inertia"][b["inertia"]]
                 if _xy(inn["line_point"], i) is not None:
                     M += _cross(_xy(inn["line_point"], i), _xy(inn["force"], i))
-            M += sum(v for v in (_torque(s, t, i) for t in b["torques"]) if v is not None)
+            M += sum(v for v in (couple_value(s, t, i) for t in b["torques"]) if v is not None)
             np.testing.assert_allclose(M, 0, atol=1e-6 * top * s["size"], err_msg=f"link {b['link']} at {i}")
             checked += 1
     assert checked
