@@ -24,6 +24,15 @@ def run(capsys, *args):
     return code, out, err
 
 
+def refused(capsys, tmp_path, table: str, named: str, words: str) -> None:
+    """``graphkin study`` on a file with ``table`` stops with exit 2 and one line on stderr that begins with the
+    file and ``named`` and says ``words``."""
+    path = write(tmp_path, table)
+    code, out, err = run(capsys, "study", path, "--n", "36")
+    assert code == 2 and out == "" and err.count("\n") == 1
+    assert err.startswith(f"graphkin: error: {path}: {named}") and words in err
+
+
 @pytest.mark.parametrize(("table", "field", "words"), [
     ('vary = { "links[1].mass" = "1..2 kg" }', "study.vary.links[1].mass", "FROM..TO UNIT:N"),
     ('vary = { "links[1].mass" = "1..2 kg:0" }', "study.vary.links[1].mass", "N = 0"),
@@ -57,10 +66,7 @@ def test_a_bad_entry_is_one_line_naming_it(capsys, tmp_path, table, field, words
     ('vary = { "links[1].mas" = "1..2 kg:2" }', "study.vary.links[1].mas", "unknown field"),
 ])
 def test_a_value_the_problem_rejects_is_named_by_the_entry(capsys, tmp_path, table, field, words):
-    path = write(tmp_path, table)
-    code, out, err = run(capsys, "study", path, "--n", "36")
-    assert code == 2 and out == "" and err.count("\n") == 1
-    assert err.startswith(f"graphkin: error: {path}: {field}: ") and words in err
+    refused(capsys, tmp_path, table, f"{field}: ", words)
 
 
 @pytest.mark.parametrize(("table", "field", "words"), [
@@ -70,7 +76,4 @@ def test_a_value_the_problem_rejects_is_named_by_the_entry(capsys, tmp_path, tab
     ('vary = { "links[1].mass" = "1..2 kg:2" }\noptimize = "lessen I_s"', "study.optimize", "minimise FIGURE"),
 ])
 def test_a_figure_the_study_has_not_is_named_by_the_entry(capsys, tmp_path, table, field, words):
-    path = write(tmp_path, table)
-    code, out, err = run(capsys, "study", path, "--n", "36")
-    assert code == 2 and out == "" and err.count("\n") == 1
-    assert err.startswith(f"graphkin: error: {path}: {field}") and words in err
+    refused(capsys, tmp_path, table, field, words)
