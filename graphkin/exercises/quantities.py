@@ -360,14 +360,14 @@ def within(q: Question, solved=None) -> str:
 def _drawn_within(q: Question, solved) -> str:
     """A drawn question's tolerance in words: each element within so many mm and degrees on the drawing."""
     length, angle = TIMES * LENGTH, TIMES * ANGLE
-    text = f"each element within ±{length:g} mm and ±{angle:g}° on the drawing"
+    text = f"±{length:g} mm and ±{angle:g}° for each element drawn"
     if solved is None:
         return text
     try:
         scale = solved.drawn(q)["task"]["scale"]["text"]
     except (DrawnUndefined, GraphkinError):
         return text
-    return f"{text} at its scale ({scale})"
+    return f"{text}, at the drawing's scale {scale}"
 
 
 def _drawn_text(solved, q: Question) -> str:
