@@ -49,7 +49,7 @@ from graphkin.graphical.paper import POLYGON_ROOM, length_text, motion_scales, s
 from graphkin.model import GearMesh, Prismatic
 from graphkin.notation import num
 
-__all__ = ["DRAW_KINDS", "SPACE_OF", "TIMES", "Undefined", "keyed", "right_drawing", "task_of"]
+__all__ = ["DRAW_KINDS", "SPACE_OF", "TIMES", "Undefined", "keyed", "right_drawing", "task_of", "within_words"]
 
 TIMES = 3.0
 """How many times the drawing's stated precision a drawn element may be off and still be right (see the module)."""
@@ -554,6 +554,16 @@ def keyed(solved, q) -> dict:
             "scale": {"si_per_mm": si_mm, "text": scale_text}, "view": view, "shown": shown, "snap": snap,
             "draw": draw, "check": None}
     return {"task": task, "targets": targets, "tolerance": tolerance, "words": words, "text": text, "hint": hint}
+
+
+def within_words(q, solved=None) -> str:
+    """A drawn question's tolerance as the sheet states it: ``"±1.5 mm and ±1.5° for each element drawn, at the
+    drawing's scale 1 mm = 10 mm (1:10)"`` (``solved``: the student's solved draw, for the scale)."""
+    text = f"±{TIMES * LENGTH:g} mm and ±{TIMES * ANGLE:g}° for each element drawn"
+    try:
+        return text if solved is None else f"{text}, at the drawing's scale {solved.drawn(q)['task']['scale']['text']}"
+    except (Undefined, GraphkinError):
+        return text
 
 
 def task_of(variant, question_id: str, *, practice: bool = False) -> dict:
