@@ -502,7 +502,7 @@ def _notebook(bundle) -> str:
              _cell("code", _sheet_cell(bundle), "sheet")]
     for q in bundle.exercise.questions:
         cells += [_cell("markdown", _question_text(bundle, q, names[q.id]), _grade_id("question", q.id)),
-                  _cell("code", _answer_cell(names[q.id], key[q.id]["answer"]["text"]), _grade_id("answer", q.id),
+                  _cell("code", _answer_cell(names[q.id], key[q.id]["answer"].get("drawing", key[q.id]["answer"]["text"])), _grade_id("answer", q.id),
                         solution=True),
                   _cell("code", _test_cell(bundle, q.id, names[q.id]), _grade_id("test", q.id), grade=True,
                         points=q.points)]
