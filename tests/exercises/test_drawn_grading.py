@@ -159,3 +159,30 @@ def test_the_right_drawing_is_correct_for_any_student(student):
     v = exercises.variant("draw_strip_cutter", student)
     answers = {q.id: json.dumps(right_drawing(v.drawn(q))) for q in v.exercise.questions}
     assert v.grade(answers)["score"] == len(v.exercise.questions)
+
+
+def test_every_platform_exports_a_drawn_exercise_and_gradescope_s_autograder_grades_its_drawings(tmp_path):
+    import zipfile
+
+    from graphkin.exercises import platforms
+    from graphkin.exercises.platforms import gradescope
+
+    for to in ("prairielearn", "otter", "nbgrader"):
+        assert platforms.export("draw_strip_cutter", to, tmp_path / to, secret="c", students=["a1"])
+    platforms.export("draw_strip_cutter", "gradescope", tmp_path / "gs", secret="c", students=["a1"])
+    root = tmp_path / "autograder"
+    with zipfile.ZipFile(tmp_path / "gs" / "autograder.zip") as z:
+        z.extractall(root / "source")
+    (root / "results").mkdir()
+    (root / "submission").mkdir()
+    v = exercises.variant(exercises.load("draw_strip_cutter"), "a1", "c")
+    check = task_of(v, "R3i", practice=True)["check"]
+    slip = next(t for t in check["targets"] if t["slip"] == "wrong_side")
+    answers = {"R3i": drawing_of(v, "R3i", slip["elements"]), "I3": json.dumps(right_drawing(v.drawn(
+        v.exercise.question("I3"))))}
+    (root / "submission" / "answers.json").write_text(json.dumps(answers), encoding="utf-8")
+    meta = {"users": [{"sid": "a1", "email": "", "name": "A", "id": 1}], "assignment": {"id": 1, "title": "HW"}}
+    (root / "submission_metadata.json").write_text(json.dumps(meta), encoding="utf-8")
+    results = gradescope.run(root)
+    assert results["score"] == pytest.approx(1 + v.exercise.partial["wrong_side"])
+    assert "wrong side of G" in json.dumps(results, ensure_ascii=False)
