@@ -79,7 +79,7 @@ def run(args) -> int:
     from graphkin.cycle.choice import best, figure_values, requirement
     from graphkin.cycle.flywheel import check_Cs
     from graphkin.cycle.optimum import objective_of, optimum
-    from graphkin.cycle.study import VaryError, stated, study
+    from graphkin.cycle.studies import VaryError, stated, study
     from graphkin.files import check_destination, json_text, write_text
     from graphkin.report.study import format_study, study_csv, study_data, study_in
     from graphkin.units.systems import unit_system

@@ -72,7 +72,7 @@ def draw_study(study, choice=None, *, merit: str | None = None) -> Figure:
 
     Parameters
     ----------
-    study : graphkin.cycle.study.Study
+    study : graphkin.cycle.studies.Study
         The designs (:func:`graphkin.cycle.study`).
     choice : graphkin.cycle.choice.Choice, optional
         The best design (:meth:`Study.best`), marked in black.
