@@ -31,7 +31,7 @@ import numpy as np
 from graphkin import catalog
 from graphkin.analytical.designs import numbers, solve_designs
 from graphkin.cycle import study, sweep
-from graphkin.cycle.study import BATCH, merit
+from graphkin.cycle.studies import BATCH, merit
 from graphkin.problem import build_problem
 from graphkin.problem.fields import set_field
 

@@ -104,12 +104,26 @@ class Batch:
         return "; ".join(p for p in parts if p)
 
 
-def _per_design(values: Sequence, N: int):
-    """One constant of k designs: the number itself if they all have it, else each design's value N times."""
+def _per_design(values, N: int):
+    """One constant of k designs: the number itself if they all have it, else each design's value N times.
+
+    ``values`` is a list of numbers or an array (a column of :func:`solve_designs`'s designs; a list of one number
+    is every design's); the number shared is a Python number either way, as a design alone has it.
+    """
+    if isinstance(values, np.ndarray):
+        first = values[0]
+        if (values == first).all():
+            return first.item()
+        return np.repeat(values, N)
     first = values[0]
     if all(v == first for v in values):
         return first
     return np.repeat(np.asarray(values), N)
+
+
+def _column(values) -> list:
+    """A column of numbers as Python numbers, for arithmetic done design by design as a design alone does it."""
+    return values.tolist() if isinstance(values, np.ndarray) else values
 
 
 def numbers(mech: Mechanism) -> dict:
@@ -127,15 +141,15 @@ def numbers(mech: Mechanism) -> dict:
     return out
 
 
-def _specs(mech: Mechanism, designs: Sequence[dict], points: dict, q: np.ndarray) -> dict:
+def _specs(mech: Mechanism, designs: Mapping, k: int, points: dict, q: np.ndarray) -> dict:
     """:func:`graphkin.analytical.loads.load_specs` of the batch: each number one per design-position where the
     designs differ (the same expressions as for one design, design by design). A load's window is applied here,
     to each design's positions ``q`` alike: its force or torque is an array, 0 where the load does not act (as
     :func:`graphkin.analytical.loads._external_fast` makes it), and the spec's window None."""
-    k, N = len(designs), len(q)
+    N = len(q)
 
     def each(key):
-        return _per_design([d[key] for d in designs], N)
+        return _per_design(designs[key], N)
 
     masks: dict = {}
 
@@ -148,7 +162,7 @@ def _specs(mech: Mechanism, designs: Sequence[dict], points: dict, q: np.ndarray
 
     g, specs = mech.gravity, {}
     for link in mech.moving:
-        W = [-1j * d["mass", link] * g if g and d["mass", link] else 0j for d in designs]
+        W = [-1j * m * g if g and m else 0j for m in _column(designs["mass", link])]
         # The loads on the link in the order load_specs takes them (every design has the same loads).
         loads = [(i, load) for i, load in enumerate(mech.loads) if load.link == link]
         specs[link] = (each(("mass", link)), each(("I_G", link)), each(("G", link)), _per_design(W, N),
@@ -168,8 +182,10 @@ def solve_designs(mech: Mechanism, designs: Sequence[dict], q, q_dot, q_ddot, *,
     mech : Mechanism
         One of the designs, with a :func:`batch_key` (not None): its links, joints, loads and driver are every
         design's.
-    designs : sequence of dict
-        Each design's :func:`numbers`.
+    designs : sequence of dict, or dict of key to sequence
+        Each design's :func:`numbers`; or, by key of those numbers, each design's value (a list or an array, a
+        column of the designs' numbers: a study builds them so, without a dict per design; a list of one number
+        where every design has it).
     q : ndarray, shape (N,)
         Input positions [rad or m], every design's.
     q_dot, q_ddot : sequence of float, length k
@@ -194,11 +210,14 @@ def solve_designs(mech: Mechanism, designs: Sequence[dict], q, q_dot, q_ddot, *,
     >>> b.effort.shape, bool(b.valid.all())
     ((2, 2), True)
     """
-    k, N = len(designs), len(q)
+    k, N = len(q_dot), len(q)
+    if not isinstance(designs, Mapping):  # a dict per design: as columns, a list per number
+        designs = {key: [d[key] for d in designs] for key in designs[0]}
     base = plan_of(mech)
-    plan = plan_with(base, {key: _per_design([d[("point", *key)] for d in designs], N) for key in base.points})
-    plan.compiled["loads"] = _specs(mech, designs, plan.points, np.asarray(q, dtype=float))
-    w, al = _per_design(list(q_dot), N), _per_design(list(q_ddot), N)
+    plan = plan_with(base, {key: _per_design(designs[("point", *key)], N) for key in base.points})
+    plan.compiled["loads"] = _specs(mech, designs, k, plan.points, np.asarray(q, dtype=float))
+    w, al = _per_design(q_dot if isinstance(q_dot, np.ndarray) else list(q_dot), N), \
+        _per_design(q_ddot if isinstance(q_ddot, np.ndarray) else list(q_ddot), N)
     rates = (float(w), float(al)) if not (np.ndim(w) or np.ndim(al)) else (None, None)
     n = k * N
     qs = np.tile(np.asarray(q, dtype=float), k)

@@ -5,7 +5,8 @@ the number of positions, C_s, ``best``, ``require`` and ``optimize``). ``--best 
 UNIT"]...`` marks the design with the least FIGURE among those that meet the limits; ``--optimize "minimise
 FIGURE"`` runs scipy.optimize between the grid's values from there; ``-o FILE.toml`` writes the chosen design as a
 problem file; ``--csv FILE`` writes a row per design, ``--figure FILE`` draws the study
-(:func:`graphkin.draw.draw_study`); ``--units`` prints them in SI, US or a units file's units.
+(:func:`graphkin.draw.draw_study`, the chosen design marked); ``--units`` prints and draws them in SI, US or a
+units file's units.
 """
 
 from __future__ import annotations
@@ -47,9 +48,10 @@ def add_parser(sub) -> None:
     c.add_argument("--csv", metavar="FILE", help="write a row per design (the fields' values, each figure of merit "
                    "with its unit, where and why a design cannot be assembled) to FILE")
     c.add_argument("--figure", metavar="FILE", help="draw the study (.png, .svg or .pdf): each figure of merit against "
-                   "one varied field, a contour map over two, parallel coordinates over more")
+                   "one varied field, a contour map over two, parallel coordinates over more; the best design marked (a black "
+                   "star or line), the optimum too (a red diamond or line), the figures in the --units")
     c.add_argument("--merit", metavar="FIGURE", help="with --figure: the figure of merit a contour map or parallel "
-                   "coordinates colour by (default: --best's, else torque_peak)")
+                   "coordinates colour by (default: --best's, else --optimize's, else torque_peak)")
 
 
 def vary_values(text: str) -> tuple[str, list[str]]:
@@ -79,7 +81,7 @@ def run(args) -> int:
     from graphkin.cycle.choice import best, figure_values, requirement
     from graphkin.cycle.flywheel import check_Cs
     from graphkin.cycle.optimum import objective_of, optimum
-    from graphkin.cycle.study import VaryError, stated, study
+    from graphkin.cycle.studies import VaryError, stated, study
     from graphkin.files import check_destination, json_text, write_text
     from graphkin.report.study import format_study, study_csv, study_data, study_in
     from graphkin.units.systems import unit_system
@@ -175,7 +177,7 @@ def run(args) -> int:
         from graphkin import draw
 
         with Progress(f"drawing {Path(args.figure).name}"):
-            figure = draw.draw_study(s, choice, merit=args.merit)
+            figure = draw.draw_study(s, choice, merit=args.merit, optimum=best_one, units=units)
     if args.csv:
         write_text(args.csv, study_csv(data, units), "--csv")
         print(f"table written to {args.csv}", file=sys.stderr)

@@ -2,7 +2,7 @@
 
 A designer picks the design that costs least by one figure of merit among those that meet stated limits on
 others: the least peak torque with a transmission angle of at least 40° (Norton, *Design of Machinery*, §4.10 and
-ch. 11). :func:`best` does that over a :class:`~graphkin.cycle.study.Study`; the limits are read as data
+ch. 11). :func:`best` does that over a :class:`~graphkin.cycle.studies.Study`; the limits are read as data
 (``"transmission_angle_min >= 40 deg"``: a figure's name, a comparison and a value with its unit), never run as
 code. A design that cannot be assembled over its cycle is never chosen, nor one whose figure is not defined.
 """
@@ -34,7 +34,7 @@ _NUMBER = re.compile(r"\s*(?P<x>[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(?P
 
 def figures(study) -> dict[str, str]:
     """The figures of merit of a study's designs, by name, and the dimension of each (a key of
-    :data:`graphkin.units.dimensions.DIMENSIONS`): the six of :class:`~graphkin.cycle.study.Design` and the peak
+    :data:`graphkin.units.dimensions.DIMENSIONS`): the six of :class:`~graphkin.cycle.studies.Design` and the peak
     force at each joint, ``"F12_peak"``, ...; a slider driver's effort is a force.
     """
     effort = "torque" if study.crank else "force"

@@ -26,7 +26,7 @@ from graphkin.model import Prismatic, Revolute
 from graphkin.model.names import force_name
 from graphkin.notation import position_text
 
-__all__ = ["Design", "failed", "merit", "unbuilt"]
+__all__ = ["Design", "Shared", "batch_merits", "failed", "merit", "unbuilt"]
 
 @dataclass(frozen=True)
 class Design:
@@ -134,8 +134,11 @@ def merit(cycle: Cycle, values: tuple, Cs: float) -> Design:
     )
 
 
-def _means(q: np.ndarray, f: np.ndarray) -> np.ndarray:
-    """:meth:`Cycle.mean` of each row of ``f`` (designs, positions), by the same rule."""
+def _means(q: np.ndarray, f: np.ndarray, w: np.ndarray | None = None) -> np.ndarray:
+    """:meth:`Cycle.mean` of each row of ``f`` (designs, positions), by the same rule (``w``: the periodic
+    trapezoid weights of ``q``, if worked out already)."""
+    if w is not None:
+        return np.sum(w * f, axis=1) / TURN
     gap = closing_step(q)
     if gap is not None:
         return np.sum(weights(q, gap) * f, axis=1) / TURN
@@ -191,7 +194,7 @@ def _shaking(b: Batch, mech, pins) -> tuple[np.ndarray, np.ndarray]:
     return S - F, M + zcross(b.points[joint.slider, joint.point], -F)
 
 
-def _energy_swings(theta: np.ndarray, T: np.ndarray) -> np.ndarray:
+def _energy_swings(theta: np.ndarray, T: np.ndarray, h: np.ndarray | None = None) -> np.ndarray:
     """The energy swing E [J] of :func:`graphkin.cycle.flywheel.size_flywheel` for each row of ``T`` (designs, one
     closed turn ``theta``), driven at its mean, by the same steps row by row; rows with nan give nan.
 
@@ -200,10 +203,12 @@ def _energy_swings(theta: np.ndarray, T: np.ndarray) -> np.ndarray:
     of their largest and U's end less the smaller of their smallest and U's end (0 without a crossing). The first
     crossing is the first by index, or the last interval's where it lies past the turn's end (it is then one turn
     back, first of all). Rows with a crossing past the turn's end elsewhere (a turn whose last angle repeats the
-    first), or angles that decrease, take :func:`_energy_swings_sorted`.
+    first), or angles that decrease, take :func:`_energy_swings_sorted`. ``h``: the turn's steps
+    (:func:`graphkin.cycle.turn.steps`), if worked out already.
     """
     k, n = T.shape
-    h = steps(theta, closing_step(theta))
+    if h is None:
+        h = steps(theta, closing_step(theta))
     T_avg = np.sum(0.5 * (T + np.roll(T, -1, axis=1)) * h, axis=1) / TURN
     D = T - T_avg[:, None]
     D_next = np.roll(D, -1, axis=1)
@@ -211,24 +216,35 @@ def _energy_swings(theta: np.ndarray, T: np.ndarray) -> np.ndarray:
     step *= 0.5 * h
     U = np.cumsum(step, axis=1)  # U[:, i] the energy at sample i + 1; at sample 0 it is 0
     U_end = U[:, -1].copy()
-    cross = (D >= 0) != (D_next >= 0)
-    frac = D / (D - D_next)
-    at = theta + frac * h
+    up = D >= 0
+    cross = up != np.roll(up, -1, axis=1)  # (D_next >= 0) is up rolled
+    # The crossings only (a few a design), by design and then by index: the same arithmetic at each.
+    r, c = np.nonzero(cross)
+    d, d_next, hc = D[r, c], D_next[r, c], h[c]
+    frac = d / (d - d_next)
+    at = theta[c] + frac * hc
     wrap = at >= theta[0] + TURN * (1 - 1e-12)
-    wrap &= cross
     # The energy at each crossing: U at the interval's start plus the trapezoid up to it.
-    V = D * frac
-    V *= 0.5 * h
-    V[:, 1:] += U[:, :-1]
-    V[:, -1] = np.where(wrap[:, -1], V[:, -1] - U_end, V[:, -1])
-    rows = np.arange(k)
-    first = np.where(wrap[:, -1], n - 1, np.argmax(cross, axis=1))
-    V0 = V[rows, first]
-    top = np.max(np.where(cross, V, -np.inf), axis=1) - V0
-    low = np.min(np.where(cross, V, np.inf), axis=1) - V0
-    E = np.maximum(np.maximum(top, U_end), 0.0) - np.minimum(np.minimum(low, U_end), 0.0)
-    E[~cross.any(axis=1)] = 0.0
-    odd = wrap[:, :-1].any(axis=1) | (not np.all(np.diff(theta) > 0))
+    V = d * frac
+    V *= 0.5 * hc
+    inner = c > 0
+    V[inner] += U[r[inner], c[inner] - 1]
+    past = wrap & (c == n - 1)  # the last interval's crossing past the turn's end: one turn back
+    V[past] -= U_end[r[past]]
+    E = np.zeros(k)
+    if len(r):
+        starts = np.flatnonzero(np.concatenate(([True], r[1:] != r[:-1])))  # each design's first crossing
+        ends = np.append(starts[1:], len(r)) - 1  # and its last (the last interval's, if it has one)
+        V0 = V[np.where(past[ends], ends, starts)]
+        top = np.maximum.reduceat(V, starts) - V0
+        low = np.minimum.reduceat(V, starts) - V0
+        mine = r[starts]
+        end = U_end[mine]
+        E[mine] = np.maximum(np.maximum(top, end), 0.0) - np.minimum(np.minimum(low, end), 0.0)
+    odd = np.zeros(k, bool)
+    odd[r[wrap & (c < n - 1)]] = True
+    if not np.all(np.diff(theta) > 0):
+        odd[:] = True
     if odd.any():
         E[odd] = _energy_swings_sorted(theta, T[odd])
     return np.where(np.isfinite(T).all(axis=1), E, np.nan)
@@ -266,23 +282,69 @@ def _energy_swings_sorted(theta: np.ndarray, T: np.ndarray) -> np.ndarray:
     return np.where(np.isfinite(T).all(axis=1), E, np.nan)
 
 
-def batch_merits(shape, members: list, q: np.ndarray, Cs: float) -> dict:
+class Shared:
+    """What every batch of a study's designs of one shape and positions shares for its figures of merit: worked
+    out for the first batch (:func:`batch_merits`) and kept for the others.
+
+    Parameters
+    ----------
+    shape : Problem
+        One of the designs (their links, joints, loads, analysis).
+    q : ndarray
+        Their positions [rad or m].
+    Cs : float
+        Coefficient of speed fluctuation for the flywheels.
+    """
+
+    def __init__(self, shape, q: np.ndarray, Cs: float):
+        mech = shape.mechanism
+        self.shape, self.q, self.Cs = shape, q, Cs
+        self.four = _four_bar(mech)
+        self.points = [at for _, _, at in _frame_pins(mech, [j.links for j in mech.joints])] + list(self.four or ())
+        gap = closing_step(q)
+        self.closed = gap is not None
+        self.h = steps(q, gap) if self.closed else None
+        self.w = weights(q, gap) if self.closed else None
+        self.pins = self.names = None  # from the first batch's forces, in their order
+        self.whys: dict = {}  # each speed's words for a flywheel its designs cannot have, and Cs ω²
+
+    def why(self, w: float, valid: np.ndarray) -> tuple:
+        """The words of a design's own cycle for a flywheel it cannot have, and Cs ω² (None with words): for a valid
+        design of a crank they follow from its speed (and, at rest, whether its analysis is static, which a batch
+        shares)."""
+        if w not in self.whys:
+            q_dot = np.full(len(self.q), w)
+            why = Cycle.why_no_flywheel(SimpleNamespace(problem=self.shape, closed=self.closed, valid=valid,
+                                                        q_dot=q_dot))
+            self.whys[w] = why, None if why else self.Cs * float(np.mean(q_dot)) ** 2
+        return self.whys[w]
+
+
+def batch_merits(shape, members, q: np.ndarray, Cs: float, shared: Shared | None = None) -> dict:
     """The figures of merit of designs that share a batch (:func:`merit`'s, each design's to rounding), by index.
 
-    ``shape`` is one of the designs' problems (their links, joints, loads, analysis); ``members`` are
-    ``(index, values, numbers, q_dot, q_ddot)``.
+    ``shape`` is one of the designs' problems (their links, joints, loads, analysis); ``members`` is either a list
+    of ``(index, values, numbers, q_dot, q_ddot)``, one per design, or those as five columns
+    ``(indices, values, numbers, q_dot, q_ddot)``, the numbers a dict of columns
+    (:func:`graphkin.analytical.designs.solve_designs`). ``shared``: what the study's batches share
+    (:class:`Shared`), if it has been worked out.
     """
+    if isinstance(members, list):
+        indices, values, numbers, q_dot, q_ddot = ([m[k] for m in members] for k in range(5))
+    else:
+        indices, values, numbers, q_dot, q_ddot = members
+    shared = Shared(shape, q, Cs) if shared is None else shared
     mech = shape.mechanism
-    four = _four_bar(mech)
-    b = solve_designs(mech, [m[2] for m in members], q, [m[3] for m in members], [m[4] for m in members],
-                      static=shape.static,
-                      points=[at for _, _, at in _frame_pins(mech, [j.links for j in mech.joints])] + list(four or ()))
-    pins = _frame_pins(mech, b.forces)  # in the order a Cycle sums them
-    names = [force_name(mech, i, j) for (i, j) in b.forces]
-    T, N = b.effort, len(q)
+    four = shared.four
+    b = solve_designs(mech, numbers, q, q_dot, q_ddot, static=shape.static, points=shared.points)
+    if shared.pins is None:
+        shared.pins = _frame_pins(mech, b.forces)  # in the order a Cycle sums them
+        shared.names = [force_name(mech, i, j) for (i, j) in b.forces]
+    pins, names = shared.pins, shared.names
+    T = b.effort
     with np.errstate(all="ignore"):  # a design that fails carries nan; its figures are not read
         # Reductions over each design's positions.
-        peak, square = np.max(np.abs(T), axis=1), _means(q, T * T)
+        peak, square = np.max(np.abs(T), axis=1), _means(q, T * T, shared.w)
         joints = [_peak_size(F) for F in b.forces.values()]
         S, M = _shaking(b, mech, pins)
         shaking_force, shaking_moment = _peak_size(S), np.max(np.abs(M), axis=1)
@@ -296,30 +358,27 @@ def batch_merits(shape, members: list, q: np.ndarray, Cs: float) -> dict:
             rows = np.arange(len(at))
             mu = np.arctan2(size[rows, at], along[rows, at])
             mu_min = np.minimum(mu, np.pi - mu).tolist()
-        closed = closing_step(q) is not None
-        swing = _energy_swings(q, T).tolist() if closed else None  # T not crossing its mean: 0/0, x/0, not read
-    ok = b.valid.all(axis=1).tolist()
+        # T not crossing its mean: 0/0, x/0, not read
+        swing = _energy_swings(q, T, shared.h).tolist() if shared.closed else None
+    valid = b.valid.all(axis=1)
+    ok = valid.tolist()
     peak, square, shaking_force, shaking_moment = (x.tolist() for x in (peak, square, shaking_force, shaking_moment))
     joints = [x.tolist() for x in joints]
-    out, whys = {}, {}
-    for d, (index, vals, _, w, _) in enumerate(members):
+    w_all = q_dot.tolist() if isinstance(q_dot, np.ndarray) else list(q_dot)
+    out = {}
+    nan = math.nan
+    for d, (index, vals, w) in enumerate(zip(indices, values, w_all)):
         if not ok[d]:
             bad = np.flatnonzero(~b.valid[d])
             out[index] = failed(vals, names, len(bad), q, int(bad[0]), mech.driver.crank, b.reason(d, int(bad[0])))
             continue
-        # The design's own cycle's words for a flywheel it cannot have: for a valid design of a crank they follow
-        # from its speed (and, at rest, whether its analysis is static, which a batch shares).
-        if w not in whys:
-            q_dot = np.full(N, w)
-            why = Cycle.why_no_flywheel(SimpleNamespace(problem=shape, closed=closed, valid=b.valid[d], q_dot=q_dot))
-            whys[w] = why, None if why else Cs * float(np.mean(q_dot)) ** 2
-        why, per = whys[w]
+        why, per = shared.why(w, b.valid[d])
         out[index] = Design(
             values=vals, torque_peak=peak[d], torque_rms=math.sqrt(square[d]),
             joint_peaks={name: x[d] for name, x in zip(names, joints)},
-            I_s=math.nan if why else swing[d] / per,
+            I_s=nan if why else swing[d] / per,
             shaking_force_peak=shaking_force[d], shaking_moment_peak=shaking_moment[d],
-            transmission_angle_min=mu_min[d] if four is not None else math.nan, no_flywheel=why)
+            transmission_angle_min=mu_min[d] if four is not None else nan, no_flywheel=why)
     return out
 
 

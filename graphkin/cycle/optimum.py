@@ -5,7 +5,7 @@ least peak torque, say, with a transmission angle of at least 40° (Norton, *Des
 ch. 11). :func:`optimum` finds it with ``scipy.optimize.minimize`` (SLSQP: bounds and inequality limits), each
 varied field bounded by its grid's smallest and largest value and scaled to [0, 1], starting from the grid's best
 design under the same limits. Each evaluation solves, as one batch over designs and positions
-(:func:`graphkin.cycle.study.solve_grid`), the design and its neighbours a small step along each field: the
+(:func:`graphkin.cycle.studies.solve_grid`), the design and its neighbours a small step along each field: the
 objective's and the limits' values and their gradients (central differences) come from one batch. A design that
 cannot be assembled over its cycle counts as far worse than any that can (and as breaking every limit).
 

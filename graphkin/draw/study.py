@@ -8,7 +8,10 @@ draws a design's cost against one parameter; two need a map):
 * more: parallel coordinates, each design a line through its fields' values and its figures, coloured by one
   figure of merit.
 
-The chosen design (:func:`graphkin.cycle.choice.best`) is a black star, or a black line, in each.
+The chosen design of the grid (:func:`graphkin.cycle.choice.best`) is a black star, or a black line, in each; the
+optimum between the grid's values (:func:`graphkin.cycle.optimum.optimum`) a red diamond, or a red line. The
+figures of merit are drawn in the units asked for (:class:`graphkin.units.systems.UnitSystem`, ``--units``; SI
+by default, μ in degrees), the fields' values in the unit the study writes them in, as its table and CSV show them.
 
 >>> from graphkin.cycle import study
 >>> from graphkin.draw.study import draw_study
@@ -18,6 +21,7 @@ The chosen design (:func:`graphkin.cycle.choice.best`) is a black star, or a bla
 
 from __future__ import annotations
 
+import dataclasses
 import math
 
 import numpy as np
@@ -25,24 +29,24 @@ from matplotlib.figure import Figure
 
 from graphkin.cycle.choice import field_axis, figure_values, figures
 from graphkin.errors import GraphkinError
+from graphkin.units.systems import SI, UnitSystem
 
-__all__ = ["draw_study"]
-
-_UNITS = {"torque": "N·m", "force": "N", "moment_of_inertia": "kg·m²", "angle": "°"}
+__all__ = ["OPTIMUM", "draw_study"]
 
 _NAMES = {"torque_peak": "peak driving effort", "torque_rms": "RMS driving effort", "I_s": "flywheel I_s",
           "shaking_force_peak": "peak shaking force", "shaking_moment_peak": "peak shaking moment",
           "transmission_angle_min": "least transmission angle μ"}
 
+OPTIMUM = "tab:red"
+"""The colour of the optimum between the grid's values (a diamond, or a line), the grid's chosen design black."""
 
-def _shown(study, name: str) -> tuple[np.ndarray, str]:
-    """A figure of merit of every design as drawn (μ in degrees, the rest SI) and its axis label."""
-    x = figure_values(study, name, "merit")
+
+def _shown(study, name: str, units: UnitSystem = SI, designs=None) -> tuple[np.ndarray, str]:
+    """A figure of merit of every design (or of ``designs``) as drawn, in ``units``, and its axis label."""
+    x = figure_values(study if designs is None else dataclasses.replace(study, designs=tuple(designs)), name, "merit")
     dim = figures(study)[name]
-    if dim == "angle":
-        x = np.degrees(x)
     words = _NAMES.get(name, f"peak |{name.removesuffix('_peak')}|")
-    return x, f"{words} [{_UNITS[dim]}]"
+    return units.show(x, dim), f"{words} [{units.symbol(dim)}]"
 
 
 def _axis(study, k: int) -> tuple[np.ndarray, str, list | None]:
@@ -62,23 +66,36 @@ def _design_axes(study, varied: list) -> list[np.ndarray]:
     return [m.ravel() for m in (mesh[k] for k in varied)]
 
 
+def _optimum_at(study, optimum, k: int) -> float:
+    """The optimum's position on field k's axis: its value in the grid's unit, or the tick of a value as written."""
+    if field_axis(study.grid[k]) is not None:
+        return float(optimum.x[k])
+    return float(list(study.grid[k]).index(optimum.values[k]))
+
+
 def _ticks(ax, which: str, labels: list | None) -> None:
     if labels is not None:
         getattr(ax, f"set_{which}ticks")(range(len(labels)), labels, rotation=30 if which == "x" else 0, fontsize=7)
 
 
-def draw_study(study, choice=None, *, merit: str | None = None) -> Figure:
+def draw_study(study, choice=None, *, merit: str | None = None, optimum=None,
+               units: UnitSystem | None = None) -> Figure:
     """Draw a study: each figure of merit against one field, a contour map over two, parallel coordinates over more.
 
     Parameters
     ----------
-    study : graphkin.cycle.study.Study
+    study : graphkin.cycle.studies.Study
         The designs (:func:`graphkin.cycle.study`).
     choice : graphkin.cycle.choice.Choice, optional
-        The best design (:meth:`Study.best`), marked in black.
+        The best design of the grid (:meth:`Study.best`), marked in black.
     merit : str, optional
         The figure of merit a contour map shows or parallel coordinates colour by (a name of
-        :func:`graphkin.cycle.choice.figures`); default the choice's, else ``"torque_peak"``.
+        :func:`graphkin.cycle.choice.figures`); default the choice's, else the optimum's, else ``"torque_peak"``.
+    optimum : graphkin.cycle.optimum.Optimum, optional
+        The optimum between the grid's values (:meth:`Study.optimum`), marked in red (:data:`OPTIMUM`).
+    units : UnitSystem, optional
+        The units of the figures of merit (``--units``); default SI (μ in degrees). The fields' values are drawn
+        in the unit the study writes them in.
 
     Returns
     -------
@@ -91,7 +108,9 @@ def draw_study(study, choice=None, *, merit: str | None = None) -> Figure:
         If ``merit`` names no figure of the study or one no design has, or no design can be assembled (there is
         nothing to draw).
     """
-    merit = merit or (choice.minimise if choice is not None else "torque_peak")
+    units = SI if units is None else units
+    merit = merit or (choice.minimise if choice is not None else
+                      optimum.objective if optimum is not None else "torque_peak")
     z = figure_values(study, merit, "merit")
     if not any(d.ok for d in study.designs):
         raise GraphkinError(f"{study.problem}: no design of the study can be assembled over its cycle; "
@@ -101,10 +120,10 @@ def draw_study(study, choice=None, *, merit: str | None = None) -> Figure:
     varied = [k for k, v in enumerate(study.grid) if len(v) > 1] or [0]
     chosen = None if choice is None else choice.index
     if len(varied) == 1:
-        return _against_one(study, varied[0], chosen)
+        return _against_one(study, varied[0], chosen, optimum, units)
     if len(varied) == 2:
-        return _contours(study, varied, merit, chosen)
-    return _parallel(study, varied, merit, chosen)
+        return _contours(study, varied, merit, chosen, optimum, units)
+    return _parallel(study, varied, merit, chosen, optimum, units)
 
 
 def _failed_note(study) -> str:
@@ -112,8 +131,9 @@ def _failed_note(study) -> str:
     return f"; {bad} of {len(study.designs)} designs cannot be assembled (not drawn)" if bad else ""
 
 
-def _against_one(study, k: int, chosen: int | None) -> Figure:
-    """Small multiples: each defined figure of merit against field k, the chosen design a star in each."""
+def _against_one(study, k: int, chosen: int | None, optimum, units: UnitSystem) -> Figure:
+    """Small multiples: each defined figure of merit against field k, the chosen design a star in each and the
+    optimum a diamond."""
     (x,) = _design_axes(study, [k])
     _, label, ticks = _axis(study, k)
     names = [n for n in figures(study) if not np.isnan(figure_values(study, n)).all()]
@@ -122,10 +142,13 @@ def _against_one(study, k: int, chosen: int | None) -> Figure:
     fig = Figure(figsize=(3.3 * ncols, 2.7 * nrows), dpi=100, layout="constrained")
     axes = fig.subplots(nrows, ncols, squeeze=False).ravel()
     for ax, name in zip(axes, names):
-        y, ylabel = _shown(study, name)
+        y, ylabel = _shown(study, name, units)
         ax.plot(x, y, ".-", color="tab:blue", lw=1.2, ms=3)
         if chosen is not None:
             ax.plot(x[chosen], y[chosen], "*", color="black", ms=11, zorder=3, clip_on=False)
+        if optimum is not None:
+            ax.plot(_optimum_at(study, optimum, k), _shown(study, name, units, [optimum.design])[0][0], "D",
+                    mfc="none", mec=OPTIMUM, mew=1.6, ms=9, zorder=4, clip_on=False)  # hollow: a star shows through
         ax.set_ylabel(ylabel, fontsize=8)
         ax.set_xlabel(label, fontsize=8)
         ax.tick_params(labelsize=7)
@@ -134,15 +157,16 @@ def _against_one(study, k: int, chosen: int | None) -> Figure:
     for ax in axes[len(names):]:
         ax.set_visible(False)
     fig.suptitle(f"{study.problem}: {len(study.designs)} designs{_failed_note(study)}"
-                 + ("" if chosen is None else "; ★ the chosen design"), fontsize=9)
+                 + ("" if chosen is None else "; ★ the chosen design")
+                 + ("" if optimum is None else f"; ◇ the optimum of {optimum.objective}"), fontsize=9)
     return fig
 
 
-def _contours(study, varied: list, merit: str, chosen: int | None) -> Figure:
+def _contours(study, varied: list, merit: str, chosen: int | None, optimum, units: UnitSystem) -> Figure:
     """A contour map of one figure of merit over two fields, the designs that cannot be assembled crossed out."""
     j, i = varied  # the later field across, the earlier up
     x, y = _design_axes(study, [i, j])
-    z, zlabel = _shown(study, merit)
+    z, zlabel = _shown(study, merit, units)
     Z = z.reshape(len(study.grid[j]), len(study.grid[i]))  # the fields not varied have one value
     X, Y = x.reshape(Z.shape), y.reshape(Z.shape)
     fig = Figure(figsize=(6.4, 5.0), dpi=100, layout="constrained")
@@ -162,7 +186,10 @@ def _contours(study, varied: list, merit: str, chosen: int | None) -> Figure:
     if chosen is not None:
         ax.plot(x[chosen], y[chosen], "*", color="black", mec="white", ms=16, clip_on=False, zorder=3,
                 label="the chosen design")
-    if bad.any() or chosen is not None:
+    if optimum is not None:
+        ax.plot(_optimum_at(study, optimum, i), _optimum_at(study, optimum, j), "D", mfc="none", mec=OPTIMUM,
+                mew=2.0, ms=11, clip_on=False, zorder=4, label=f"the optimum of {optimum.objective}")
+    if bad.any() or chosen is not None or optimum is not None:
         ax.legend(fontsize=8, loc="best")
     _, xlabel, xticks = _axis(study, i)
     _, ylabel, yticks = _axis(study, j)
@@ -174,9 +201,10 @@ def _contours(study, varied: list, merit: str, chosen: int | None) -> Figure:
     return fig
 
 
-def _parallel(study, varied: list, merit: str, chosen: int | None) -> Figure:
+def _parallel(study, varied: list, merit: str, chosen: int | None, optimum, units: UnitSystem) -> Figure:
     """Parallel coordinates: each design that assembles a line through its fields and its figures of merit, each
-    axis scaled from its least to its largest value, coloured by ``merit``; the chosen design in black."""
+    axis scaled from its least to its largest value, coloured by ``merit``; the chosen design in black, the
+    optimum in red."""
     from matplotlib import colormaps
     from matplotlib.cm import ScalarMappable
     from matplotlib.collections import LineCollection
@@ -184,12 +212,13 @@ def _parallel(study, varied: list, merit: str, chosen: int | None) -> Figure:
 
     ok = np.array([d.ok for d in study.designs])
     columns = [(c, _axis(study, k)[1]) for c, k in zip(_design_axes(study, varied), varied)]
-    columns += [_shown(study, n) for n in figures(study) if n in _NAMES and np.isfinite(figure_values(study, n)[ok]).any()]
+    shown = [n for n in figures(study) if n in _NAMES and np.isfinite(figure_values(study, n)[ok]).any()]
+    columns += [_shown(study, n, units) for n in shown]
     V = np.array([c for c, _ in columns])[:, ok]
     low, high = np.nanmin(V, axis=1), np.nanmax(V, axis=1)
     span = np.where(high > low, high - low, 1.0)
     U = (V - low[:, None]) / span[:, None]
-    colour, clabel = _shown(study, merit)
+    colour, clabel = _shown(study, merit, units)
     norm = Normalize(np.nanmin(colour[ok]), np.nanmax(colour[ok]))
     cmap = colormaps["viridis"]
     fig = Figure(figsize=(1.6 * len(columns) + 2, 4.8), dpi=100, layout="constrained")
@@ -202,6 +231,12 @@ def _parallel(study, varied: list, merit: str, chosen: int | None) -> Figure:
     if chosen is not None:
         ax.plot(at, U[:, int(np.flatnonzero(ok).tolist().index(chosen))], color="black", lw=2.4,
                 label="the chosen design")
+    if optimum is not None:  # on the grid's scales: between its values, its figures maybe beyond the grid's
+        mine = [_optimum_at(study, optimum, k) for k in varied]
+        mine += [_shown(study, n, units, [optimum.design])[0][0] for n in shown]
+        ax.plot(at, (np.array(mine) - low) / span, color=OPTIMUM, lw=2.0, ls="--", marker="D", ms=5, zorder=4,
+                label=f"the optimum of {optimum.objective}")
+    if chosen is not None or optimum is not None:
         ax.legend(fontsize=8, loc="lower right", bbox_to_anchor=(1.0, 1.06))
     for a, lo, hi in zip(at, low, high):
         ax.axvline(a, color="0.3", lw=0.8)

@@ -28,7 +28,7 @@ from types import SimpleNamespace
 import numpy as np
 
 from graphkin.cycle.choice import figure_values, figures, requirement
-from graphkin.cycle.study import study
+from graphkin.cycle.studies import study
 from graphkin.errors import GraphkinError, ProblemFileError
 from graphkin.units import to_si
 

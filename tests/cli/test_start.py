@@ -59,3 +59,20 @@ def test_every_page_the_help_points_to_is_a_page_of_the_guide():
     assert pages >= {"json", "problem-files"}, pages
     missing = sorted(p for p in pages if not (REPO / "docs" / f"{p}.md").exists())
     assert not missing, f"--help points to pages the site does not have: {missing}"
+
+
+def test_solve_imports_no_design_study():
+    # Issue 35: `graphkin solve` reads a cycle's peaks (graphkin.cycle.sweep) but never a design study, its
+    # figures of merit or optimum; graphkin.cycle loads those when first named.
+    r = _python("import sys\n"
+                "from graphkin.cli import main\n"
+                "code = main(['solve', 'gearset'])\n"
+                "study = sorted(m for m in sys.modules if m.startswith('graphkin.cycle.') and m.split('.')[2] in "
+                "('studies', 'merit', 'optimum'))\n"
+                "print(code, 'graphkin.cycle.sweep' in sys.modules, study)")
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.splitlines()[-1] == "0 True []"
+    r = _python("import graphkin.cycle.sweep, graphkin.cycle as c\n"
+                "from graphkin.cycle import study, Study\n"
+                "print(callable(c.sweep) and not isinstance(c.sweep, type(c)), study.__module__, Study.__name__)")
+    assert r.stdout.split() == ["True", "graphkin.cycle.studies", "Study"], r.stderr

@@ -1,4 +1,4 @@
-"""Design studies (graphkin.cycle.study): every design's figures of merit equal a single sweep of that design.
+"""Design studies (graphkin.cycle.studies): every design's figures of merit equal a single sweep of that design.
 
 Each design is rebuilt here on its own, the problem file's data with the values put in by ``set_field`` and read by
 ``build_problem``, swept by ``graphkin.cycle.sweep``, and its figures of merit read off that Cycle; the study's
@@ -20,7 +20,7 @@ from hypothesis import strategies as st
 
 from graphkin import catalog
 from graphkin.cycle import study, sweep
-from graphkin.cycle.study import VaryError
+from graphkin.cycle.studies import VaryError
 from graphkin.errors import GraphkinError
 from graphkin.problem import build_problem
 from graphkin.problem.fields import set_field

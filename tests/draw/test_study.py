@@ -2,9 +2,11 @@
 
 One varied field: a panel per defined figure of merit, its line the figure against the field; two: a contour map
 with the designs that cannot be assembled crossed out; more: parallel coordinates, a line per design that
-assembles. The chosen design (Study.best) is the black star or line in each.
+assembles. The chosen design (Study.best) is the black star or line in each, the optimum (Study.optimum) the red
+diamond or dashed line; the figures of merit are drawn in the units asked for (--units).
 """
 
+import dataclasses
 import subprocess
 import sys
 
@@ -114,3 +116,90 @@ def test_a_point_field_is_an_axis_of_its_values_as_written():
     ax = draw_study(s, s.best("torque_peak")).axes[0]
     assert [t.get_text() for t in ax.get_yticklabels()] == ["(40 mm, 0 mm)", "(60 mm, 0 mm)"]
     assert ax.get_ylabel() == "links[0].points.A"
+
+
+def diamonds(ax):
+    return [line for line in ax.lines if line.get_marker() == "D"]
+
+
+@pytest.fixture(scope="module")
+def optimised(two):
+    """The least peak torque between the grid's values with μ ≥ 30°: scipy moves the coupler's mass off the grid."""
+    return two.optimum("torque_peak", ["transmission_angle_min >= 30 deg"])
+
+
+def test_the_optimum_is_marked_where_it_is_on_a_map_and_in_parallel_coordinates(two, optimised):
+    ax = draw_study(two, two.best("torque_peak", ["transmission_angle_min >= 30 deg"]), optimum=optimised).axes[0]
+    (mark,) = diamonds(ax)
+    assert (mark.get_xdata()[0], mark.get_ydata()[0]) == (optimised.x[1], optimised.x[0])  # mass across, crank up
+    assert mark.get_label() == "the optimum of torque_peak" and "the optimum of torque_peak" in [
+        t.get_text() for t in ax.get_legend().get_texts()]
+    three = study("strip_cutter", {"links[0].points.A[0]": ["60 mm", "90 mm"], "links[1].mass": ["1 kg", "4 kg"],
+                                   "links[2].mass": ["2 kg", "5 kg"]}, n=36)
+    best = three.optimum("torque_peak", ["transmission_angle_min >= 30 deg"], maxiter=5)
+    ax = draw_study(three, optimum=best).axes[0]
+    (line,) = [line for line in ax.lines if line.get_linestyle() == "--"]
+    # each axis from its least to its largest value over the designs that assemble (all of them here)
+    names = [n for n in figures(three) if n in ("torque_peak", "torque_rms", "I_s", "shaking_force_peak",
+                                                 "shaking_moment_peak", "transmission_angle_min")]
+    grid = np.array([[float(v.split()[0]) for v in d.values] for d in three.designs]).T
+    merits = [figure_values(three, n) for n in names]
+    mine = [figure_values(dataclasses.replace(three, designs=(best.design,)), n)[0] for n in names]
+    columns = list(grid) + [np.degrees(x) if n == "transmission_angle_min" else x for n, x in zip(names, merits)]
+    ends = [np.degrees(x) if n == "transmission_angle_min" else x for n, x in zip(names, mine)]
+    at = list(best.x) + ends
+    expected = [(a - c.min()) / (c.max() - c.min() if c.max() > c.min() else 1.0) for a, c in zip(at, columns)]
+    np.testing.assert_allclose(line.get_ydata(), expected, rtol=1e-12, atol=1e-12)
+
+
+def test_the_optimum_is_marked_on_each_figure_against_one_field(one):
+    best = one.optimum("torque_peak", ["transmission_angle_min >= 30 deg"], maxiter=5)
+    fig = draw_study(one, one.best("torque_peak", ["transmission_angle_min >= 30 deg"]), optimum=best)
+    panels = [ax for ax in fig.axes if ax.get_visible()]
+    names = [n for n in figures(one) if not np.isnan(figure_values(one, n)).all()]
+    for ax, name in zip(panels, names):
+        y = figure_values(dataclasses.replace(one, designs=(best.design,)), name)[0]
+        (mark,) = diamonds(ax)
+        assert mark.get_xdata()[0] == best.x[0]
+        assert mark.get_ydata()[0] == (np.degrees(y) if name == "transmission_angle_min" else y)
+    assert "the optimum of torque_peak" in fig.get_suptitle()
+
+
+def test_the_figures_are_drawn_in_the_units_asked_for(one, two):
+    from graphkin.units.systems import SI, unit_system
+
+    US = unit_system("US")
+
+    choice = one.best("torque_peak")
+    si, us = draw_study(one, choice), draw_study(one, choice, units=US)
+    assert [ax.get_ylabel() for ax in draw_study(one, choice, units=SI).axes] == [ax.get_ylabel() for ax in si.axes]
+    for a, b in zip(si.axes, us.axes):
+        if not a.get_visible():
+            continue
+        kind = {"N·m": "torque", "N": "force", "kg·m²": "moment_of_inertia", "°": "angle"}[
+            a.get_ylabel().rsplit("[", 1)[1].rstrip("]")]
+        assert b.get_ylabel().endswith(f"[{US.symbol(kind)}]")
+        assert b.get_xlabel() == a.get_xlabel() == "links[0].points.A[0] [mm]"  # the field as the study writes it
+        for la, lb in zip(a.lines, b.lines):
+            np.testing.assert_allclose(lb.get_ydata(), np.asarray(la.get_ydata()) * US.scales[kind] /
+                                       SI.scales[kind], rtol=1e-12)
+    assert any(ax.get_ylabel() == "peak driving effort [lbf·ft]" for ax in us.axes)
+    cbar = draw_study(two, two.best("torque_rms"), merit="shaking_force_peak", units=US).axes[1]
+    assert cbar.get_ylabel() == "peak shaking force [lbf]"
+
+
+def test_the_command_draws_the_optimum_in_its_units(monkeypatch, tmp_path, capsys):
+    from graphkin import draw
+    from graphkin.cli import main
+
+    drawn = []
+    monkeypatch.setattr(draw, "save", lambda fig, path: drawn.append(fig))
+    code = main(["study", "strip_cutter", "--vary", "links[1].mass=1..4 kg:4", "--n", "36", "--best",
+                 "torque_peak", "--optimize", "minimise torque_peak", "--units", "US", "--figure",
+                 str(tmp_path / "f.png")])
+    assert code == 0
+    (fig,) = drawn
+    first = fig.axes[0]
+    assert first.get_ylabel() == "peak driving effort [lbf·ft]"
+    assert len(stars(first)) == 1 and len(diamonds(first)) == 1
+    capsys.readouterr()

@@ -36,6 +36,7 @@ import itertools
 import math
 import tomllib
 from dataclasses import dataclass
+from operator import getitem
 from pathlib import Path
 from typing import Any, Mapping
 
@@ -46,7 +47,7 @@ from graphkin.analytical.designs import batch_key, numbers
 from graphkin.cycle._sampling import sweep_positions
 from graphkin.cycle.choice import best
 from graphkin.cycle.flywheel import check_Cs
-from graphkin.cycle.merit import Design, batch_merits, merit, unbuilt
+from graphkin.cycle.merit import Design, Shared, batch_merits, merit, unbuilt
 from graphkin.cycle.optimum import optimum as find_optimum
 from graphkin.cycle.sweep import sweep
 from graphkin.errors import GraphkinError, ProblemFileError
@@ -345,33 +346,33 @@ def solve_grid(data: dict, file: str, base, fields: tuple, grid: tuple, combos, 
     first = build_problem(data, file=file, base=base)
     positions: dict = {}
     changes = _changes(first, singles, n, positions)
+    combos = list(combos)
     designs, batches, alone = {}, {}, {}
+    if changes is not None:  # the file's numbers with each field's own put in (see _changes), a batch at a time
+        designs = _grid_batches(first, changes, grid, combos, Cs)
+        combos = ()
     for index, at in enumerate(combos):
         values = tuple(v[i] for v, i in zip(grid, at))
-        if changes is not None:  # the file's numbers with each field's own put in (see _changes)
-            own = dict(changes[0])
-            for field, i in enumerate(at):
-                own.update(changes[1][field][i])
-            shape, (key, q), member = first, changes[2], (own, *own.pop(RATES))
-        else:
-            try:
-                shape = _design_problem(data, fields, values, file, base)
-            except GraphkinError as exc:  # each value builds alone: together these do not
-                designs[index] = unbuilt(values, str(exc))
-                continue
-            key, q = _batch_key(shape, n, positions)
-            if q is None:
-                alone[index] = (values, shape, key)
-                continue
-            member = (numbers(shape.mechanism), shape.q_dot[0], shape.q_ddot[0])
-        shape, q, members = batches.setdefault(key, (shape, q, []))
-        members.append((index, values, *member))
+        try:
+            shape = _design_problem(data, fields, values, file, base)
+        except GraphkinError as exc:  # each value builds alone: together these do not
+            designs[index] = unbuilt(values, str(exc))
+            continue
+        key, q = _batch_key(shape, n, positions)
+        if q is None:
+            alone[index] = (values, shape, key)
+            continue
+        member = (index, values, numbers(shape.mechanism), shape.q_dot[0], shape.q_ddot[0])
+        if key not in batches:
+            batches[key] = (shape, q, [], Shared(shape, q, Cs))
+        shape, q, members, shared = batches[key]
+        members.append(member)
         if len(members) * len(q) >= BATCH:  # solved as soon as it is full: a study holds one batch at a time
-            designs.update(batch_merits(shape, members, q, Cs))
+            designs.update(batch_merits(shape, members, q, Cs, shared))
             members.clear()
-    for shape, q, members in batches.values():
+    for shape, q, members, shared in batches.values():
         if members:
-            designs.update(batch_merits(shape, members, q, Cs))
+            designs.update(batch_merits(shape, members, q, Cs, shared))
     for index, (values, p, _) in alone.items():
         designs[index] = merit(sweep(p, n), values, Cs)
     why = None
@@ -380,6 +381,39 @@ def solve_grid(data: dict, file: str, base, fields: tuple, grid: tuple, combos, 
         why = (f"{len(alone)} of the {len(designs)} designs were swept one after another, not in a batch over "
                f"designs: {'; '.join(reasons)}")
     return tuple(designs[i] for i in range(len(designs))), why, first.mechanism.driver.crank
+
+
+def _grid_batches(first, changes: tuple, grid: tuple, combos: list, Cs: float) -> dict:
+    """The designs ``combos`` of one batch key, the file's numbers with each field's changes put in, solved
+    BATCH design-positions at a time (as many designs as fill one, in the order of ``combos``), by index.
+
+    Each batch's numbers are columns, one per number (:func:`graphkin.analytical.designs.solve_designs`): a
+    number no field changes is the file's, for every design; one a field changes is, for each design, the value
+    that field's value gives it, picked out of the field's values by the design's index of its value.
+    """
+    own, per_field, (_, q) = changes
+    at = np.array(combos, dtype=np.intp).reshape(len(combos), len(grid))
+    changed = {x: f for f, values in enumerate(per_field) for x in values[0]}
+    table = {x: np.array([value[x] for value in per_field[f]]) for x, f in changed.items() if x != RATES}
+    rates = {f: np.array([value[RATES] for value in per_field[f]], dtype=float) for f in {changed.get(RATES)}
+             if f is not None}
+    f_rates = changed.get(RATES)
+    size = -(-BATCH // len(q))  # designs in a batch: the fewest whose positions fill one
+    shared = Shared(first, q, Cs)
+    same = {x: [v] for x, v in own.items() if x != RATES and x not in table}  # a column of one: every design's
+    designs = {}
+    for s in range(0, len(combos), size):
+        rows = at[s:s + size]
+        k = len(rows)
+        columns = same | {x: column[rows[:, changed[x]]] for x, column in table.items()}
+        if f_rates is None:
+            w, al = [own[RATES][0]] * k, [own[RATES][1]] * k
+        else:
+            picked = rates[f_rates][rows[:, f_rates]]
+            w, al = picked[:, 0], picked[:, 1]
+        values = [tuple(map(getitem, grid, row)) for row in combos[s:s + size]]
+        designs.update(batch_merits(first, (range(s, s + k), values, columns, w, al), q, Cs, shared))
+    return designs
 
 
 def _single(data: dict, field: str, value, file: str, base):
