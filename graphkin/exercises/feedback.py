@@ -115,6 +115,9 @@ SLIP_WORDS = {
     "other_data": "another student's data", "no_normal": "the normal components left out",
     "coriolis_reversed": "the Coriolis component reversed", "image_misplaced": "G's image misplaced",
     "unconstrained": "the limits left out", "best_for_limit": "the design best for the limit",
+    "through_G": "the resultant drawn through G", "scale_factor": "a length laid off ×10 or ÷10",
+    "wrong_member": "the wrong member taken as two-force", "wrong_order": "the polygon closed in the other order",
+    "sense_reversed": "a vector's sense reversed", "normal_outward": "a normal component drawn away from the centre",
 }
 
 DIMENSION_WORDS = {"force": "a force", "torque": "a torque", "length": "a length", "angle": "an angle",

@@ -214,7 +214,8 @@ def build(bundle) -> dict:
         raise GraphkinError("gradescope: a course secret needs --roster: the autograder grades with the roster's "
                             "precomputed keys, so that the zip never carries the secret")
     sample = bundle.sample_key()
-    answers = {q["id"]: q["answer"]["text"] for q in sample["questions"]}
+    # A drawn question's right answer is its drawing (JSON text), not the words the key prints.
+    answers = {q["id"]: q["answer"].get("drawing", q["answer"]["text"]) for q in sample["questions"]}
     return {
         **bundle.files,
         "autograder.zip": autograder_zip(zip_members(bundle)),
@@ -582,7 +583,8 @@ def read_answers(path: Path) -> dict:
 def _flatten(table: dict, prefix: str = "") -> dict:
     out = {}
     for key, value in table.items():
-        if isinstance(value, dict) and value:
+        # A drawn answer held as an object (``{"drawing": 1, ...}``, docs/json.md) is one answer, not a table.
+        if isinstance(value, dict) and value and "drawing" not in value:
             out.update(_flatten(value, f"{prefix}{key}."))
         else:
             out[f"{prefix}{key}"] = value

@@ -247,6 +247,7 @@ _PLACEHOLDERS = {
     "direction": "an angle, e.g. −45°",
     "scalar": "e.g. 12.3 {u}",
     "magnitude": "e.g. 12.3 {u}",
+    "drawing": "the drawing as the drawing page gives it (JSON text)",  # a drawn question (docs/json.md)
 }
 
 
