@@ -1,0 +1,108 @@
+"""Hand-written drawn tasks in docs/json.md's "Drawn answers" format, for the practice page and the drawing's browser
+tests: a line (an inertia resultant's line of action, offset h from G3), a point (a three-force member's point of
+concurrency) and two vectors (a force polygon closed tip to tail). Each carries its ``check``: the right construction
+and the slips, as the grader's targets would.
+
+The numbers are the construction's own: the right line is F3i's direction through G3 + h n (n the unit normal on the
+side that gives the torque), the concurrency point the intersection of the two known lines, the polygon's vectors
+close F3i + F43 + F23 = 0.
+"""
+
+from __future__ import annotations
+
+import math
+
+G3 = (0.15, 0.05)
+F3I = (-0.06, -0.02)  # the inertia force's arrow as drawn at G3 (m of the drawing's space)
+H = 0.03  # the offset of R3i's line from G3 [m]
+
+
+def unit(v):
+    n = math.hypot(*v)
+    return (v[0] / n, v[1] / n)
+
+
+def line_task(practice: bool = True) -> dict:
+    """Draw R3i's line of action: F3i's direction at the offset h from G3 on the side n (a 'wrong_side' slip on -n,
+    'through_G' through G3 itself)."""
+    d = unit(F3I)
+    n = (-d[1], d[0])
+    angle = math.atan2(d[1], d[0])
+    anchor = (G3[0] + H * n[0], G3[1] + H * n[1])
+    other = (G3[0] - H * n[0], G3[1] - H * n[1])
+
+    def line(p):
+        return [{"kind": "line", "name": "R3i", "through": [list(p), [p[0] + 0.1 * d[0], p[1] + 0.1 * d[1]]]}]
+
+    return {"task": 1, "question": "line3", "kind": "inertia-line", "space": "mechanism", "unit": "m",
+            "ask": "Draw the line of action of R3i, the resultant of −m3 a_G3 and −I_G3 α3",
+            "scale": {"si_per_mm": 0.002, "text": "1 mm = 2 mm"}, "view": [-0.05, -0.05, 0.35, 0.2],
+            "shown": {"segments": [{"name": "AB", "from": [0.0, 0.0], "to": [0.3, 0.1]}],
+                      "points": [{"name": "A", "at": [0.0, 0.0]}, {"name": "B", "at": [0.3, 0.1]},
+                                 {"name": "G3", "at": list(G3)}],
+                      "vectors": [{"name": "F3i", "from": list(G3), "to": [G3[0] + F3I[0], G3[1] + F3I[1]]}],
+                      "lines": []},
+            "snap": {"points": [{"name": "A", "at": [0.0, 0.0]}, {"name": "G3", "at": list(G3)},
+                                {"name": "B", "at": [0.3, 0.1]}],
+                     "angles": [{"name": "∥ F3i", "angle": angle}]},
+            "draw": [{"kind": "line", "name": "R3i"}],
+            "check": {"targets": [{"slip": None, "elements": line(anchor)},
+                                  {"slip": "wrong_side", "elements": line(other)},
+                                  {"slip": "through_G", "elements": line(G3)}],
+                      "tolerance": {"length": 0.002, "angle": math.radians(2)},
+                      "words": {"wrong_side": "The offset is on the wrong side: R3i's moment about G3 must have the "
+                                              "sense of −I_G3 α3.",
+                                "through_G": "R3i passes through G3 only when α3 = 0: offset it by h = I_G3 α3 / R3i."}}
+            if practice else None}
+
+
+P = (0.10, 0.05)  # a snap point 10 mm left and 5 mm above the concurrency point at the 1 mm = 2 mm scale
+I3 = (P[0] + 0.02, P[1] - 0.01)
+
+
+def point_task() -> dict:
+    """Place I3, where the two known lines of action meet (a slip 'at_G': at the snap point P)."""
+    return {"task": 1, "question": "point3", "kind": "concurrency", "space": "mechanism", "unit": "m",
+            "ask": "Place the point of concurrency I3 of the three forces on link 3",
+            "scale": {"si_per_mm": 0.002, "text": "1 mm = 2 mm"}, "view": [0.0, -0.05, 0.25, 0.12],
+            "shown": {"segments": [], "points": [{"name": "P", "at": list(P)}], "vectors": [],
+                      "lines": [{"name": "F23", "through": list(I3), "angle": math.radians(30)},
+                                {"name": "F43", "through": list(I3), "angle": math.radians(120)}]},
+            "snap": {"points": [{"name": "P", "at": list(P)}], "angles": []},
+            "draw": [{"kind": "point", "name": "I3"}],
+            "check": {"targets": [{"slip": None, "elements": [{"kind": "point", "name": "I3", "at": list(I3)}]},
+                                  {"slip": "at_G", "elements": [{"kind": "point", "name": "I3", "at": list(P)}]}],
+                      "tolerance": {"length": 0.002, "angle": math.radians(2)},
+                      "words": {"at_G": "I3 is where the lines of action meet, not a point of the link."}}}
+
+
+TIP = (120.0, 40.0)
+CORNER = (120.0, 0.0)
+
+
+def polygon_task() -> dict:
+    """Close the polygon F3i + F43 + F23 = 0 tip to tail from the known F3i (the slip 'reversed': both senses
+    reversed, drawn from the pole out)."""
+    def vectors(a, b, c):
+        return [{"kind": "vector", "name": "F43", "from": list(a), "to": list(b)},
+                {"kind": "vector", "name": "F23", "from": list(b), "to": list(c)}]
+
+    return {"task": 1, "question": "polygon3", "kind": "force-polygon", "space": "force", "unit": "N",
+            "ask": "Close the force polygon of link 3: F43 (vertical), then F23 (horizontal), tip to tail",
+            "scale": {"si_per_mm": 2.0, "text": "1 mm = 2 N"}, "view": [-30.0, -30.0, 170.0, 70.0],
+            "shown": {"segments": [], "points": [{"name": "o", "at": [0.0, 0.0]}],
+                      "vectors": [{"name": "F3i", "from": [0.0, 0.0], "to": list(TIP)}], "lines": []},
+            "snap": {"points": [{"name": "o", "at": [0.0, 0.0]}, {"name": "tip of F3i", "at": list(TIP)}],
+                     "angles": [{"name": "∥ F43", "angle": math.pi / 2}, {"name": "∥ F23", "angle": 0.0}]},
+            "draw": [{"kind": "vector", "name": "F43"}, {"kind": "vector", "name": "F23"}],
+            "check": {"targets": [{"slip": None, "elements": vectors(TIP, CORNER, (0.0, 0.0))},
+                                  {"slip": "reversed", "elements": vectors(CORNER, TIP, (0.0, 0.0))[:1]
+                                   + [{"kind": "vector", "name": "F23", "from": [0.0, 0.0], "to": list(CORNER)}]}],
+                      "tolerance": {"length": 2.0, "angle": math.radians(2)},
+                      "words": {"reversed": "Each force's sense is reversed: tip to tail, each starts where the "
+                                            "last one ends."}}}
+
+
+def tasks() -> list[dict]:
+    """The three tasks of the practice page's browser test."""
+    return [line_task(), point_task(), polygon_task()]
