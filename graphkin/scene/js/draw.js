@@ -164,7 +164,7 @@ export function drawTask(root, task, options = {}) {
           let d = ((dir - g.angle) % Math.PI + Math.PI) % Math.PI;
           if (d > Math.PI / 2) d -= Math.PI;
           if (Math.abs(d) <= SNAP_ANGLE) {
-            const t = r * Math.cos(d); // the projection on the snap direction through a, on the side q is
+            const t = r * Math.cos(dir - g.angle); // q projected on the snap direction through a, on its side
             return { at: [a[0] + t * Math.cos(g.angle), a[1] - t * Math.sin(g.angle)], to: g.name };
           }
         }
