@@ -106,3 +106,39 @@ def polygon_task() -> dict:
 def tasks() -> list[dict]:
     """The three tasks of the practice page's browser test."""
     return [line_task(), point_task(), polygon_task()]
+
+
+def fixture_grade(task: dict):
+    """A stand-in for the exercise's grader, for the widget's browser test: the spec's matching rule against the
+    task's targets (the verdict, the words, the fault), the right construction revealed. The real grader is
+    :func:`graphkin.exercises.grading.grade_question`."""
+    import json
+
+    check = task["check"]
+    tol = check["tolerance"]
+
+    def near(e, t):
+        if e["kind"] != t["kind"]:
+            return False
+        if e["kind"] == "point":
+            return math.dist(e["at"], t["at"]) <= tol["length"]
+        if e["kind"] == "vector":
+            return math.dist(e["from"], t["from"]) <= tol["length"] and math.dist(e["to"], t["to"]) <= tol["length"]
+        (a, b), (p, q) = e["through"], t["through"]
+        gap = abs(math.atan2(b[1] - a[1], b[0] - a[0]) - math.atan2(q[1] - p[1], q[0] - p[0])) % math.pi
+        off = abs((b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0])) / math.dist(a, b)
+        return min(gap, math.pi - gap) <= tol["angle"] and off <= tol["length"]
+
+    def grade(text: str) -> dict:
+        elements = json.loads(text)["elements"] if text else []
+        right = check["targets"][0]["elements"]
+        for t in check["targets"]:
+            if len(elements) == len(t["elements"]) and all(map(near, elements, t["elements"])):
+                slip = t["slip"]
+                return {"verdict": "slip" if slip else "correct", "slip": slip, "score": 0.5 if slip else 1,
+                        "max": 1, "feedback": check["words"].get(slip, "Right."), "fault": [], "right": right}
+        fault = [k for k, e in enumerate(elements) if k >= len(right) or not near(e, right[k])]
+        return {"verdict": "wrong", "slip": None, "score": 0, "max": 1, "feedback": "Not the construction.",
+                "fault": fault, "right": right}
+
+    return grade

@@ -186,8 +186,12 @@ export function drawTask(root, task, options = {}) {
     if (options.changed) options.changed(d);
   }
 
+  // A coordinate handed back is rounded to a thousandth of a millimetre of drawing: far below what a hand places.
+  const decimals = Math.max(0, Math.ceil(-Math.log10(s * 1e-3)));
+  const rounded = (q) => space(q).map((v) => Number(v.toFixed(decimals)));
+
   function element(kind, name, points) {
-    const p = points.map(space);
+    const p = points.map(rounded);
     if (kind === "point") return { kind, name, at: p[0] };
     if (kind === "line") return { kind, name, through: [p[0], p[1]] };
     return { kind, name, from: p[0], to: p[1] };

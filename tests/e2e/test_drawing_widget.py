@@ -1,0 +1,113 @@
+"""The drawn answer widget in JupyterLab (issue 38): the student draws with the mouse, presses Check, the kernel
+grades and the browser shows the verdict on the drawing; the drawing is the answer output beneath the widget
+(updated from the widget's comm messages by display id), saved with the notebook, and there again after a reload.
+
+The kernel grades with a stand-in of the grader (tests/scene/drawn_fixtures.py: the spec's matching rule) on a
+hand-written task, so that this test draws what the browser does and the notebook keeps.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import re
+import time
+
+import pytest
+
+from tests.e2e.conftest import ROOT
+from tests.e2e.test_browser import SHUT_DOWN, _no_widget_errors, _wait_ran
+from tests.e2e.test_scene_widget import _notebook
+from tests.scene.drawn_fixtures import G3, H, line_task
+
+NAME = "drawing_widget.ipynb"
+CELL = (f"import sys\nsys.path.insert(0, {str(ROOT)!r})\n"
+        "from tests.scene.drawn_fixtures import line_task, fixture_grade\n"
+        "from graphkin.widgets.drawing import DrawingBox\n"
+        "box = DrawingBox(line_task(practice=False), fixture_grade(line_task()))\nbox")
+VIEW = "document.querySelector('.gk-draw').parentElement.parentElement.graphkin"
+MIME = "application/vnd.graphkin.drawing+json"
+TEXT = ".jp-RenderedText[data-mime-type='text/plain']"  # the answer output (the widget shows its line too)
+
+
+def _open(page, url):
+    page.goto(url, wait_until="domcontentloaded")
+    page.wait_for_selector(".jp-Notebook .jp-Cell", timeout=60_000)
+    page.get_by_text(re.compile(r"\| Idle$")).first.wait_for(timeout=60_000)
+
+
+def test_the_widget_draws_checks_and_keeps_the_drawing_through_save_and_reload(browser, jupyterlab, workdir, out):
+    (workdir / NAME).write_text(_notebook([CELL]), encoding="utf-8")
+    context = browser.new_context(viewport={"width": 1400, "height": 1000}, device_scale_factor=1)
+    page = context.new_page()
+    logs = []
+    page.on("console", lambda m: logs.append(f"{m.type}: {m.text}"))
+    try:
+        _open(page, f"{jupyterlab}/lab/tree/{NAME}?reset")
+        time.sleep(1.0)  # the kernel's connection settles after its first idle
+        page.locator(".jp-Notebook .jp-Cell").first.click()
+        page.keyboard.press("Escape")
+        page.keyboard.press("Shift+Enter")
+        _wait_ran(page, 1)
+        try:
+            page.wait_for_selector(".gk-draw svg.gk-draw-svg", timeout=60_000)
+        except Exception:
+            page.screenshot(path=str(out / "FAILED-lab-drawing-widget.png"))
+            pytest.fail(f"no drawing; the output: {page.locator('.jp-OutputArea').first.inner_text()[:500]!r}; "
+                        f"the console: {logs[-10:]}")
+        _no_widget_errors(page)
+        # The right line: through the target's anchor, along F3i (the second click snaps to its direction).
+        (target,) = line_task()["check"]["targets"][0]["elements"]
+        a, b = target["through"]
+        page.locator(".gk-draw svg").scroll_into_view_if_needed()
+        for p in (a, b):
+            page.mouse.click(*page.evaluate(f"(p) => {VIEW}.toScreen(p)", p))
+        # The answer output under the widget follows the drawing, from the widget's comm message.
+        answer = page.locator(TEXT, has_text='"kind":"line"')
+        answer.wait_for(timeout=30_000)
+        line = answer.inner_text().strip()
+        drawn = json.loads(line.split(" = ", 1)[1].strip("'"))
+        (e,) = drawn["elements"]
+        assert e["kind"] == "line" and math.dist(e["through"][0], a) < 1e-3
+        page.locator(".gk-draw [data-do=check]").click()
+        page.wait_for_selector(".gk-verdict[data-verdict=correct]", timeout=30_000)
+        # A line through G3 is the slip the grader names; the drawn line is marked and the right one dashed.
+        page.locator(".gk-draw [data-do=clear]").click()
+        for p in (G3, (G3[0] - 0.08, G3[1] - 0.08 / 3)):
+            page.mouse.click(*page.evaluate(f"(p) => {VIEW}.toScreen(p)", list(p)))
+        page.locator(".gk-draw [data-do=check]").click()
+        page.wait_for_selector(".gk-verdict[data-verdict=slip]", timeout=30_000)
+        assert "wrong side" not in page.locator(".gk-draw-feedback").inner_text()
+        assert page.locator(".gk-draw .gk-right line").count() == 1  # the right line, dashed
+        page.locator(".gk-draw [data-do=undo]").click()  # back to one point of the line...
+        page.mouse.click(*page.evaluate(f"(p) => {VIEW}.toScreen(p)", [a[0] + 2 * H, a[1] - H]))  # ...and off
+        page.wait_for_function(f"() => {VIEW}.drawing().elements.length === 1")
+        kept = page.evaluate(f"() => {VIEW}.drawing()")
+        page.wait_for_function("(t) => [...document.querySelectorAll(\"" + TEXT + "\")].some("
+                               "e => e.innerText.includes(t))", arg=json.dumps(kept["elements"][0]["through"][1])[:12],
+                               timeout=30_000)
+        # Saved: the notebook on disk holds the drawing in the answer output.
+        page.locator(".jp-Notebook").first.click(position={"x": 5, "y": 5})
+        page.keyboard.press("Control+s")
+        saved = None
+        for _ in range(50):
+            nb = json.loads((workdir / NAME).read_text(encoding="utf-8"))
+            outputs = [o for o in nb["cells"][0]["outputs"] if MIME in o.get("data", {})]
+            if outputs and outputs[0]["data"][MIME]["elements"]:
+                saved = outputs[0]["data"]
+                break
+            time.sleep(0.2)
+        assert saved is not None, "the saved notebook has no drawing"
+        assert saved[MIME]["elements"] == kept["elements"]
+        assert "".join(saved["text/plain"]).startswith("line3 = '{")  # nbformat keeps text as lines
+        # Reloaded (the kernel still runs): the widget shows the same drawing, and the output holds it.
+        page.reload(wait_until="domcontentloaded")
+        page.wait_for_selector(".gk-draw svg.gk-draw-svg", timeout=60_000)
+        assert page.evaluate(f"() => {VIEW}.drawing().elements") == kept["elements"]
+        assert page.locator(TEXT, has_text="line3 = '{").count() == 1
+        _no_widget_errors(page)
+        page.screenshot(path=str(out / "lab-drawing-widget.png"))
+        for session in json.loads(page.evaluate("() => fetch('/api/sessions').then(r => r.text())")):
+            assert page.evaluate(SHUT_DOWN, session["id"]) == 204
+    finally:
+        context.close()
