@@ -27,13 +27,15 @@ from importlib import resources
 from pathlib import Path
 
 from graphkin.errors import GraphkinError
+from graphkin.exercises.drawn_grading import grade_drawing
+from graphkin.exercises.drawn_tasks import task_of
 from graphkin.exercises.exercise import SLIPS, Exercise, Question, Vary, load_exercise, parse_exercise
 from graphkin.exercises.grading import Classmates, grade_variant
 from graphkin.exercises.roster import read_roster
 from graphkin.exercises.variants import MAX_ATTEMPTS, Variant, make_variant
 
 __all__ = ["Exercise", "Question", "Vary", "Variant", "SLIPS", "MAX_ATTEMPTS", "names", "load", "load_exercise",
-           "parse_exercise", "path", "read_roster", "variant", "make", "key", "grade", "check"]
+           "parse_exercise", "path", "read_roster", "variant", "make", "key", "grade", "check", "task_of", "grade_drawing"]
 
 _CACHE: dict = {}
 

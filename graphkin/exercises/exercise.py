@@ -18,6 +18,7 @@ from pathlib import Path
 from graphkin import catalog
 from graphkin.errors import GraphkinError, ProblemFileError
 from graphkin.exercises import designs
+from graphkin.exercises.drawn_tasks import DRAW_KINDS, SPACE_OF
 from graphkin.exercises.symbols import symbol_problem
 from graphkin.files import read_text
 from graphkin.model import Prismatic
@@ -30,6 +31,8 @@ _TOP = {"title", "source", "problem", "intro", "route", "vary", "questions", "pa
         "reveal", "max_force_ratio", "max_speed_ratio", "draw", "decimal_comma", "feedback", "design"}
 _VARY = {"field", "from", "to", "step", "values", "label"}
 _QUESTION = {"id", "ask", "find", "part", "unit", "tolerance", "floor", "points", "route"}
+# A drawn question (find = "drawing"): what is drawn, and the link or the point it is about.
+_DRAWN = {"id", "ask", "find", "draw", "link", "point", "points"}
 _FLYWHEEL = {"Cs"}
 
 #: What the feedback on a wrong answer says (the exercise file's ``feedback``): ``"parts"`` (the default) names the
@@ -53,6 +56,13 @@ SLIPS: dict[str, float] = {
     "direction": 0.25,      # a vector's size right, its direction wrong
     "dimension": 0.0,       # a unit of another quantity (J for a torque, N for N·m)
     "no_normal": 0.25, "coriolis_reversed": 0.25, "image_misplaced": 0.25,  # polygons: no ω² r, 2ωv reversed, g′ amiss
+    # Drawn questions (graphkin.exercises.drawn_tasks): the slips a drawing shows.
+    "through_G": 0.25,      # the inertia resultant drawn through G (its couple left out)
+    "scale_factor": 0.25,   # a length laid off at ×10 or ÷10
+    "wrong_member": 0.0,    # a member that is not two-force taken as one
+    "wrong_order": 0.5,     # a polygon closed with its two unknown directions in the other order
+    "sense_reversed": 0.5,  # a vector drawn with its sense reversed
+    "normal_outward": 0.25,  # a normal component ω²r drawn away from the centre
     **designs.SLIPS,  # a design: the cheapest without the limits, the best for the limit (graphkin.exercises.designs)
 }
 
@@ -150,6 +160,11 @@ class Question:
     points : float
     route : str
         ``"analytical"`` or ``"graphical"`` (measured off a drawn polygon).
+    draw : str
+        A drawn question's kind (:data:`graphkin.exercises.drawn_tasks.DRAW_KINDS`), ``""`` for the others
+        (whose ``kind`` is then ``"drawing"`` and ``part`` the same as ``draw``).
+    point : str
+        The point whose image a velocity or acceleration step finds (``"B"``), ``""`` for the others.
     """
 
     id: str
@@ -163,6 +178,14 @@ class Question:
     floor: float | None
     points: float
     route: str
+    draw: str = ""
+    point: str = ""
+
+    @property
+    def space(self) -> str:
+        """The space a drawn question is drawn in (``"mechanism"``, ``"force"``, ``"velocity"``,
+        ``"acceleration"``); ``""`` for the others."""
+        return SPACE_OF.get(self.draw, "")
 
 
 @dataclass(frozen=True)
@@ -349,13 +372,45 @@ def _sliding(mech) -> set[int]:
             for link in joint.links}
 
 
+def _drawn_question(rd: _Reader, t: dict, where: str, qid: str, moving, points: set[str]) -> Question:
+    """A drawn question: ``draw`` (what is drawn) and ``link`` or ``point`` (what it is about)."""
+    rd.table(t, where, _DRAWN)
+    draw = rd.string(t, "draw", where)
+    if draw not in DRAW_KINDS:
+        raise rd.fail(f"{where}.draw", f"must be one of {', '.join(DRAW_KINDS)}, got {draw!r}")
+    link, point = None, ""
+    if draw in ("velocity-step", "acceleration-step"):
+        if "link" in t:
+            raise rd.fail(f"{where}.link", f"a {draw} is named by the point whose image it finds: write point = \"B\"")
+        point = rd.string(t, "point", where)
+        # A point, or a point of one link where links share it (B3: the point B of link 3, as the polygons name it).
+        if point not in points and point.rstrip("0123456789") not in points:
+            raise rd.fail(f"{where}.point", f"{point!r} is no point of the mechanism (points: {', '.join(sorted(points))}; "
+                                            "B3 names B of link 3)")
+    else:
+        if "point" in t:
+            raise rd.fail(f"{where}.point", f"a {draw} is named by its link: write link = 3")
+        if "link" not in t:
+            raise rd.fail(f"{where}.link", f"is missing: the moving link the {draw} is about (moving: "
+                                           f"{', '.join(map(str, moving))})")
+        link = t["link"]
+        if isinstance(link, bool) or not isinstance(link, int) or link not in moving:
+            raise rd.fail(f"{where}.link", f"must be a moving link's number ({', '.join(map(str, moving))}), "
+                                           f"got {link!r}")
+    points_ = rd.number(t, "points", where, 1.0)
+    ask = rd.string(t, "ask", where, f"Draw the {draw.replace('-', ' ')}")
+    return Question(qid, ask, "drawing", "drawing", link, draw, "", 0.0, None, points_, "graphical", draw, point)
+
+
 def _question(rd: _Reader, t: dict, where: str, names: set[str], driver: str, route: str, moving,
-              sliding=frozenset(), design=None) -> Question:
-    rd.table(t, where, _QUESTION)
+              sliding=frozenset(), design=None, points: frozenset = frozenset()) -> Question:
     qid = rd.string(t, "id", where)
     if not re.fullmatch(r"[A-Za-z_][\w.]*", qid):
         raise rd.fail(f"{where}.id", f"must be a name of letters, digits, _ and . (it keys the answers), got {qid!r}")
     find = rd.string(t, "find", where)
+    if find == "drawing":
+        return _drawn_question(rd, t, where, qid, moving, points)
+    rd.table(t, where, _QUESTION)
     try:
         kind, link = _kind_of(find, names, driver, design)
     except KeyError:
@@ -423,6 +478,9 @@ def dimension_of(kind: str, part: str) -> str:
         return "dimensionless"
     if kind in designs.DESIGN_KINDS:
         return kind.removeprefix("design_")
+    if kind == "drawing":  # the space it is drawn in
+        return {"force-polygon": "force", "velocity-step": "velocity", "acceleration-step": "acceleration"}.get(
+            part, "length")
     return MOTION_KINDS.get(kind, "torque")
 
 
@@ -498,7 +556,10 @@ def parse_exercise(text: str, *, file: str = "<exercise>", id: str = "exercise",
     questions_raw = data.get("questions")
     if not isinstance(questions_raw, list) or not questions_raw:
         raise rd.fail("questions", "must be a non-empty list of [[questions]] tables")
-    questions = tuple(_question(rd, t, f"questions[{i}]", names, driver, route, mech.moving, _sliding(mech), design)
+    point_names = frozenset(J.point for J in mech.joints if getattr(J, "point", None)) | \
+        frozenset(n for link in mech.moving for n in mech.link(link).points)
+    questions = tuple(_question(rd, t, f"questions[{i}]", names, driver, route, mech.moving, _sliding(mech), design,
+                                point_names)
                       for i, t in enumerate(questions_raw))
     asks = any(q.kind in designs.DESIGN_KINDS for q in questions)
     if design is not None and not asks:

@@ -44,6 +44,7 @@ import numpy as np
 from graphkin.errors import GraphkinError
 from graphkin.exercises import designs
 from graphkin.exercises.answers import Reading
+from graphkin.exercises.drawn_grading import grade_drawn
 from graphkin.exercises.exercise import CYCLE_KINDS, FEEDBACK, MOTION_KINDS, dimension_of
 from graphkin.exercises.feedback import (
     _TORQUE_KINDS,
@@ -272,6 +273,8 @@ def _fits(exp: Expected, a, variant, classmates: Classmates | None) -> list[_Fit
 
 def _may(q, slip: str) -> bool:
     """Whether a re-solved slip can change this question's answer at all."""
+    if q.kind == "drawing":
+        return False  # a drawing's slips are its own targets (graphkin.exercises.drawn_tasks)
     if (slip in designs.SLIPS) != (q.kind in designs.DESIGN_KINDS):
         # A design's slips are its own, and it takes no other: a study per slip, for a design that fails the limit.
         return False
@@ -384,6 +387,8 @@ def grade_question(variant, q, answer, *, reveal: bool = False, classmates: Clas
     """
     exp = variant.expected(q)
     try:
+        if q.kind == "drawing":
+            return grade_drawn(variant, q, answer, reveal=reveal)
         return _grade(variant, q, exp, answer, reveal, classmates, copied, _mode(variant.exercise, feedback))
     except Exception:  # a bug in the grader must not void this answer's neighbours, nor show a traceback
         print(f"graphkin: grading {q.id} of {variant.student!r} failed:", file=sys.stderr)

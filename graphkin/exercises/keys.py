@@ -66,6 +66,8 @@ def student_entry(variant) -> dict:
             "words": variant.words(q),
             "within": within(q, variant.solved),
         }
+        if q.kind == "drawing":  # the task, the targets and the words: grading needs no re-solve
+            questions[q.id]["drawn"] = variant.drawn(q)
     return {"attempt": variant.attempt,
             "data": [{"symbol": g.symbol, "label": g.label, "value": g.value} for g in variant.data],
             "questions": questions}
@@ -134,6 +136,10 @@ class KeyedVariant:
 
     def words(self, q: Question) -> dict:
         return self._entry(q)["words"]
+
+    def drawn(self, q: Question) -> dict:
+        """A drawn question's task, targets, tolerance and words, as the keys carry them."""
+        return self._entry(q)["drawn"]
 
     def sheet(self) -> dict:
         """The student's sheet, as :meth:`graphkin.exercises.Variant.sheet` gives it."""

@@ -14,8 +14,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from graphkin.errors import GraphkinError
 from graphkin.exercises import designs
 from graphkin.exercises.drawn import drawing_slack
+from graphkin.exercises.drawn_tasks import TIMES
+from graphkin.exercises.drawn_tasks import Undefined as DrawnUndefined
 from graphkin.exercises.exercise import MOTION_KINDS, Question, dimension_of
 from graphkin.exercises.precision import ANGLE, LENGTH
 from graphkin.graphical.paper import (
@@ -37,7 +40,7 @@ from graphkin.units import to_si
 # SI unit of each dimension, as printed in keys.
 _SI = {"force": "N", "torque": "N*m", "length": "m", "angle": "rad", "energy": "J",
        "moment_of_inertia": "kg*m^2", "dimensionless": "", "angular_velocity": "rad/s",
-       "angular_acceleration": "rad/s^2", "acceleration": "m/s^2", "mass": "kg"}
+       "angular_acceleration": "rad/s^2", "acceleration": "m/s^2", "mass": "kg", "velocity": "m/s"}
 
 
 @dataclass(frozen=True)
@@ -110,6 +113,8 @@ def question_data(q: Question) -> dict:
 
 
 def _form(q: Question) -> str:
+    if q.kind == "drawing":
+        return "drawing"
     if q.part in ("direction", "at"):
         return "direction"
     if q.part in ("vector", "point", "magnitude"):  # a concurrency point's only part is "point"
@@ -315,6 +320,8 @@ def within(q: Question, solved=None) -> str:
     """
     if q.part == "at":
         return "the step of the sweep"
+    if q.kind == "drawing":
+        return _drawn_within(q, solved)
     if q.kind in designs.DESIGN_KINDS:
         return designs.grid_text(solved.exercise.design) if solved is not None else "one step of the grid"
     text = (f"{math.degrees(math.atan(q.tolerance)):.2g}°" if _form(q) == "direction"
@@ -348,6 +355,19 @@ def within(q: Question, solved=None) -> str:
     if what == "torque":
         return f"{text} or ±{num(error, 4, power=True)} N·m (a reading to ±{READING:g} mm on each drawing), the larger"
     return f"{text} or ±{num(error, 4, power=True)} N (±{READING:g} mm at {force_text(scales.polygon)}), the larger"
+
+
+def _drawn_within(q: Question, solved) -> str:
+    """A drawn question's tolerance in words: each element within so many mm and degrees on the drawing."""
+    length, angle = TIMES * LENGTH, TIMES * ANGLE
+    text = f"each element within ±{length:g} mm and ±{angle:g}° on the drawing"
+    if solved is None:
+        return text
+    try:
+        scale = solved.drawn(q)["task"]["scale"]["text"]
+    except (DrawnUndefined, GraphkinError):
+        return text
+    return f"{text} at its scale ({scale})"
 
 
 def _drawn_text(solved, q: Question) -> str:
@@ -533,6 +553,12 @@ def message_words(solved, q: Question, exp: Expected) -> dict:
 
 def undefined(solved, q: Question) -> str | None:
     """Why ``q`` has no answer on this solved problem (None when it has one)."""
+    if q.kind == "drawing":
+        try:
+            solved.drawn(q)
+        except DrawnUndefined as exc:
+            return str(exc)
+        return None
     value = value_of(solved, q)
     if value is not None and not (isinstance(value, float) and not math.isfinite(value)):
         return None
@@ -545,6 +571,14 @@ def expected(variant, q: Question) -> Expected:
     """The answer to ``q`` for ``variant`` (anything with ``.solved`` and ``.exercise``)."""
     solved = variant.solved
     form = _form(q)
+    if form == "drawing":
+        # The answer is a drawing: its targets are the solved draw's (:meth:`Solved.drawn`); the key states the
+        # right drawing's numbers, the slack is the drawing's length tolerance [SI of its space].
+        try:
+            d = solved.drawn(q)
+        except DrawnUndefined as exc:
+            return Expected(q, form, 0.0, 0.0, "", undefined=str(exc))
+        return Expected(q, form, 0.0, d["tolerance"]["length"], d["text"], d["hint"])
     dim = dimension_of(q.kind, q.part)
     value = value_of(solved, q)
     if value is None or (isinstance(value, float) and not math.isfinite(value)):

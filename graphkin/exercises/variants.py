@@ -25,7 +25,7 @@ import numpy as np
 
 from graphkin.cycle import sweep
 from graphkin.errors import GraphkinError
-from graphkin.exercises import designs
+from graphkin.exercises import designs, drawn_tasks
 from graphkin.exercises.exercise import CYCLE_KINDS, MOTION_KINDS, Exercise, Question
 from graphkin.exercises.grading import grade_variant
 from graphkin.exercises.quantities import _span, expected, message_words, question_data, undefined, value_of, within
@@ -119,6 +119,15 @@ class Solved:
         # A slip in reading the polygons ("no_normal", "coriolis_reversed", "image_misplaced"): the motion
         # quantities are those a student who made it reads off.
         self.slip = slip
+        self.drawings: dict = {}
+        """Each drawn question's task, targets and words (:func:`graphkin.exercises.drawn_tasks.keyed`), by question
+        id, once made."""
+
+    def drawn(self, q: Question) -> dict:
+        """A drawn question's task, targets and words on this draw (:func:`graphkin.exercises.drawn_tasks.keyed`)."""
+        if q.id not in self.drawings:
+            self.drawings[q.id] = drawn_tasks.keyed(self, q)
+        return self.drawings[q.id]
 
     @cached_property
     def result(self):
@@ -219,6 +228,10 @@ class Variant:
             self._memo["slip value", q.id, slip] = value
         return self._memo["slip value", q.id, slip]
 
+    def drawn(self, q: Question) -> dict:
+        """A drawn question's task, targets, tolerance and words (:func:`graphkin.exercises.drawn_tasks.keyed`)."""
+        return self.solved.drawn(q)
+
     def words(self, q: Question) -> dict:
         """The words of ``q``'s grading messages (:func:`graphkin.exercises.quantities.message_words`)."""
         if ("words", q.id) not in self._memo:
@@ -316,8 +329,11 @@ def _unusable(ex: Exercise, solved: Solved) -> str | None:
         return (f"the joint forces are {largest / max(loads):.0f} times the largest load: the linkage is near a dead "
                 "point")
 
-    if any(q.kind in MOTION_KINDS for q in ex.questions) and not solved.motion.valid:
+    if any(q.kind in MOTION_KINDS or q.space in ("velocity", "acceleration") for q in ex.questions) \
+            and not solved.motion.valid:
         _refuse_disagreement(ex, solved, solved.motion)
+        if any(q.space in ("velocity", "acceleration") for q in ex.questions):
+            return f"the velocity and acceleration polygons cannot be drawn: {solved.motion.reason}"
     for q in ex.questions:
         if q.kind not in CYCLE_KINDS:
             why = undefined(solved, q)

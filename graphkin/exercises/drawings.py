@@ -1,0 +1,206 @@
+"""A drawn answer read as data: the lines, points and vectors a student drew, in the space of the question.
+
+A drawing (format ``docs/json.md``, "Drawn answers") is JSON: ``{"drawing": 1, "question": ..., "space": ...,
+"unit": ..., "elements": [...]}``, each element a ``"line"`` (two distinct points it passes through), a
+``"point"`` or a ``"vector"`` (from, to), coordinates in the question's space and SI units. It comes as text (a
+notebook's answer variable, a Gradescope JSON hand-in's value) or as the dict already parsed. It is read with
+``json.loads`` only, never evaluated: only objects, lists, strings and finite numbers; at most
+:data:`MAX_ELEMENTS` elements and :data:`MAX_CHARS` characters. Anything else is :class:`Unreadable`, with one
+sentence naming the field at fault.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from dataclasses import dataclass
+
+__all__ = ["KINDS", "MAX_CHARS", "MAX_ELEMENTS", "SPACES", "VERSION", "Drawing", "Element", "Unreadable",
+           "read_drawing"]
+
+VERSION = 1
+"""The ``drawing`` field this version writes and reads."""
+
+MAX_ELEMENTS = 64
+"""The most elements a drawing may hold."""
+
+MAX_CHARS = 20_000
+"""The longest a drawing's text may be."""
+
+SPACES = {"mechanism": "m", "force": "N", "velocity": "m/s", "acceleration": "m/s^2"}
+"""Each space a question is drawn in, and its unit (SI)."""
+
+KINDS = ("line", "point", "vector")
+"""The kinds of element a student draws."""
+
+_FIELDS = {"drawing", "question", "space", "unit", "elements"}
+_ELEMENT = {"line": ("through",), "point": ("at",), "vector": ("from", "to")}
+
+
+class Unreadable(ValueError):
+    """A drawing that cannot be read; its message is one sentence naming the field."""
+
+
+@dataclass(frozen=True)
+class Element:
+    """One drawn element.
+
+    Attributes
+    ----------
+    kind : str
+        ``"line"``, ``"point"`` or ``"vector"``.
+    name : str
+        The name it is labelled by (``""`` when none).
+    points : tuple of (float, float)
+        A line's two points, a point's one, a vector's from and to [the space's unit].
+    """
+
+    kind: str
+    name: str
+    points: tuple
+
+    def data(self) -> dict:
+        """The element as the drawing's JSON writes it."""
+        p = [list(x) for x in self.points]
+        if self.kind == "line":
+            return {"kind": "line", "name": self.name, "through": p}
+        if self.kind == "point":
+            return {"kind": "point", "name": self.name, "at": p[0]}
+        return {"kind": "vector", "name": self.name, "from": p[0], "to": p[1]}
+
+
+@dataclass(frozen=True)
+class Drawing:
+    """A drawn answer read.
+
+    Attributes
+    ----------
+    question : str
+    space : str
+        A key of :data:`SPACES`.
+    unit : str
+    elements : tuple of Element
+    """
+
+    question: str
+    space: str
+    unit: str
+    elements: tuple
+
+    def data(self) -> dict:
+        """The drawing as JSON data (the format it was read from)."""
+        return {"drawing": VERSION, "question": self.question, "space": self.space, "unit": self.unit,
+                "elements": [e.data() for e in self.elements]}
+
+
+def _refuse_constant(name: str):
+    raise Unreadable(f"the drawing holds {name}, which is not a finite number")
+
+
+def _number(x, field: str) -> float:
+    if isinstance(x, bool) or not isinstance(x, (int, float)):
+        raise Unreadable(f"{field} must be a number, got {_short(x)}")
+    x = float(x)
+    if not math.isfinite(x):
+        raise Unreadable(f"{field} must be a finite number, got {x!r}")
+    return x
+
+
+def _pair(p, field: str) -> tuple[float, float]:
+    if not isinstance(p, list) or len(p) != 2:
+        raise Unreadable(f"{field} must be a point [x, y], got {_short(p)}")
+    return _number(p[0], f"{field}[0]"), _number(p[1], f"{field}[1]")
+
+
+def _short(x) -> str:
+    try:
+        text = json.dumps(x, ensure_ascii=False)
+    except (TypeError, ValueError):
+        text = type(x).__name__
+    return text if len(text) <= 40 else text[:39] + "…"
+
+
+def _element(e, i: int) -> Element:
+    where = f"elements[{i}]"
+    if not isinstance(e, dict):
+        raise Unreadable(f"{where} must be an object {{\"kind\": ..., ...}}, got {_short(e)}")
+    kind = e.get("kind")
+    if kind not in _ELEMENT:
+        raise Unreadable(f"{where}.kind must be one of {', '.join(KINDS)}, got {_short(kind)}")
+    extra = set(e) - {"kind", "name", *_ELEMENT[kind]}
+    if extra:
+        raise Unreadable(f"{where} has a field a {kind} does not: {sorted(extra)[0]!r}")
+    name = e.get("name", "")
+    if not isinstance(name, str) or len(name) > 40:
+        raise Unreadable(f"{where}.name must be a short text, got {_short(name)}")
+    for key in _ELEMENT[kind]:
+        if key not in e:
+            raise Unreadable(f"{where}.{key} is missing")
+    if kind == "line":
+        through = e["through"]
+        if not isinstance(through, list) or len(through) != 2:
+            raise Unreadable(f"{where}.through must be two points [[x1, y1], [x2, y2]], got {_short(through)}")
+        p = (_pair(through[0], f"{where}.through[0]"), _pair(through[1], f"{where}.through[1]"))
+        if p[0] == p[1]:
+            raise Unreadable(f"{where}.through: a line needs two distinct points, got the same point twice")
+        return Element(kind, name, p)
+    if kind == "point":
+        return Element(kind, name, (_pair(e["at"], f"{where}.at"),))
+    return Element(kind, name, (_pair(e["from"], f"{where}.from"), _pair(e["to"], f"{where}.to")))
+
+
+def read_drawing(source, *, question: str | None = None, space: str | None = None) -> Drawing:
+    """Read a drawing (JSON text or the dict already parsed), checked against the question it answers.
+
+    Parameters
+    ----------
+    source : str or dict
+    question : str, optional
+        The question's id: a drawing of another question is refused.
+    space : str, optional
+        The space the question is drawn in: a drawing in another space is refused.
+
+    Raises
+    ------
+    Unreadable
+        One sentence naming the field at fault.
+    """
+    if isinstance(source, str):
+        if len(source) > MAX_CHARS:
+            raise Unreadable(f"the drawing is {len(source)} characters long; at most {MAX_CHARS} are read")
+        try:
+            data = json.loads(source, parse_constant=_refuse_constant)
+        except Unreadable:
+            raise
+        except (ValueError, RecursionError):
+            raise Unreadable("the drawing is not JSON text (it should be the text the drawing page gives)") from None
+    elif isinstance(source, dict):
+        data = source
+    else:
+        raise Unreadable(f"a drawing must be JSON text or an object, got {type(source).__name__}")
+    if not isinstance(data, dict):
+        raise Unreadable("the drawing must be a JSON object {\"drawing\": 1, ...}")
+    extra = set(data) - _FIELDS
+    if extra:
+        raise Unreadable(f"the drawing has a field it should not: {sorted(map(str, extra))[0]!r}")
+    if data.get("drawing") != VERSION or isinstance(data.get("drawing"), bool):
+        raise Unreadable(f"drawing must be {VERSION} (the format's version), got {_short(data.get('drawing'))}")
+    q = data.get("question")
+    if not isinstance(q, str):
+        raise Unreadable(f"question must be the question's id, got {_short(q)}")
+    if question is not None and q != question:
+        raise Unreadable(f"question is {_short(q)}: this drawing answers another question than {question!r}")
+    sp = data.get("space")
+    if sp not in SPACES:
+        raise Unreadable(f"space must be one of {', '.join(SPACES)}, got {_short(sp)}")
+    if space is not None and sp != space:
+        raise Unreadable(f"space is {sp!r}, but this question is drawn in the {space} space")
+    unit = data.get("unit", SPACES[sp])
+    if unit != SPACES[sp]:
+        raise Unreadable(f"unit must be {SPACES[sp]!r} in the {sp} space, got {_short(unit)}")
+    elements = data.get("elements")
+    if not isinstance(elements, list):
+        raise Unreadable(f"elements must be a list, got {_short(elements)}")
+    if len(elements) > MAX_ELEMENTS:
+        raise Unreadable(f"elements holds {len(elements)} elements; at most {MAX_ELEMENTS} are read")
+    return Drawing(q, sp, unit, tuple(_element(e, i) for i, e in enumerate(elements)))
