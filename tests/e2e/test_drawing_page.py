@@ -2,9 +2,12 @@
 construction and each slip the task's targets name, and a wrong one — and the page shows the verdict, the words and
 the element at fault, saying that no grade is recorded; undo and the keyboard draw as the mouse does.
 
-The clicks go where the targets' own coordinates are on screen (the view's ``toScreen``): what the page reads back
+The page holds three hand-written tasks (tests/scene/drawn_fixtures.py) and every drawn question of the catalog's
+drawn exercises for one student (``task_of(..., practice=True)``, as ``graphkin exercise practice`` writes them). The
+clicks go where the targets' own coordinates are on screen (the view's ``toScreen``): what the page reads back
 (``drawing()``) must be those coordinates to within a pixel at the task's scale, so that the test checks the
-drawing's scale as well as the verdict.
+drawing's scale as well as the verdict; and the page's verdict on each drawing must be the grader's
+(:func:`graphkin.exercises.drawn_grading.grade_drawing`) on the same drawing.
 """
 
 from __future__ import annotations
@@ -13,21 +16,39 @@ import math
 
 import pytest
 
+from graphkin import exercises
+from graphkin.exercises.drawn_grading import grade_drawing
+from graphkin.exercises.drawn_tasks import task_of
 from graphkin.scene.practice import write_practice
 from tests.scene.drawn_fixtures import CORNER, I3, P, TIP, tasks
 
 PX_MM = 25.4 / 96  # one CSS pixel, in millimetres of drawing
+DRAWN = ("draw_strip_cutter", "draw_shaper_polygons")  # the catalog's exercises with drawn questions
+STUDENT = "s001"
+
+
+def catalog_tasks():
+    """(variant, task) of every drawn question of :data:`DRAWN` for :data:`STUDENT`."""
+    out = []
+    for name in DRAWN:
+        v = exercises.variant(exercises.load(name), STUDENT, "")
+        out += [(v, task_of(v, q.id, practice=True)) for q in v.exercise.questions if q.kind == "drawing"]
+    return out
+
+
+CATALOG = catalog_tasks()
+ALL = tasks() + [t for _, t in CATALOG]
 
 
 @pytest.fixture(scope="module")
 def page(browser, out):
-    path = write_practice(tasks(), out / "practice.html", title="Practice: link 3")
+    path = write_practice(ALL, out / "practice.html", title="Practice: drawn answers")
     context = browser.new_context(viewport={"width": 1200, "height": 1000}, device_scale_factor=1)
     pg = context.new_page()
     errors = []
     pg.on("pageerror", lambda e: errors.append(str(e)))
     pg.goto(path.as_uri())
-    pg.wait_for_function("() => window.graphkin && window.graphkin.views.length === 3")
+    pg.wait_for_function("() => window.graphkin && window.graphkin.views.length === " + str(len(ALL)))
     yield pg
     assert not errors
     context.close()
@@ -53,11 +74,54 @@ def drag(page, k, p, q):
     page.mouse.up()
 
 
+def inside(task, p, inset=3.0):
+    """Whether p lies in the task's view, ``inset`` mm of drawing in from its edges."""
+    m = inset * task["scale"]["si_per_mm"]
+    x0, y0, x1, y1 = task["view"]
+    return x0 + m < p[0] < x1 - m and y0 + m < p[1] < y1 - m
+
+
+def on_line(task, a, b):
+    """Two points of the line through a and b to click: inside the view and clear of the snap points (the anchor a
+    itself may lie outside the view: a line is matched by its direction and its distance from a); None when the line
+    misses the view."""
+    s = task["scale"]["si_per_mm"]
+    u = (b[0] - a[0]) / math.dist(a, b), (b[1] - a[1]) / math.dist(a, b)
+    reach = math.dist(task["view"][:2], task["view"][2:])
+    line = [(a[0] + t * u[0], a[1] + t * u[1]) for t in (reach * (k / 200 - 1) + 0 for k in range(401))]
+    line += [(a[0] + t * u[0], a[1] + t * u[1]) for t in
+             (math.hypot(a[0] - task["view"][0], a[1] - task["view"][1]) * (k / 200 - 1) for k in range(401))]
+    ok = [q for q in line if inside(task, q) and all(math.dist(q, p["at"]) > 3 * s for p in task["snap"]["points"])]
+    if not ok:
+        return None
+    first = ok[len(ok) // 3]
+    far = max(ok, key=lambda q: math.dist(q, first))
+    if math.dist(first, far) < 10 * s:
+        return None
+    mid = (first[0] + (far[0] - first[0]) / 2, first[1] + (far[1] - first[1]) / 2)
+    return first, min(ok, key=lambda q: math.dist(q, mid))
+
+
+def reachable(task, target):
+    """Whether every element of ``target`` can be drawn in the task's view."""
+    for e in target["elements"]:
+        if e["kind"] == "line" and on_line(task, *e["through"]) is None:
+            return False
+        if e["kind"] == "point" and not inside(task, e["at"], 0):
+            return False
+        if e["kind"] == "vector" and not (inside(task, e["from"], 0) and inside(task, e["to"], 0)):
+            return False
+    return True
+
+
 def draw(page, k, element, by_drag=False):
+    task = ALL[k]
     if element["kind"] == "point":
         click(page, k, element["at"])
     else:
         a, b = element["through"] if element["kind"] == "line" else (element["from"], element["to"])
+        if element["kind"] == "line":
+            a, b = on_line(task, a, b)
         if by_drag:
             drag(page, k, a, b)
         else:
@@ -81,29 +145,51 @@ def clear(page, k):
     assert drawn(page, k)["elements"] == []
 
 
-def test_each_target_drawn_with_the_mouse_gets_its_verdict(page, out):
-    for k, task in enumerate(tasks()):
+def test_each_target_drawn_with_the_mouse_gets_the_graders_verdict(page, out):
+    graders = [None] * len(tasks()) + [v for v, _ in CATALOG]
+    seen = 0
+    missed = []
+    for k, task in enumerate(ALL):
         s = task["scale"]["si_per_mm"]
         for n, target in enumerate(task["check"]["targets"]):
+            if not reachable(task, target):
+                missed.append(f"{task['question']} {target['slip']}")
+                continue
             for element in target["elements"]:
                 draw(page, k, element, by_drag=n % 2 == 1)
             d = drawn(page, k)
             assert d["question"] == task["question"] and d["space"] == task["space"]
+            assert len(d["elements"]) == len(target["elements"]), (task["question"], n, d, target)
             for e, t in zip(d["elements"], target["elements"], strict=True):
                 assert e["kind"] == t["kind"]
                 got = e.get("through") or ([e["at"]] if "at" in e else [e["from"], e["to"]])
                 want = t.get("through") or ([t["at"]] if "at" in t else [t["from"], t["to"]])
+                if t["kind"] == "line":  # the points the test clicked along it
+                    want = list(on_line(task, *want))
                 for p, q in zip(got, want, strict=True):  # where the mouse went, to a pixel at the task's scale
                     assert math.dist(p, q) <= 1.0 * PX_MM * s, (task["question"], n, p, q)
             verdict, text = check(page, k)
+            shown = page.evaluate("(k) => window.graphkin.views[k].check()", k)
+            # The first target the drawing matches: this one, or an earlier one it also lies within tolerance of.
+            first = next(t for t in task["check"]["targets"] if t["slip"] == shown["slip"])
+            assert task["check"]["targets"].index(first) <= n, (task["question"], n, shown)
+            if graders[k] is not None:  # the grader's verdict on the same drawing
+                graded = grade_drawing(graders[k], task["question"], d)
+                assert (graded["verdict"], graded["slip"], graded["fault"]) == (
+                    shown["verdict"], shown["slip"], shown["fault"]), (task["question"], n)
             slip = target["slip"]
-            assert verdict == ("correct" if slip is None else "slip"), (task["question"], slip, text)
-            if slip:
-                assert task["check"]["words"][slip] in text
+            if first is target:
+                assert verdict == ("correct" if slip is None else "slip"), (task["question"], slip, text)
+                words = task["check"]["words"].get(slip if slip else "right")
+                if words:
+                    assert words[1:].rstrip(".") in text
             assert "no grade is recorded" in text
-            assert page.locator("section").nth(k).locator(".gk-fault").count() == (
-                0 if slip is None else len(page.evaluate("(k) => window.graphkin.views[k].check().fault", k)))
+            assert page.locator("section").nth(k).locator(".gk-fault").count() == len(shown["fault"])
             clear(page, k)
+            seen += 1
+    print(f"\npractice page: {seen} targets of {len(ALL)} tasks drawn with the mouse, each verdict the grader's; "
+          f"not in the view, so not drawn: {', '.join(missed) or 'none'}")
+    assert seen >= len(ALL) * 2  # the right construction and at least one slip of each task, on average
     page.screenshot(path=str(out / "practice-page.png"), full_page=True)
 
 

@@ -71,7 +71,8 @@ export function drawTask(root, task, options = {}) {
   const sv = svg("svg", { class: "gk-draw-svg", width: `${W}mm`, height: `${H}mm`, viewBox: `0 0 ${W} ${H}`,
     tabindex: "0", role: "application",
     "aria-label": `Drawing area for ${task.question}: ${task.ask}. Arrow keys move the cursor (Shift: ten times ` +
-      "farther), Tab goes to the next snap point, Enter or Space places a point, Ctrl+Z undoes." }, box);
+      "farther), Tab goes to the next snap point, Enter or Space places a point (with Alt: not snapped), Ctrl+Z " +
+      "undoes." }, box);
   const defs = svg("defs", {}, sv);
   for (const [name, colour] of Object.entries(COLOURS)) {
     const m = svg("marker", { id: `gk-head-${name}-${task.question}`, viewBox: "0 0 10 10", refX: "10", refY: "5",
@@ -147,8 +148,10 @@ export function drawTask(root, task, options = {}) {
   const want = () => task.draw[elements.length] || null;
 
   // Where a point at q (mm) lands: on a snap point within SNAP_MM, else (the second point of a line or vector) on the
-  // direction from the first point nearest a snap angle within SNAP_ANGLE; with what it snapped to.
-  function snapped(q) {
+  // direction from the first point nearest a snap angle within SNAP_ANGLE; with what it snapped to. With `free` (Alt
+  // held with the mouse, Alt+Enter with the keys) where it is.
+  function snapped(q, free = false) {
+    if (free) return { at: q, to: null };
     let best = null;
     for (const p of snapPoints) {
       const d = gapOf(mm(p.at), q);
@@ -197,10 +200,10 @@ export function drawTask(root, task, options = {}) {
     return { kind, name, from: p[0], to: p[1] };
   }
 
-  function place(q) {
+  function place(q, free = false) {
     const w = want();
     if (!w) return;
-    const s1 = snapped(q);
+    const s1 = snapped(q, free);
     if (placed.length === 1 && gapOf(placed[0], s1.at) === 0) return; // a line needs two distinct points
     placed.push(s1.at);
     if (placed.length === NEEDS[w.kind]) {
@@ -279,8 +282,8 @@ export function drawTask(root, task, options = {}) {
     if (!feedback) message.replaceChildren();
   }
 
-  function showHint(q) {
-    const s1 = snapped(q);
+  function showHint(q, free = false) {
+    const s1 = snapped(q, free);
     ring.setAttribute("visibility", s1.to ? "visible" : "hidden");
     ring.setAttribute("cx", s1.at[0]);
     ring.setAttribute("cy", s1.at[1]);
@@ -350,14 +353,14 @@ export function drawTask(root, task, options = {}) {
     const q = inMM(event);
     const before = elements.length;
     const first = placed.length === 0;
-    place(q);
+    place(q, event.altKey);
     down = first && placed.length === 1 && elements.length === before ? q : null;
     cursor.setAttribute("visibility", "hidden");
   });
-  sv.addEventListener("pointermove", (event) => showHint(inMM(event)));
+  sv.addEventListener("pointermove", (event) => showHint(inMM(event), event.altKey));
   sv.addEventListener("pointerup", (event) => {
     const q = inMM(event);
-    if (down && placed.length === 1 && gapOf(down, q) > DRAG_MM) place(q);
+    if (down && placed.length === 1 && gapOf(down, q) > DRAG_MM) place(q, event.altKey);
     down = null;
   });
   sv.addEventListener("pointerleave", () => {
@@ -382,7 +385,7 @@ export function drawTask(root, task, options = {}) {
     if (moves[event.key]) {
       moveCursor([cursorAt[0] + moves[event.key][0], cursorAt[1] + moves[event.key][1]]);
     } else if (event.key === "Enter" || event.key === " ") {
-      place(cursorAt);
+      place(cursorAt, event.altKey);
       moveCursor(cursorAt);
     } else if ((event.ctrlKey || event.metaKey) && event.key.toLowerCase() === "z") {
       undo();

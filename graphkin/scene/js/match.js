@@ -34,6 +34,9 @@ export function matches(e, t, tol) {
   return false;
 }
 
+// A task's words (a phrase, as the grader's feedback puts them after "Correct: " or "Not quite: ") as a sentence.
+const sentence = (w) => (w.endsWith(".") ? w : `${w}.`).replace(/^./, (c) => c.toUpperCase());
+
 const all = (elements, target, tol) => elements.length === target.elements.length
   && elements.every((e, k) => matches(e, target.elements[k], tol));
 
@@ -45,14 +48,15 @@ export function verdict(elements, check) {
   const hit = check.targets.find((t) => all(elements, t, tol));
   const words = check.words || {};
   if (hit && hit.slip === null) {
-    return { verdict: "correct", slip: null, fault: [], feedback: words.correct || "Right: this is the construction." };
+    return { verdict: "correct", slip: null, fault: [], feedback: sentence(words.right || "this is the construction") };
   }
   if (hit) {
     return { verdict: "slip", slip: hit.slip, fault: faults(elements, check.targets[0], tol),
-      feedback: words[hit.slip] || `This is a known slip: ${hit.slip.replaceAll("_", " ")}.` };
+      feedback: sentence(words[hit.slip] || `a known slip: ${hit.slip.replaceAll("_", " ")}`) };
   }
   return { verdict: "wrong", slip: null, fault: faults(elements, check.targets[0], tol),
-    feedback: words.wrong || "This matches neither the construction nor a known slip: the marked elements are off." };
+    feedback: sentence(words.wrong
+      || "this matches neither the construction nor a known slip: the marked elements are off") };
 }
 
 function faults(elements, right, tol) {
