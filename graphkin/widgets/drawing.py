@@ -88,6 +88,7 @@ def draw_answer(exercise, question_id: str, student: str, *, secret: str = "", d
     from graphkin import exercises
     from graphkin.exercises.drawn_tasks import task_of
     from graphkin.exercises.grading import grade_question
+    from graphkin.exercises.notebooks import answer_variables
 
     if not str(student).strip():
         raise GraphkinError("draw_answer: give the student's id (the variant drawn is theirs)")
@@ -96,8 +97,11 @@ def draw_answer(exercise, question_id: str, student: str, *, secret: str = "", d
     if not qs:
         raise GraphkinError(f"draw_answer: the exercise has no question {question_id!r} "
                             f"({', '.join(q.id for q in variant.exercise.questions)})")
-    return DrawingBox(task_of(variant, question_id), lambda text: grade_question(variant, qs[0], text),
-                      drawing=drawing)
+    reveal = variant.exercise.reveal  # the right construction drawn back only where the teacher reveals answers
+    variable = answer_variables([q.id for q in variant.exercise.questions])[question_id]
+    return DrawingBox(task_of(variant, question_id),
+                      lambda text: grade_question(variant, qs[0], text, reveal=reveal), drawing=drawing,
+                      variable=variable)
 
 
 class DrawingBox:
@@ -111,6 +115,9 @@ class DrawingBox:
         The grader: given the drawing's text, the grading (a dict with at least ``verdict`` and ``feedback``).
     drawing : str or dict, optional
         A drawing to start from.
+    variable : str, optional
+        The notebook variable the answer line assigns (:func:`graphkin.exercises.notebooks.answer_variables`);
+        default the question's id.
 
     Attributes
     ----------
@@ -119,11 +126,12 @@ class DrawingBox:
         The last grading, as the grader gave it.
     """
 
-    def __init__(self, task: dict, grade, *, drawing=None):
+    def __init__(self, task: dict, grade, *, drawing=None, variable: str | None = None):
         if task.get("check"):
             raise GraphkinError("draw_answer: a graded task must not carry its targets ('check' is for practice)")
         self.task, self.grade, self.report = task, grade, None
         self.question = task["question"]
+        self.variable = variable or task["question"]
         self.widget = drawing_widget()(task=json.dumps(task))
         self._handle = None
         if drawing is not None:
@@ -139,8 +147,8 @@ class DrawingBox:
 
     @property
     def line(self) -> str:
-        """The answer line for the answer cell: ``question = '<the drawing as JSON>'``."""
-        return f"{self.question} = {self.text!r}"
+        """The answer line for the answer cell: ``variable = '<the drawing as JSON>'``."""
+        return f"{self.variable} = {self.text!r}"
 
     def _bundle(self) -> dict:
         data = {"text/plain": self.line}

@@ -20,7 +20,7 @@ from graphkin import exercises
 from graphkin.exercises.drawn_grading import grade_drawing
 from graphkin.exercises.drawn_tasks import task_of
 from graphkin.scene.practice import write_practice
-from tests.scene.drawn_fixtures import CORNER, I3, P, TIP, tasks
+from tests.scene.drawn_fixtures import CORNER, I3, TIP, P, on_line, reachable, tasks
 
 PX_MM = 25.4 / 96  # one CSS pixel, in millimetres of drawing
 DRAWN = ("draw_strip_cutter", "draw_shaper_polygons")  # the catalog's exercises with drawn questions
@@ -72,46 +72,6 @@ def drag(page, k, p, q):
     page.mouse.down()
     page.mouse.move(*b, steps=5)
     page.mouse.up()
-
-
-def inside(task, p, inset=3.0):
-    """Whether p lies in the task's view, ``inset`` mm of drawing in from its edges."""
-    m = inset * task["scale"]["si_per_mm"]
-    x0, y0, x1, y1 = task["view"]
-    return x0 + m < p[0] < x1 - m and y0 + m < p[1] < y1 - m
-
-
-def on_line(task, a, b):
-    """Two points of the line through a and b to click: inside the view and clear of the snap points (the anchor a
-    itself may lie outside the view: a line is matched by its direction and its distance from a); None when the line
-    misses the view."""
-    s = task["scale"]["si_per_mm"]
-    u = (b[0] - a[0]) / math.dist(a, b), (b[1] - a[1]) / math.dist(a, b)
-    reach = math.dist(task["view"][:2], task["view"][2:])
-    line = [(a[0] + t * u[0], a[1] + t * u[1]) for t in (reach * (k / 200 - 1) + 0 for k in range(401))]
-    line += [(a[0] + t * u[0], a[1] + t * u[1]) for t in
-             (math.hypot(a[0] - task["view"][0], a[1] - task["view"][1]) * (k / 200 - 1) for k in range(401))]
-    ok = [q for q in line if inside(task, q) and all(math.dist(q, p["at"]) > 3 * s for p in task["snap"]["points"])]
-    if not ok:
-        return None
-    first = ok[len(ok) // 3]
-    far = max(ok, key=lambda q: math.dist(q, first))
-    if math.dist(first, far) < 10 * s:
-        return None
-    mid = (first[0] + (far[0] - first[0]) / 2, first[1] + (far[1] - first[1]) / 2)
-    return first, min(ok, key=lambda q: math.dist(q, mid))
-
-
-def reachable(task, target):
-    """Whether every element of ``target`` can be drawn in the task's view."""
-    for e in target["elements"]:
-        if e["kind"] == "line" and on_line(task, *e["through"]) is None:
-            return False
-        if e["kind"] == "point" and not inside(task, e["at"], 0):
-            return False
-        if e["kind"] == "vector" and not (inside(task, e["from"], 0) and inside(task, e["to"], 0)):
-            return False
-    return True
 
 
 def draw(page, k, element, by_drag=False):

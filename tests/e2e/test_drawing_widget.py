@@ -1,9 +1,7 @@
-"""The drawn answer widget in JupyterLab (issue 38): the student draws with the mouse, presses Check, the kernel
-grades and the browser shows the verdict on the drawing; the drawing is the answer output beneath the widget
-(updated from the widget's comm messages by display id), saved with the notebook, and there again after a reload.
-
-The kernel grades with a stand-in of the grader (tests/scene/drawn_fixtures.py: the spec's matching rule) on a
-hand-written task, so that this test draws what the browser does and the notebook keeps.
+"""The drawn answer widget in JupyterLab (issue 38): ``gk.draw_answer`` of a catalog exercise's drawn question; the
+student draws with the mouse, presses Check, the kernel grades (the exercise's grader) and the browser shows the
+verdict and marks the element at fault on the drawing; the drawing is the answer output beneath the widget (updated
+from the widget's comm messages by display id), saved with the notebook, and there again after a reload.
 """
 
 from __future__ import annotations
@@ -18,13 +16,14 @@ import pytest
 from tests.e2e.conftest import ROOT
 from tests.e2e.test_browser import SHUT_DOWN, _no_widget_errors, _wait_ran
 from tests.e2e.test_scene_widget import _notebook
-from tests.scene.drawn_fixtures import G3, H, line_task
+from graphkin import exercises
+from graphkin.exercises.drawn_tasks import task_of
+from tests.scene.drawn_fixtures import on_line
 
 NAME = "drawing_widget.ipynb"
-CELL = (f"import sys\nsys.path.insert(0, {str(ROOT)!r})\n"
-        "from tests.scene.drawn_fixtures import line_task, fixture_grade\n"
-        "from graphkin.widgets.drawing import DrawingBox\n"
-        "box = DrawingBox(line_task(practice=False), fixture_grade(line_task()))\nbox")
+EXERCISE, QUESTION, STUDENT = "draw_strip_cutter", "R3i", "s001"
+CELL = (f"import sys\nsys.path.insert(0, {str(ROOT)!r})  # this tree's graphkin\nimport graphkin as gk\n"
+        f"box = gk.draw_answer({EXERCISE!r}, {QUESTION!r}, {STUDENT!r})\nbox")
 VIEW = "document.querySelector('.gk-draw').parentElement.parentElement.graphkin"
 MIME = "application/vnd.graphkin.drawing+json"
 TEXT = ".jp-RenderedText[data-mime-type='text/plain']"  # the answer output (the widget shows its line too)
@@ -56,35 +55,38 @@ def test_the_widget_draws_checks_and_keeps_the_drawing_through_save_and_reload(b
             pytest.fail(f"no drawing; the output: {page.locator('.jp-OutputArea').first.inner_text()[:500]!r}; "
                         f"the console: {logs[-10:]}")
         _no_widget_errors(page)
-        # The right line: through the target's anchor, along F3i (the second click snaps to its direction).
-        (target,) = line_task()["check"]["targets"][0]["elements"]
-        a, b = target["through"]
+        # The right line, where the grader's target is (the second click snaps to F3i's direction).
+        task = task_of(exercises.variant(exercises.load(EXERCISE), STUDENT, ""), QUESTION, practice=True)
+        targets = {t["slip"]: t["elements"][0]["through"] for t in task["check"]["targets"]}
+        a, b = on_line(task, *targets[None])
         page.locator(".gk-draw svg").scroll_into_view_if_needed()
         for p in (a, b):
-            page.mouse.click(*page.evaluate(f"(p) => {VIEW}.toScreen(p)", p))
+            page.mouse.click(*page.evaluate(f"(p) => {VIEW}.toScreen(p)", list(p)))
         # The answer output under the widget follows the drawing, from the widget's comm message.
         answer = page.locator(TEXT, has_text='"kind":"line"')
         answer.wait_for(timeout=30_000)
         line = answer.inner_text().strip()
         drawn = json.loads(line.split(" = ", 1)[1].strip("'"))
         (e,) = drawn["elements"]
-        assert e["kind"] == "line" and math.dist(e["through"][0], a) < 1e-3
+        assert e["kind"] == "line" and math.dist(e["through"][0], a) < 1e-3  # 0.1 mm of drawing at 1:10
         page.locator(".gk-draw [data-do=check]").click()
         page.wait_for_selector(".gk-verdict[data-verdict=correct]", timeout=30_000)
-        # A line through G3 is the slip the grader names; the drawn line is marked and the right one dashed.
+        # A line through G3 is the slip the grader names; the drawn line is marked, and the right one is not shown
+        # (the exercise does not reveal answers).
         page.locator(".gk-draw [data-do=clear]").click()
-        for p in (G3, (G3[0] - 0.08, G3[1] - 0.08 / 3)):
+        for p in on_line(task, *targets["through_G"]):
             page.mouse.click(*page.evaluate(f"(p) => {VIEW}.toScreen(p)", list(p)))
         page.locator(".gk-draw [data-do=check]").click()
         page.wait_for_selector(".gk-verdict[data-verdict=slip]", timeout=30_000)
-        assert "wrong side" not in page.locator(".gk-draw-feedback").inner_text()
-        assert page.locator(".gk-draw .gk-right line").count() == 1  # the right line, dashed
+        assert "through g" in page.locator(".gk-draw-feedback").inner_text().lower()
+        assert page.locator(".gk-draw .gk-fault").count() == 1
+        assert page.locator(".gk-draw .gk-right line").count() == 0
         page.locator(".gk-draw [data-do=undo]").click()  # back to one point of the line...
-        page.mouse.click(*page.evaluate(f"(p) => {VIEW}.toScreen(p)", [a[0] + 2 * H, a[1] - H]))  # ...and off
+        page.mouse.click(*page.evaluate(f"(p) => {VIEW}.toScreen(p)", list(b)))  # ...and to a point of the right one
         page.wait_for_function(f"() => {VIEW}.drawing().elements.length === 1")
         kept = page.evaluate(f"() => {VIEW}.drawing()")
         page.wait_for_function("(t) => [...document.querySelectorAll(\"" + TEXT + "\")].some("
-                               "e => e.innerText.includes(t))", arg=json.dumps(kept["elements"][0]["through"][1])[:12],
+                               "e => e.innerText.includes(t))", arg=json.dumps(kept["elements"][0]["through"][1], separators=(",", ":")),
                                timeout=30_000)
         # Saved: the notebook on disk holds the drawing in the answer output.
         page.locator(".jp-Notebook").first.click(position={"x": 5, "y": 5})
@@ -99,12 +101,12 @@ def test_the_widget_draws_checks_and_keeps_the_drawing_through_save_and_reload(b
             time.sleep(0.2)
         assert saved is not None, "the saved notebook has no drawing"
         assert saved[MIME]["elements"] == kept["elements"]
-        assert "".join(saved["text/plain"]).startswith("line3 = '{")  # nbformat keeps text as lines
+        assert "".join(saved["text/plain"]).startswith(QUESTION + " = '{")  # nbformat keeps text as lines
         # Reloaded (the kernel still runs): the widget shows the same drawing, and the output holds it.
         page.reload(wait_until="domcontentloaded")
         page.wait_for_selector(".gk-draw svg.gk-draw-svg", timeout=60_000)
         assert page.evaluate(f"() => {VIEW}.drawing().elements") == kept["elements"]
-        assert page.locator(TEXT, has_text="line3 = '{").count() == 1
+        assert page.locator(TEXT, has_text=QUESTION + " = '{").count() == 1
         _no_widget_errors(page)
         page.screenshot(path=str(out / "lab-drawing-widget.png"))
         for session in json.loads(page.evaluate("() => fetch('/api/sessions').then(r => r.text())")):
