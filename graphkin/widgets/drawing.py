@@ -33,7 +33,11 @@ from __future__ import annotations
 import functools
 import json
 
+from graphkin import exercises
 from graphkin.errors import GraphkinError
+from graphkin.exercises.drawn_tasks import task_of
+from graphkin.exercises.grading import grade_question
+from graphkin.exercises.notebooks import answer_variables
 from graphkin.optional import require
 from graphkin.scene.page import DRAW_MODULES, asset, module
 
@@ -85,11 +89,6 @@ def draw_answer(exercise, question_id: str, student: str, *, secret: str = "", d
     DrawingBox
         Display it in a cell.
     """
-    from graphkin import exercises
-    from graphkin.exercises.drawn_tasks import task_of
-    from graphkin.exercises.grading import grade_question
-    from graphkin.exercises.notebooks import answer_variables
-
     if not str(student).strip():
         raise GraphkinError("draw_answer: give the student's id (the variant drawn is theirs)")
     variant = exercises.variant(exercises.load(exercise), str(student).strip(), secret)

@@ -13,11 +13,11 @@ import time
 
 import pytest
 
+from graphkin import exercises
+from graphkin.exercises.drawn_tasks import task_of
 from tests.e2e.conftest import ROOT
 from tests.e2e.test_browser import SHUT_DOWN, _no_widget_errors, _wait_ran
 from tests.e2e.test_scene_widget import _notebook
-from graphkin import exercises
-from graphkin.exercises.drawn_tasks import task_of
 from tests.scene.drawn_fixtures import on_line
 
 NAME = "drawing_widget.ipynb"
@@ -85,9 +85,9 @@ def test_the_widget_draws_checks_and_keeps_the_drawing_through_save_and_reload(b
         page.mouse.click(*page.evaluate(f"(p) => {VIEW}.toScreen(p)", list(b)))  # ...and to a point of the right one
         page.wait_for_function(f"() => {VIEW}.drawing().elements.length === 1")
         kept = page.evaluate(f"() => {VIEW}.drawing()")
+        tip = json.dumps(kept["elements"][0]["through"][1], separators=(",", ":"))
         page.wait_for_function("(t) => [...document.querySelectorAll(\"" + TEXT + "\")].some("
-                               "e => e.innerText.includes(t))", arg=json.dumps(kept["elements"][0]["through"][1], separators=(",", ":")),
-                               timeout=30_000)
+                               "e => e.innerText.includes(t))", arg=tip, timeout=30_000)
         # Saved: the notebook on disk holds the drawing in the answer output.
         page.locator(".jp-Notebook").first.click(position={"x": 5, "y": 5})
         page.keyboard.press("Control+s")
