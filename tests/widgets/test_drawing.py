@@ -66,3 +66,19 @@ def test_a_graded_task_never_carries_its_targets_and_a_question_must_be_drawn(va
         gk.draw_answer(EXERCISE, "nope", STUDENT)
     with pytest.raises(GraphkinError, match="student's id"):
         gk.draw_answer(EXERCISE, "R3i", " ")
+
+
+def test_the_answer_line_pasted_into_a_cell_is_what_the_notebook_reader_reads_and_grades_alike(variant):
+    from graphkin.exercises.grading import grade_question
+    from graphkin.exercises.notebooks import answer_variables, read_cells
+
+    box = gk.draw_answer(EXERCISE, "polygon3", STUDENT)
+    task = json.loads(box.widget.task)
+    (target, *_) = task_of(variant, "polygon3", practice=True)["check"]["targets"]
+    box.widget.drawing = drawing_of(task, target["elements"])
+    box.widget.asked += 1
+    variables = answer_variables([q.id for q in variant.exercise.questions])
+    _, answers = read_cells([f"STUDENT = {STUDENT!r}", box.line], variables)
+    assert answers["polygon3"] == box.text
+    graded = grade_question(variant, variant.exercise.question("polygon3"), answers["polygon3"])
+    assert graded["verdict"] == box.report["verdict"] == "correct"

@@ -350,6 +350,7 @@ export function drawTask(root, task, options = {}) {
   sv.addEventListener("pointerdown", (event) => {
     if (event.button !== 0) return;
     sv.focus();
+    sv.setPointerCapture(event.pointerId); // a drag's release counts where it ends, in the drawing or not
     const q = inMM(event);
     const before = elements.length;
     const first = placed.length === 0;
