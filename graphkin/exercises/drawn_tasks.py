@@ -49,7 +49,7 @@ from graphkin.graphical.paper import POLYGON_ROOM, length_text, motion_scales, s
 from graphkin.model import GearMesh, Prismatic
 from graphkin.notation import num
 
-__all__ = ["DRAW_KINDS", "SPACE_OF", "TIMES", "Undefined", "keyed", "task_of"]
+__all__ = ["DRAW_KINDS", "SPACE_OF", "TIMES", "Undefined", "keyed", "right_drawing", "task_of", "within_words"]
 
 TIMES = 3.0
 """How many times the drawing's stated precision a drawn element may be off and still be right (see the module)."""
@@ -130,6 +130,10 @@ def _meet(p1, d1, p2, d2):
     return p1 + s * d1
 
 
+def _mm_point(p) -> str:
+    return f"({num(p[0] * 1e3, 4)}, {num(p[1] * 1e3, 4)}) mm"
+
+
 def _angle(d) -> float:
     return float(math.atan2(d[1], d[0]))
 
@@ -146,6 +150,12 @@ def _step(steps, kind, link, q, what):
     if not found:
         raise Undefined(f"question {q.id}: the construction has no {what} of link {link} at this position")
     return next((s for s in found if not s.sub), found[0])
+
+
+def _numbered(steps, step, words: str, of: str = "of the construction") -> str:
+    """The step to revisit, as every hint names it: ``"step 7 of the construction: ..."``."""
+    n = next(i for i, s in enumerate(steps, 1) if s is step)
+    return f"step {n} {of}: {words}"
 
 
 def _sub_words(step) -> str:
@@ -223,9 +233,10 @@ def _inertia_line(solved, q, c, si_mm):
            f"{'CCW' if T > 0 else 'CW'}")
     snap = {"points": snap_points, "angles": [{"name": f"∥ F{k}i", "angle": _angle(u)},
                                               {"name": f"⊥ F{k}i", "angle": _angle((-u[1], u[0]))}]}
-    text = (f"the line of {name} parallel to F{k}i, offset h = {num(math.hypot(*off) * 1e3, 4)} mm from G{k}; the "
-            f"foot of the perpendicular from G{k} at ({num(foot[0] * 1e3, 4)}, {num(foot[1] * 1e3, 4)}) mm")
-    hint = f"link {k}'s inertia force and torque combined into one resultant offset by h = |T|/|F| from G{k}"
+    text = (f"{_mm_point(foot)}: the foot of the perpendicular from G{k} to the line of {name}, parallel to F{k}i "
+            f"and offset h = {num(math.hypot(*off) * 1e3, 4)} mm from G{k}")
+    hint = _numbered(c.steps, step, f"link {k}'s inertia force −m a_G and torque −I_G α combined into one resultant "
+                                    f"offset by h = |T|/|F| from G{k}")
     view = _view([p["at"] for p in snap_points] + [_p(foot)])
     return ask, shown, snap, [{"kind": "line", "name": name}], right, slips, view, text, hint
 
@@ -262,8 +273,9 @@ def _two_force_line(solved, q, c, si_mm):
     shown, snap_points = _mechanism_shown(c)
     ask = f"Draw the line of action of {line.name}: link {m} carries two forces only{_sub_words(step)}"
     pins = _pins(c, m)
-    text = f"the line of {line.name} through {' and '.join(n for n, _ in pins)}, the pins of link {m}"
-    hint = f"link {m} as a two-force member: its two forces share the line through its pins"
+    text = (f"{' and '.join(_mm_point(p) for _, p in pins)}: the line of {line.name} through "
+            f"{' and '.join(n for n, _ in pins)}, the pins of link {m}")
+    hint = _numbered(c.steps, step, f"link {m} as a two-force member: its two forces share the line through its pins")
     view = _view([p["at"] for p in snap_points])
     return ask, shown, {"points": snap_points, "angles": []}, [{"kind": "line", "name": line.name}], right, slips, \
         view, text, hint
@@ -320,8 +332,8 @@ def _concurrency(solved, q, c, si_mm):
                       for ln in step.lines if ln.role != "found"]
     ask = (f"Place {name}, the point where the lines of action of the three forces on link {k} meet: the lines "
            f"{' and '.join(ln.name for ln in step.lines if ln.role != 'found')} are drawn{_sub_words(step)}")
-    text = f"{name} at ({num(I[0] * 1e3, 4)}, {num(I[1] * 1e3, 4)}) mm"
-    hint = f"link {k} as a three-force member and its point of concurrency"
+    text = f"{_mm_point(I)}: {name}"
+    hint = _numbered(c.steps, step, f"link {k} as a three-force member and its point of concurrency")
     view = _view([p["at"] for p in snap_points] + [_p(I)])
     return ask, shown, {"points": snap_points, "angles": []}, [{"kind": "point", "name": name}], right, slips, view, \
         text, hint
@@ -367,9 +379,9 @@ def _force_polygon(solved, q, c, si_mm):
     shown = {"segments": [], "points": [{"name": "o", "at": [0.0, 0.0]}], "vectors": shown_vectors, "lines": []}
     ask = (f"Close the force polygon of link {k}{_sub_words(step)}: its known forces are drawn tip to tail from the "
            f"pole o; draw {' and '.join(names)} along their lines of action so that the polygon closes")
-    text = ", ".join(f"{n} = {num(math.hypot(*v), 4)} N ∠ {num(math.degrees(_angle(v)), 4)}°"
+    text = "; ".join(f"{num(math.hypot(*v), 4)} N ∠ {num(math.degrees(_angle(v)), 4)}° ({n})"
                      for n, v in zip(names, vecs))
-    hint = f"the force polygon of link {k}, closed tip to tail"
+    hint = _numbered(c.steps, step, f"the force polygon of link {k}, closed tip to tail")
     view = _view([p["at"] for p in snap_points] + _elements_points(right), margin=0.2)
     return ask, shown, {"points": snap_points, "angles": angles}, [{"kind": "vector", "name": n} for n in names], \
         right, slips, view, text, hint
@@ -471,9 +483,9 @@ def _motion_step(solved, q, mc, si_mm):
     ask = (f"Find {image}, the image of {q.point} in the {what} polygon: from the known images drawn, draw "
            f"{', '.join(v.name for v in drawn)} tip to tail, each along its known direction, to where they meet")
     unit = _SHOWN_UNIT[polygon][0]
-    text = ", ".join(f"{v.name} = {num(math.hypot(*v.vector), 4)} {unit} ∠ {num(math.degrees(_angle(v.vector)), 4)}°"
+    text = "; ".join(f"{num(math.hypot(*v.vector), 4)} {unit} ∠ {num(math.degrees(_angle(v.vector)), 4)}° ({v.name})"
                      for v in drawn)
-    hint = f"the {what} polygon's step that finds {image}"
+    hint = _numbered(mc.steps, step, f"the {what} polygon's dyad that finds {image}", "of the construction of the polygons")
     view = _view([p["at"] for p in snap_points] + _elements_points(right), margin=0.2)
     return ask, shown, {"points": snap_points, "angles": angles}, [{"kind": "vector", "name": v.name} for v in drawn], \
         right, slips, view, text, hint
@@ -544,6 +556,16 @@ def keyed(solved, q) -> dict:
     return {"task": task, "targets": targets, "tolerance": tolerance, "words": words, "text": text, "hint": hint}
 
 
+def within_words(q, solved=None) -> str:
+    """A drawn question's tolerance as the sheet states it: ``"±1.5 mm and ±1.5° for each element drawn, at the
+    drawing's scale 1 mm = 10 mm (1:10)"`` (``solved``: the student's solved draw, for the scale)."""
+    text = f"±{TIMES * LENGTH:g} mm and ±{TIMES * ANGLE:g}° for each element drawn"
+    try:
+        return text if solved is None else f"{text}, at the drawing's scale {solved.drawn(q)['task']['scale']['text']}"
+    except (Undefined, GraphkinError):
+        return text
+
+
 def task_of(variant, question_id: str, *, practice: bool = False) -> dict:
     """The task of a drawn question for a student's variant (``docs/json.md``, "Drawn answers").
 
@@ -568,3 +590,10 @@ def task_of(variant, question_id: str, *, practice: bool = False) -> dict:
     task["check"] = ({"targets": d["targets"], "tolerance": d["tolerance"], "words": d["words"]} if practice
                      else None)
     return task
+
+
+def right_drawing(drawn: dict) -> dict:
+    """The right drawing of a drawn question (its :func:`keyed` data), as a student's drawing holds it."""
+    task = drawn["task"]
+    return {"drawing": 1, "question": task["question"], "space": task["space"], "unit": task["unit"],
+            "elements": drawn["targets"][0]["elements"]}

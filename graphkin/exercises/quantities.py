@@ -14,11 +14,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from graphkin.errors import GraphkinError
 from graphkin.exercises import designs
 from graphkin.exercises.drawn import drawing_slack
-from graphkin.exercises.drawn_tasks import TIMES
 from graphkin.exercises.drawn_tasks import Undefined as DrawnUndefined
+from graphkin.exercises.drawn_tasks import within_words
 from graphkin.exercises.exercise import MOTION_KINDS, Question, dimension_of
 from graphkin.exercises.precision import ANGLE, LENGTH
 from graphkin.graphical.paper import (
@@ -321,7 +320,7 @@ def within(q: Question, solved=None) -> str:
     if q.part == "at":
         return "the step of the sweep"
     if q.kind == "drawing":
-        return _drawn_within(q, solved)
+        return within_words(q, solved)
     if q.kind in designs.DESIGN_KINDS:
         return designs.grid_text(solved.exercise.design) if solved is not None else "one step of the grid"
     text = (f"{math.degrees(math.atan(q.tolerance)):.2g}°" if _form(q) == "direction"
@@ -355,19 +354,6 @@ def within(q: Question, solved=None) -> str:
     if what == "torque":
         return f"{text} or ±{num(error, 4, power=True)} N·m (a reading to ±{READING:g} mm on each drawing), the larger"
     return f"{text} or ±{num(error, 4, power=True)} N (±{READING:g} mm at {force_text(scales.polygon)}), the larger"
-
-
-def _drawn_within(q: Question, solved) -> str:
-    """A drawn question's tolerance in words: each element within so many mm and degrees on the drawing."""
-    length, angle = TIMES * LENGTH, TIMES * ANGLE
-    text = f"each element within ±{length:g} mm and ±{angle:g}° on the drawing"
-    if solved is None:
-        return text
-    try:
-        scale = solved.drawn(q)["task"]["scale"]["text"]
-    except (DrawnUndefined, GraphkinError):
-        return text
-    return f"{text} at its scale ({scale})"
 
 
 def _drawn_text(solved, q: Question) -> str:

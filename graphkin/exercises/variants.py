@@ -14,6 +14,7 @@ taken instead.
 from __future__ import annotations
 
 import hashlib
+import json
 import math
 import re
 import unicodedata
@@ -261,6 +262,8 @@ class Variant:
         for q, entry in zip(self.exercise.questions, out["questions"]):
             e = self.expected(q)
             entry["answer"] = {"text": e.text, "si": e.si_data(), "unit_si": e.si_unit, "hint": e.hint}
+            if q.kind == "drawing":  # the right drawing itself, as a student's answer holds it
+                entry["answer"]["drawing"] = json.dumps(drawn_tasks.right_drawing(self.drawn(q)), ensure_ascii=False)
         return out
 
     def grade(self, answers) -> dict:

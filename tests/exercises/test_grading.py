@@ -9,6 +9,7 @@ from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
 from graphkin import exercises
+from graphkin.exercises.drawn_tasks import right_drawing
 from graphkin.exercises.exercise import dimension_of
 from graphkin.exercises.grading import MESSAGES, grade_question
 from graphkin.exercises.quantities import expected, unit_factor
@@ -22,6 +23,12 @@ SLOW = settings(max_examples=25, deadline=None, suppress_health_check=[HealthChe
 def g(x: float) -> str:
     """A number with 7 significant figures, as a careful student would type it."""
     return f"{x:.7g}"
+
+
+def drawings(v, q) -> list:
+    """A drawn question's right drawing, as JSON text and as the dict a JSON hand-in holds."""
+    right = right_drawing(v.drawn(q))
+    return [json.dumps(right), right]
 
 
 def formats(e) -> list[str]:
@@ -72,7 +79,7 @@ def test_right_answers_in_every_format_earn_full_marks(name, student):
     v = exercises.variant(name, student)
     for q in v.exercise.questions:
         e = expected(v, q)
-        for text in formats(e):
+        for text in (formats(e) if e.form != "drawing" else drawings(v, q)):
             r = grade_question(v, q, text)
             assert r["verdict"] == "correct", (q.id, text, e.text, r["feedback"])
             assert r["score"] == q.points
@@ -275,7 +282,8 @@ def test_the_keys_printed_answers_earn_full_marks(name):
     """The key as printed (4 significant figures, the sense in words) is itself a right answer."""
     for i in range(15):
         key = exercises.key(name, f"s{i}")
-        report = exercises.grade(name, f"s{i}", {q["id"]: q["answer"]["text"] for q in key["questions"]})
+        report = exercises.grade(name, f"s{i}", {q["id"]: q["answer"].get("drawing", q["answer"]["text"])
+                                                 for q in key["questions"]})
         assert report["score"] == report["max"], [q for q in report["questions"] if q["verdict"] != "correct"]
 
 

@@ -582,7 +582,8 @@ def read_answers(path: Path) -> dict:
 def _flatten(table: dict, prefix: str = "") -> dict:
     out = {}
     for key, value in table.items():
-        if isinstance(value, dict) and value:
+        # A drawn answer held as an object (``{"drawing": 1, ...}``, docs/json.md) is one answer, not a table.
+        if isinstance(value, dict) and value and "drawing" not in value:
             out.update(_flatten(value, f"{prefix}{key}."))
         else:
             out[f"{prefix}{key}"] = value
