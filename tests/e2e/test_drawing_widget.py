@@ -108,6 +108,19 @@ def test_the_widget_draws_checks_and_keeps_the_drawing_through_save_and_reload(b
         assert page.evaluate(f"() => {VIEW}.drawing().elements") == kept["elements"]
         assert page.locator(TEXT, has_text=QUESTION + " = '{").count() == 1
         _no_widget_errors(page)
+        # The keys are the drawing's while it has the focus: Ctrl+Z undoes its last point, Tab goes to a snap point
+        # and Enter places it; the notebook gets none of them (no cell added, none run, no undo of a cell).
+        cells = page.locator(".jp-Notebook .jp-Cell").count()
+        page.locator(".gk-draw svg").focus()
+        page.keyboard.press("Control+z")
+        page.keyboard.press("Tab")
+        assert "snaps to" in page.locator(".gk-draw-status").inner_text()
+        page.keyboard.press("Enter")
+        after = page.evaluate(f"() => {VIEW}.drawing().elements")
+        assert len(after) == 1 and after[0]["through"][0] == kept["elements"][0]["through"][0]
+        snap = task["snap"]["points"][0]["at"]  # snapped, to the thousandth of a mm of drawing the answer keeps
+        assert math.dist(after[0]["through"][1], snap) <= 1e-3 * task["scale"]["si_per_mm"]
+        assert page.locator(".jp-Notebook .jp-Cell").count() == cells
         page.screenshot(path=str(out / "lab-drawing-widget.png"))
         for session in json.loads(page.evaluate("() => fetch('/api/sessions').then(r => r.text())")):
             assert page.evaluate(SHUT_DOWN, session["id"]) == 204
