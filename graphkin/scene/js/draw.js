@@ -82,9 +82,17 @@ export function drawTask(root, task, options = {}) {
   const head = (name) => `url(#gk-head-${name}-${task.question})`;
   svg("rect", { x: 0, y: 0, width: W, height: H, fill: "#fff", stroke: "#ccc", "stroke-width": 0.3 }, sv);
   const fixed = svg("g", { class: "gk-given" }, sv);
+  // A name as a book sets it: "a^c_B3B2" is a with c above and B3B2 below, "F43′" as it is.
   const label = (text, p, parent, colour) => {
     const t = svg("text", { x: p[0] + 1, y: p[1] - 1, "font-size": 3.2, fill: colour, class: "gk-label" }, parent);
-    t.textContent = text;
+    const m = /^([^_^]+)(?:\^([^_]+))?(?:_(.+))?$/.exec(text);
+    if (!m || (!m[2] && !m[3])) {
+      t.textContent = text;
+      return t;
+    }
+    t.textContent = m[1];
+    if (m[2]) svg("tspan", { "baseline-shift": "super", "font-size": 2.2 }, t).textContent = m[2];
+    if (m[3]) svg("tspan", { "baseline-shift": "sub", "font-size": 2.2 }, t).textContent = m[3];
     return t;
   };
   const shown = task.shown || {};
@@ -365,6 +373,7 @@ export function drawTask(root, task, options = {}) {
     down = null;
   });
   sv.addEventListener("pointerleave", () => {
+    status.textContent = "";
     ring.setAttribute("visibility", "hidden");
     rubber.setAttribute("visibility", "hidden");
   });
