@@ -60,7 +60,7 @@ def roster_time(ex, students, workers, secret) -> tuple[float, float, float, flo
     t = time.perf_counter()
     sheets = run_roster(ex, "make", students, secret, workers=workers)
     keys = run_roster(ex, "key", students, secret, workers=workers)
-    answers = [{q["id"]: q["answer"]["text"] for q in k["questions"]} for k in keys]
+    answers = [{q["id"]: q["answer"].get("drawing", q["answer"]["text"]) for q in k["questions"]} for k in keys]
     grades = run_roster(ex, "grade", students, secret, answers=answers, workers=workers)
     session = time.perf_counter() - t
     mine = time.process_time() - mine

@@ -19,6 +19,7 @@ from __future__ import annotations
 import math
 
 from graphkin.exercises.drawings import Drawing, Unreadable, read_drawing
+from graphkin.exercises.notebooks import NotData
 
 __all__ = ["element_matches", "faults", "grade_drawing", "grade_drawn", "match"]
 
@@ -104,6 +105,10 @@ def grade_drawn(variant, q, answer, *, reveal: bool = False) -> dict:
         out["expected"] = d["text"]
     if answer is None or (isinstance(answer, str) and not answer.strip()):
         return out | {"verdict": "missing", "feedback": "No drawing was handed in for this question."}
+    if isinstance(answer, NotData):  # a notebook's variable given by code, not a literal: not read, never run
+        return out | {"verdict": "unreadable", "answer": f"({answer.reason}, not text)",
+                      "feedback": f"The drawing could not be read: the variable holds {answer.reason}, not the "
+                                  "drawing's text (paste the text the drawing gives, between quotes)."}
     try:
         drawing = answer if isinstance(answer, Drawing) else \
             read_drawing(answer, question=q.id, space=task["space"])

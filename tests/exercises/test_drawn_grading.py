@@ -148,6 +148,9 @@ def test_a_gradescope_json_hand_in_and_a_notebook_variable_hold_the_drawing(tmp_
     cell = f"{variables['polygon3']} = {json.dumps(json.dumps(right['polygon3']))}\n"
     _, read = read_cells([cell], variables)
     assert exercises.grade(ex, "s1", read)["questions"][3]["verdict"] == "correct"
+    _, read = read_cells([f"{variables['polygon3']} = json.dumps(right)\n"], variables)  # code: never run
+    r = exercises.grade(ex, "s1", read)["questions"][3]
+    assert r["verdict"] == "unreadable" and "a call" in r["feedback"]
 
 
 @settings(max_examples=4, deadline=None, suppress_health_check=[HealthCheck.too_slow])

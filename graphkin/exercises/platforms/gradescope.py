@@ -214,7 +214,8 @@ def build(bundle) -> dict:
         raise GraphkinError("gradescope: a course secret needs --roster: the autograder grades with the roster's "
                             "precomputed keys, so that the zip never carries the secret")
     sample = bundle.sample_key()
-    answers = {q["id"]: q["answer"]["text"] for q in sample["questions"]}
+    # A drawn question's right answer is its drawing (JSON text), not the words the key prints.
+    answers = {q["id"]: q["answer"].get("drawing", q["answer"]["text"]) for q in sample["questions"]}
     return {
         **bundle.files,
         "autograder.zip": autograder_zip(zip_members(bundle)),

@@ -502,7 +502,7 @@ def _notebook(bundle) -> str:
              _cell("code", _sheet_cell(bundle), "sheet")]
     for q in bundle.exercise.questions:
         cells += [_cell("markdown", _question_text(bundle, q, names[q.id]), _grade_id("question", q.id)),
-                  _cell("code", _answer_cell(names[q.id], key[q.id]["answer"]["text"]), _grade_id("answer", q.id),
+                  _cell("code", _answer_cell(names[q.id], _right(key[q.id])), _grade_id("answer", q.id),
                         solution=True),
                   _cell("code", _test_cell(bundle, q.id, names[q.id]), _grade_id("test", q.id), grade=True,
                         points=q.points)]
@@ -553,6 +553,11 @@ def _question_text(bundle, q, variable: str) -> str:
 def _example_answer(bundle, q) -> str:
     """How to write an answer to ``q``: the grader's own example, a made-up number in the question's unit."""
     return answer_example(runtime.variant(bundle.exercise, bundle.sample, bundle.secret).expected(q))
+
+
+def _right(entry: dict) -> str:
+    """A key entry's right answer as a student types it: the printed answer, or a drawn question's drawing."""
+    return entry["answer"].get("drawing", entry["answer"]["text"])
 
 
 def _answer_cell(variable: str, answer: str) -> str:

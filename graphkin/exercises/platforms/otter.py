@@ -411,7 +411,7 @@ def _notebook(bundle) -> str:
 
     cells = [v4.new_raw_cell(_config(bundle)), *_front_cells(bundle)]
     names = answer_variables(bundle.question_ids())
-    key = {a["id"]: a["answer"]["text"] for a in bundle.sample_key()["questions"]}
+    key = {a["id"]: a["answer"].get("drawing", a["answer"]["text"]) for a in bundle.sample_key()["questions"]}
     for q in bundle.exercise.questions:
         cells += _question_cells(bundle, q, names[q.id], key[q.id])
     nb = v4.new_notebook(cells=cells, metadata={
