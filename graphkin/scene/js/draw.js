@@ -313,7 +313,7 @@ export function drawTask(root, task, options = {}) {
     const cls = fb.verdict === "correct" ? "gk-right" : "gk-reason";
     const head1 = html("p", { class: `gk-verdict ${cls}`, "data-verdict": fb.verdict }, message,
       fb.verdict === "correct" ? "Right." : fb.verdict === "slip" ? `A slip: ${(fb.slip || "").replaceAll("_", " ")}.`
-        : fb.verdict === "unreadable" ? "Unreadable." : "Not right.");
+        : fb.verdict === "unreadable" ? "Unreadable." : fb.verdict === "missing" ? "Nothing drawn yet." : "Not right.");
     if (fb.score !== undefined && fb.max !== undefined) head1.textContent += ` ${fb.score} of ${fb.max}.`;
     if (fb.feedback) html("p", { class: "gk-words" }, message, fb.feedback);
     if (fb.practice) html("p", { class: "gk-note" }, message, "Practice only: no grade is recorded.");
