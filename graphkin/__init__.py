@@ -113,6 +113,7 @@ _LAZY = {
     "explore": ("graphkin.widgets", "explore"),
     "scene": ("graphkin.scene", None),
     "exercise": ("graphkin.widgets", "exercise"),
+    "draw_answer": ("graphkin.widgets", "draw_answer"),
     # errors
     "GraphkinError": ("graphkin.errors", "GraphkinError"),
     "ModelError": ("graphkin.errors", "ModelError"),
@@ -165,4 +166,4 @@ if TYPE_CHECKING:  # pragma: no cover - for type checkers and editors; at run ti
     from graphkin.notation import polar, polar_text
     from graphkin.problem import Problem, build_problem, load_problem, parse_problem
     from graphkin.report import cycle_data, format_cycle, format_solution, format_study, solution, study_data
-    from graphkin.widgets import exercise, explore
+    from graphkin.widgets import draw_answer, exercise, explore

@@ -26,8 +26,8 @@ from graphkin.files import check_destination, json_text, read_text, write_text
 
 def add_parser(sub) -> None:
     """Add ``exercise`` and its subcommands to the ``graphkin`` parser."""
-    e = sub.add_parser("exercise", help="exercises with per-student data: list, make, key, grade, collect, strip, "
-                       "export")
+    e = sub.add_parser("exercise", help="exercises with per-student data: list, make, key, grade, practice, collect, "
+                       "strip, export")
     esub = e.add_subparsers(dest="action", required=True)
     esub.add_parser("list", help="list the catalog exercises")
     for action, text in (("make", "a student's data and questions (no answers)"),
@@ -60,6 +60,12 @@ def add_parser(sub) -> None:
             a.add_argument("--feedback", choices=("parts", "distance"),
                            help="what a wrong answer is told (default: the exercise's feedback): 'distance' adds how "
                                 "far off it is, which gives the answer away (e.g. for a regrade after the due date)")
+    pr = esub.add_parser("practice", help="a practice page: the student draws each drawn question and checks it in "
+                         "the page (no grade recorded)")
+    pr.add_argument("exercise", help="catalog name or path to an exercise file with drawn questions")
+    pr.add_argument("--student", required=True, help="the student's id: the page draws their variant")
+    pr.add_argument("--secret", help="the course secret (default: $GRAPHKIN_SECRET)")
+    pr.add_argument("-o", "--output", required=True, metavar="FILE", help="the HTML page to write")
     c = esub.add_parser("collect", help="one class table from the results.json files of otter run (or Gradescope)")
     c.add_argument("results", nargs="+", metavar="PATH", help="results.json files, or folders holding them")
     c.add_argument("--json", action="store_true", help="print plain data as JSON")
@@ -116,6 +122,8 @@ def _run(args) -> int:
         return _collect(args)
     if args.action == "strip":
         return _strip(args)
+    if args.action == "practice":
+        return _practice(args)
     if args.output:
         check_destination(args.output, "-o")
     figure = getattr(args, "figure", None)
@@ -158,6 +166,26 @@ def _export(args) -> int:
           file=sys.stderr)
     for note in getattr(module, "NOTES", ()):
         _note(f"{args.to}: {note}")
+    return 0
+
+
+def _practice(args) -> int:
+    """``graphkin exercise practice``: the drawn questions of one student's variant on one self-contained page, each
+    with the targets it is matched against in the page (docs/exercises.md, "Drawing in the browser")."""
+    from graphkin import exercises
+    from graphkin.exercises.drawn_tasks import task_of
+    from graphkin.scene.practice import write_practice
+
+    check_destination(args.output, "-o")
+    ex = exercises.load(args.exercise)
+    drawn = [q.id for q in ex.questions if q.kind == "drawing"]
+    if not drawn:
+        raise GraphkinError(f"practice: {ex.id} has no drawn questions (find = \"drawing\")")
+    v = exercises.variant(ex, args.student, _secret(args))
+    tasks = [task_of(v, qid, practice=True) for qid in drawn]
+    write_practice(tasks, args.output, title=f"{ex.title} — practice ({args.student})")
+    print(f"practice page of {len(tasks)} drawn question{'s' if len(tasks) != 1 else ''} written to "
+          f"{args.output}", file=sys.stderr)
     return 0
 
 

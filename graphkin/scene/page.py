@@ -41,24 +41,35 @@ def asset(name: str) -> str:
 MODULES = ("speed.js", "scene.js", "widget.js")
 """The drawing's ES modules, each importing only from those before it: :func:`module` joins them."""
 
+DRAW_MODULES = ("match.js", "draw.js", "drawwidget.js")
+"""The student's drawing (issue 38): the practice page's and the drawn answer widget's modules, joined the same way
+(:func:`module` with ``names=DRAW_MODULES``)."""
+
 IMPORT = re.compile(r'^import \{[^}]*\} from "\./[a-z]+\.js";\n', re.M)
 """A module's import of another of :data:`MODULES` (a page from disk, or a notebook's widget, loads one module: a
 relative import has no file to come from)."""
 
 
-def module() -> str:
-    """The drawing as one ES module: :data:`MODULES` in their order, without their imports of one another.
+def module(names: tuple[str, ...] = MODULES) -> str:
+    """The drawing as one ES module: :data:`MODULES` (or ``names``) in their order, without their imports of one
+    another.
 
     Exports ``draw(element, scene)`` (the page calls it; not named ``render``, which anywidget would take for its
     own), ``default`` (anywidget's ``render({model, el})``: the notebook's widget, :mod:`graphkin.widgets.browser`),
     and ``live``, ``setRate`` and ``polar``.
+
+    Parameters
+    ----------
+    names : tuple of str
+        The modules joined: :data:`MODULES` (the scene) or :data:`DRAW_MODULES` (the student's drawing, whose
+        ``drawTask(element, task)`` the practice page calls and whose ``default`` is the drawn answer widget's).
 
     Returns
     -------
     str
         JavaScript.
     """
-    return "\n".join(IMPORT.sub("", asset(name)) for name in MODULES)
+    return "\n".join(IMPORT.sub("", asset(name)) for name in names)
 
 
 def page(data: dict) -> str:

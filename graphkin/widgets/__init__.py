@@ -13,7 +13,8 @@ ipywidgets and anywidget are imported only when a widget is built: ``import grap
 ``import graphkin.widgets`` do not load them.
 
 :func:`exercise` builds an :class:`ExerciseBox`: a box for the student's id, their data, a text box per question
-and a Check button.
+and a Check button. :func:`draw_answer` builds a :class:`DrawingBox`: a drawn question the student draws with the
+mouse or the keys and checks.
 
 The package, one module per concern:
 
@@ -23,6 +24,9 @@ The package, one module per concern:
     Where a slider-driven problem whose file gives one position is explored: where its linkage assembles.
 ``exercise_box``
     :func:`exercise` and :class:`ExerciseBox`.
+``drawing``
+    :func:`draw_answer` and :class:`DrawingBox`: a drawn question answered by drawing (issue 38), checked in the
+    kernel, the drawing kept as the answer output.
 
 Examples
 --------
@@ -34,6 +38,7 @@ Examples
 """
 
 from graphkin.widgets.browser import BrowserExplorer, explore
+from graphkin.widgets.drawing import DrawingBox, draw_answer
 from graphkin.widgets.exercise_box import ExerciseBox, exercise
 
-__all__ = ["BrowserExplorer", "ExerciseBox", "exercise", "explore"]
+__all__ = ["BrowserExplorer", "DrawingBox", "ExerciseBox", "draw_answer", "exercise", "explore"]
