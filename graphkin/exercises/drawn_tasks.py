@@ -197,6 +197,28 @@ def _view(points, margin=0.15) -> list[float]:
     return [float(lo[0] - pad), float(lo[1] - pad), float(hi[0] + pad), float(hi[1] + pad)]
 
 
+def _with_slips(view, targets) -> list[float]:
+    """The view grown to hold what each slip's drawing is anchored at (a line's anchor, a point, a vector's ends),
+    so that a student can make the slip the grader names: the offset on the other side of G, the polygon closed in
+    the other order. A slip of scale (ten times too long or short) is left out: it would make the box ten times
+    larger, and a drawing that runs off the box tells the student by itself that the scale was misread."""
+    points = []
+    for t in targets[1:]:
+        if t["slip"] != "scale_factor":
+            points += [e["through"][0] if e["kind"] == "line" else e.get("at") for e in t["elements"]
+                       if e["kind"] != "vector"]
+            points += [p for e in t["elements"] if e["kind"] == "vector" for p in (e["from"], e["to"])]
+    if not points:
+        return view
+    P = np.asarray(points, float)
+    lo, hi = P.min(axis=0), P.max(axis=0)
+    if lo[0] >= view[0] and lo[1] >= view[1] and hi[0] <= view[2] and hi[1] <= view[3]:
+        return view
+    pad = 0.05 * max(view[2] - view[0], view[3] - view[1])
+    return [float(min(view[0], lo[0] - pad)), float(min(view[1], lo[1] - pad)),
+            float(max(view[2], hi[0] + pad)), float(max(view[3], hi[1] + pad))]
+
+
 def _elements_points(elements) -> list:
     out = []
     for e in elements:
@@ -550,6 +572,7 @@ def keyed(solved, q) -> dict:
         if match(elements, right, tolerance) is None:
             targets.append({"slip": slip, "elements": elements})
     words = {str(t["slip"]) if t["slip"] else "right": WORDS[t["slip"]] for t in targets}
+    view = _with_slips(view, targets)
     task = {"task": 1, "question": q.id, "kind": q.draw, "space": space, "unit": _UNIT[space], "ask": ask,
             "scale": {"si_per_mm": si_mm, "text": scale_text}, "view": view, "shown": shown, "snap": snap,
             "draw": draw, "check": None}

@@ -49,6 +49,17 @@ FIGURE = "given.png"
 STUDENT_PREFIX = "pl-"
 """The variant ``pl-<variant_seed>`` is graphkin's variant of that student key."""
 
+DRAWING_FILES = "graphkin"
+"""The folder of ``clientFilesCourse`` that holds the drawing's module and styles, for drawn questions."""
+
+DRAWING_MODULES = ("match.js", "draw.js", "pldrawing.js")
+"""The ES modules joined into ``clientFilesCourse/graphkin/drawing.mjs``: the student's drawing and the bridge
+that puts each drawn question's box on PrairieLearn's page (``graphkin/scene/js/pldrawing.js``)."""
+
+DRAWN_FEEDBACK = "__drawn"
+"""Appended to a drawn question's answer name: ``feedback[name + DRAWN_FEEDBACK]`` is what the submission panel draws
+back on the student's drawing (docs/json.md, "Drawn answers": Feedback), as JSON."""
+
 
 # --- On PrairieLearn's server: what server.py calls -------------------------------------------------------------
 
@@ -111,7 +122,15 @@ def generate(data: dict, exercise_file: str, secret: str = "") -> None:
         "marks": {names[q["id"]]: marks(q) for q in key["questions"]},
     })
     for q in key["questions"]:
-        data["correct_answers"][names[q["id"]]] = q["answer"]["text"]
+        # A drawn question's correct answer is what a right submission holds: the right drawing, as data.
+        data["correct_answers"][names[q["id"]]] = q["answer"].get("drawing") or q["answer"]["text"]
+    drawn = [q["id"] for q in key["questions"] if q.get("form") == "drawing"]
+    if drawn:
+        from graphkin.exercises.drawn_tasks import task_of
+
+        v = runtime.variant(exercise_file, student, secret)
+        # The task as data, shown in an attribute (Mustache escapes it); it carries no targets (never 'check').
+        data["params"]["tasks"] = {names[qid]: json.dumps(task_of(v, qid), ensure_ascii=False) for qid in drawn}
 
 
 def parse(data: dict, exercise_file: str, secret: str = "") -> None:
@@ -162,6 +181,9 @@ def grade(data: dict, exercise_file: str, secret: str = "") -> dict:
         sentence = html.escape(feedback(r))
         data["partial_scores"][name] = {"score": part, "weight": weight, "feedback": sentence}
         data["feedback"][name] = sentence
+        if "fault" in r:  # a drawn question: what the submission panel marks on the student's own drawing
+            shown = {k: r.get(k) for k in ("verdict", "slip", "score", "max", "feedback", "fault", "right")}
+            data["feedback"][name + DRAWN_FEEDBACK] = json.dumps(shown, ensure_ascii=False)
         earned, total = earned + part * weight, total + weight
     data["score"] = earned / total if total else 0.0
     return report
@@ -216,7 +238,17 @@ def build(bundle) -> dict:
         tree[f"{folder}/{file_name}"] = text
     for rel, content in vendor_files().items():
         tree[f"serverFilesCourse/{rel}"] = content
+    if _drawn(bundle):
+        from graphkin.scene.page import asset, module
+
+        tree[f"clientFilesCourse/{DRAWING_FILES}/drawing.mjs"] = module(DRAWING_MODULES)
+        tree[f"clientFilesCourse/{DRAWING_FILES}/drawing.css"] = asset("draw.css")
     return tree
+
+
+def _drawn(bundle) -> list[str]:
+    """The ids of the exercise's drawn questions."""
+    return [q.id for q in bundle.exercise.questions if q.kind == "drawing"]
 
 
 def question_uuid(exercise_id: str) -> str:
@@ -291,6 +323,9 @@ def question_html(bundle) -> str:
     ]
     for q in sheet["questions"]:
         name = names[q["id"]]
+        if q["form"] == "drawing":
+            parts += _drawn_html(name)
+            continue
         attrs = {
             "answers-name": name,
             "label": q["id"],
@@ -311,7 +346,39 @@ def question_html(bundle) -> str:
             f"  <pl-submission-panel><p class=\"mt-1\">{{{{{{feedback.{name}}}}}}}</p></pl-submission-panel>",
             "</div>",
         ]
+    if any(q["form"] == "drawing" for q in sheet["questions"]):
+        url = f"{{{{options.client_files_course_url}}}}/{DRAWING_FILES}"
+        parts += [f'<link rel="stylesheet" href="{url}/drawing.css">',
+                  f'<script type="module" src="{url}/drawing.mjs"></script>']
     return "\n".join(parts) + "\n"
+
+
+def _drawn_html(name: str) -> list[str]:
+    """A drawn question's part of ``question.html``: the box the student draws in, with the hidden input that
+    PrairieLearn submits (the drawing's JSON, graded on the server by graphkin), and in the submission panel the
+    drawing submitted with the grader's feedback drawn back on it.
+
+    Every value is in an attribute written with double braces: Mustache escapes it, the browser reads it back
+    unescaped, and nothing a student submitted can close the attribute or the element.
+    """
+    task = f"{{{{params.tasks.{name}}}}}"
+    return [
+        '<div class="mb-3 mathjax_ignore">',
+        f'  <p class="mb-1">{{{{params.asks.{name}}}}} <small class="text-muted">[{{{{params.marks.{name}}}}}]'
+        "</small></p>",
+        "  <pl-question-panel>",
+        f'  <div class="graphkin-drawing" data-answer="{name}" data-task="{task}"'
+        f' data-drawing="{{{{raw_submitted_answers.{name}}}}}">',
+        f'    <input type="hidden" name="{name}" value="{{{{raw_submitted_answers.{name}}}}}">',
+        "  </div>",
+        "  </pl-question-panel>",
+        "  <pl-submission-panel>",  # the box says the feedback's words itself, under the drawing
+        f'  <div class="graphkin-drawing" data-answer="{name}" data-task="{task}"'
+        f' data-drawing="{{{{submitted_answers.{name}}}}}" data-feedback="{{{{feedback.{name}{DRAWN_FEEDBACK}}}}}">'
+        "</div>",
+        "  </pl-submission-panel>",
+        "</div>",
+    ]
 
 
 _SERVER_PY = '''\
