@@ -228,11 +228,36 @@ def read_cells(sources, variables: Mapping[str, str], student_variable: str = ST
     return claimed, {qid: get(var) for qid, var in variables.items()}
 
 
+DRAWING_MIME = "application/vnd.graphkin.drawing+json"
+"""The MIME type of a drawn answer's output (:mod:`graphkin.widgets.drawing`): its ``text/plain`` is the answer
+line, ``variable = '<the drawing as JSON>'``."""
+
+
+def _drawn_lines(cell) -> list[str]:
+    """The answer lines a code cell's drawn-answer outputs hold (the ``text/plain`` of each output that carries
+    :data:`DRAWING_MIME`), in order: read as the cell's own lines are, as data."""
+    outputs = cell.get("outputs") if isinstance(cell, Mapping) else None
+    lines = []
+    for out in outputs if isinstance(outputs, list) else []:
+        data = out.get("data") if isinstance(out, Mapping) else None
+        if isinstance(data, Mapping) and DRAWING_MIME in data:
+            lines.append(_source({"source": data.get("text/plain", "")}))
+    return lines
+
+
 def code_sources(notebook) -> list[str]:
-    """The text of a notebook's code cells, in order: all that :func:`notebook_answers` reads."""
+    """The text of a notebook's code cells, in order: all that :func:`notebook_answers` reads.
+
+    A drawn answer's box (``gk.draw_answer``) keeps the drawing in an output under itself, which JupyterLab saves
+    with the notebook: its answer line is read after its cell's text, as a line the student typed there would be
+    (a later assignment of the same variable, typed or drawn, decides, as for any answer).
+    """
     cells = notebook.get("cells", []) if isinstance(notebook, Mapping) else []
-    return [_source(c) for c in (cells if isinstance(cells, list) else [])
-            if isinstance(c, Mapping) and c.get("cell_type") == "code"]
+    sources = []
+    for c in cells if isinstance(cells, list) else []:
+        if isinstance(c, Mapping) and c.get("cell_type") == "code":
+            sources += [_source(c), *_drawn_lines(c)]
+    return sources
 
 
 def notebook_answers(notebook, variables: Mapping[str, str], student_variable: str = STUDENT_VARIABLE):

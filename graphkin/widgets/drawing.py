@@ -17,10 +17,11 @@ two ways, both tried in JupyterLab 4.6 in Chromium (tests/e2e/test_drawing_widge
   the browser) updates it with ``IPython.display.update_display``. JupyterLab routes that ``update_display_data``
   to the cell's output area by its display id although its parent is the comm message, not the cell's execution
   (the kernel connection keeps each display id's parent executions, and a cell's execution is not disposed when it
-  ends); the notebook saved then holds the drawing in that output, and it is there after a reload. The reader
-  finds it only if it reads outputs of that MIME type (a change to notebooks.py, not made here).
+  ends); the notebook saved then holds the drawing in that output, and it is there after a reload. The notebook
+  reader (:func:`graphkin.exercises.notebooks.code_sources`) reads the answer line of every output of that MIME
+  type after its cell's own text, as data: a saved notebook's drawing is graded on every notebook platform.
 - **The answer line in a cell.** The widget shows the same line with a Copy button: pasted into the answer cell it
-  is a string literal the reader reads today. ``gk.draw_answer(..., drawing=line3)`` puts a drawing back in the
+  is a string literal the reader reads. ``gk.draw_answer(..., drawing=line3)`` puts a drawing back in the
   widget (after a kernel restart, say).
 
 A kernel that still runs keeps the widget's drawing itself: a reloaded page shows it again.
@@ -37,12 +38,13 @@ from graphkin import exercises
 from graphkin.errors import GraphkinError
 from graphkin.exercises.drawn_tasks import task_of
 from graphkin.exercises.grading import grade_question
-from graphkin.exercises.notebooks import answer_variables
+from graphkin.exercises.notebooks import DRAWING_MIME, answer_variables
 from graphkin.optional import require
 from graphkin.scene.page import DRAW_MODULES, asset, module
 
-MIME = "application/vnd.graphkin.drawing+json"
-"""The answer output's MIME type: the drawing as data (docs/json.md, "Drawn answers")."""
+MIME = DRAWING_MIME
+"""The answer output's MIME type: the drawing as data (docs/json.md, "Drawn answers"); the notebook reader reads the
+answer line of each output that carries it (:func:`graphkin.exercises.notebooks.code_sources`)."""
 
 FEEDBACK = ("verdict", "slip", "score", "max", "feedback", "fault", "right")
 """What of a grading the browser draws back (docs/json.md, "Drawn answers": Feedback)."""

@@ -102,6 +102,12 @@ def test_the_widget_draws_checks_and_keeps_the_drawing_through_save_and_reload(b
         assert saved is not None, "the saved notebook has no drawing"
         assert saved[MIME]["elements"] == kept["elements"]
         assert "".join(saved["text/plain"]).startswith(QUESTION + " = '{")  # nbformat keeps text as lines
+        # ... and the platforms' reader reads it from the file as the answer, graded as the widget graded it.
+        from graphkin.exercises.notebooks import answer_variables, notebook_answers
+
+        v = exercises.variant(EXERCISE, STUDENT)
+        _, answers = notebook_answers(nb, answer_variables([q.id for q in v.exercise.questions]))
+        assert json.loads(answers[QUESTION])["elements"] == kept["elements"]
         # Reloaded (the kernel still runs): the widget shows the same drawing, and the output holds it.
         page.reload(wait_until="domcontentloaded")
         page.wait_for_selector(".gk-draw svg.gk-draw-svg", timeout=60_000)

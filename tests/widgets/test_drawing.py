@@ -82,3 +82,32 @@ def test_the_answer_line_pasted_into_a_cell_is_what_the_notebook_reader_reads_an
     assert answers["polygon3"] == box.text
     graded = grade_question(variant, variant.exercise.question("polygon3"), answers["polygon3"])
     assert graded["verdict"] == box.report["verdict"] == "correct"
+
+
+def test_a_saved_notebook_s_drawing_output_is_read_as_its_answer_and_a_later_typed_line_decides(variant, tmp_path):
+    """The notebook as JupyterLab saves it: the box's output (display_data with the drawing's MIME type) under the
+    cell that drew it. The reader finds the drawing there, in a hand-in file too, as data; a line the student typed
+    in a later cell decides instead, as any later assignment does."""
+    from graphkin.exercises.handins import read_handin
+    from graphkin.exercises.notebooks import answer_variables, notebook_answers
+
+    box = gk.draw_answer(EXERCISE, "I3", STUDENT)
+    task = json.loads(box.widget.task)
+    right, *slips = task_of(variant, "I3", practice=True)["check"]["targets"]
+    box.widget.drawing = drawing_of(task, right["elements"])
+    output = {"output_type": "display_data", "metadata": {}, "data": box._bundle()}
+    assert MIME in output["data"]
+    cells = [{"cell_type": "code", "source": f"STUDENT = {STUDENT!r}", "outputs": []},
+             {"cell_type": "code", "source": 'gk.draw_answer("draw_strip_cutter", "I3", STUDENT)', "outputs": [output]}]
+    variables = answer_variables([q.id for q in variant.exercise.questions])
+    claimed, answers = notebook_answers({"cells": cells}, variables)
+    assert claimed == STUDENT and json.loads(answers["I3"]) == json.loads(box.text)
+    path = tmp_path / "hw.ipynb"
+    path.write_text(json.dumps({"cells": cells, "metadata": {}, "nbformat": 4, "nbformat_minor": 5}))
+    handin = read_handin(path, variables)
+    assert handin.answers["I3"] == answers["I3"]
+    assert variant.grade({"I3": handin.answers["I3"]})["questions"][2]["verdict"] == "correct"
+    # A drawing typed later (here a slip's) is the answer instead.
+    typed = drawing_of(task, slips[0]["elements"]) if slips else box.text
+    cells.append({"cell_type": "code", "source": f"I3 = {typed!r}", "outputs": []})
+    assert notebook_answers({"cells": cells}, variables)[1]["I3"] == typed

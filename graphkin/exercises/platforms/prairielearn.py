@@ -34,8 +34,10 @@ import re
 import uuid
 
 from graphkin.errors import GraphkinError
+from graphkin.exercises.drawn_tasks import task_of
 from graphkin.exercises.platforms import requirements, runtime, vendor_files
 from graphkin.notation import unit_text
+from graphkin.scene.page import asset, module
 
 TOPIC = "Kinetostatics"
 """The PrairieLearn topic of every exported question (listed in the course's ``infoCourse.json``)."""
@@ -126,8 +128,6 @@ def generate(data: dict, exercise_file: str, secret: str = "") -> None:
         data["correct_answers"][names[q["id"]]] = q["answer"].get("drawing") or q["answer"]["text"]
     drawn = [q["id"] for q in key["questions"] if q.get("form") == "drawing"]
     if drawn:
-        from graphkin.exercises.drawn_tasks import task_of
-
         v = runtime.variant(exercise_file, student, secret)
         # The task as data, shown in an attribute (Mustache escapes it); it carries no targets (never 'check').
         data["params"]["tasks"] = {names[qid]: json.dumps(task_of(v, qid), ensure_ascii=False) for qid in drawn}
@@ -239,8 +239,6 @@ def build(bundle) -> dict:
     for rel, content in vendor_files().items():
         tree[f"serverFilesCourse/{rel}"] = content
     if _drawn(bundle):
-        from graphkin.scene.page import asset, module
-
         tree[f"clientFilesCourse/{DRAWING_FILES}/drawing.mjs"] = module(DRAWING_MODULES)
         tree[f"clientFilesCourse/{DRAWING_FILES}/drawing.css"] = asset("draw.css")
     return tree
