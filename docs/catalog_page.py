@@ -46,6 +46,52 @@ class CatalogProblems(SphinxDirective):
         return out
 
 
+PRACTICE_STUDENT = "practice"
+"""The id the site's practice pages are drawn for: a variant no course grades (each page carries its targets)."""
+
+
+def drawn_exercises() -> list[str]:
+    """The catalog exercises with drawn questions: each has a practice page on the site."""
+    from graphkin import exercises
+
+    return [n for n in exercises.names() if any(q.kind == "drawing" for q in exercises.load(n).questions)]
+
+
+def write_practice_pages(folder: Path) -> list[Path]:
+    """Each drawn exercise's practice page (``graphkin exercise practice NAME --student practice``) in ``folder``."""
+    from graphkin import exercises
+    from graphkin.scene.practice import write_practice
+
+    out = []
+    for name in drawn_exercises():
+        v = exercises.variant(name, PRACTICE_STUDENT)
+        tasks = [exercises.task_of(v, q.id, practice=True) for q in v.exercise.questions if q.kind == "drawing"]
+        out.append(write_practice(tasks, folder / f"practice-{name}.html", title=f"{v.exercise.title} — practice"))
+    return out
+
+
+class PracticePages(SphinxDirective):
+    """Each drawn exercise's practice page in a frame: the student draws and checks in the page, offline."""
+
+    def run(self):
+        import html
+        import posixpath
+
+        from offline import SCENES
+
+        out = []
+        for name in drawn_exercises():
+            src = posixpath.relpath(f"{SCENES}/practice-{name}.html", posixpath.dirname(self.env.docname) or ".")
+            out.append(nodes.raw("", (
+                f'<div class="graphkin-scene graphkin-practice"><iframe src="{html.escape(src)}" title="{name}: '
+                f'practice" loading="lazy" style="height: 60em"></iframe><p class="gk-note">Practice on '
+                f'<code>{name}</code> with the id <code>{PRACTICE_STUDENT}</code>: draw, press Check, and the page '
+                f'says which construction your drawing matches. No grade is recorded and nothing is sent '
+                f'(<a href="{html.escape(src)}">open it whole</a>).</p></div>'), format="html"))
+        return out
+
+
 def setup(app):
     app.add_directive("catalog-problems", CatalogProblems)
+    app.add_directive("practice-pages", PracticePages)
     return {"parallel_read_safe": True, "parallel_write_safe": True}

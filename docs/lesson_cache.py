@@ -175,6 +175,10 @@ def copy_scenes(app, exception) -> None:
     target.mkdir(exist_ok=True)
     for page in (CACHE / "scenes").glob("*.html"):
         shutil.copyfile(page, target / page.name)
+    # The drawn exercises' practice pages (docs/exercises.md frames them): a second or two each, made anew.
+    from catalog_page import write_practice_pages
+
+    write_practice_pages(target)
 
 
 def setup(app):

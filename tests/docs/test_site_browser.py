@@ -91,3 +91,20 @@ def test_each_catalog_problem_s_explorer_draws_and_moves_offline(page):
     assert len(names) > 20
     for name in names:
         _moves_with_a_key(_scene_frame(page, f"{name}.html"))
+
+
+def test_each_practice_page_draws_offline_and_says_no_grade_is_recorded(page):
+    """Issue 38, item 4: the docs site offers the drawn exercises as self-check; a Check with nothing drawn says it
+    is not finished and that no grade is recorded."""
+    page.goto((Path(SITE).resolve() / "docs" / "exercises.html").as_uri())
+    names = re.findall(rf"{SCENES}/practice-([a-z0-9_]+)\.html", " ".join(
+        page.eval_on_selector_all("iframe", "fs => fs.map(f => f.getAttribute('src'))")))
+    assert sorted(names) == ["draw_shaper_polygons", "draw_strip_cutter"]
+    for name in names:
+        frame = _scene_frame(page, f"practice-{name}.html")
+        frame.wait_for_function("() => window.graphkin && window.graphkin.views.length > 0", timeout=30_000)
+        n = frame.evaluate("() => window.graphkin.views.length")
+        assert n == frame.evaluate("() => window.graphkin.tasks.filter(t => t.check).length") >= 2
+        first = frame.locator("section").first
+        first.locator("[data-do=check]").click()
+        assert "no grade is recorded" in first.inner_text()
