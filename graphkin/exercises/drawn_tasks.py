@@ -45,7 +45,14 @@ import numpy as np
 from graphkin.errors import GraphkinError
 from graphkin.exercises.drawn_grading import match
 from graphkin.exercises.precision import ANGLE, LENGTH
-from graphkin.graphical.paper import POLYGON_ROOM, length_text, motion_scales, sheet_scales
+from graphkin.graphical.paper import (
+    MECHANISM_ROOM,
+    POLYGON_ROOM,
+    length_scale,
+    length_text,
+    motion_scales,
+    sheet_scales,
+)
 from graphkin.model import GearMesh, Prismatic
 from graphkin.notation import num
 
@@ -197,26 +204,28 @@ def _view(points, margin=0.15) -> list[float]:
     return [float(lo[0] - pad), float(lo[1] - pad), float(hi[0] + pad), float(hi[1] + pad)]
 
 
-def _with_slips(view, targets) -> list[float]:
+def _with_slips(view, targets, fits) -> list[float]:
     """The view grown to hold what each slip's drawing is anchored at (a line's anchor, a point, a vector's ends),
-    so that a student can make the slip the grader names: the offset on the other side of G, the polygon closed in
-    the other order. A slip of scale (ten times too long or short) is left out: it would make the box ten times
-    larger, and a drawing that runs off the box tells the student by itself that the scale was misread."""
-    points = []
+    where the box still ``fits`` the page at its scale, so that a student can make the slip the grader names (the
+    offset on the other side of G, the polygon closed in the other order). A slip of scale (ten times too long or
+    short) is left out, and so is a slip that would not fit: a drawing that runs off the box tells the student by
+    itself that something is wrong, and the grader still names the slip."""
     for t in targets[1:]:
-        if t["slip"] != "scale_factor":
-            points += [e["through"][0] if e["kind"] == "line" else e.get("at") for e in t["elements"]
-                       if e["kind"] != "vector"]
-            points += [p for e in t["elements"] if e["kind"] == "vector" for p in (e["from"], e["to"])]
-    if not points:
-        return view
-    P = np.asarray(points, float)
-    lo, hi = P.min(axis=0), P.max(axis=0)
-    if lo[0] >= view[0] and lo[1] >= view[1] and hi[0] <= view[2] and hi[1] <= view[3]:
-        return view
-    pad = 0.05 * max(view[2] - view[0], view[3] - view[1])
-    return [float(min(view[0], lo[0] - pad)), float(min(view[1], lo[1] - pad)),
-            float(max(view[2], hi[0] + pad)), float(max(view[3], hi[1] + pad))]
+        if t["slip"] == "scale_factor":
+            continue
+        points = [e["through"][0] if e["kind"] == "line" else e.get("at") for e in t["elements"]
+                  if e["kind"] != "vector"]
+        points += [p for e in t["elements"] if e["kind"] == "vector" for p in (e["from"], e["to"])]
+        P = np.asarray(points, float)
+        lo, hi = P.min(axis=0), P.max(axis=0)
+        if lo[0] >= view[0] and lo[1] >= view[1] and hi[0] <= view[2] and hi[1] <= view[3]:
+            continue
+        pad = 0.05 * max(view[2] - view[0], view[3] - view[1])
+        grown = [float(min(view[0], lo[0] - pad)), float(min(view[1], lo[1] - pad)),
+                 float(max(view[2], hi[0] + pad)), float(max(view[3], hi[1] + pad))]
+        if fits(grown):
+            view = grown
+    return view
 
 
 def _elements_points(elements) -> list:
@@ -564,15 +573,23 @@ def keyed(solved, q) -> dict:
         _refuse_invalid(solved, q, f"{space} polygon", mc)
         source = mc
     si_mm, scale_text = _scale(solved, q)
-    ask, shown, snap, draw, right, slips, view, text, hint = _MAKERS[q.draw](solved, q, source, si_mm)
+    while True:
+        ask, shown, snap, draw, right, slips, view, text, hint = _MAKERS[q.draw](solved, q, source, si_mm)
+        # On the mechanism, a box wider than the page (an inertia resultant's line far from its link) is drawn at
+        # the standard scale that fits it, as a student would choose a smaller scale on paper.
+        k = length_scale((1e3 * (view[2] - view[0]), 1e3 * (view[3] - view[1])), MECHANISM_ROOM)
+        if q.space != "mechanism" or k <= 1e3 * si_mm * (1 + 1e-9):
+            break
+        si_mm, scale_text = k * 1e-3, f"1 mm = {num(k, 4)} mm ({length_text(k)})"
     tolerance = {"length": TIMES * LENGTH * si_mm, "angle": math.radians(TIMES * ANGLE)}
     targets = [{"slip": None, "elements": right}]
     for slip, elements in slips:
         # A slip that leaves the drawing within the tolerance of the right one cannot be told from it.
         if match(elements, right, tolerance) is None:
             targets.append({"slip": slip, "elements": elements})
+    room = MECHANISM_ROOM if q.space == "mechanism" else (math.inf, math.inf)
+    view = _with_slips(view, targets, lambda v: (v[2] - v[0]) / si_mm <= room[0] and (v[3] - v[1]) / si_mm <= room[1])
     words = {str(t["slip"]) if t["slip"] else "right": WORDS[t["slip"]] for t in targets}
-    view = _with_slips(view, targets)
     task = {"task": 1, "question": q.id, "kind": q.draw, "space": space, "unit": _UNIT[space], "ask": ask,
             "scale": {"si_per_mm": si_mm, "text": scale_text}, "view": view, "shown": shown, "snap": snap,
             "draw": draw, "check": None}
