@@ -174,12 +174,15 @@ def on_line(task, a, b):
 
 
 def reachable(task, target):
-    """Whether every element of ``target`` can be drawn in the task's view."""
+    """Whether every element of ``target`` can be drawn in the task's view, each vector at least 3 mm long."""
     for e in target["elements"]:
         if e["kind"] == "line" and on_line(task, *e["through"]) is None:
             return False
         if e["kind"] == "point" and not inside(task, e["at"], 0):
             return False
         if e["kind"] == "vector" and not (inside(task, e["from"], 0) and inside(task, e["to"], 0)):
+            return False
+        # A vector shorter than the snap radius either way cannot be drawn apart from the points it starts at.
+        if e["kind"] == "vector" and math.dist(e["from"], e["to"]) < 3 * task["scale"]["si_per_mm"]:
             return False
     return True
