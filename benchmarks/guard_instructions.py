@@ -12,25 +12,25 @@ are made once for every position before the repetitions, so that the
 counts leave out the imports, the problem and its kinematics, and every cache filled on first use.
 
 A fourth argument ``cold`` times the first call instead: each repetition goes once over the positions of a new
-kinematics object (``dataclasses.replace``, the same arrays and mechanism; :data:`COPIES` are made before the
-repetitions in every run, so that the difference leaves them out), so that what is worked out once per kinematics
-is counted too, as a new kinematics of ``graphkin solve`` meets it (e.g. ``40 centres gearset cold`` against
+kinematics (the problem's ``kinematics()`` again: the same mechanism, whose plan the solver keeps; :data:`COPIES`
+are made before the repetitions in every run, so that the difference leaves them out), so that what is worked out
+once per kinematics is counted too, as ``graphkin solve`` meets it (e.g. ``40 centres gearset cold`` against
 ``0 centres gearset cold``, divided by 40 × its positions).
 """
 
 from __future__ import annotations
 
-import dataclasses
 import sys
 
 from graphkin import catalog
 from graphkin.graphical import construct_kinematics, instant_centres
 
-COPIES = 40
+COPIES = 400
 """New kinematics objects made in every ``cold`` run (the most repetitions it can count)."""
 
 repetitions, what = int(sys.argv[1]), sys.argv[2]
-kin = catalog.load(sys.argv[3] if len(sys.argv) > 3 else "strip_cutter").kinematics()
+problem = catalog.load(sys.argv[3] if len(sys.argv) > 3 else "strip_cutter")
+kin = problem.kinematics()
 cold = len(sys.argv) > 4 and sys.argv[4] == "cold"
 for i in range(kin.n):
     construct_kinematics(kin, i), instant_centres(kin, i)
@@ -38,7 +38,7 @@ make = {"polygons": construct_kinematics, "centres": instant_centres}[what]
 if cold:
     if repetitions > COPIES:
         sys.exit(f"guard_instructions: at most {COPIES} repetitions of a cold run")
-    copies = [dataclasses.replace(kin) for _ in range(COPIES)]
+    copies = [problem.kinematics() for _ in range(COPIES)]
     for one in copies[:repetitions]:
         for i in range(one.n):
             make(one, i)

@@ -702,9 +702,13 @@ def derived(kin, i: int):
     A problem may give values measured off its book's drawing (a link's angle θ, α, a_G: ``[given]``); the force
     route uses them, but they are not a motion the input produces (an angle read to the degree leaves a pin slightly
     apart on its two links), so no analytical route shares them. The polygons and instant centres are constructed
-    from the input motion alone: from the kinematics solved again without the given values (once for all the
-    positions, kept while ``kin`` is).
+    from the input motion alone: the kinematics the given values were put in (``kin.derived``), or, where that is
+    not known, the kinematics solved again without them (once for all the positions, kept while ``kin`` is).
     """
     if not kin.given:
         return kin, i
-    return kept(kin, "derived", _input_motion), i
+    own = kin.derived
+    if own is None or own.mechanism is not kin.mechanism or own.q is not kin.q or own.q_dot is not kin.q_dot or (
+            own.q_ddot is not kin.q_ddot):
+        own = kept(kin, "derived", _input_motion)  # (not the same input: solved again)
+    return own, i
