@@ -40,7 +40,7 @@ from operator import sub as _sub
 import numpy as np
 
 from graphkin.kinematics import solve_kinematics
-from graphkin.kinematics.plan import plan_of
+from graphkin.kinematics.plan import plan_of, plan_solved
 from graphkin.notation import largest, num, polar_text
 
 AGREEMENT = 1e-9
@@ -149,13 +149,13 @@ class _Shape:
 
 
 def _plan(kin):
-    return plan_of(kin.mechanism)
+    return plan_solved(kin.mechanism, kin.groups)
 
 
 def plan(kin):
-    """The plan of ``kin``'s mechanism (:func:`~graphkin.kinematics.plan.plan_of`), found once per kinematics while
-    it lives (:func:`kept`): what the guard, the polygons and the instant centres read of the mechanism is kept in
-    it."""
+    """The plan of ``kin``'s mechanism, the one it was solved with (:func:`~graphkin.kinematics.plan.plan_solved`),
+    found once per kinematics while it lives (:func:`kept`): what the guard, the polygons and the instant centres
+    read of the mechanism is kept in it."""
     return kept(kin, "plan", _plan)
 
 
