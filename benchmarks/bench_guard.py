@@ -6,11 +6,12 @@ other work, wall time measures the neighbours). Each checkout's graphkin runs in
 same interpreter, its folder first on ``sys.path``); the workers are asked in turn, round after round, so that both
 see the same load; the table gives each checkout's median over the rounds [µs per position] and the ratio to the
 first checkout's. "warm" repeats the positions of one kinematics (what is worked out once per kinematics is made
-before the timing); "cold" goes once over the positions of a new kinematics object each time (the same arrays),
-so that what is worked out once per kinematics is timed too, spread over its positions. Then, end to end (a new
-process each run, its CPU time: user + system, from ``getrusage`` of the children, alternately too): ``graphkin
-solve PROBLEM`` and ``graphkin solve PROBLEM --json --motion-polygons`` for a few problems of one position
-(``--solve``), and ``graphkin solve strip_cutter --json`` with and without ``--motion-polygons``.
+before the timing); "cold" goes once over the positions of a new kinematics each time (solved again before the
+timing, of the same mechanism, whose plan the solver keeps), so that what is worked out once per kinematics is
+timed too, spread over its positions. Then, end to end (a new process each run, its CPU time: user + system, from
+``getrusage`` of the children, alternately too): ``graphkin solve PROBLEM`` and ``graphkin solve PROBLEM --json
+--motion-polygons`` for a few problems of one position (``--solve``), and ``graphkin solve strip_cutter --json``
+with and without ``--motion-polygons``.
 
     .venv/bin/python benchmarks/bench_guard.py [--rounds 15] [--runs 9] [--problems a,b] [--solve a,b] BASE_DIR [OTHER_DIR ...]
 
@@ -37,7 +38,7 @@ SOLVED = ("gearset", "shaper_six_bar")
 --json --motion-polygons`` (the polygons and instant centres too, each checked by the guard) are timed end to end."""
 
 WORKER = r"""
-import dataclasses, gc, json, math, sys, time
+import gc, json, math, sys, time
 sys.path.insert(0, sys.argv[1])
 sys.path.insert(1, sys.argv[2])
 from fourbar_linkage import fourbar
@@ -46,19 +47,22 @@ from graphkin.graphical import construct_kinematics, instant_centres
 from graphkin.kinematics import solve_kinematics
 
 n = 360
-cases = {"four-bar (360)": solve_kinematics(fourbar(), [2 * math.pi * k / n for k in range(n)], 900 * 2 * math.pi / 60)}
+mech = fourbar()
+makers = {"four-bar (360)": lambda: solve_kinematics(mech, [2 * math.pi * k / n for k in range(n)], 900 * 2 * math.pi / 60)}
 for name in filter(None, sys.argv[3].split(",")):
-    cases[name] = catalog.load(name).kinematics()
+    makers[name] = catalog.load(name).kinematics
+cases = {name: make() for name, make in makers.items()}
 for kin in cases.values():  # a warm-up: caches filled, code paths taken once
     for i in range(kin.n):
         construct_kinematics(kin, i), instant_centres(kin, i)
 
 
-def cpu(fn, kin, reps, cold):
+def cpu(fn, name, reps, cold):
+    kin = cases[name]
     best = math.inf
     for _ in range(reps):
         gc.collect()
-        one = dataclasses.replace(kin) if cold else kin  # a new object: nothing kept for it yet
+        one = makers[name]() if cold else kin  # a new kinematics (the same mechanism): nothing kept for it yet
         t = time.process_time()
         for i in range(one.n):
             fn(one, i)
@@ -70,7 +74,7 @@ for line in sys.stdin:
     out = {}
     for name, kin in cases.items():
         reps = max(1, 60 // kin.n)
-        out[name] = [cpu(fn, kin, reps, cold) for cold in (False, True) for fn in (construct_kinematics, instant_centres)]
+        out[name] = [cpu(fn, name, reps, cold) for cold in (False, True) for fn in (construct_kinematics, instant_centres)]
     print(json.dumps(out), flush=True)
 """
 

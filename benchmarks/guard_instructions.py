@@ -1,4 +1,4 @@
-"""The polygons or the instant centres of the strip cutter, as instructions: a count that no neighbour's load moves.
+"""The polygons or the instant centres of a catalog problem, as instructions: a count that no neighbour's load moves.
 
 For ``bench_guard.py``'s question (issue 35, "Keep") on a machine too busy for CPU time to settle: run under
 valgrind's callgrind, once with 0 repetitions and once with 3, for each checkout; the difference over
@@ -10,6 +10,12 @@ valgrind's callgrind, once with 0 repetitions and once with 3, for each checkout
 (about two minutes a run; a third argument names another catalog problem, e.g. ``3 centres gearset``). Both
 are made once for every position before the repetitions, so that the
 counts leave out the imports, the problem and its kinematics, and every cache filled on first use.
+
+A fourth argument ``cold`` times the first call instead: each repetition goes once over the positions of a new
+kinematics (the problem's ``kinematics()`` again: the same mechanism, whose plan the solver keeps; :data:`COPIES`
+are made before the repetitions in every run, so that the difference leaves them out), so that what is worked out
+once per kinematics is counted too, as ``graphkin solve`` meets it (e.g. ``40 centres gearset cold`` against
+``0 centres gearset cold``, divided by 40 × its positions).
 """
 
 from __future__ import annotations
@@ -19,11 +25,24 @@ import sys
 from graphkin import catalog
 from graphkin.graphical import construct_kinematics, instant_centres
 
+COPIES = 400
+"""New kinematics objects made in every ``cold`` run (the most repetitions it can count)."""
+
 repetitions, what = int(sys.argv[1]), sys.argv[2]
-kin = catalog.load(sys.argv[3] if len(sys.argv) > 3 else "strip_cutter").kinematics()
+problem = catalog.load(sys.argv[3] if len(sys.argv) > 3 else "strip_cutter")
+kin = problem.kinematics()
+cold = len(sys.argv) > 4 and sys.argv[4] == "cold"
 for i in range(kin.n):
     construct_kinematics(kin, i), instant_centres(kin, i)
 make = {"polygons": construct_kinematics, "centres": instant_centres}[what]
-for _ in range(repetitions):
-    for i in range(kin.n):
-        make(kin, i)
+if cold:
+    if repetitions > COPIES:
+        sys.exit(f"guard_instructions: at most {COPIES} repetitions of a cold run")
+    copies = [problem.kinematics() for _ in range(COPIES)]
+    for one in copies[:repetitions]:
+        for i in range(one.n):
+            make(one, i)
+else:
+    for _ in range(repetitions):
+        for i in range(kin.n):
+            make(kin, i)

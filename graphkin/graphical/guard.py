@@ -40,7 +40,7 @@ from operator import sub as _sub
 import numpy as np
 
 from graphkin.kinematics import solve_kinematics
-from graphkin.kinematics.plan import plan_of
+from graphkin.kinematics.plan import plan_of, plan_solved
 from graphkin.notation import largest, num, polar_text
 
 AGREEMENT = 1e-9
@@ -149,13 +149,13 @@ class _Shape:
 
 
 def _plan(kin):
-    return plan_of(kin.mechanism)
+    return plan_solved(kin.mechanism, kin.groups)
 
 
 def plan(kin):
-    """The plan of ``kin``'s mechanism (:func:`~graphkin.kinematics.plan.plan_of`), found once per kinematics while
-    it lives (:func:`kept`): what the guard, the polygons and the instant centres read of the mechanism is kept in
-    it."""
+    """The plan of ``kin``'s mechanism, the one it was solved with (:func:`~graphkin.kinematics.plan.plan_solved`),
+    found once per kinematics while it lives (:func:`kept`): what the guard, the polygons and the instant centres
+    read of the mechanism is kept in it."""
     return kept(kin, "plan", _plan)
 
 
@@ -180,8 +180,9 @@ the whole table."""
 class _Table:
     """The analytical motion of one kinematics, a :class:`_Truth` per position asked for, kept.
 
-    The first :data:`FEW` positions asked for are worked out one at a time (:func:`_row`), the rest all at once,
-    numpy over the positions (:func:`_rows`): a row per position, of Python numbers, read as a :class:`_Truth`.
+    The first :data:`FEW` positions asked for are worked out one at a time (:func:`_row`: the velocities, and the
+    accelerations only once asked for), the rest all at once, numpy over the positions (:func:`_rows`): a row per
+    position, of Python numbers, read as a :class:`_Truth`.
     """
 
     __slots__ = ("shape", "truths", "rows")
@@ -191,8 +192,9 @@ class _Table:
         self.truths: dict = {}
         self.rows = None  # every position's row, once more than FEW were asked for
 
-    def truth(self, kin, i: int) -> _Truth:
-        """The :class:`_Truth` of position ``i`` of ``kin`` (the kinematics this table was made for)."""
+    def truth(self, kin, i: int, accelerations: bool = True) -> _Truth:
+        """The :class:`_Truth` of position ``i`` of ``kin`` (the kinematics this table was made for); its
+        accelerations too where ``accelerations`` (the instant centres need none)."""
         truth = self.truths.get(i)
         if truth is None:
             if self.rows is None and (len(self.truths) < FEW or kin.n <= FEW):
@@ -202,37 +204,45 @@ class _Table:
                     self.rows = _rows(self.shape, kin)
                 truth = _Truth(self.shape, self.rows[0][i], self.rows[1][i])
             self.truths[i] = truth
+        if accelerations and truth.a is None:
+            _accelerate(truth, kin, i)
         return truth
 
 
 def _row(shape: _Shape, kin, i: int) -> _Truth:
-    """The :class:`_Truth` of position ``i`` alone, in plain Python (as :func:`_rows` and :class:`_Truth` make it)."""
+    """The :class:`_Truth` of position ``i`` alone, in plain Python (as :func:`_rows` and :class:`_Truth` make it):
+    its velocities; its accelerations are :func:`_accelerate`'s, once asked for."""
     moving = shape.moving
     O = [kin.O[n].item(i) for n in moving]  # .item: a Python number, no numpy scalar made
     O.append(0j)
     e = [kin.e[n].item(i) for n in moving]
     v_O = [kin.v_O[n].item(i) for n in moving]
     v_O.append(0j)
-    a_O = [kin.a_O[n].item(i) for n in moving]
-    a_O.append(0j)
     w = [kin.omega[n].item(i) for n in moving]
     w.append(0.0)
-    al = [kin.alpha[n].item(i) for n in moving]
-    al.append(0.0)
     iw = [1j * x for x in w]
-    turn = [1j * y - x * x for x, y in zip(w, al)]
-    v, a = [], []
-    for j, p in zip(shape.columns, shape.local_list):  # each point e p from its link's origin [m]
-        v.append(v_O[j] + iw[j] * e[j] * p)
-        a.append(a_O[j] + turn[j] * e[j] * p)
+    v = [v_O[j] + iw[j] * e[j] * p for j, p in zip(shape.columns, shape.local_list)]  # e p: from its link's origin
     size = shape.size
     truth = _Truth.__new__(_Truth)
     truth.shape, truth.size, truth.index, truth.column = shape, size, shape.index, shape.column
-    truth.v, truth.a, truth.O, truth.v_O, truth.a_O, truth.iw, truth.turn, truth.w, truth.al = (v, a, O, v_O, a_O, iw,
-                                                                                                turn, w, al)
+    truth.v, truth.O, truth.v_O, truth.iw, truth.w, truth.e = v, O, v_O, iw, w, e
+    truth.a = None
     truth.v_scale = max(max(map(abs, v), default=0.0), max(map(abs, w)) * size)
-    truth.a_scale = max(max(map(abs, a), default=0.0), max(map(abs, al)) * size)
     return truth
+
+
+def _accelerate(truth: _Truth, kin, i: int) -> None:
+    """The accelerations of :func:`_row`'s ``truth`` of position ``i``, added to it."""
+    moving = truth.shape.moving
+    a_O = [kin.a_O[n].item(i) for n in moving]
+    a_O.append(0j)
+    al = [kin.alpha[n].item(i) for n in moving]
+    al.append(0.0)
+    turn = [1j * y - x * x for x, y in zip(truth.w, al)]
+    e = truth.e
+    a = [a_O[j] + turn[j] * e[j] * p for j, p in zip(truth.shape.columns, truth.shape.local_list)]
+    truth.a, truth.a_O, truth.turn, truth.al = a, a_O, turn, al
+    truth.a_scale = max(max(map(abs, a), default=0.0), max(map(abs, al)) * truth.size)
 
 
 def _rows(shape: _Shape, kin) -> tuple[list, list]:
@@ -267,11 +277,13 @@ class _Truth:
     ``v``, ``a``: the velocity and acceleration of each key of the :class:`_Shape` [m/s, m/s²], in its order
     (``index``); ``O``, ``v_O``, ``a_O``, ``iw``, ``turn``: each link's origin [m], its velocity and acceleration and
     the factors iω and iα − ω² that carry them to a point r = P − O away (v = v_O + iω r, a = a_O + (iα − ω²) r);
-    ``w``, ``al``: each link's ω and α; all of these in the order of ``column``.
+    ``w``, ``al``: each link's ω and α; all of these in the order of ``column``. A position worked out alone
+    (:func:`_row`) has its accelerations (``a`` … ``a_scale``) once asked for (``a`` None until then) and keeps
+    ``e``, each moving link's turn e^iθ, to work them out.
     """
 
     __slots__ = ("shape", "size", "index", "column", "v", "a", "O", "v_O", "a_O", "iw", "turn", "w", "al", "v_scale",
-                 "a_scale")
+                 "a_scale", "e")
 
     def __init__(self, shape: _Shape, z: list, x: list):
         K, L = len(shape.keys), len(shape.column)
@@ -288,33 +300,41 @@ class _Truth:
 
 
 _KEPT: dict = {}
-"""What was last worked out for a few kinematics, ``(id of the kinematics, what): (weakref to it, value)``, the
-oldest first: the guard's :class:`_Table`, the kinematics solved again without a problem's given values
-(:func:`derived`), what the polygons and the instant centres read of its mechanism. Every position of one
+"""What was worked out for each of the last few kinematics, ``id of the kinematics: (weakref to it, {what:
+value})``, the oldest first: the guard's :class:`_Table`, the kinematics solved again without a problem's given
+values (:func:`derived`), what the polygons and the instant centres read of its mechanism. Every position of one
 kinematics shares them."""
+
+KEPT = 16
+"""How many kinematics :func:`kept` keeps what it worked out for (the most recent)."""
 
 
 def kept(kin, what: str, make):
-    """``make(kin)``, worked out once for the kinematics ``kin`` while it lives (of the last few, each ``what``).
+    """``make(kin)``, worked out once for the kinematics ``kin`` while it lives (one of the last :data:`KEPT`).
 
     A :class:`~graphkin.kinematics.Kinematics` is frozen, so what is made of it (and of its mechanism) holds as
-    long as it does; finding it here is a dict's lookup, where a mechanism's plan (:func:`plan_of`) checks every
-    part of the mechanism for a change on each call.
+    long as it does; finding it here is two dicts' lookups, where a mechanism's plan (:func:`plan_of`) checks every
+    part of the mechanism for a change on each call. Everything kept for one kinematics is one entry, so a new
+    kinematics costs one weak reference however much is made of it.
     """
-    key = (id(kin), what)
-    ref, value = _KEPT.get(key, (None, None))
-    if ref is not None and ref() is kin:  # (an id is reused once its object is gone: the reference tells)
-        return value
-    value = make(kin)
-    _KEPT.pop(key, None)
-    while len(_KEPT) >= 16:
-        del _KEPT[next(iter(_KEPT))]
-    _KEPT[key] = (weakref.ref(kin), value)
+    key = id(kin)
+    entry = _KEPT.get(key)
+    if entry is not None and entry[0]() is kin:  # (an id is reused once its object is gone: the reference tells)
+        values = entry[1]
+        if what in values:
+            return values[what]
+    else:
+        values = {}
+        _KEPT.pop(key, None)
+        while len(_KEPT) >= KEPT:
+            del _KEPT[next(iter(_KEPT))]
+        _KEPT[key] = (weakref.ref(kin), values)
+    value = values[what] = make(kin)
     return value
 
 
-def _truth(kin, i: int) -> _Truth:
-    return kept(kin, "table", _Table).truth(kin, i)
+def _truth(kin, i: int, accelerations: bool = True) -> _Truth:
+    return kept(kin, "table", _Table).truth(kin, i, accelerations)
 
 
 class _Check:
@@ -329,7 +349,7 @@ class _Check:
     __slots__ = ("scale", "zs", "ts", "seen")
 
     def __init__(self, truth: _Truth):
-        self.scale = [truth.v_scale, truth.a_scale]
+        self.scale = [truth.v_scale, truth.a_scale if truth.a is not None else math.nan]  # (none: centres)
         self.zs: tuple = ([], [])
         self.ts: tuple = ([], [])
         self.seen: list = []  # (kind, where its values start in zs[kind], say, names): to put one in words
@@ -445,29 +465,28 @@ def _unknown_image(polygon: str, name: str, z, t, scale) -> str:
 
 # -- the quick look: whether everything agrees, in as few Python steps as there can be -------------------------
 # The same values, the same differences and the same scales as :class:`_Check` (so the same answer), gathered with
-# C loops (map, itemgetter) where a construction names its values in its usual order; only where something
+# C loops (map, itemgetter) where a construction names its values in its usual order, every difference of a kind in
+# one list, judged at once (every value of a kind is measured against the same scale); only where something
 # disagrees does :class:`_Check` go over them all again to find the worst and put it in words.
-def _gap(zs, ts) -> float:
-    """The largest |z − t| of two sequences in step (nan where any is nan; 0 where there are none)."""
-    gaps = list(map(abs, map(_sub, zs, ts)))
+def _agree(gaps: list, scale: float) -> bool:
+    """Whether the largest of ``gaps`` (each |z − t|) is within :data:`AGREEMENT` of ``scale``, as
+    :meth:`_Check.reason` judges it: a nan never is; against a scale of 0, only 0 is; no gaps always are."""
     if not gaps:
-        return 0.0
-    total = sum(gaps)
-    return max(gaps) if total == total else math.nan
-
-
-def _within(gap: float, scale: float) -> bool:
-    """Whether a largest difference ``gap`` is within :data:`AGREEMENT` of ``scale`` (as :meth:`_Check.reason`
-    judges it: a nan never is; against a scale of 0, only 0 is)."""
-    return gap / scale <= AGREEMENT if scale > 0 else gap == 0
+        return True
+    total = sum(gaps)  # a nan anywhere makes the sum nan (max() passes over one)
+    if total != total:
+        return False
+    top = max(gaps)
+    return top / scale <= AGREEMENT if scale > 0 else top == 0
 
 
 def _picker(shape: _Shape, what: str, keys: tuple, places: dict):
     """A function that picks the values of ``keys`` (in their order) out of a row list, by their ``places``: made
-    once per mechanism and order of keys (an itemgetter: a C loop)."""
+    once per mechanism and order of keys (an itemgetter: a C loop). ``what`` "G": the keys are links, each
+    standing for its centre of mass, ``(link, None)``."""
     pick = shape.pickers.get((what, keys))
     if pick is None:
-        at = [places[key] for key in keys]
+        at = [places[key] for key in keys] if what != "G" else [places[key, None] for key in keys]
         pick = shape.pickers[what, keys] = itemgetter(*at) if len(at) > 1 else partial(_one, at[0])
     return pick
 
@@ -476,32 +495,30 @@ def _one(k: int, row: list) -> tuple:
     return (row[k],)
 
 
-def _links_agree(truth: _Truth, rates: dict, true: list, scale: float) -> bool:
-    """A construction's ω (α) of each link against ``true`` (the truth's, by column), both times the size."""
-    if not rates:
-        return True
-    size = truth.size
-    ts = _picker(truth.shape, "link", tuple(rates), truth.column)(true)
-    return _within(_gap([x * size for x in rates.values()], [t * size for t in ts]), scale)
+def _link_gaps(gaps: list, truth: _Truth, rates: dict, true: list) -> None:
+    """Add to ``gaps`` the differences of a construction's ω (α) of each link from ``true`` (the truth's, by
+    column), both times the size."""
+    if rates:
+        size = truth.size
+        ts = _picker(truth.shape, "link", tuple(rates), truth.column)(true)
+        gaps.extend(map(abs, map(_sub, [x * size for x in rates.values()], [t * size for t in ts])))
 
 
-def _points_agree(truth: _Truth, points: dict, true: list, what: str, scale: float) -> bool:
-    """A construction's ``(x, y)`` of named points (``what`` "point": keyed ``(link, name)``) or of centres of mass
-    (``what`` "G": keyed by link) against ``true`` (the truth's, by key)."""
-    if not points:
-        return True
-    keys = tuple(points)
-    ts = _picker(truth.shape, what, keys if what == "point" else tuple((n, None) for n in keys), truth.index)(true)
-    return _within(_gap(starmap(complex, points.values()), ts), scale)
+def _point_gaps(gaps: list, truth: _Truth, points: dict, true: list, what: str) -> None:
+    """Add to ``gaps`` the differences of a construction's ``(x, y)`` of named points (``what`` "point": keyed
+    ``(link, name)``) or of centres of mass (``what`` "G": keyed by link) from ``true`` (the truth's, by key)."""
+    if points:
+        ts = _picker(truth.shape, what, tuple(points), truth.index)(true)
+        gaps.extend(map(abs, map(_sub, starmap(complex, points.values()), ts)))
 
 
 def _motion_agrees(truth: _Truth, c, where: dict, coriolis: dict) -> bool:
     """Whether :func:`motion_disagreement` finds nothing: every value of the polygons ``c`` within
     :data:`AGREEMENT` of its scale (a nan, or an image the check cannot place, never is)."""
-    index, column = truth.index, truth.column
+    index, column, O = truth.index, truth.column, truth.O
     scale = [truth.v_scale, truth.a_scale]
+    gaps: tuple = ([], [])
     # The images: each against its named point's value (or, a point that is no named one, the link's motion there).
-    found = []
     for kind, polygon, true, base, factor in ((0, "velocity", truth.v, truth.v_O, truth.iw),
                                               (1, "acceleration", truth.a, truth.a_O, truth.turn)):
         images = c.images[polygon]
@@ -514,7 +531,7 @@ def _motion_agrees(truth: _Truth, c, where: dict, coriolis: dict) -> bool:
                 t = 0j
             elif place[2] is None:
                 j = column[place[0]]
-                t = base[j] + factor[j] * (place[1] - truth.O[j])
+                t = base[j] + factor[j] * (place[1] - O[j])
             else:
                 t = true[index[place[2]]]
             zs.append(z)
@@ -523,7 +540,7 @@ def _motion_agrees(truth: _Truth, c, where: dict, coriolis: dict) -> bool:
             top = max(map(abs, ts))
             if top > scale[kind]:
                 scale[kind] = top
-        found.append((zs, ts))
+            gaps[kind].extend(map(abs, map(_sub, starmap(complex, zs), ts)))
     if coriolis:
         w, at = truth.w, truth.at
         vectors = [v for v in c.vectors("acceleration") if v.name in coriolis]
@@ -533,38 +550,33 @@ def _motion_agrees(truth: _Truth, c, where: dict, coriolis: dict) -> bool:
             top = max(map(abs, ts))
             if top > scale[1]:
                 scale[1] = top
-        if not _within(_gap(zs, ts), scale[1]):
-            return False
-    for kind in (0, 1):
-        zs, ts = found[kind]
-        if not _within(_gap(starmap(complex, zs), ts), scale[kind]):
-            return False
-    return (_links_agree(truth, c.omega, truth.w, scale[0]) and _links_agree(truth, c.alpha, truth.al, scale[1])
-            and _points_agree(truth, c.velocity, truth.v, "point", scale[0])
-            and _points_agree(truth, c.acceleration, truth.a, "point", scale[1])
-            and _points_agree(truth, c.v_G, truth.v, "G", scale[0])
-            and _points_agree(truth, c.a_G, truth.a, "G", scale[1]))
+            gaps[1].extend(map(abs, map(_sub, zs, ts)))
+    v, a = gaps
+    _link_gaps(v, truth, c.omega, truth.w)
+    _link_gaps(a, truth, c.alpha, truth.al)
+    _point_gaps(v, truth, c.velocity, truth.v, "point")
+    _point_gaps(a, truth, c.acceleration, truth.a, "point")
+    _point_gaps(v, truth, c.v_G, truth.v, "G")
+    _point_gaps(a, truth, c.a_G, truth.a, "G")
+    return _agree(v, scale[0]) and _agree(a, scale[1])
 
 
 def _centres_agree(truth: _Truth, ic) -> bool:
     """Whether :func:`centres_disagreement` finds nothing (as :func:`_motion_agrees` for the polygons)."""
     column, O, v_O, iw, w, size = truth.column, truth.O, truth.v_O, truth.iw, truth.w, truth.size
-    scale = truth.v_scale
-    pairs = ic.centres
-    zs = [(v_O[b] + iw[b] * (P - O[b])) - (v_O[a] + iw[a] * (P - O[a]))
-          for (a, b), P in zip([(column[a], column[b]) for a, b in pairs], starmap(complex, pairs.values()))]
-    if not _within(_gap(zs, [0j] * len(zs)), scale):
-        return False
+    gaps = []
+    for (a, b), (x, y) in ic.centres.items():  # v_b(P) − v_a(P), against 0
+        P, j, k = complex(x, y), column[a], column[b]
+        gaps.append(abs((v_O[k] + iw[k] * (P - O[k])) - (v_O[j] + iw[j] * (P - O[j]))))
     pairs = ic.at_infinity
     if pairs:
-        if not _within(_gap([(w[column[b]] - w[column[a]]) * size for a, b in pairs], [0.0] * len(pairs)), scale):
-            return False
+        gaps.extend([abs((w[column[b]] - w[column[a]]) * size) for a, b in pairs])
         d = [truth.at(b, 0j) - truth.at(a, 0j) for a, b in pairs]
-        if not _within(_gap([z.real * u[0] + z.imag * u[1] for z, u in zip(d, pairs.values())], [0.0] * len(pairs)),
-                       scale):
-            return False
-    return (_links_agree(truth, ic.omega, w, scale) and _points_agree(truth, ic.velocity, truth.v, "point", scale)
-            and _points_agree(truth, ic.v_G, truth.v, "G", scale))
+        gaps.extend([abs(z.real * u[0] + z.imag * u[1]) for z, u in zip(d, pairs.values())])
+    _link_gaps(gaps, truth, ic.omega, w)
+    _point_gaps(gaps, truth, ic.velocity, truth.v, "point")
+    _point_gaps(gaps, truth, ic.v_G, truth.v, "G")
+    return _agree(gaps, truth.v_scale)
 
 
 def motion_disagreement(kin, i: int, c, where: dict, coriolis: dict) -> str:
@@ -641,7 +653,7 @@ def centres_disagreement(kin, i: int, ic) -> str:
     must leave a and b only translating relative to each other (ω_a = ω_b), and across u (the relative velocity
     perpendicular to u). The ω and the velocities the centres give are compared as the polygons' are.
     """
-    truth = _truth(kin, i)
+    truth = _truth(kin, i, False)
     if _centres_agree(truth, ic):
         return ""
     check = _Check(truth)
@@ -690,9 +702,13 @@ def derived(kin, i: int):
     A problem may give values measured off its book's drawing (a link's angle θ, α, a_G: ``[given]``); the force
     route uses them, but they are not a motion the input produces (an angle read to the degree leaves a pin slightly
     apart on its two links), so no analytical route shares them. The polygons and instant centres are constructed
-    from the input motion alone: from the kinematics solved again without the given values (once for all the
-    positions, kept while ``kin`` is).
+    from the input motion alone: the kinematics the given values were put in (``kin.derived``), or, where that is
+    not known, the kinematics solved again without them (once for all the positions, kept while ``kin`` is).
     """
     if not kin.given:
         return kin, i
-    return kept(kin, "derived", _input_motion), i
+    own = kin.derived
+    if own is None or own.mechanism is not kin.mechanism or own.q is not kin.q or own.q_dot is not kin.q_dot or (
+            own.q_ddot is not kin.q_ddot):
+        own = kept(kin, "derived", _input_motion)  # (not the same input: solved again)
+    return own, i

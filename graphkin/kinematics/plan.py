@@ -124,6 +124,19 @@ def plan_of(mech: Mechanism) -> Plan:
     return plan
 
 
+def plan_solved(mech: Mechanism, groups: tuple) -> Plan:
+    """The plan kinematics of ``mech`` were solved with: the kept plan whose decomposition is ``groups`` (the
+    kinematics' own), found without checking every part of ``mech`` for a change since, else :func:`plan_of`.
+
+    For a reader of those kinematics (the graphical route): the plan describes the mechanism as they were solved
+    for, which is what they describe, where a mechanism changed in place since would not match them.
+    """
+    plan = _PLANS.get(id(mech))
+    if plan is not None and plan.groups is groups and groups and plan.ref() is mech:
+        return plan
+    return plan_of(mech)
+
+
 def kept_plan(mech: Mechanism) -> Plan | None:
     """The plan of ``mech`` if one is kept and still describes it, else None (none is made: for a cache of a
     caller's own, keyed by the plan, that must not cost a decomposition)."""

@@ -138,7 +138,18 @@ class Kinematics:
             r = O[link] - X
             v_O[link] = v_X + 1j * w * r
             a_O[link] = a_X + (1j * al - w**2) * r
-        return replace(self, theta=theta, e=e, O=O, v_O=v_O, a_O=a_O, given=dict(given), loops={})
+        out = replace(self, theta=theta, e=e, O=O, v_O=v_O, a_O=a_O, given=dict(given), loops={})
+        # The motion the input derives, which the given values stand in for (graphkin.graphical constructs from it).
+        object.__setattr__(out, "_derived", self.derived if self.given else self)
+        return out
+
+    @property
+    def derived(self) -> Kinematics | None:
+        """The kinematics whose derived values :meth:`with_given` replaced by given ones: the motion the input
+        produces, the same positions and mechanism (these kinematics themselves where nothing is given). None where
+        it is not known: kinematics with given values made otherwise than by :meth:`with_given` (a copy by
+        ``dataclasses.replace`` keeps only the fields)."""
+        return self.__dict__.get("_derived", None if self.given else self)
 
     def anchor(self, link: int) -> str | None:
         """The pin link ``link`` is turned about when its angle is given: its revolute joint to a link located before it."""
