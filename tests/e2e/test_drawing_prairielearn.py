@@ -2,7 +2,8 @@
 
 PrairieLearn itself does not run here. What it does with the export is done as its documentation says: server.py's
 ``generate`` fills ``data`` (through the export's own ``check_question.py``, which loads server.py as PrairieLearn
-does); ``question.html`` is rendered with Mustache (chevron, the Python implementation of the template language
+does, in a process of its own); ``question.html`` is rendered with Mustache (chevron, the Python implementation of
+the template language
 PrairieLearn renders questions with) — the question panel without the ``pl-submission-panel`` parts, the submission
 panel with those parts only — and served over HTTP with the export's ``clientFilesCourse`` at
 ``options.client_files_course_url``. The student draws with the mouse; the page's form fields are what PrairieLearn
@@ -14,10 +15,10 @@ from __future__ import annotations
 
 import functools
 import http.server
-import importlib.util
 import json
-import os
 import re
+import subprocess
+import sys
 import threading
 
 import pytest
@@ -37,23 +38,37 @@ class _Quiet(http.server.SimpleHTTPRequestHandler):
         pass
 
 
+SERVER = """
+import json, sys
+sys.path.insert(0, sys.argv[1])
+import check_question
+fn, data = json.load(sys.stdin)
+if fn == "pl_data":
+    data = check_question.pl_data(data)
+else:
+    check_question.load_server()[fn](data)
+json.dump(data, sys.stdout)
+"""
+
+
+def call(root, fn: str, data):
+    """server.py's ``fn(data)`` in a process of its own, as PrairieLearn runs it: the export's ``check_question``
+    puts the course's copy of graphkin first on that process's path, never on the tests'."""
+    out = subprocess.run([sys.executable, "-c", SERVER, str(root)], input=json.dumps([fn, data]), text=True,
+                         capture_output=True, cwd=root, timeout=300)
+    assert out.returncode == 0, out.stderr[-2000:]
+    return json.loads(out.stdout)
+
+
 @pytest.fixture(scope="module")
 def course(tmp_path_factory):
-    """The export, its server.py loaded as PrairieLearn loads it, and an HTTP server for its pages."""
+    """The export and an HTTP server for its pages."""
     root = tmp_path_factory.mktemp("pl")
     export(NAME, "prairielearn", root)
-    spec = importlib.util.spec_from_file_location("check_question", root / "check_question.py")
-    check = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(check)
-    cwd = os.getcwd()
-    try:
-        server = check.load_server()
-    finally:
-        os.chdir(cwd)  # load_server works in the question's folder, as PrairieLearn does
     handler = functools.partial(_Quiet, directory=str(root))
     httpd = http.server.ThreadingHTTPServer(("127.0.0.1", 0), handler)
     threading.Thread(target=httpd.serve_forever, daemon=True).start()
-    yield root, check, server, f"http://127.0.0.1:{httpd.server_address[1]}"
+    yield root, f"http://127.0.0.1:{httpd.server_address[1]}"
     httpd.shutdown()
 
 
@@ -81,9 +96,8 @@ def draw(page, box, element):
 
 
 def test_a_drawn_question_is_drawn_submitted_and_graded_by_server_py(browser, course, out):
-    root, check, server, url = course
-    data = check.pl_data(SEED)
-    server["generate"](data)
+    root, url = course
+    data = call(root, "generate", call(root, "pl_data", SEED))
     assert "check" not in data["params"]["tasks"]["R3i"] or json.loads(data["params"]["tasks"]["R3i"])["check"] is None
     v = variant(NAME, data["params"]["student"])
     right = {q.id: task_of(v, q.id, practice=True)["check"]["targets"] for q in v.exercise.questions}
@@ -107,9 +121,9 @@ def test_a_drawn_question_is_drawn_submitted_and_graded_by_server_py(browser, co
     assert not errors
     data["raw_submitted_answers"] = dict(posted)
     data["submitted_answers"] = dict(posted)
-    server["parse"](data)
+    data = call(root, "parse", data)
     assert not data["format_errors"]
-    server["grade"](data)
+    data = call(root, "grade", data)
     verdicts = {qid: json.loads(data["feedback"][f"{qid}__drawn"])["verdict"] for qid in drawn}
     assert verdicts == {"R3i": "slip", "F43": "correct", "I3": "correct", "polygon3": "correct"}
     assert 0 < data["score"] < 1
