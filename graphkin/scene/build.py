@@ -133,7 +133,9 @@ def _at_speed(problem, n: int, polygons: bool, motion: bool = False):
     scale = nice_scale(biggest, ARROW * size)  # N per metre of the drawing
     graphical = force_polygons(result, valid) if polygons else None
     gears = _gears(mech)
-    bodies = free_bodies(mech, links, forces, loads, inertias, scale, result.driver_name, gears)
+    drive = None if mech.driver.crank else (_masked(kin.position(mech.driver.link, mech.joint_between(
+        mech.frame, mech.driver.link).point), valid), _masked(result.driver_force(), valid))
+    bodies = free_bodies(mech, links, forces, loads, inertias, scale, result.driver_name, gears, drive)
     moving = motion_polygons(kin, valid) if motion and not kin.static else None
     out = {
         "schema": SCHEMA,
@@ -158,7 +160,7 @@ def _at_speed(problem, n: int, polygons: bool, motion: bool = False):
         "forces": [],
         "loads": [],
         "inertia": [],
-        "effort": _effort(result, valid, force, size),
+        "effort": {**_effort(result, valid, force, size), **_drive(kin, mech, valid, length)},
         "free_bodies": [{**body, "box": length.scalars(body["box"])} for body in bodies],
         "graphical": None,
         "motion": None,
@@ -168,6 +170,8 @@ def _at_speed(problem, n: int, polygons: bool, motion: bool = False):
     for f in forces:
         key = f.pop("key")
         f.update(at=length(f["at"]), analytical=force(f["analytical"]))
+        if "couple" in f:
+            f["couple"] = force.torque(f["couple"], size)
         if graphical is not None:
             f["graphical"] = force(graphical.forces[key])
         out["forces"].append(f)
@@ -232,6 +236,8 @@ def _speed(problem, n: int, out: dict, graphical) -> dict:
         rate = field["value"]
         a, b = _cycle(problem, n), _cycle(problem.at_speed(2 * rate), n)
         found = [parts(a.force(f["of"], f["on"]), b.force(f["of"], f["on"]), rate, 2 * rate) for f in out["forces"]]
+        couples = [parts(a.couple[(f["of"], f["on"])], b.couple[(f["of"], f["on"])], rate, 2 * rate)
+                   if "couple" in f else None for f in out["forces"]]
         effort = parts(a.effort, b.effort, rate, 2 * rate)
         valid = np.asarray(a.valid, bool)
         size = out["size"]
@@ -242,8 +248,11 @@ def _speed(problem, n: int, out: dict, graphical) -> dict:
         torque = (lambda r, T: r.torque(np.where(valid, T, np.nan), size)) if crank else \
             (lambda r, T: r.scalars(np.where(valid, T, np.nan)))
         field["superpose"] = {
-            "forces": [{"rest": rounders[0](_masked(F[0], valid)), "omega2": rounders[1](_masked(F[1], valid))}
-                       for F in found],
+            "forces": [{"rest": rounders[0](_masked(F[0], valid)), "omega2": rounders[1](_masked(F[1], valid)),
+                        **({} if C is None else {"couple": {"rest": rounders[0].torque(np.where(valid, C[0], np.nan), size),
+                                                            "omega2": rounders[1].torque(np.where(valid, C[1], np.nan),
+                                                                                         size)}})}
+                       for F, C in zip(found, couples)],
             "effort": {"rest": torque(rounders[0], effort[0]), "omega2": torque(rounders[1], effort[1])}}
         if graphical is not None:
             field["superpose"]["graphical"] = _graphical_parts(graphical.parts(force_polygons(b, np.asarray(
@@ -255,6 +264,7 @@ def _speed(problem, n: int, out: dict, graphical) -> dict:
             field["presolved"].append({
                 "value": fraction * field["value"],
                 "forces": [f["analytical"] for f in other["forces"]],
+                "couples": [f.get("couple") for f in other["forces"]],
                 "effort": other["effort"]["analytical"],
                 "inertia": [{k: inn[k] for k in ("force", "torque", "h", "line_point")} for inn in other["inertia"]],
                 "graphical": None if other["graphical"] is None else {
@@ -364,8 +374,13 @@ def _joint(result, joint, valid) -> dict:
     else:
         kind, at = "revolute", kin.position(j, joint.point)
     name = result.name_of(i, j)
-    return {"key": (i, j), "name": name, "label": label(name, "N"), "of": i, "on": j, "kind": kind,
-            "at": _masked(at, valid), "analytical": _masked(result.force(i, j), valid)}
+    out = {"key": (i, j), "name": name, "label": label(name, "N"), "of": i, "on": j, "kind": kind,
+           "at": _masked(at, valid), "analytical": _masked(result.force(i, j), valid)}
+    if kind == "prismatic":
+        # The couple the pair transmits beside its force drawn at the slider's point (the force's line lies
+        # e = C/N along the guide from it): a free body balances in moments only with it.
+        out["couple"] = np.where(valid, result.couple[(i, j)], np.nan)
+    return out
 
 
 def _loads(kin, valid) -> list[dict]:
@@ -466,6 +481,17 @@ def _effort(result, valid, force, size) -> dict:
     lo, hi = (min(float(finite.min()), 0.0), max(float(finite.max()), 0.0)) if finite.size else (0.0, 0.0)
     return {"name": result.driver_name, "label": label(result.driver_name, "N*m" if crank else "N"),
             "analytical": rounded.tolist(), "range": [lo, hi] if hi > lo else [-1.0, 1.0]}
+
+
+def _drive(kin, mech, valid, length) -> dict:
+    """A slider driver's force on its free body: where it acts (the slider's point) and the guide's unit direction
+    along which a positive effort F1j pushes, at every position (nothing for a crank, whose effort is a couple). The
+    page draws effort × direction there, so it follows the effort when the speed changes."""
+    if mech.driver.crank:
+        return {}
+    joint = mech.joint_between(mech.frame, mech.driver.link)
+    return {"at": length(_masked(kin.position(joint.slider, joint.point), valid)),
+            "direction": np.round(_masked(kin.guide_direction(joint), valid), 12).reshape(-1).tolist()}
 
 
 def _view(links, forces, loads, gears, scale, size) -> list[float]:

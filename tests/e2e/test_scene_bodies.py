@@ -52,7 +52,8 @@ def check_couples(got: dict, s: dict, b: dict, link: dict, i: int, tol: float):
         if T is None or T == 0:
             assert d is None, name
             continue
-        C = _xy(link["G"] if t["point"] == "G" else link["points"][t["point"]], i)
+        C = _xy(s["forces"][t["index"]]["at"] if t["of"] == "joint"
+                else link["G"] if t["point"] == "G" else link["points"][t["point"]], i)
         a0, a1 = (t["start"], t["start"] + t["span"]) if T > 0 else (t["start"] + t["span"], t["start"])
         M, A = d.split("A")
         start = [float(v) for v in M.strip("M ").split(",")]
@@ -104,6 +105,9 @@ def check_more(drawn: dict, s: dict, i: int, bodies: bool) -> list:
                 sf = s["forces"][f["index"]]
                 tail, F = _xy(sf["at"], i), f["sign"] * _xy(sf["analytical"], i)
                 expected.append((f["name"], tail, F))
+            if b["drive"] is not None:  # a slider driver's force: the effort along the guide's direction
+                expected.append((b["drive"]["name"], _xy(s["effort"]["at"], i),
+                                 s["effort"]["analytical"][i] * _xy(s["effort"]["direction"], i)))
             for k in b["loads"]:
                 ld = s["loads"][k]
                 if "force" in ld:
@@ -139,7 +143,8 @@ def check_more(drawn: dict, s: dict, i: int, bodies: bool) -> list:
     return drawn_couples
 
 
-@pytest.mark.parametrize("name", ["strip_cutter", "shaper_six_bar", "gearset", "slider_crank_friction"])
+@pytest.mark.parametrize("name", ["strip_cutter", "shaper_six_bar", "gearset", "slider_crank_friction",
+                                  "double_slider"])
 def test_free_bodies_and_motion_polygons_drawn_are_the_scene(browser, tmp_path, name):
     path = tmp_path / f"{name}.html"
     write_page(scene(catalog.load(name), 36, motion=True), path)
@@ -147,16 +152,22 @@ def test_free_bodies_and_motion_polygons_drawn_are_the_scene(browser, tmp_path, 
     try:
         s = _scene_of(page)
         slider = page.locator("[data-do=position]")
-        slider.fill("3")
+        first = min(3, s["n"] - 1)  # a slider driver is drawn at its own positions: the double slider's one
+        slider.fill(str(first))
         assert page.locator(".gk-bodies").is_hidden()  # off at first
-        check_more(page.evaluate(READ_MORE), s, 3, bodies=False)
+        check_more(page.evaluate(READ_MORE), s, first, bodies=False)
         page.check("[data-toggle=bodies]")
         couples = set()
-        for i in (3, 17, s["n"] - 1):
+        for i in sorted({min(k, s["n"] - 1) for k in (3, 17, s["n"] - 1)}):  # a slider driver: its own positions
             slider.fill(str(i))
             check_drawn(page.evaluate(READ_BACK), s, i)
             couples |= set(check_more(page.evaluate(READ_MORE), s, i, bodies=True))
-        assert s["effort"]["name"] in couples  # the driving torque on the crank's free body
+        if s["driver"]["kind"] == "crank":
+            assert s["effort"]["name"] in couples  # the driving torque on the crank's free body
+        else:  # the driving force on the slider's free body, an arrow (checked against the scene above)
+            assert [b["drive"]["name"] for b in s["free_bodies"] if b["drive"]] == [s["effort"]["name"]]
+        if name == "shaper_six_bar":
+            assert {t["name"] for b in s["free_bodies"] for t in b["torques"] if t["of"] == "joint"} <= couples
         if name == "gearset":
             assert {"T13", "T2i", "T3i"} <= couples  # an external torque; inertia torques alone (G on the pivot)
         page.uncheck("[data-toggle=motion]")
@@ -317,11 +328,12 @@ def test_tapping_a_force_reads_it_on_a_touch_screen(browser, tmp_path):
         context.close()
 
 
-def test_at_another_speed_the_free_bodies_follow_and_the_motion_polygons_go(browser, tmp_path):
-    """The free bodies refer to the forces, so they are drawn at the speed typed; the motion polygons are presolved
-    at the file's speed only, and each position is reached at its time × ω₀/ω."""
+@pytest.mark.parametrize("name", ["strip_cutter", "shaper_six_bar"])
+def test_at_another_speed_the_free_bodies_follow_and_the_motion_polygons_go(browser, tmp_path, name):
+    """The free bodies refer to the forces, so they are drawn at the speed typed (a sliding pair's couple too); the
+    motion polygons are presolved at the file's speed only, and each position is reached at its time × ω₀/ω."""
     path = tmp_path / "cutter.html"
-    write_page(scene(catalog.load("strip_cutter"), 36, motion=True), path)
+    write_page(scene(catalog.load(name), 36, motion=True), path)
     context, page, asked, errors = _open(browser, path)
     try:
         s = _scene_of(page)
@@ -338,6 +350,8 @@ def test_at_another_speed_the_free_bodies_follow_and_the_motion_polygons_go(brow
             check_more(page.evaluate(READ_MORE), live, i, bodies=True)
         # The live forces are not the file's: the free bodies moved with them.
         assert live["forces"][0]["analytical"] != s["forces"][0]["analytical"]
+        couples = [k for k, f in enumerate(s["forces"]) if any(f.get("couple") or [])]  # the shaper's block's
+        assert len(couples) == (name == "shaper_six_bar") and all(live["forces"][k]["couple"] != s["forces"][k]["couple"] for k in couples)
         assert page.locator(".gk-motions").is_hidden()
         assert errors == []
     finally:

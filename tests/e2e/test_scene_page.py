@@ -294,26 +294,33 @@ def test_a_position_the_linkage_cannot_reach_shows_why(browser, tmp_path):
 
 MOVES = """([points, wait]) => new Promise((done) => {
   // Pointer moves as Chromium reports them at once ("pointerrawupdate"), all in one task: the position drawn after
-  // each, then the one drawn at the next frame.
+  // each, then the one drawn at the next frame. The page's clock is the test's: each drawing takes `wait` ms of it
+  // (the position's text, which every drawing writes, advances it), whatever the machine's load makes of the real
+  // drawing's time, so which moves the budget holds back is decided by `wait` alone.
   const svg = document.querySelector("svg.gk-mechanism");
   const view = window.graphkin.view;
   const M = svg.getScreenCTM();
-  if (wait) {
-    // A drawing this slow: the position's text, which every drawing writes, takes `wait` ms to write.
-    const where = document.querySelector("[data-do=where]");
-    const own = Object.getOwnPropertyDescriptor(Node.prototype, "textContent");
-    Object.defineProperty(where, "textContent", { configurable: true, set(v) {
-      for (const t = performance.now(); performance.now() - t < wait;);
-      own.set.call(this, v);
-    } });
-  }
+  let clock = 0;
+  const now = performance.now;
+  performance.now = () => clock;
+  const where = document.querySelector("[data-do=where]");
+  const own = Object.getOwnPropertyDescriptor(Node.prototype, "textContent");
+  Object.defineProperty(where, "textContent", { configurable: true, set(v) {
+    clock += wait;
+    own.set.call(this, v);
+  } });
   const shown = points.map(([x, y]) => {
     const p = new DOMPoint(x, -y).matrixTransform(M);
     svg.dispatchEvent(new PointerEvent("pointerrawupdate", {clientX: p.x, clientY: p.y, pointerId: 1,
       pointerType: "mouse", bubbles: true}));
     return view.index;
   });
-  requestAnimationFrame(() => done([shown, view.index]));
+  requestAnimationFrame(() => {
+    const index = view.index;  // the move held for the frame is drawn in the page's own callback, before this one
+    performance.now = now;
+    delete where.textContent;
+    done([shown, index]);
+  });
 })"""
 
 

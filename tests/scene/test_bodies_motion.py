@@ -23,11 +23,23 @@ def _xy(flat, i):
     return None if flat[2 * i] is None else np.array(flat[2 * i:2 * i + 2])
 
 
-@pytest.mark.parametrize("name", ["strip_cutter", "shaper_six_bar", "slider_crank_friction", "gearset",
-                                  "engine_double_acting_khurmi"])
+def _drive(s: dict, b: dict, i: int):
+    """A slider driver's force on its free body at position i [N], as the page draws it: the effort times the guide's
+    direction the scene gives (None on every other free body)."""
+    if b.get("drive") is None:
+        return None
+    return s["effort"]["analytical"][i] * _xy(s["effort"]["direction"], i)
+
+
+BALANCED = ["strip_cutter", "shaper_six_bar", "slider_crank_friction", "gearset", "engine_double_acting_khurmi",
+            "double_slider", "spring_link_hibbeler", "single_link", "epicyclic_khurmi", "fourbar_two_loads_makdin"]
+
+
+@pytest.mark.parametrize("name", BALANCED)
 def test_each_free_body_balances_with_the_forces_it_refers_to(name):
-    """Σ of the joint forces (times the scene's sign), the loads and the inertia force on each moving link is 0: the
-    references and signs say which force acts on which link. A link driven by a torque balances its forces too."""
+    """Σ of the joint forces (times the scene's sign), the loads, the inertia force and a slider driver's driving
+    force on each moving link is 0: the references and signs say which force acts on which link. A link driven by a
+    torque balances its forces too."""
     s = _read(gk.load(name), 24)
     moving = [lk["number"] for lk in s["links"] if lk["number"] != s["frame"]]
     assert [b["link"] for b in s["free_bodies"]] == moving
@@ -39,8 +51,7 @@ def test_each_free_body_balances_with_the_forces_it_refers_to(name):
             assert f["sign"] == (1 if sf["on"] == b["link"] else -1)
             other = sf["of"] if f["sign"] == 1 else sf["on"]
             assert f["name"][1:].replace(",", "") == f"{other}{b['link']}"
-        if s["driver"]["kind"] == "slider" and s["driver"]["link"] == b["link"]:
-            continue  # the driving force along the guide is not one of the scene's arrows
+        assert (b["drive"] is not None) == (s["driver"]["kind"] == "slider" and s["driver"]["link"] == b["link"])
         for i in range(s["n"]):
             if not s["valid"][i]:
                 continue
@@ -49,6 +60,8 @@ def test_each_free_body_balances_with_the_forces_it_refers_to(name):
                                 np.zeros(2))
             if b["inertia"] is not None:
                 total = total + _xy(s["inertia"][b["inertia"]]["force"], i)
+            if b["drive"] is not None:
+                total = total + _drive(s, b, i)
             np.testing.assert_allclose(total, 0, atol=1e-6 * top, err_msg=f"link {b['link']} at {i}")
 
 
@@ -64,25 +77,26 @@ def couple_value(s: dict, t: dict, i: int):
         return s["effort"]["analytical"][i]
     if t["of"] == "load":
         return s["loads"][t["index"]]["torque"][i]
+    if t["of"] == "joint":
+        C = s["forces"][t["index"]]["couple"][i]
+        return None if C is None else t["sign"] * C
     inn = s["inertia"][t["index"]]
     return inn["torque"][i] if _xy(inn["line_point"], i) is None else None
 
 
-@pytest.mark.parametrize("name", ["strip_cutter", "gearset", "single_link", "epicyclic_khurmi", "shaper_six_bar",
-                                  "fourbar_two_loads_makdin"])
+@pytest.mark.parametrize("name", BALANCED)
 def test_each_free_body_balances_in_moments_with_its_couples(name):
-    """Σ M about the origin on each link without a sliding pair is 0 with the couples the scene draws on it: the
-    driving torque on the crank, each external torque, and the inertia torque where it acts alone (elsewhere the
-    resultant's offset line carries it). The printed free body (graphkin.draw.fbd) draws the same couples."""
+    """Σ M about the origin on each link is 0 with the forces and couples the scene draws on it: the driving torque on
+    the crank (or a slider driver's force at its point), each external torque, a sliding pair's couple beside its
+    force at the slider's point, and the inertia torque where it acts alone (elsewhere the resultant's offset line
+    carries it). The printed free body (graphkin.draw.fbd) draws the same couples."""
     s = _read(gk.load(name), 24)
     top = max(np.nanmax(np.abs(np.array(f["analytical"], float))) for f in s["forces"])
     checked = 0
     for b in s["free_bodies"]:
-        if any(s["forces"][f["index"]]["kind"] == "prismatic" for f in b["forces"]):
-            continue  # the scene draws a sliding pair's force at the slider's point, without its couple
         names = [t["name"] for t in b["torques"]]
         if s["driver"]["link"] == b["link"]:
-            assert s["effort"]["name"] in names
+            assert s["effort"]["name"] in (names if s["driver"]["kind"] == "crank" else [b["drive"]["name"]])
         for i in range(s["n"]):
             if not s["valid"][i]:
                 continue
@@ -95,12 +109,14 @@ def test_each_free_body_balances_in_moments_with_its_couples(name):
                 if _xy(inn["line_point"], i) is not None:
                     M += _cross(_xy(inn["line_point"], i), _xy(inn["force"], i))
             M += sum(v for v in (couple_value(s, t, i) for t in b["torques"]) if v is not None)
+            if b["drive"] is not None:
+                M += _cross(_xy(s["effort"]["at"], i), _drive(s, b, i))
             np.testing.assert_allclose(M, 0, atol=1e-6 * top * s["size"], err_msg=f"link {b['link']} at {i}")
             checked += 1
     assert checked
 
 
-@pytest.mark.parametrize("name", ["strip_cutter", "shaper_six_bar", "gearset"])
+@pytest.mark.parametrize("name", ["strip_cutter", "shaper_six_bar", "gearset", "double_slider"])
 def test_a_free_bodys_box_holds_its_link_the_joint_forces_and_couples_not_the_far_inertia_line(name):
     s = _read(gk.load(name), 24)
     scale = s["scales"]["force"]
@@ -112,8 +128,11 @@ def test_a_free_bodys_box_holds_its_link_the_joint_forces_and_couples_not_the_fa
             for f in b["forces"]:
                 sf = s["forces"][f["index"]]
                 points += [_xy(sf["at"], i), _xy(sf["at"], i) + f["sign"] * _xy(sf["analytical"], i) / scale]
+            if b["drive"] is not None:
+                points += [_xy(s["effort"]["at"], i), _xy(s["effort"]["at"], i) + _drive(s, b, i) / scale]
             for t in b["torques"]:
-                C = _xy(link["G"] if t["point"] == "G" else link["points"][t["point"]], i)
+                C = _xy(s["forces"][t["index"]]["at"] if t["of"] == "joint"
+                        else link["G"] if t["point"] == "G" else link["points"][t["point"]], i)
                 points += [C - t["radius"], C + t["radius"]]
             for P in points:
                 assert x0 <= P[0] <= x1 and y0 <= P[1] <= y1

@@ -48,6 +48,11 @@ def test_superposed_forces_equal_a_direct_solve_at_another_speed(name, factor):
         # What the page computes from the scene's numbers: F_rest + ω² F_ω².
         found = _flat(part["rest"]) + rate**2 * _flat(part["omega2"])
         np.testing.assert_allclose(found, r.force(f["of"], f["on"]).reshape(-1), rtol=0, atol=1e-9 * top)
+        if "couple" in part:  # a sliding pair's couple, drawn on its free bodies, follows the same way
+            found = _flat(part["couple"]["rest"]) + rate**2 * _flat(part["couple"]["omega2"])
+            np.testing.assert_allclose(found, r.couple[(f["of"], f["on"])], rtol=0, atol=1e-9 * top * s["size"])
+    assert [("couple" in part) for part in speed["superpose"]["forces"]] == [f["kind"] == "prismatic"
+                                                                              for f in s["forces"]]
     effort = speed["superpose"]["effort"]
     found = _flat(effort["rest"]) + rate**2 * _flat(effort["omega2"])
     arm = s["size"] if s["driver"]["kind"] == "crank" else 1.0
@@ -73,9 +78,13 @@ def test_presolved_speeds_equal_direct_solves(name):
     for p in speed["presolved"]:
         r = _direct(problem, p["value"])
         top = max(float(np.nanmax(np.hypot(*r.force(f["of"], f["on"]).T))) for f in s["forces"])
-        for f, F in zip(s["forces"], p["forces"]):
+        for f, F, C in zip(s["forces"], p["forces"], p["couples"]):
             np.testing.assert_allclose(_flat(F), r.force(f["of"], f["on"]).reshape(-1), rtol=0,
                                        atol=2 * PRECISION * top)
+            assert (C is not None) == (f["kind"] == "prismatic")
+            if C is not None:
+                np.testing.assert_allclose(_flat(C), r.couple[(f["of"], f["on"])], rtol=0,
+                                           atol=2 * PRECISION * top * s["size"])
         for inn, found in zip(s["inertia"], p["inertia"]):
             np.testing.assert_allclose(_flat(found["force"]), r.inertia(inn["link"]).F.reshape(-1), rtol=0,
                                        atol=2 * PRECISION * top)

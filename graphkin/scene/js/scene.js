@@ -373,8 +373,10 @@ function drawPolygons(parts, scene, i) {
 // scene's force scale, in a box that holds it over the whole cycle; the resultant's offset from G (dashed) and its
 // arrow are cut at the box where its line lies outside. Its couples are curved arrows on the rings the scene gives
 // (centre, radius, start, span), counter-clockwise for a positive value of the array each refers to: the driving
-// effort, a load's torque, or the inertia torque where the scene's resultant has no line (its force vanishes).
-const COUPLE = { effort: "joint", load: "load", inertia: "inertia" };
+// effort, a load's torque, a sliding pair's couple (times the sign it states), or the inertia torque where the
+// scene's resultant has no line (its force vanishes). A slider driver's free body carries its driving force: the
+// effort times the guide's direction the scene gives, at the slider's point.
+const COUPLE = { effort: "joint", load: "load", inertia: "inertia", joint: "joint" };
 
 function couple(svg, t, head, font) {
   const g = el("g", { class: "gk-couple", "data-name": t.name }, svg);
@@ -391,6 +393,10 @@ function couple(svg, t, head, font) {
 function coupleValue(sc, t, i) {
   if (t.of === "effort") return sc.effort.analytical[i];
   if (t.of === "load") return sc.loads[t.index].torque[i];
+  if (t.of === "joint") {
+    const C = sc.forces[t.index].couple[i];
+    return C === null ? null : t.sign * C;
+  }
   const inn = sc.inertia[t.index];
   return at(inn.line_point, i) === null ? inn.torque[i] : null;
 }
@@ -438,6 +444,16 @@ function bodies(view, scene, read) {
       arrows.push({ a, tail: (sc, i) => at(sc.forces[f.index].at, i), vector });
       read.set(a.g, (sc, i) => [f.name, vector(sc, i), "force"]);
     }
+    if (b.drive) {
+      const a = arrow(svg, INK.joint, head("joint"), b.drive.name, b.drive.label, font);
+      const vector = (sc, i) => {
+        const u = at(scene.effort.direction, i);
+        const P = sc.effort.analytical[i];
+        return u === null || P === null ? null : [P * u[0], P * u[1]];
+      };
+      arrows.push({ a, tail: (sc, i) => at(scene.effort.at, i), vector });
+      read.set(a.g, (sc, i) => [b.drive.name, vector(sc, i), "force"]);
+    }
     for (const j of b.loads.filter((k) => scene.loads[k].force)) {
       const ld = scene.loads[j];
       const a = arrow(svg, INK.load, head("load"), ld.name, ld.label, font);
@@ -457,7 +473,8 @@ function bodies(view, scene, read) {
     const couples = (b.torques || []).map((t) => {
       const c = couple(svg, t, head, font);
       read.set(c.g, (sc, i) => [t.name, coupleValue(sc, t, i), "torque"]);
-      return { t, c, centre: t.point === "G" ? link.G : link.points[t.point] };
+      const centre = t.of === "joint" ? scene.forces[t.index].at : t.point === "G" ? link.G : link.points[t.point];
+      return { t, c, centre };
     });
     const caption = html("figcaption", {}, box);
     const inertia = b.inertia !== null ? scene.inertia[b.inertia].name : null;

@@ -70,6 +70,10 @@ export function setRate(view, base, rate) {
     const part = sp.superpose ? sp.superpose.forces[j] : null;
     f.analytical = own ? base.forces[j].analytical : chosen ? chosen.forces[j]
       : superposed(part.rest, part.omega2, r2);
+    if (base.forces[j].couple) {
+      f.couple = own ? base.forces[j].couple : chosen ? chosen.couples[j]
+        : superposed(part.couple.rest, part.couple.omega2, r2);
+    }
     f.graphical = own ? base.forces[j].graphical : !graphical ? undefined : chosen ? chosen.graphical.forces[j]
       : superposed(sg.forces[j].rest, sg.forces[j].omega2, r2);
   });
