@@ -115,7 +115,8 @@ def test_the_wheel_and_the_sdist_carry_the_licence_and_the_sdist_no_tests(dist):
     with zipfile.ZipFile(wheel) as z:
         names = z.namelist()
     assert any(n.endswith("dist-info/licenses/LICENSE") for n in names)
-    drawing = {f"graphkin/scene/js/{name}" for name in ("scene.js", "speed.js", "widget.js", "scene.css", "page.html")}
+    drawing = {f"graphkin/scene/js/{name}" for name in ("dom.js", "scene.js", "speed.js", "widget.js", "scene.css",
+                                                          "page.html", "draw.js", "match.js")}
     assert drawing <= set(names)  # the browser's drawing
     metadata = next(n for n in names if n.endswith("dist-info/METADATA"))
     with zipfile.ZipFile(wheel) as z:

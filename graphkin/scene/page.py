@@ -1,7 +1,7 @@
 """A scene as compact JSON, and as one self-contained HTML page that draws it (no network, no build step).
 
-The page is ``js/page.html`` with the scene's JSON, the drawing module (:func:`module`: ``js/speed.js``,
-``js/scene.js`` and ``js/widget.js`` as one ES module) and its styles (``js/scene.css``) put in their place: one file
+The page is ``js/page.html`` with the scene's JSON, the drawing module (:func:`module`: ``js/dom.js``,
+``js/speed.js``, ``js/scene.js`` and ``js/widget.js`` as one ES module) and its styles (``js/scene.css``) put in their place: one file
 a student opens from disk, an LMS serves or an e-mail carries, that asks for nothing else. The JSON goes in a
 ``<script type="application/json">`` element, with every ``<`` written ``\\u003c`` so that no string of the scene
 (a title, a reason) can close the element.
@@ -38,10 +38,10 @@ def asset(name: str) -> str:
     return resources.files("graphkin.scene").joinpath("js", name).read_text(encoding="utf-8")
 
 
-MODULES = ("speed.js", "scene.js", "widget.js")
+MODULES = ("dom.js", "speed.js", "scene.js", "widget.js")
 """The drawing's ES modules, each importing only from those before it: :func:`module` joins them."""
 
-DRAW_MODULES = ("match.js", "draw.js", "drawwidget.js")
+DRAW_MODULES = ("dom.js", "match.js", "draw.js", "drawwidget.js")
 """The student's drawing (issue 38): the practice page's and the drawn answer widget's modules, joined the same way
 (:func:`module` with ``names=DRAW_MODULES``)."""
 

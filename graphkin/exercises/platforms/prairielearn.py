@@ -54,7 +54,7 @@ STUDENT_PREFIX = "pl-"
 DRAWING_FILES = "graphkin"
 """The folder of ``clientFilesCourse`` that holds the drawing's module and styles, for drawn questions."""
 
-DRAWING_MODULES = ("match.js", "draw.js", "pldrawing.js")
+DRAWING_MODULES = ("dom.js", "match.js", "draw.js", "pldrawing.js")
 """The ES modules joined into ``clientFilesCourse/graphkin/drawing.mjs``: the student's drawing and the bridge
 that puts each drawn question's box on PrairieLearn's page (``graphkin/scene/js/pldrawing.js``)."""
 

@@ -4,29 +4,14 @@
 // the task's scale, and what it hands back (`drawing()`) is where the student clicked, in the space's SI units.
 // A practice page's Check matches the drawing against the targets the task carries (match.js); the notebook's Check
 // asks the kernel (drawwidget.js).
+import { el, html } from "./dom.js";
 import { verdict } from "./match.js";
 
-const NS = "http://www.w3.org/2000/svg";
 const SNAP_MM = 2; // a click within this many millimetres of drawing of a snap point lands on it
 const SNAP_ANGLE = (2 * Math.PI) / 180; // a line within 2° of a snap direction takes it
 const STEP_MM = 1; // an arrow key moves the cursor this far; with Shift ten times as far
 const DRAG_MM = 1; // a press and release farther apart than this draw a line or vector in one stroke
 const COLOURS = { given: "#455a64", known: "#8d6e63", drawn: "#1565c0", fault: "#c62828", right: "#2e7d32" };
-
-function svg(tag, attrs, parent) {
-  const e = document.createElementNS(NS, tag);
-  for (const [k, v] of Object.entries(attrs || {})) e.setAttribute(k, v);
-  if (parent) parent.appendChild(e);
-  return e;
-}
-
-function html(tag, attrs, parent, text) {
-  const e = document.createElement(tag);
-  for (const [k, v] of Object.entries(attrs || {})) e.setAttribute(k, v);
-  if (text !== undefined) e.textContent = text;
-  if (parent) parent.appendChild(e);
-  return e;
-}
 
 const gapOf = (p, q) => Math.hypot(p[0] - q[0], p[1] - q[1]);
 const NEEDS = { line: 2, vector: 2, point: 1 };
@@ -68,31 +53,31 @@ export function drawTask(root, task, options = {}) {
   const box = html("div", { class: "gk-draw" }, root);
   html("p", { class: "gk-ask" }, box, task.ask);
   const status = html("p", { class: "gk-draw-status", "aria-live": "polite" }, box);
-  const sv = svg("svg", { class: "gk-draw-svg", width: `${W}mm`, height: `${H}mm`, viewBox: `0 0 ${W} ${H}`,
+  const sv = el("svg", { class: "gk-draw-svg", width: `${W}mm`, height: `${H}mm`, viewBox: `0 0 ${W} ${H}`,
     tabindex: "0", role: "application",
     "aria-label": `Drawing area for ${task.question}: ${task.ask}. Arrow keys move the cursor (Shift: ten times ` +
       "farther), Tab goes to the next snap point, Enter or Space places a point (with Alt: not snapped), Ctrl+Z " +
       "undoes." }, box);
-  const defs = svg("defs", {}, sv);
+  const defs = el("defs", {}, sv);
   for (const [name, colour] of Object.entries(COLOURS)) {
-    const m = svg("marker", { id: `gk-head-${name}-${task.question}`, viewBox: "0 0 10 10", refX: "10", refY: "5",
+    const m = el("marker", { id: `gk-head-${name}-${task.question}`, viewBox: "0 0 10 10", refX: "10", refY: "5",
       markerWidth: "3.5", markerHeight: "3.5", markerUnits: "userSpaceOnUse", orient: "auto-start-reverse" }, defs);
-    svg("path", { d: "M0,0 L10,5 L0,10 z", fill: colour }, m);
+    el("path", { d: "M0,0 L10,5 L0,10 z", fill: colour }, m);
   }
   const head = (name) => `url(#gk-head-${name}-${task.question})`;
-  svg("rect", { x: 0, y: 0, width: W, height: H, fill: "#fff", stroke: "#ccc", "stroke-width": 0.3 }, sv);
-  const fixed = svg("g", { class: "gk-given" }, sv);
+  el("rect", { x: 0, y: 0, width: W, height: H, fill: "#fff", stroke: "#ccc", "stroke-width": 0.3 }, sv);
+  const fixed = el("g", { class: "gk-given" }, sv);
   // A name as a book sets it: "a^c_B3B2" is a with c above and B3B2 below, "F43′" as it is.
   const label = (text, p, parent, colour) => {
-    const t = svg("text", { x: p[0] + 1, y: p[1] - 1, "font-size": 3.2, fill: colour, class: "gk-label" }, parent);
+    const t = el("text", { x: p[0] + 1, y: p[1] - 1, "font-size": 3.2, fill: colour, class: "gk-label" }, parent);
     const m = /^([^_^]+)(?:\^([^_]+))?(?:_(.+))?$/.exec(text);
     if (!m || (!m[2] && !m[3])) {
       t.textContent = text;
       return t;
     }
     t.textContent = m[1];
-    if (m[2]) svg("tspan", { "baseline-shift": "super", "font-size": 2.2 }, t).textContent = m[2];
-    if (m[3]) svg("tspan", { "baseline-shift": "sub", "font-size": 2.2 }, t).textContent = m[3];
+    if (m[2]) el("tspan", { "baseline-shift": "super", "font-size": 2.2 }, t).textContent = m[2];
+    if (m[3]) el("tspan", { "baseline-shift": "sub", "font-size": 2.2 }, t).textContent = m[3];
     return t;
   };
   const shown = task.shown || {};
@@ -100,36 +85,36 @@ export function drawTask(root, task, options = {}) {
     const ends = across(l.through, l.angle, task.view);
     if (!ends) continue;
     const [a, b] = ends.map(mm);
-    svg("line", { x1: a[0], y1: a[1], x2: b[0], y2: b[1], stroke: COLOURS.known, "stroke-width": 0.35,
+    el("line", { x1: a[0], y1: a[1], x2: b[0], y2: b[1], stroke: COLOURS.known, "stroke-width": 0.35,
       "stroke-dasharray": "3 1 0.6 1", "data-known": l.name }, fixed);
     label(l.name, [a[0] + 0.85 * (b[0] - a[0]), a[1] + 0.85 * (b[1] - a[1])], fixed, COLOURS.known);
   }
   for (const g of shown.segments || []) {
     const [a, b] = [mm(g.from), mm(g.to)];
-    svg("line", { x1: a[0], y1: a[1], x2: b[0], y2: b[1], stroke: COLOURS.given, "stroke-width": 0.8,
+    el("line", { x1: a[0], y1: a[1], x2: b[0], y2: b[1], stroke: COLOURS.given, "stroke-width": 0.8,
       "stroke-linecap": "round", "data-segment": g.name }, fixed);
   }
   for (const v of shown.vectors || []) {
     const [a, b] = [mm(v.from), mm(v.to)];
-    svg("line", { x1: a[0], y1: a[1], x2: b[0], y2: b[1], stroke: COLOURS.given, "stroke-width": 0.5,
+    el("line", { x1: a[0], y1: a[1], x2: b[0], y2: b[1], stroke: COLOURS.given, "stroke-width": 0.5,
       "marker-end": head("given"), "data-vector": v.name }, fixed);
     label(v.name, [(a[0] + b[0]) / 2, (a[1] + b[1]) / 2], fixed, COLOURS.given);
   }
   for (const p of shown.points || []) {
     const q = mm(p.at);
-    svg("circle", { cx: q[0], cy: q[1], r: 0.8, fill: COLOURS.given, "data-point": p.name }, fixed);
+    el("circle", { cx: q[0], cy: q[1], r: 0.8, fill: COLOURS.given, "data-point": p.name }, fixed);
     label(p.name, q, fixed, COLOURS.given);
   }
-  const scaleText = svg("text", { x: 1.5, y: H - 1.5, "font-size": 3, fill: "#555", class: "gk-scale" }, sv);
+  const scaleText = el("text", { x: 1.5, y: H - 1.5, "font-size": 3, fill: "#555", class: "gk-scale" }, sv);
   scaleText.textContent = `scale ${task.scale.text}`;
-  const rightLayer = svg("g", { class: "gk-right" }, sv);
-  const drawnLayer = svg("g", { class: "gk-drawn" }, sv);
-  const hint = svg("g", { class: "gk-hint", "pointer-events": "none" }, sv);
-  const ring = svg("circle", { r: SNAP_MM, fill: "none", stroke: "#f9a825", "stroke-width": 0.4, visibility: "hidden",
+  const rightLayer = el("g", { class: "gk-right" }, sv);
+  const drawnLayer = el("g", { class: "gk-drawn" }, sv);
+  const hint = el("g", { class: "gk-hint", "pointer-events": "none" }, sv);
+  const ring = el("circle", { r: SNAP_MM, fill: "none", stroke: "#f9a825", "stroke-width": 0.4, visibility: "hidden",
     class: "gk-snap-ring" }, hint);
-  const rubber = svg("line", { stroke: COLOURS.drawn, "stroke-width": 0.3, "stroke-dasharray": "1 1",
+  const rubber = el("line", { stroke: COLOURS.drawn, "stroke-width": 0.3, "stroke-dasharray": "1 1",
     visibility: "hidden" }, hint);
-  const cursor = svg("path", { stroke: "#000", "stroke-width": 0.25, fill: "none", visibility: "hidden",
+  const cursor = el("path", { stroke: "#000", "stroke-width": 0.25, fill: "none", visibility: "hidden",
     class: "gk-cursor" }, hint);
 
   const bar = html("div", { class: "gk-draw-controls" }, box);
@@ -240,9 +225,9 @@ export function drawTask(root, task, options = {}) {
     const common = { stroke: COLOURS[colour], "stroke-width": 0.5, ...attrs };
     if (e.kind === "point") {
       const q = mm(e.at);
-      const g = svg("g", { "data-name": e.name }, parent);
-      svg("circle", { cx: q[0], cy: q[1], r: 1.2, fill: "none", ...common }, g);
-      svg("path", { d: `M${q[0] - 1.6},${q[1]} h3.2 M${q[0]},${q[1] - 1.6} v3.2`, ...common,
+      const g = el("g", { "data-name": e.name }, parent);
+      el("circle", { cx: q[0], cy: q[1], r: 1.2, fill: "none", ...common }, g);
+      el("path", { d: `M${q[0] - 1.6},${q[1]} h3.2 M${q[0]},${q[1] - 1.6} v3.2`, ...common,
         "stroke-width": 0.25 }, g);
       label(e.name, q, g, COLOURS[colour]);
       return g;
@@ -250,18 +235,18 @@ export function drawTask(root, task, options = {}) {
     if (e.kind === "line") {
       const [p, q] = e.through;
       const ends = across(p, Math.atan2(q[1] - p[1], q[0] - p[0]), task.view);
-      const g = svg("g", { "data-name": e.name }, parent);
+      const g = el("g", { "data-name": e.name }, parent);
       if (ends) {
         const [a, b] = ends.map(mm);
-        svg("line", { x1: a[0], y1: a[1], x2: b[0], y2: b[1], ...common }, g);
+        el("line", { x1: a[0], y1: a[1], x2: b[0], y2: b[1], ...common }, g);
       }
-      for (const r of [p, q].map(mm)) svg("circle", { cx: r[0], cy: r[1], r: 0.6, fill: COLOURS[colour] }, g);
+      for (const r of [p, q].map(mm)) el("circle", { cx: r[0], cy: r[1], r: 0.6, fill: COLOURS[colour] }, g);
       label(e.name, mm(q), g, COLOURS[colour]);
       return g;
     }
     const [a, b] = [mm(e.from), mm(e.to)];
-    const g = svg("g", { "data-name": e.name }, parent);
-    svg("line", { x1: a[0], y1: a[1], x2: b[0], y2: b[1], ...common, "marker-end": head(colour) }, g);
+    const g = el("g", { "data-name": e.name }, parent);
+    el("line", { x1: a[0], y1: a[1], x2: b[0], y2: b[1], ...common, "marker-end": head(colour) }, g);
     label(e.name, [(a[0] + b[0]) / 2, (a[1] + b[1]) / 2], g, COLOURS[colour]);
     return g;
   }
@@ -275,7 +260,7 @@ export function drawTask(root, task, options = {}) {
       g.setAttribute("data-index", k);
       if (fault.has(k)) g.classList.add("gk-fault");
     });
-    for (const p of placed) svg("circle", { cx: p[0], cy: p[1], r: 0.8, fill: COLOURS.drawn, class: "gk-placed" },
+    for (const p of placed) el("circle", { cx: p[0], cy: p[1], r: 0.8, fill: COLOURS.drawn, class: "gk-placed" },
       drawnLayer);
     if (feedback && feedback.right) {
       for (const e of feedback.right) drawElement(e, rightLayer, "right", { "stroke-dasharray": "2 1.2" });

@@ -13,26 +13,11 @@
 //   const view = draw(element, scene);     // view.show(i), view.index, view.timings, view.scene (at its speed),
 //                                          // view.pause()
 
+import { el, html } from "./dom.js";
 import { live, setRate } from "./speed.js";
 
-const SVG = "http://www.w3.org/2000/svg";
 const INK = { link: "#333", fill: "#dfe7f1", joint: "#1565c0", graphical: "#2e7d32", load: "#c62828",
   inertia: "#6a1b9a", ground: "#555", curve: "#1565c0", cursor: "#c62828" };
-
-function el(tag, attrs, parent) {
-  const node = document.createElementNS(SVG, tag);
-  for (const [k, v] of Object.entries(attrs || {})) node.setAttribute(k, v);
-  if (parent) parent.appendChild(node);
-  return node;
-}
-
-function html(tag, attrs, parent, text) {
-  const node = document.createElement(tag);
-  for (const [k, v] of Object.entries(attrs || {})) node.setAttribute(k, v);
-  if (text !== undefined) node.textContent = text;
-  if (parent) parent.appendChild(node);
-  return node;
-}
 
 // A label {symbol, sub, mark, unit} as SVG text (the subscript lowered) or as HTML (<sub>).
 function svgLabel(label, parent, size) {
