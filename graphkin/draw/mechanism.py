@@ -436,7 +436,9 @@ def _label_points(ax, geom, c, s, lab, drawn, faint, emphasis, only=None, near=0
     for key, P in c.pitch_points.items():
         if only is not None and only not in key:
             continue
-        entries.append(("P", np.asarray(P, float) * MM, np.array([0.0, 1.0]), [f"P{key[0]}{key[1]}"], set(key)))
+        # One mesh's pitch point is P, as the books write it; several are told apart by their gears (P23, P34).
+        text = "P" if len(c.pitch_points) == 1 else sub(f"P{key[0]}{key[1]}")
+        entries.append((text, np.asarray(P, float) * MM, np.array([0.0, 1.0]), [f"P{key[0]}{key[1]}"], set(key)))
     # Points nearer each other than ``near`` share a label, in the order they were named.
     groups = []
     for e in entries:

@@ -671,3 +671,14 @@ def test_solution_figure_has_no_empty_row(name):
     assert rows == set(range(nrows))
     cells = len(c.mechanism.moving) + 1 + sum(1 for s in c.steps if s.polygon)
     assert nrows == 1 + math.ceil(cells / 4)
+
+
+@pytest.mark.parametrize("name, shown", [("gearset", {"P"}), ("epicyclic_khurmi", None)])
+def test_pitch_points_are_told_apart_where_there_are_several(name, shown):
+    """One mesh's pitch point is P, as the books write it; a train's several are named by their gears (P23, P34)."""
+    c = construct_forces(catalog.load(name).kinematics(), 0)
+    d = draw.draw_mechanism(c)
+    keys = {f"P{i}{j}" for i, j in c.pitch_points}
+    texts = {plain(d.labels[k].get_text()) for k in keys}
+    labelled = {p for t in texts for p in re.split(r",\s*", t) if p.startswith("P")}
+    assert labelled == (shown if shown is not None else keys)
