@@ -231,10 +231,21 @@ def _rrr(plan: Plan, mech: Mechanism, d: Dyad):
     specs = load_specs(plan, mech)
     (mj, Ij, Gj), (mk, Ik, Gk) = specs[j][:3], specs[k][:3]
     # Rows j and k: G from the outer pin (J1 on j, J3 on k) in the link's frame, −m, I_G.
-    G_out = rows(Gj - P[j, d.J1.point], Gk - P[k, d.J3.point])
-    minus_m = rows(-mj, -mk).astype(complex)  # −m a_G as one complex product (NumPy's, with the mass made complex)
-    I_G = rows(Ij, Ik)
+    # Rows of (2, 1), or of (2, g, m, 1) for groups of designs (graphkin.analytical.designs: the positions then
+    # have three axes, and a row of numbers is (2, 1, 1, 1)).
+    axes = plan.compiled.get("axes", 1)
+    G_out, minus_m, I_G = (x if x.ndim > axes else x.reshape((2,) + (1,) * axes) for x in (
+        rows(Gj - P[j, d.J1.point], Gk - P[k, d.J3.point]),
+        rows(-mj, -mk).astype(complex),  # −m a_G as one complex product (NumPy's, with the mass made complex)
+        rows(Ij, Ik)))
     heavy = any(map(np.any, (mj, mk, Ij, Ik)))
+    # Groups of designs whose G is their group's: ρ and a_G are the kinematics' shape, (2, g, 1, N), and each link's
+    # −m a_G and moments take its own −m and I_G, so that a link whose mass no design changes stays of that shape.
+    apart = axes > 1 and G_out.shape[2] == 1
+    if apart:
+        minus_j, minus_k = (x if x.ndim else x.reshape((1,) * axes) for x in (
+            np.asarray(-mj, dtype=complex), np.asarray(-mk, dtype=complex)))
+        I_j, I_k = (x if x.ndim else x.reshape((1,) * axes) for x in (np.asarray(Ij, float), np.asarray(Ik, float)))
     sigma = mech.assembly.get(d.key, 1)  # det = r12 × r23 = −σ |det|; the force equations' is −det
     sign1 = 1.0 if j > a else -1.0  # stored as the force of the lower-numbered link on the higher
     sign2 = 1.0 if k > j else -1.0
@@ -268,13 +279,21 @@ def _rrr(plan: Plan, mech: Mechanism, d: Dyad):
                 A[0] += a1
             if a3 is not None:
                 A[1] += a3
-            F = A * minus_m
             # Moments about the middle pin: G − X2 = ρ − r12 on j, ρ + r23 on k.
-            rho[0] -= r12
-            rho[1] += r23
-            Mg = cross(rho, F)
-            Mg -= AL * I_G
-            Fj, Fk, Mj, Mk = F[0], F[1], Mg[0], Mg[1]
+            if apart:
+                Fj, Fk = A[0] * minus_j, A[1] * minus_k
+                rho[0] -= r12
+                rho[1] += r23
+                Mj, Mk = cross(rho[0], Fj), cross(rho[1], Fk)
+                Mj -= AL[0] * I_j
+                Mk -= AL[1] * I_k
+            else:
+                F = A * minus_m
+                rho[0] -= r12
+                rho[1] += r23
+                Mg = cross(rho, F)
+                Mg -= AL * I_G
+                Fj, Fk, Mj, Mk = F[0], F[1], Mg[0], Mg[1]
         else:
             Fj = Fk = Mj = Mk = 0.0
         # Loads from elsewhere: moments about the origin shifted to the middle pin.
@@ -457,8 +476,9 @@ def _pass(kin, plan: Plan, kin_valid, loops):
 
 
 def _full(x, n, dtype):
-    """x as an array of shape (n,): a constant (a link with no load at all) repeated."""
-    if type(x) is np.ndarray and x.shape == (n,):
+    """x as an array of shape (n,) (or of shape ``n``, a tuple: groups of designs, graphkin.analytical.designs): a
+    constant (a link with no load at all), or an array of fewer axes, repeated."""
+    if type(x) is np.ndarray and x.shape == (n if type(n) is tuple else (n,)):
         return x
     x = np.asarray(x)
     return np.full(n, x, dtype=np.result_type(x, dtype))

@@ -179,10 +179,13 @@ def _shaking(b: Batch, mech, pins) -> tuple[np.ndarray, np.ndarray]:
     """The shaking force (complex) and moment of each design at each position, as :class:`Cycle` sums them."""
     S = np.zeros(b.effort.shape, complex)
     M = np.zeros(b.effort.shape)
+    k, N = b.effort.shape
+    groups = (k // b.per, b.per, N)  # a point's row is its group's (Batch.points)
     for joint, j, at in pins:  # in place: arrays of every design-position of the batch
         F = b.forces[(mech.frame, j)]
         S -= F
-        M -= (np.conjugate(b.points[at]) * F).imag  # zcross(at, F) as one complex product
+        # zcross(at, F) as one complex product, each design's row of F with its group's of the point
+        M.reshape(groups)[...] -= (np.conjugate(b.points[at])[:, None, :] * F.reshape(groups)).imag
         if isinstance(joint, Prismatic):
             M -= b.couple[(mech.frame, j)]
     if mech.driver.crank:
@@ -191,7 +194,8 @@ def _shaking(b: Batch, mech, pins) -> tuple[np.ndarray, np.ndarray]:
     # A slider driver's actuator pushes along the frame's guide: F1j = effort u, at the slider's point.
     joint = mech.joint_between(mech.frame, mech.driver.link)
     F = b.effort * np.exp(1j * joint.direction)
-    return S - F, M + zcross(b.points[joint.slider, joint.point], -F)
+    at = np.repeat(b.points[joint.slider, joint.point], b.per, axis=0)
+    return S - F, M + zcross(at, -F)
 
 
 def _energy_swings(theta: np.ndarray, T: np.ndarray, h: np.ndarray | None = None) -> np.ndarray:
@@ -350,6 +354,7 @@ def batch_merits(shape, members, q: np.ndarray, Cs: float, shared: Shared | None
         shaking_force, shaking_moment = _peak_size(S), np.max(np.abs(M), axis=1)
         if four is not None:
             # μ folded to [0, π/2] grows with |u × v| / |u · v|: its least is μ at the position of the least ratio.
+            # One row per group of designs that share their kinematics (Batch.points), then each design's.
             A, B, B0 = (b.points[at] for at in four)
             u, v = A - B, B0 - B
             uv = np.conjugate(u) * v  # u · v + i u × v, one complex product
@@ -357,7 +362,7 @@ def batch_merits(shape, members, q: np.ndarray, Cs: float, shared: Shared | None
             at = np.argmin(size / np.abs(along), axis=1)
             rows = np.arange(len(at))
             mu = np.arctan2(size[rows, at], along[rows, at])
-            mu_min = np.minimum(mu, np.pi - mu).tolist()
+            mu_min = np.repeat(np.minimum(mu, np.pi - mu), b.per).tolist()
         # T not crossing its mean: 0/0, x/0, not read
         swing = _energy_swings(q, T, shared.h).tolist() if shared.closed else None
     valid = b.valid.all(axis=1)
