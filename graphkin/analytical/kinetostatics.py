@@ -284,15 +284,17 @@ def _rrr(plan: Plan, mech: Mechanism, d: Dyad):
                 Fj, Fk = A[0] * minus_j, A[1] * minus_k
                 rho[0] -= r12
                 rho[1] += r23
-                Mj, Mk = cross(rho[0], Fj), cross(rho[1], Fk)
-                Mj -= AL[0] * I_j
-                Mk -= AL[1] * I_k
+                # Not in place: I_G may vary where m does not.
+                Mj, Mk = cross(rho[0], Fj) - AL[0] * I_j, cross(rho[1], Fk) - AL[1] * I_k
             else:
                 F = A * minus_m
                 rho[0] -= r12
                 rho[1] += r23
                 Mg = cross(rho, F)
-                Mg -= AL * I_G
+                if axes > 1:  # groups of designs: I_G may vary where m and G do not
+                    Mg = Mg - AL * I_G
+                else:
+                    Mg -= AL * I_G
                 Fj, Fk, Mj, Mk = F[0], F[1], Mg[0], Mg[1]
         else:
             Fj = Fk = Mj = Mk = 0.0
@@ -313,7 +315,10 @@ def _rrr(plan: Plan, mech: Mechanism, d: Dyad):
         ndet = size if sigma > 0 else -size
         b3 = Mk - cross(r23, T)
         F1 = r12 * (b3 / ndet)  # real quotients: a complex one by a real divisor costs ten times as much
-        F1 -= r23 * (Mj / ndet)
+        if axes > 1:  # groups of designs: Mj may vary where b3 does not
+            F1 = F1 - r23 * (Mj / ndet)
+        else:
+            F1 -= r23 * (Mj / ndet)
         F3 = -(T + F1)
         F2 = F1 + Fj
         for key, sign, F in zip(keys, (sign1, sign2, sign3), (F1, F2, F3)):

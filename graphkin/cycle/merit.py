@@ -177,17 +177,22 @@ def _frame_pins(mech, forces) -> list:
 
 def _shaking(b: Batch, mech, pins) -> tuple[np.ndarray, np.ndarray]:
     """The shaking force (complex) and moment of each design at each position, as :class:`Cycle` sums them."""
-    S = np.zeros(b.effort.shape, complex)
-    M = np.zeros(b.effort.shape)
     k, N = b.effort.shape
     groups = (k // b.per, b.per, N)  # a point's row is its group's (Batch.points)
+    S = M = None
     for joint, j, at in pins:  # in place: arrays of every design-position of the batch
         F = b.forces[(mech.frame, j)]
-        S -= F
         # zcross(at, F) as one complex product, each design's row of F with its group's of the point
-        M.reshape(groups)[...] -= (np.conjugate(b.points[at])[:, None, :] * F.reshape(groups)).imag
+        moment = (np.conjugate(b.points[at])[:, None, :] * F.reshape(groups)).imag.reshape(k, N)
+        if S is None:  # −F, not 0 − F: the two differ in the sign of a 0 only, and only |S| and |M| are read
+            S, M = -F, -moment
+        else:
+            S -= F
+            M -= moment
         if isinstance(joint, Prismatic):
             M -= b.couple[(mech.frame, j)]
+    if S is None:
+        S, M = np.zeros(b.effort.shape, complex), np.zeros(b.effort.shape)
     if mech.driver.crank:
         M -= b.effort
         return S, M
@@ -213,16 +218,22 @@ def _energy_swings(theta: np.ndarray, T: np.ndarray, h: np.ndarray | None = None
     k, n = T.shape
     if h is None:
         h = steps(theta, closing_step(theta))
-    T_avg = np.sum(0.5 * (T + np.roll(T, -1, axis=1)) * h, axis=1) / TURN
+    half = 0.5 * h  # 0.5 (a + b) h is (a + b) (0.5 h) to the bit: a product by 0.5 is exact
+    T_next = np.empty_like(T)  # np.roll(T, -1, axis=1)
+    T_next[:, :-1] = T[:, 1:]
+    T_next[:, -1] = T[:, 0]
+    step = T + T_next
+    step *= half
+    T_avg = np.sum(step, axis=1) / TURN
     D = T - T_avg[:, None]
-    D_next = np.roll(D, -1, axis=1)
-    step = D + D_next
-    step *= 0.5 * h
+    D_next = np.subtract(T_next, T_avg[:, None], out=T_next)  # D rolled
+    step = np.add(D, D_next, out=step)
+    step *= half
     U = np.cumsum(step, axis=1)  # U[:, i] the energy at sample i + 1; at sample 0 it is 0
     U_end = U[:, -1].copy()
     up = D >= 0
-    cross = up != np.roll(up, -1, axis=1)  # (D_next >= 0) is up rolled
-    # The crossings only (a few a design), by design and then by index: the same arithmetic at each.
+    cross = D_next >= 0  # up rolled
+    cross ^= up
     r, c = np.nonzero(cross)
     d, d_next, hc = D[r, c], D_next[r, c], h[c]
     frac = d / (d - d_next)
@@ -251,7 +262,11 @@ def _energy_swings(theta: np.ndarray, T: np.ndarray, h: np.ndarray | None = None
         odd[:] = True
     if odd.any():
         E[odd] = _energy_swings_sorted(theta, T[odd])
-    return np.where(np.isfinite(T).all(axis=1), E, np.nan)
+    # A row's mean is finite where all of its T is (a sum of finite numbers that overflows aside: checked alone).
+    finite = np.isfinite(T_avg)
+    if not finite.all():
+        finite = np.isfinite(T).all(axis=1)
+    return np.where(finite, E, np.nan)
 
 
 def _energy_swings_sorted(theta: np.ndarray, T: np.ndarray) -> np.ndarray:
