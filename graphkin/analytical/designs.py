@@ -250,7 +250,7 @@ def _grouped(x, grid: tuple):
 
 
 def solve_designs(mech: Mechanism, designs: Sequence[dict], q, q_dot, q_ddot, *, static: bool = False,
-                  points: Sequence[tuple] = ()) -> Batch:
+                  points: Sequence[tuple] = (), per: int | None = None) -> Batch:
     """Kinematics and kinetostatics of k designs of one linkage at the same N positions, as one batch.
 
     Designs in a row that differ only in masses, I_G, G and loads (g groups of m, each group with the same points and
@@ -277,6 +277,9 @@ def solve_designs(mech: Mechanism, designs: Sequence[dict], q, q_dot, q_ddot, *,
         A static force analysis (no inertia loads).
     points : sequence of (int, str)
         Named points whose global positions the result should keep.
+    per : int, optional
+        How many designs in a row share every point and rate, if the caller knows (else found here: 1 if they
+        are not groups of one size).
 
     Returns
     -------
@@ -302,7 +305,7 @@ def solve_designs(mech: Mechanism, designs: Sequence[dict], q, q_dot, q_ddot, *,
         q_ddot = list(q_ddot)
     q = np.asarray(q, dtype=float)
     base = plan_of(mech)
-    m = _groups(designs, q_dot, q_ddot, k) if k > 1 else 1
+    m = per if per is not None else _groups(designs, q_dot, q_ddot, k) if k > 1 else 1
     if m > 1:
         g = k // m
         forces_plan = plan_with(base, {key: _per_group(designs[("point", *key)], N, m, (g, 1, 1))

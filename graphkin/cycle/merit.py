@@ -339,14 +339,15 @@ class Shared:
         return self.whys[w]
 
 
-def batch_merits(shape, members, q: np.ndarray, Cs: float, shared: Shared | None = None) -> dict:
+def batch_merits(shape, members, q: np.ndarray, Cs: float, shared: Shared | None = None, per: int | None = None) -> dict:
     """The figures of merit of designs that share a batch (:func:`merit`'s, each design's to rounding), by index.
 
     ``shape`` is one of the designs' problems (their links, joints, loads, analysis); ``members`` is either a list
     of ``(index, values, numbers, q_dot, q_ddot)``, one per design, or those as five columns
     ``(indices, values, numbers, q_dot, q_ddot)``, the numbers a dict of columns
     (:func:`graphkin.analytical.designs.solve_designs`). ``shared``: what the study's batches share
-    (:class:`Shared`), if it has been worked out.
+    (:class:`Shared`), if it has been worked out; ``per``: how many designs in a row share their points and rates
+    (:func:`graphkin.analytical.designs.solve_designs`), if known.
     """
     if isinstance(members, list):
         indices, values, numbers, q_dot, q_ddot = ([m[k] for m in members] for k in range(5))
@@ -355,7 +356,7 @@ def batch_merits(shape, members, q: np.ndarray, Cs: float, shared: Shared | None
     shared = Shared(shape, q, Cs) if shared is None else shared
     mech = shape.mechanism
     four = shared.four
-    b = solve_designs(mech, numbers, q, q_dot, q_ddot, static=shape.static, points=shared.points)
+    b = solve_designs(mech, numbers, q, q_dot, q_ddot, static=shape.static, points=shared.points, per=per)
     if shared.pins is None:
         shared.pins = _frame_pins(mech, b.forces)  # in the order a Cycle sums them
         shared.names = [force_name(mech, i, j) for (i, j) in b.forces]
@@ -392,7 +393,7 @@ def batch_merits(shape, members, q: np.ndarray, Cs: float, shared: Shared | None
             bad = np.flatnonzero(~b.valid[d])
             out[index] = failed(vals, names, len(bad), q, int(bad[0]), mech.driver.crank, b.reason(d, int(bad[0])))
             continue
-        why, per = shared.why(w, b.valid[d])
+        why, per = shared.whys[w] if w in shared.whys else shared.why(w, b.valid[d])
         out[index] = Design(
             values=vals, torque_peak=peak[d], torque_rms=math.sqrt(square[d]),
             joint_peaks={name: x[d] for name, x in zip(names, joints)},

@@ -395,7 +395,7 @@ def _grid_batches(first, changes: tuple, grid: tuple, combos: list, Cs: float) -
     number no field changes is the file's, for every design; one a field changes is, for each design, the value
     that field's value gives it, picked out of the field's values by the design's index of its value. The designs
     are taken in the order of the values of the fields that change a point or the speed (their kinematics), then
-    of the others' (:func:`_order`), so that a batch holds whole groups of designs that share their kinematics,
+    of the others' (:func:`batch_order`), so that a batch holds whole groups of designs that share their kinematics,
     which are solved once for each group.
     """
     own, per_field, (_, q) = changes
@@ -409,7 +409,7 @@ def _grid_batches(first, changes: tuple, grid: tuple, combos: list, Cs: float) -
     shared = Shared(first, q, Cs)
     same = {x: [v] for x, v in own.items() if x != RATES and x not in table}  # a column of one: every design's
     designs = {}
-    for rows in _order(at, moves, len(q)):
+    for rows, per in batch_order(at, moves, len(q)):
         sub = at[rows]
         k = len(rows)
         columns = same | {x: column[sub[:, changed[x]]] for x, column in table.items()}
@@ -419,12 +419,13 @@ def _grid_batches(first, changes: tuple, grid: tuple, combos: list, Cs: float) -
             picked = rates[f_rates][sub[:, f_rates]]
             w, al = picked[:, 0], picked[:, 1]
         values = [tuple(map(getitem, grid, combos[i])) for i in rows.tolist()]
-        designs.update(batch_merits(first, (rows.tolist(), values, columns, w, al), q, Cs, shared))
+        designs.update(batch_merits(first, (rows.tolist(), values, columns, w, al), q, Cs, shared, per))
     return designs
 
 
-def _order(at: np.ndarray, moves: list, N: int) -> list:
-    """The batches of the designs ``at`` (each design's index of its value of each field), as arrays of indices.
+def batch_order(at: np.ndarray, moves: list, N: int) -> list:
+    """The batches of the designs ``at`` (each design's index of its value of each field): for each, the designs'
+    indices (an array) and how many in a row share their kinematics (the size of its groups).
 
     The designs are sorted by their values of the fields ``moves`` (those that change their kinematics), then of
     the others; a run of designs with the same values of ``moves`` is a group that shares its kinematics. A batch
@@ -444,17 +445,17 @@ def _order(at: np.ndarray, moves: list, N: int) -> list:
     out, batch, size = [], [], 0  # the batch being filled: its groups' starts, and their size
     for start, m in zip(starts.tolist(), sizes):
         if batch and (m != size or len(batch) * m * N >= BATCH):
-            out.append(np.concatenate([order[s:s + size] for s in batch]))
+            out.append((np.concatenate([order[s:s + size] for s in batch]), size))
             batch = []
         if m * N > GROUP:  # a group of its own, in parts
             parts = -(-m * N // GROUP)
             edges = np.linspace(0, m, parts + 1).round().astype(int).tolist()
-            out += [order[start + a:start + b] for a, b in zip(edges[:-1], edges[1:])]
+            out += [(order[start + a:start + b], b - a) for a, b in zip(edges[:-1], edges[1:])]
             continue
         batch.append(start)
         size = m
     if batch:
-        out.append(np.concatenate([order[s:s + size] for s in batch]))
+        out.append((np.concatenate([order[s:s + size] for s in batch]), size))
     return out
 
 
