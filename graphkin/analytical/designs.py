@@ -7,7 +7,11 @@ and its compiled steps. Here their positions are laid end to end, design after d
 differs between them (a point in its link's frame, m, I_G, G, a weight, a load's value, ω, α) becomes an array
 with the design's own value at each of its positions (:func:`graphkin.kinematics.solver.plan_with`). The
 kinematic and force steps then run once over the whole batch, doing to each design's numbers what a solve of
-that design alone does. The results agree to rounding, not always to the last bit: one design alone works some
+that design alone does. Designs in a row that share every point and the input's rates (g groups of m: a study's
+coupler masses for each crank length) share their kinematics too: the kinematic pass runs over g N positions, and
+the force pass broadcasts its arrays, of shape (g, 1, N), against the designs' masses, I_G, G and loads, of shape
+(g, m, 1), so that a term of the kinematics alone is worked out once for its group and a term with a number that
+differs between its designs once for each design-position, by the same arithmetic as before. The results agree to rounding, not always to the last bit: one design alone works some
 constants out as Python numbers (a bar's e^{iθ} factor, conj(d)/|d|²), the batch as NumPy arrays, and the two
 round complex products and quotients differently in the last bit; a value that is the difference of larger ones
 (a couple that is nearly 0) then differs by the rounding of those (tests/analytical/test_designs.py).

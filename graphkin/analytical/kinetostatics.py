@@ -230,22 +230,17 @@ def _rrr(plan: Plan, mech: Mechanism, d: Dyad):
     pa, pb, pk2 = P[a, d.J1.point], P[b, d.J3.point], P[k, d.J2.point]
     specs = load_specs(plan, mech)
     (mj, Ij, Gj), (mk, Ik, Gk) = specs[j][:3], specs[k][:3]
-    # Rows j and k: G from the outer pin (J1 on j, J3 on k) in the link's frame, −m, I_G.
-    # Rows of (2, 1), or of (2, g, m, 1) for groups of designs (graphkin.analytical.designs: the positions then
-    # have three axes, and a row of numbers is (2, 1, 1, 1)).
+    # Rows j and k: G from the outer pin (J1 on j, J3 on k) in the link's frame, −m, I_G. Groups of designs
+    # (graphkin.analytical.designs): the positions have three axes, a row of numbers is (2, 1, 1, 1), and each link
+    # takes its own −m and I_G, so that the arrays of a link no design changes keep the kinematics' shape (g, 1, N).
     axes = plan.compiled.get("axes", 1)
     G_out, minus_m, I_G = (x if x.ndim > axes else x.reshape((2,) + (1,) * axes) for x in (
         rows(Gj - P[j, d.J1.point], Gk - P[k, d.J3.point]),
         rows(-mj, -mk).astype(complex),  # −m a_G as one complex product (NumPy's, with the mass made complex)
         rows(Ij, Ik)))
+    minus_j, minus_k, I_j, I_k = (np.asarray(x, t).reshape(np.shape(x) or (1,) * axes)
+                                  for x, t in ((-mj, complex), (-mk, complex), (Ij, float), (Ik, float)))
     heavy = any(map(np.any, (mj, mk, Ij, Ik)))
-    # Groups of designs whose G is their group's: ρ and a_G are the kinematics' shape, (2, g, 1, N), and each link's
-    # −m a_G and moments take its own −m and I_G, so that a link whose mass no design changes stays of that shape.
-    apart = axes > 1 and G_out.shape[2] == 1
-    if apart:
-        minus_j, minus_k = (x if x.ndim else x.reshape((1,) * axes) for x in (
-            np.asarray(-mj, dtype=complex), np.asarray(-mk, dtype=complex)))
-        I_j, I_k = (x if x.ndim else x.reshape((1,) * axes) for x in (np.asarray(Ij, float), np.asarray(Ik, float)))
     sigma = mech.assembly.get(d.key, 1)  # det = r12 × r23 = −σ |det|; the force equations' is −det
     sign1 = 1.0 if j > a else -1.0  # stored as the force of the lower-numbered link on the higher
     sign2 = 1.0 if k > j else -1.0
@@ -280,21 +275,15 @@ def _rrr(plan: Plan, mech: Mechanism, d: Dyad):
             if a3 is not None:
                 A[1] += a3
             # Moments about the middle pin: G − X2 = ρ − r12 on j, ρ + r23 on k.
-            if apart:
+            rho[0] -= r12
+            rho[1] += r23
+            if axes > 1:  # not in place: I_G may vary where m does not
                 Fj, Fk = A[0] * minus_j, A[1] * minus_k
-                rho[0] -= r12
-                rho[1] += r23
-                # Not in place: I_G may vary where m does not.
                 Mj, Mk = cross(rho[0], Fj) - AL[0] * I_j, cross(rho[1], Fk) - AL[1] * I_k
             else:
                 F = A * minus_m
-                rho[0] -= r12
-                rho[1] += r23
                 Mg = cross(rho, F)
-                if axes > 1:  # groups of designs: I_G may vary where m and G do not
-                    Mg = Mg - AL * I_G
-                else:
-                    Mg -= AL * I_G
+                Mg -= AL * I_G
                 Fj, Fk, Mj, Mk = F[0], F[1], Mg[0], Mg[1]
         else:
             Fj = Fk = Mj = Mk = 0.0
@@ -315,10 +304,7 @@ def _rrr(plan: Plan, mech: Mechanism, d: Dyad):
         ndet = size if sigma > 0 else -size
         b3 = Mk - cross(r23, T)
         F1 = r12 * (b3 / ndet)  # real quotients: a complex one by a real divisor costs ten times as much
-        if axes > 1:  # groups of designs: Mj may vary where b3 does not
-            F1 = F1 - r23 * (Mj / ndet)
-        else:
-            F1 -= r23 * (Mj / ndet)
+        F1 = np.subtract(F1, r23 * (Mj / ndet), out=None if axes > 1 else F1)  # in groups Mj may be the wider
         F3 = -(T + F1)
         F2 = F1 + Fj
         for key, sign, F in zip(keys, (sign1, sign2, sign3), (F1, F2, F3)):
