@@ -19,7 +19,9 @@ The designs are solved together, designs × positions as one batch (:func:`graph
 designs that differ only in numbers the plan of the linkage holds -- a point's place on its link, a mass, I_G,
 G, a load's value or a counterweight's, the speed -- are laid end to end, each such number an array with the
 design's value at each of its positions, and the kinematic and force steps run once over them all, BATCH
-design-positions at a time; the figures of merit are read off the (designs, positions) arrays at once. Each design's
+design-positions at a time, and designs that differ only in masses, I_G, G and loads (the same points and speed)
+share one kinematic pass (:func:`batch_order`); the figures of merit are read off the (designs, positions) arrays
+at once. Each design's
 numbers are those of a sweep of it alone, to rounding (:mod:`graphkin.analytical.designs`). A design that cannot
 share a batch -- a gear train, a load that varies over the cycle (a table, a spring), values given at one
 position -- is swept on its own, and :attr:`Study.why_not_vectorised` says how many and why.
