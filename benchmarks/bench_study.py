@@ -31,7 +31,7 @@ import numpy as np
 from graphkin import catalog
 from graphkin.analytical.designs import numbers, solve_designs
 from graphkin.cycle import study, sweep
-from graphkin.cycle.studies import BATCH, merit
+from graphkin.cycle.studies import batch_order, merit
 from graphkin.problem import build_problem
 from graphkin.problem.fields import set_field
 
@@ -53,15 +53,19 @@ def grid(designs: int) -> dict:
 
 
 def batched_solve(data: dict, vary: dict, designs: tuple, q: np.ndarray) -> float:
-    """CPU time of the study's batched solve alone: every design's numbers, BATCH design-positions at a time."""
+    """CPU time of the study's batched solve alone: every design's numbers, in the study's batches (each crank
+    length's 25 coupler masses sharing one kinematic pass, ``batch_order``)."""
     problems = [_build(data, vary, d.values) for d in designs]
-    mech, per = problems[0].mechanism, max(1, BATCH // len(q))
+    mech = problems[0].mechanism
     own = [numbers(p.mechanism) for p in problems]
+    values = [list(v) for v in vary.values()]
+    at = np.array([[values[f].index(v) for f, v in enumerate(d.values)] for d in designs])
+    batches = [(rows.tolist(), per) for rows, per in batch_order(at, [0], len(q))]  # field 0 (the crank) moves it
 
     def solve():
-        for s in range(0, len(problems), per):
-            part = problems[s:s + per]
-            solve_designs(mech, own[s:s + per], q, [p.q_dot[0] for p in part], [p.q_ddot[0] for p in part])
+        for rows, per in batches:
+            solve_designs(mech, [own[i] for i in rows], q, [problems[i].q_dot[0] for i in rows],
+                          [problems[i].q_ddot[0] for i in rows], per=per)
 
     return cpu(solve)[1]
 

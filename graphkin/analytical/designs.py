@@ -7,7 +7,11 @@ and its compiled steps. Here their positions are laid end to end, design after d
 differs between them (a point in its link's frame, m, I_G, G, a weight, a load's value, ω, α) becomes an array
 with the design's own value at each of its positions (:func:`graphkin.kinematics.solver.plan_with`). The
 kinematic and force steps then run once over the whole batch, doing to each design's numbers what a solve of
-that design alone does. The results agree to rounding, not always to the last bit: one design alone works some
+that design alone does. Designs in a row that share every point and the input's rates (g groups of m: a study's
+coupler masses for each crank length) share their kinematics too: the kinematic pass runs over g N positions, and
+the force pass broadcasts its arrays, of shape (g, 1, N), against the designs' masses, I_G, G and loads, of shape
+(g, m, 1), so that a term of the kinematics alone is worked out once for its group and a term with a number that
+differs between its designs once for each design-position, by the same arithmetic as before. The results agree to rounding, not always to the last bit: one design alone works some
 constants out as Python numbers (a bar's e^{iθ} factor, conj(d)/|d|²), the batch as NumPy arrays, and the two
 round complex products and quotients differently in the last bit; a value that is the difference of larger ones
 (a couple that is nearly 0) then differs by the rounding of those (tests/analytical/test_designs.py).
@@ -20,6 +24,7 @@ motion), whose values are not numbers of the plan.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from types import MappingProxyType
 from typing import Mapping, Sequence
 
 import numpy as np
@@ -82,7 +87,10 @@ class Batch:
     kin_failures, failures : dict of str to ndarray of bool
         Why not, by the kinematics and by the force analysis.
     points : dict of (int, str) to complex ndarray
-        The global position [m] of each point asked for, as x + iy.
+        The global position [m] of each point asked for, as x + iy: shape (k // per, N), one row for each group of
+        ``per`` designs in a row that share their kinematics.
+    per : int
+        Designs in a row that share every point and rate, and so the kinematics (1: each its own).
     """
 
     forces: Mapping[tuple, np.ndarray]
@@ -94,6 +102,7 @@ class Batch:
     kin_failures: Mapping[str, np.ndarray]
     failures: Mapping[str, np.ndarray]
     points: Mapping[tuple, np.ndarray]
+    per: int = 1
 
     def reason(self, design: int, i: int) -> str:
         """Why design ``design`` has no solution at position ``i``: the words of
@@ -104,21 +113,63 @@ class Batch:
         return "; ".join(p for p in parts if p)
 
 
-def _per_design(values, N: int):
+def _per_design(values, N: int, grid: tuple | None = None):
     """One constant of k designs: the number itself if they all have it, else each design's value N times.
 
     ``values`` is a list of numbers or an array (a column of :func:`solve_designs`'s designs; a list of one number
-    is every design's); the number shared is a Python number either way, as a design alone has it.
+    is every design's); the number shared is a Python number either way, as a design alone has it. With ``grid``
+    = (g, m), the designs g groups of m (see :func:`solve_designs`): each design's value once, shape (g, m, 1),
+    to broadcast over the positions.
     """
     if isinstance(values, np.ndarray):
         first = values[0]
         if (values == first).all():
             return first.item()
-        return np.repeat(values, N)
-    first = values[0]
-    if all(v == first for v in values):
-        return first
-    return np.repeat(np.asarray(values), N)
+    else:
+        first = values[0]
+        if all(v == first for v in values):
+            return first
+        values = np.asarray(values)
+    return np.repeat(values, N) if grid is None else values.reshape(*grid, 1)
+
+
+def _per_group(values, N: int, m: int, shape: tuple | None = None):
+    """A constant every design of a group of m has (a point, a rate: see :func:`solve_designs`): the number itself
+    if every design has it, else each group's value N times (shape (g N,)), or once in ``shape`` (g, 1, 1)."""
+    if isinstance(values, np.ndarray):
+        first = values[0]
+        if (values == first).all():
+            return first.item()
+    else:
+        first = values[0]
+        if all(v == first for v in values):
+            return first
+        values = np.asarray(values)
+    values = values[::m]
+    return np.repeat(values, N) if shape is None else values.reshape(shape)
+
+
+def _groups(designs: Mapping, q_dot, q_ddot, k: int) -> int:
+    """m, if the k designs are groups of m in a row that share every point and rate (their kinematics), else 1.
+
+    ``designs`` holds the designs' numbers by key, each a column (a list of one number: every design's).
+    """
+    columns = [np.asarray(c) for key, c in designs.items() if key[0] == "point" and len(c) > 1]
+    columns += [np.asarray(q_dot, dtype=float), np.asarray(q_ddot, dtype=float)]
+    m = k
+    for c in columns:  # the first run: the designs that have the first design's numbers
+        if len(c) > 1:
+            other = np.flatnonzero(c[1:m] != c[0])
+            if len(other):
+                m = int(other[0]) + 1
+    if m == 1 or k % m:
+        return 1
+    for c in columns:
+        if len(c) > 1:
+            rows = c.reshape(k // m, m)
+            if not (rows == rows[:, :1]).all():
+                return 1
+    return m
 
 
 def _column(values) -> list:
@@ -141,15 +192,16 @@ def numbers(mech: Mechanism) -> dict:
     return out
 
 
-def _specs(mech: Mechanism, designs: Mapping, k: int, points: dict, q: np.ndarray) -> dict:
+def _specs(mech: Mechanism, designs: Mapping, k: int, points: dict, q: np.ndarray, grid: tuple | None = None) -> dict:
     """:func:`graphkin.analytical.loads.load_specs` of the batch: each number one per design-position where the
     designs differ (the same expressions as for one design, design by design). A load's window is applied here,
     to each design's positions ``q`` alike: its force or torque is an array, 0 where the load does not act (as
-    :func:`graphkin.analytical.loads._external_fast` makes it), and the spec's window None."""
+    :func:`graphkin.analytical.loads._external_fast` makes it), and the spec's window None. With ``grid`` (g, m),
+    each number that differs is of shape (g, m, 1) and a window's mask of shape (N,): they broadcast."""
     N = len(q)
 
     def each(key):
-        return _per_design(designs[key], N)
+        return _per_design(designs[key], N, grid)
 
     masks: dict = {}
 
@@ -157,7 +209,7 @@ def _specs(mech: Mechanism, designs: Mapping, k: int, points: dict, q: np.ndarra
         if active is None:
             return value, None
         if active not in masks:  # where it acts over one design's positions, then over every design's
-            masks[active] = np.tile(active.mask(q), k)
+            masks[active] = active.mask(q) if grid is not None else np.tile(active.mask(q), k)
         return masks[active] * value, None
 
     g, specs = mech.gravity, {}
@@ -165,7 +217,7 @@ def _specs(mech: Mechanism, designs: Mapping, k: int, points: dict, q: np.ndarra
         W = [-1j * m * g if g and m else 0j for m in _column(designs["mass", link])]
         # The loads on the link in the order load_specs takes them (every design has the same loads).
         loads = [(i, load) for i, load in enumerate(mech.loads) if load.link == link]
-        specs[link] = (each(("mass", link)), each(("I_G", link)), each(("G", link)), _per_design(W, N),
+        specs[link] = (each(("mass", link)), each(("I_G", link)), each(("G", link)), _per_design(W, N, grid),
                        [(points[link, load.point], *acting(each(("load", i)), load.active))
                         for i, load in loads if isinstance(load, PointForce)],
                        [acting(each(("load", i)), load.active) for i, load in loads if not isinstance(load, PointForce)],
@@ -173,9 +225,44 @@ def _specs(mech: Mechanism, designs: Mapping, k: int, points: dict, q: np.ndarra
     return specs
 
 
+
+
+class _Groups:
+    """The kinematic pass's state for g groups of positions, seen by the force pass as arrays of shape (g, 1, N),
+    the designs' numbers of shape (g, m, 1): the fields :func:`graphkin.analytical.kinetostatics._pass` and its
+    compiled steps read (a mechanism whose every group has one, :func:`solve_designs`)."""
+
+    given = MappingProxyType({})
+
+    def __init__(self, st, shape: tuple, grid: tuple):
+        self.mechanism, self.static, self.al0, self.n = st.mechanism, st.static, st.al0, shape
+        self.q = st.q
+        self.e, self.O, self.omega, self.alpha = (_by_group(getattr(st, name), grid)
+                                                  for name in ("e", "O", "omega", "alpha"))
+
+
+def _by_group(d: dict, grid: tuple) -> dict:
+    """Each array of ``d`` (last axis g N) as (..., g, 1, N)."""
+    return {key: _grouped(x, grid) for key, x in d.items()}
+
+
+def _grouped(x, grid: tuple):
+    """An array whose last axis is g N positions as (..., g, 1, N); anything else as it is."""
+    if isinstance(x, np.ndarray) and x.ndim:
+        return x.reshape(x.shape[:-1] + grid)
+    return x
+
+
 def solve_designs(mech: Mechanism, designs: Sequence[dict], q, q_dot, q_ddot, *, static: bool = False,
-                  points: Sequence[tuple] = ()) -> Batch:
+                  points: Sequence[tuple] = (), per: int | None = None) -> Batch:
     """Kinematics and kinetostatics of k designs of one linkage at the same N positions, as one batch.
+
+    Designs in a row that differ only in masses, I_G, G and loads (g groups of m, each group with the same points and
+    input rates: a study orders its designs so, :func:`graphkin.cycle.study`) share their kinematics: the kinematic
+    pass runs over one design of each group, g N positions, and the force pass takes its arrays as (g, 1, N) and
+    the designs' numbers as (g, m, 1), NumPy broadcasting the two. Every design-position's numbers come of the same
+    arithmetic either way. A mechanism with a group that has no compiled force step (a slider's pair, friction,
+    a gear) is solved the other way, design after design laid end to end (every design-position its own).
 
     Parameters
     ----------
@@ -194,6 +281,9 @@ def solve_designs(mech: Mechanism, designs: Sequence[dict], q, q_dot, q_ddot, *,
         A static force analysis (no inertia loads).
     points : sequence of (int, str)
         Named points whose global positions the result should keep.
+    per : int, optional
+        How many designs in a row share every point and rate, if the caller knows (else found here: 1 if they
+        are not groups of one size).
 
     Returns
     -------
@@ -213,20 +303,34 @@ def solve_designs(mech: Mechanism, designs: Sequence[dict], q, q_dot, q_ddot, *,
     k, N = len(q_dot), len(q)
     if not isinstance(designs, Mapping):  # a dict per design: as columns, a list per number
         designs = {key: [d[key] for d in designs] for key in designs[0]}
+    if not isinstance(q_dot, np.ndarray):
+        q_dot = list(q_dot)
+    if not isinstance(q_ddot, np.ndarray):
+        q_ddot = list(q_ddot)
+    q = np.asarray(q, dtype=float)
     base = plan_of(mech)
+    m = per if per is not None else _groups(designs, q_dot, q_ddot, k) if k > 1 else 1
+    if m > 1:
+        g = k // m
+        forces_plan = plan_with(base, {key: _per_group(designs[("point", *key)], N, m, (g, 1, 1))
+                                       for key in base.points})
+        forces_plan.compiled["loads"] = _specs(mech, designs, k, forces_plan.points, q, (g, m))
+        forces_plan.compiled["axes"] = 3
+        _program(forces_plan, mech)
+        if not forces_plan.compiled["general"]:
+            return _shared(mech, base, forces_plan, designs, q, q_dot, q_ddot, (g, m), static, points)
     plan = plan_with(base, {key: _per_design(designs[("point", *key)], N) for key in base.points})
-    plan.compiled["loads"] = _specs(mech, designs, k, plan.points, np.asarray(q, dtype=float))
-    w, al = _per_design(q_dot if isinstance(q_dot, np.ndarray) else list(q_dot), N), \
-        _per_design(q_ddot if isinstance(q_ddot, np.ndarray) else list(q_ddot), N)
+    plan.compiled["loads"] = _specs(mech, designs, k, plan.points, q)
+    w, al = _per_design(q_dot, N), _per_design(q_ddot, N)
     rates = (float(w), float(al)) if not (np.ndim(w) or np.ndim(al)) else (None, None)
     n = k * N
-    qs = np.tile(np.asarray(q, dtype=float), k)
+    qs = np.tile(q, k)
     crank = mech.driver.crank
     with np.errstate(all="ignore"):  # positions that cannot be assembled carry nan, by design
         # A crank's e^{iq} over one design's positions, repeated: the same numbers as over the batch's.
         st, kin_valid = run(plan, mech, qs, np.broadcast_to(w, (n,)).astype(float),
                             np.broadcast_to(al, (n,)).astype(float), rates, angles=False,
-                            e_q=np.tile(np.exp(1j * np.asarray(q, dtype=float)), k) if crank else None)
+                            e_q=np.tile(np.exp(1j * q), k) if crank else None)
         st.static = static
         _program(plan, mech)
         kin = Kinematics(mech, st.q, st.q_dot, st.q_ddot, st.theta, st.omega, st.alpha, st.e, st.O, st.v_O, st.a_O,
@@ -242,3 +346,36 @@ def solve_designs(mech: Mechanism, designs: Sequence[dict], q, q_dot, q_ddot, *,
 
     return Batch(shaped(forces), shaped(normal), shaped(couple), effort.reshape(k, N), valid.reshape(k, N),
                  kin_valid.reshape(k, N), shaped(st.failures), shaped(failures), shaped(where))
+
+
+def _shared(mech, base, forces_plan, designs, q, q_dot, q_ddot, grid: tuple, static: bool, points) -> Batch:
+    """:func:`solve_designs` of g groups of m designs, each group's kinematics solved once (``forces_plan``: the
+    batch's plan with its points and load specs of the shapes the force pass broadcasts, compiled)."""
+    g, m = grid
+    k, N = g * m, len(q)
+    n = g * N
+    plan = plan_with(base, {key: _per_group(designs[("point", *key)], N, m) for key in base.points})
+    w, al = _per_group(q_dot, N, m), _per_group(q_ddot, N, m)
+    rates = (float(w), float(al)) if not (np.ndim(w) or np.ndim(al)) else (None, None)
+    crank = mech.driver.crank
+    shape = (g, 1, N)
+    with np.errstate(all="ignore"):  # positions that cannot be assembled carry nan, by design
+        st, kin_valid = run(plan, mech, np.tile(q, g), np.broadcast_to(w, (n,)).astype(float),
+                            np.broadcast_to(al, (n,)).astype(float), rates, angles=False,
+                            e_q=np.tile(np.exp(1j * q), g) if crank else None)
+        st.static = static
+        loops = {index: tuple(_grouped(x, shape) for x in loop) for index, loop in st.loops.items()}
+        forces, normal, couple, effort, valid, failures = _pass(
+            _Groups(st, (g, m, N), shape), forces_plan, np.broadcast_to(kin_valid.reshape(shape), (g, m, N)), loops)
+        where = {key: np.broadcast_to(plan.points[key], (n,)) if key[0] == mech.frame
+                 else st.O[key[0]] + st.e[key[0]] * plan.points[key] for key in points}
+
+    def shaped(d: dict) -> dict:
+        return {key: x.reshape(k, N) for key, x in d.items()}
+
+    def each(where: np.ndarray) -> np.ndarray:  # a group's row for each of its designs
+        return np.repeat(where.reshape(g, N), m, axis=0)
+
+    return Batch(shaped(forces), shaped(normal), shaped(couple), effort.reshape(k, N), valid.reshape(k, N),
+                 each(kin_valid), {why: each(x) for why, x in st.failures.items()}, shaped(failures),
+                 {key: x.reshape(g, N) for key, x in where.items()}, m)

@@ -230,10 +230,16 @@ def _rrr(plan: Plan, mech: Mechanism, d: Dyad):
     pa, pb, pk2 = P[a, d.J1.point], P[b, d.J3.point], P[k, d.J2.point]
     specs = load_specs(plan, mech)
     (mj, Ij, Gj), (mk, Ik, Gk) = specs[j][:3], specs[k][:3]
-    # Rows j and k: G from the outer pin (J1 on j, J3 on k) in the link's frame, −m, I_G.
-    G_out = rows(Gj - P[j, d.J1.point], Gk - P[k, d.J3.point])
-    minus_m = rows(-mj, -mk).astype(complex)  # −m a_G as one complex product (NumPy's, with the mass made complex)
-    I_G = rows(Ij, Ik)
+    # Rows j and k: G from the outer pin (J1 on j, J3 on k) in the link's frame, −m, I_G. Groups of designs
+    # (graphkin.analytical.designs): the positions have three axes, a row of numbers is (2, 1, 1, 1), and each link
+    # takes its own −m and I_G, so that the arrays of a link no design changes keep the kinematics' shape (g, 1, N).
+    axes = plan.compiled.get("axes", 1)
+    G_out, minus_m, I_G = (x if x.ndim > axes else x.reshape((2,) + (1,) * axes) for x in (
+        rows(Gj - P[j, d.J1.point], Gk - P[k, d.J3.point]),
+        rows(-mj, -mk).astype(complex),  # −m a_G as one complex product (NumPy's, with the mass made complex)
+        rows(Ij, Ik)))
+    minus_j, minus_k, I_j, I_k = (np.asarray(x, t).reshape(np.shape(x) or (1,) * axes)
+                                  for x, t in ((-mj, complex), (-mk, complex), (Ij, float), (Ik, float)))
     heavy = any(map(np.any, (mj, mk, Ij, Ik)))
     sigma = mech.assembly.get(d.key, 1)  # det = r12 × r23 = −σ |det|; the force equations' is −det
     sign1 = 1.0 if j > a else -1.0  # stored as the force of the lower-numbered link on the higher
@@ -268,13 +274,17 @@ def _rrr(plan: Plan, mech: Mechanism, d: Dyad):
                 A[0] += a1
             if a3 is not None:
                 A[1] += a3
-            F = A * minus_m
             # Moments about the middle pin: G − X2 = ρ − r12 on j, ρ + r23 on k.
             rho[0] -= r12
             rho[1] += r23
-            Mg = cross(rho, F)
-            Mg -= AL * I_G
-            Fj, Fk, Mj, Mk = F[0], F[1], Mg[0], Mg[1]
+            if axes > 1:  # not in place: I_G may vary where m does not
+                Fj, Fk = A[0] * minus_j, A[1] * minus_k
+                Mj, Mk = cross(rho[0], Fj) - AL[0] * I_j, cross(rho[1], Fk) - AL[1] * I_k
+            else:
+                F = A * minus_m
+                Mg = cross(rho, F)
+                Mg -= AL * I_G
+                Fj, Fk, Mj, Mk = F[0], F[1], Mg[0], Mg[1]
         else:
             Fj = Fk = Mj = Mk = 0.0
         # Loads from elsewhere: moments about the origin shifted to the middle pin.
@@ -294,7 +304,7 @@ def _rrr(plan: Plan, mech: Mechanism, d: Dyad):
         ndet = size if sigma > 0 else -size
         b3 = Mk - cross(r23, T)
         F1 = r12 * (b3 / ndet)  # real quotients: a complex one by a real divisor costs ten times as much
-        F1 -= r23 * (Mj / ndet)
+        F1 = np.subtract(F1, r23 * (Mj / ndet), out=None if axes > 1 else F1)  # in groups Mj may be the wider
         F3 = -(T + F1)
         F2 = F1 + Fj
         for key, sign, F in zip(keys, (sign1, sign2, sign3), (F1, F2, F3)):
@@ -457,8 +467,9 @@ def _pass(kin, plan: Plan, kin_valid, loops):
 
 
 def _full(x, n, dtype):
-    """x as an array of shape (n,): a constant (a link with no load at all) repeated."""
-    if type(x) is np.ndarray and x.shape == (n,):
+    """x as an array of shape (n,) (or of shape ``n``, a tuple: groups of designs, graphkin.analytical.designs): a
+    constant (a link with no load at all), or an array of fewer axes, repeated."""
+    if type(x) is np.ndarray and x.shape == (n if type(n) is tuple else (n,)):
         return x
     x = np.asarray(x)
     return np.full(n, x, dtype=np.result_type(x, dtype))

@@ -177,21 +177,30 @@ def _frame_pins(mech, forces) -> list:
 
 def _shaking(b: Batch, mech, pins) -> tuple[np.ndarray, np.ndarray]:
     """The shaking force (complex) and moment of each design at each position, as :class:`Cycle` sums them."""
-    S = np.zeros(b.effort.shape, complex)
-    M = np.zeros(b.effort.shape)
+    k, N = b.effort.shape
+    groups = (k // b.per, b.per, N)  # a point's row is its group's (Batch.points)
+    S = M = None
     for joint, j, at in pins:  # in place: arrays of every design-position of the batch
         F = b.forces[(mech.frame, j)]
-        S -= F
-        M -= (np.conjugate(b.points[at]) * F).imag  # zcross(at, F) as one complex product
+        # zcross(at, F) as one complex product, each design's row of F with its group's of the point
+        moment = (np.conjugate(b.points[at])[:, None, :] * F.reshape(groups)).imag.reshape(k, N)
+        if S is None:  # −F, not 0 − F: the two differ in the sign of a 0 only, and only |S| and |M| are read
+            S, M = -F, -moment
+        else:
+            S -= F
+            M -= moment
         if isinstance(joint, Prismatic):
             M -= b.couple[(mech.frame, j)]
+    if S is None:
+        S, M = np.zeros(b.effort.shape, complex), np.zeros(b.effort.shape)
     if mech.driver.crank:
         M -= b.effort
         return S, M
     # A slider driver's actuator pushes along the frame's guide: F1j = effort u, at the slider's point.
     joint = mech.joint_between(mech.frame, mech.driver.link)
     F = b.effort * np.exp(1j * joint.direction)
-    return S - F, M + zcross(b.points[joint.slider, joint.point], -F)
+    at = np.repeat(b.points[joint.slider, joint.point], b.per, axis=0)
+    return S - F, M + zcross(at, -F)
 
 
 def _energy_swings(theta: np.ndarray, T: np.ndarray, h: np.ndarray | None = None) -> np.ndarray:
@@ -209,16 +218,22 @@ def _energy_swings(theta: np.ndarray, T: np.ndarray, h: np.ndarray | None = None
     k, n = T.shape
     if h is None:
         h = steps(theta, closing_step(theta))
-    T_avg = np.sum(0.5 * (T + np.roll(T, -1, axis=1)) * h, axis=1) / TURN
+    half = 0.5 * h  # 0.5 (a + b) h is (a + b) (0.5 h) to the bit: a product by 0.5 is exact
+    T_next = np.empty_like(T)  # np.roll(T, -1, axis=1)
+    T_next[:, :-1] = T[:, 1:]
+    T_next[:, -1] = T[:, 0]
+    step = T + T_next
+    step *= half
+    T_avg = np.sum(step, axis=1) / TURN
     D = T - T_avg[:, None]
-    D_next = np.roll(D, -1, axis=1)
-    step = D + D_next
-    step *= 0.5 * h
+    D_next = np.subtract(T_next, T_avg[:, None], out=T_next)  # D rolled
+    step = np.add(D, D_next, out=step)
+    step *= half
     U = np.cumsum(step, axis=1)  # U[:, i] the energy at sample i + 1; at sample 0 it is 0
     U_end = U[:, -1].copy()
     up = D >= 0
-    cross = up != np.roll(up, -1, axis=1)  # (D_next >= 0) is up rolled
-    # The crossings only (a few a design), by design and then by index: the same arithmetic at each.
+    cross = D_next >= 0  # up rolled
+    cross ^= up
     r, c = np.nonzero(cross)
     d, d_next, hc = D[r, c], D_next[r, c], h[c]
     frac = d / (d - d_next)
@@ -247,7 +262,11 @@ def _energy_swings(theta: np.ndarray, T: np.ndarray, h: np.ndarray | None = None
         odd[:] = True
     if odd.any():
         E[odd] = _energy_swings_sorted(theta, T[odd])
-    return np.where(np.isfinite(T).all(axis=1), E, np.nan)
+    # A row's mean is finite where all of its T is (a sum of finite numbers that overflows aside: checked alone).
+    finite = np.isfinite(T_avg)
+    if not finite.all():
+        finite = np.isfinite(T).all(axis=1)
+    return np.where(finite, E, np.nan)
 
 
 def _energy_swings_sorted(theta: np.ndarray, T: np.ndarray) -> np.ndarray:
@@ -320,14 +339,15 @@ class Shared:
         return self.whys[w]
 
 
-def batch_merits(shape, members, q: np.ndarray, Cs: float, shared: Shared | None = None) -> dict:
+def batch_merits(shape, members, q: np.ndarray, Cs: float, shared: Shared | None = None, per: int | None = None) -> dict:
     """The figures of merit of designs that share a batch (:func:`merit`'s, each design's to rounding), by index.
 
     ``shape`` is one of the designs' problems (their links, joints, loads, analysis); ``members`` is either a list
     of ``(index, values, numbers, q_dot, q_ddot)``, one per design, or those as five columns
     ``(indices, values, numbers, q_dot, q_ddot)``, the numbers a dict of columns
     (:func:`graphkin.analytical.designs.solve_designs`). ``shared``: what the study's batches share
-    (:class:`Shared`), if it has been worked out.
+    (:class:`Shared`), if it has been worked out; ``per``: how many designs in a row share their points and rates
+    (:func:`graphkin.analytical.designs.solve_designs`), if known.
     """
     if isinstance(members, list):
         indices, values, numbers, q_dot, q_ddot = ([m[k] for m in members] for k in range(5))
@@ -336,7 +356,7 @@ def batch_merits(shape, members, q: np.ndarray, Cs: float, shared: Shared | None
     shared = Shared(shape, q, Cs) if shared is None else shared
     mech = shape.mechanism
     four = shared.four
-    b = solve_designs(mech, numbers, q, q_dot, q_ddot, static=shape.static, points=shared.points)
+    b = solve_designs(mech, numbers, q, q_dot, q_ddot, static=shape.static, points=shared.points, per=per)
     if shared.pins is None:
         shared.pins = _frame_pins(mech, b.forces)  # in the order a Cycle sums them
         shared.names = [force_name(mech, i, j) for (i, j) in b.forces]
@@ -350,6 +370,7 @@ def batch_merits(shape, members, q: np.ndarray, Cs: float, shared: Shared | None
         shaking_force, shaking_moment = _peak_size(S), np.max(np.abs(M), axis=1)
         if four is not None:
             # μ folded to [0, π/2] grows with |u × v| / |u · v|: its least is μ at the position of the least ratio.
+            # One row per group of designs that share their kinematics (Batch.points), then each design's.
             A, B, B0 = (b.points[at] for at in four)
             u, v = A - B, B0 - B
             uv = np.conjugate(u) * v  # u · v + i u × v, one complex product
@@ -357,7 +378,7 @@ def batch_merits(shape, members, q: np.ndarray, Cs: float, shared: Shared | None
             at = np.argmin(size / np.abs(along), axis=1)
             rows = np.arange(len(at))
             mu = np.arctan2(size[rows, at], along[rows, at])
-            mu_min = np.minimum(mu, np.pi - mu).tolist()
+            mu_min = np.repeat(np.minimum(mu, np.pi - mu), b.per).tolist()
         # T not crossing its mean: 0/0, x/0, not read
         swing = _energy_swings(q, T, shared.h).tolist() if shared.closed else None
     valid = b.valid.all(axis=1)
@@ -372,7 +393,7 @@ def batch_merits(shape, members, q: np.ndarray, Cs: float, shared: Shared | None
             bad = np.flatnonzero(~b.valid[d])
             out[index] = failed(vals, names, len(bad), q, int(bad[0]), mech.driver.crank, b.reason(d, int(bad[0])))
             continue
-        why, per = shared.why(w, b.valid[d])
+        why, per = shared.whys[w] if w in shared.whys else shared.why(w, b.valid[d])
         out[index] = Design(
             values=vals, torque_peak=peak[d], torque_rms=math.sqrt(square[d]),
             joint_peaks={name: x[d] for name, x in zip(names, joints)},

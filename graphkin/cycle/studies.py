@@ -19,7 +19,9 @@ The designs are solved together, designs × positions as one batch (:func:`graph
 designs that differ only in numbers the plan of the linkage holds -- a point's place on its link, a mass, I_G,
 G, a load's value or a counterweight's, the speed -- are laid end to end, each such number an array with the
 design's value at each of its positions, and the kinematic and force steps run once over them all, BATCH
-design-positions at a time; the figures of merit are read off the (designs, positions) arrays at once. Each design's
+design-positions at a time, and designs that differ only in masses, I_G, G and loads (the same points and speed)
+share one kinematic pass (:func:`batch_order`); the figures of merit are read off the (designs, positions) arrays
+at once. Each design's
 numbers are those of a sweep of it alone, to rounding (:mod:`graphkin.analytical.designs`). A design that cannot
 share a batch -- a gear train, a load that varies over the cycle (a table, a spring), values given at one
 position -- is swept on its own, and :attr:`Study.why_not_vectorised` says how many and why.
@@ -65,6 +67,10 @@ BATCH = CHUNK
 design-position) are freed before the next batch, so a study's memory does not grow with its designs beyond their
 figures of merit; a batch's Python (its plan's steps compiled for its designs' numbers, the figures' set-up) is
 paid once per 90 designs of 360 positions, not 22."""
+
+GROUP = 2 * BATCH
+"""Design-positions of a group of designs that share their kinematics solved together at most: its kinematic
+pass is over one design's positions, its force pass over all of theirs."""
 
 
 class VaryError(GraphkinError):
@@ -385,11 +391,14 @@ def solve_grid(data: dict, file: str, base, fields: tuple, grid: tuple, combos, 
 
 def _grid_batches(first, changes: tuple, grid: tuple, combos: list, Cs: float) -> dict:
     """The designs ``combos`` of one batch key, the file's numbers with each field's changes put in, solved
-    BATCH design-positions at a time (as many designs as fill one, in the order of ``combos``), by index.
+    about BATCH design-positions at a time, by index.
 
     Each batch's numbers are columns, one per number (:func:`graphkin.analytical.designs.solve_designs`): a
     number no field changes is the file's, for every design; one a field changes is, for each design, the value
-    that field's value gives it, picked out of the field's values by the design's index of its value.
+    that field's value gives it, picked out of the field's values by the design's index of its value. The designs
+    are taken in the order of the values of the fields that change a point or the speed (their kinematics), then
+    of the others' (:func:`batch_order`), so that a batch holds whole groups of designs that share their kinematics,
+    which are solved once for each group.
     """
     own, per_field, (_, q) = changes
     at = np.array(combos, dtype=np.intp).reshape(len(combos), len(grid))
@@ -398,22 +407,58 @@ def _grid_batches(first, changes: tuple, grid: tuple, combos: list, Cs: float) -
     rates = {f: np.array([value[RATES] for value in per_field[f]], dtype=float) for f in {changed.get(RATES)}
              if f is not None}
     f_rates = changed.get(RATES)
-    size = -(-BATCH // len(q))  # designs in a batch: the fewest whose positions fill one
+    moves = sorted({f for x, f in changed.items() if x == RATES or x[0] == "point"})
     shared = Shared(first, q, Cs)
     same = {x: [v] for x, v in own.items() if x != RATES and x not in table}  # a column of one: every design's
     designs = {}
-    for s in range(0, len(combos), size):
-        rows = at[s:s + size]
+    for rows, per in batch_order(at, moves, len(q)):
+        sub = at[rows]
         k = len(rows)
-        columns = same | {x: column[rows[:, changed[x]]] for x, column in table.items()}
+        columns = same | {x: column[sub[:, changed[x]]] for x, column in table.items()}
         if f_rates is None:
             w, al = [own[RATES][0]] * k, [own[RATES][1]] * k
         else:
-            picked = rates[f_rates][rows[:, f_rates]]
+            picked = rates[f_rates][sub[:, f_rates]]
             w, al = picked[:, 0], picked[:, 1]
-        values = [tuple(map(getitem, grid, row)) for row in combos[s:s + size]]
-        designs.update(batch_merits(first, (range(s, s + k), values, columns, w, al), q, Cs, shared))
+        values = [tuple(map(getitem, grid, combos[i])) for i in rows.tolist()]
+        designs.update(batch_merits(first, (rows.tolist(), values, columns, w, al), q, Cs, shared, per))
     return designs
+
+
+def batch_order(at: np.ndarray, moves: list, N: int) -> list:
+    """The batches of the designs ``at`` (each design's index of its value of each field): for each, the designs'
+    indices (an array) and how many in a row share their kinematics (the size of its groups).
+
+    The designs are sorted by their values of the fields ``moves`` (those that change their kinematics), then of
+    the others; a run of designs with the same values of ``moves`` is a group that shares its kinematics. A batch
+    is the fewest whole groups of one size that fill BATCH design-positions; a group of more than GROUP
+    design-positions is cut into nearly equal parts. Groups of one design (every design its own kinematics) fill a
+    batch as they always have.
+    """
+    k = len(at)
+    others = [f for f in range(at.shape[1]) if f not in moves]
+    order = np.lexsort([at[:, f] for f in reversed(others)] + [at[:, f] for f in reversed(moves)])
+    if moves:
+        key = at[order][:, moves]
+        starts = np.flatnonzero(np.concatenate(([True], (key[1:] != key[:-1]).any(axis=1))))
+    else:
+        starts = np.zeros(1 if k else 0, np.intp)
+    sizes = np.diff(np.append(starts, k)).tolist()
+    out, batch, size = [], [], 0  # the batch being filled: its groups' starts, and their size
+    for start, m in zip(starts.tolist(), sizes):
+        if batch and (m != size or len(batch) * m * N >= BATCH):
+            out.append((np.concatenate([order[s:s + size] for s in batch]), size))
+            batch = []
+        if m * N > GROUP:  # a group of its own, in parts
+            parts = -(-m * N // GROUP)
+            edges = np.linspace(0, m, parts + 1).round().astype(int).tolist()
+            out += [(order[start + a:start + b], b - a) for a, b in zip(edges[:-1], edges[1:])]
+            continue
+        batch.append(start)
+        size = m
+    if batch:
+        out.append((np.concatenate([order[s:s + size] for s in batch]), size))
+    return out
 
 
 def _single(data: dict, field: str, value, file: str, base):

@@ -99,6 +99,82 @@ def test_each_design_of_a_batch_equals_a_solve_of_it_alone(family, data):
             assert b.reason(d, int(i)) == r.reason(int(i))
 
 
+def loaded(draw, mech, which: set):
+    """``mech`` with the numbers ``which`` names changed by 5 to 30 % (a 0 made 0.01 to 1): ``(link, "mass")``,
+    ``(link, "I_G")``, ``(link, "G")`` (moved by 0.5 to 3 % of the linkage's size), ``("load", i)``. The same points,
+    so the same kinematics."""
+    scale = max(abs(complex(*p)) for link in mech.links for p in link.points.values())
+
+    def other(x):
+        return x * (1 + draw(st.sampled_from([-1, 1])) * draw(st.floats(0.05, 0.3))) if x \
+            else draw(st.floats(0.01, 1.0))
+
+    def moved(p):
+        return (p[0] + scale * draw(st.sampled_from([-1, 1])) * draw(st.floats(0.005, 0.03)), p[1])
+
+    links = tuple(replace(link, mass=other(link.mass) if (link.number, "mass") in which else link.mass,
+                          I_G=other(link.I_G) if (link.number, "I_G") in which else link.I_G,
+                          G=moved(link.G) if (link.number, "G") in which else link.G)
+                  for link in mech.links)
+    loads = tuple((replace(load, force=(other(load.force[0]), other(load.force[1])))
+                   if isinstance(load, PointForce) else replace(load, torque=other(load.torque)))
+                  if ("load", i) in which else load for i, load in enumerate(mech.loads))
+    return replace(mech, links=links, loads=loads)
+
+
+@pytest.mark.parametrize("family", FAMILIES)
+@settings(max_examples=30, deadline=None, suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much])
+@given(data=st.data())
+def test_designs_that_share_their_kinematics_each_equal_a_solve_alone(family, data):
+    """Groups of designs with the same points and speed, differing in some of their masses, I_G, G and loads (a
+    study's designs, ordered by the fields that move the linkage): the kinematics solved once per group, the force
+    pass broadcasting them, each design's numbers those of a solve of it alone."""
+    case = data.draw(FAMILIES[family], label="case")
+    mech = replace(case.mechanism, loads=tuple(x for x in case.mechanism.loads if not x.varies))
+    assume(batch_key(mech)[0] is not None)
+    scale = max(abs(complex(*p)) for link in mech.links for p in link.points.values())
+    rate = st.integers(-3000, 3000).map(lambda k: k / 100 * (1.0 if mech.driver.crank else scale / 10))
+    # What a study's fields that do not move the linkage vary: one or two of a link's m, I_G or G, or a load's value.
+    numbers_ = [(link.number, kind) for link in mech.links for kind in ("mass", "I_G", "G")]
+    which = data.draw(st.sets(st.sampled_from(numbers_ + [("load", i) for i in range(len(mech.loads))]),
+                              min_size=1, max_size=2), label="varied")
+    m = data.draw(st.integers(2, 3), label="designs per group")
+    designs, w, al = [], [], []
+    for _ in range(data.draw(st.integers(1, 3), label="groups")):
+        try:
+            shape = variant(data.draw, mech, scale)
+        except GraphkinError:  # a variant the model refuses (two pins on one point): not a design
+            continue
+        speed, speeding = data.draw(rate), data.draw(rate) * 10
+        designs += [shape] + [loaded(data.draw, shape, which) for _ in range(m - 1)]
+        w += [speed] * m
+        al += [speeding] * m
+    assume(designs)
+    q = case.q
+    b = solve_designs(mech, [numbers(x) for x in designs], q, w, al)
+    if family in ("fourbar", "watt2"):  # every group has a compiled force step: the kinematics were shared
+        assert b.per > 1 and b.per % m == 0
+    else:  # the rest solve every design-position on its own
+        assert b.per == 1
+
+    for d, m in enumerate(designs):
+        kin = solve_kinematics(m, q, w[d], al[d])
+        r = solve_forces(kin)
+        assert np.array_equal(kin.valid, b.kin_valid[d]) and np.array_equal(r.valid, b.valid[d])
+        ok = r.valid
+        force = np.max([np.hypot(F[:, 0], F[:, 1]) for F in r.forces.values()], axis=0)[ok]
+        if not m.driver.crank:
+            force = np.maximum(force, np.abs(r.effort[ok]))
+        for key, F in r.forces.items():
+            close(b.forces[key][d][ok], (F[:, 0] + 1j * F[:, 1])[ok], force)
+        for key, N in r.normal.items():
+            close(b.normal[key][d][ok], N[ok], force)
+            close(b.couple[key][d][ok], r.couple[key][ok], force * scale)
+        close(b.effort[d][ok], r.effort[ok], force * scale if m.driver.crank else force)
+        for i in np.flatnonzero(~ok):
+            assert b.reason(d, int(i)) == r.reason(int(i))
+
+
 def test_what_cannot_share_a_batch_says_why():
     from graphkin import catalog
 
