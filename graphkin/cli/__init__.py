@@ -29,38 +29,51 @@ that ``graphkin solve`` starts in about a tenth of a second
 from __future__ import annotations
 
 import argparse
+import importlib
 import os
 import signal
 import sys
 
 from graphkin import __version__
-from graphkin.cli import animate, cycle, exercise, explore, flywheel, handout, lessons, listing, solve, study
 from graphkin.cli._common import Parser, one_line_warnings, single_threaded_blas
 from graphkin.errors import GraphkinError
 
-COMMANDS = {"list": listing, "solve": solve, "cycle": cycle, "study": study, "exercise": exercise, "explore": explore,
-            "handout": handout, "flywheel": flywheel, "animate": animate, "lessons": lessons}
-"""Each command and the module that carries it out, in the order ``graphkin --help`` lists them."""
+COMMANDS = {"list": "listing", "solve": "solve", "cycle": "cycle", "study": "study", "exercise": "exercise",
+            "explore": "explore", "handout": "handout", "flywheel": "flywheel", "animate": "animate",
+            "lessons": "lessons"}
+"""Each command and the module of :mod:`graphkin.cli` that carries it out, in the order ``graphkin --help`` lists
+them; :func:`command_module` imports it."""
 
 
 INTERRUPTED = 130
 """The exit code of a command ended by Ctrl-C (128 + SIGINT, as a shell reports it)."""
 
 
-def parser() -> argparse.ArgumentParser:
-    """The ``graphkin`` command's parser, with every command's subparser."""
+def command_module(name: str):
+    """The module that carries out command ``name`` (a key of :data:`COMMANDS`), imported when first asked for."""
+    return importlib.import_module(f"graphkin.cli.{COMMANDS[name]}")
+
+
+def parser(command: str | None = None) -> argparse.ArgumentParser:
+    """The ``graphkin`` command's parser, with every command's subparser, or only ``command``'s.
+
+    A command line that starts with a command's name is parsed by that command's subparser alone (its options,
+    its ``--help`` and its mistakes are the same whatever else the parser holds), so ``graphkin solve`` neither
+    imports the other commands' modules nor builds their subparsers (benchmarks/README.md, "The guard's cost").
+    """
     p = Parser(prog="graphkin", description="Kinetostatics of planar machinery.")
     p.add_argument("--version", action="version", version=f"graphkin {__version__}")
     sub = p.add_subparsers(dest="command", required=True)
-    for module in COMMANDS.values():
-        module.add_parser(sub)
+    for name in COMMANDS if command is None else (command,):
+        command_module(name).add_parser(sub)
     return p
 
 
 def main(argv=None) -> int:
     """Entry point of the ``graphkin`` command; returns the exit code (2 for bad input, 130 for Ctrl-C)."""
+    argv = sys.argv[1:] if argv is None else list(argv)
     try:
-        args = parser().parse_args(argv)
+        args = parser(argv[0] if argv and argv[0] in COMMANDS else None).parse_args(argv)
     except SystemExit as exc:  # --help, or a mistake argparse caught: its message is already printed
         return exc.code if isinstance(exc.code, int) else 2
     except KeyboardInterrupt:
@@ -69,7 +82,7 @@ def main(argv=None) -> int:
     single_threaded_blas()  # after parsing: --help and a mistyped option need no numpy
     one_line_warnings()
     try:
-        return COMMANDS[args.command].run(args)
+        return command_module(args.command).run(args)
     except GraphkinError as exc:
         print(f"graphkin: error: {exc}", file=sys.stderr)
         return 2

@@ -61,18 +61,41 @@ def test_every_page_the_help_points_to_is_a_page_of_the_guide():
     assert not missing, f"--help points to pages the site does not have: {missing}"
 
 
-def test_solve_imports_no_design_study():
-    # Issue 35: `graphkin solve` reads a cycle's peaks (graphkin.cycle.sweep) but never a design study, its
-    # figures of merit or optimum; graphkin.cycle loads those when first named.
+def test_solve_imports_no_cycle_and_no_other_command():
+    # Issue 35 ("Keep"): `graphkin solve` reads no cycle (graphkin.report loads the reports of a cycle, a flywheel
+    # and a study when first named), so neither the sweep nor a design study, its figures of merit or optimum; and
+    # it imports no other command's module (graphkin.cli builds only the subparser of the command it runs).
     r = _python("import sys\n"
                 "from graphkin.cli import main\n"
                 "code = main(['solve', 'gearset'])\n"
-                "study = sorted(m for m in sys.modules if m.startswith('graphkin.cycle.') and m.split('.')[2] in "
-                "('studies', 'merit', 'optimum'))\n"
-                "print(code, 'graphkin.cycle.sweep' in sys.modules, study)")
+                "print(code, sorted(m for m in sys.modules if m.startswith(('graphkin.cycle', 'graphkin.cli.', "
+                "'graphkin.report.'))))")
     assert r.returncode == 0, r.stderr
-    assert r.stdout.splitlines()[-1] == "0 True []"
+    assert r.stdout.splitlines()[-1] == ("0 ['graphkin.cli._common', 'graphkin.cli.solve', 'graphkin.report.in_units', "
+                                         "'graphkin.report.polygons', 'graphkin.report.solution']")
     r = _python("import graphkin.cycle.sweep, graphkin.cycle as c\n"
                 "from graphkin.cycle import study, Study\n"
                 "print(callable(c.sweep) and not isinstance(c.sweep, type(c)), study.__module__, Study.__name__)")
     assert r.stdout.split() == ["True", "graphkin.cycle.studies", "Study"], r.stderr
+
+
+def test_a_command_parsed_alone_is_parsed_as_by_the_whole_parser(capsys):
+    # graphkin.cli.main builds only the subparser of the command a command line starts with: its help, its
+    # defaults and its mistakes must be those of the whole parser.
+    from graphkin.cli import COMMANDS, main, parser
+
+    def sub(p, name):
+        return next(a for a in p._actions if isinstance(a.choices, dict)).choices[name]
+
+    whole = parser()
+    for name in COMMANDS:
+        alone = parser(name)
+        assert sub(alone, name).format_help() == sub(whole, name).format_help(), name
+        assert sub(alone, name).prog == f"graphkin {name}"
+    assert vars(parser("solve").parse_args(["solve", "gearset", "--json"])) == vars(
+        whole.parse_args(["solve", "gearset", "--json"]))
+    assert main(["solve", "gearset", "--no-such-option"]) == 2
+    assert capsys.readouterr().err == "graphkin: error: unrecognized arguments: --no-such-option; see 'graphkin --help'\n"
+    assert main(["solv"]) == 2  # not a command: the whole parser says which are
+    err = capsys.readouterr().err
+    assert err.startswith("graphkin: error: argument command: invalid choice: 'solv' (choose from 'list', 'solve',")
