@@ -1,0 +1,71 @@
+"""Grading trust, attacked as a student handing in a file would (red-team review h42).
+
+Each test here failed before its fix: a hand-in that reached past itself, a slip's number taken from a
+construction graphkin had called not valid, a class regrade where one id is graded twice without a word.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+from pathlib import Path
+
+import pytest
+
+from graphkin import exercises
+from graphkin.exercises.keys import keys_text, make_keys
+from graphkin.exercises.platforms import gradescope
+
+CATALOG = Path(exercises.__file__).resolve().parents[1] / "catalog" / "exercises"
+
+
+# -- Gradescope: an answers file that is a link ------------------------------------------------------------------
+
+
+def _autograder(tmp_path: Path, roster: list[str]) -> Path:
+    """/autograder as Gradescope lays it out, enough for :func:`gradescope.grade_submission`."""
+    root = tmp_path / "autograder"
+    (root / "source").mkdir(parents=True)
+    (root / "submission").mkdir()
+    (root / "source" / gradescope.KEYS).write_text(
+        keys_text(make_keys(exercises.load("single_link"), roster, "k")), encoding="utf-8")
+    meta = {"users": [{"sid": roster[0], "email": "", "name": "A", "id": 1}]}
+    (root / "submission_metadata.json").write_text(json.dumps(meta), encoding="utf-8")
+    return root
+
+
+@pytest.mark.skipif(not hasattr(os, "symlink"), reason="no symbolic links here")
+def test_a_gradescope_answers_file_that_is_a_link_is_refused_unread(tmp_path):
+    """A submission (a GitHub repository keeps links, so does an unzipped upload) whose answers.json links to the
+    autograder's keys.json had every classmate's id echoed back as "not questions of this exercise"."""
+    roster = ["s-alice", "s-bob-7731"]
+    root = _autograder(tmp_path, roster)
+    link = root / "submission" / "answers.json"
+    link.symlink_to(root / "source" / gradescope.KEYS)
+    with pytest.raises(gradescope.SubmissionError, match="link"):
+        gradescope.find_answers(root / "submission")
+    results = gradescope.grade_submission(root, CATALOG / "single_link.toml", {})
+    shown = json.dumps(results, ensure_ascii=False)
+    assert results["score"] == 0 and "s-bob-7731" not in shown and "students." not in shown
+    assert "Not graded" in results["output"] and "link" in results["output"]
+
+
+@pytest.mark.skipif(not hasattr(os, "symlink"), reason="no symbolic links here")
+def test_a_gradescope_answers_file_under_a_linked_folder_is_refused(tmp_path):
+    outside = tmp_path / "outside"
+    outside.mkdir()
+    (outside / "answers.toml").write_text('T12 = "1 N*m"\n', encoding="utf-8")
+    sub = tmp_path / "submission"
+    sub.mkdir()
+    (sub / "work").symlink_to(outside, target_is_directory=True)
+    # Whether or not this Python's rglob walks into a linked folder, nothing under it is read.
+    with pytest.raises(gradescope.SubmissionError):
+        gradescope.find_answers(sub)
+
+
+def test_a_gradescope_answers_file_is_read_within_its_cap(tmp_path, monkeypatch):
+    big = tmp_path / "answers.toml"
+    big.write_text('T12 = "1 N*m"\n' + "#" * 5000 + "\n", encoding="utf-8")
+    monkeypatch.setattr(gradescope, "MAX_ANSWERS_BYTES", 1000)
+    with pytest.raises(gradescope.SubmissionError, match="bytes"):
+        gradescope.read_answers(big)
