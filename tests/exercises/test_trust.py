@@ -69,3 +69,28 @@ def test_a_gradescope_answers_file_is_read_within_its_cap(tmp_path, monkeypatch)
     monkeypatch.setattr(gradescope, "MAX_ANSWERS_BYTES", 1000)
     with pytest.raises(gradescope.SubmissionError, match="bytes"):
         gradescope.read_answers(big)
+
+
+# -- A graphical value from a construction that is not valid is no number ----------------------------------------
+
+
+def test_a_slip_read_off_a_construction_that_is_not_valid_is_no_number(monkeypatch):
+    """The key's own construction is refused when not valid (variants._unusable), but a slip's re-solved one was
+    read as it was: a construction the guard found disagreeing with the analytical route still gave its forces,
+    and they went into keys.json as the slip's value and earned the slip's share."""
+    import dataclasses
+
+    from graphkin.exercises.quantities import value_of
+    from graphkin.exercises.variants import Solved, make_variant
+
+    ex = exercises.load("double_slider_graphical")
+    v = make_variant(ex, "s1", "k")
+    graphical = [q for q in ex.questions if q.route == "graphical"]
+    assert {q.kind for q in graphical} >= {"force", "driver_force", "concurrency"}
+    altered = v.altered("no_inertia_torque")
+    assert altered.construction.valid and all(value_of(altered, q) is not None for q in graphical)
+    bad = dataclasses.replace(altered.construction, valid=False, disagreement=True,
+                              reason="the graphical and analytical routes disagree: F23 (a test's fault)")
+    monkeypatch.setattr(Solved, "construction", property(lambda self: bad))
+    fresh = Solved(altered.problem, ex, altered.Cs)  # the slip's problem, its construction found not valid
+    assert all(value_of(fresh, q) is None for q in graphical)
