@@ -272,6 +272,7 @@ def _ids_and_lines(items, limit: int = 10) -> str:
 def _grade(ex, args, secret) -> int:
     from graphkin import exercises
     from graphkin.exercises.grading import grade_variant
+    from graphkin.exercises.handins import class_notes
     from graphkin.exercises.keys import Keys
     from graphkin.exercises.roster import read_roster
     from graphkin.exercises.sheets import format_report
@@ -293,6 +294,8 @@ def _grade(ex, args, secret) -> int:
     roster = read_roster(args.roster) if args.roster else None
     if all(str(f).lower().endswith((".ipynb", ".zip")) for f in files):
         subs = _notebook_submissions(ex, files, args.student_from)
+        for text in class_notes(subs, roster):  # one id in two files; roster students with no hand-in
+            _note(text)
     elif len(files) == 1:
         subs = _csv_submissions(files[0], roster)
     else:

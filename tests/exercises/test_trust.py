@@ -94,3 +94,33 @@ def test_a_slip_read_off_a_construction_that_is_not_valid_is_no_number(monkeypat
     monkeypatch.setattr(Solved, "construction", property(lambda self: bad))
     fresh = Solved(altered.problem, ex, altered.Cs)  # the slip's problem, its construction found not valid
     assert all(value_of(fresh, q) is None for q in graphical)
+
+
+# -- A class regrade of notebooks: one id graded from two files --------------------------------------------------
+
+
+def _notebook(path: Path, cells: list[str]) -> Path:
+    nb = {"cells": [{"cell_type": "code", "metadata": {}, "outputs": [], "execution_count": None, "source": c}
+                    for c in cells], "metadata": {}, "nbformat": 4, "nbformat_minor": 5}
+    path.write_text(json.dumps(nb), encoding="utf-8")
+    return path
+
+
+def test_a_notebook_claiming_a_classmates_id_is_named_in_the_regrade(capsys, tmp_path):
+    """``grade --answers *.ipynb`` grades each notebook as the id typed in it: a second notebook claiming alice's id
+    gave a second row for alice (the later one wins a gradebook's import) and no row for whoever handed it in, without
+    a word. Now the teacher is told which files share an id, and which roster students handed nothing in."""
+    from graphkin.cli import main
+
+    key = {q["id"]: q["answer"]["text"] for q in exercises.key("single_link", "alice", "k")["questions"]}
+    alice = _notebook(tmp_path / "alice_hw.ipynb", ['STUDENT = "alice"', f"F12 = {key['F12']!r}",
+                                                    f"T12 = {key['T12']!r}"])
+    mallory = _notebook(tmp_path / "mallory_hw.ipynb", ['STUDENT = "alice"', 'F12 = "1 N @ 0°"', 'T12 = "1 N*m"'])
+    (tmp_path / "roster.csv").write_text("student\nalice\nmallory\n", encoding="utf-8")
+    code = main(["exercise", "grade", "single_link", "--secret", "k", "--json", "--roster",
+                 str(tmp_path / "roster.csv"), "--answers", str(alice), str(mallory)])
+    out, err = capsys.readouterr()
+    assert code == 0, err
+    assert [r["student"] for r in json.loads(out)] == ["alice", "alice"]
+    assert f"student 'alice' was graded in 2 files ({alice}, {mallory})" in err
+    assert "no hand-in from 1 roster student: mallory" in err
