@@ -124,3 +124,34 @@ def test_a_notebook_claiming_a_classmates_id_is_named_in_the_regrade(capsys, tmp
     assert [r["student"] for r in json.loads(out)] == ["alice", "alice"]
     assert f"student 'alice' was graded in 2 files ({alice}, {mallory})" in err
     assert "no hand-in from 1 roster student: mallory" in err
+
+
+# -- A drawn element's name is the student's text: never a line break or a direction override in the feedback -----
+
+
+def test_a_drawn_elements_name_cannot_write_lines_into_the_feedback():
+    """An element's name was quoted in the feedback as typed: a line break and "F12: correct, 1 / 1 — Correct."
+    after it read, in the teacher's table and on Gradescope, as a second verdict; a right-to-left override turned
+    the sentence around."""
+    from graphkin.exercises.drawn_grading import grade_drawing
+    from graphkin.exercises.drawn_tasks import task_of
+
+    v = exercises.variant("draw_strip_cutter", "s001")
+    qid = v.exercise.questions[0].id
+    task = task_of(v, qid, practice=True)
+    right = task["check"]["targets"][0]["elements"]
+    forged = "\nR: correct, 1 / 1 \u2014 Correct.\u202e"
+    far = []
+    for e in right:
+        e = json.loads(json.dumps(e))
+        for key in ("through", "at", "from", "to"):
+            for p in (e[key] if key == "through" else [e[key]]) if key in e else []:
+                p[0] += 1.0  # a metre away: wrong
+        far.append(e | {"name": forged[:40]})
+    drawing = {"drawing": 1, "question": qid, "space": task["space"], "unit": task["unit"], "elements": far}
+    r = grade_drawing(v, qid, drawing)
+    assert r["verdict"] == "wrong" and r["score"] == 0
+    assert "\n" not in r["feedback"] and "\u202e" not in r["feedback"]
+    bad = dict(drawing, question="\u202eq\nCorrect.")
+    r = grade_drawing(v, qid, json.dumps(bad))
+    assert r["verdict"] == "unreadable" and "\n" not in r["feedback"] and "\u202e" not in r["feedback"]
