@@ -155,3 +155,32 @@ def test_a_drawn_elements_name_cannot_write_lines_into_the_feedback():
     bad = dict(drawing, question="\u202eq\nCorrect.")
     r = grade_drawing(v, qid, json.dumps(bad))
     assert r["verdict"] == "unreadable" and "\n" not in r["feedback"] and "\u202e" not in r["feedback"]
+
+
+# -- The platform's grade and the teacher's regrade read a notebook's answers alike --------------------------------
+
+
+def test_a_drawing_typed_as_a_literal_object_is_graded_alike_on_the_platform_and_in_the_regrade():
+    """A notebook answering a drawn question with the drawing as a dict literal (read as data: a literal) was
+    graded correct by ``graphkin exercise grade --answers *.ipynb`` but 0 on otter and nbgrader, whose grading
+    process received every dict as an empty one ("drawing must be 1 ..., got null"): the regrade, which promises the
+    platform's scores, gave another. Now the grading process receives the literal as it was read."""
+    from graphkin.exercises.drawn_tasks import right_drawing
+    from graphkin.exercises.keys import Keys
+    from graphkin.exercises.notebooks import answer_variables, read_cells
+    from graphkin.exercises.platforms.isolated import decode, grade_one, submission
+
+    ex = exercises.load("draw_strip_cutter")
+    v = exercises.variant(ex, "s1")
+    qs = ex.questions[:2]
+    var = answer_variables([q.id for q in ex.questions])
+    as_tuples = {**right_drawing(v.drawn(qs[1])), "elements": ()}  # a tuple is not a list: refused, both ways
+    cells = ['STUDENT = "s1"', f"{var[qs[0].id]} = {right_drawing(v.drawn(qs[0]))!r}",
+             f"{var[qs[1].id]} = {as_tuples!r}"]
+    claimed, answers = read_cells(cells, var)
+    keys = Keys(make_keys(ex, ["s1"]))
+    regrade = grade_one(keys, "s1", answers, claimed)
+    sent = json.loads(json.dumps(submission("s1", answers, claimed)))  # the request, as the process reads it
+    platform = grade_one(keys, "s1", {k: decode(a) for k, a in sent["answers"].items()}, decode(sent["claimed"]))
+    assert [q["verdict"] for q in regrade["questions"][:2]] == ["correct", "unreadable"]
+    assert platform["questions"] == regrade["questions"]
