@@ -184,3 +184,23 @@ def test_a_drawing_typed_as_a_literal_object_is_graded_alike_on_the_platform_and
     platform = grade_one(keys, "s1", {k: decode(a) for k, a in sent["answers"].items()}, decode(sent["claimed"]))
     assert [q["verdict"] for q in regrade["questions"][:2]] == ["correct", "unreadable"]
     assert platform["questions"] == regrade["questions"]
+
+
+# -- A notebook whose cell does not parse cannot hold up the class -------------------------------------------------
+
+
+def test_a_long_line_in_a_cell_that_does_not_parse_is_read_in_linear_time():
+    """A cell that does not parse is read line by line for its answers; the line pattern's lazy value before
+    trailing spaces took time quadratic in a run of spaces (80 000 spaces: two minutes; a 2 MB cell, a day), in the
+    teacher's process, before any time limit: one notebook held up the whole class. Now the same reading, at once."""
+    import time
+
+    from graphkin.exercises.notebooks import NotData, read_cells
+
+    cells = ['F23 = "1 N"' + " " * 60_000 + "x\n)", 'T12 = "2 N*m"   \nF14 = 3 \n(', 'F12 =\nF43 =  \n(']
+    start = time.perf_counter()
+    claimed, answers = read_cells(cells, {q: q for q in ("F23", "T12", "F14", "F12", "F43")})
+    assert time.perf_counter() - start < 3
+    assert answers["F23"] == NotData("not valid Python")
+    assert (answers["T12"], answers["F14"], answers["F12"]) == ("2 N*m", 3, None)
+    assert answers["F43"] == NotData("not valid Python")
