@@ -282,7 +282,7 @@ def class_notes(graded, roster=None) -> list[str]:
     absent = [s for s in roster or () if s not in files]
     if absent:
         shown = ", ".join(absent[:10]) + (f" and {len(absent) - 10} more" if len(absent) > 10 else "")
-        notes.append(f"no hand-in from {len(absent)} roster student{'s' if len(absent) > 1 else ''}: {shown}")
+        notes.append(f"no hand-in is graded as {len(absent)} roster student{'s' if len(absent) > 1 else ''}: {shown}")
     return notes
 
 

@@ -123,7 +123,7 @@ def test_a_notebook_claiming_a_classmates_id_is_named_in_the_regrade(capsys, tmp
     assert code == 0, err
     assert [r["student"] for r in json.loads(out)] == ["alice", "alice"]
     assert f"student 'alice' was graded in 2 files ({alice}, {mallory})" in err
-    assert "no hand-in from 1 roster student: mallory" in err
+    assert "no hand-in is graded as 1 roster student: mallory" in err
 
 
 # -- A drawn element's name is the student's text: never a line break or a direction override in the feedback -----
