@@ -7,6 +7,7 @@ construction graphkin had called not valid, a class regrade where one id is grad
 from __future__ import annotations
 
 import json
+import math
 import os
 from pathlib import Path
 
@@ -204,3 +205,25 @@ def test_a_long_line_in_a_cell_that_does_not_parse_is_read_in_linear_time():
     assert answers["F23"] == NotData("not valid Python")
     assert (answers["T12"], answers["F14"], answers["F12"]) == ("2 N*m", 3, None)
     assert answers["F43"] == NotData("not valid Python")
+
+
+# -- An angle too large to be a direction is refused, never read as another direction ------------------------------
+
+
+@pytest.mark.parametrize("text, dimension, unit", [("1e20 deg", "angle", "deg"), ("1e20", "angle", "deg"),
+                                                    (1e20, "angle", "deg"), ("12 N @ 1e20 deg", "force", "N"),
+                                                    ("12 N @ 1e300 rad", "force", "N"), ("-4e15 rad", "angle", "deg")])
+def test_an_angle_of_more_than_a_million_turns_is_refused(text, dimension, unit):
+    """"1e20°" is 280° (10^20 mod 360), but in radians as a float it is 1.745e18 ± 256 rad: the reader gave a
+    direction no better than a random one and graded it, a silently wrong number. Now a sentence."""
+    from graphkin.exercises.answers import Unreadable, read_answer
+
+    with pytest.raises(Unreadable, match="turns"):
+        read_answer(text, dimension=dimension, unit=unit)
+
+
+def test_a_direction_of_a_few_turns_is_still_read():
+    from graphkin.exercises.answers import read_answer
+
+    assert read_answer("-3546.22°", dimension="angle", unit="deg").value == pytest.approx(math.radians(-3546.22))
+    assert read_answer("12 N @ 720 deg", dimension="force", unit="N").vector == pytest.approx((12.0, 0.0))
