@@ -143,15 +143,11 @@ def format_value(form: str, value, unit: str, dimension: str, *, torque: bool = 
 
 
 def value_of(solved, q: Question):
-    """The raw answer of ``q`` on a solved problem (SI; vectors complex); None where it has none.
-
-    A value read off the force construction is None where the construction is not valid (it disagrees with the
-    analytical route, or could not be drawn): a slip's re-solved problem is not refused as the key's is, so its
-    construction is checked here, where its numbers are read.
-    """
+    """The raw answer of ``q`` on a solved problem (SI; vectors complex); None where it has none, as where it is
+    read off a construction that is not valid (a slip's, which is not refused as the key's is)."""
     kind, part = q.kind, q.part
     if (q.route == "graphical" and kind in ("force", "driver_torque", "driver_force")) or kind == "concurrency":
-        if not solved.construction.valid:
+        if not solved.construction.valid:  # it disagrees with the analytical route, or could not be drawn
             return None
     if kind in ("force", "inertia_force"):
         if kind == "force":
