@@ -235,11 +235,13 @@ def _flat(sheets: list[dict]) -> list[dict]:
 
 
 def _csv(rows: list[dict]) -> str:
+    from graphkin.exercises.roster import spreadsheet_rows
+
     out = io.StringIO()
     fields = list(dict.fromkeys(k for row in rows for k in row))
     w = csv.DictWriter(out, fieldnames=fields, lineterminator="\n")
     w.writeheader()
-    w.writerows(rows)
+    w.writerows(spreadsheet_rows(rows))  # a student's text that begins as a formula stays text
     return out.getvalue()
 
 
@@ -272,6 +274,7 @@ def _ids_and_lines(items, limit: int = 10) -> str:
 def _grade(ex, args, secret) -> int:
     from graphkin import exercises
     from graphkin.exercises.grading import grade_variant
+    from graphkin.exercises.handins import class_notes
     from graphkin.exercises.keys import Keys
     from graphkin.exercises.roster import read_roster
     from graphkin.exercises.sheets import format_report
@@ -293,6 +296,8 @@ def _grade(ex, args, secret) -> int:
     roster = read_roster(args.roster) if args.roster else None
     if all(str(f).lower().endswith((".ipynb", ".zip")) for f in files):
         subs = _notebook_submissions(ex, files, args.student_from)
+        for text in class_notes(subs, roster):  # one id in two files; roster students with no hand-in
+            _note(text)
     elif len(files) == 1:
         subs = _csv_submissions(files[0], roster)
     else:

@@ -64,7 +64,9 @@ Rules:
   numbers where one is expected; anything that is not a number first (``"__import__('os')"``);
   ``nan``, ``inf`` and numbers too large for a float, in the text or once in
   SI; a power of a power (``"m^2^3"``, ``"9**9**9"``) and powers of three
-  digits or more; a polar direction whose unit is not an angle; a vector
+  digits or more; an angle (a direction, or a polar vector's) of more than
+  :data:`MAX_TURNS` turns either way, whose float has lost the direction it
+  stands for; a polar direction whose unit is not an angle; a vector
   with other than two components, or whose components carry different
   units.
 
@@ -107,11 +109,15 @@ from graphkin.units.convert import POLAR_ZERO_RTOL
 from graphkin.units.dimensions import ANGLE_POWER, DIMENSIONS, SI_UNITS
 from graphkin.units.registries import registry
 
-__all__ = ["MAX_CHARS", "Reading", "Unreadable", "read_answer"]
+__all__ = ["MAX_CHARS", "MAX_TURNS", "Reading", "Unreadable", "read_answer"]
 
 #: The longest answer read, in characters (after stripping surrounding
 #: whitespace); a longer one is refused before any parsing.
 MAX_CHARS = 200
+
+#: The most turns an angle may have either way (a direction, or a direction of a polar vector): beyond, its float
+#: has lost the direction it stands for, and it is refused.
+MAX_TURNS = 1_000_000
 
 # A flywheel question asks for an energy; J, kJ and N*m are all right for it
 # (for a torque question J is not), so energy is told from torque here.
@@ -522,6 +528,15 @@ def _finite(x: float, ctx: _Context) -> float:
     return x
 
 
+def _turns(a: float, ctx: _Context) -> float:
+    """A direction [rad] of at most :data:`MAX_TURNS` turns either way; a larger one, whose float has lost the
+    direction it stands for ("1e20°" is 280°, but 1.745e18 rad ± 256 rad), is refused."""
+    if abs(a) > 2 * math.pi * MAX_TURNS:
+        raise ctx.fail(f"the angle is more than {MAX_TURNS:,} turns, too large to read as a direction; write it "
+                       "between -360° and 360°, such as \"-73.78°\"")
+    return a
+
+
 def _quantity(part: str, ctx: _Context, what: str) -> tuple[float, str, _Unit | None]:
     """Read ``number [unit]``: the number, the normalised unit text, its meaning."""
     x, rest = _number(part, ctx, what)
@@ -572,11 +587,14 @@ def _read_scalar(body: str, sense: int | None, ctx: _Context) -> Reading:
             example = ctx.example(unit=f"{ctx.q.unit} CW".strip())
             raise ctx.fail(f"give a signed number or the size with CW/CCW, not both, such as {example}")
         x = sense * x
+    value = _to_si(x, u, ctx)
+    if value is not None and ctx.q.dimension == "angle":
+        value = _turns(value, ctx)
     return Reading(
         text=ctx.raw,
         form="scalar",
         number=x,
-        value=_to_si(x, u, ctx),
+        value=value,
         vector=None,
         angle=None,
         unit=text,
@@ -598,6 +616,7 @@ def _read_polar(magnitude: str, direction: str, ctx: _Context) -> Reading:
         )
     else:
         a = _finite(a * a_unit.factor, ctx)
+    a = _turns(a, ctx)
     r_si = _to_si(r, u, ctx)
     vector = None if r_si is None else _polar_xy(r_si, a)
     return Reading(
@@ -708,11 +727,14 @@ def _read_number(value: Any, q: _Question) -> Reading:
     ctx = _Context(str(value), q)
     if not math.isfinite(x):
         raise ctx.fail(f"nan and inf are not numbers to grade; {advice}")
+    value = _finite(x * q.factor, ctx)
+    if q.dimension == "angle":
+        value = _turns(value, ctx)
     return Reading(
         text=ctx.raw,
         form="scalar",
         number=x,
-        value=_finite(x * q.factor, ctx),
+        value=value,
         vector=None,
         angle=None,
         unit="",

@@ -16,7 +16,7 @@ import math
 from dataclasses import dataclass
 
 __all__ = ["KINDS", "MAX_CHARS", "MAX_ELEMENTS", "SPACES", "VERSION", "Drawing", "Element", "Unreadable",
-           "read_drawing"]
+           "printable", "read_drawing"]
 
 VERSION = 1
 """The ``drawing`` field this version writes and reads."""
@@ -112,12 +112,18 @@ def _pair(p, field: str) -> tuple[float, float]:
     return _number(p[0], f"{field}[0]"), _number(p[1], f"{field}[1]")
 
 
+def printable(text: str) -> str:
+    """Text of the student's as a message quotes it: each character that does not print (a line break, a
+    direction override) as U+FFFD, so that it can write no line and turn no sentence of the feedback around."""
+    return "".join(c if c.isprintable() else "\N{REPLACEMENT CHARACTER}" for c in text)
+
+
 def _short(x) -> str:
     try:
         text = json.dumps(x, ensure_ascii=False)
     except (TypeError, ValueError):
         text = type(x).__name__
-    return text if len(text) <= 40 else text[:39] + "…"
+    return printable(text if len(text) <= 40 else text[:39] + "…")
 
 
 def _element(e, i: int) -> Element:

@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import math
 
-from graphkin.exercises.drawings import Drawing, Unreadable, read_drawing
+from graphkin.exercises.drawings import Drawing, Unreadable, printable, read_drawing
 from graphkin.exercises.notebooks import NotData
 
 __all__ = ["element_matches", "faults", "grade_drawing", "grade_drawn", "match"]
@@ -133,7 +133,8 @@ def grade_drawn(variant, q, answer, *, reveal: bool = False) -> dict:
         msg = (f"The task asks for {want} element{'s' if want != 1 else ''} "
                f"({', '.join(e['kind'] + ' ' + e['name'] for e in task['draw'])}); the drawing has {n}.")
     else:
-        names = ", ".join(f"{drawing.elements[i].kind} {drawing.elements[i].name or i + 1}".strip() for i in fault)
+        names = ", ".join(f"{drawing.elements[i].kind} {printable(drawing.elements[i].name) or i + 1}".strip()
+                          for i in fault)
         msg = (f"Not where the construction puts it: {names} (each element must lie within {within} on the drawing); "
                f"revisit {d['hint']}.")
     return out | {"verdict": "wrong", "fault": fault, "feedback": msg}

@@ -257,6 +257,35 @@ def own_files(folder, *, skip=(), prefix: str = "") -> dict[str, Path]:
     return out
 
 
+def class_notes(graded, roster=None) -> list[str]:
+    """What a teacher must look at in a class's hand-ins, each graded as the id it names: one student graded from
+    several files (the id typed in a notebook is the student's to type, so a second notebook may claim a classmate's
+    id, and a gradebook keeps one of the rows), and the roster's students no hand-in was graded as.
+
+    Parameters
+    ----------
+    graded : iterable of mapping
+        One per hand-in, with ``"student"`` (whom it is graded as; ``""`` when none) and ``"file"``.
+    roster : list of str, optional
+
+    Returns
+    -------
+    list of str
+        Sentences for the log, in roster order, then file order.
+    """
+    files: dict[str, list[str]] = {}
+    for g in graded:
+        if g["student"]:
+            files.setdefault(g["student"], []).append(str(g["file"]))
+    notes = [f"student {echo(s, 100)!r} was graded in {len(f)} files ({', '.join(f)}): check who handed each one in"
+             for s, f in files.items() if len(f) > 1]
+    absent = [s for s in roster or () if s not in files]
+    if absent:
+        shown = ", ".join(absent[:10]) + (f" and {len(absent) - 10} more" if len(absent) > 10 else "")
+        notes.append(f"no hand-in is graded as {len(absent)} roster student{'s' if len(absent) > 1 else ''}: {shown}")
+    return notes
+
+
 # ---------------------------------------------------------------------------------------------------------
 # Reading
 
@@ -456,5 +485,5 @@ def _describe_zip(top: str, members: list) -> str:
     return f"{shown}/ ({'a Python package' if package else 'a folder'}, {_files(len(members))})"
 
 
-__all__ = ["METADATA", "REFUSALS", "HandIn", "clear_folder", "literal", "notebook_text", "own_files", "read_handin",
-           "stripped_notebook"]
+__all__ = ["METADATA", "REFUSALS", "HandIn", "class_notes", "clear_folder", "literal", "notebook_text", "own_files",
+           "read_handin", "stripped_notebook"]

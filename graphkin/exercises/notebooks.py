@@ -52,8 +52,9 @@ RESERVED = frozenset({STUDENT_VARIABLE, "grader", "otter", "runtime", "sys", "gr
                       "course_secret"})
 """Names the exported notebooks use themselves: no answer is typed into one of them."""
 
-# `NAME = value` or `NAME: type = value` on one line, for a cell that does not parse as a whole.
-_LINE = re.compile(r"^([A-Za-z_]\w*)\s*(?::[^=]*)?=(?!=)\s*(.+?)\s*$")
+# `NAME = value` or `NAME: type = value` on one line, for a cell that does not parse as a whole; the value is
+# stripped after the match (a lazy value before `\s*$` would take time quadratic in a run of spaces).
+_LINE = re.compile(r"^([A-Za-z_]\w*)\s*(?::[^=]*)?=(?!=)(.+)$")
 
 # Where a statement that is not a plain assignment gives a variable its value, in words.
 _WHERE = {ast.If: "an assignment inside an `if` block", ast.Try: "an assignment inside a `try` block",
@@ -152,7 +153,7 @@ def _cell_assignments(source: str) -> dict:
             m = _LINE.match(line)
             if m:
                 try:
-                    expr = ast.parse(m[2], mode="eval").body
+                    expr = ast.parse(m[2].strip(), mode="eval").body
                 except (SyntaxError, ValueError, MemoryError, RecursionError):
                     found[m[1]] = NotData("not valid Python")
                     continue

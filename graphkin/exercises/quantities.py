@@ -143,8 +143,12 @@ def format_value(form: str, value, unit: str, dimension: str, *, torque: bool = 
 
 
 def value_of(solved, q: Question):
-    """The raw answer of ``q`` on a solved problem (SI; vectors complex); None where it has none."""
+    """The raw answer of ``q`` on a solved problem (SI; vectors complex); None where it has none, as where it is
+    read off a construction that is not valid (a slip's, which is not refused as the key's is)."""
     kind, part = q.kind, q.part
+    if (q.route == "graphical" and kind in ("force", "driver_torque", "driver_force")) or kind == "concurrency":
+        if not solved.construction.valid:  # it disagrees with the analytical route, or could not be drawn
+            return None
     if kind in ("force", "inertia_force"):
         if kind == "force":
             src = solved.construction if q.route == "graphical" else solved.result

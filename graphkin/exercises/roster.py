@@ -82,6 +82,25 @@ def read_class_csv(path, what: str) -> list[dict]:
     return rows
 
 
+_FORMULA = ("=", "+", "-", "@", "\t", "\r")
+
+
+def spreadsheet_text(value):
+    """A cell of a class table as a spreadsheet must show it: text that begins as a formula does (``=``, ``+``,
+    ``-``, ``@``, a tab or a carriage return; a student's id or answer may) with a leading apostrophe, which
+    spreadsheets read as "this is text"; anything else as it is.
+
+    >>> spreadsheet_text("=1+1"), spreadsheet_text("s1"), spreadsheet_text(-2.5)
+    ("'=1+1", 's1', -2.5)
+    """
+    return "'" + value if isinstance(value, str) and value.startswith(_FORMULA) else value
+
+
+def spreadsheet_rows(rows) -> list[dict]:
+    """Rows of a class table with every cell :func:`spreadsheet_text`."""
+    return [{k: spreadsheet_text(v) for k, v in row.items()} for row in rows]
+
+
 def read_roster(path) -> list[str]:
     """The student ids of a roster, in its order: a CSV with a ``student`` column, any others ignored.
 

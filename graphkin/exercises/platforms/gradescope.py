@@ -520,12 +520,25 @@ def find_answers(folder: Path) -> Path:
     """The one answers file (``*.toml`` or ``*.json``) anywhere in the submission.
 
     Hidden files and the ``__MACOSX`` folder a Mac's zip adds are not the
-    student's, and are passed over.
+    student's, and are passed over. A link is never followed: an answers file
+    that is one, or a linked folder, is refused with a sentence.
     """
     def visible(p: Path) -> bool:
         return not any(part.startswith(".") or part == "__MACOSX" for part in p.relative_to(folder).parts)
 
-    files = sorted(p for p in folder.rglob("*") if p.is_file() and visible(p)) if folder.is_dir() else []
+    def linked(p: Path) -> bool:
+        # A link (a repository or an unzipped upload keeps them) points past the submission, at the autograder's
+        # own files: it is never followed, nor is anything under a linked folder.
+        rel = p.relative_to(folder).parts
+        return any(folder.joinpath(*rel[:k]).is_symlink() for k in range(1, len(rel) + 1))
+
+    entries = sorted(p for p in folder.rglob("*") if visible(p)) if folder.is_dir() else []
+    links = [p for p in entries if p.is_symlink() and (p.suffix.lower() in ANSWER_SUFFIXES or p.is_dir())]
+    if links:
+        names = ", ".join(p.relative_to(folder).as_posix() for p in links[:5])
+        raise SubmissionError(f"Your submission holds a link ({names}), not the file itself: upload answers.toml "
+                              f"as a file, with one line per question, for example {EXAMPLE_LINE}.")
+    files = [p for p in entries if not linked(p) and p.is_file()]
     found = [p for p in files if p.suffix.lower() in ANSWER_SUFFIXES]
     if len(found) == 1:
         return found[0]
@@ -547,10 +560,16 @@ def read_answers(path: Path) -> dict:
     import tomllib
 
     name = path.name
-    data = path.read_bytes()
+    try:  # never through a link, never more than the cap
+        fd = os.open(path, os.O_RDONLY | getattr(os, "O_NOFOLLOW", 0))
+    except OSError:
+        raise SubmissionError(f"{name} cannot be read: upload answers.toml as a file, for example "
+                              f"{EXAMPLE_LINE}.") from None
+    with os.fdopen(fd, "rb") as f:
+        data = f.read(MAX_ANSWERS_BYTES + 1)
     if len(data) > MAX_ANSWERS_BYTES:
-        raise SubmissionError(f"{name} is {len(data)} bytes: an answers file is a few lines of text "
-                              f"({EXAMPLE_LINE}).")
+        raise SubmissionError(f"{name} is more than {MAX_ANSWERS_BYTES} bytes: an answers file is a few lines "
+                              f"of text ({EXAMPLE_LINE}).")
     try:
         text = data.decode("utf-8-sig")
     except UnicodeDecodeError:

@@ -15,7 +15,8 @@ from the notebook file as data instead (:mod:`graphkin.exercises.notebooks`) and
 - holding the precomputed keys (:mod:`graphkin.exercises.keys`), never the course secret;
 - reading one JSON request on standard input and writing one JSON answer on standard output.
 
-Nothing of the student's is code to it: the answers are JSON strings, numbers and markers. The reports
+Nothing of the student's is code to it: the answers are JSON strings, numbers, markers and the text of
+the notebook's other literals, read back with :func:`ast.literal_eval` (the notebook reader's own). The reports
 it returns are those of :meth:`graphkin.exercises.keys.Keys.grade`, so a teacher who grades the
 collected answers again on their own machine (``graphkin exercise grade ... --answers *.ipynb``) gets
 the same scores.
@@ -23,6 +24,7 @@ the same scores.
 
 from __future__ import annotations
 
+import ast
 import contextlib
 import json
 import os
@@ -54,20 +56,28 @@ _BOOT = ("import sys\n"
          "from graphkin.exercises.platforms.isolated import main\n"
          "sys.exit(main())\n")
 
-# What a student may have assigned besides text and numbers, rebuilt empty on the other side: the reader
-# refuses each with a sentence naming its type.
+# What a student may have assigned besides text and numbers that cannot be carried as its text (a nan inside a
+# list, say), rebuilt empty on the other side: the reader refuses each with a sentence naming its type.
 _TYPES = {"list": list, "tuple": tuple, "dict": dict, "set": set, "frozenset": frozenset, "bytes": bytes,
           "complex": complex, "ellipsis": lambda: None}
 
 
 def encode(value):
-    """An answer as JSON data for the grading process (text and numbers as they are; anything else a marker)."""
+    """An answer as JSON data for the grading process: text and numbers as they are; any other literal a notebook
+    holds (a list, a dict, a tuple: a drawing's object, say) as its Python text, which the process reads back with
+    :func:`ast.literal_eval`, the notebook reader's own (literals only, nothing called); anything else a marker."""
     if value is None or isinstance(value, (str, bool, float)):
         return value
     if isinstance(value, int):
         return value if value.bit_length() <= 1000 else {"huge": value < 0}
     if isinstance(value, NotData):
         return {"not_data": value.reason}
+    try:
+        text = repr(value)  # a literal's own text: the notebook's literals are of Python's own types
+        if ast.literal_eval(text) == value:  # the very value back (not a nan, nor a number too long to write)
+            return {"literal": text, "type": type(value).__name__}
+    except (ValueError, TypeError, SyntaxError, MemoryError, RecursionError):
+        pass
     return {"type": type(value).__name__}
 
 
@@ -75,6 +85,11 @@ def decode(data):
     """:func:`encode` undone."""
     if not isinstance(data, dict):
         return data
+    if isinstance(data.get("literal"), str):
+        try:
+            return ast.literal_eval(data["literal"])
+        except (ValueError, TypeError, SyntaxError, MemoryError, RecursionError):
+            pass
     if "not_data" in data:
         return NotData(str(data["not_data"]))
     if "huge" in data:
