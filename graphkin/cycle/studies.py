@@ -72,6 +72,13 @@ GROUP = 2 * BATCH
 """Design-positions of a group of designs that share their kinematics solved together at most: its kinematic
 pass is over one design's positions, its force pass over all of theirs."""
 
+SHARED = 4 * BATCH
+"""Design-positions of a batch of groups of more than one design that share their kinematics: their kinematic
+pass is over one design's positions of each group (a 25th of the batch's, in a study of 25 masses), so a batch of
+four times BATCH pays a batch's Python (its plan and load specs compiled for its numbers, the figures' set-up, the
+kinematic steps) a quarter as often for arrays of the force pass of a few hundred kB (measured on the benchmark,
+benchmarks/README.md: 1 to 6 times BATCH, 4 the least time; the peak memory of its study did not change)."""
+
 
 class VaryError(GraphkinError):
     """A field a study varies, or one of its values, is at fault; ``field`` names it as the study was given it."""
@@ -431,9 +438,9 @@ def batch_order(at: np.ndarray, moves: list, N: int) -> list:
 
     The designs are sorted by their values of the fields ``moves`` (those that change their kinematics), then of
     the others; a run of designs with the same values of ``moves`` is a group that shares its kinematics. A batch
-    is the fewest whole groups of one size that fill BATCH design-positions; a group of more than GROUP
-    design-positions is cut into nearly equal parts. Groups of one design (every design its own kinematics) fill a
-    batch as they always have.
+    is the fewest whole groups of one size that fill BATCH design-positions (SHARED for groups of more than one
+    design); a group of more than GROUP design-positions is cut into nearly equal parts. Groups of one design
+    (every design its own kinematics) fill a batch as they always have.
     """
     k = len(at)
     others = [f for f in range(at.shape[1]) if f not in moves]
@@ -446,7 +453,7 @@ def batch_order(at: np.ndarray, moves: list, N: int) -> list:
     sizes = np.diff(np.append(starts, k)).tolist()
     out, batch, size = [], [], 0  # the batch being filled: its groups' starts, and their size
     for start, m in zip(starts.tolist(), sizes):
-        if batch and (m != size or len(batch) * m * N >= BATCH):
+        if batch and (m != size or len(batch) * m * N >= (SHARED if m > 1 else BATCH)):
             out.append((np.concatenate([order[s:s + size] for s in batch]), size))
             batch = []
         if m * N > GROUP:  # a group of its own, in parts
