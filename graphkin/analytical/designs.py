@@ -6,15 +6,16 @@ the same kinds at the same points over the same windows, solved at the same posi
 and its compiled steps. Here their positions are laid end to end, design after design, and each constant that
 differs between them (a point in its link's frame, m, I_G, G, a weight, a load's value, ω, α) becomes an array
 with the design's own value at each of its positions (:func:`graphkin.kinematics.solver.plan_with`). The
-kinematic and force steps then run once over the whole batch, doing to each design's numbers what a solve of
-that design alone does. Designs in a row that share every point and the input's rates (g groups of m: a study's
-coupler masses for each crank length) share their kinematics too: the kinematic pass runs over g N positions, and
-the force pass broadcasts its arrays, of shape (g, 1, N), against the designs' masses, I_G, G and loads, of shape
-(g, m, 1), so that a term of the kinematics alone is worked out once for its group and a term with a number that
-differs between its designs once for each design-position, by the same arithmetic as before. The results agree to rounding, not always to the last bit: one design alone works some
-constants out as Python numbers (a bar's e^{iθ} factor, conj(d)/|d|²), the batch as NumPy arrays, and the two
-round complex products and quotients differently in the last bit; a value that is the difference of larger ones
-(a couple that is nearly 0) then differs by the rounding of those (tests/analytical/test_designs.py).
+kinematic and force steps then run once over the whole batch, doing to each design's numbers what a solve of that
+design alone does. Designs in a row that share every point and the input's rates (g groups of m: a study's coupler
+masses for each crank length) share their kinematics too: the kinematic pass runs over g N positions, and the force
+pass broadcasts its arrays, of shape (g, 1, N), against the designs' masses, I_G, G and loads, of shape (g, m, 1), so
+that a term of the kinematics alone is worked out once for its group and a term with a number that differs between its
+designs once for each design-position, by the same arithmetic as before. The results agree to rounding, not always to
+the last bit: one design alone works some constants out as Python numbers (a bar's e^{iθ} factor, conj(d)/|d|²), the
+batch as NumPy arrays, and the two round complex products and quotients differently in the last bit; a value that is
+the difference of larger ones (a couple that is nearly 0) then differs by the rounding of those
+(tests/analytical/test_designs.py).
 
 What cannot share a batch (:func:`batch_key` says why): a gear train (its gears' branches are sampled over a
 turn of each design alone) and a load that varies over the cycle (a table, a spring, a sense that follows the
@@ -121,30 +122,27 @@ def _per_design(values, N: int, grid: tuple | None = None):
     = (g, m), the designs g groups of m (see :func:`solve_designs`): each design's value once, shape (g, m, 1),
     to broadcast over the positions.
     """
-    if isinstance(values, np.ndarray):
-        first = values[0]
-        if (values == first).all():
-            return first.item()
-    else:
-        first = values[0]
-        if all(v == first for v in values):
-            return first
-        values = np.asarray(values)
+    same, values = _every_designs(values)
+    if same is not None:
+        return same
     return np.repeat(values, N) if grid is None else values.reshape(*grid, 1)
+
+
+def _every_designs(values) -> tuple:
+    """(the number every design has, as a Python number, None) if they all have one; else (None, the values as an
+    array)."""
+    first = values[0]
+    if isinstance(values, np.ndarray):
+        return (first.item(), None) if (values == first).all() else (None, values)
+    return (first, None) if all(v == first for v in values) else (None, np.asarray(values))
 
 
 def _per_group(values, N: int, m: int, shape: tuple | None = None):
     """A constant every design of a group of m has (a point, a rate: see :func:`solve_designs`): the number itself
     if every design has it, else each group's value N times (shape (g N,)), or once in ``shape`` (g, 1, 1)."""
-    if isinstance(values, np.ndarray):
-        first = values[0]
-        if (values == first).all():
-            return first.item()
-    else:
-        first = values[0]
-        if all(v == first for v in values):
-            return first
-        values = np.asarray(values)
+    same, values = _every_designs(values)
+    if same is not None:
+        return same
     values = values[::m]
     return np.repeat(values, N) if shape is None else values.reshape(shape)
 

@@ -1,10 +1,10 @@
 """A scene as compact JSON, and as one self-contained HTML page that draws it (no network, no build step).
 
 The page is ``js/page.html`` with the scene's JSON, the drawing module (:func:`module`: ``js/dom.js``,
-``js/speed.js``, ``js/scene.js`` and ``js/widget.js`` as one ES module) and its styles (``js/scene.css``) put in their place: one file
-a student opens from disk, an LMS serves or an e-mail carries, that asks for nothing else. The JSON goes in a
-``<script type="application/json">`` element, with every ``<`` written ``\\u003c`` so that no string of the scene
-(a title, a reason) can close the element.
+``js/speed.js``, ``js/scene.js`` and ``js/widget.js`` as one ES module) and its styles (``js/scene.css``) put in their
+place: one file a student opens from disk, an LMS serves or an e-mail carries, that asks for nothing else. The JSON
+goes in a ``<script type="application/json">`` element, with every ``<`` written ``\\u003c`` so that no string of the
+scene (a title, a reason) can close the element.
 """
 
 from __future__ import annotations

@@ -55,6 +55,30 @@ def close(a, b, scale):
     assert np.all(np.abs(a - b) <= REL * scale), (a, b, scale)
 
 
+def _each_as_alone(b, designs, q, w, al, scale):
+    """Each design of the batch ``b`` equals a solve of it alone: its valid positions and their reasons, and every
+    force, normal force, couple and effort to 1e-12 of the position's force scale (times ``scale`` [m] for a couple
+    or a torque)."""
+    for d, m in enumerate(designs):
+        kin = solve_kinematics(m, q, w[d], al[d])
+        r = solve_forces(kin)
+        assert np.array_equal(kin.valid, b.kin_valid[d]) and np.array_equal(r.valid, b.valid[d])
+        ok = r.valid
+        # The force scale at each position: the largest joint force or the driving force.
+        force = np.max([np.hypot(F[:, 0], F[:, 1]) for F in r.forces.values()], axis=0)[ok]
+        if not m.driver.crank:
+            force = np.maximum(force, np.abs(r.effort[ok]))
+        for key, F in r.forces.items():
+            close(b.forces[key][d][ok], (F[:, 0] + 1j * F[:, 1])[ok], force)
+        for key, N in r.normal.items():
+            close(b.normal[key][d][ok], N[ok], force)
+            close(b.couple[key][d][ok], r.couple[key][ok], force * scale)
+        close(b.effort[d][ok], r.effort[ok], force * scale if m.driver.crank else force)
+        for i in np.flatnonzero(~ok):
+            assert b.reason(d, int(i)) == r.reason(int(i))
+
+
+
 @pytest.mark.parametrize("family", FAMILIES)
 @settings(max_examples=15, deadline=None, suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much])
 @given(data=st.data())
@@ -80,23 +104,7 @@ def test_each_design_of_a_batch_equals_a_solve_of_it_alone(family, data):
 
     b = solve_designs(mech, [numbers(m) for m in designs], q, w, al)
 
-    for d, m in enumerate(designs):
-        kin = solve_kinematics(m, q, w[d], al[d])
-        r = solve_forces(kin)
-        assert np.array_equal(kin.valid, b.kin_valid[d]) and np.array_equal(r.valid, b.valid[d])
-        ok = r.valid
-        # The force scale at each position: the largest joint force or the driving force.
-        force = np.max([np.hypot(F[:, 0], F[:, 1]) for F in r.forces.values()], axis=0)[ok]
-        if not m.driver.crank:
-            force = np.maximum(force, np.abs(r.effort[ok]))
-        for key, F in r.forces.items():
-            close(b.forces[key][d][ok], (F[:, 0] + 1j * F[:, 1])[ok], force)
-        for key, N in r.normal.items():
-            close(b.normal[key][d][ok], N[ok], force)
-            close(b.couple[key][d][ok], r.couple[key][ok], force * scale)
-        close(b.effort[d][ok], r.effort[ok], force * scale if m.driver.crank else force)
-        for i in np.flatnonzero(~ok):
-            assert b.reason(d, int(i)) == r.reason(int(i))
+    _each_as_alone(b, designs, q, w, al, scale)
 
 
 def loaded(draw, mech, which: set):
@@ -157,22 +165,7 @@ def test_designs_that_share_their_kinematics_each_equal_a_solve_alone(family, da
     else:  # the rest solve every design-position on its own
         assert b.per == 1
 
-    for d, m in enumerate(designs):
-        kin = solve_kinematics(m, q, w[d], al[d])
-        r = solve_forces(kin)
-        assert np.array_equal(kin.valid, b.kin_valid[d]) and np.array_equal(r.valid, b.valid[d])
-        ok = r.valid
-        force = np.max([np.hypot(F[:, 0], F[:, 1]) for F in r.forces.values()], axis=0)[ok]
-        if not m.driver.crank:
-            force = np.maximum(force, np.abs(r.effort[ok]))
-        for key, F in r.forces.items():
-            close(b.forces[key][d][ok], (F[:, 0] + 1j * F[:, 1])[ok], force)
-        for key, N in r.normal.items():
-            close(b.normal[key][d][ok], N[ok], force)
-            close(b.couple[key][d][ok], r.couple[key][ok], force * scale)
-        close(b.effort[d][ok], r.effort[ok], force * scale if m.driver.crank else force)
-        for i in np.flatnonzero(~ok):
-            assert b.reason(d, int(i)) == r.reason(int(i))
+    _each_as_alone(b, designs, q, w, al, scale)
 
 
 def test_what_cannot_share_a_batch_says_why():
