@@ -9,10 +9,12 @@ reads them top to bottom.
 from __future__ import annotations
 
 import errno
+import json
 from pathlib import Path
 
 import pytest
 
+from graphkin import exercises
 from graphkin.errors import GraphkinError
 from graphkin.exercises.handins import FolderError, clear_folder
 
@@ -59,3 +61,31 @@ def test_clear_folder_still_gives_the_own_files_back_as_they_were(tmp_path):
     assert (folder / "vendor" / "graphkin" / "__init__.py").read_bytes() == b"real"
     assert (folder / "hw.toml").read_bytes() == b"ex"
     assert not [p for p in folder.rglob("*.tmp")]
+
+
+# -- Gradescope: results.json keeps the teacher's statistics, nothing else of the report ----------------------------
+
+
+def test_gradescope_results_keep_verdicts_and_slips_but_no_classmate_and_no_key(tmp_path):
+    """results.json carried graphkin's whole report under extra_data: the classmate whose data a copied answer fits
+    (``other``), with ``reveal`` the key's values (``expected``), and the student's text again. Now it keeps what
+    the class's statistics read: the score, and each question's verdict and slip."""
+    from graphkin.draw.grades import what_went_wrong
+    from graphkin.exercises.keys import Keys, keys_text, make_keys
+    from graphkin.exercises.platforms import gradescope
+
+    ex = exercises.load("single_link")
+    path = tmp_path / gradescope.KEYS
+    path.write_text(keys_text(make_keys(ex, ["s-alice", "s-bob-7731"], "k")), encoding="utf-8")
+    keys = Keys(path)
+    bobs = {q["id"]: q["answer"]["text"] for q in exercises.key("single_link", "s-bob-7731", "k")["questions"]}
+    report = keys.grade("s-alice", bobs, reveal=True)
+    assert {r.get("other") for r in report["questions"]} == {"s-bob-7731"} and "expected" in report["questions"][0]
+    kept = gradescope.results_from_report(ex, report, [])["extra_data"]["graphkin"]
+    shown = json.dumps(kept, ensure_ascii=False)
+    assert "s-bob-7731" not in shown and "expected" not in shown and "feedback" not in shown
+    assert all(q["answer"]["text"] not in shown for q in exercises.key("single_link", "s-alice", "k")["questions"])
+    assert kept["student"] == "s-alice" and (kept["score"], kept["max"]) == (report["score"], report["max"])
+    assert kept["questions"] == [{k: r[k] for k in ("id", "verdict", "slip", "score", "max")}
+                                 for r in report["questions"]]
+    assert what_went_wrong([kept]) == what_went_wrong([report])  # the teacher's chart counts the same slips
