@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import errno
 import json
+import math
 from pathlib import Path
 
 import pytest
@@ -89,3 +90,50 @@ def test_gradescope_results_keep_verdicts_and_slips_but_no_classmate_and_no_key(
     assert kept["questions"] == [{k: r[k] for k in ("id", "verdict", "slip", "score", "max")}
                                  for r in report["questions"]]
     assert what_went_wrong([kept]) == what_went_wrong([report])  # the teacher's chart counts the same slips
+
+
+# -- A drawn coordinate is a number on the drawing's page, not one near the float's limit ---------------------------
+
+
+def _drawing(v, qid: str) -> dict:
+    from graphkin.exercises.drawn_tasks import right_drawing
+
+    return json.loads(json.dumps(right_drawing(v.drawn(v.exercise.question(qid)))))
+
+
+@pytest.mark.parametrize("x", [1e308, -1e308, float("nan"), float("inf")])
+def test_a_drawn_coordinate_out_of_range_is_refused_with_a_sentence_naming_it(x):
+    """A vector's end at 1e308 (finite: JSON takes it) was matched as drawn: its distance to the target overflowed
+    to inf and the drawing came out a plain "wrong", as if the student had drawn it slightly off. Now it is
+    unreadable, with one sentence naming the element, the coordinate and the range a coordinate must lie in."""
+    from graphkin.exercises.drawn_grading import grade_drawing
+
+    v = exercises.variant("draw_strip_cutter", "s001")
+    q = next(q for q in v.exercise.questions if _drawing(v, q.id)["elements"][0]["kind"] == "vector")
+    drawing = _drawing(v, q.id)
+    drawing["elements"][0]["to"][1] = x
+    for answer in (drawing, json.dumps(drawing)):  # as the dict and as the text (1e308, NaN, Infinity)
+        r = grade_drawing(v, q.id, answer)
+        assert (r["verdict"], r["score"]) == ("unreadable", 0.0), r["feedback"]
+        assert "\n" not in r["feedback"] and ("elements[0].to[1]" in r["feedback"] or "NaN" in r["feedback"]
+                                              or "Infinity" in r["feedback"])
+        if math.isfinite(x):
+            name = drawing["elements"][0]["name"]
+            assert f"elements[0].to[1] of the vector {name!r} is {x:.4g} N, out of the drawing's range" in r["feedback"]
+            assert "within 1000 times the drawing's view of its middle" in r["feedback"]
+
+
+def test_every_target_drawing_lies_within_the_range_a_coordinate_may_take():
+    """The bound refuses no drawing the grader names: the right drawing and each slip's (a length laid off ×10 the
+    farthest) read and match as before."""
+    from graphkin.exercises.drawings import read_drawing
+    from graphkin.exercises.drawn_grading import grade_drawing
+
+    for name in ("draw_strip_cutter", "draw_shaper_polygons"):
+        v = exercises.variant(name, "s001")
+        for q in v.exercise.questions:
+            d = v.drawn(q)
+            for t in d["targets"]:
+                drawing = {"drawing": 1, "question": q.id, "space": d["task"]["space"], "elements": t["elements"]}
+                read_drawing(drawing, question=q.id, space=d["task"]["space"], view=d["task"]["view"])
+            assert grade_drawing(v, q.id, _drawing(v, q.id))["verdict"] == "correct"
