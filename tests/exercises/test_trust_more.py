@@ -137,3 +137,73 @@ def test_every_target_drawing_lies_within_the_range_a_coordinate_may_take():
                 drawing = {"drawing": 1, "question": q.id, "space": d["task"]["space"], "elements": t["elements"]}
                 read_drawing(drawing, question=q.id, space=d["task"]["space"], view=d["task"]["view"])
             assert grade_drawing(v, q.id, _drawing(v, q.id))["verdict"] == "correct"
+
+
+# -- A notebook's own check reads what the grader reads: the file as saved, top to bottom ---------------------------
+
+
+@pytest.fixture()
+def kernel(tmp_path, monkeypatch):
+    """A fresh IPython shell as the student's kernel (its history in memory only), started in the notebook's folder."""
+    from IPython.core.interactiveshell import InteractiveShell
+    from traitlets.config import Config
+
+    monkeypatch.setenv("IPYTHONDIR", str(tmp_path / "ipython"))
+    monkeypatch.chdir(tmp_path)
+    config = Config()
+    config.HistoryManager.enabled = False
+    InteractiveShell.clear_instance()
+    shell = InteractiveShell.instance(config=config)
+    yield shell
+    InteractiveShell.clear_instance()
+
+
+def _saved(path: Path, cells: list[str]) -> Path:
+    nb = {"cells": [{"cell_type": "code", "metadata": {}, "outputs": [], "execution_count": None, "source": c}
+                    for c in cells], "metadata": {}, "nbformat": 4, "nbformat_minor": 5}
+    path.write_text(json.dumps(nb), encoding="utf-8")
+    return path
+
+
+def _grader_reads(path: Path):
+    from graphkin.exercises.grading import grade_question
+    from graphkin.exercises.handins import read_handin
+
+    v = exercises.variant("single_link", "s001")
+    return grade_question(v, v.exercise.question("T12"), read_handin(path, {"T12": "T12"}).answers["T12"])
+
+
+def test_the_notebook_check_reads_the_saved_file_top_to_bottom_not_the_order_cells_ran(kernel, tmp_path):
+    """The check read the cells in the order they ran: a student who ran the lower cell (an f-string) first, then the
+    upper one (text), was told the answer can be read; the grader reads the file top to bottom, where the f-string
+    comes last, and graded it unreadable. Now the check reads the saved file as the grader does, and says when the
+    cells as run give something else."""
+    from graphkin.exercises.platforms import runtime
+
+    upper, lower = 'T12 = "120.5 N*m CCW"', 'x = 120.5\nT12 = f"{x} N*m CCW"'
+    path = _saved(tmp_path / "hw.ipynb", ['STUDENT = "s001"', upper, lower])
+    kernel.user_ns["__session__"] = "course/hw.ipynb"  # as jupyter_server names it: relative to its root
+    for cell in ('STUDENT = "s001"', lower, upper):  # the lower cell first
+        kernel.run_cell(cell, store_history=True)
+    graded = _grader_reads(path)
+    assert graded["verdict"] == "unreadable"
+    check = runtime.readable_problem(exercises.load("single_link"), "T12", kernel.user_ns["T12"], "T12")
+    assert check is not None and "\n" not in check
+    assert check.startswith("The notebook as saved, which the grader reads from top to bottom, gives T12 = (an f-string")
+    assert "the cells as you ran them give '120.5 N*m CCW'" in check and check.endswith("As saved: " + graded["feedback"])
+
+
+def test_the_notebook_check_says_when_the_saved_answer_is_not_the_one_run(kernel, tmp_path):
+    from graphkin.exercises.platforms import runtime
+
+    path = _saved(tmp_path / "hw.ipynb", ['T12 = "120.5 N*m CCW"', 'T12 = "99 N*m CW"'])
+    kernel.user_ns["__session__"] = str(path)
+    for cell in ('T12 = "99 N*m CW"', 'T12 = "120.5 N*m CCW"'):
+        kernel.run_cell(cell, store_history=True)
+    check = runtime.readable_problem(exercises.load("single_link"), "T12", kernel.user_ns["T12"], "T12")
+    assert check is not None and "gives T12 = '99 N*m CW', but the cells as you ran them give '120.5 N*m CCW'" in check
+    assert "As saved" not in check  # both can be read: only which one is handed in is at stake
+    # Run top to bottom, the cells and the file agree: nothing to say.
+    for cell in ('T12 = "120.5 N*m CCW"', 'T12 = "99 N*m CW"'):
+        kernel.run_cell(cell, store_history=True)
+    assert runtime.readable_problem(exercises.load("single_link"), "T12", kernel.user_ns["T12"], "T12") is None
