@@ -128,13 +128,13 @@ def reach(view, unit: str) -> tuple:
     """
     if view is None:
         m = MAX_COORDINATE
-        return (-m, m), (-m, m), f"at most {m:g} {unit} in size"
+        return (-m, m), (-m, m), f"within ±{m:g} {unit}"
     x0, y0, x1, y1 = (float(v) for v in view)
-    half = REACH * max(x1 - x0, y1 - y0, 1e-12)
+    size = max(x1 - x0, y1 - y0, 1e-12)
     cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
-    xs, ys = (cx - half, cx + half), (cy - half, cy + half)
-    words = (f"within {REACH} times the drawing's view of its middle: x from {xs[0]:.4g} to {xs[1]:.4g}, "
-             f"y from {ys[0]:.4g} to {ys[1]:.4g} {unit}")
+    xs, ys = (cx - REACH * size, cx + REACH * size), (cy - REACH * size, cy + REACH * size)
+    words = (f"within {REACH} times the view's size ({size:.4g} {unit}) of its middle: x from {xs[0]:.4g} to "
+             f"{xs[1]:.4g}, y from {ys[0]:.4g} to {ys[1]:.4g} {unit}")
     return xs, ys, words
 
 

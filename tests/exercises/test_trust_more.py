@@ -120,7 +120,7 @@ def test_a_drawn_coordinate_out_of_range_is_refused_with_a_sentence_naming_it(x)
         if math.isfinite(x):
             name = drawing["elements"][0]["name"]
             assert f"elements[0].to[1] of the vector {name!r} is {x:.4g} N, out of the drawing's range" in r["feedback"]
-            assert "within 1000 times the drawing's view of its middle" in r["feedback"]
+            assert "a coordinate must lie within 1000 times the view's size (" in r["feedback"]
 
 
 def test_every_target_drawing_lies_within_the_range_a_coordinate_may_take():
