@@ -251,8 +251,8 @@ print(results[copier]["output"])
 # ## 5. The class at a glance
 #
 # Gradescope shows each score; for a class's slips you want the verdicts as data. Each
-# `results.json` carries graphkin's whole report under `extra_data` (Gradescope stores it with the
-# submission and does not show it), the same report `graphkin exercise grade --json` prints.
+# `results.json` carries under `extra_data` (Gradescope stores it with the submission and does not show
+# it) the score and each question's verdict and slip of the report `graphkin exercise grade --json` prints.
 # Gradescope's *Export Submissions* gives you these files for a real class.
 
 # %%

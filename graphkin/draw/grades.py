@@ -39,8 +39,8 @@ def draw_grades(reports, *, title: str = "", **style) -> Figure:
     ----------
     reports : iterable of dict
         Grade reports as :func:`graphkin.exercises.grade` returns them (``score``, ``max`` [points] and
-        ``questions``), or a mapping of student to report; ``graphkin exercise grade --json`` and
-        Gradescope's ``results.json`` (under ``extra_data``) hold the same.
+        ``questions``), or a mapping of student to report; ``graphkin exercise grade --json`` holds them, and
+        Gradescope's ``results.json`` (under ``extra_data``) what this reads of them.
     title : str, optional
         A title over both panels.
     **style

@@ -5,7 +5,8 @@ A drawing (format ``docs/json.md``, "Drawn answers") is JSON: ``{"drawing": 1, "
 ``"point"`` or a ``"vector"`` (from, to), coordinates in the question's space and SI units. It comes as text (a
 notebook's answer variable, a Gradescope JSON hand-in's value) or as the dict already parsed. It is read with
 ``json.loads`` only, never evaluated: only objects, lists, strings and finite numbers; at most
-:data:`MAX_ELEMENTS` elements and :data:`MAX_CHARS` characters. Anything else is :class:`Unreadable`, with one
+:data:`MAX_ELEMENTS` elements and :data:`MAX_CHARS` characters; each coordinate within :data:`REACH` times the
+size of the question's view of its middle (:func:`reach`). Anything else is :class:`Unreadable`, with one
 sentence naming the field at fault.
 """
 
@@ -15,8 +16,8 @@ import json
 import math
 from dataclasses import dataclass
 
-__all__ = ["KINDS", "MAX_CHARS", "MAX_ELEMENTS", "SPACES", "VERSION", "Drawing", "Element", "Unreadable",
-           "printable", "read_drawing"]
+__all__ = ["KINDS", "MAX_CHARS", "MAX_COORDINATE", "MAX_ELEMENTS", "REACH", "SPACES", "VERSION", "Drawing", "Element",
+           "Unreadable", "printable", "reach", "read_drawing"]
 
 VERSION = 1
 """The ``drawing`` field this version writes and reads."""
@@ -26,6 +27,15 @@ MAX_ELEMENTS = 64
 
 MAX_CHARS = 20_000
 """The longest a drawing's text may be."""
+
+REACH = 1000
+"""How far a drawn coordinate may lie from the middle of the question's view, in sizes of the view (its larger
+side). A slip's drawing lies within a few sizes (a length laid off ×10 is the farthest); a coordinate beyond a
+thousand is on no page, and one near ±1e308 would overflow the grader's arithmetic (a difference or a square is
+infinite) and come out a plain "wrong"."""
+
+MAX_COORDINATE = 1e15
+"""The bound of a coordinate when no view is given [the space's unit]: its square still a finite float."""
 
 SPACES = {"mechanism": "m", "force": "N", "velocity": "m/s", "acceleration": "m/s^2"}
 """Each space a question is drawn in, and its unit (SI)."""
@@ -106,10 +116,39 @@ def _number(x, field: str) -> float:
     return x
 
 
-def _pair(p, field: str) -> tuple[float, float]:
+def reach(view, unit: str) -> tuple:
+    """The range each drawn coordinate must lie in: ``((xlo, xhi), (ylo, yhi), words)`` [the space's unit].
+
+    Parameters
+    ----------
+    view : sequence of 4 floats or None
+        The task's view ``[xmin, ymin, xmax, ymax]``; None: ±:data:`MAX_COORDINATE` for both.
+    unit : str
+        The space's unit, for the words.
+    """
+    if view is None:
+        m = MAX_COORDINATE
+        return (-m, m), (-m, m), f"within ±{m:g} {unit}"
+    x0, y0, x1, y1 = (float(v) for v in view)
+    size = max(x1 - x0, y1 - y0, 1e-12)
+    cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
+    xs, ys = (cx - REACH * size, cx + REACH * size), (cy - REACH * size, cy + REACH * size)
+    words = (f"within {REACH} times the view's size ({size:.4g} {unit}) of its middle: x from {xs[0]:.4g} to "
+             f"{xs[1]:.4g}, y from {ys[0]:.4g} to {ys[1]:.4g} {unit}")
+    return xs, ys, words
+
+
+def _pair(p, field: str, box, what: str) -> tuple[float, float]:
+    """A point [x, y] of the element ``what`` (its kind and name, for the message), each coordinate in ``box``
+    (``(x range, y range, their words, unit)``, :func:`reach`)."""
     if not isinstance(p, list) or len(p) != 2:
         raise Unreadable(f"{field} must be a point [x, y], got {_short(p)}")
-    return _number(p[0], f"{field}[0]"), _number(p[1], f"{field}[1]")
+    xy = _number(p[0], f"{field}[0]"), _number(p[1], f"{field}[1]")
+    for i, (v, (lo, hi)) in enumerate(zip(xy, box[:2])):
+        if not lo <= v <= hi:
+            raise Unreadable(f"{field}[{i}] of the {what} is {v:.4g} {box[3]}, out of the drawing's range: a "
+                             f"coordinate must lie {box[2]}")
+    return xy
 
 
 def printable(text: str) -> str:
@@ -126,7 +165,7 @@ def _short(x) -> str:
     return printable(text if len(text) <= 40 else text[:39] + "…")
 
 
-def _element(e, i: int) -> Element:
+def _element(e, i: int, box) -> Element:
     where = f"elements[{i}]"
     if not isinstance(e, dict):
         raise Unreadable(f"{where} must be an object {{\"kind\": ..., ...}}, got {_short(e)}")
@@ -139,6 +178,7 @@ def _element(e, i: int) -> Element:
     name = e.get("name", "")
     if not isinstance(name, str) or len(name) > 40:
         raise Unreadable(f"{where}.name must be a short text, got {_short(name)}")
+    what = f"{kind} {printable(name)!r}" if name else kind
     for key in _ELEMENT[kind]:
         if key not in e:
             raise Unreadable(f"{where}.{key} is missing")
@@ -146,16 +186,16 @@ def _element(e, i: int) -> Element:
         through = e["through"]
         if not isinstance(through, list) or len(through) != 2:
             raise Unreadable(f"{where}.through must be two points [[x1, y1], [x2, y2]], got {_short(through)}")
-        p = (_pair(through[0], f"{where}.through[0]"), _pair(through[1], f"{where}.through[1]"))
+        p = (_pair(through[0], f"{where}.through[0]", box, what), _pair(through[1], f"{where}.through[1]", box, what))
         if p[0] == p[1]:
             raise Unreadable(f"{where}.through: a line needs two distinct points, got the same point twice")
         return Element(kind, name, p)
     if kind == "point":
-        return Element(kind, name, (_pair(e["at"], f"{where}.at"),))
-    return Element(kind, name, (_pair(e["from"], f"{where}.from"), _pair(e["to"], f"{where}.to")))
+        return Element(kind, name, (_pair(e["at"], f"{where}.at", box, what),))
+    return Element(kind, name, (_pair(e["from"], f"{where}.from", box, what), _pair(e["to"], f"{where}.to", box, what)))
 
 
-def read_drawing(source, *, question: str | None = None, space: str | None = None) -> Drawing:
+def read_drawing(source, *, question: str | None = None, space: str | None = None, view=None) -> Drawing:
     """Read a drawing (JSON text or the dict already parsed), checked against the question it answers.
 
     Parameters
@@ -165,6 +205,9 @@ def read_drawing(source, *, question: str | None = None, space: str | None = Non
         The question's id: a drawing of another question is refused.
     space : str, optional
         The space the question is drawn in: a drawing in another space is refused.
+    view : sequence of 4 floats, optional
+        The task's view ``[xmin, ymin, xmax, ymax]`` [the space's unit]: a coordinate farther than :data:`REACH`
+        view sizes from its middle is refused (:func:`reach`); without it, one beyond ±:data:`MAX_COORDINATE`.
 
     Raises
     ------
@@ -209,4 +252,6 @@ def read_drawing(source, *, question: str | None = None, space: str | None = Non
         raise Unreadable(f"elements must be a list, got {_short(elements)}")
     if len(elements) > MAX_ELEMENTS:
         raise Unreadable(f"elements holds {len(elements)} elements; at most {MAX_ELEMENTS} are read")
-    return Drawing(q, sp, unit, tuple(_element(e, i) for i, e in enumerate(elements)))
+    xs, ys, words = reach(view, unit)
+    box = (xs, ys, words, unit)
+    return Drawing(q, sp, unit, tuple(_element(e, i, box) for i, e in enumerate(elements)))

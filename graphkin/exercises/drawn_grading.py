@@ -111,7 +111,7 @@ def grade_drawn(variant, q, answer, *, reveal: bool = False) -> dict:
                                   "drawing's text (paste the text the drawing gives, between quotes)."}
     try:
         drawing = answer if isinstance(answer, Drawing) else \
-            read_drawing(answer, question=q.id, space=task["space"])
+            read_drawing(answer, question=q.id, space=task["space"], view=task["view"])
     except Unreadable as exc:
         return out | {"verdict": "unreadable", "feedback": f"The drawing could not be read: {exc}."}
     n = len(drawing.elements)

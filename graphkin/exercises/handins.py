@@ -52,6 +52,7 @@ from pathlib import Path, PurePosixPath
 from graphkin.errors import GraphkinError
 from graphkin.exercises.grading import echo
 from graphkin.exercises.notebooks import MAX_NOTEBOOK_BYTES, code_sources, notebook_answers
+from graphkin.files import write_bytes
 
 REFUSALS = {
     "too_big": (f"This notebook is larger than {MAX_NOTEBOOK_BYTES // 1_000_000} MB, more than a notebook of "
@@ -69,6 +70,11 @@ REFUSALS = {
     "bad_zip": "This zip cannot be opened (it is damaged, or not a zip): hand in your notebook again.",
 }
 """Why a hand-in is not graded, by code: the sentence its every question gets (a student reads it)."""
+
+class FolderError(GraphkinError):
+    """A hand-in's folder that cannot be cleared or given back the assignment's files: one sentence naming the file
+    (the teacher's machine at fault, never the student's hand-in)."""
+
 
 METADATA = "graphkin"
 """The notebook metadata key of a notebook graphkin made from a hand-in (:func:`stripped_notebook`)."""
@@ -223,6 +229,13 @@ def clear_folder(folder, own: Mapping[str, bytes | Path], *, leave=()) -> list[s
     -------
     list of str
         The top-level names removed, for the log.
+
+    Raises
+    ------
+    FolderError
+        An entry that cannot be removed, or an own file that cannot be read or written back: one sentence naming
+        it. Each file is written whole or not at all (:func:`graphkin.files.write_bytes`), so a kernel started
+        after a failure never imports half a module.
     """
     folder = Path(folder)
     leave = set(leave)
@@ -231,17 +244,37 @@ def clear_folder(folder, own: Mapping[str, bytes | Path], *, leave=()) -> list[s
     for entry in sorted(os.scandir(folder), key=lambda e: e.name):
         if entry.name in leave or (entry.name in tops and _unchanged(folder, entry.name, own)):
             continue
-        if entry.is_dir(follow_symlinks=False):
-            shutil.rmtree(entry.path)
-        else:
-            os.unlink(entry.path)
+        _remove(entry)
         removed.append(entry.name)
     for rel, source in own.items():
         target = folder / rel
         if not os.path.lexists(target):
-            target.parent.mkdir(parents=True, exist_ok=True)
-            target.write_bytes(source if isinstance(source, bytes) else Path(source).read_bytes())
+            _put_back(target, source)
     return removed
+
+
+def _remove(entry: os.DirEntry) -> None:
+    """Remove one entry of a hand-in's folder (a link itself, never what it points to)."""
+    try:
+        if entry.is_dir(follow_symlinks=False):
+            shutil.rmtree(entry.path)
+        else:
+            os.unlink(entry.path)
+    except OSError as exc:
+        raise FolderError(f"hand-in folder: {entry.path} cannot be removed ({exc.strerror or exc})") from None
+
+
+def _put_back(target: Path, source) -> None:
+    """Write one of the assignment's own files back into a hand-in's folder, atomically (temp file, os.replace)."""
+    try:
+        data = _content(source)
+    except OSError as exc:
+        raise FolderError(f"assignment file {source}: cannot be read to put back as {target} "
+                          f"({exc.strerror or exc})") from None
+    try:
+        write_bytes(target, data, "assignment file")
+    except GraphkinError as exc:  # the writer's sentence names the file; said again as this module's error
+        raise FolderError(str(exc)) from None
 
 
 def own_files(folder, *, skip=(), prefix: str = "") -> dict[str, Path]:
@@ -485,5 +518,5 @@ def _describe_zip(top: str, members: list) -> str:
     return f"{shown}/ ({'a Python package' if package else 'a folder'}, {_files(len(members))})"
 
 
-__all__ = ["METADATA", "REFUSALS", "HandIn", "class_notes", "clear_folder", "literal", "notebook_text", "own_files",
-           "read_handin", "stripped_notebook"]
+__all__ = ["METADATA", "REFUSALS", "FolderError", "HandIn", "class_notes", "clear_folder", "literal", "notebook_text",
+           "own_files", "read_handin", "stripped_notebook"]

@@ -12,8 +12,9 @@ anything. An answer that is not a literal (a call, a name, an f-string), or that
 graded unreadable with a sentence saying to type the answer as text, on a line of its own.
 
 :func:`read_cells` is the one reader: the grader reads a handed-in notebook's code cells with it
-(:func:`notebook_answers`), and a notebook's own check reads the cells run so far in its kernel with it
-(:func:`kernel_cells`), so that what the check calls readable is what the grader reads, and the reverse.
+(:func:`notebook_answers`), and a notebook's own check reads the notebook's file as saved with it, top to bottom
+as the grader does (:func:`kernel_notebook`), else the cells run so far in its kernel (:func:`kernel_cells`), so
+that what the check calls readable is what the grader reads, and the reverse.
 
 Examples
 --------
@@ -36,6 +37,7 @@ import keyword
 import re
 from collections.abc import Mapping
 from dataclasses import dataclass
+from pathlib import Path
 
 from graphkin.errors import GraphkinError
 
@@ -285,8 +287,9 @@ def kernel_cells() -> list[str] | None:
     """The cells run so far in this IPython kernel, as they were typed, in the order they ran; None outside
     IPython.
 
-    A notebook's own check reads them with :func:`read_cells`, as the grader reads the handed-in notebook,
-    so that a student learns before handing in how the grader will read an answer.
+    A notebook's own check reads them with :func:`read_cells` where the kernel does not know its notebook's file
+    (:func:`kernel_notebook`), and to tell a student when the cells as run give another answer than the file the
+    grader reads.
     """
     try:
         from IPython import get_ipython
@@ -302,5 +305,32 @@ def kernel_cells() -> list[str] | None:
     return [s for s in history if isinstance(s, str)] if isinstance(history, list) else []
 
 
+def kernel_notebook() -> Path | None:
+    """The notebook file this IPython kernel runs, as saved; None when it is not known (outside IPython, a console).
+
+    The cells run in a kernel are in the order they ran; the grader reads the file handed in, top to bottom. A
+    notebook's own check reads this file too, so that a cell rerun out of order cannot make it say "readable" of
+    an answer the grader reads otherwise. Jupyter (jupyter_server 2: JupyterLab 4, Notebook 7) starts a notebook's
+    kernel with its path, which ipykernel keeps as ``__session__``; VS Code sets ``__vsc_ipynb_file__``. A path
+    relative to the server's root is looked for in the kernel's folder, which is the notebook's.
+    """
+    try:
+        from IPython import get_ipython
+    except ImportError:
+        return None
+    shell = get_ipython()
+    if shell is None:
+        return None
+    for name in ("__vsc_ipynb_file__", "__session__"):
+        value = shell.user_ns.get(name)
+        if not isinstance(value, str) or not value.lower().endswith(".ipynb"):
+            continue
+        p = Path(value)
+        for candidate in (p, Path.cwd() / p, Path.cwd() / p.name):
+            if candidate.is_file():
+                return candidate
+    return None
+
+
 __all__ = ["MAX_CELL_CHARS", "MAX_NOTEBOOK_BYTES", "NotData", "RESERVED", "STUDENT_VARIABLE", "answer_variables",
-           "code_sources", "kernel_cells", "notebook_answers", "read_cells"]
+           "code_sources", "kernel_cells", "kernel_notebook", "notebook_answers", "read_cells"]

@@ -693,10 +693,36 @@ def results_from_report(ex, report: dict, notes: list[str]) -> dict:
     } for r in report["questions"]]
     summary = f"{ex.title}\nGraded as student {report['student']!r}: {report['score']:g} / {report['max']:g} points."
     results = _results(report["score"], "\n".join([summary, *notes]), tests)
-    # Gradescope stores extra_data with the submission without showing it: graphkin's report as plain data
-    # (verdicts and slips per question), for the teacher's own statistics over a class.
-    results["extra_data"] = {"graphkin": report}
+    results["extra_data"] = {"graphkin": statistics(report)}
     return results
+
+
+STATISTICS = ("id", "verdict", "slip", "score", "max")
+"""What ``results.json`` keeps of each question's result (:func:`statistics`)."""
+
+
+def statistics(report: dict) -> dict:
+    """What ``results.json`` keeps of graphkin's report, under ``extra_data``: the teacher's statistics only.
+
+    Gradescope stores ``extra_data`` with the submission without showing it, and the class's statistics
+    (:func:`graphkin.draw.draw_grades`) need only the score and each question's verdict and slip. The rest of the
+    report is left out, as ``results.json`` is the submission's own file, written where the submission was
+    unpacked: ``other`` names a classmate whose data an answer fits, ``expected`` and a drawing's ``right`` are the
+    key's values, ``answer``, ``feedback`` and ``ignored`` repeat what the student typed or was shown.
+
+    Parameters
+    ----------
+    report : dict
+        A report of :meth:`graphkin.exercises.keys.Keys.grade` (points, no unit).
+
+    Returns
+    -------
+    dict
+        ``{"exercise", "student", "score", "max", "questions": [{"id", "verdict", "slip", "score", "max"}]}``
+        (``student``: the submitter graded, whom Gradescope already knows).
+    """
+    return {"exercise": report["exercise"], "student": report["student"], "score": report["score"],
+            "max": report["max"], "questions": [{k: r.get(k) for k in STATISTICS} for r in report["questions"]]}
 
 
 def not_graded(exercise_file, reason: str) -> dict:
@@ -722,5 +748,5 @@ def write_results(path: Path, results: dict) -> None:
     write_text(path, json.dumps(results, indent=2, ensure_ascii=False) + "\n", "results")
 
 
-__all__ = ["build", "run", "read_answers", "find_answers", "whom_to_grade", "results_from_report",
-           "local_try_commands"]
+__all__ = ["STATISTICS", "build", "run", "read_answers", "find_answers", "whom_to_grade", "results_from_report",
+           "statistics", "local_try_commands"]

@@ -17,9 +17,10 @@ from graphkin.errors import GraphkinError
 from graphkin.exercises import load_exercise
 from graphkin.exercises.exercise import Exercise
 from graphkin.exercises.feedback import Refusal, read_given
+from graphkin.exercises.grading import echo, grade_variant
 from graphkin.exercises.grading import grade_question as _grade_one
-from graphkin.exercises.grading import grade_variant
-from graphkin.exercises.notebooks import kernel_cells, read_cells
+from graphkin.exercises.handins import read_handin
+from graphkin.exercises.notebooks import NotData, kernel_cells, kernel_notebook, read_cells
 from graphkin.exercises.sheets import format_sheet
 from graphkin.exercises.variants import check_student, make_variant
 
@@ -93,16 +94,60 @@ def readable_problem(path_or_exercise, qid: str, answer, variable: str | None = 
     """Why an answer would be graded missing or unreadable (the grader's sentence), or None when it is read.
 
     What a notebook's own check cell tells a student: it needs neither the key nor the secret. With
-    ``variable``, in a kernel, the answer is what the grader would read from the cells run so far
-    (:func:`graphkin.exercises.notebooks.read_cells`, the grader's own reader), never the value the kernel
-    holds; and readability is the grader's own decision (:func:`graphkin.exercises.grading.read_given`).
+    ``variable``, in a kernel, the answer is what the grader reads, never the value the kernel holds: from the
+    notebook file as saved, read as the grader reads a hand-in (:func:`graphkin.exercises.handins.read_handin`,
+    the cells top to bottom), when the kernel knows its file (:func:`graphkin.exercises.notebooks.kernel_notebook`),
+    else from the cells run so far, in the order they ran (:func:`graphkin.exercises.notebooks.read_cells`, the
+    grader's own reader). Where the saved file and the cells as run give different answers (a cell rerun out of
+    order, or edits not saved yet), the sentence says both and how to make them agree; where no cell run assigns
+    the variable, the saved file decides alone. Readability is the
+    grader's own decision (:func:`graphkin.exercises.grading.read_given`).
     """
     ex = exercise(path_or_exercise)
     q = ex.question(qid)
     cells = kernel_cells() if variable else None
-    given = read_cells(cells, {qid: variable})[1][qid] if cells is not None else answer_value(answer)
+    if cells is None:
+        return _refusal(ex, q, answer_value(answer))
+    ran = read_cells(cells, {qid: variable})[1][qid]
+    saved = _saved_notebook(qid, variable)
+    if saved is None:
+        return _refusal(ex, q, ran)
+    if saved.refused:
+        return saved.reason  # the grader refuses the notebook as saved whole, with this sentence
+    given = saved.answers[qid]
+    refused = _refusal(ex, q, given)
+    # No cell run assigns it: nothing to disagree with (a drawing kept in its box's output is in the file only).
+    if ran is None or given == ran:
+        return refused
+    differs = (f"The notebook as saved, which the grader reads from top to bottom, gives {variable} = "
+               f"{_shown(given)}, but the cells as you ran them give {_shown(ran)}: save the notebook, then run it "
+               "from the top (Kernel, then Restart Kernel and Run All Cells) and check again before you hand it in.")
+    return differs + (f" As saved: {refused}" if refused else "")
+
+
+def _refusal(ex, q, given) -> str | None:
     refused = read_given(q, given, decimal_comma=ex.decimal_comma)
     return refused.sentence if isinstance(refused, Refusal) else None
+
+
+def _saved_notebook(qid: str, variable: str):
+    """The kernel's notebook file as saved, read as the grader reads a hand-in; None when the file is not known."""
+    path = kernel_notebook()
+    if path is None:
+        return None
+    try:
+        return read_handin(path, {qid: variable})
+    except GraphkinError:  # gone between finding and reading it: the cells as run are all there is
+        return None
+
+
+def _shown(value) -> str:
+    """An answer as the check's sentence quotes it (one line)."""
+    if value is None:
+        return "no answer"
+    if isinstance(value, NotData):
+        return echo(value)
+    return repr(echo(value, 60)) if isinstance(value, str) else echo(value, 60)
 
 
 def feedback_line(result: dict) -> str:
