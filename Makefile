@@ -1,5 +1,10 @@
 # Two commands need nothing but Python 3.11+: `make demo` and `make test`.
 PYTHON ?= python3
+
+# Bytecode is written once and read by every process a run starts (the tests start hundreds: the command line,
+# kernels of lessons and grading platforms), where an environment that sets PYTHONDONTWRITEBYTECODE would have
+# each of them compile graphkin again (about 0.7 s of CPU a process that imports its exercises and drawings).
+unexport PYTHONDONTWRITEBYTECODE
 VENV   := .venv
 BIN    := $(VENV)/bin
 
