@@ -4,10 +4,12 @@ For ``bench_guard.py``'s question (issue 35, "Keep") on a machine too busy for C
 valgrind's callgrind, once with 0 repetitions and once with 3, for each checkout; the difference over
 3 × 180 positions is the instructions a position costs::
 
-    PYTHONPATH=/tmp/base valgrind --tool=callgrind --callgrind-out-file=/dev/null \\
+    OPENBLAS_NUM_THREADS=1 PYTHONHASHSEED=0 PYTHONPATH=/tmp/base setarch -R \\
+        valgrind --tool=callgrind --callgrind-out-file=/dev/null \\
         .venv/bin/python benchmarks/guard_instructions.py 3 polygons   # or: 0 polygons, 3 centres
 
-(about two minutes a run; a third argument names another catalog problem, e.g. ``3 centres gearset``). Both
+(about two minutes a run; OpenBLAS's spinning threads would otherwise add a few million instructions that vary
+from run to run; a third argument names another catalog problem, e.g. ``3 centres gearset``). Both
 are made once for every position before the repetitions, so that the
 counts leave out the imports, the problem and its kinematics, and every cache filled on first use.
 

@@ -226,7 +226,7 @@ def instant_centres(kin: Kinematics, index: int = 0) -> InstantCentres:
     # Link by link: Ω, X, w with v(P) = iΩ (P w − X) (P in units of ``size``), X/w being the centre I_1k.
     fields = {frame: (0.0, 0j, 1.0)}
     g = next(g for g in kin.groups if isinstance(g, DriverGroup))
-    q_dot = float(kin.q_dot[at])
+    q_dot = kin.q_dot.item(at)  # a Python float, no numpy scalar made
     if isinstance(g.joint, Revolute):
         I12 = known[frame, g.link]
         fields[g.link] = (q_dot * size / I12[2], complex(I12[0], I12[1]), I12[2])
