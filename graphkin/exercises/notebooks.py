@@ -283,6 +283,15 @@ def notebook_answers(notebook, variables: Mapping[str, str], student_variable: s
     return read_cells(code_sources(notebook), variables, student_variable)
 
 
+def _shell():
+    """This process's IPython shell; None outside IPython (or where IPython is not installed)."""
+    try:
+        from IPython import get_ipython
+    except ImportError:
+        return None
+    return get_ipython()
+
+
 def kernel_cells() -> list[str] | None:
     """The cells run so far in this IPython kernel, as they were typed, in the order they ran; None outside
     IPython.
@@ -291,11 +300,7 @@ def kernel_cells() -> list[str] | None:
     (:func:`kernel_notebook`), and to tell a student when the cells as run give another answer than the file the
     grader reads.
     """
-    try:
-        from IPython import get_ipython
-    except ImportError:
-        return None
-    shell = get_ipython()
+    shell = _shell()
     if shell is None:
         return None
     # The raw input (magics as typed, as the notebook file holds them), else IPython's transformed copy.
@@ -314,11 +319,7 @@ def kernel_notebook() -> Path | None:
     kernel with its path, which ipykernel keeps as ``__session__``; VS Code sets ``__vsc_ipynb_file__``. A path
     relative to the server's root is looked for in the kernel's folder, which is the notebook's.
     """
-    try:
-        from IPython import get_ipython
-    except ImportError:
-        return None
-    shell = get_ipython()
+    shell = _shell()
     if shell is None:
         return None
     for name in ("__vsc_ipynb_file__", "__session__"):
