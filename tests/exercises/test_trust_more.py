@@ -142,22 +142,6 @@ def test_every_target_drawing_lies_within_the_range_a_coordinate_may_take():
 # -- A notebook's own check reads what the grader reads: the file as saved, top to bottom ---------------------------
 
 
-@pytest.fixture()
-def kernel(tmp_path, monkeypatch):
-    """A fresh IPython shell as the student's kernel (its history in memory only), started in the notebook's folder."""
-    from IPython.core.interactiveshell import InteractiveShell
-    from traitlets.config import Config
-
-    monkeypatch.setenv("IPYTHONDIR", str(tmp_path / "ipython"))
-    monkeypatch.chdir(tmp_path)
-    config = Config()
-    config.HistoryManager.enabled = False
-    InteractiveShell.clear_instance()
-    shell = InteractiveShell.instance(config=config)
-    yield shell
-    InteractiveShell.clear_instance()
-
-
 def _saved(path: Path, cells: list[str]) -> Path:
     nb = {"cells": [{"cell_type": "code", "metadata": {}, "outputs": [], "execution_count": None, "source": c}
                     for c in cells], "metadata": {}, "nbformat": 4, "nbformat_minor": 5}

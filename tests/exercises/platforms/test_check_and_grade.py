@@ -39,21 +39,6 @@ CELLS = [
 ]
 
 
-@pytest.fixture()
-def kernel(tmp_path, monkeypatch):
-    """A fresh IPython shell, as the student's kernel (its history in memory only)."""
-    from IPython.core.interactiveshell import InteractiveShell
-    from traitlets.config import Config
-
-    monkeypatch.setenv("IPYTHONDIR", str(tmp_path / "ipython"))
-    config = Config()
-    config.HistoryManager.enabled = False
-    InteractiveShell.clear_instance()
-    shell = InteractiveShell.instance(config=config)
-    yield shell
-    InteractiveShell.clear_instance()
-
-
 def graded(cells: list[str]) -> dict:
     """The grader's verdict on F23 for a notebook of these code cells."""
     nb = {"cells": [{"cell_type": "code", "source": c, "metadata": {}} for c in cells]}
