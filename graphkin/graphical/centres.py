@@ -24,7 +24,7 @@ import numpy as np
 from graphkin.analytical.meshes import pitch as pitch_point
 from graphkin.errors import GraphkinError
 from graphkin.graphical.captions import Captions, Later, number
-from graphkin.graphical.guard import centres_disagreement, derived, kept
+from graphkin.graphical.guard import centres_disagreement, derived, kept, motion_at
 from graphkin.graphical.guard import plan as kept_plan
 from graphkin.kinematics import DriverGroup, Kinematics
 from graphkin.model import GearMesh, Prismatic, Revolute
@@ -163,9 +163,11 @@ def instant_centres(kin: Kinematics, index: int = 0) -> InstantCentres:
     kin, at = derived(kin, i)  # placed by the input motion alone, a problem's given values left out
 
     points, names, G_local = kept(kin, "centres", _shape)
-    O = {n: kin.O[n].item(at) for n in mech.moving}  # .item: a Python complex, no numpy scalar made
-    e = {n: kin.e[n].item(at) for n in mech.moving}
-    pos = {(link, name): p if link == frame else O[link] + e[link] * p  # where each point is [m]
+    # Where each link is (its origin O [m] and turn e^iθ, by its column): read once, from the analytical motion of
+    # the position the guard compares the centres with (the kinematics' own numbers, which both routes share).
+    truth = motion_at(kin, at, accelerations=False)
+    col, O, e = truth.column, truth.O, truth.e
+    pos = {(link, name): p if link == frame else O[col[link]] + e[col[link]] * p  # where each point is [m]
            for (link, name), p in points.items()}
     size = max(map(abs, pos.values())) or 1.0
 
@@ -181,7 +183,7 @@ def instant_centres(kin: Kinematics, index: int = 0) -> InstantCentres:
             P = hom(pos[a, joint.point])
             how = f"the pin {joint.point}"
         elif isinstance(joint, Prismatic):
-            u = (1 + 0j if joint.guide == frame else e[joint.guide]) * cmath.exp(1j * joint.direction)
+            u = (1 + 0j if joint.guide == frame else e[col[joint.guide]]) * cmath.exp(1j * joint.direction)
             P = (-u.imag, u.real, 0.0)
             how = f"at infinity, perpendicular to the guide at {joint.point}"
         elif isinstance(joint, GearMesh):
@@ -260,7 +262,7 @@ def instant_centres(kin: Kinematics, index: int = 0) -> InstantCentres:
             continue
         Om, X, w = fields[link]
         omega[link] = Om * w / size
-        G = O[link] + e[link] * G_local[link]
+        G = O[col[link]] + e[col[link]] * G_local[link]
         for name in names[link]:
             v = 1j * Om * (pos[link, name] / size * w - X)
             velocity[link, name] = (v.real, v.imag)

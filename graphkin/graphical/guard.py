@@ -216,6 +216,7 @@ def _row(shape: _Shape, kin, i: int) -> _Truth:
     O = [kin.O[n].item(i) for n in moving]  # .item: a Python number, no numpy scalar made
     O.append(0j)
     e = [kin.e[n].item(i) for n in moving]
+    e.append(1 + 0j)
     v_O = [kin.v_O[n].item(i) for n in moving]
     v_O.append(0j)
     w = [kin.omega[n].item(i) for n in moving]
@@ -248,16 +249,17 @@ def _accelerate(truth: _Truth, kin, i: int) -> None:
 def _rows(shape: _Shape, kin) -> tuple[list, list]:
     """Every position's row at once (numpy over the positions), as lists of Python numbers: ``values`` (complex)
     holds the velocity and acceleration of every key of the :class:`_Shape`, then each link's origin O, v_O, a_O,
-    iω and iα − ω² (the moving links, then the frame's: all 0); ``rates`` (real) holds ω and α of each link (the
+    iω, iα − ω² and e^iθ (the moving links, then the frame's: 0, and e^iθ 1); ``rates`` (real) holds ω and α of each link (the
     same order), then the position's scales: the largest speed (acceleration) of a named point or centre of mass,
     or of a link's ω (α) times the mechanism's size."""
     moving = shape.moving
     column = list(shape.columns)
 
-    def links(arrays, kind):  # (positions, links), the frame's 0 last
-        return np.stack([np.asarray(arrays[m], dtype=kind) for m in moving] + [np.zeros(kin.n, kind)], axis=1)
+    def links(arrays, kind, frame=0):  # (positions, links), the frame's value (0; its e^iθ: 1) last
+        return np.stack([np.asarray(arrays[m], dtype=kind) for m in moving] + [np.full(kin.n, frame, kind)], axis=1)
 
-    O, e, v_O, a_O = (links(x, complex) for x in (kin.O, kin.e, kin.v_O, kin.a_O))
+    O, v_O, a_O = (links(x, complex) for x in (kin.O, kin.v_O, kin.a_O))
+    e = links(kin.e, complex, 1)
     w, al = links(kin.omega, float), links(kin.alpha, float)
     iw, turn = 1j * w, 1j * al - w * w
     e_c = e[:, column]  # each point from its link's origin is e p [m]
@@ -267,7 +269,7 @@ def _rows(shape: _Shape, kin) -> tuple[list, list]:
         v_top = np.maximum(np.abs(v).max(axis=1), np.abs(w).max(axis=1) * shape.size)
         a_top = np.maximum(np.abs(a).max(axis=1), np.abs(al).max(axis=1) * shape.size)
     # As Python numbers, all at once: a position's few dozen values are too few for numpy to pay.
-    return (np.concatenate([v, a, O, v_O, a_O, iw, turn], axis=1).tolist(),
+    return (np.concatenate([v, a, O, v_O, a_O, iw, turn, e], axis=1).tolist(),
             np.concatenate([w, al, v_top[:, None], a_top[:, None]], axis=1).tolist())
 
 
@@ -277,9 +279,10 @@ class _Truth:
     ``v``, ``a``: the velocity and acceleration of each key of the :class:`_Shape` [m/s, m/s²], in its order
     (``index``); ``O``, ``v_O``, ``a_O``, ``iw``, ``turn``: each link's origin [m], its velocity and acceleration and
     the factors iω and iα − ω² that carry them to a point r = P − O away (v = v_O + iω r, a = a_O + (iα − ω²) r);
-    ``w``, ``al``: each link's ω and α; all of these in the order of ``column``. A position worked out alone
-    (:func:`_row`) has its accelerations (``a`` … ``a_scale``) once asked for (``a`` None until then) and keeps
-    ``e``, each moving link's turn e^iθ, to work them out.
+    ``w``, ``al``: each link's ω and α; ``e``: its turn e^iθ (where its points are: O + e^iθ p, p in its own
+    frame; the instant centres place the links with them); all of these in the order of ``column``. A position
+    worked out alone (:func:`_row`) has its accelerations (``a`` … ``a_scale``) once asked for (``a`` None until
+    then).
     """
 
     __slots__ = ("shape", "size", "index", "column", "v", "a", "O", "v_O", "a_O", "iw", "turn", "w", "al", "v_scale",
@@ -289,7 +292,8 @@ class _Truth:
         K, L = len(shape.keys), len(shape.column)
         self.shape, self.size, self.index, self.column = shape, shape.size, shape.index, shape.column
         self.v, self.a = z[:K], z[K:2 * K]
-        self.O, self.v_O, self.a_O, self.iw, self.turn = (z[2 * K + k * L:2 * K + (k + 1) * L] for k in range(5))
+        self.O, self.v_O, self.a_O, self.iw, self.turn, self.e = (z[2 * K + k * L:2 * K + (k + 1) * L]
+                                                                  for k in range(6))
         self.w, self.al = x[:L], x[L:2 * L]
         self.v_scale, self.a_scale = x[2 * L], x[2 * L + 1]
 
@@ -333,8 +337,13 @@ def kept(kin, what: str, make):
     return value
 
 
-def _truth(kin, i: int, accelerations: bool = True) -> _Truth:
+def motion_at(kin, i: int, accelerations: bool = True) -> _Truth:
+    """The analytical motion of position ``i`` of ``kin``, as the guard compares a construction with it: each
+    link's place (O, e^iθ), ω, the velocity of every named point and centre of mass, and their accelerations where
+    ``accelerations`` (the instant centres need none). Worked out once per position and kept with the kinematics'
+    table (:func:`kept`), so that a construction reading the links' places from it reads them once."""
     return kept(kin, "table", _Table).truth(kin, i, accelerations)
+
 
 
 class _Check:
@@ -608,7 +617,7 @@ def motion_disagreement(kin, i: int, c, where: dict, coriolis: dict) -> str:
         '' where every value agrees to :data:`AGREEMENT` of its scale; else the reason, naming the worst quantity
         and both values.
     """
-    truth = _truth(kin, i)
+    truth = motion_at(kin, i)
     if _motion_agrees(truth, c, where, coriolis):
         return ""
     # Only where a value disagrees (or is not a number): every difference again, the worst one put in words.
@@ -656,7 +665,7 @@ def centres_disagreement(kin, i: int, ic) -> str:
     must leave a and b only translating relative to each other (ω_a = ω_b), and across u (the relative velocity
     perpendicular to u). The ω and the velocities the centres give are compared as the polygons' are.
     """
-    truth = _truth(kin, i, False)
+    truth = motion_at(kin, i, False)
     if _centres_agree(truth, ic):
         return ""
     check = _Check(truth)

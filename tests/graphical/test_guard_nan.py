@@ -85,3 +85,22 @@ def test_the_truth_is_the_same_worked_out_alone_or_with_every_position(strip_cut
         for factor, ok in ((0.01, True), (100.0, False)):
             nudged = dataclasses.replace(c, velocity={**c.velocity, key: (x + factor * guard.AGREEMENT * top, y)})
             assert (guard.centres_disagreement(kin, i, nudged) == "") is ok, (i, factor)
+
+
+def test_a_position_alone_and_from_the_table_gives_the_same_numbers(strip_cutter):
+    """The instant centres place the links with the guard's O and e^iθ (:func:`guard.motion_at`): a position worked
+    out alone and the same position read from the table of every position read the same numbers of the kinematics
+    (each link's O, e^iθ and rates, to the bit), the frame's e^iθ 1 in both; what is worked out of them (a point's
+    velocity) may differ in the last bit (numpy's complex product against Python's), which the guard's tolerance is
+    far above."""
+    i = strip_cutter.kinematics.n - 1
+    alone = dataclasses.replace(strip_cutter.kinematics)  # new kinematics: nothing kept for them yet
+    by_table = dataclasses.replace(strip_cutter.kinematics)
+    for j in range(guard.FEW):
+        guard.motion_at(by_table, j)
+    a, b = guard.motion_at(alone, i), guard.motion_at(by_table, i)
+    assert guard.kept(by_table, "table", None).rows is not None and guard.kept(alone, "table", None).rows is None
+    for name in ("O", "e", "v_O", "w", "a_O", "al"):
+        assert getattr(a, name) == getattr(b, name), name
+    assert max(abs(x - y) for x, y in zip(a.v, b.v)) <= 1e-15 * a.v_scale
+    assert a.e[a.column[strip_cutter.mechanism.frame]] == 1
