@@ -18,6 +18,10 @@ kinematics (the problem's ``kinematics()`` again: the same mechanism, whose plan
 are made before the repetitions in every run, so that the difference leaves them out), so that what is worked out
 once per kinematics is counted too, as ``graphkin solve`` meets it (e.g. ``40 centres gearset cold`` against
 ``0 centres gearset cold``, divided by 40 × its positions).
+
+One hash seed is one layout of the heap (which dict slots collide, which objects sit together), and a small call's
+count moves by a few thousand instructions from one layout to another: compare the median over several seeds
+(``PYTHONHASHSEED`` 0 to 5), each run as above, rather than one seed's count (benchmarks/README.md, "Met").
 """
 
 from __future__ import annotations

@@ -36,7 +36,21 @@ from graphkin.graphical.construction import nice_scale
 from graphkin.graphical.guard import derived, kept, motion_disagreement
 from graphkin.graphical.guard import plan as kept_plan
 from graphkin.graphical.motion import MotionConstruction, MotionStep, PolygonLine, Vector
-from graphkin.graphical.motion_captions import A, V, acceleration_image, rate, sense, vector, velocity_image
+from graphkin.graphical.motion_captions import (
+    A,
+    V,
+    acceleration_image,
+    driver_sliding,
+    driver_sliding_acceleration,
+    driver_turning,
+    driver_turning_acceleration,
+    gear_rolling,
+    gear_rolling_acceleration,
+    rate,
+    sense,
+    vector,
+    velocity_image,
+)
 from graphkin.kinematics import DriverGroup, Dyad, GearGroup, Kinematics
 from graphkin.kinematics.groups import DEAD_POINT
 from graphkin.kinematics.plan import plan_of
@@ -205,8 +219,7 @@ class _Polygons:
         if isinstance(J, Revolute):
             O2 = self.pos(self.frame, J.point)
             self.motion[link] = _Motion(O2, 0j, w2)
-            caption = (f"Driver {link} turns about {J.point} at ω{link} = {rate(w2, 'rad/s')}: each of its points moves "
-                       f"perpendicular to its line from {J.point}, at ω{link} times that distance.")
+            caption = Later(driver_turning, link, J.point, w2)
             self.step("velocity", "driver", caption, (link,), values={f"omega{link}": w2})
         else:
             u = cmath.exp(1j * J.direction)
@@ -215,8 +228,7 @@ class _Polygons:
             self.motion[link] = _Motion(X, v, 0.0)
             s = self.sym(link, J.point)
             self.where[s.lower()] = self.where[f"{s.lower()}′"] = (link, X, (link, J.point))
-            caption = (f"Driver {link} slides along its guide at v = {number(w2)} m/s: v_{s} = {self.text(v, V)}, "
-                       f"drawn from the pole o to {s.lower()}.")
+            caption = Later(driver_sliding, link, s, w2, v, self.v_ref)
             self.step("velocity", "driver", caption, (link,), [(f"v_{s}", 0j, v, "size and direction")],
                       points={s.lower(): v}, values={f"omega{link}": 0.0})
         self.image_velocity(link)
@@ -227,14 +239,12 @@ class _Polygons:
         m = self.motion[link]
         if isinstance(J, Revolute):
             m.a, m.al = 0j, al2
-            caption = (f"Driver {link}: α{link} = {rate(al2, 'rad/s²')}; each of its points has a normal component "
-                       f"ω{link}² r towards {J.point} and a tangential one α{link} r perpendicular to its line from {J.point}.")
+            caption = Later(driver_turning_acceleration, link, J.point, al2)
             self.step("acceleration", "driver", caption, (link,), values={f"alpha{link}": al2})
         else:
             m.a, m.al = al2 * cmath.exp(1j * J.direction), 0.0
             s = self.sym(link, J.point)
-            caption = (f"Driver {link} accelerates along its guide at a = {number(al2)} m/s²: "
-                       f"a_{s} = {self.text(m.a, A)}, drawn from the pole o′ to {s.lower()}′.")
+            caption = Later(driver_sliding_acceleration, link, s, al2, m.a, self.a_ref)
             self.step("acceleration", "driver", caption, (link,), [(f"a_{s}", 0j, m.a, "size and direction")],
                       points={f"{s.lower()}′": m.a}, values={f"alpha{link}": 0.0})
         self.image_acceleration(link)
@@ -463,9 +473,7 @@ class _Polygons:
         p = f"P{g.j}{g.k}"
         self.where[p.lower()] = (g.j, P, None)  # the pitch point of gear j: gear k's has its velocity (rolling)
         self.where[f"{p.lower()}′"] = (g.k, P, None)  # the acceleration polygon finds gear k's (gear_acceleration)
-        caption = (f"Gear {g.k} meshes with gear {g.j} at the pitch point {p}, where the gears roll: v_{p} on gear {g.k} "
-                   f"equals v_{p} on gear {g.j} = {self.text(v_P, V)}. Gear {g.k} turns about {c}: "
-                   f"ω{g.k} = v_{p}{c} / {c}{p} = {rate(w, 'rad/s')}.")
+        caption = Later(gear_rolling, g.j, g.k, p, c, v_P, w, self.v_ref)
         self.step("velocity", "gear", caption, (g.k,),
                   [(f"v_{c}", 0j, v_C, "size and direction"), (f"v_{p}", 0j, v_P, "size and direction"),
                    (f"v_{p}{c}", v_C, v_P, "found")], points={p.lower(): v_P}, values={f"omega{g.k}": w})
@@ -485,10 +493,7 @@ class _Polygons:
         lines = [(t_name, a_C + normal, 1j * arm / abs(arm)), (f"a_{p}{g.k}{g.j}", a_Pj, arm / abs(arm))]
         a_P = _meet(*lines[0][1:], *lines[1][1:], g.label)
         al = cross(arm, a_P - a_C - normal) / abs(arm) ** 2
-        caption = (f"Gear {g.k}: a_{p} = a_{c} + a^n_{p}{c} + {t_name}, a^n_{p}{c} = ω{g.k}² {c}{p} = "
-                   f"{number(abs(normal))} m/s² towards {c}, {t_name} ⊥ {c}{p}; rolling makes the tangential "
-                   f"components of the two gears' pitch points equal, so a_{p} lies on the line through gear {g.j}'s "
-                   f"a_{p} along the line of centres. They meet: α{g.k} = {t_name} / {c}{p} = {rate(al, 'rad/s²')}.")
+        caption = Later(gear_rolling_acceleration, g.j, g.k, p, c, t_name, abs(normal), al)
         self.step("acceleration", "gear", caption, (g.k,),
                   [(f"a_{c}", 0j, a_C, "size and direction"), (f"a^n_{p}{c}", a_C, a_C + normal, "size and direction"),
                    (t_name, a_C + normal, a_P, "direction"), (f"a_{p}", 0j, a_P, "found")], lines,
