@@ -47,6 +47,7 @@ with the arm as the driver and the sun's torque as a load), so no family draws t
 from __future__ import annotations
 
 import dataclasses
+import functools
 import math
 from typing import Mapping, NamedTuple
 
@@ -162,11 +163,13 @@ def _t(p):
     return (float(p[0]), float(p[1]))
 
 
+@functools.lru_cache(maxsize=4096)  # ranges drawn from earlier draws make new keys: bounded
 def _floats(lo, hi):
     """Floats in [lo, hi]; magnitudes below 1e-6 of the range are flushed to 0.
 
     Values like 1e-250 that hypothesis likes to try are not physical and only
-    test floating-point underflow (products of two of them vanish).
+    test floating-point underflow (products of two of them vanish). One strategy per range, made once: hypothesis
+    checks a new strategy on its first draw, and the families draw thousands of these.
     """
     tiny = 1e-6 * max(abs(lo), abs(hi))
     return st.floats(lo, hi, allow_nan=False, allow_infinity=False).map(lambda x: 0.0 if abs(x) < tiny else x)

@@ -65,13 +65,81 @@ def paths(reader: pypdf.PdfReader, page) -> list[Path]:
     return out
 
 
+# One token of a content stream (ISO 32000-1 §7.2, §7.3): a number, a name, a delimiter, a hex string, or a
+# regular run (an operator, true, false, null). A literal string is read by hand, as its parentheses may nest.
+_TOKEN = re.compile(rb"""[\x00\t\n\x0c\r ]*(?:%[^\r\n]*[\x00\t\n\x0c\r ]*)*(?:
+    (?P<number>[+-]?(?:\d+\.?\d*|\.\d+))(?![^\x00\t\n\x0c\r ()<>\[\]{}/%])
+  | (?P<name>/[^\x00\t\n\x0c\r ()<>\[\]{}/%]*)
+  | (?P<open><<|\[|\{)
+  | (?P<close>>>|\]|\})
+  | (?P<hex><[^>]*>)
+  | (?P<string>\()
+  | (?P<word>[^\x00\t\n\x0c\r ()<>\[\]{}/%]+)
+  | (?P<end>\Z))""", re.VERBOSE)
+_STRING = re.compile(rb"\\.|[()]", re.DOTALL)
+_NAME_ESCAPE = re.compile(r"#([0-9A-Fa-f]{2})")
+
+
+def _operations(data: bytes) -> list[tuple[list, str]] | None:
+    """The (operands, operator) pairs of a content stream: numbers as floats, names as ``/Name`` strings, arrays
+    and dictionaries as lists; strings are skipped over (their text is not drawing). ``None`` when the stream
+    holds an inline image (``BI … ID … EI``), whose raw bytes only a full parser reads safely.
+
+    Parsing the content streams of a long handout with :class:`pypdf.generic.ContentStream` takes seconds a page
+    (every number an object); the paths need only numbers, names and operators, read here with one expression.
+    """
+    ops: list[tuple[list, str]] = []
+    stack: list[list] = [[]]
+    pos, match = 0, _TOKEN.match
+    while True:
+        m = match(data, pos)
+        if m is None:
+            raise ValueError(f"unreadable content stream at byte {pos}: {data[pos:pos + 20]!r}")
+        pos, kind = m.end(), m.lastgroup
+        if kind == "number":
+            stack[-1].append(float(m["number"]))
+        elif kind == "word":
+            word = m["word"].decode("latin-1")
+            if word in ("true", "false", "null"):
+                stack[-1].append(word)
+            elif word == "BI":
+                return None
+            else:
+                ops.append((stack[-1], word))
+                stack[-1] = []
+        elif kind == "name":
+            name = m["name"].decode("latin-1")
+            stack[-1].append(_NAME_ESCAPE.sub(lambda e: chr(int(e[1], 16)), name) if "#" in name else name)
+        elif kind == "open":
+            stack.append([])
+        elif kind == "close":
+            inner = stack.pop() if len(stack) > 1 else []
+            stack[-1].append(inner)
+        elif kind == "hex":
+            stack[-1].append(m["hex"])
+        elif kind == "string":
+            depth = 1
+            while depth:
+                s = _STRING.search(data, pos)
+                if s is None:
+                    raise ValueError("a content stream's string is not closed")
+                pos = s.end()
+                depth += {b"(": 1, b")": -1}.get(s[0], 0)
+            stack[-1].append(b"")
+        else:
+            return ops
+
+
 def _run(reader, contents, resources, ctm, out):
     if contents is None:
         return
     state = {"ctm": list(ctm), "w": 1.0, "mitre": 10.0, "stroke": (0, 0, 0), "fill": (0, 0, 0)}
     stack = []
     subpaths, current, closed = [], [], []
-    for operands, op in ContentStream(contents, reader).operations:
+    operations = _operations(contents.get_data())
+    if operations is None:
+        operations = ContentStream(contents, reader).operations
+    for operands, op in operations:
         op = op.decode() if isinstance(op, bytes) else op
         if op == "q":
             stack.append(dict(state, ctm=list(state["ctm"])))

@@ -100,14 +100,15 @@ def _rate_scale(kin, f):
     mech = kin.mechanism
     L = length_scale(mech)
     rate = kin.omega if f.__name__ == "velocity" else kin.alpha
+    ext = _extent(kin)  # once: it visits every point of every link
     out = np.zeros(kin.n)
     for link in mech.moving:
-        out = np.maximum(out, np.abs(rate[link]) * (L + _extent(kin)))
+        out = np.maximum(out, np.abs(rate[link]) * (L + ext))
         for p in _points(mech, link):
             out = np.maximum(out, np.linalg.norm(f(link, p), axis=-1))
     if f.__name__ == "acceleration":  # centripetal parts
         for link in mech.moving:
-            out = np.maximum(out, kin.omega[link] ** 2 * (L + _extent(kin)))
+            out = np.maximum(out, kin.omega[link] ** 2 * (L + ext))
     return out
 
 
@@ -184,6 +185,7 @@ def test_positions_satisfy_every_joint(family, data):
     tol = GEOM_RTOL * 100 * (_extent(kin) + length_scale(mech))
     pivoted = {link for link in mech.moving if any(isinstance(jt, Revolute) and mech.frame in jt.links
                                                   for jt in mech.joints_of(link))}
+    rate_scale = {f.__name__: _rate_scale(kin, f) for f in (kin.velocity, kin.acceleration)}  # once, not per joint
     for joint in mech.joints:
         if isinstance(joint, Revolute):
             i, j = joint.links
@@ -191,7 +193,7 @@ def test_positions_satisfy_every_joint(family, data):
             assert np.all(gap <= tol), f"{joint.label}: pins apart by {gap}"
             for f in (kin.velocity, kin.acceleration):
                 gap = np.linalg.norm(f(i, joint.point) - f(j, joint.point), axis=-1)
-                assert np.all(gap <= 1e-9 * _rate_scale(kin, f) + 1e-300), f"{joint.label}: pins move apart ({f.__name__})"
+                assert np.all(gap <= 1e-9 * rate_scale[f.__name__] + 1e-300), f"{joint.label}: pins move apart ({f.__name__})"
         elif isinstance(joint, Prismatic):
             u = kin.guide_direction(joint)
             X = kin.position(joint.slider, joint.point)
@@ -347,12 +349,14 @@ def test_whole_turns_of_the_crank_change_nothing(family, data):
     a = solve_kinematics(mech, q, q_dot, q_ddot)
     b = solve_kinematics(mech, q + 2 * math.pi * k, q_dot, q_ddot)
     # q + 2πk is rounded: an absolute error ≈ |q + 2πk|·ε ≈ 1e-14 rad in the input
+    scales = {"position": _extent(a) + length_scale(mech),  # once, not per point: each visits every point
+              "velocity": _rate_scale(a, a.velocity), "acceleration": _rate_scale(a, a.acceleration)}
     for link in mech.moving:
         assert np.all(np.abs(wrap(a.theta[link] - b.theta[link])) <= 1e-11)
         for p in _points(mech, link):
             for f in ("position", "velocity", "acceleration"):
                 x, y = getattr(a, f)(link, p), getattr(b, f)(link, p)
-                scale = _rate_scale(a, getattr(a, f)) if f != "position" else _extent(a) + length_scale(mech)
+                scale = scales[f]
                 assert np.all(np.linalg.norm(x - y, axis=-1) <= 1e-9 * scale + 1e-300)
     ra, rb = solve_forces(a), solve_forces(b)
     size = np.abs(ra.effort) + max((np.abs(F).max() for F in ra.forces.values()), default=0.0) * length_scale(mech) + 1e-300
