@@ -4,6 +4,7 @@ notebooks; the README's links work on the package index (absolute)."""
 
 from __future__ import annotations
 
+import os
 import re
 import subprocess
 import sys
@@ -41,8 +42,10 @@ def core(dist, tmp_path_factory):
     """
     venv = tmp_path_factory.mktemp("venv")
     subprocess.run([sys.executable, "-m", "venv", "--without-pip", str(venv)], check=True, timeout=300)
+    # (without PYTHONPATH: a checkout on it would look like graphkin installed already, and be skipped)
+    env = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
     pip = subprocess.run([sys.executable, "-m", "pip", "--python", str(venv / "bin" / "python"), "install", "--quiet",
-                          "--no-compile", str(dist[0])], capture_output=True, text=True, timeout=1200)
+                          "--no-compile", str(dist[0])], capture_output=True, text=True, timeout=1200, env=env)
     assert pip.returncode == 0, pip.stderr[-3000:]
     return venv
 
