@@ -193,6 +193,7 @@ print((submissions / copier / "answers.toml").read_text(encoding="utf-8"))
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
 # Gradescope's /autograder, laid out for each submission (as the text above says).
+import compileall
 import os
 import shutil
 
@@ -200,6 +201,7 @@ source = folder / "autograder-source"
 with zipfile.ZipFile(export / "autograder.zip") as z:
     z.extractall(source)
 os.chmod(source / "run_autograder", 0o755)
+compileall.compile_dir(source / "vendor", quiet=1)   # as setup.sh does when Gradescope builds the image
 
 
 def autograde(student):

@@ -117,6 +117,9 @@ if ! "$PY" -m venv "$VENV"; then
 fi
 "$VENV/bin/python" -m pip install --upgrade pip
 "$VENV/bin/python" -m pip install -r "$ROOT/source/requirements.txt"
+# graphkin's bytecode, compiled once into the image: each submission's Python reads it instead of
+# compiling the vendored package again (about half a second of CPU a submission).
+"$VENV/bin/python" -m compileall -q "$ROOT/source/vendor"
 "$VENV/bin/python" --version
 """
 

@@ -150,6 +150,8 @@ def test_export_files_and_zip_layout(export):
         config = json.loads(zf.read("config.json"))
         members = {n: zf.read(n) for n in names}
     assert "pip install -r" in setup and "requirements.txt" in setup
+    # graphkin's bytecode is compiled into the image once, not by every submission's Python.
+    assert '-m compileall -q "$ROOT/source/vendor"' in setup
     assert config["roster"] == ROSTER and config["exercise_file"] == f"{NAME}.toml" and "secret" not in config
     # The autograder grades with the roster's precomputed keys: the secret is in no file of the zip.
     assert gradescope.KEYS in members
