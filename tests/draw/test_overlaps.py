@@ -181,6 +181,18 @@ def _depth(a, b) -> float:
     return float(min(x1 - x0, y1 - y0))
 
 
+def laid_out(fig):
+    """Lay ``fig`` out as matplotlib draws it, and a renderer to measure it with.
+
+    A figure left unchanged since its last drawing (matplotlib's ``stale`` unset) is as it was laid out then, and
+    is not drawn again: a figure measured twice (:func:`overlaps`, then
+    :func:`tests.draw.test_polygon_labels.astray`) is drawn once, most of a measure's time.
+    """
+    if fig.stale:
+        fig.draw_without_rendering()
+    return fig.canvas.get_renderer()
+
+
 def overlaps(fig, panels=None, tol=TOL, dashed=False, page=False):
     """Every text on a text and every text on an outline in ``fig`` deeper than ``tol`` px: list of (what, what, px).
 
@@ -188,8 +200,7 @@ def overlaps(fig, panels=None, tol=TOL, dashed=False, page=False):
     text must also lie wholly inside the figure (an image cut to the figure,
     as the explorer shows it).
     """
-    fig.draw_without_rendering()
-    renderer = fig.canvas.get_renderer()
+    renderer = laid_out(fig)
     boxes = texts(fig, renderer)
     found = []
     # Text on text: each box shrunk by tol/2 on every side, so two boxes meet only if they overlap by more than tol.
