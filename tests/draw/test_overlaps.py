@@ -24,6 +24,7 @@ bug.
 
 from __future__ import annotations
 
+import contextlib
 import math
 
 import numpy as np
@@ -181,6 +182,44 @@ def _depth(a, b) -> float:
     return float(min(x1 - x0, y1 - y0))
 
 
+def laid_out(fig):
+    """Lay ``fig`` out as matplotlib draws it, and a renderer to measure it with.
+
+    A figure left unchanged since its last drawing (matplotlib's ``stale`` unset) is as it was laid out then, and
+    is not drawn again: a figure measured twice (:func:`overlaps`, then
+    :func:`tests.draw.test_polygon_labels.astray`) is drawn once, most of a measure's time.
+    """
+    if fig.stale:
+        with _path_effects_not_drawn():
+            fig.draw_without_rendering()
+    return fig.canvas.get_renderer()
+
+
+@contextlib.contextmanager
+def _path_effects_not_drawn():
+    """matplotlib's drawing without rendering, for path effects too.
+
+    ``draw_without_rendering`` makes every drawing call of its renderer a no-op, but a text or patch with a path
+    effect (the labels' white halo) draws through a ``PathEffectRenderer``, which first turns the text into its
+    outline (about 40 % of laying a figure of labels out) and then hands it to those no-ops. Its drawing calls
+    are no-ops here too: what is laid out (positions, limits, ticks, boxes) is the same, only nothing is drawn.
+    """
+    from matplotlib.patheffects import PathEffectRenderer
+
+    names = ("draw_path", "draw_markers", "draw_path_collection", "draw_text")
+    own = {name: PathEffectRenderer.__dict__[name] for name in names if name in PathEffectRenderer.__dict__}
+    for name in names:
+        setattr(PathEffectRenderer, name, lambda *args, **kwargs: None)
+    try:
+        yield
+    finally:
+        for name in names:
+            if name in own:
+                setattr(PathEffectRenderer, name, own[name])
+            else:
+                delattr(PathEffectRenderer, name)
+
+
 def overlaps(fig, panels=None, tol=TOL, dashed=False, page=False):
     """Every text on a text and every text on an outline in ``fig`` deeper than ``tol`` px: list of (what, what, px).
 
@@ -188,8 +227,7 @@ def overlaps(fig, panels=None, tol=TOL, dashed=False, page=False):
     text must also lie wholly inside the figure (an image cut to the figure,
     as the explorer shows it).
     """
-    fig.draw_without_rendering()
-    renderer = fig.canvas.get_renderer()
+    renderer = laid_out(fig)
     boxes = texts(fig, renderer)
     found = []
     # Text on text: each box shrunk by tol/2 on every side, so two boxes meet only if they overlap by more than tol.

@@ -32,7 +32,7 @@ shapely = pytest.importorskip("shapely")
 from matplotlib.patches import FancyArrowPatch  # noqa: E402
 
 from graphkin import catalog  # noqa: E402
-from tests.draw.test_overlaps import TOL, _figure_position, _lines_of, _positions, overlaps  # noqa: E402
+from tests.draw.test_overlaps import TOL, _figure_position, _lines_of, _positions, laid_out, overlaps  # noqa: E402
 
 # Lays out two figures of every catalog problem at 5 positions: make test runs it, make check does not.
 pytestmark = pytest.mark.slow
@@ -93,8 +93,7 @@ def astray(fig, tol=TOL, kinds=KINDS):
     A label joined to its arrow by a leader line is as near its own arrow as the leader's far end, which must lie
     on that arrow (a leader's path over other arrows and texts is :func:`tests.draw.test_overlaps.overlaps`'s).
     """
-    fig.draw_without_rendering()
-    renderer = fig.canvas.get_renderer()
+    renderer = laid_out(fig)
     found = []
     for ax in fig.axes:
         drawn = arrows(ax, kinds)

@@ -58,10 +58,14 @@ def _colour(values):
     return None
 
 
-def paths(reader: pypdf.PdfReader, page) -> list[Path]:
-    """Every path the page paints (stroked or filled), in page coordinates."""
+def paths(reader: pypdf.PdfReader, page, parsed: dict | None = None) -> list[Path]:
+    """Every path the page paints (stroked or filled), in page coordinates.
+
+    ``parsed``: the operators of the form XObjects read so far, by object (kept between the pages of a document).
+    """
     out: list[Path] = []
-    _run(reader, page.get_contents(), page.get("/Resources") or {}, [1, 0, 0, 1, 0, 0], out)
+    _run(reader, page.get_contents(), page.get("/Resources") or {}, [1, 0, 0, 1, 0, 0], out,
+         {} if parsed is None else parsed)
     return out
 
 
@@ -130,16 +134,30 @@ def _operations(data: bytes) -> list[tuple[list, str]] | None:
             return ops
 
 
-def _run(reader, contents, resources, ctm, out):
+
+def _parsed(reader, contents, parsed: dict) -> list:
+    """The operations of a content stream (:func:`_operations`, or pypdf's where it holds an inline image), a form
+    XObject's parsed once: a form is painted again and again (a figure's marks, on every page of its figure), and
+    parsing is most of the reading."""
+    ref = getattr(contents, "indirect_reference", None)
+    key = (ref.idnum, ref.generation) if ref is not None else None
+    if key is not None and key in parsed:
+        return parsed[key]
+    operations = _operations(contents.get_data())
+    if operations is None:
+        operations = ContentStream(contents, reader).operations
+    if key is not None:
+        parsed[key] = operations
+    return operations
+
+
+def _run(reader, contents, resources, ctm, out, parsed):
     if contents is None:
         return
     state = {"ctm": list(ctm), "w": 1.0, "mitre": 10.0, "stroke": (0, 0, 0), "fill": (0, 0, 0)}
     stack = []
     subpaths, current, closed = [], [], []
-    operations = _operations(contents.get_data())
-    if operations is None:
-        operations = ContentStream(contents, reader).operations
-    for operands, op in operations:
+    for operands, op in _parsed(reader, contents, parsed):
         op = op.decode() if isinstance(op, bytes) else op
         if op == "q":
             stack.append(dict(state, ctm=list(state["ctm"])))
@@ -199,7 +217,7 @@ def _run(reader, contents, resources, ctm, out):
             x = x.get_object() if x is not None else None
             if x is not None and x.get("/Subtype") == "/Form":
                 matrix = [float(v) for v in x.get("/Matrix", [1, 0, 0, 1, 0, 0])]
-                _run(reader, x, x.get("/Resources") or resources, _mul(matrix, state["ctm"]), out)
+                _run(reader, x, x.get("/Resources") or resources, _mul(matrix, state["ctm"]), out, parsed)
 
 
 # -- the figures of a page -----------------------------------------------------------------------------------------
@@ -223,8 +241,8 @@ def figures(path) -> list[Figure]:
     above (a figure stands over its caption)."""
     reader = pypdf.PdfReader(path)
     out = []
+    parsed: dict = {}
     for page in reader.pages:
-        text = page.extract_text()
         heads = []
 
         def visit(t, cm, tm, font, size, heads=heads):
@@ -232,10 +250,13 @@ def figures(path) -> list[Figure]:
             if m:
                 heads.append((int(m[1]), tm[4] * cm[1] + tm[5] * cm[3] + cm[5]))
 
-        page.extract_text(visitor_text=visit)
+        # The page's text and, as it is read, where each figure's caption begins: the page read once (pypdf's
+        # reading of a page's text is most of a figure's measuring).
+        text = page.extract_text(visitor_text=visit)
         if not heads:
             continue
-        drawn = paths(reader, page)
+        drawn = paths(reader, page, parsed)
+        heights = [(p, p.points[:, 1]) for p in drawn]  # each path's points gathered once, not once a figure
         top = float(page.mediabox.top)
         for n, y in sorted(heads, key=lambda h: -h[1]):
             start = text.find(f"Figure {n}. ")
@@ -244,7 +265,7 @@ def figures(path) -> list[Figure]:
             s, f = _SCALE.search(caption), _FORCE.search(caption)
             k = float(s[2]) / float(s[1]) if s else None
             X = float(f[1]) if f else None
-            mine = [p for p in drawn if len(p.points) and p.points[:, 1].min() > y and p.points[:, 1].max() < top]
+            mine = [p for p, ys in heights if len(ys) and ys.min() > y and ys.max() < top]
             out.append(Figure(n, caption, k, X, mine))
             top = y
     return out

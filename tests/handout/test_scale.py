@@ -88,6 +88,14 @@ def _lengths(problem) -> list[float]:
     return out
 
 
+def _figures(p: dict) -> list:
+    """The figures of a case's PDF (:func:`tests.handout.pdfgeometry.figures`), read from the page once: the force
+    arrows' test and the bars' read the same pages."""
+    if "figures" not in p:
+        p["figures"] = figures(p["path"])
+    return p["figures"]
+
+
 def _matches(value: float, wanted: list[float], rel: float = 0.01) -> bool:
     return any(abs(value - w) <= rel * w for w in wanted)
 
@@ -97,7 +105,7 @@ def test_every_force_arrow_prints_at_the_stated_force_scale(printed, case):
     p = printed[case]
     entry = p["json"]["positions"][p["doc"]["worked"][0]["index"]]
     wanted = _forces(entry)
-    stated = [f for f in figures(p["path"]) if f.X is not None]
+    stated = [f for f in _figures(p) if f.X is not None]
     assert stated, "no figure states a force scale"
     measured = 0
     for fig in stated:
@@ -113,7 +121,7 @@ def test_the_free_bodies_show_every_force_at_one_scale(printed):
     """Every force on every link of the double slider, each measured once on the page, at the one stated scale."""
     p = printed["double_slider"]
     entry = p["json"]["positions"][0]
-    fig = next(f for f in figures(p["path"]) if f.caption.split(". ", 1)[1].startswith("Every force on each"))
+    fig = next(f for f in _figures(p) if f.caption.split(". ", 1)[1].startswith("Every force on each"))
     want = []
     for link in entry["links"]:
         want += [math.hypot(*F) for name, F in entry["forces"].items() if name[2] == link]
@@ -129,7 +137,7 @@ def test_the_free_bodies_show_every_force_at_one_scale(printed):
 def test_every_link_drawn_as_a_bar_prints_at_the_stated_length_scale(printed, case):
     p = printed[case]
     wanted = _lengths(p["problem"])
-    stated = [f for f in figures(p["path"]) if f.k is not None]
+    stated = [f for f in _figures(p) if f.k is not None]
     assert stated, "no figure states a length scale"
     seen = 0
     for fig in stated:
