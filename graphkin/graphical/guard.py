@@ -345,7 +345,6 @@ def motion_at(kin, i: int, accelerations: bool = True) -> _Truth:
     return kept(kin, "table", _Table).truth(kin, i, accelerations)
 
 
-
 class _Check:
     """Every comparison of a construction with the analytical route, of speeds (kind 0) or accelerations (kind 1).
 
